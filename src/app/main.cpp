@@ -1,0 +1,2 @@
+// ewaview entry point (placeholder until the command line lands).
+int main() { return 0; }

@@ -1,0 +1,89 @@
+// Volume: native-type storage, statistics and world placement.
+#include "core/volume.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+namespace ewa {
+
+size_t scalarSize(ScalarType type) {
+  switch (type) {
+    case ScalarType::UInt8: return 1;
+    case ScalarType::Int16:
+    case ScalarType::UInt16: return 2;
+    case ScalarType::Float32: return 4;
+  }
+  return 1;
+}
+
+const char* scalarName(ScalarType type) {
+  switch (type) {
+    case ScalarType::UInt8: return "uint8";
+    case ScalarType::Int16: return "int16";
+    case ScalarType::UInt16: return "uint16";
+    case ScalarType::Float32: return "float32";
+  }
+  return "?";
+}
+
+Volume::Volume(std::array<int64_t, 3> dims, glm::dvec3 spacing, glm::dvec3 origin, ScalarType type,
+               std::vector<uint8_t> bytes)
+    : dims_(dims), spacing_(spacing), origin_(origin), type_(type), bytes_(std::move(bytes)) {
+  for (int64_t d : dims_) {
+    if (d <= 0) throw std::invalid_argument("volume dimensions must be positive");
+  }
+  for (int a = 0; a < 3; ++a) {
+    if (!(spacing_[a] > 0.0) || !std::isfinite(spacing_[a]))
+      throw std::invalid_argument("volume spacing must be positive and finite");
+  }
+  const auto count = static_cast<uint64_t>(voxelCount());
+  if (bytes_.size() / scalarSize(type_) != count || bytes_.size() % scalarSize(type_) != 0)
+    throw std::invalid_argument("volume data size does not match its dimensions");
+  computeStatistics();
+}
+
+double Volume::valueAt(int64_t n) const {
+  const uint8_t* p = bytes_.data() + static_cast<size_t>(n) * scalarSize(type_);
+  switch (type_) {
+    case ScalarType::UInt8: return *p;
+    case ScalarType::Int16: { int16_t v; std::memcpy(&v, p, 2); return v; }
+    case ScalarType::UInt16: { uint16_t v; std::memcpy(&v, p, 2); return v; }
+    case ScalarType::Float32: { float v; std::memcpy(&v, p, 4); return v; }
+  }
+  return 0.0;
+}
+
+glm::dvec3 Volume::worldPosition(double i, double j, double k) const {
+  return origin_ + glm::dvec3(i, j, k) * spacing_;
+}
+
+glm::dvec3 Volume::boundsMax() const {
+  return worldPosition(double(dims_[0] - 1), double(dims_[1] - 1), double(dims_[2] - 1));
+}
+
+void Volume::computeStatistics() {
+  const int64_t n = voxelCount();
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (int64_t i = 0; i < n; ++i) {
+    const double v = valueAt(i);
+    if (!std::isfinite(v)) continue;
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  if (!(lo <= hi)) lo = hi = 0.0;
+  range_ = {lo, hi};
+  histogram_.assign(histogramBins(), 0);
+  const double width = hi > lo ? hi - lo : 1.0;
+  for (int64_t i = 0; i < n; ++i) {
+    const double v = valueAt(i);
+    if (!std::isfinite(v)) continue;
+    int bin = static_cast<int>((v - lo) / width * histogramBins());
+    histogram_[std::clamp(bin, 0, histogramBins() - 1)]++;
+  }
+}
+
+}  // namespace ewa

@@ -1,0 +1,70 @@
+// Volume: a 3D scalar grid kept in its native type, placed in world space like VTK image data.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace ewa {
+
+enum class ScalarType { UInt8, Int16, UInt16, Float32 };
+
+// Bytes per value of each scalar type.
+size_t scalarSize(ScalarType type);
+// "uint8", "int16", "uint16", "float32".
+const char* scalarName(ScalarType type);
+
+class Volume {
+ public:
+  Volume() = default;
+  // Takes ownership of `bytes`, which must hold dims product * scalarSize(type) bytes in
+  // x-fastest order, native endianness. Computes the value range and the histogram.
+  // Throws std::invalid_argument when the sizes do not agree.
+  Volume(std::array<int64_t, 3> dims, glm::dvec3 spacing, glm::dvec3 origin, ScalarType type,
+         std::vector<uint8_t> bytes);
+
+  const std::array<int64_t, 3>& dims() const { return dims_; }
+  const glm::dvec3& spacing() const { return spacing_; }
+  const glm::dvec3& origin() const { return origin_; }
+  ScalarType type() const { return type_; }
+  int64_t voxelCount() const { return dims_[0] * dims_[1] * dims_[2]; }
+  const std::vector<uint8_t>& bytes() const { return bytes_; }
+  bool empty() const { return bytes_.empty(); }
+
+  // Value of voxel (i,j,k) converted to double; NaN stays NaN.
+  double value(int64_t i, int64_t j, int64_t k) const { return valueAt(index(i, j, k)); }
+  double valueAt(int64_t linearIndex) const;
+  int64_t index(int64_t i, int64_t j, int64_t k) const {
+    return i + dims_[0] * (j + dims_[1] * k);
+  }
+
+  // Finite value range over all voxels (NaN and infinities are skipped); {0,0} if none.
+  double minValue() const { return range_[0]; }
+  double maxValue() const { return range_[1]; }
+  // Histogram of finite values over [minValue, maxValue] in histogramBins() bins.
+  const std::vector<uint64_t>& histogram() const { return histogram_; }
+  static constexpr int histogramBins() { return 256; }
+
+  // World position of voxel (i,j,k): origin + (i,j,k) * spacing.
+  glm::dvec3 worldPosition(double i, double j, double k) const;
+  // Axis-aligned world bounds through the voxel centers.
+  glm::dvec3 boundsMin() const { return origin_; }
+  glm::dvec3 boundsMax() const;
+
+ private:
+  void computeStatistics();
+
+  std::array<int64_t, 3> dims_{0, 0, 0};
+  glm::dvec3 spacing_{1.0};
+  glm::dvec3 origin_{0.0};
+  ScalarType type_ = ScalarType::UInt8;
+  std::vector<uint8_t> bytes_;
+  std::array<double, 2> range_{0.0, 0.0};
+  std::vector<uint64_t> histogram_;
+};
+
+}  // namespace ewa

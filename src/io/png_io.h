@@ -1,0 +1,23 @@
+// PNG reading and writing (stb), RGBA8 or RGB8 images.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ewa {
+
+struct Image8 {
+  int width = 0;
+  int height = 0;
+  int channels = 4;            // 3 (RGB) or 4 (RGBA)
+  std::vector<uint8_t> pixels;  // row-major, top row first
+};
+
+// Writes `image` to `path` through a temporary file renamed into place, so a crash never
+// leaves half a PNG. Throws std::runtime_error("path: problem") on failure.
+void writePng(const std::string& path, const Image8& image);
+// Reads a PNG as RGBA8 (channels = 4). Throws std::runtime_error("path: problem").
+Image8 readPng(const std::string& path);
+
+}  // namespace ewa
