@@ -1,0 +1,65 @@
+// The EWA splat footprint (Zwicker et al. 2001, sections 4 and 6) as plain C++.
+// shaders/ewa_footprint.glsl mirrors these formulas line for line; tests hold them equal.
+#pragma once
+
+#include <string>
+
+#include <glm/mat2x2.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/camera.h"
+
+namespace ewa {
+
+enum class FilterMode { Ewa = 0, Plain = 1, Swan = 2 };
+
+const char* filterModeName(FilterMode mode);
+// Parses "ewa", "plain" or "swan"; returns false for anything else.
+bool parseFilterMode(const std::string& text, FilterMode* mode);
+
+struct FootprintParams {
+  FilterMode filter = FilterMode::Ewa;
+  double cutoff = 4.0;       // r = dx^T Q dx is cut off above this
+  double minSpacing = 1.0;   // smallest voxel spacing: Swan's s (the highest sampling rate)
+  double nearDepth = 1e-3;   // voxels closer than this to the eye plane are culled
+};
+
+struct Footprint {
+  bool visible = false;
+  glm::dvec2 center{0.0};     // pixel coordinates (y up, pixel centers at +0.5)
+  glm::dmat2 covariance{1.0}; // screen covariance in pixels^2, low-pass included for EWA
+  glm::dmat2 conic{1.0};      // inverse of covariance
+  double jacobianDet = 0.0;   // |det J|: pixels^2 per world unit^2 across the ray
+  double peak = 0.0;          // weight at the center for unit mass g (window normalized)
+  double radius = 0.0;        // half extent in pixels of the ellipse r <= cutoff
+  double depth = 0.0;         // distance in front of the eye plane
+  double stretch = 1.0;       // Swan's d/k (1 for the other filters)
+};
+
+// Camera-space covariance W V'' W^T of a kernel with V'' = diag(spacing^2).
+glm::dmat3 cameraCovariance(const glm::dmat3& rotation, const glm::dvec3& spacing);
+
+// True when a kernel of world bounding radius `radius` centred at camera-space point `u` lies
+// wholly outside the view (or at or behind the eye): tested before the Jacobian is formed.
+bool cullKernel(const glm::dvec3& u, double radius, const Projection& proj,
+                const FootprintParams& params);
+
+// The footprint of a kernel centred at camera-space point `u` with camera-space covariance `cov`.
+Footprint computeFootprint(const glm::dvec3& u, const glm::dmat3& cov, const Projection& proj,
+                           const FootprintParams& params);
+
+// The footprint's radial profile: a Gaussian exp(-r/2) windowed by (1 - r/c)^2, so it falls
+// smoothly to zero at the cutoff r = c. A hard cut at c = 4 leaves a step of exp(-2) = 13.5% of
+// the peak, which pixel sampling turns into 7% mass errors and 11% ripple in a lattice of
+// one-pixel splats; the window brings both under 1% (see README, "Footprint window").
+double windowedGaussian(double r, double cutoff);
+// Integral over [0, c] of windowedGaussian(r, c) dr: the footprint's 2D integral is
+// pi * sqrt(det covariance) * windowIntegral(c). It tends to 2 (the plain Gaussian) as c grows.
+double windowIntegral(double cutoff);
+
+// Optical depth per unit mass g at pixel position `pixel` (0 outside the cutoff).
+double footprintWeight(const Footprint& fp, const glm::dvec2& pixel, double cutoff);
+
+}  // namespace ewa

@@ -1,0 +1,44 @@
+// SplatSet: the voxels a transfer function leaves visible, packed for the GPU.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "core/volume.h"
+
+namespace ewa {
+
+// 8 bytes a splat: voxel indices and the value quantized over the volume's range.
+struct PackedSplat {
+  uint32_t ij;       // i | j << 16
+  uint32_t kValue;   // k | quantized value << 16 (0..65535 over [minValue, maxValue])
+};
+
+class SplatSet {
+ public:
+  // Keeps voxels whose value's opacity (by `isVisible`, called on a 4096-entry table over the
+  // value range, not per voxel) is above zero. Throws std::invalid_argument if a dimension
+  // exceeds 65535. `stride` > 1 keeps every stride-th voxel along each axis (a coarse level).
+  static SplatSet build(const Volume& volume, const std::function<bool(double)>& isVisible,
+                        int stride = 1);
+
+  const std::vector<PackedSplat>& splats() const { return splats_; }
+  size_t size() const { return splats_.size(); }
+  int stride() const { return stride_; }
+
+  static constexpr int kValueLevels = 65536;
+  // Value in [0, 1] over the volume's range of a packed splat.
+  static float normalizedValue(const PackedSplat& s) {
+    return float(s.kValue >> 16) / float(kValueLevels - 1);
+  }
+  static uint32_t i(const PackedSplat& s) { return s.ij & 0xffffu; }
+  static uint32_t j(const PackedSplat& s) { return s.ij >> 16; }
+  static uint32_t k(const PackedSplat& s) { return s.kValue & 0xffffu; }
+
+ private:
+  std::vector<PackedSplat> splats_;
+  int stride_ = 1;
+};
+
+}  // namespace ewa
