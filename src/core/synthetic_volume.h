@@ -1,0 +1,36 @@
+// Synthetic test volumes: Marschner-Lobb, a ball, a box, Swan's checkerboard, Zwicker's zebra.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/transfer_function.h"
+#include "core/volume.h"
+
+namespace ewa {
+
+struct SyntheticVolume {
+  Volume volume;
+  std::optional<TransferFunction> transferFunction;  // a function that shows it as intended
+  std::string name;                                  // canonical spec, e.g. "sphere:64"
+};
+
+// spec (world units are voxels, origin 0):
+//   "marschner-lobb[:N]"  N³ float32 Marschner-Lobb signal (fM = 6, alpha = 0.25) over [-1,1]³,
+//                         default N 41; TF shows the region above the 0.5 iso-surface.
+//   "sphere[:N]"          N³ uint8, 255 inside radius 0.4 N with a ~1.5-voxel smooth edge,
+//                         default N 64; TF: a semi-transparent orange ball.
+//   "box[:N]"             N³ uint8, all 255 (a homogeneous medium), default N 32; TF: faint fog.
+//   "checkerboard[:S]"    Swan's Fig. 7: a 400×400×1 uint8 sheet of S×S-voxel squares (default
+//                         S 10) holding 1 (red) and 2 (white), starting with 1 at the origin.
+//   "zebra[:RATIO]"       Zwicker's Fig. 8: a (256·RATIO)×256×1 float32 sheet with spacing
+//                         (1/RATIO, 1, 1), black/white wavy stripes across x whose frequency rises
+//                         along x; RATIO 1..16, default 4.
+// N must lie in [2, 512]. Throws std::invalid_argument("--synthetic <spec>: problem") for unknown
+// names, malformed or out-of-range numbers.
+SyntheticVolume makeSyntheticVolume(const std::string& spec);
+
+// The Marschner-Lobb test signal at (x, y, z) in [-1, 1]³ (fM = 6, alpha = 0.25), in [0, 1].
+double marschnerLobb(double x, double y, double z);
+
+}  // namespace ewa

@@ -1,0 +1,213 @@
+// TransferFunction: interpolation, validation, baking, equality, and the histogram default.
+#include "core/transfer_function.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace ewa {
+namespace {
+
+// Opaque points stay finite: -ln(1e-6) is about 13.8 per unit distance.
+constexpr double kMaxAlpha = 1.0 - 1e-6;
+
+// Piecewise-linear lookup in a sorted point list; `get` reads a point's payload.
+template <typename Point, typename Get>
+auto interpolate(const std::vector<Point>& points, double value, Get get) {
+  auto upper = std::upper_bound(points.begin(), points.end(), value,
+                                [](double v, const Point& p) { return v < p.value; });
+  if (upper == points.begin()) return get(points.front());
+  if (upper == points.end()) return get(points.back());
+  const Point& a = *(upper - 1);
+  const Point& b = *upper;
+  // b.value > value >= a.value, so the width is positive.
+  const double t = (value - a.value) / (b.value - a.value);
+  return get(a) + (get(b) - get(a)) * t;
+}
+
+// Builds "<list> point <index>: <parts...>" for validation messages.
+template <typename... Parts>
+std::string pointMessage(const char* list, size_t index, const Parts&... parts) {
+  std::ostringstream out;
+  out << list << " point " << index << ": ";
+  (out << ... << parts);
+  return out.str();
+}
+
+void require(bool ok, const std::string& message) {
+  if (!ok) throw std::invalid_argument(message);
+}
+
+}  // namespace
+
+void TransferFunction::sortPoints() {
+  std::stable_sort(opacity.begin(), opacity.end(),
+                   [](const OpacityPoint& a, const OpacityPoint& b) { return a.value < b.value; });
+  std::stable_sort(color.begin(), color.end(),
+                   [](const ColorPoint& a, const ColorPoint& b) { return a.value < b.value; });
+}
+
+void TransferFunction::validate() const {
+  if (!(std::isfinite(opacityUnitDistance) && opacityUnitDistance > 0.0)) {
+    std::ostringstream out;
+    out << "opacity unit distance must be a positive finite number, got " << opacityUnitDistance;
+    throw std::invalid_argument(out.str());
+  }
+  for (size_t i = 0; i < opacity.size(); ++i) {
+    const OpacityPoint& p = opacity[i];
+    require(std::isfinite(p.value),
+            pointMessage("opacity", i, "value ", p.value, " is not finite"));
+    require(std::isfinite(p.alpha),
+            pointMessage("opacity", i, "alpha ", p.alpha, " is not finite"));
+    require(p.alpha >= 0.0 && p.alpha <= 1.0,
+            pointMessage("opacity", i, "alpha ", p.alpha, " is outside [0, 1]"));
+    require(i == 0 || opacity[i - 1].value <= p.value,
+            pointMessage("opacity", i, "points are not sorted by value (call sortPoints)"));
+  }
+  for (size_t i = 0; i < color.size(); ++i) {
+    const ColorPoint& p = color[i];
+    require(std::isfinite(p.value), pointMessage("color", i, "value ", p.value, " is not finite"));
+    for (int c = 0; c < 3; ++c) {
+      require(std::isfinite(p.rgb[c]) && p.rgb[c] >= 0.0 && p.rgb[c] <= 1.0,
+              pointMessage("color", i, "component ", p.rgb[c], " is outside [0, 1]"));
+    }
+    require(i == 0 || color[i - 1].value <= p.value,
+            pointMessage("color", i, "points are not sorted by value (call sortPoints)"));
+  }
+}
+
+double TransferFunction::alphaAt(double value) const {
+  if (opacity.empty() || std::isnan(value)) return 0.0;
+  return interpolate(opacity, value, [](const OpacityPoint& p) { return p.alpha; });
+}
+
+glm::dvec3 TransferFunction::colorAt(double value) const {
+  if (color.empty()) return glm::dvec3(1.0);
+  if (std::isnan(value)) return color.front().rgb;
+  return interpolate(color, value, [](const ColorPoint& p) { return p.rgb; });
+}
+
+double TransferFunction::extinctionAt(double value) const {
+  const double alpha = std::clamp(alphaAt(value), 0.0, kMaxAlpha);
+  return -std::log1p(-alpha) / opacityUnitDistance;
+}
+
+std::vector<glm::vec4> TransferFunction::bake(double lo, double hi, int n) const {
+  if (n < 1) throw std::invalid_argument("bake: sample count must be at least 1");
+  if (!std::isfinite(lo) || !std::isfinite(hi))
+    throw std::invalid_argument("bake: range must be finite");
+  std::vector<glm::vec4> table(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const double v = n == 1 ? lo : lo + (hi - lo) * i / (n - 1);
+    const glm::dvec3 rgb = colorAt(v);
+    table[i] = glm::vec4(float(rgb.r), float(rgb.g), float(rgb.b), float(extinctionAt(v)));
+  }
+  return table;
+}
+
+bool TransferFunction::allTransparent(double lo, double hi) const {
+  if (lo > hi) std::swap(lo, hi);
+  if (alphaAt(lo) > 0.0 || alphaAt(hi) > 0.0) return false;
+  // Between points the function is linear, so its maximum on [lo, hi] is at an end or a point.
+  for (const OpacityPoint& p : opacity) {
+    if (p.value >= lo && p.value <= hi && p.alpha > 0.0) return false;
+  }
+  return true;
+}
+
+bool operator==(const OpacityPoint& a, const OpacityPoint& b) {
+  return a.value == b.value && a.alpha == b.alpha;
+}
+
+bool operator==(const ColorPoint& a, const ColorPoint& b) {
+  return a.value == b.value && a.rgb == b.rgb;
+}
+
+bool operator==(const TransferFunction& a, const TransferFunction& b) {
+  return a.opacity == b.opacity && a.color == b.color &&
+         a.opacityUnitDistance == b.opacityUnitDistance;
+}
+
+// ---- Default transfer function from a histogram ------------------------------------------
+namespace {
+
+// Histogram smoothed by a small triangle filter, so single noisy bins do not make valleys.
+std::vector<double> smoothHistogram(const std::vector<uint64_t>& h) {
+  const int n = static_cast<int>(h.size());
+  std::vector<double> s(h.size(), 0.0);
+  const double weights[5] = {1, 2, 3, 2, 1};
+  for (int b = 0; b < n; ++b) {
+    double sum = 0.0, weight = 0.0;
+    for (int k = -2; k <= 2; ++k) {
+      if (b + k < 0 || b + k >= n) continue;
+      sum += weights[k + 2] * double(h[b + k]);
+      weight += weights[k + 2];
+    }
+    s[b] = sum / weight;
+  }
+  return s;
+}
+
+// Last bin of the background peak that starts at `mode`: where its tail falls below 1% of
+// the peak, or earlier at the valley before the next material's peak.
+int backgroundEnd(const std::vector<double>& s, int mode) {
+  const int n = static_cast<int>(s.size());
+  int valley = mode;
+  for (int b = mode + 1; b < n; ++b) {
+    if (s[b] < 0.01 * s[mode]) return b;
+    if (s[b] < s[valley]) valley = b;
+    // Rising well above the lowest point after the peak has fallen away: a new material.
+    if (s[valley] < 0.5 * s[mode] && s[b] > 1.5 * s[valley] + 1.0) return valley;
+  }
+  return valley;
+}
+
+// Value below which `fraction` of the counts in bins [first, end) lie.
+double quantile(const std::vector<uint64_t>& h, int first, double fraction, double lo,
+                double width) {
+  double total = 0.0;
+  for (size_t b = first; b < h.size(); ++b) total += double(h[b]);
+  double cumulative = 0.0;
+  for (size_t b = first; b < h.size(); ++b) {
+    const double next = cumulative + double(h[b]);
+    if (next >= fraction * total && h[b] > 0) {
+      const double inBin = (fraction * total - cumulative) / double(h[b]);
+      return lo + (double(b) + std::clamp(inBin, 0.0, 1.0)) * width;
+    }
+    cumulative = next;
+  }
+  return lo + double(h.size()) * width;
+}
+
+}  // namespace
+
+TransferFunction defaultTransferFunction(const Volume& volume) {
+  TransferFunction tf;
+  const glm::dvec3 spacing = volume.spacing();
+  tf.opacityUnitDistance = std::min({spacing.x, spacing.y, spacing.z});
+  const double lo = volume.minValue();
+  const double hi = volume.maxValue();
+  const glm::dvec3 dark(0.55, 0.22, 0.12), warm(0.92, 0.58, 0.32), ivory(1.0, 0.96, 0.88);
+  if (volume.empty() || !(hi > lo)) {
+    // Nothing to tell apart: a faint fog so the extent is still visible.
+    tf.opacity = {{lo, 0.02}};
+    tf.color = {{lo, warm}};
+    return tf;
+  }
+  const std::vector<uint64_t>& h = volume.histogram();
+  const double width = (hi - lo) / double(h.size());
+  const std::vector<double> s = smoothHistogram(h);
+  const int mode = int(std::max_element(h.begin(), h.end()) - h.begin());
+  int end = backgroundEnd(s, mode);
+  if (end >= int(h.size()) - 2) end = 0;  // the background fills the range: ramp over all of it
+  const double threshold = lo + (end + 1) * width;
+  const double median = quantile(h, end + 1, 0.5, lo, width);
+  const double upper = quantile(h, end + 1, 0.95, lo, width);
+  tf.opacity = {{threshold, 0.0}, {median, 0.015}, {upper, 0.25}, {hi, 0.6}};
+  tf.color = {{threshold, dark}, {median, warm}, {hi, ivory}};
+  tf.sortPoints();
+  return tf;
+}
+
+}  // namespace ewa

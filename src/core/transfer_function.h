@@ -1,0 +1,65 @@
+// TransferFunction: piecewise-linear opacity and color by scalar value; a default from a histogram.
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <vector>
+
+#include "core/volume.h"
+
+namespace ewa {
+
+struct OpacityPoint {
+  double value;
+  double alpha;  // opacity of a layer opacityUnitDistance thick, in [0, 1]
+};
+
+struct ColorPoint {
+  double value;
+  glm::dvec3 rgb;  // each channel in [0, 1]
+};
+
+class TransferFunction {
+ public:
+  std::vector<OpacityPoint> opacity;  // kept sorted by value (call sortPoints after editing)
+  std::vector<ColorPoint> color;      // kept sorted by value
+  // Alpha is the opacity of a layer this many world units thick (VTK's scalar-opacity unit
+  // distance), so the same function looks the same whatever the voxel spacing.
+  double opacityUnitDistance = 1.0;
+
+  // Stable sort of both point lists by value (points with equal values keep their order,
+  // which makes a step: the later point wins at and above that value).
+  void sortPoints();
+  // Throws std::invalid_argument with a message naming the first bad point: non-finite
+  // numbers, alpha or color outside [0, 1], unsorted points, unit distance <= 0.
+  void validate() const;
+
+  // Piecewise linear, clamped at the ends; 0 if there are no points or the value is NaN.
+  double alphaAt(double value) const;
+  // Piecewise linear, clamped; white if there are no points, the first color for NaN.
+  glm::dvec3 colorAt(double value) const;
+  // Extinction coefficient per world unit: tau = -ln(1 - alpha) / opacityUnitDistance, with
+  // alpha clamped to [0, 1 - 1e-6] so an opaque point stays finite.
+  double extinctionAt(double value) const;
+  // n samples over [lo, hi] (sample i at lo + (hi - lo) * i / (n - 1); one sample at lo when
+  // n == 1) of (r, g, b, tau) for a GPU texture. Throws std::invalid_argument for n < 1 or
+  // non-finite bounds.
+  std::vector<glm::vec4> bake(double lo, double hi, int n) const;
+  // True when no value in [lo, hi] has alpha > 0 (nothing would be drawn). Exact: the
+  // function is linear between points, so the ends and the points inside decide.
+  bool allTransparent(double lo, double hi) const;
+};
+
+bool operator==(const OpacityPoint& a, const OpacityPoint& b);
+bool operator==(const ColorPoint& a, const ColorPoint& b);
+bool operator==(const TransferFunction& a, const TransferFunction& b);
+inline bool operator!=(const TransferFunction& a, const TransferFunction& b) {
+  return !(a == b);
+}
+
+// A default for a volume, made from its histogram: transparent over the dominant background
+// values, a ramp of opacity above them, a warm bone-like color map, and
+// opacityUnitDistance = the smallest spacing.
+TransferFunction defaultTransferFunction(const Volume& volume);
+
+}  // namespace ewa
