@@ -1,2 +1,35 @@
-// ewaview entry point (placeholder until the command line lands).
-int main() { return 0; }
+// ewaview entry point: parse the command line, then --info, headless output or the window.
+#include <iostream>
+
+#include "app/headless.h"
+#include "app/options.h"
+#include "app/scene.h"
+#include "ui/viewer.h"
+
+int main(int argc, char** argv) {
+  ewa::Options options;
+  const ewa::ParseResult parsed = ewa::parseCommandLine(argc, argv, &options);
+  if (!parsed.run) return parsed.exitCode;
+  try {
+    ewa::Scene scene = ewa::loadScene(options);
+    if (options.info) {
+      std::cout << ewa::volumeInfoJson(scene.volume) << "\n";
+      return 0;
+    }
+    if (!options.output.empty()) {
+      ewa::renderHeadless(scene, options);
+      return 0;
+    }
+    ewa::ViewerConfig config;
+    config.width = options.width;
+    config.height = options.height;
+    config.camera = ewa::initialCamera(scene.volume, options);
+    config.settings = options.render;
+    config.shaderDir = options.shaderDir;
+    config.volumeName = scene.name;
+    return ewa::runViewer(scene.volume, scene.transferFunction, config);
+  } catch (const std::exception& e) {
+    std::cerr << "ewaview: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,98 @@
+// The EWA splat footprint: a line-for-line mirror of src/core/ewa_footprint.cpp.
+const float kPi = 3.14159265358979323846;
+const float kMinDet = 1e-10;
+const int kFilterEwa = 0;
+const int kFilterPlain = 1;
+const int kFilterSwan = 2;
+
+struct Projection {
+  bool orthographic;
+  float focalPixels;
+  float pixelsPerUnit;
+  vec2 principal;
+  vec2 size;
+};
+
+struct FootprintParams {
+  int filterMode;
+  float cutoff;
+  float minSpacing;
+  float nearDepth;
+};
+
+struct Footprint {
+  bool visible;
+  vec2 center;
+  vec3 covariance;  // (a, b, c) of [[a, b], [b, c]]
+  vec3 conic;       // the inverse, same layout
+  float jacobianDet;
+  float peak;
+  float radius;
+  float depth;
+  float stretch;
+};
+
+float windowIntegral(float c) {
+  float e = exp(-0.5 * c);
+  float a0 = 2.0 * (1.0 - e);
+  float a1 = 4.0 - e * (2.0 * c + 4.0);
+  float a2 = 16.0 - e * (2.0 * c * c + 8.0 * c + 16.0);
+  return a0 - 2.0 * a1 / c + a2 / (c * c);
+}
+
+float windowedGaussian(float r, float cutoff) {
+  if (r > cutoff) return 0.0;
+  float t = 1.0 - r / cutoff;
+  return exp(-0.5 * r) * t * t;
+}
+
+bool cullKernel(vec3 u, float radius, Projection proj, FootprintParams params) {
+  float depth = -u.z;
+  if (depth <= params.nearDepth) return true;
+  float hw = proj.size.x * 0.5, hh = proj.size.y * 0.5;
+  if (proj.orthographic) {
+    float s = proj.pixelsPerUnit;
+    return abs(u.x) * s - hw > radius * s || abs(u.y) * s - hh > radius * s;
+  }
+  float f = proj.focalPixels;
+  float nx = inversesqrt(f * f + hw * hw), ny = inversesqrt(f * f + hh * hh);
+  return (f * abs(u.x) + hw * u.z) * nx > radius || (f * abs(u.y) + hh * u.z) * ny > radius;
+}
+
+Footprint computeFootprint(vec3 u, mat3 covIn, Projection proj, FootprintParams params) {
+  Footprint fp;
+  fp.visible = false;
+  fp.depth = -u.z;
+  if (!(fp.depth > params.nearDepth)) return fp;
+  float d = fp.depth;
+  float ppu = proj.orthographic ? proj.pixelsPerUnit : proj.focalPixels / d;
+  fp.stretch = params.filterMode == kFilterSwan ? max(1.0, 1.0 / (ppu * params.minSpacing)) : 1.0;
+  mat3 cov = covIn * (fp.stretch * fp.stretch);
+  vec3 j0, j1;
+  if (proj.orthographic) {
+    j0 = vec3(ppu, 0.0, 0.0);
+    j1 = vec3(0.0, ppu, 0.0);
+    fp.jacobianDet = ppu * ppu;
+    fp.center = proj.principal + u.xy * ppu;
+  } else {
+    float f = proj.focalPixels;
+    j0 = vec3(f / d, 0.0, f * u.x / (d * d));
+    j1 = vec3(0.0, f / d, f * u.y / (d * d));
+    fp.jacobianDet = f * f * length(u) / (d * d * d);
+    fp.center = proj.principal + u.xy * (f / d);
+  }
+  vec3 c0 = cov * j0, c1 = cov * j1;
+  float a = dot(j0, c0), b = dot(j0, c1), c = dot(j1, c1);
+  if (params.filterMode == kFilterEwa) {
+    a += 1.0;
+    c += 1.0;
+  }
+  float det = max(a * c - b * b, kMinDet);
+  fp.covariance = vec3(a, b, c);
+  fp.conic = vec3(c / det, -b / det, a / det);
+  fp.peak = fp.jacobianDet / (kPi * sqrt(det) * windowIntegral(params.cutoff));
+  float lambdaMax = 0.5 * (a + c) + sqrt(0.25 * (a - c) * (a - c) + b * b);
+  fp.radius = sqrt(params.cutoff * lambdaMax);
+  fp.visible = !isinf(fp.peak) && !isnan(fp.peak) && !isinf(fp.radius) && !isnan(fp.radius);
+  return fp;
+}

@@ -1,0 +1,93 @@
+// Command-line parsing with CLI11, following f3d's option names.
+#include "app/options.h"
+
+#include <iostream>
+#include <sstream>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "app/version.h"
+
+namespace ewa {
+
+namespace {
+
+// CLI11 reads "X,Y,Z" into a vector; this checks the count and copies it into a dvec3.
+std::optional<glm::dvec3> toVec3(const std::vector<double>& v) {
+  if (v.empty()) return std::nullopt;
+  return glm::dvec3(v[0], v[1], v[2]);
+}
+
+}  // namespace
+
+ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
+  CLI::App app{"ewaview: a volume viewer built on EWA volume splatting.\n"
+               "Without --output it opens a window; with --output it renders headless and exits.",
+               "ewaview"};
+  app.set_version_flag("--version", std::string("ewaview ") + versionString());
+  app.add_option("file", o->file, "Volume file (.nrrd .nhdr .mhd .mha .dat .vti, or raw with --raw-*)");
+  app.add_option("--synthetic", o->synthetic,
+                 "Synthetic volume: marschner-lobb[:N], sphere[:N], checkerboard, zebra[:RATIO]");
+  app.add_option("-o,--output", o->output, "Render headless to this PNG and exit");
+  app.add_flag("--info", o->info, "Print dims, spacing, type and value range as JSON and exit");
+  std::vector<int> res;
+  app.add_option("--resolution", res, "Image size W,H (default 800,600)")
+      ->delimiter(',')->expected(2)->check(CLI::Range(1, 16384));
+  std::vector<double> pos, focal, up, bg;
+  app.add_option("--camera-position", pos, "Camera position X,Y,Z")->delimiter(',')->expected(3);
+  app.add_option("--camera-focal-point", focal, "Camera focal point X,Y,Z")->delimiter(',')->expected(3);
+  app.add_option("--camera-view-up", up, "Camera view-up X,Y,Z")->delimiter(',')->expected(3);
+  app.add_option("--camera-view-angle", o->cameraViewAngle, "Vertical view angle in degrees (default 30)")
+      ->check(CLI::Range(0.01, 179.0));
+  app.add_flag("--camera-orthographic", o->orthographic, "Orthographic projection");
+  std::string filter = "ewa", mode = "composite";
+  app.add_option("--filter", filter, "Splat filter: ewa (default), swan, plain")
+      ->check(CLI::IsMember({"ewa", "swan", "plain"}));
+  app.add_option("--render-mode", mode, "composite (default) or xray")
+      ->check(CLI::IsMember({"composite", "xray"}));
+  app.add_option("--cutoff", o->render.cutoff, "Footprint cutoff r = dx^T Q dx (default 4)")
+      ->check(CLI::Range(0.25, 64.0));
+  app.add_option("--slab-thickness", o->render.slabThickness,
+                 "Slab thickness in voxels of the smallest spacing (default 1)")
+      ->check(CLI::Range(0.05, 1000.0));
+  app.add_option("--tf", o->tfFile, "Transfer function JSON file");
+  app.add_option("--background", bg, "Background colour R,G,B in [0,1] (default 0,0,0)")
+      ->delimiter(',')->expected(3)->check(CLI::Range(0.0, 1.0));
+  app.add_option("--backend", o->backend, "Headless OpenGL: osmesa (default) or egl")
+      ->check(CLI::IsMember({"osmesa", "egl"}));
+  app.add_option("--shader-dir", o->shaderDir, "Load shaders from this folder (development)");
+  auto* rawDims = app.add_option("--raw-dims", o->rawDims, "Raw input: dims X,Y,Z");
+  app.add_option("--raw-type", o->rawType, "Raw input: uint8, int16, uint16 or float32")->needs(rawDims);
+  app.add_option("--raw-spacing", o->rawSpacing, "Raw input: spacing X,Y,Z (default 1,1,1)")->needs(rawDims);
+  app.add_option("--raw-endian", o->rawEndian, "Raw input: little (default) or big")->needs(rawDims);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    app.exit(e);
+    return {false, 0};
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "ewaview: " << e.what() << " (see --help)\n";
+    return {false, 2};
+  }
+  auto usage = [](const std::string& message) {
+    std::cerr << "ewaview: " << message << " (see --help)\n";
+    return ParseResult{false, 2};
+  };
+  if (!o->file.empty() && !o->synthetic.empty()) return usage("give a FILE or --synthetic, not both");
+  if (!o->rawDims.empty() && o->rawType.empty()) return usage("--raw-dims needs --raw-type");
+  if (!o->rawDims.empty() && o->file.empty()) return usage("--raw-dims needs a FILE");
+  if (!res.empty()) {
+    o->width = res[0];
+    o->height = res[1];
+  }
+  o->cameraPosition = toVec3(pos);
+  o->cameraFocalPoint = toVec3(focal);
+  o->cameraViewUp = toVec3(up);
+  if (!bg.empty()) o->render.background = glm::dvec3(bg[0], bg[1], bg[2]);
+  parseFilterMode(filter, &o->render.filter);
+  parseRenderMode(mode, &o->render.mode);
+  return {true, 0};
+}
+
+}  // namespace ewa

@@ -1,0 +1,42 @@
+// Options: everything the command line can set, parsed with CLI11.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "render/renderer.h"
+
+namespace ewa {
+
+struct Options {
+  std::string file;            // volume file; empty: --synthetic or the default asset
+  std::string synthetic;       // "sphere:64", ...
+  std::string output;          // PNG path: render headless and exit
+  bool info = false;           // print the volume's description as JSON and exit
+  int width = 800;
+  int height = 600;
+  std::optional<glm::dvec3> cameraPosition;
+  std::optional<glm::dvec3> cameraFocalPoint;
+  std::optional<glm::dvec3> cameraViewUp;
+  double cameraViewAngle = 30.0;
+  bool orthographic = false;
+  RenderSettings render;
+  std::string tfFile;
+  std::string backend = "osmesa";
+  std::string shaderDir;       // load shaders from this folder instead of the embedded ones
+  // Plain raw input.
+  std::string rawDims, rawType, rawSpacing = "1,1,1", rawEndian = "little";
+};
+
+// Outcome of parsing: run, or exit at once with `exitCode` (0 for --help/--version, 2 for
+// a usage error, whose message has been printed to stderr).
+struct ParseResult {
+  bool run = true;
+  int exitCode = 0;
+};
+
+ParseResult parseCommandLine(int argc, const char* const* argv, Options* options);
+
+}  // namespace ewa

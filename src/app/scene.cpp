@@ -1,0 +1,71 @@
+// Scene loading, the default camera and the --info description.
+#include "app/scene.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include "core/synthetic_volume.h"
+#include "io/transfer_function_io.h"
+#include "io/volume_loader.h"
+
+namespace ewa {
+
+std::string defaultVolumePath() {
+  // Beside the executable's source tree when built; an installed copy would set this too.
+  return std::string(EWA_ASSET_DIR) + "/default.nrrd";
+}
+
+Scene loadScene(const Options& o) {
+  Scene scene;
+  std::optional<TransferFunction> ownTf;
+  if (!o.synthetic.empty()) {
+    SyntheticVolume s = makeSyntheticVolume(o.synthetic);
+    scene.volume = std::move(s.volume);
+    ownTf = s.transferFunction;
+    scene.name = o.synthetic;
+  } else {
+    const std::string path = o.file.empty() ? defaultVolumePath() : o.file;
+    scene.volume = o.rawDims.empty()
+                       ? loadVolume(path)
+                       : loadRawVolume(path, parseRawOptions(o.rawDims, o.rawType, o.rawSpacing,
+                                                             o.rawEndian));
+    scene.name = std::filesystem::path(path).filename().string();
+  }
+  if (!o.tfFile.empty()) {
+    scene.transferFunction = loadTransferFunction(o.tfFile);
+  } else if (ownTf) {
+    scene.transferFunction = *ownTf;
+  } else {
+    scene.transferFunction = defaultTransferFunction(scene.volume);
+  }
+  return scene;
+}
+
+Camera initialCamera(const Volume& volume, const Options& o) {
+  Camera cam;
+  cam.viewAngleDeg = o.cameraViewAngle;
+  cam.orthographic = o.orthographic;
+  // VTK's default view: from +z towards the volume's centre, y up.
+  cam.frame(volume.boundsMin(), volume.boundsMax(), glm::dvec3(0, 0, 1), glm::dvec3(0, 1, 0),
+            double(o.width) / double(o.height));
+  if (o.cameraFocalPoint) cam.focalPoint = *o.cameraFocalPoint;
+  if (o.cameraPosition) cam.position = *o.cameraPosition;
+  if (o.cameraViewUp) cam.viewUp = *o.cameraViewUp;
+  if (!cam.valid())
+    throw std::runtime_error("camera: position and focal point must differ and view-up be non-zero");
+  return cam;
+}
+
+std::string volumeInfoJson(const Volume& v) {
+  nlohmann::json j;
+  j["dims"] = {v.dims()[0], v.dims()[1], v.dims()[2]};
+  j["spacing"] = {v.spacing().x, v.spacing().y, v.spacing().z};
+  j["type"] = scalarName(v.type());
+  j["range"] = {v.minValue(), v.maxValue()};
+  return j.dump();
+}
+
+}  // namespace ewa

@@ -1,0 +1,32 @@
+// Scene: the volume, transfer function and starting camera that the options describe.
+#pragma once
+
+#include <string>
+
+#include "app/options.h"
+#include "core/camera.h"
+#include "core/transfer_function.h"
+#include "core/volume.h"
+
+namespace ewa {
+
+struct Scene {
+  Volume volume;
+  TransferFunction transferFunction;
+  std::string name;
+};
+
+// Path of the volume opened when no FILE or --synthetic is given.
+std::string defaultVolumePath();
+
+// Loads the volume (file, raw or synthetic) and the transfer function (--tf, the synthetic
+// volume's own, or one made from the histogram). Throws std::runtime_error("<file>: problem").
+Scene loadScene(const Options& options);
+
+// The starting camera: framing the volume from the front, then any --camera-* options.
+Camera initialCamera(const Volume& volume, const Options& options);
+
+// --info: {"dims":[x,y,z],"spacing":[x,y,z],"type":"uint8","range":[lo,hi]}.
+std::string volumeInfoJson(const Volume& volume);
+
+}  // namespace ewa

@@ -1,0 +1,25 @@
+// RenderTargets: creation of the slab, accumulation and output framebuffers.
+#include "render/render_targets.h"
+
+namespace ewa {
+
+void RenderTargets::resize(int w, int h) {
+  if (w == width && h == height && output) return;
+  slab = gl::Texture::create2D(GL_RGBA32F, w, h);
+  accum = gl::Texture::create2D(GL_RGBA32F, w, h);
+  output = gl::Texture::create2D(GL_RGBA8, w, h);
+  for (gl::Texture* t : {&slab, &accum, &output}) t->setFilter(GL_NEAREST, GL_NEAREST);
+  slabFbo = gl::Framebuffer::create();
+  slabFbo.attachColor(0, slab);
+  slabFbo.checkComplete();
+  accumFbo = gl::Framebuffer::create();
+  accumFbo.attachColor(0, accum);
+  accumFbo.checkComplete();
+  outputFbo = gl::Framebuffer::create();
+  outputFbo.attachColor(0, output);
+  outputFbo.checkComplete();
+  width = w;
+  height = h;
+}
+
+}  // namespace ewa

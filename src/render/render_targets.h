@@ -1,0 +1,23 @@
+// RenderTargets: the float slab, accumulation and 8-bit output images of one viewport size.
+#pragma once
+
+#include "gl/framebuffer.h"
+#include "gl/texture.h"
+
+namespace ewa {
+
+struct RenderTargets {
+  int width = 0;
+  int height = 0;
+  gl::Texture slab;    // RGBA32F: (sum of colour * optical depth, sum of optical depth)
+  gl::Texture accum;   // RGBA32F: premultiplied colour and opacity, front to back
+  gl::Texture output;  // RGBA8: the final picture over the background
+  gl::Framebuffer slabFbo;
+  gl::Framebuffer accumFbo;
+  gl::Framebuffer outputFbo;
+
+  // (Re)creates the images when the size changes; throws gl::GlError if incomplete.
+  void resize(int w, int h);
+};
+
+}  // namespace ewa
