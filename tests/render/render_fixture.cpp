@@ -1,0 +1,56 @@
+// Shared set-up for renderer tests: context, shaders, renderer; small volume builders.
+#include "render_fixture.h"
+
+namespace ewa::test {
+
+std::unique_ptr<platform::GlContext>& RenderFixture::context() {
+  static std::unique_ptr<platform::GlContext> c;
+  return c;
+}
+std::unique_ptr<SplatRenderer>& RenderFixture::renderer() {
+  static std::unique_ptr<SplatRenderer> r;
+  return r;
+}
+std::string& RenderFixture::skipReason() {
+  static std::string s;
+  return s;
+}
+
+void RenderFixture::SetUpTestSuite() {
+  try {
+    context() = platform::createHeadlessContext(platform::HeadlessBackend::OsMesa, 16, 16);
+    renderer() = std::make_unique<SplatRenderer>(gl::ShaderLibrary());
+  } catch (const std::exception& e) {
+    skipReason() = e.what();
+  }
+}
+
+void RenderFixture::TearDownTestSuite() {
+  renderer().reset();
+  context().reset();
+}
+
+void RenderFixture::SetUp() {
+  if (!renderer()) GTEST_SKIP() << "no OpenGL 4.5 context: " << skipReason();
+  context()->makeCurrent();
+  renderer()->setPointSizeLimit(1e9f);
+}
+
+Volume makeVolume(int nx, int ny, int nz, glm::dvec3 spacing,
+                  const std::function<bool(int, int, int)>& pred) {
+  std::vector<uint8_t> bytes(size_t(nx) * ny * nz);
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) bytes[i + nx * (j + size_t(ny) * k)] = pred(i, j, k) ? 200 : 0;
+  return Volume({nx, ny, nz}, spacing, glm::dvec3(0.0), ScalarType::UInt8, std::move(bytes));
+}
+
+TransferFunction whiteTf(double alpha, double unit) {
+  TransferFunction tf;
+  tf.opacity = {{0.0, 0.0}, {1.0, alpha}, {255.0, alpha}};
+  tf.color = {{0.0, glm::dvec3(1.0)}, {255.0, glm::dvec3(1.0)}};
+  tf.opacityUnitDistance = unit;
+  return tf;
+}
+
+}  // namespace ewa::test

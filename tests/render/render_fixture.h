@@ -1,0 +1,33 @@
+// Shared set-up for renderer tests: one OSMesa context and splat renderer per test suite.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "gl/shader_library.h"
+#include "platform/headless_context.h"
+#include "render/splat_renderer.h"
+
+namespace ewa::test {
+
+class RenderFixture : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite();
+  static void TearDownTestSuite();
+  void SetUp() override;
+
+  static std::unique_ptr<platform::GlContext>& context();
+  static std::unique_ptr<SplatRenderer>& renderer();
+  static std::string& skipReason();
+};
+
+// A volume of n^3 uint8 voxels with value `inside` where pred(i,j,k) holds and 0 elsewhere.
+Volume makeVolume(int nx, int ny, int nz, glm::dvec3 spacing,
+                  const std::function<bool(int, int, int)>& pred);
+// A transfer function: value 0 transparent; values >= 1 white with opacity `alpha` per unit
+// distance `unit`.
+TransferFunction whiteTf(double alpha, double unit);
+
+}  // namespace ewa::test

@@ -1,0 +1,192 @@
+// The invariants of ../shared/DESIGN.md on the GPU: shader = C++ reference, mass, homogeneous
+// medium, degenerate views.
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render_fixture.h"
+
+namespace ewa::test {
+namespace {
+
+class SplatInvariants : public RenderFixture {};
+
+struct SplatCase {
+  FilterMode filter;
+  bool orthographic;
+  glm::dvec3 eye;
+  glm::dvec3 spacing;
+  double angle;
+};
+
+// One visible voxel in the middle of a 5^3 volume.
+Volume singleVoxel(glm::dvec3 spacing) {
+  return makeVolume(5, 5, 5, spacing, [](int i, int j, int k) { return i == 2 && j == 2 && k == 2; });
+}
+
+TEST_F(SplatInvariants, ShaderFootprintEqualsCppReferenceAndKeepsMass) {
+  const int w = 96, h = 80;
+  const SplatCase cases[] = {
+      {FilterMode::Ewa, false, {0.3, -0.2, 6.0}, {1, 1, 1}, 30},    // magnified, near the axis
+      {FilterMode::Ewa, false, {3.0, 2.0, 5.0}, {1.0, 0.5, 2.0}, 40},  // rectilinear, oblique
+      {FilterMode::Ewa, false, {0.0, 0.0, 400.0}, {1, 1, 1}, 30},  // minified: the low-pass wins
+      {FilterMode::Plain, false, {1.0, 1.0, 8.0}, {1.0, 1.0, 1.0}, 30},
+      {FilterMode::Swan, false, {0.0, 0.0, 400.0}, {1, 1, 1}, 30},  // beyond k
+      {FilterMode::Ewa, true, {2.0, -3.0, 10.0}, {2.0, 1.0, 1.0}, 20},
+      {FilterMode::Plain, true, {0.0, 0.0, 10.0}, {1.0, 1.0, 1.0}, 20},
+  };
+  for (const SplatCase& c : cases) {
+    const Volume vol = singleVoxel(c.spacing);
+    const TransferFunction tf = whiteTf(0.5, 1.0);
+    renderer()->setVolume(vol);
+    renderer()->setTransferFunction(tf);
+    Camera cam;
+    cam.focalPoint = vol.worldPosition(2, 2, 2) + glm::dvec3(0.2, -0.1, 0.0);
+    cam.position = cam.focalPoint + c.eye;
+    cam.viewAngleDeg = c.angle;
+    cam.orthographic = c.orthographic;
+    RenderSettings settings;
+    settings.filter = c.filter;
+    settings.mode = RenderMode::XRay;
+    renderer()->render(cam, settings, w, h);
+    const std::vector<float> depth = renderer()->readOpticalDepth();
+    ASSERT_EQ(depth.size(), size_t(w) * h);
+
+    // The same splat through the C++ reference.
+    const Projection proj = cam.projection(w, h);
+    const glm::dvec3 u = glm::dvec3(cam.viewMatrix() * glm::dvec4(vol.worldPosition(2, 2, 2), 1.0));
+    FootprintParams params;
+    params.filter = c.filter;
+    params.minSpacing = std::min({c.spacing.x, c.spacing.y, c.spacing.z});
+    const Footprint fp = computeFootprint(u, cameraCovariance(cam.rotation(), c.spacing), proj, params);
+    ASSERT_TRUE(fp.visible);
+    const double g = tf.extinctionAt(200.0) * c.spacing.x * c.spacing.y * c.spacing.z;
+    double sum = 0.0, peak = 0.0, worst = 0.0;
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const double expected = g * footprintWeight(fp, {x + 0.5, y + 0.5}, params.cutoff);
+        const double got = depth[size_t(y) * w + x];
+        ASSERT_TRUE(std::isfinite(got));
+        sum += got;
+        peak = std::max(peak, expected);
+        worst = std::max(worst, std::abs(got - expected));
+      }
+    }
+    const std::string what = std::string(filterModeName(c.filter)) +
+                             (c.orthographic ? " orthographic" : " perspective");
+    EXPECT_LT(worst, 2e-3 * peak) << what << ": shader differs from the C++ footprint";
+    if (fp.center.x - fp.radius > 0 && fp.center.x + fp.radius < w && fp.center.y - fp.radius > 0 &&
+        fp.center.y + fp.radius < h && std::sqrt(fp.covariance[0][0]) > 0.7) {
+      EXPECT_NEAR(sum / (g * fp.jacobianDet), 1.0, 0.01) << what << ": image integral != mass";
+    }
+  }
+}
+
+TEST_F(SplatInvariants, QuadPathDrawsTheSameFootprintAsPointSprites) {
+  const Volume vol = singleVoxel({1, 1, 1});
+  renderer()->setVolume(vol);
+  renderer()->setTransferFunction(whiteTf(0.5, 1.0));
+  Camera cam;
+  cam.focalPoint = vol.worldPosition(2, 2, 2);
+  cam.position = cam.focalPoint + glm::dvec3(0.5, 0.3, 6.0);
+  RenderSettings settings;
+  settings.mode = RenderMode::XRay;
+  renderer()->render(cam, settings, 64, 64);
+  const std::vector<float> points = renderer()->readOpticalDepth();
+  EXPECT_FALSE(renderer()->stats().quadPass);
+  renderer()->setPointSizeLimit(8.0f);
+  renderer()->render(cam, settings, 64, 64);
+  const std::vector<float> quads = renderer()->readOpticalDepth();
+  EXPECT_TRUE(renderer()->stats().quadPass);
+  double total = 0.0;
+  for (size_t p = 0; p < points.size(); ++p) {
+    EXPECT_NEAR(points[p], quads[p], 1e-6) << "pixel " << p;
+    total += points[p];
+  }
+  EXPECT_GT(total, 0.0);
+}
+
+// Opacity at the image centre of a slab of constant extinction seen head-on.
+double centreOpacity(SplatRenderer& r, const Volume& vol, const TransferFunction& tf,
+                     FilterMode filter, bool ortho) {
+  r.setVolume(vol);
+  r.setTransferFunction(tf);
+  Camera cam;
+  const glm::dvec3 lo = vol.boundsMin(), hi = vol.boundsMax();
+  cam.focalPoint = 0.5 * (lo + hi);
+  // Close enough that the slab's sides are outside a 9x9 centre patch.
+  cam.position = cam.focalPoint + glm::dvec3(0, 0, 2.0 * (hi.x - lo.x));
+  cam.orthographic = ortho;
+  RenderSettings settings;
+  settings.filter = filter;
+  r.render(cam, settings, 48, 48);
+  const Image8 img = r.readImage();
+  double sum = 0.0;
+  for (int y = 20; y < 29; ++y)
+    for (int x = 20; x < 29; ++x) sum += img.pixels[(size_t(y) * img.width + x) * 3];
+  return sum / 81.0 / 255.0;
+}
+
+TEST_F(SplatInvariants, HomogeneousMediumHasOpacityOneMinusExpTauL) {
+  for (double s : {0.5, 1.0, 2.0}) {
+    const int n = 24, nz = 6;
+    const Volume vol = makeVolume(n, n, nz, glm::dvec3(s), [](int, int, int) { return true; });
+    const double L = nz * s;  // the lattice of unit-mass kernels integrates to nz * s
+    const double tau = 1.2 / L;
+    const TransferFunction tf = whiteTf(1.0 - std::exp(-tau), 1.0);
+    const double expected = 1.0 - std::exp(-tau * L);
+    for (FilterMode f : {FilterMode::Ewa, FilterMode::Swan, FilterMode::Plain}) {
+      for (bool ortho : {false, true}) {
+        const double got = centreOpacity(*renderer(), vol, tf, f, ortho);
+        EXPECT_NEAR(got, expected, 0.03 * expected)
+            << "spacing " << s << ", " << filterModeName(f) << (ortho ? " orthographic" : " perspective");
+      }
+    }
+  }
+}
+
+TEST_F(SplatInvariants, DegenerateViewsGiveFinitePictures) {
+  const Volume cube = makeVolume(8, 8, 8, glm::dvec3(1.0), [](int, int, int) { return true; });
+  renderer()->setVolume(cube);
+  renderer()->setTransferFunction(whiteTf(0.3, 1.0));
+  RenderSettings settings;
+  settings.background = {0.0, 0.0, 1.0};
+  Camera inside;  // the eye inside the volume: voxels behind it are culled
+  inside.position = {3.5, 3.5, 3.5};
+  inside.focalPoint = {3.5, 3.5, 0.0};
+  renderer()->render(inside, settings, 32, 32);
+  Image8 img = renderer()->readImage();
+  EXPECT_GT(img.pixels[(16 * 32 + 16) * 3], 0);  // voxels in front are drawn
+  Camera away;  // looking away from the volume: nothing in front
+  away.position = {3.5, 3.5, 20.0};
+  away.focalPoint = {3.5, 3.5, 40.0};
+  renderer()->render(away, settings, 32, 32);
+  img = renderer()->readImage();
+  for (size_t p = 0; p < img.pixels.size(); p += 3) {
+    ASSERT_EQ(img.pixels[p], 0);
+    ASSERT_EQ(img.pixels[p + 2], 255);
+  }
+  // An all-transparent transfer function draws nothing.
+  TransferFunction clear = whiteTf(0.0, 1.0);
+  renderer()->setTransferFunction(clear);
+  Camera front;
+  front.position = {3.5, 3.5, 30.0};
+  front.focalPoint = {3.5, 3.5, 3.5};
+  renderer()->render(front, settings, 32, 32);
+  EXPECT_EQ(renderer()->stats().splatsTotal, 0u);
+  img = renderer()->readImage();
+  EXPECT_EQ(img.pixels[(16 * 32 + 16) * 3 + 2], 255);
+  // A 1x1x1 volume renders one splat.
+  const Volume one = makeVolume(1, 1, 1, glm::dvec3(1.0), [](int, int, int) { return true; });
+  renderer()->setVolume(one);
+  renderer()->setTransferFunction(whiteTf(0.9, 1.0));
+  front.focalPoint = {0, 0, 0};
+  front.position = {0, 0, 10};
+  renderer()->render(front, settings, 32, 32);
+  EXPECT_EQ(renderer()->stats().splatsDrawn, 1u);
+  img = renderer()->readImage();
+  EXPECT_GT(img.pixels[(16 * 32 + 16) * 3], 20);
+}
+
+}  // namespace
+}  // namespace ewa::test
