@@ -30,6 +30,8 @@ class SplatRenderer : public Renderer {
 
   // X-ray mode only: the summed optical depth per pixel, bottom row first (for tests).
   std::vector<float> readOpticalDepth() const;
+  // The splats of the current volume and transfer function (built on the next render()).
+  const SplatSet& splats() const { return splats_; }
   // The largest point size this GL draws; bigger footprints go through the quad path.
   float pointSizeLimit() const { return pointSizeLimit_; }
   // Test hook: a lower limit forces the quad path (never above the GL limit).

@@ -1,0 +1,4 @@
+// Benchmark baseline: a trivial fragment, added up.
+out vec4 outColor;
+
+void main() { outColor = vec4(0.001); }
