@@ -60,7 +60,7 @@ Camera initialCamera(const Volume& volume, const Options& o) {
 }
 
 std::string volumeInfoJson(const Volume& v) {
-  nlohmann::json j;
+  nlohmann::ordered_json j;  // keeps the documented key order
   j["dims"] = {v.dims()[0], v.dims()[1], v.dims()[2]};
   j["spacing"] = {v.spacing().x, v.spacing().y, v.spacing().z};
   j["type"] = scalarName(v.type());

@@ -1,0 +1,119 @@
+// The ewaview program as a user runs it: exit codes, messages, --info, headless PNG output.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "image_compare.h"
+#include "io/png_io.h"
+
+namespace ewa::test {
+namespace {
+
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+CliRun ewaview(const std::string& args) {
+  const std::string dir = testOutputDir();
+  const std::string out = dir + "/cli.out", err = dir + "/cli.err";
+  const std::string cmd = std::string(EWA_BINARY) + " " + args + " >" + out + " 2>" + err + " </dev/null";
+  const int status = std::system(cmd.c_str());
+  CliRun r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+int lineCount(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+TEST(Cli, VersionAndHelpExitZero) {
+  CliRun r = ewaview("--version");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("ewaview 0."), std::string::npos) << r.out;
+  r = ewaview("--help");
+  EXPECT_EQ(r.code, 0);
+  for (const char* opt : {"--output", "--resolution", "--camera-position", "--camera-focal-point",
+                          "--camera-view-up", "--camera-view-angle", "--camera-orthographic",
+                          "--filter", "--cutoff", "--slab-thickness", "--tf", "--background",
+                          "--backend", "--info", "--synthetic", "--raw-dims"})
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt << " missing from --help";
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+  EXPECT_EQ(ewaview("--no-such-option").code, 2);
+  EXPECT_EQ(ewaview("--synthetic sphere --filter blurry").code, 2);
+  EXPECT_EQ(ewaview("--synthetic sphere --resolution 10").code, 2);
+  const CliRun r = ewaview("--synthetic sphere --cutoff -1");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+}
+
+TEST(Cli, BadInputIsOneLineNamingTheFileAndExitOne) {
+  const std::string dir = testOutputDir();
+  const std::string missing = dir + "/no-such-volume.nrrd";
+  CliRun r = ewaview(missing + " --info");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(missing), std::string::npos) << r.err;
+  const std::string badTf = dir + "/bad.tf.json";
+  std::ofstream(badTf) << "{\"opacity\": [[0, 2.5]]}";
+  r = ewaview("--synthetic sphere:8 --tf " + badTf + " --output " + dir + "/x.png");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(badTf), std::string::npos) << r.err;
+  r = ewaview("--synthetic sphere:8 --output /no/such/dir/x.png");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("/no/such/dir/x.png"), std::string::npos) << r.err;
+}
+
+TEST(Cli, InfoPrintsOneJsonObject) {
+  CliRun r = ewaview("--synthetic checkerboard --info");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, "{\"dims\":[400,400,1],\"spacing\":[1.0,1.0,1.0],\"type\":\"uint8\",\"range\":[1.0,2.0]}\n");
+  const std::string tooth = std::string(EWA_SHARED_DATA) + "/tooth/tooth.nrrd";
+  if (!std::filesystem::exists(tooth)) GTEST_SKIP() << "shared data absent: " << tooth;
+  r = ewaview(tooth + " --info");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"dims\":[103,94,161]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"type\":\"uint8\""), std::string::npos) << r.out;
+}
+
+TEST(Cli, HeadlessOutputOnBothBackendsAndTheDefaultAsset) {
+  const std::string dir = testOutputDir();
+  const std::string a = dir + "/cli_osmesa.png", b = dir + "/cli_egl.png";
+  CliRun r = ewaview("--synthetic sphere:16 --resolution 64,48 --backend osmesa --output " + a);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Image8 ia = readPng(a);
+  EXPECT_EQ(ia.width, 64);
+  EXPECT_EQ(ia.height, 48);
+  r = ewaview("--synthetic sphere:16 --resolution 64,48 --backend egl --output " + b);
+  if (r.code != 0 && r.err.find("EGL") != std::string::npos) GTEST_SKIP() << r.err;
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Image8 ib = readPng(b);
+  ASSERT_EQ(ia.pixels.size(), ib.pixels.size());
+  int worst = 0;
+  for (size_t p = 0; p < ia.pixels.size(); ++p) worst = std::max(worst, std::abs(ia.pixels[p] - ib.pixels[p]));
+  EXPECT_LE(worst, 1) << "OSMesa and EGL pictures differ";
+  // No FILE: the default volume in assets/.
+  r = ewaview("--resolution 32,32 --output " + dir + "/cli_default.png");
+  EXPECT_EQ(r.code, 0) << r.err;
+}
+
+}  // namespace
+}  // namespace ewa::test
