@@ -13,7 +13,8 @@ N = 96
 out = os.path.join(os.path.dirname(__file__), "..", "assets", "default.nrrd")
 data = bytearray(N * N * N)
 c = (N - 1) / 2.0
-scale = 22.0 / c  # Bohr radii per voxel
+scale = 13.0 / c  # Bohr radii per voxel
+tilt = math.radians(25.0)  # the ring tilts towards a +z viewer, so it reads as a ring
 peak = 0.0
 vals = []
 for k in range(N):
@@ -21,7 +22,8 @@ for k in range(N):
         for i in range(N):
             x, y, z = (i - c) * scale, (j - c) * scale, (k - c) * scale
             r = math.sqrt(x * x + y * y + z * z)
-            cos_t = z / r if r > 0 else 0.0
+            axis = y * math.cos(tilt) - z * math.sin(tilt)  # lobes along y, tilted about x
+            cos_t = axis / r if r > 0 else 0.0
             d = r ** 4 * math.exp(-2.0 * r / 3.0) * (3 * cos_t * cos_t - 1) ** 2
             s = 0.02 * (r ** 2) * math.exp(-r / 2.0) * (1 - r / 8.0) ** 2 * 40
             vals.append(d + s)
@@ -30,7 +32,7 @@ for n, v in enumerate(vals):
     data[n] = min(255, int(255.0 * math.sqrt(v / peak) + 0.5))
 header = (
     "NRRD0004\n"
-    "# ewaview default volume: hydrogen 3d_z2 orbital density (scripts/make_default_asset.py)\n"
+    "# ewaview default volume: hydrogen 3d orbital density, lobes along y (scripts/make_default_asset.py)\n"
     "type: uint8\n"
     "dimension: 3\n"
     f"sizes: {N} {N} {N}\n"

@@ -13,6 +13,11 @@
 
 namespace ewa {
 
+std::string sidecarTransferFunctionPath(const std::string& volumePath) {
+  std::filesystem::path p(volumePath);
+  return (p.parent_path() / (p.stem().string() + ".tf.json")).string();
+}
+
 std::string defaultVolumePath() {
   // Beside the executable's source tree when built; an installed copy would set this too.
   return std::string(EWA_ASSET_DIR) + "/default.nrrd";
@@ -21,6 +26,7 @@ std::string defaultVolumePath() {
 Scene loadScene(const Options& o) {
   Scene scene;
   std::optional<TransferFunction> ownTf;
+  std::string sidecar;
   if (!o.synthetic.empty()) {
     SyntheticVolume s = makeSyntheticVolume(o.synthetic);
     scene.volume = std::move(s.volume);
@@ -33,9 +39,12 @@ Scene loadScene(const Options& o) {
                        : loadRawVolume(path, parseRawOptions(o.rawDims, o.rawType, o.rawSpacing,
                                                              o.rawEndian));
     scene.name = std::filesystem::path(path).filename().string();
+    sidecar = sidecarTransferFunctionPath(path);
   }
   if (!o.tfFile.empty()) {
     scene.transferFunction = loadTransferFunction(o.tfFile);
+  } else if (!sidecar.empty() && std::filesystem::is_regular_file(sidecar)) {
+    scene.transferFunction = loadTransferFunction(sidecar);
   } else if (ownTf) {
     scene.transferFunction = *ownTf;
   } else {

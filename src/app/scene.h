@@ -19,8 +19,11 @@ struct Scene {
 // Path of the volume opened when no FILE or --synthetic is given.
 std::string defaultVolumePath();
 
-// Loads the volume (file, raw or synthetic) and the transfer function (--tf, the synthetic
-// volume's own, or one made from the histogram). Throws std::runtime_error("<file>: problem").
+// "dir/name.tf.json" beside "dir/name.ext": a transfer function kept with its volume.
+std::string sidecarTransferFunctionPath(const std::string& volumePath);
+
+// Loads the volume (file, raw or synthetic) and the transfer function: --tf, else a sidecar
+// file beside the volume, else the synthetic volume's own, else one made from the histogram. Throws std::runtime_error("<file>: problem").
 Scene loadScene(const Options& options);
 
 // The starting camera: framing the volume from the front, then any --camera-* options.
