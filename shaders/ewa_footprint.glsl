@@ -96,3 +96,8 @@ Footprint computeFootprint(vec3 u, mat3 covIn, Projection proj, FootprintParams 
   fp.visible = !isinf(fp.peak) && !isnan(fp.peak) && !isinf(fp.radius) && !isnan(fp.radius);
   return fp;
 }
+
+float pointSpriteSize(Footprint fp, float cutoff) {
+  float extent = max(fp.covariance.x, fp.covariance.z);
+  return 2.0 * sqrt(cutoff * extent) + 0.5;
+}

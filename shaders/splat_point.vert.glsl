@@ -8,7 +8,7 @@ void main() {
   gl_PointSize = 0.0;
   gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: not drawn
   if (!setupSplat(uint(gl_VertexID), fp)) return;
-  float size = 2.0 * ceil(fp.radius) + 2.0;
+  float size = pointSpriteSize(fp, uCutoff);
   if (size > uPointSizeLimit) return;  // the quad path draws it
   gl_PointSize = size;
   gl_Position = pixelToClip(fp.center);

@@ -7,7 +7,7 @@ void main() {
   Footprint fp;
   gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
   if (!setupSplat(uint(gl_InstanceID), fp)) return;
-  float size = 2.0 * ceil(fp.radius) + 2.0;
+  float size = pointSpriteSize(fp, uCutoff);
   if (size <= uPointSizeLimit) return;  // the point path drew it
   // Bounding box of the ellipse r <= cutoff: half extents sqrt(cutoff * a), sqrt(cutoff * c).
   vec2 halfExtent = sqrt(uCutoff * fp.covariance.xz) + 1.0;

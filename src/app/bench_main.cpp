@@ -44,7 +44,7 @@ std::vector<glm::vec3> spriteSizes(const SplatRenderer& r, const Volume& vol, co
     const glm::dvec3 u(view * glm::dvec4(world, 1.0));
     const Footprint fp = computeFootprint(u, cov, proj, params);
     if (!fp.visible) continue;
-    const double size = std::min<double>(2.0 * std::ceil(fp.radius) + 2.0, r.pointSizeLimit());
+    const double size = std::min<double>(pointSpriteSize(fp, s.cutoff), r.pointSizeLimit());
     out.emplace_back(float(fp.center.x), float(fp.center.y), float(size));
   }
   return out;

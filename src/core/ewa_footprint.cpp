@@ -111,6 +111,11 @@ Footprint computeFootprint(const glm::dvec3& u, const glm::dmat3& covIn, const P
   return fp;
 }
 
+double pointSpriteSize(const Footprint& fp, double cutoff) {
+  const double extent = std::max(fp.covariance[0][0], fp.covariance[1][1]);
+  return 2.0 * std::sqrt(cutoff * extent) + 0.5;
+}
+
 double footprintWeight(const Footprint& fp, const glm::dvec2& pixel, double cutoff) {
   if (!fp.visible) return 0.0;
   const glm::dvec2 dx = pixel - fp.center;

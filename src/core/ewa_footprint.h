@@ -59,6 +59,10 @@ double windowedGaussian(double r, double cutoff);
 // pi * sqrt(det covariance) * windowIntegral(c). It tends to 2 (the plain Gaussian) as c grows.
 double windowIntegral(double cutoff);
 
+// Side in pixels of a point sprite that holds the ellipse r <= cutoff: twice the larger
+// half extent of its bounding box, plus a margin for rounding.
+double pointSpriteSize(const Footprint& fp, double cutoff);
+
 // Optical depth per unit mass g at pixel position `pixel` (0 outside the cutoff).
 double footprintWeight(const Footprint& fp, const glm::dvec2& pixel, double cutoff);
 

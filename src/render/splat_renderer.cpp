@@ -130,7 +130,7 @@ void SplatRenderer::render(const Camera& camera, const RenderSettings& settings,
     if (!order.empty()) {
       orderBuffer_.setSubData(0, GLsizeiptr(order.size() * sizeof(uint32_t)), order.data());
       const double nearest = partition_.slabs().front().nearDepth;
-      stats_.quadPass = 2.0 * footprintRadiusBound(proj, settings, nearest) + 2.0 > pointSizeLimit_;
+      stats_.quadPass = 2.0 * footprintRadiusBound(proj, settings, nearest) + 0.5 > pointSizeLimit_;
       setCommonUniforms(pointProgram_, camera, proj, settings);
       setCommonUniforms(quadProgram_, camera, proj, settings);
       splatBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
