@@ -1,0 +1,121 @@
+// zlib/gzip inflation bounded by the size a header promises: no more, no less, no huge buffers.
+#include "io/decompress.h"
+
+#include <zlib.h>
+
+#include <algorithm>
+
+#include "io/load_failure.h"
+#include "io/memory_limit.h"
+
+namespace ewa {
+
+namespace {
+
+// Deflate cannot expand data by more than about 1032:1; beyond that a header is lying.
+constexpr uint64_t kMaxRatio = 1032;
+// zlib counts in uInt; feed and drain it in pieces it can count.
+constexpr size_t kMaxChunk = size_t{1} << 30;
+
+class Inflater {
+ public:
+  Inflater() {
+    // 15 + 32: maximum window, automatic zlib or gzip header detection.
+    ok_ = inflateInit2(&zs_, 15 + 32) == Z_OK;
+  }
+  ~Inflater() {
+    if (ok_) inflateEnd(&zs_);
+  }
+  Inflater(const Inflater&) = delete;
+  Inflater& operator=(const Inflater&) = delete;
+  bool ok() const { return ok_; }
+  z_stream& stream() { return zs_; }
+
+ private:
+  z_stream zs_{};
+  bool ok_ = false;
+};
+
+}  // namespace
+
+std::vector<uint8_t> inflateExact(const std::string& path, const uint8_t* data, size_t size,
+                                  uint64_t expectedSize, const std::string& what) {
+  const std::string prefix = what + ": ";
+  checkAllocation(path, expectedSize, what + " after decompression");
+  if (expectedSize / kMaxRatio > size + 64) {
+    failLoad(path, prefix + std::to_string(size) + " compressed bytes cannot inflate to the " +
+                       std::to_string(expectedSize) + " bytes the header promises");
+  }
+  Inflater inflater;
+  if (!inflater.ok()) failLoad(path, prefix + "cannot start zlib");
+  z_stream& zs = inflater.stream();
+
+  const auto expected = static_cast<size_t>(expectedSize);
+  std::vector<uint8_t> out(std::min<size_t>(expected, std::max<size_t>(size_t{1} << 20, size * 4)));
+  size_t produced = 0;
+  const uint8_t* in = data;
+  size_t inLeft = size;
+  uint8_t probe = 0;
+  bool newMember = false;  // true right after a gzip member ended: what follows may be junk
+  const auto shortBy = [&] {
+    return prefix + "inflates to only " + std::to_string(produced) + " bytes, expected " +
+           std::to_string(expected) + " (truncated or wrong sizes?)";
+  };
+
+  while (true) {
+    // Once the expected bytes are out, inflate into a 1-byte probe to catch surplus data.
+    const bool probing = produced == expected;
+    if (!probing && produced == out.size()) {
+      out.resize(std::min(expected, out.size() > expected / 2 ? expected : out.size() * 2));
+    }
+    if (zs.avail_in == 0 && inLeft > 0) {
+      const size_t chunk = std::min(inLeft, kMaxChunk);
+      zs.next_in = const_cast<Bytef*>(in);
+      zs.avail_in = static_cast<uInt>(chunk);
+      in += chunk;
+      inLeft -= chunk;
+    }
+    const size_t room = probing ? 1 : std::min(out.size() - produced, kMaxChunk);
+    zs.next_out = probing ? &probe : out.data() + produced;
+    zs.avail_out = static_cast<uInt>(room);
+    const int ret = inflate(&zs, Z_NO_FLUSH);
+    const size_t got = room - zs.avail_out;
+    if (probing && got > 0) {
+      failLoad(path, prefix + "inflates to more than the expected " + std::to_string(expected) +
+                         " bytes");
+    }
+    produced += got;
+    if (got > 0) newMember = false;
+
+    switch (ret) {
+      case Z_OK:
+        continue;
+      case Z_STREAM_END:
+        if (produced == expected) return out;
+        if (zs.avail_in == 0 && inLeft == 0) failLoad(path, shortBy());
+        // Another gzip member may follow (as `cat a.gz b.gz` makes).
+        if (inflateReset(&zs) != Z_OK) failLoad(path, prefix + "cannot restart zlib");
+        newMember = true;
+        continue;
+      case Z_BUF_ERROR:
+        // No progress possible: input used up before the stream's end.
+        if (zs.avail_in == 0 && inLeft == 0) {
+          if (produced < expected) failLoad(path, shortBy());
+          failLoad(path, prefix + "truncated (the end of the compressed stream is missing)");
+        }
+        failLoad(path, prefix + "zlib made no progress");
+      case Z_DATA_ERROR:
+        if (newMember) failLoad(path, shortBy());
+        failLoad(path,
+                 prefix + "corrupt (" + std::string(zs.msg ? zs.msg : "invalid stream") + ")");
+      case Z_NEED_DICT:
+        failLoad(path, prefix + "needs a preset dictionary");
+      case Z_MEM_ERROR:
+        failLoad(path, prefix + "out of memory while inflating");
+      default:
+        failLoad(path, prefix + "zlib error " + std::to_string(ret));
+    }
+  }
+}
+
+}  // namespace ewa

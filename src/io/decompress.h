@@ -1,0 +1,19 @@
+// zlib/gzip inflation to an exactly known size, for compressed volume data.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ewa {
+
+// Inflates a zlib or gzip stream (told apart by its header; gzip members that follow one
+// another are joined) that must yield exactly `expectedSize` bytes. Throws LoadError
+// "<path>: <what>: ..." when the data is corrupt, truncated, or inflates to more or fewer bytes.
+// The output buffer grows only as inflation proceeds (up to `expectedSize`), so a header that
+// lies about the size cannot make us allocate memory the data does not fill.
+std::vector<uint8_t> inflateExact(const std::string& path, const uint8_t* data, size_t size,
+                                  uint64_t expectedSize, const std::string& what);
+
+}  // namespace ewa

@@ -1,0 +1,111 @@
+// NRRD data reading: attached or detached, one or many data files, raw or gzip encoding.
+#include <string>
+#include <vector>
+
+#include "io/decompress.h"
+#include "io/file_bytes.h"
+#include "io/format_loaders.h"
+#include "io/load_failure.h"
+#include "io/memory_limit.h"
+#include "io/nrrd_header.h"
+
+namespace ewa {
+
+namespace {
+
+struct DataPiece {
+  std::string file;
+  uint64_t start = 0;  // first byte after the header (attached) or 0 (detached)
+};
+
+// Bytes each data file holds: the first `subdim` axes, or an even share of the whole.
+uint64_t bytesPerFile(const std::string& path, const NrrdHeader& h, uint64_t total, size_t files) {
+  if (h.subdim > 0) {
+    uint64_t per = fileScalarSize(h.layout.type);
+    for (int a = 0; a < h.subdim; ++a) per *= static_cast<uint64_t>(h.layout.dims[a]);
+    if (per * files != total) {  // no overflow: per <= total and files <= total / per is checked
+      failLoad(path, std::to_string(files) + " data files of subdimension " +
+                         std::to_string(h.subdim) + " do not match the sizes");
+    }
+    return per;
+  }
+  if (total % files != 0 || total / files % fileScalarSize(h.layout.type) != 0) {
+    failLoad(path, "the data cannot be split evenly over " + std::to_string(files) + " data files");
+  }
+  return total / files;
+}
+
+// Offset of the raw data in `piece`, after line and byte skips, checked against the file size.
+uint64_t rawDataOffset(const NrrdHeader& h, const DataPiece& piece, uint64_t bytes) {
+  const uint64_t afterLines = skipLines(piece.file, piece.start, h.lineSkip);
+  const uint64_t size = regularFileSize(piece.file);
+  if (h.byteSkip == -1) {
+    // "byte skip: -1": the data are the last bytes of the file.
+    if (size < bytes || size - bytes < afterLines) {
+      failLoad(piece.file, "file has " + std::to_string(size) + " bytes, too few for the " +
+                               std::to_string(bytes) + " bytes of data");
+    }
+    return size - bytes;
+  }
+  const uint64_t offset = afterLines + static_cast<uint64_t>(h.byteSkip);
+  if (offset < afterLines || offset > size || size - offset < bytes) {
+    failLoad(piece.file, "file has " + std::to_string(size) + " bytes, but the data needs " +
+                             std::to_string(bytes) + " bytes at offset " + std::to_string(offset) +
+                             " (truncated file or wrong sizes?)");
+  }
+  return offset;
+}
+
+std::vector<uint8_t> readRaw(const NrrdHeader& h, const std::vector<DataPiece>& pieces,
+                             uint64_t perFile, uint64_t total) {
+  // Check every file before allocating the whole volume.
+  std::vector<uint64_t> offsets;
+  for (const DataPiece& piece : pieces) offsets.push_back(rawDataOffset(h, piece, perFile));
+  std::vector<uint8_t> bytes(static_cast<size_t>(total));
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    readFileRangeInto(pieces[i].file, offsets[i], perFile, bytes.data() + i * perFile);
+  }
+  return bytes;
+}
+
+std::vector<uint8_t> readGzip(const NrrdHeader& h, const std::vector<DataPiece>& pieces,
+                              uint64_t perFile) {
+  // In gzip files the line skip counts raw lines, the byte skip counts inflated bytes.
+  const uint64_t skip = static_cast<uint64_t>(h.byteSkip);
+  std::vector<uint8_t> bytes;
+  for (const DataPiece& piece : pieces) {
+    const uint64_t offset = skipLines(piece.file, piece.start, h.lineSkip);
+    const uint64_t size = regularFileSize(piece.file);
+    if (skip > UINT64_MAX - perFile) failLoad(piece.file, "byte skip is too large");
+    const std::vector<uint8_t> packed =
+        readFileRange(piece.file, offset, size - offset, "gzip data");
+    std::vector<uint8_t> data =
+        inflateExact(piece.file, packed.data(), packed.size(), skip + perFile, "gzip data");
+    if (pieces.size() == 1) {  // the usual case: no copy
+      data.erase(data.begin(), data.begin() + static_cast<std::ptrdiff_t>(skip));
+      return data;
+    }
+    bytes.insert(bytes.end(), data.begin() + static_cast<std::ptrdiff_t>(skip), data.end());
+  }
+  return bytes;
+}
+
+}  // namespace
+
+Volume loadNrrd(const std::string& path) {
+  const NrrdHeader h = parseNrrdHeader(path);
+  const uint64_t total = dataByteCount(path, h.layout.dims, h.layout.type);
+  std::vector<DataPiece> pieces;
+  if (h.dataFiles.empty()) {
+    pieces.push_back({path, h.attachedOffset});
+  } else {
+    if (h.dataFiles.size() > total) failLoad(path, "more data files than data");
+    for (const std::string& f : h.dataFiles) pieces.push_back({f, 0});
+  }
+  const uint64_t perFile = bytesPerFile(path, h, total, pieces.size());
+  std::vector<uint8_t> bytes =
+      h.gzip ? readGzip(h, pieces, perFile) : readRaw(h, pieces, perFile, total);
+  return makeVolume(path, h.layout, std::move(bytes));
+}
+
+}  // namespace ewa

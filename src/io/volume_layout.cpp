@@ -1,0 +1,139 @@
+// Size checks and final assembly shared by all loaders: the one place data becomes a Volume.
+#include "io/volume_layout.h"
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "io/byte_order.h"
+#include "io/load_failure.h"
+#include "io/memory_limit.h"
+
+namespace ewa {
+
+size_t fileScalarSize(FileScalar type) {
+  switch (type) {
+    case FileScalar::Int8:
+    case FileScalar::UInt8:
+      return 1;
+    case FileScalar::Int16:
+    case FileScalar::UInt16:
+      return 2;
+    case FileScalar::Float32:
+      return 4;
+  }
+  return 1;
+}
+
+const char* fileScalarName(FileScalar type) {
+  switch (type) {
+    case FileScalar::Int8:
+      return "int8";
+    case FileScalar::UInt8:
+      return "uint8";
+    case FileScalar::Int16:
+      return "int16";
+    case FileScalar::UInt16:
+      return "uint16";
+    case FileScalar::Float32:
+      return "float32";
+  }
+  return "?";
+}
+
+FileScalar fileScalarOf(ScalarType type) {
+  switch (type) {
+    case ScalarType::UInt8:
+      return FileScalar::UInt8;
+    case ScalarType::Int16:
+      return FileScalar::Int16;
+    case ScalarType::UInt16:
+      return FileScalar::UInt16;
+    case ScalarType::Float32:
+      return FileScalar::Float32;
+  }
+  return FileScalar::UInt8;
+}
+
+namespace {
+
+ScalarType volumeScalarOf(FileScalar type) {
+  switch (type) {
+    case FileScalar::Int8:
+    case FileScalar::Int16:
+      return ScalarType::Int16;
+    case FileScalar::UInt8:
+      return ScalarType::UInt8;
+    case FileScalar::UInt16:
+      return ScalarType::UInt16;
+    case FileScalar::Float32:
+      return ScalarType::Float32;
+  }
+  return ScalarType::UInt8;
+}
+
+std::string sizesText(const std::array<int64_t, 3>& dims) {
+  return std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " +
+         std::to_string(dims[2]);
+}
+
+std::vector<uint8_t> widenInt8(const std::vector<uint8_t>& bytes) {
+  std::vector<uint8_t> wide(bytes.size() * 2);
+  for (size_t i = 0; i < bytes.size(); ++i) {
+    const auto v = static_cast<int16_t>(static_cast<int8_t>(bytes[i]));
+    const auto u = static_cast<uint16_t>(v);
+    // Native order: write through a uint16_t.
+    std::memcpy(wide.data() + 2 * i, &u, 2);
+  }
+  return wide;
+}
+
+}  // namespace
+
+uint64_t dataByteCount(const std::string& path, const std::array<int64_t, 3>& dims,
+                       FileScalar type) {
+  for (int64_t d : dims) {
+    if (d <= 0) failLoad(path, "volume sizes " + sizesText(dims) + " must all be positive");
+  }
+  uint64_t bytes = fileScalarSize(type);
+  for (int64_t d : dims) {
+    if (__builtin_mul_overflow(bytes, static_cast<uint64_t>(d), &bytes)) {
+      failLoad(path, "volume sizes " + sizesText(dims) + " of " + fileScalarName(type) +
+                         " overflow 64-bit byte counts");
+    }
+  }
+  // Volume indexes voxels with int64_t; keep the widened size in range too.
+  if (bytes > uint64_t{INT64_MAX} / 2) {
+    failLoad(path, "volume sizes " + sizesText(dims) + " are too large");
+  }
+  checkAllocation(path, bytes, "volume of " + sizesText(dims) + " " + fileScalarName(type));
+  return bytes;
+}
+
+Volume makeVolume(const std::string& path, const VolumeLayout& layout, std::vector<uint8_t> bytes) {
+  const uint64_t expected = dataByteCount(path, layout.dims, layout.type);
+  if (bytes.size() != expected) {
+    failLoad(path, "read " + std::to_string(bytes.size()) + " data bytes, expected " +
+                       std::to_string(expected));
+  }
+  glm::dvec3 spacing = layout.spacing;
+  for (int a = 0; a < 3; ++a) {
+    if (!std::isfinite(spacing[a]) || spacing[a] == 0.0) {
+      failLoad(path, "spacing along axis " + std::to_string(a) + " must be positive and finite");
+    }
+    spacing[a] = std::fabs(spacing[a]);  // a flipped axis: keep its magnitude
+    if (!std::isfinite(layout.origin[a])) failLoad(path, "origin is not finite");
+  }
+  if (layout.bigEndian != hostIsBigEndian()) {
+    swapBytes(bytes.data(), bytes.size(), fileScalarSize(layout.type));
+  }
+  if (layout.type == FileScalar::Int8) bytes = widenInt8(bytes);
+  try {
+    return Volume(layout.dims, spacing, layout.origin, volumeScalarOf(layout.type),
+                  std::move(bytes));
+  } catch (const std::invalid_argument& e) {
+    failLoad(path, e.what());
+  }
+}
+
+}  // namespace ewa

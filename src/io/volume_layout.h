@@ -1,0 +1,39 @@
+// What a header says about the voxels, checked and turned into a Volume by every loader.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+#include "core/volume.h"
+
+namespace ewa {
+
+// The voxel types files may store. Int8 has no Volume type: it is widened to Int16 on load.
+enum class FileScalar { Int8, UInt8, Int16, UInt16, Float32 };
+size_t fileScalarSize(FileScalar type);
+const char* fileScalarName(FileScalar type);
+FileScalar fileScalarOf(ScalarType type);
+
+struct VolumeLayout {
+  std::array<int64_t, 3> dims{0, 0, 0};
+  glm::dvec3 spacing{1.0};
+  glm::dvec3 origin{0.0};
+  FileScalar type = FileScalar::UInt8;
+  bool bigEndian = false;  // byte order of the file's data
+};
+
+// Bytes of data the dims describe, after checking that every size is positive and that the
+// product neither overflows 64 bits nor exceeds this machine's memory. Call it before reading
+// or allocating anything for the data. Throws LoadError.
+uint64_t dataByteCount(const std::string& path, const std::array<int64_t, 3>& dims,
+                       FileScalar type);
+
+// Builds the Volume from the file's data bytes: native byte order, Int8 widened to Int16,
+// negative spacing taken by magnitude, zero or non-finite spacing/origin rejected.
+Volume makeVolume(const std::string& path, const VolumeLayout& layout, std::vector<uint8_t> bytes);
+
+}  // namespace ewa

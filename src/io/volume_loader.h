@@ -1,0 +1,43 @@
+// Public entry points for reading volumes from NRRD, MetaImage, .dat, VTK XML image and raw files.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "core/volume.h"
+
+namespace ewa {
+
+// Thrown by every loader; what() is one line: "<path>: <problem>".
+class LoadError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// How to read a headerless raw file (x fastest, no padding, data from the first byte).
+struct RawOptions {
+  std::array<int64_t, 3> dims{0, 0, 0};
+  ScalarType type = ScalarType::UInt8;
+  glm::dvec3 spacing{1.0};
+  bool bigEndian = false;
+};
+
+// Parses the command-line strings "X,Y,Z", "uint8|int16|uint16|float32" (also "uchar", "short",
+// "ushort", "float"), "X,Y,Z" (or one value for all axes) and "little|big". An empty type,
+// spacing or endian string means the default. Throws LoadError("--raw-...: problem") on bad text.
+RawOptions parseRawOptions(const std::string& dims, const std::string& type,
+                           const std::string& spacing, const std::string& endian);
+
+// Loads by file extension (case-insensitive): .nrrd/.nhdr (NRRD), .mhd/.mha (MetaImage),
+// .dat (Voreen/Inviwo text header), .vti (VTK XML image data). Throws LoadError. Signed 8-bit
+// data (which Volume has no type for) is widened to Int16; negative spacings keep their magnitude.
+Volume loadVolume(const std::string& path);
+
+// Loads a headerless file laid out as `options` says. The file must hold at least the
+// voxels; extra trailing bytes are ignored. Throws LoadError.
+Volume loadRawVolume(const std::string& path, const RawOptions& options);
+
+}  // namespace ewa
