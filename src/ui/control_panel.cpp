@@ -1,0 +1,122 @@
+// ControlPanel: the ImGui window that shows the volume and statistics and edits the view.
+#include "ui/control_panel.h"
+
+#include <cstdio>
+#include <utility>
+
+#include <imgui.h>
+
+namespace ewa {
+
+namespace {
+
+// The combo's order, best filter first.
+constexpr FilterMode kFilters[] = {FilterMode::Ewa, FilterMode::Swan, FilterMode::Plain};
+constexpr RenderMode kModes[] = {RenderMode::Composite, RenderMode::XRay};
+
+// A slider over a double (the settings are doubles; ImGui's float sliders would round them).
+bool sliderDouble(const char* label, double* value, double lo, double hi, const char* format,
+                  ImGuiSliderFlags flags = 0) {
+  return ImGui::SliderScalar(label, ImGuiDataType_Double, value, &lo, &hi, format,
+                             flags | ImGuiSliderFlags_AlwaysClamp);
+}
+
+}  // namespace
+
+ControlPanel::ControlPanel(std::string volumeName, const Volume& volume)
+    : volumeName_(std::move(volumeName)) {
+  char text[256];
+  const auto& d = volume.dims();
+  const glm::dvec3& s = volume.spacing();
+  std::snprintf(text, sizeof text, "%lld x %lld x %lld %s, spacing %g %g %g",
+                static_cast<long long>(d[0]), static_cast<long long>(d[1]),
+                static_cast<long long>(d[2]), scalarName(volume.type()), s.x, s.y, s.z);
+  volumeText_ = text;
+  if (volumeName_.empty()) volumeName_ = "(unnamed volume)";
+}
+
+PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera,
+                              const FrameStats& stats) {
+  PanelEdits edits;
+  ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  if (ImGui::Begin("ewaview", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::TextUnformatted(volumeName_.c_str());
+    ImGui::TextDisabled("%s", volumeText_.c_str());
+    ImGui::Separator();
+    edits.settings = drawSettings(settings);
+    ImGui::Separator();
+    edits.camera = drawCamera(camera);
+    edits.resetCamera = ImGui::Button("Reset camera (R)");
+    ImGui::Separator();
+    drawStats(stats);
+    ImGui::TextDisabled("left: orbit  right/wheel: zoom  middle/shift+left: pan");
+  }
+  ImGui::End();
+  return edits;
+}
+
+bool ControlPanel::drawSettings(RenderSettings& settings) {
+  bool changed = false;
+  ImGui::PushItemWidth(180.0f);
+
+  int filter = 0;
+  for (int i = 0; i < 3; ++i)
+    if (kFilters[i] == settings.filter) filter = i;
+  if (ImGui::BeginCombo("filter", filterModeName(kFilters[filter]))) {
+    for (int i = 0; i < 3; ++i) {
+      if (ImGui::Selectable(filterModeName(kFilters[i]), i == filter) && i != filter) {
+        settings.filter = kFilters[i];
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+
+  changed |= sliderDouble("cutoff", &settings.cutoff, 1.0, 16.0, "%.2f");
+  changed |= sliderDouble("slab (voxels)", &settings.slabThickness, 0.25, 8.0, "%.2f",
+                          ImGuiSliderFlags_Logarithmic);
+
+  for (RenderMode mode : kModes) {
+    if (mode != kModes[0]) ImGui::SameLine();
+    if (ImGui::RadioButton(renderModeName(mode), settings.mode == mode) &&
+        settings.mode != mode) {
+      settings.mode = mode;
+      changed = true;
+    }
+  }
+
+  float background[3] = {float(settings.background.r), float(settings.background.g),
+                         float(settings.background.b)};
+  if (ImGui::ColorEdit3("background", background)) {
+    settings.background = glm::dvec3(background[0], background[1], background[2]);
+    changed = true;
+  }
+  ImGui::PopItemWidth();
+  return changed;
+}
+
+bool ControlPanel::drawCamera(Camera& camera) {
+  bool changed = false;
+  ImGui::PushItemWidth(180.0f);
+  bool perspective = !camera.orthographic;
+  if (ImGui::Checkbox("perspective", &perspective)) {
+    camera.orthographic = !perspective;
+    changed = true;
+  }
+  // Orthographic views use the angle too: they show the height the perspective view shows at
+  // the focal point, so the slider zooms both.
+  changed |= sliderDouble("view angle", &camera.viewAngleDeg, 5.0, 120.0, "%.1f deg");
+  ImGui::PopItemWidth();
+  return changed;
+}
+
+void ControlPanel::drawStats(const FrameStats& stats) {
+  const RenderStats& r = stats.render;
+  ImGui::Text("render %.1f ms   frame %.1f ms", r.cpuMs, stats.frameMs);
+  ImGui::Text("image %d x %d", stats.imageWidth, stats.imageHeight);
+  ImGui::Text("splats %zu / %zu", r.splatsDrawn, r.splatsTotal);
+  ImGui::Text("slabs %zu   quad path %s", r.slabs, r.quadPass ? "yes" : "no");
+}
+
+}  // namespace ewa

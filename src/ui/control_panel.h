@@ -1,0 +1,45 @@
+// ControlPanel: the ImGui window that shows the volume and statistics and edits the view.
+#pragma once
+
+#include <string>
+
+#include "core/camera.h"
+#include "core/volume.h"
+#include "render/renderer.h"
+
+namespace ewa {
+
+// What the panel shows about the last frames.
+struct FrameStats {
+  RenderStats render;     // of the last render() call
+  double frameMs = 0.0;   // the last window frame: events, render (if any), drawing, swap
+  int imageWidth = 0;     // size of the rendered image
+  int imageHeight = 0;
+};
+
+// What the user changed this frame.
+struct PanelEdits {
+  bool settings = false;     // the RenderSettings were edited
+  bool camera = false;       // the Camera was edited (projection, view angle)
+  bool resetCamera = false;  // "Reset camera" was pressed
+};
+
+class ControlPanel {
+ public:
+  // `volumeName` is shown as given; the volume's dims, type and spacing are copied to text now.
+  ControlPanel(std::string volumeName, const Volume& volume);
+
+  // Builds the panel between ImGuiLayer::beginFrame and render, editing `settings` and
+  // `camera` in place.
+  PanelEdits draw(RenderSettings& settings, Camera& camera, const FrameStats& stats);
+
+ private:
+  bool drawSettings(RenderSettings& settings);
+  bool drawCamera(Camera& camera);
+  void drawStats(const FrameStats& stats);
+
+  std::string volumeName_;
+  std::string volumeText_;  // "64 x 64 x 64 uint8, spacing 1 1 1"
+};
+
+}  // namespace ewa

@@ -1,0 +1,59 @@
+// ImGuiLayer: Dear ImGui's context and its GLFW + OpenGL 3 backends for one window.
+// This file must not include gl/gl_api.h (see imgui_layer.h).
+#include "ui/imgui_layer.h"
+
+#include <stdexcept>
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+namespace ewa {
+
+ImGuiLayer::ImGuiLayer(GLFWwindow* window) {
+  IMGUI_CHECKVERSION();
+  context_ = ImGui::CreateContext();
+  ImGui::SetCurrentContext(context_);
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini left behind in the working directory
+  ImGui::StyleColorsDark();
+  try {
+    glfwBackend_ = ImGui_ImplGlfw_InitForOpenGL(window, /*install_callbacks=*/true);
+    if (!glfwBackend_) throw std::runtime_error("ImGui: GLFW backend failed to start");
+    glBackend_ = ImGui_ImplOpenGL3_Init("#version 450");
+    if (!glBackend_) throw std::runtime_error("ImGui: OpenGL 3 backend failed to start");
+  } catch (...) {
+    shutdown();  // the destructor does not run when the constructor throws
+    throw;
+  }
+}
+
+ImGuiLayer::~ImGuiLayer() { shutdown(); }
+
+void ImGuiLayer::shutdown() {
+  if (!context_) return;
+  ImGui::SetCurrentContext(context_);
+  if (glBackend_) ImGui_ImplOpenGL3_Shutdown();
+  if (glfwBackend_) ImGui_ImplGlfw_Shutdown();  // restores the callbacks it chained to
+  ImGui::DestroyContext(context_);
+  context_ = nullptr;
+  glBackend_ = glfwBackend_ = false;
+}
+
+void ImGuiLayer::beginFrame() {
+  ImGui::SetCurrentContext(context_);
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+}
+
+void ImGuiLayer::render() {
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+bool ImGuiLayer::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
+
+bool ImGuiLayer::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+
+}  // namespace ewa

@@ -1,0 +1,39 @@
+// ImGuiLayer: Dear ImGui's context and its GLFW + OpenGL 3 backends for one window.
+#pragma once
+
+struct GLFWwindow;
+struct ImGuiContext;
+
+namespace ewa {
+
+// Kept apart from the project's GL code: ImGui's OpenGL backend brings its own GL loader, whose
+// glFoo names clash with gl/gl_api.h, so only imgui_layer.cpp includes the backends.
+class ImGuiLayer {
+ public:
+  // The window's GL context must be current. ImGui's GLFW callbacks chain to the ones already
+  // installed on `window`, so install the application's callbacks first. Throws
+  // std::runtime_error when a backend cannot start.
+  explicit ImGuiLayer(GLFWwindow* window);
+  ~ImGuiLayer();
+  ImGuiLayer(const ImGuiLayer&) = delete;
+  ImGuiLayer& operator=(const ImGuiLayer&) = delete;
+
+  // Starts a frame: ImGui widget calls may follow until render().
+  void beginFrame();
+  // Ends the frame and draws the widgets over the current framebuffer (GL state is restored).
+  void render();
+
+  // Whether ImGui used the mouse / keyboard in the last frame (the cursor is over a window, a
+  // widget is being dragged, a text field has focus): the camera must then leave them alone.
+  bool wantsMouse() const;
+  bool wantsKeyboard() const;
+
+ private:
+  void shutdown();
+
+  ImGuiContext* context_ = nullptr;
+  bool glfwBackend_ = false;
+  bool glBackend_ = false;
+};
+
+}  // namespace ewa

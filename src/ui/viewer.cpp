@@ -1,0 +1,145 @@
+// runViewer: the window's main loop: events, render on change, blit, ImGui panel, swap.
+#include "ui/viewer.h"
+
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdint>
+#include <iostream>
+#include <memory>
+
+#include "gl/shader_library.h"
+#include "platform/glfw_window_context.h"
+#include "render/splat_renderer.h"
+#include "ui/camera_controller.h"
+#include "ui/control_panel.h"
+#include "ui/image_presenter.h"
+#include "ui/imgui_layer.h"
+#include "ui/window_input.h"
+
+namespace ewa {
+
+namespace {
+
+// Frames drawn after the last event before the loop sleeps: ImGui settles hover and click
+// states over a couple of frames.
+constexpr int kFramesAfterActivity = 3;
+// Longest sleep when idle; events wake the loop at once.
+constexpr double kIdleWaitSeconds = 0.5;
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Everything that lives as long as the window; members are destroyed in reverse order, so GL
+// objects go before the context and ImGui before the callbacks it chains to.
+class Viewer {
+ public:
+  Viewer(platform::GlfwWindowContext& window, const Volume& volume, const TransferFunction& tf,
+         const ViewerConfig& config)
+      : window_(window),
+        shaders_(config.shaderDir),
+        renderer_(shaders_),
+        controller_(config.camera),
+        settings_(config.settings),
+        input_(window.window(), controller_),
+        imgui_(window.window()),
+        panel_(config.volumeName, volume) {
+    renderer_.setVolume(volume);
+    renderer_.setTransferFunction(tf);
+  }
+
+  void run() {
+    int quietFrames = 0;
+    while (!window_.shouldClose()) {
+      if (quietFrames >= kFramesAfterActivity) {
+        glfwWaitEventsTimeout(kIdleWaitSeconds);
+      } else {
+        glfwPollEvents();
+      }
+      const Clock::time_point start = Clock::now();
+      const bool active = input_.takeActivity();
+      if (!active && quietFrames >= kFramesAfterActivity) continue;  // nothing to redraw
+
+      const bool rendered = drawFrame();
+      frameStats_.frameMs = millisecondsSince(start);
+      // A new image changes the statistics shown, so draw at least one more frame.
+      quietFrames = (active || rendered) ? 0 : quietFrames + 1;
+    }
+  }
+
+ private:
+  // One frame; returns true when the volume was rendered again.
+  bool drawFrame() {
+    input_.updateViewportSize();
+    const glm::ivec2 fb = window_.framebufferSize();
+    if (fb.x <= 0 || fb.y <= 0) return false;  // minimised
+
+    imgui_.beginFrame();
+    Camera camera = controller_.camera();
+    const PanelEdits edits = panel_.draw(settings_, camera, frameStats_);
+    if (edits.camera) controller_.setCamera(camera);
+    if (edits.resetCamera) controller_.reset();
+    if (edits.settings) ++settingsRevision_;
+
+    const bool stale = !hasImage_ || renderedCamera_ != controller_.revision() ||
+                       renderedSettings_ != settingsRevision_ || renderedSize_ != fb;
+    if (stale) {
+      renderer_.render(controller_.camera(), settings_, fb.x, fb.y);
+      hasImage_ = true;
+      renderedCamera_ = controller_.revision();
+      renderedSettings_ = settingsRevision_;
+      renderedSize_ = fb;
+      frameStats_.render = renderer_.stats();
+      frameStats_.imageWidth = fb.x;
+      frameStats_.imageHeight = fb.y;
+    }
+
+    presenter_.present(renderer_.outputTexture(), renderedSize_.x, renderedSize_.y, fb.x, fb.y);
+    imgui_.render();
+    window_.swapBuffers();
+    // ImGui decides what it captures while building the frame; the next events obey that.
+    input_.setUiCapture(imgui_.wantsMouse(), imgui_.wantsKeyboard());
+    return stale;
+  }
+
+  platform::GlfwWindowContext& window_;
+  gl::ShaderLibrary shaders_;
+  SplatRenderer renderer_;
+  ImagePresenter presenter_;
+  CameraController controller_;
+  RenderSettings settings_;
+  WindowInput input_;
+  ImGuiLayer imgui_;
+  ControlPanel panel_;
+
+  FrameStats frameStats_;
+  uint64_t settingsRevision_ = 0;
+  bool hasImage_ = false;
+  uint64_t renderedCamera_ = 0;
+  uint64_t renderedSettings_ = 0;
+  glm::ivec2 renderedSize_{0, 0};
+};
+
+}  // namespace
+
+int runViewer(const Volume& volume, const TransferFunction& tf, const ViewerConfig& config) {
+  std::unique_ptr<platform::GlfwWindowContext> window;
+  try {
+    platform::WindowOptions options;
+    options.width = config.width;
+    options.height = config.height;
+    options.title = config.title;
+    window = std::make_unique<platform::GlfwWindowContext>(options);
+  } catch (const platform::ContextError& e) {
+    std::cerr << "ewaview: " << e.what() << "\n";
+    return 1;
+  }
+  Viewer viewer(*window, volume, tf, config);
+  viewer.run();
+  return 0;
+}
+
+}  // namespace ewa

@@ -1,0 +1,105 @@
+// WindowInput: GLFW mouse and key callbacks of the viewer window, forwarded to the camera.
+#include "ui/window_input.h"
+
+#include <GLFW/glfw3.h>
+
+#include "ui/camera_controller.h"
+
+namespace ewa {
+
+WindowInput::WindowInput(GLFWwindow* window, CameraController& controller)
+    : window_(window), controller_(controller) {
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetMouseButtonCallback(window_, onMouseButton);
+  glfwSetCursorPosCallback(window_, onCursorPos);
+  glfwSetScrollCallback(window_, onScroll);
+  glfwSetKeyCallback(window_, onKey);
+  glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned) { onOtherEvent(w); });
+  glfwSetCursorEnterCallback(window_, [](GLFWwindow* w, int) { onOtherEvent(w); });
+  glfwSetWindowFocusCallback(window_, [](GLFWwindow* w, int) { onOtherEvent(w); });
+  glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { onOtherEvent(w); });
+  glfwSetWindowRefreshCallback(window_, onOtherEvent);
+  updateViewportSize();
+}
+
+WindowInput::~WindowInput() {
+  glfwSetMouseButtonCallback(window_, nullptr);
+  glfwSetCursorPosCallback(window_, nullptr);
+  glfwSetScrollCallback(window_, nullptr);
+  glfwSetKeyCallback(window_, nullptr);
+  glfwSetCharCallback(window_, nullptr);
+  glfwSetCursorEnterCallback(window_, nullptr);
+  glfwSetWindowFocusCallback(window_, nullptr);
+  glfwSetFramebufferSizeCallback(window_, nullptr);
+  glfwSetWindowRefreshCallback(window_, nullptr);
+  glfwSetWindowUserPointer(window_, nullptr);
+}
+
+void WindowInput::setUiCapture(bool mouse, bool keyboard) {
+  uiWantsMouse_ = mouse;
+  uiWantsKeyboard_ = keyboard;
+}
+
+void WindowInput::updateViewportSize() {
+  int width = 0, height = 0;
+  glfwGetWindowSize(window_, &width, &height);
+  controller_.setViewportSize(width, height);
+}
+
+bool WindowInput::takeActivity() {
+  const bool any = activity_;
+  activity_ = false;
+  return any;
+}
+
+WindowInput& WindowInput::from(GLFWwindow* window) {
+  return *static_cast<WindowInput*>(glfwGetWindowUserPointer(window));
+}
+
+void WindowInput::onMouseButton(GLFWwindow* window, int button, int action, int mods) {
+  WindowInput& self = from(window);
+  self.activity_ = true;
+  MouseButton which;
+  switch (button) {
+    case GLFW_MOUSE_BUTTON_LEFT: which = MouseButton::Left; break;
+    case GLFW_MOUSE_BUTTON_MIDDLE: which = MouseButton::Middle; break;
+    case GLFW_MOUSE_BUTTON_RIGHT: which = MouseButton::Right; break;
+    default: return;
+  }
+  if (action == GLFW_RELEASE) {
+    self.controller_.releaseButton(which);  // always, so a drag never sticks
+    return;
+  }
+  if (action != GLFW_PRESS || self.uiWantsMouse_) return;
+  double x = 0.0, y = 0.0;
+  glfwGetCursorPos(window, &x, &y);
+  self.controller_.pressButton(which, (mods & GLFW_MOD_SHIFT) != 0, x, y);
+}
+
+void WindowInput::onCursorPos(GLFWwindow* window, double x, double y) {
+  WindowInput& self = from(window);
+  self.activity_ = true;  // ImGui's hover highlights follow the cursor too
+  self.controller_.moveCursor(x, y);
+}
+
+void WindowInput::onScroll(GLFWwindow* window, double dx, double dy) {
+  WindowInput& self = from(window);
+  self.activity_ = true;
+  if (!self.uiWantsMouse_) self.controller_.scroll(dy);
+}
+
+void WindowInput::onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  WindowInput& self = from(window);
+  self.activity_ = true;
+  if (action != GLFW_PRESS || self.uiWantsKeyboard_) return;
+  switch (key) {
+    case GLFW_KEY_R: self.controller_.reset(); break;
+    case GLFW_KEY_ESCAPE:
+    case GLFW_KEY_Q: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
+    default: break;
+  }
+}
+
+void WindowInput::onOtherEvent(GLFWwindow* window) { from(window).activity_ = true; }
+
+}  // namespace ewa

@@ -1,0 +1,43 @@
+// WindowInput: GLFW mouse and key callbacks of the viewer window, forwarded to the camera.
+#pragma once
+
+struct GLFWwindow;
+
+namespace ewa {
+
+class CameraController;
+
+class WindowInput {
+ public:
+  // Installs the callbacks and points the window's user pointer at this object. Create it
+  // before the ImGuiLayer, whose callbacks chain to these, and destroy it after.
+  WindowInput(GLFWwindow* window, CameraController& controller);
+  ~WindowInput();
+  WindowInput(const WindowInput&) = delete;
+  WindowInput& operator=(const WindowInput&) = delete;
+
+  // ImGui's capture flags from the last frame: presses, scrolls and keys that ImGui wants do
+  // not reach the camera (a drag already under way keeps going over the panel).
+  void setUiCapture(bool mouse, bool keyboard);
+  // Keeps the camera's viewport in step with the window size (cursor coordinates).
+  void updateViewportSize();
+  // True when any event (input, resize, expose) arrived since the last call: the viewer then
+  // draws a few frames so that ImGui can react, and otherwise sleeps in glfwWaitEvents.
+  bool takeActivity();
+
+ private:
+  static WindowInput& from(GLFWwindow* window);
+  static void onMouseButton(GLFWwindow* window, int button, int action, int mods);
+  static void onCursorPos(GLFWwindow* window, double x, double y);
+  static void onScroll(GLFWwindow* window, double dx, double dy);
+  static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
+  static void onOtherEvent(GLFWwindow* window);
+
+  GLFWwindow* window_;
+  CameraController& controller_;
+  bool uiWantsMouse_ = false;
+  bool uiWantsKeyboard_ = false;
+  bool activity_ = true;  // draw the first frames
+};
+
+}  // namespace ewa
