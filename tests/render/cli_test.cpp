@@ -26,7 +26,10 @@ std::string slurp(const std::string& path) {
 
 CliRun ewaview(const std::string& args) {
   const std::string dir = testOutputDir();
-  const std::string out = dir + "/cli.out", err = dir + "/cli.err";
+  // CTest runs each test as its own process, in parallel: name the capture files per test.
+  const std::string stem =
+      dir + "/cli_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::string out = stem + ".out", err = stem + ".err";
   const std::string cmd = std::string(EWA_BINARY) + " " + args + " >" + out + " 2>" + err + " </dev/null";
   const int status = std::system(cmd.c_str());
   CliRun r;
