@@ -33,11 +33,7 @@ std::vector<glm::vec3> spriteSizes(const SplatRenderer& r, const Volume& vol, co
   const Projection proj = cam.projection(w, h);
   const glm::dmat4 view = cam.viewMatrix();
   const glm::dmat3 cov = cameraCovariance(cam.rotation(), vol.spacing());
-  FootprintParams params;
-  params.filter = s.filter;
-  params.cutoff = s.cutoff;
-  params.minSpacing = std::min({vol.spacing().x, vol.spacing().y, vol.spacing().z});
-  params.nearDepth = params.minSpacing;
+  const FootprintParams params = footprintParams(s, vol.spacing());
   std::vector<glm::vec3> out;
   for (const PackedSplat& p : r.splats().splats()) {
     const glm::dvec3 world = vol.worldPosition(SplatSet::i(p), SplatSet::j(p), SplatSet::k(p));

@@ -1,5 +1,7 @@
-// Names of the render modes, for the command line and the window.
+// Names of the render modes, and the footprint parameters the render settings imply.
 #include "render/renderer.h"
+
+#include <algorithm>
 
 namespace ewa {
 
@@ -9,6 +11,15 @@ const char* renderModeName(RenderMode mode) {
     case RenderMode::XRay: return "xray";
   }
   return "?";
+}
+
+FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3& spacing) {
+  FootprintParams params;
+  params.filter = settings.filter;
+  params.cutoff = settings.cutoff;
+  params.minSpacing = std::min({spacing.x, spacing.y, spacing.z});
+  params.nearDepth = params.minSpacing;
+  return params;
 }
 
 bool parseRenderMode(const std::string& text, RenderMode* mode) {

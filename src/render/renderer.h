@@ -28,6 +28,10 @@ struct RenderSettings {
   glm::dvec3 background{0.0};
 };
 
+// The footprint parameters every splat of a volume with this spacing gets under `settings`:
+// Swan's s is the smallest spacing, and voxels closer than it to the eye plane are culled.
+FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3& spacing);
+
 struct RenderStats {
   size_t splatsTotal = 0;   // non-transparent voxels
   size_t splatsDrawn = 0;   // in front of the eye, sent to the GPU this frame

@@ -76,7 +76,7 @@ double SplatRenderer::footprintRadiusBound(const Projection& proj, const RenderS
 void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, const Projection& proj,
                                       const RenderSettings& settings) {
   const glm::dvec3& sp = volume_->spacing();
-  const double minSpacing = std::min({sp.x, sp.y, sp.z});
+  const FootprintParams params = footprintParams(settings, sp);
   p.setMat4("uView", glm::mat4(camera.viewMatrix()));
   p.setMat3("uCovariance", glm::mat3(cameraCovariance(camera.rotation(), sp)));
   p.setVec3("uOrigin", glm::vec3(volume_->origin()));
@@ -87,10 +87,10 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setFloat("uFocalPixels", float(proj.focalPixels));
   p.setFloat("uPixelsPerUnit", float(proj.pixelsPerUnit));
   p.setVec2("uViewport", glm::vec2(proj.width, proj.height));
-  p.setInt("uFilter", int(settings.filter));
-  p.setFloat("uCutoff", float(settings.cutoff));
-  p.setFloat("uMinSpacing", float(minSpacing));
-  p.setFloat("uNearDepth", float(minSpacing));
+  p.setInt("uFilter", int(params.filter));
+  p.setFloat("uCutoff", float(params.cutoff));
+  p.setFloat("uMinSpacing", float(params.minSpacing));
+  p.setFloat("uNearDepth", float(params.nearDepth));
   p.setFloat("uPointSizeLimit", pointSizeLimit_);
   p.setInt("uTransfer", 0);
 }
@@ -117,12 +117,13 @@ void SplatRenderer::render(const Camera& camera, const RenderSettings& settings,
   const Projection proj = camera.projection(width, height);
   if (volume_ && splats_.size() > 0 && camera.valid()) {
     const glm::dvec3& sp = volume_->spacing();
-    const double minSpacing = std::min({sp.x, sp.y, sp.z});
+    const FootprintParams params = footprintParams(settings, sp);
     // X-ray sums every splat into one buffer: a single slab of unbounded thickness.
     const double thickness = settings.mode == RenderMode::XRay
                                  ? 1e30
-                                 : std::max(1e-3, settings.slabThickness) * minSpacing;
-    partition_.build(splats_, volume_->origin(), sp, camera.viewMatrix(), thickness, minSpacing);
+                                 : std::max(1e-3, settings.slabThickness) * params.minSpacing;
+    partition_.build(splats_, volume_->origin(), sp, camera.viewMatrix(), thickness,
+                     params.nearDepth);
     const auto& order = partition_.order();
     stats_.splatsTotal = splats_.size();
     stats_.splatsDrawn = order.size();
