@@ -14,7 +14,7 @@ std::string oneLine(const std::string& text) {
   std::string out;
   for (char c : text) {
     if (c == '\n') {
-      if (!out.empty() && out.back() != ' ') out += " |";
+      if (!out.empty() && out.back() != ' ' && out.back() != ':') out += " |";
       out += ' ';
     } else if (c != '\r') {
       out += c;

@@ -199,6 +199,19 @@ TEST_F(EdgeCases, AllTransparentAndAllOpaqueTransferFunctions) {
   EXPECT_GE(pixel(img, kW / 2, kH / 2, 1), 250);
 }
 
+TEST_F(EdgeCases, TinyOpacityUnitDistanceGivesOpaqueNotNan) {
+  // tau = 13.8 / 1e-300 overflows float: found by the tf_json fuzzer (infinite tau made the
+  // slab colour inf / inf = NaN, drawn black). Now capped: the cube is opaque white.
+  const Volume cube = makeVolume(6, 6, 6, glm::dvec3(1.0), [](int, int, int) { return true; });
+  TransferFunction tf = whiteTf(1.0, 1.0);
+  tf.opacityUnitDistance = 1e-300;
+  double sum = 0.0;
+  const Image8 img = renderBoth(cube, tf, lookAt({2.5, 2.5, 30}, {2.5, 2.5, 2.5}), &sum);
+  EXPECT_TRUE(std::isfinite(sum));
+  EXPECT_GE(pixel(img, kW / 2, kH / 2, 0), 250);
+  EXPECT_GE(pixel(img, kW / 2, kH / 2, 1), 250);
+}
+
 TEST_F(EdgeCases, EyeInsideTheVolumeAndNearPlaneThroughVoxels) {
   const Volume cube = makeVolume(12, 12, 12, glm::dvec3(1.0), [](int, int, int) { return true; });
   const TransferFunction tf = whiteTf(0.2, 1.0);
