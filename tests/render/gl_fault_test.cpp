@@ -40,7 +40,7 @@ fs::path scratch() {
 CliResult ewaview(const fs::path& dir, const std::string& args) {
   const std::string err = (dir / "stderr.txt").string();
   const std::string cmd =
-      std::string(EWA_BINARY) + " " + args + " >/dev/null 2>" + err + " </dev/null";
+      "timeout 60 " + std::string(EWA_BINARY) + " " + args + " >/dev/null 2>" + err + " </dev/null";
   const int status = std::system(cmd.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(err)};
 }
@@ -93,6 +93,20 @@ TEST(GlFaults, ShaderLinkErrorIsOneLineWithTheGlLogAndExitOne) {
   EXPECT_EQ(lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("cannot link program"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("neverDefined"), std::string::npos) << "no GL log: " << r.err;
+}
+
+TEST(GlFaults, WindowWithABrokenShaderSaysSoAndExitsOne) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display";
+  const fs::path dir = scratch();
+  const fs::path shaders =
+      brokenShaders(dir, "splat.frag.glsl", "void main", "int broken = ;\nvoid main");
+  // `timeout`: were the error missed, the window would wait for a user for ever.
+  const CliResult r =
+      ewaview(dir, "--synthetic sphere:8 --resolution 64,64 --shader-dir " + shaders.string());
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("splat.frag.glsl"), std::string::npos) << r.err;
 }
 
 TEST(GlFaults, MissingShaderFolderIsOneLine) {
