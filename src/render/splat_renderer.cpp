@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
+
+#include <unistd.h>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -29,6 +32,14 @@ SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
   glPointSizeLimit_ = pointSizeLimit_ = std::max(1.0f, range[1]);
   transferTexture_.setFilter(GL_LINEAR, GL_LINEAR);
   transferTexture_.setWrap(GL_CLAMP_TO_EDGE);
+  // The splat list must fit one shader storage block and, on the CPU, the machine's memory.
+  GLint64 block = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
+  maxStorageBlockBytes_ = uint64_t(std::max<GLint64>(block, 0));
+  const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
+  const uint64_t memory = pages > 0 && pageSize > 0 ? uint64_t(pages) * uint64_t(pageSize) : ~0ull;
+  glMaxSplats_ = maxSplats_ =
+      size_t(std::min(maxStorageBlockBytes_, memory / 2) / sizeof(PackedSplat));
 }
 
 void SplatRenderer::setPointSizeLimit(float limit) {
@@ -50,11 +61,24 @@ void SplatRenderer::rebuildSplats() {
   const double lo = volume_->minValue(), hi = volume_->maxValue();
   const std::vector<glm::vec4> table = tf_.bake(lo, hi, kTransferSamples);
   transferTexture_.subImage1D(0, 0, kTransferSamples, GL_RGBA, GL_FLOAT, table.data());
-  splats_ = SplatSet::build(*volume_, [this](double v) { return tf_.alphaAt(v) > 0.0; });
+  splats_ = SplatSet();
+  try {
+    splats_ = SplatSet::build(*volume_, [this](double v) { return tf_.alphaAt(v) > 0.0; }, 1,
+                              maxSplats_);
+  } catch (const SplatLimitError&) {
+    splatsDirty_ = true;  // nothing drawn until the volume or transfer function changes
+    throw gl::GlError("volume: more than " + std::to_string(maxSplats_) +
+                      " visible voxels; the splat buffer (8 bytes a voxel) may hold at most " +
+                      std::to_string(maxStorageBlockBytes_) +
+                      " bytes (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) and half the machine's memory: "
+                      "make more of the volume transparent");
+  }
   const auto bytes = GLsizeiptr(std::max<size_t>(1, splats_.size()) * sizeof(PackedSplat));
   splatBuffer_.setData(bytes, splats_.size() ? splats_.splats().data() : nullptr, GL_STATIC_DRAW);
   orderBuffer_.setData(GLsizeiptr(std::max<size_t>(1, splats_.size()) * sizeof(uint32_t)),
                        nullptr, GL_STREAM_DRAW);
+  // GL_OUT_OF_MEMORY here names the buffer instead of surfacing at the end of the frame.
+  gl::checkGlError(("splat buffer upload (" + std::to_string(bytes) + " bytes)").c_str());
 }
 
 double SplatRenderer::footprintRadiusBound(const Projection& proj, const RenderSettings& settings,

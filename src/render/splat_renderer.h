@@ -1,6 +1,8 @@
 // SplatRenderer: EWA (and Swan and plain) volume splatting with view-aligned slab compositing.
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
 #include <memory>
 
 #include "core/slab_partition.h"
@@ -36,6 +38,8 @@ class SplatRenderer : public Renderer {
   float pointSizeLimit() const { return pointSizeLimit_; }
   // Test hook: a lower limit forces the quad path (never above the GL limit).
   void setPointSizeLimit(float limit);
+  // Test hook: fewer splats allowed than the GL limit, to test the error without a huge volume.
+  void setMaxSplats(size_t maxSplats) { maxSplats_ = std::min(glMaxSplats_, maxSplats); }
 
  private:
   void rebuildSplats();
@@ -60,6 +64,9 @@ class SplatRenderer : public Renderer {
   gl::Buffer orderBuffer_;
   gl::Texture transferTexture_;
   RenderTargets targets_;
+  size_t glMaxSplats_ = SIZE_MAX;        // splats that fit the GPU's storage block and memory
+  size_t maxSplats_ = SIZE_MAX;          // the limit in force (lower in tests)
+  uint64_t maxStorageBlockBytes_ = 0;    // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
   float pointSizeLimit_ = 64.0f;
   float glPointSizeLimit_ = 64.0f;
   RenderStats stats_;

@@ -2,11 +2,13 @@
 #include "ui/viewer.h"
 
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include <chrono>
 #include <cstdint>
 #include <iostream>
 #include <memory>
+#include <string>
 
 #include "gl/shader_library.h"
 #include "platform/glfw_window_context.h"
@@ -87,7 +89,7 @@ class Viewer {
     const bool stale = !hasImage_ || renderedCamera_ != controller_.revision() ||
                        renderedSettings_ != settingsRevision_ || renderedSize_ != fb;
     if (stale) {
-      renderer_.render(controller_.camera(), settings_, fb.x, fb.y);
+      renderSafely(fb);
       hasImage_ = true;
       renderedCamera_ = controller_.revision();
       renderedSettings_ = settingsRevision_;
@@ -98,11 +100,31 @@ class Viewer {
     }
 
     presenter_.present(renderer_.outputTexture(), renderedSize_.x, renderedSize_.y, fb.x, fb.y);
+    if (!renderError_.empty()) {
+      ImGui::GetForegroundDrawList()->AddText(ImVec2(10.0f, float(fb.y) - 30.0f),
+                                              IM_COL32(255, 90, 90, 255), renderError_.c_str());
+    }
     imgui_.render();
     window_.swapBuffers();
     // ImGui decides what it captures while building the frame; the next events obey that.
     input_.setUiCapture(imgui_.wantsMouse(), imgui_.wantsKeyboard());
     return stale;
+  }
+
+  // A GL failure while rendering (out of memory, a limit, an incomplete framebuffer) keeps the
+  // window open: the message is printed once and shown until a change renders again.
+  void renderSafely(glm::ivec2 fb) {
+    try {
+      renderer_.render(controller_.camera(), settings_, fb.x, fb.y);
+      renderError_.clear();
+    } catch (const std::exception& e) {
+      std::string message = e.what();
+      for (char& c : message) c = (c == '\n' || c == '\r') ? ' ' : c;
+      if (message != renderError_)
+        std::cerr << "ewaview: " << message << " (the window keeps running)\n";
+      renderError_ = message;
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
   }
 
   platform::GlfwWindowContext& window_;
@@ -121,6 +143,7 @@ class Viewer {
   uint64_t renderedCamera_ = 0;
   uint64_t renderedSettings_ = 0;
   glm::ivec2 renderedSize_{0, 0};
+  std::string renderError_;
 };
 
 }  // namespace
