@@ -8,7 +8,7 @@
 namespace ewa {
 
 SplatSet SplatSet::build(const Volume& volume, const std::function<bool(double)>& isVisible,
-                         int stride) {
+                         int stride, const VoxelPredicate& alsoKeep) {
   SplatSet set;
   set.stride_ = std::max(1, stride);
   const auto& d = volume.dims();
@@ -31,7 +31,8 @@ SplatSet SplatSet::build(const Volume& volume, const std::function<bool(double)>
         const double v = volume.valueAt(n);
         if (!std::isfinite(v)) continue;
         const double x = std::clamp((v - lo) / width, 0.0, 1.0);
-        if (!visible[std::min(kTable - 1, int(x * (kTable - 1)))]) continue;
+        if (!visible[std::min(kTable - 1, int(x * (kTable - 1)))] && !(alsoKeep && alsoKeep(i, j, k, v)))
+          continue;
         const auto q = static_cast<uint32_t>(std::lround(x * (kValueLevels - 1)));
         set.splats_.push_back({uint32_t(i) | uint32_t(j) << 16, uint32_t(k) | q << 16});
       }

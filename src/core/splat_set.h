@@ -20,8 +20,11 @@ class SplatSet {
   // Keeps voxels whose value's opacity (by `isVisible`, called on a 4096-entry table over the
   // value range, not per voxel) is above zero. Throws std::invalid_argument if a dimension
   // exceeds 65535. `stride` > 1 keeps every stride-th voxel along each axis (a coarse level).
+  // `alsoKeep(i, j, k, value)`, when given, is asked about voxels the table leaves out (surface
+  // voxels are kept whatever their opacity).
+  using VoxelPredicate = std::function<bool(int64_t, int64_t, int64_t, double)>;
   static SplatSet build(const Volume& volume, const std::function<bool(double)>& isVisible,
-                        int stride = 1);
+                        int stride = 1, const VoxelPredicate& alsoKeep = nullptr);
 
   const std::vector<PackedSplat>& splats() const { return splats_; }
   size_t size() const { return splats_.size(); }
