@@ -9,7 +9,7 @@
 namespace ewa {
 
 SplatSet SplatSet::build(const Volume& volume, const std::function<bool(double)>& isVisible,
-                         int stride, size_t maxSplats) {
+                         int stride, const VoxelPredicate& alsoKeep, size_t maxSplats) {
   SplatSet set;
   set.stride_ = std::max(1, stride);
   const auto& d = volume.dims();
@@ -32,7 +32,9 @@ SplatSet SplatSet::build(const Volume& volume, const std::function<bool(double)>
         const double v = volume.valueAt(n);
         if (!std::isfinite(v)) continue;
         const double x = std::clamp((v - lo) / width, 0.0, 1.0);
-        if (!visible[std::min(kTable - 1, int(x * (kTable - 1)))]) continue;
+        if (!visible[std::min(kTable - 1, int(x * (kTable - 1)))] &&
+            !(alsoKeep && alsoKeep(i, j, k, v)))
+          continue;
         if (set.splats_.size() >= maxSplats)
           throw SplatLimitError("more than " + std::to_string(maxSplats) +
                                 " voxels are visible, the most that fit");

@@ -28,10 +28,14 @@ class SplatSet {
   // Keeps voxels whose value's opacity (by `isVisible`, called on a 4096-entry table over the
   // value range, not per voxel) is above zero. Throws std::invalid_argument if a dimension
   // exceeds 65535. `stride` > 1 keeps every stride-th voxel along each axis (a coarse level).
-  // Throws SplatLimitError as soon as more than `maxSplats` voxels are visible, before the
-  // list grows past that (the caller's memory or GPU buffer limit).
+  // Throws SplatLimitError as soon as more than `maxSplats` voxels are kept, before the list
+  // grows past that (the caller's memory or GPU buffer limit).
+  // `alsoKeep(i, j, k, value)`, when given, is asked about voxels the table leaves out (surface
+  // voxels are kept whatever their opacity).
+  using VoxelPredicate = std::function<bool(int64_t, int64_t, int64_t, double)>;
   static SplatSet build(const Volume& volume, const std::function<bool(double)>& isVisible,
-                        int stride = 1, size_t maxSplats = SIZE_MAX);
+                        int stride = 1, const VoxelPredicate& alsoKeep = nullptr,
+                        size_t maxSplats = SIZE_MAX);
 
   const std::vector<PackedSplat>& splats() const { return splats_; }
   size_t size() const { return splats_.size(); }
