@@ -20,9 +20,15 @@ namespace {
 // Beyond this the reference's float buffers (about 40 bytes a pixel) would not fit comfortably.
 constexpr int kMaxReferenceSize = 8192;
 
-std::string fileNameOf(const std::string& spec) {
+// quality_<spec>.png, with ':' as '_' and the sheet opacity when it was replaced.
+std::string fileNameOf(const std::string& spec, double sheetOpacity) {
   std::string s = spec;
   std::replace(s.begin(), s.end(), ':', '_');
+  if (sheetOpacity > 0.0) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "_opacity%g", sheetOpacity);
+    s += buf;
+  }
   return "quality_" + s + ".png";
 }
 
@@ -77,11 +83,14 @@ int run(int argc, char** argv) {
                                 std::to_string(limit) + " (tiling is not implemented)");
   const gl::ShaderLibrary shaders;
   SplatRenderer renderer(shaders);
+  char opacityText[32];
+  std::snprintf(opacityText, sizeof opacityText, "%g", o.sheetOpacity);
+  const std::string opacity = o.sheetOpacity > 0.0 ? opacityText : "0.98 (the volumes' own)";
   std::printf(
       "# %s; %dx%d, reference %dx%d supersampled (%d with margin), Gaussian sigma %.2f px; "
-      "%d moves of %.3f px\n\n",
+      "%d moves of %.3f px; sheet opacity %s\n\n",
       context->description().c_str(), o.size, o.size, o.supersample, o.supersample, needed, o.sigma,
-      o.frames, o.stepPixels);
+      o.frames, o.stepPixels, opacity.c_str());
   std::vector<SceneQuality> results;
   for (const QualityScene& scene : scenes) {
     const SyntheticVolume volume = makeSyntheticVolume(scene.spec);
@@ -97,7 +106,8 @@ int run(int argc, char** argv) {
                  maskCount(q.regions.beyondK), maskCount(q.regions.anisotropic),
                  q.plainReferenceRmseAll, q.plainReferenceRmseBeyond, seconds);
     if (!outputDir.empty()) {
-      const std::string path = (std::filesystem::path(outputDir) / fileNameOf(scene.spec)).string();
+      const std::string path =
+          (std::filesystem::path(outputDir) / fileNameOf(scene.spec, o.sheetOpacity)).string();
       writePng(path, qualityMontage(q));
     }
   }

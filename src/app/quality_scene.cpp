@@ -11,6 +11,21 @@
 
 namespace ewa {
 
+namespace {
+
+// True when a pixel within kSilhouetteMargin of (x, y) is off the sheet or off the image.
+bool nearSilhouette(const PixelMask& sheet, int width, int height, int x, int y) {
+  for (int dy = -kSilhouetteMargin; dy <= kSilhouetteMargin; ++dy)
+    for (int dx = -kSilhouetteMargin; dx <= kSilhouetteMargin; ++dx) {
+      const int xx = x + dx, yy = y + dy;
+      if (xx < 0 || yy < 0 || xx >= width || yy >= height) return true;
+      if (!sheet[size_t(yy) * width + xx]) return true;
+    }
+  return false;
+}
+
+}  // namespace
+
 Camera QualityScene::camera() const {
   Camera c;
   c.position = position;
@@ -93,10 +108,14 @@ SheetRegions sheetRegions(const Volume& sheet, const Camera& camera, int width, 
           std::sqrt(0.25 * (c[0][0] - c[1][1]) * (c[0][0] - c[1][1]) + c[0][1] * c[0][1]);
       const double minor = std::max(mean - disc, 1e-30), major = mean + disc;
       r.aspect[p] = float(std::sqrt(major / minor));
-      if (t > r.k) {
-        r.beyondK[p] = 1;
-        r.anisotropic[p] = r.aspect[p] >= kAnisotropicAspect;
-      }
+    }
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const size_t p = size_t(y) * width + x;
+      if (!r.sheet[p] || !(r.depth[p] > r.k) || nearSilhouette(r.sheet, width, height, x, y))
+        continue;
+      r.beyondK[p] = 1;
+      r.anisotropic[p] = r.aspect[p] >= kAnisotropicAspect;
     }
   return r;
 }

@@ -36,11 +36,15 @@ struct SheetRegions {
   std::vector<float> depth;   // per pixel; 0 off the sheet
   std::vector<float> aspect;  // major / minor axis of the reconstruction footprint there
   PixelMask sheet;            // the ray meets the sheet
-  PixelMask beyondK;          // ... at depth > k: more than one voxel per pixel
+  PixelMask beyondK;          // ... at depth > k: more than one voxel per pixel (see below)
   PixelMask anisotropic;      // ... beyond k, with footprint aspect >= kAnisotropicAspect
 };
 
 constexpr double kAnisotropicAspect = 1.5;
+// beyondK and anisotropic leave out sheet pixels this close (in pixels, either axis) to the
+// sheet's silhouette: there the modes differ by how far their kernels spread past the edge
+// (Swan's stretched kernels fatten the horizon), not by how they filter the texture.
+constexpr int kSilhouetteMargin = 2;
 
 // Throws std::invalid_argument when the volume is not one voxel thick.
 SheetRegions sheetRegions(const Volume& sheet, const Camera& camera, int width, int height);
