@@ -5,6 +5,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <stdexcept>
 
 #include "gl/gl_error.h"
 #include "gl/scoped_bind.h"
@@ -59,6 +60,11 @@ void SplatRenderer::rebuildSplats(const Classification& classification) {
   // Gradients and surface voxels are found here, once per volume, transfer function and
   // classification; camera and light changes only change uniforms.
   classified_ = classifySplats(*volume_, tf_, classification);
+  // Order entries keep two flag bits above the splat index.
+  if (classified_.splats.size() > SlabPartition::kIndexMask) {
+    classified_ = ClassifiedSplats{};
+    throw std::runtime_error("more than 2^30 visible voxels: not supported by splatting");
+  }
   const size_t n = std::max<size_t>(1, classified_.splats.size());
   const auto& splats = classified_.splats.splats();
   splatBuffer_.setData(GLsizeiptr(n * sizeof(PackedSplat)),
