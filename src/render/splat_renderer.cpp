@@ -81,6 +81,12 @@ void SplatRenderer::rebuildSplats(const Classification& classification) {
                       " bytes (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) and half the machine's memory: "
                       "make more of the volume transparent");
   }
+  // Order entries keep two flag bits above the splat index.
+  if (classified_.splats.size() > SlabPartition::kIndexMask) {
+    classified_ = ClassifiedSplats{};
+    splatsDirty_ = true;
+    throw gl::GlError("volume: more than 2^30 visible voxels: not supported by splatting");
+  }
   const size_t n = std::max<size_t>(1, classified_.splats.size());
   const auto& splats = classified_.splats.splats();
   splatBuffer_.setData(GLsizeiptr(n * sizeof(PackedSplat)),
