@@ -51,6 +51,19 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--slab-thickness", o->render.slabThickness,
                  "Slab thickness in voxels of the smallest spacing (default 1)")
       ->check(CLI::Range(0.05, 1000.0));
+  std::string rendererName = "splat", lookup = "nearest", correction = "on", buffers = "slice";
+  app.add_option("--renderer", rendererName, "splat (default, GPU EWA splatting) or shearwarp (CPU)")
+      ->check(CLI::IsMember({"splat", "shearwarp"}));
+  app.add_flag("--preintegrated", o->render.shearWarp.preintegrated,
+               "Shear-warp: pre-integrated slabs between slices");
+  app.add_option("--table-lookup", lookup, "Shear-warp pre-integration lookup: nearest (default) or bilinear")
+      ->check(CLI::IsMember({"nearest", "bilinear"}));
+  app.add_option("--opacity-correction", correction,
+                 "Shear-warp opacity and colour correction for the view's sample distance: on (default) or off")
+      ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--buffer-slices", buffers,
+                 "Shear-warp buffer slices: slice (two slice-sized, default) or image (one intermediate-image-sized)")
+      ->check(CLI::IsMember({"slice", "image"}));
   app.add_option("--tf", o->tfFile, "Transfer function JSON file");
   app.add_option("--background", bg, "Background colour R,G,B in [0,1] (default 0,0,0)")
       ->delimiter(',')->expected(3)->check(CLI::Range(0.0, 1.0));
@@ -87,6 +100,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!bg.empty()) o->render.background = glm::dvec3(bg[0], bg[1], bg[2]);
   parseFilterMode(filter, &o->render.filter);
   parseRenderMode(mode, &o->render.mode);
+  parseRendererKind(rendererName, &o->renderer);
+  parseTableLookup(lookup, &o->render.shearWarp.lookup);
+  parseBufferSlices(buffers, &o->render.shearWarp.buffers);
+  o->render.shearWarp.opacityCorrection = correction == "on";
   return {true, 0};
 }
 

@@ -29,4 +29,15 @@ bool parseRenderMode(const std::string& text, RenderMode* mode) {
   return true;
 }
 
+const char* rendererKindName(RendererKind kind) {
+  return kind == RendererKind::ShearWarp ? "shearwarp" : "splat";
+}
+
+bool parseRendererKind(const std::string& text, RendererKind* kind) {
+  if (text == "splat") *kind = RendererKind::Splat;
+  else if (text == "shearwarp") *kind = RendererKind::ShearWarp;
+  else return false;
+  return true;
+}
+
 }  // namespace ewa

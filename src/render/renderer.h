@@ -9,6 +9,7 @@
 
 #include "core/camera.h"
 #include "core/ewa_footprint.h"
+#include "core/shear_warp_settings.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
 #include "io/png_io.h"
@@ -26,7 +27,12 @@ struct RenderSettings {
   double cutoff = 4.0;         // footprint cutoff r = dx^T Q dx
   double slabThickness = 1.0;  // in units of the smallest voxel spacing
   glm::dvec3 background{0.0};
+  ShearWarpSettings shearWarp;  // read by the shear-warp renderer only
 };
+
+enum class RendererKind { Splat = 0, ShearWarp = 1 };
+const char* rendererKindName(RendererKind kind);
+bool parseRendererKind(const std::string& text, RendererKind* kind);
 
 // The footprint parameters every splat of a volume with this spacing gets under `settings`:
 // Swan's s is the smallest spacing, and voxels closer than it to the eye plane are culled.
