@@ -8,6 +8,9 @@ namespace ewa {
 
 namespace {
 
+// Samples of the transfer function inside each sub-bin for its means.
+constexpr int kSamplesPerSubBin = 8;
+
 double scalarOf(double lo, double hi, int size, double index) {
   return lo + (hi - lo) * index / double(size - 1);
 }
@@ -37,14 +40,22 @@ PreintegrationTable PreintegrationTable::build(const TransferFunction& tf, doubl
   const std::vector<glm::vec4> diagonal = buildPointTable(tf, lo, hi, size, distance);
   for (int i = 0; i < size; ++i) table.entries_[size_t(i) * size + i] = diagonal[i];
 
-  // Sub-bins between table samples: extinction and colour at their midpoints.
+  // Sub-bins between table samples: mean extinction over the sub-bin (so a segment's opacity
+  // is right even when a thin peak lies inside one) and the extinction-weighted mean colour.
   const int bins = (size - 1) * substeps;
   std::vector<double> tau(bins);
   std::vector<glm::dvec3> color(bins);
   for (int j = 0; j < bins; ++j) {
-    const double s = scalarOf(lo, hi, size, (j + 0.5) / substeps);
-    tau[j] = tf.extinctionAt(s);
-    color[j] = tf.colorAt(s);
+    double sum = 0.0;
+    glm::dvec3 weighted(0.0);
+    for (int q = 0; q < kSamplesPerSubBin; ++q) {
+      const double s = scalarOf(lo, hi, size, (j + (q + 0.5) / kSamplesPerSubBin) / substeps);
+      const double t = tf.extinctionAt(s);
+      sum += t;
+      weighted += t * tf.colorAt(s);
+    }
+    tau[j] = sum / kSamplesPerSubBin;
+    color[j] = sum > 0.0 ? weighted / sum : glm::dvec3(0.0);
   }
   std::vector<double> transmit(bins);
   std::vector<glm::dvec3> emit(bins);

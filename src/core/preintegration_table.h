@@ -19,7 +19,8 @@ class PreintegrationTable {
   PreintegrationTable() = default;
 
   // Fast construction, O(size^3 * substeps / 3): each table interval is split into `substeps`
-  // sub-bins of constant tau and colour (taken at their midpoints); a segment from index f to b
+  // sub-bins of constant tau and colour (the sub-bin's mean tau and tau-weighted mean colour,
+  // from 8 samples each); a segment from index f to b
   // crosses |b - f| * substeps of them, each over the length d / (|b - f| * substeps), and they
   // are composited front to back with their exact self-attenuation. Entries with f == b are
   // exact: alpha = 1 - exp(-tau d), c = colour * alpha. Throws std::invalid_argument for
