@@ -13,7 +13,7 @@ namespace ewa {
 void renderHeadless(const Scene& scene, const Options& o) {
   auto context = platform::createHeadlessContext(platform::parseHeadlessBackend(o.backend));
   const gl::ShaderLibrary shaders(o.shaderDir);
-  const std::unique_ptr<Renderer> renderer = createRenderer(o.renderer, shaders);
+  const std::unique_ptr<Renderer> renderer = createRenderer(o.render.renderer, shaders);
   renderer->setVolume(scene.volume);
   renderer->setTransferFunction(scene.transferFunction);
   renderer->render(initialCamera(scene.volume, o), o.render, o.width, o.height);

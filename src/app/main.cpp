@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
       std::cout << ewa::volumeInfoJson(scene.volume) << "\n";
       return 0;
     }
-    if (options.renderer == ewa::RendererKind::ShearWarp && !options.orthographic)
+    if (options.render.renderer == ewa::RendererKind::ShearWarp && !options.orthographic)
       std::cerr << "ewaview: note: shear-warp renders parallel projection; the perspective camera "
                    "is drawn as the orthographic view of the same height at the focal point\n";
     if (!options.output.empty()) {

@@ -100,7 +100,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!bg.empty()) o->render.background = glm::dvec3(bg[0], bg[1], bg[2]);
   parseFilterMode(filter, &o->render.filter);
   parseRenderMode(mode, &o->render.mode);
-  parseRendererKind(rendererName, &o->renderer);
+  parseRendererKind(rendererName, &o->render.renderer);
   parseTableLookup(lookup, &o->render.shearWarp.lookup);
   parseBufferSlices(buffers, &o->render.shearWarp.buffers);
   o->render.shearWarp.opacityCorrection = correction == "on";

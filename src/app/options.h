@@ -23,7 +23,6 @@ struct Options {
   double cameraViewAngle = 30.0;
   bool orthographic = false;
   RenderSettings render;
-  RendererKind renderer = RendererKind::Splat;
   std::string tfFile;
   std::string backend = "osmesa";
   std::string shaderDir;       // load shaders from this folder instead of the embedded ones

@@ -21,7 +21,12 @@ enum class RenderMode { Composite = 0, XRay = 1 };
 const char* renderModeName(RenderMode mode);
 bool parseRenderMode(const std::string& text, RenderMode* mode);
 
+enum class RendererKind { Splat = 0, ShearWarp = 1 };
+const char* rendererKindName(RendererKind kind);
+bool parseRendererKind(const std::string& text, RendererKind* kind);
+
 struct RenderSettings {
+  RendererKind renderer = RendererKind::Splat;  // which renderer the program creates
   FilterMode filter = FilterMode::Ewa;
   RenderMode mode = RenderMode::Composite;
   double cutoff = 4.0;         // footprint cutoff r = dx^T Q dx
@@ -30,9 +35,6 @@ struct RenderSettings {
   ShearWarpSettings shearWarp;  // read by the shear-warp renderer only
 };
 
-enum class RendererKind { Splat = 0, ShearWarp = 1 };
-const char* rendererKindName(RendererKind kind);
-bool parseRendererKind(const std::string& text, RendererKind* kind);
 
 // The footprint parameters every splat of a volume with this spacing gets under `settings`:
 // Swan's s is the smallest spacing, and voxels closer than it to the eye plane are culled.
