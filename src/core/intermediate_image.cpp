@@ -17,18 +17,31 @@ glm::vec4 texel(const IntermediateImage& img, int u, int v) {
 
 void warpRows(const IntermediateImage& img, const glm::dmat3& inv, FloatImage& out, int first,
               int step) {
+  // Affine: along a row (u, v) advances by the first column of the inverse warp.
+  const double du = inv[0][0], dv = inv[0][1];
   for (int row = first; row < out.height; row += step) {
     const double y = out.height - 1 - row + 0.5;  // row 0 is the top
-    for (int x = 0; x < out.width; ++x) {
-      const glm::dvec3 uv = inv * glm::dvec3(x + 0.5, y, 1.0);
-      const double fu = std::floor(uv.x), fv = std::floor(uv.y);
+    const glm::dvec3 start = inv * glm::dvec3(0.5, y, 1.0);
+    float* dst = &out.at(0, row, 0);
+    for (int x = 0; x < out.width; ++x, dst += 4) {
+      const double uu = start.x + du * x, vv = start.y + dv * x;
+      const double fu = std::floor(uu), fv = std::floor(vv);
       if (fu < -1.0 || fv < -1.0 || fu >= img.width || fv >= img.height) continue;
       const int u = int(fu), v = int(fv);
-      const float wu = float(uv.x - fu), wv = float(uv.y - fv);
-      const glm::vec4 c =
-          (texel(img, u, v) * (1.0f - wu) + texel(img, u + 1, v) * wu) * (1.0f - wv) +
-          (texel(img, u, v + 1) * (1.0f - wu) + texel(img, u + 1, v + 1) * wu) * wv;
-      for (int ch = 0; ch < 4; ++ch) out.at(x, row, ch) = c[ch];
+      const float wu = float(uu - fu), wv = float(vv - fv);
+      glm::vec4 c;
+      if (u >= 0 && v >= 0 && u + 1 < img.width && v + 1 < img.height) {
+        const glm::vec4* p = &img.pixels[size_t(v) * img.width + u];
+        c = (p[0] * (1.0f - wu) + p[1] * wu) * (1.0f - wv) +
+            (p[img.width] * (1.0f - wu) + p[img.width + 1] * wu) * wv;
+      } else {
+        c = (texel(img, u, v) * (1.0f - wu) + texel(img, u + 1, v) * wu) * (1.0f - wv) +
+            (texel(img, u, v + 1) * (1.0f - wu) + texel(img, u + 1, v + 1) * wu) * wv;
+      }
+      dst[0] = c.r;
+      dst[1] = c.g;
+      dst[2] = c.b;
+      dst[3] = c.a;
     }
   }
 }

@@ -86,6 +86,15 @@ void ShearWarp::prepare(int tableSize) {
   data_.setVisibility(visible);
 }
 
+void ShearWarp::prepareAllAxes(int tableSize) {
+  prepare(tableSize);
+  for (int axis = 0; axis < 3; ++axis) {
+    data_.slices(axis);
+    data_.runs(axis, false);
+    data_.runs(axis, true);
+  }
+}
+
 const PreintegrationTable& ShearWarp::pairTable(double distance, int size) {
   prepare(size);
   auto it = pairTables_.find(distance);

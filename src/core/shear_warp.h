@@ -40,6 +40,10 @@ class ShearWarp {
   void render(const Camera& camera, const ShearWarpSettings& settings, int width, int height);
 
   const FloatImage& image() const { return image_; }
+  // Builds now what render() otherwise builds on first use: the slice copies and run-length
+  // encodings of every principal axis (for benchmarks, so no variant pays for them).
+  void prepareAllAxes(int tableSize = 256);
+
   const IntermediateImage& intermediate() const { return intermediate_; }
   const ShearWarpStats& stats() const { return stats_; }
   // The pre-integration table for segments of length `distance` under the current transfer

@@ -36,6 +36,21 @@ inline void under(glm::vec4& pixel, const glm::vec4& sample) {
   pixel += (1.0f - pixel.a) * sample;
 }
 
+// Lacroute's opaque-pixel links for one intermediate row: next[u] == u while pixel u may
+// still change; once it is opaque, next[u] points further right. find() follows the links
+// (halving the paths it walks), so runs of terminated rays cost almost nothing.
+struct OpaqueLinks {
+  int32_t* next;
+  int find(int u) const {
+    while (next[u] != u) {
+      next[u] = next[next[u]];
+      u = next[u];
+    }
+    return u;
+  }
+  void terminate(int u) const { next[u] = u + 1; }
+};
+
 void compositeStandard(const CompositeInput& in, IntermediateImage& out, int thread, int threads) {
   const ShearWarpFactorization& f = *in.view;
   const size_t sliceSize = size_t(f.width) * f.height;
@@ -49,13 +64,16 @@ void compositeStandard(const CompositeInput& in, IntermediateImage& out, int thr
       if (j < 0 || j >= f.height - 1) continue;
       const float* row0 = in.slices + k * sliceSize + size_t(j) * f.width;
       const float* row1 = row0 + f.width;
-      glm::vec4* pixels = out.pixels.data() + size_t(v) * out.width + place.shiftI;
+      glm::vec4* pixels = out.pixels.data() + size_t(v) * out.width;
+      const OpaqueLinks links{in.links + size_t(v) * (out.width + 1)};
       for (auto run = in.runs->begin(k, j); run != in.runs->end(k, j); ++run) {
-        for (int i = (*run)[0]; i < (*run)[1]; ++i) {
-          glm::vec4& p = pixels[i];
-          if (p.a >= threshold) continue;
+        const int end = (*run)[1] + place.shiftI;
+        for (int u = links.find((*run)[0] + place.shiftI); u < end; u = links.find(u + 1)) {
+          const int i = u - place.shiftI;
+          glm::vec4& p = pixels[u];
           const float s = std::min(place.sample(row0, row1, i), top);
           under(p, in.pointTable[int(s + 0.5f)]);
+          if (p.a >= threshold) links.terminate(u);
         }
       }
     }
@@ -101,11 +119,12 @@ void compositeSlabs(const CompositeInput& in, IntermediateImage& out, int thread
       BufferedSample* imageRow = kImageBuffer ? image + size_t(v) * out.width : nullptr;
       BufferedSample* previousRow = kImageBuffer ? nullptr : previous + size_t(j) * f.width;
       BufferedSample* currentRow = kImageBuffer ? nullptr : current + size_t(j2) * f.width;
+      const OpaqueLinks links{in.links + size_t(v) * (out.width + 1)};
       for (auto run = in.runs->begin(slab, j); run != in.runs->end(slab, j); ++run) {
-        for (int i = (*run)[0]; i < (*run)[1]; ++i) {
-          const int u = i + front.shiftI;
+        const int end = (*run)[1] + front.shiftI;
+        for (int u = links.find((*run)[0] + front.shiftI); u < end; u = links.find(u + 1)) {
+          const int i = u - front.shiftI;
           glm::vec4& p = pixels[u];
-          if (p.a >= threshold) continue;
           const int i2 = u - back.shiftI;
           if (i2 < 0 || i2 >= f.width - 1) continue;
           BufferedSample& saved = kImageBuffer ? imageRow[u] : previousRow[i];
@@ -115,6 +134,7 @@ void compositeSlabs(const CompositeInput& in, IntermediateImage& out, int thread
           next.value = sb;
           next.slice = k2;
           under(p, lookupPair<kBilinear>(in.pairTable, n, std::min(sf, top), sb));
+          if (p.a >= threshold) links.terminate(u);
         }
       }
     }
@@ -161,11 +181,17 @@ void compositeSlices(const CompositeInput& input, int threads, CompositorBuffers
   if (f.width < 2 || f.height < 2 || f.depth < 1 || !input.slices || !input.runs) return;
   threads = std::clamp(threads, 1, std::max(1, out.height));
   prepareBuffers(input, threads, out, buffers);
+  // One link array per row, width + 1 entries (the last one never terminates).
+  const size_t rowLinks = size_t(out.width) + 1;
+  buffers.links.resize(rowLinks * out.height);
+  for (size_t r = 0; r < size_t(out.height); ++r)
+    for (size_t u = 0; u < rowLinks; ++u) buffers.links[r * rowLinks + u] = int32_t(u);
+  CompositeInput in = input;
+  in.links = buffers.links.data();
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t)
-    pool.emplace_back(compositeRows, std::cref(input), std::ref(out), t, threads,
-                      std::ref(buffers));
-  compositeRows(input, out, 0, threads, buffers);
+    pool.emplace_back(compositeRows, std::cref(in), std::ref(out), t, threads, std::ref(buffers));
+  compositeRows(in, out, 0, threads, buffers);
   for (std::thread& th : pool) th.join();
 }
 

@@ -24,6 +24,7 @@ struct BufferedSample {
 struct CompositorBuffers {
   std::vector<BufferedSample> image;                // intermediate-image-sized (IB)
   std::vector<std::vector<BufferedSample>> slices;  // two slice-sized (SB) per thread
+  std::vector<int32_t> links;                       // opaque-pixel links, one array per row
 };
 
 struct CompositeInput {
@@ -34,6 +35,7 @@ struct CompositeInput {
   const glm::vec4* pairTable = nullptr;   // pre-integrated: tableSize^2, corrected for the view
   int tableSize = 256;
   ShearWarpSettings settings;
+  int32_t* links = nullptr;  // set by compositeSlices
 };
 
 // Composites every slice (standard: bilinear sample in the slice, nearest point-table entry) or
