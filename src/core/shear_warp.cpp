@@ -116,7 +116,15 @@ const std::vector<glm::vec4>& ShearWarp::correctedTable(const ShearWarpFactoriza
       correctedRatio_ == ratio)
     return corrected_;
   if (s.preintegrated) {
-    corrected_ = pairTable(d, tableSize_).entries();
+    // Diagonal-major copy: entry (f, b) at (b - f + n - 1) * n + f. Adjacent slices hold
+    // similar values, so lookups stay near the diagonal, which this layout keeps in a few
+    // contiguous rows (cache lines) instead of one row of the table per front value.
+    const std::vector<glm::vec4>& table = pairTable(d, tableSize_).entries();
+    const int n = tableSize_;
+    corrected_.assign(size_t(2 * n - 1) * n, glm::vec4(0.0f));
+    for (int f = 0; f < n; ++f)
+      for (int b = 0; b < n; ++b)
+        corrected_[size_t(b - f + n - 1) * n + f] = table[size_t(f) * n + b];
   } else {
     auto it = pointTables_.find(d);
     if (it == pointTables_.end())

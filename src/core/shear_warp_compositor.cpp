@@ -80,14 +80,20 @@ void compositeStandard(const CompositeInput& in, IntermediateImage& out, int thr
   }
 }
 
+// The pair table is diagonal-major: entry (f, b) at (b - f + n - 1) * n + f.
 template <bool kBilinear>
 glm::vec4 lookupPair(const glm::vec4* table, int n, float front, float back) {
-  if (!kBilinear) return table[int(front + 0.5f) * n + int(back + 0.5f)];
+  if (!kBilinear) {
+    const int f = int(front + 0.5f), b = int(back + 0.5f);
+    return table[(b - f + n - 1) * n + f];
+  }
   const int f0 = std::min(int(front), n - 2), b0 = std::min(int(back), n - 2);
   const float wf = front - f0, wb = back - b0;
-  const glm::vec4* r0 = table + f0 * n + b0;
-  const glm::vec4* r1 = r0 + n;
-  return (r0[0] * (1.0f - wb) + r0[1] * wb) * (1.0f - wf) + (r1[0] * (1.0f - wb) + r1[1] * wb) * wf;
+  const glm::vec4* d0 = table + (b0 - f0 + n - 1) * n + f0;  // (f0, b0); (f0+1, b0+1) follows
+  const glm::vec4* up = d0 + n;                              // (f0, b0 + 1)
+  const glm::vec4* down = d0 - n + 1;                        // (f0 + 1, b0)
+  return (d0[0] * (1.0f - wb) + up[0] * wb) * (1.0f - wf) +
+         (down[0] * (1.0f - wb) + d0[1] * wb) * wf;
 }
 
 template <bool kBilinear, bool kImageBuffer>

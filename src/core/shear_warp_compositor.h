@@ -32,7 +32,8 @@ struct CompositeInput {
   const float* slices = nullptr;          // ShearWarpVolume::slices(view->principal)
   const CellRuns* runs = nullptr;         // undilated (standard) or dilated (pre-integrated)
   const glm::vec4* pointTable = nullptr;  // standard: tableSize entries, corrected for the view
-  const glm::vec4* pairTable = nullptr;   // pre-integrated: tableSize^2, corrected for the view
+  const glm::vec4* pairTable = nullptr;   // pre-integrated: (2 tableSize - 1) x tableSize,
+                                          // diagonal-major (see lookupPair), corrected
   int tableSize = 256;
   ShearWarpSettings settings;
   int32_t* links = nullptr;  // set by compositeSlices
