@@ -12,7 +12,7 @@
 
 #include "gl/shader_library.h"
 #include "platform/glfw_window_context.h"
-#include "render/splat_renderer.h"
+#include "render/renderer_factory.h"
 #include "ui/camera_controller.h"
 #include "ui/control_panel.h"
 #include "ui/image_presenter.h"
@@ -43,14 +43,14 @@ class Viewer {
          const ViewerConfig& config)
       : window_(window),
         shaders_(config.shaderDir),
-        renderer_(shaders_),
+        volume_(volume),
+        tf_(tf),
         controller_(config.camera),
         settings_(config.settings),
         input_(window.window(), controller_),
         imgui_(window.window()),
         panel_(config.volumeName, volume) {
-    renderer_.setVolume(volume);
-    renderer_.setTransferFunction(tf);
+    makeRenderer();
   }
 
   void run() {
@@ -73,6 +73,14 @@ class Viewer {
   }
 
  private:
+  // The renderer settings_.renderer names, given the volume and transfer function.
+  void makeRenderer() {
+    renderer_ = createRenderer(settings_.renderer, shaders_);
+    rendererKind_ = settings_.renderer;
+    renderer_->setVolume(volume_);
+    renderer_->setTransferFunction(tf_);
+  }
+
   // One frame; returns true when the volume was rendered again.
   bool drawFrame() {
     input_.updateViewportSize();
@@ -85,6 +93,7 @@ class Viewer {
     if (edits.camera) controller_.setCamera(camera);
     if (edits.resetCamera) controller_.reset();
     if (edits.settings) ++settingsRevision_;
+    if (settings_.renderer != rendererKind_) makeRenderer();
 
     const bool stale = !hasImage_ || renderedCamera_ != controller_.revision() ||
                        renderedSettings_ != settingsRevision_ || renderedSize_ != fb;
@@ -94,12 +103,12 @@ class Viewer {
       renderedCamera_ = controller_.revision();
       renderedSettings_ = settingsRevision_;
       renderedSize_ = fb;
-      frameStats_.render = renderer_.stats();
+      frameStats_.render = renderer_->stats();
       frameStats_.imageWidth = fb.x;
       frameStats_.imageHeight = fb.y;
     }
 
-    presenter_.present(renderer_.outputTexture(), renderedSize_.x, renderedSize_.y, fb.x, fb.y);
+    presenter_.present(renderer_->outputTexture(), renderedSize_.x, renderedSize_.y, fb.x, fb.y);
     if (!renderError_.empty()) {
       ImGui::GetForegroundDrawList()->AddText(ImVec2(10.0f, float(fb.y) - 30.0f),
                                               IM_COL32(255, 90, 90, 255), renderError_.c_str());
@@ -115,7 +124,7 @@ class Viewer {
   // window open: the message is printed once and shown until a change renders again.
   void renderSafely(glm::ivec2 fb) {
     try {
-      renderer_.render(controller_.camera(), settings_, fb.x, fb.y);
+      renderer_->render(controller_.camera(), settings_, fb.x, fb.y);
       renderError_.clear();
     } catch (const std::exception& e) {
       std::string message = e.what();
@@ -129,7 +138,10 @@ class Viewer {
 
   platform::GlfwWindowContext& window_;
   gl::ShaderLibrary shaders_;
-  SplatRenderer renderer_;
+  const Volume& volume_;
+  TransferFunction tf_;
+  std::unique_ptr<Renderer> renderer_;
+  RendererKind rendererKind_ = RendererKind::Splat;
   ImagePresenter presenter_;
   CameraController controller_;
   RenderSettings settings_;
