@@ -12,7 +12,7 @@ LodPolicy::LodPolicy(double targetMs, double refineDelayMs)
 
 void LodPolicy::resetMeasurements() {
   measured_.fill(-1.0);
-  level_ = 1;
+  level_ = kStartLevel;
 }
 
 double LodPolicy::expectedCostRatio(int index) {

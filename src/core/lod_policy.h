@@ -21,6 +21,9 @@ class LodPolicy {
   // downsampled volumes the viewer keeps.
   static constexpr std::array<LodLevel, 5> kLevels{{{1, 1}, {2, 1}, {2, 2}, {4, 2}, {4, 4}}};
   static constexpr int kLevelCount = int(kLevels.size());
+  // Start at volume/2 and image/2: safe for both splat-bound (big volumes) and fill-bound
+  // (magnified small volumes) cases; measurements move it from there.
+  static constexpr int kStartLevel = 2;
 
   // targetMs: the frame time to stay under while moving; refineDelayMs: quiet time after the
   // last input before the full-quality frame.
@@ -49,7 +52,7 @@ class LodPolicy {
  private:
   double targetMs_;
   double refineDelayMs_;
-  int level_ = 1;  // start with the first coarse level: full quality is unknown yet
+  int level_ = kStartLevel;
   std::array<double, kLevelCount> measured_{};
 };
 

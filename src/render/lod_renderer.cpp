@@ -93,6 +93,12 @@ void LodRenderer::render(int level, const Camera& camera, const RenderSettings& 
   lastLevel_ = level;
 }
 
+void LodRenderer::warmUp(const Camera& camera, const RenderSettings& settings) {
+  constexpr int kWarmUpSize = 8;
+  for (const auto& level : coarse_.levels)
+    rendererFor(level.first).render(camera, settings, kWarmUpSize, kWarmUpSize);
+}
+
 size_t LodRenderer::gpuBytes() const {
   size_t bytes = 0;
   for (const auto& [factor, renderer] : renderers_) {

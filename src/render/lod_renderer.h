@@ -33,9 +33,17 @@ class LodRenderer {
   void render(int level, const Camera& camera, const RenderSettings& settings, int width,
               int height);
 
-  // The renderer and image of the last render().
+  // Makes every coarse level's renderer and classifies its splats by drawing a tiny image, so
+  // the first moving frame does not pay for it. Leaves last() as it was.
+  void warmUp(const Camera& camera, const RenderSettings& settings);
+
+  // The renderer and image of the last render() (render() must have run).
   const Renderer& last() const { return *renderers_.at(lastFactor_); }
-  unsigned outputTexture() const { return last().outputTexture(); }
+  // 0 before the first render().
+  unsigned outputTexture() const {
+    const auto it = renderers_.find(lastFactor_);
+    return it == renderers_.end() ? 0u : it->second->outputTexture();
+  }
   int imageWidth() const { return imageWidth_; }
   int imageHeight() const { return imageHeight_; }
   int lastLevel() const { return lastLevel_; }

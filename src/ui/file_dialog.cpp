@@ -40,12 +40,15 @@ std::optional<std::string> FileDialog::draw() {
   if (!open_) return std::nullopt;
   std::optional<std::string> chosen;
   ImGui::SetNextWindowSize(ImVec2(560.0f, 420.0f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(1.0f);
+  const bool focusPath = justOpened_;
   if (justOpened_) ImGui::SetNextWindowFocus();
   justOpened_ = false;
   if (ImGui::Begin("Open volume", &open_)) {
     if (ImGui::Button("Up")) changeFolder(fs::path(folder_).parent_path().string());
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
+    if (focusPath) ImGui::SetKeyboardFocusHere();  // type a path at once
     // Enter on a folder goes there; on a file opens it.
     if (ImGui::InputText("##path", pathBuffer_, sizeof pathBuffer_,
                          ImGuiInputTextFlags_EnterReturnsTrue)) {

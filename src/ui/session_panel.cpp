@@ -38,9 +38,12 @@ void SessionPanel::drawStatus(const SessionView& view) {
   }
   if (!view.busyText.empty()) ImGui::TextColored(kInfoColor, "%s", view.busyText.c_str());
   if (view.messages) {
+    // Wrapped, so a long path does not stretch the auto-sized panel across the window.
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 380.0f);
     for (const StatusMessages::Message& m : *view.messages)
       ImGui::TextColored(m.kind == StatusMessages::Kind::Error ? kErrorColor : kInfoColor, "%s",
                          m.text.c_str());
+    ImGui::PopTextWrapPos();
   }
 }
 
@@ -81,7 +84,7 @@ void SessionPanel::drawBookmarks(const SessionView& view, SessionEdits& edits) {
 }
 
 void SessionPanel::drawCapture(const SessionView& view, SessionEdits& edits) {
-  if (!ImGui::CollapsingHeader("Capture", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader("Capture")) return;
   edits.screenshot = ImGui::Button("Screenshot (F12)");
   if (view.turntableTotal > 0) {
     char label[48];

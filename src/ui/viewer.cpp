@@ -264,7 +264,10 @@ class Viewer {
       // Always the full-quality picture, even if a coarse one is on screen.
       if (!hasImage_ || lod_.lastLevel() != 0) renderLevel(0, controller_.camera(), fb);
       const std::string path =
-          screenshotFileName(saved_.screenshotDir, current_.name, std::time(nullptr));
+          std::filesystem::absolute(
+              screenshotFileName(saved_.screenshotDir, current_.name, std::time(nullptr)))
+              .lexically_normal()
+              .string();
       writePng(path, lod_.last().readImage());
       info("saved screenshot " + path);
     } catch (const std::exception& e) {
@@ -274,7 +277,10 @@ class Viewer {
 
   void startTurntable(int frames) {
     std::string folder =
-        screenshotFileName(saved_.screenshotDir, current_.name, std::time(nullptr));
+        std::filesystem::absolute(
+            screenshotFileName(saved_.screenshotDir, current_.name, std::time(nullptr)))
+            .lexically_normal()
+            .string();
     folder = folder.substr(0, folder.size() - 4) + "-turntable";
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
@@ -414,6 +420,9 @@ class Viewer {
     } else if (!hasImage_) {
       TerminalProgress note("ewaview: building splats for " + current_.name + ",");
       const double ms = renderLevel(0, controller_.camera(), fb);
+      // The coarse levels classify now, while the user looks at the first picture.
+      lod_.warmUp(controller_.camera(), settings_);
+      frameStats_.gpuBytes = lod_.gpuBytes();
       char text[64];
       std::snprintf(text, sizeof text, "%zu splats, first frame %.0f ms",
                     frameStats_.render.splatsTotal, ms);

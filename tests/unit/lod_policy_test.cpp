@@ -11,7 +11,7 @@ TEST(LodPolicy, LevelsGetCheaperAndStartCoarse) {
     EXPECT_LT(LodPolicy::expectedCostRatio(l), LodPolicy::expectedCostRatio(l - 1));
   EXPECT_DOUBLE_EQ(LodPolicy::expectedCostRatio(0), 1.0);
   LodPolicy p(100.0, 150.0);
-  EXPECT_EQ(p.movingLevel(), 1);
+  EXPECT_EQ(p.movingLevel(), LodPolicy::kStartLevel);
   EXPECT_LT(p.measuredMs(1), 0.0);
 }
 
@@ -48,7 +48,7 @@ TEST(LodPolicy, RefineAfterTheQuietDelay) {
   EXPECT_TRUE(p.shouldRefine(150.0));
   p.reportMovingFrame(-1, 10.0);  // ignored
   p.reportMovingFrame(2, -5.0);   // ignored
-  EXPECT_EQ(p.movingLevel(), 1);
+  EXPECT_EQ(p.movingLevel(), LodPolicy::kStartLevel);
 }
 
 }  // namespace
