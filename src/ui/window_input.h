@@ -9,16 +9,8 @@ struct GLFWwindow;
 namespace ewa {
 
 // Keys that ask the viewer (not the camera) to do something.
-enum class KeyCommand {
-  Screenshot,
-  OpenFile,
-  ViewPlusX,
-  ViewMinusX,
-  ViewPlusY,
-  ViewMinusY,
-  ViewPlusZ,
-  ViewMinusZ
-};
+enum class KeyCommand { Screenshot, OpenFile, ViewPlusX, ViewMinusX, ViewPlusY, ViewMinusY,
+                        ViewPlusZ, ViewMinusZ };
 
 class CameraController;
 
