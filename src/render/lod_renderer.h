@@ -12,7 +12,7 @@
 
 namespace ewa {
 
-// The coarse volumes of every volume factor LodPolicy uses (2 and 4), made on the CPU; slow
+// The coarse volumes of every volume factor LodPolicy uses (2, 4, 8), made on the CPU; slow
 // for big volumes, so the viewer makes them on its loading thread.
 struct LodVolumes {
   std::vector<std::pair<int, std::shared_ptr<const Volume>>> levels;  // (factor, volume)
