@@ -43,6 +43,7 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
   config.camera = ewa::initialCamera(scene.volume, o);
   config.settings = o.render;
   config.shaderDir = o.shaderDir;
+  config.recordCameraPath = o.recordCameraPath;
   config.opener = [base = o](const std::string& path) {
     ewa::Options fileOptions = base;
     fileOptions.file = path;

@@ -37,6 +37,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--config-dir", o->configDir,
                  "Window settings folder (default $EWAVIEW_CONFIG_DIR, else "
                  "$XDG_CONFIG_HOME/ewaview or ~/.config/ewaview)");
+  app.add_option("--record-camera-path", o->recordCameraPath,
+                 "Window: write the cameras of the session to this file on exit, for "
+                 "ewaview-interact-bench --path");
   app.add_flag("--info", o->info, "Print dims, spacing, type and value range as JSON and exit");
   std::vector<int> res;
   app.add_option("--resolution", res, "Image size W,H (default 800,600)")

@@ -3,6 +3,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -64,6 +65,16 @@ std::vector<CameraStep> parseCameraPath(const std::string& text, const std::stri
     } else if (word == "hold") {
       step.kind = CameraStep::Kind::Hold;
       readNumbers(in, 0, v, name, lineNo, word);
+    } else if (word == "camera") {
+      step.kind = CameraStep::Kind::Set;
+      double c[11];
+      readNumbers(in, 11, c, name, lineNo, word);
+      step.camera.position = {c[0], c[1], c[2]};
+      step.camera.focalPoint = {c[3], c[4], c[5]};
+      step.camera.viewUp = {c[6], c[7], c[8]};
+      step.camera.viewAngleDeg = c[9];
+      step.camera.orthographic = c[10] != 0.0;
+      if (!step.camera.valid()) fail(name, lineNo, "camera is not a valid view");
     } else {
       fail(name, lineNo, "unknown command '" + word + "'");
     }
@@ -84,6 +95,15 @@ std::vector<CameraStep> loadCameraPath(const std::string& path) {
   return parseCameraPath(text.str(), path);
 }
 
+std::string cameraStepLine(const Camera& c) {
+  char line[512];
+  std::snprintf(
+      line, sizeof line, "camera %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d",
+      c.position.x, c.position.y, c.position.z, c.focalPoint.x, c.focalPoint.y, c.focalPoint.z,
+      c.viewUp.x, c.viewUp.y, c.viewUp.z, c.viewAngleDeg, c.orthographic ? 1 : 0);
+  return line;
+}
+
 void applyCameraStep(Camera& camera, const CameraStep& step) {
   switch (step.kind) {
     case CameraStep::Kind::Orbit:
@@ -97,6 +117,9 @@ void applyCameraStep(Camera& camera, const CameraStep& step) {
       camera.pan(step.a * d, step.b * d);
       break;
     }
+    case CameraStep::Kind::Set:
+      camera = step.camera;
+      break;
     case CameraStep::Kind::Hold:
       break;
   }

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <memory>
 
+#include "core/camera_path.h"
 #include "core/camera_views.h"
 #include "core/lod_policy.h"
 #include "gl/gpu_memory.h"
@@ -103,6 +104,19 @@ class Viewer {
       frameStats_.frameMs = millisecondsSince(start);
       // A new image changes the statistics shown, so draw at least one more frame.
       quietFrames = (active || rendered) ? 0 : quietFrames + 1;
+    }
+  }
+
+  // The cameras of the moving frames, replayable by ewaview-interact-bench --path.
+  void saveRecording() {
+    if (config_.recordCameraPath.empty()) return;
+    try {
+      writeFileAtomically(config_.recordCameraPath,
+                          "# ewaview camera path recorded from the window (" + current_.name +
+                              "), one line per moving frame\n" + recorded_);
+      std::cerr << "ewaview: camera path written to " << config_.recordCameraPath << "\n";
+    } catch (const std::exception& e) {
+      std::cerr << "ewaview: " << e.what() << "\n";
     }
   }
 
@@ -433,6 +447,8 @@ class Viewer {
       const int level = levelOfDetail_ ? policy_.movingLevel() : 0;
       const double ms = renderLevel(level, controller_.camera(), fb);
       if (levelOfDetail_) policy_.reportMovingFrame(level, ms);
+      if (!config_.recordCameraPath.empty())
+        recorded_ += cameraStepLine(controller_.camera()) + "\n";
       lastChange_ = Clock::now();
       rendered = true;
     } else if (refineDue()) {
@@ -470,6 +486,7 @@ class Viewer {
   std::vector<CameraBookmark> bookmarks_;
   std::string bookmarksPath_;
   WindowTurntable turntable_;
+  std::string recorded_;  // camera path lines, when recording
 
   FrameStats frameStats_;
   bool levelOfDetail_ = true;
@@ -500,6 +517,7 @@ int runViewer(LoadedVolume initial, const ViewerConfig& config) {
   Viewer viewer(*window, std::move(initial), config);
   viewer.run();
   viewer.saveSettings();
+  viewer.saveRecording();
   return 0;
 }
 

@@ -21,6 +21,7 @@ struct ViewerConfig {
   std::string configDir;
   ViewerSettings saved;
   VolumeOpener opener;  // opens files from the dialog, drops and recent files
+  std::string recordCameraPath;  // non-empty: every camera drawn is written here on exit
 };
 
 // Opens a window, renders `initial` and runs until the window closes (Escape, Q or the close

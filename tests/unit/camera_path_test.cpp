@@ -50,19 +50,40 @@ TEST(CameraPath, StepsMoveTheCamera) {
   Camera cam;
   cam.position = {0, 0, 10};
   Camera c = cam;
-  applyCameraStep(c, {CameraStep::Kind::Orbit, 90.0, 0.0});
+  applyCameraStep(c, {CameraStep::Kind::Orbit, 90.0, 0.0, Camera{}});
   EXPECT_NEAR(c.position.x, 10.0, 1e-9);
   EXPECT_NEAR(c.position.z, 0.0, 1e-9);
   c = cam;
-  applyCameraStep(c, {CameraStep::Kind::Dolly, 2.0, 0.0});
+  applyCameraStep(c, {CameraStep::Kind::Dolly, 2.0, 0.0, Camera{}});
   EXPECT_NEAR(c.distance(), 5.0, 1e-12);
   c = cam;
-  applyCameraStep(c, {CameraStep::Kind::Pan, 0.1, 0.0});  // a tenth of the distance, right
+  applyCameraStep(c,
+                  {CameraStep::Kind::Pan, 0.1, 0.0, Camera{}});  // a tenth of the distance, right
   EXPECT_NEAR(c.position.x, 1.0, 1e-12);
   EXPECT_NEAR(c.focalPoint.x, 1.0, 1e-12);
   c = cam;
-  applyCameraStep(c, {CameraStep::Kind::Hold, 0.0, 0.0});
+  applyCameraStep(c, {CameraStep::Kind::Hold, 0.0, 0.0, Camera{}});
   EXPECT_EQ(c.position, cam.position);
+}
+
+TEST(CameraPath, RecordedCameraLinesRoundTripExactly) {
+  Camera c;
+  c.position = {1.0 / 3.0, -2.5e3, 7.0};
+  c.focalPoint = {0.1, 0.2, 0.3};
+  c.viewUp = {0.0, 0.0, 1.0};
+  c.viewAngleDeg = 17.25;
+  c.orthographic = true;
+  const auto steps = parseCameraPath(cameraStepLine(c) + "\norbit 1 0\n", "rec.path");
+  ASSERT_EQ(steps.size(), 2u);
+  Camera replayed;
+  applyCameraStep(replayed, steps[0]);
+  EXPECT_EQ(replayed.position, c.position);
+  EXPECT_EQ(replayed.focalPoint, c.focalPoint);
+  EXPECT_EQ(replayed.viewUp, c.viewUp);
+  EXPECT_EQ(replayed.viewAngleDeg, 17.25);
+  EXPECT_TRUE(replayed.orthographic);
+  EXPECT_EQ(errorOf("camera 0 0 0 0 0 0 0 1 0 30 0\n"), "p.path:1: camera is not a valid view");
+  EXPECT_EQ(errorOf("camera 1 2 3\n"), "p.path:1: camera needs 11 numbers");
 }
 
 TEST(AxisViews, LookAlongEachAxisAtTheBoxCentre) {
