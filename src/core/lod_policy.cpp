@@ -21,6 +21,18 @@ double LodPolicy::expectedCostRatio(int index) {
   return 0.5 * (1.0 / (f * f * f) + 1.0 / (d * d));
 }
 
+void LodPolicy::startFromFullQuality(double fullMs) {
+  if (!(fullMs >= 0.0)) return;
+  measured_[0] = fullMs;
+  level_ = kLevelCount - 1;
+  for (int l = 1; l < kLevelCount; ++l) {
+    if (fullMs * expectedCostRatio(l) < 0.8 * targetMs_) {
+      level_ = l;
+      return;
+    }
+  }
+}
+
 void LodPolicy::reportMovingFrame(int index, double ms) {
   if (index < 0 || index >= kLevelCount || !(ms >= 0.0)) return;
   measured_[size_t(index)] = ms;

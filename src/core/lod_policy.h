@@ -38,6 +38,10 @@ class LodPolicy {
   // when over the target, finer when the finer level is known (or expected, from this frame's
   // time times its cost ratio) to fit under 80% of the target.
   void reportMovingFrame(int level, double ms);
+  // Picks the first moving level from a measured full-quality frame: the finest coarse level
+  // expected (by expectedCostRatio) to fit under 80% of the target, else the coarsest. Moving
+  // frames measured later take over.
+  void startFromFullQuality(double fullMs);
   // True once `msSinceInput` of quiet has passed: draw full quality.
   bool shouldRefine(double msSinceInput) const { return msSinceInput >= refineDelayMs_; }
   double targetMs() const { return targetMs_; }

@@ -434,6 +434,7 @@ class Viewer {
     } else if (!hasImage_) {
       TerminalProgress note("ewaview: building splats for " + current_.name + ",");
       const double ms = renderLevel(0, controller_.camera(), fb);
+      policy_.startFromFullQuality(ms);
       // The coarse levels classify now, while the user looks at the first picture.
       lod_.warmUp(controller_.camera(), settings_);
       frameStats_.gpuBytes = lod_.gpuBytes();

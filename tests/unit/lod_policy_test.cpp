@@ -42,6 +42,17 @@ TEST(LodPolicy, FastFramesGoFinerOnlyWhenTheFinerLevelShouldFit) {
   EXPECT_EQ(p.movingLevel(), 1);
 }
 
+TEST(LodPolicy, FirstMovingLevelFromTheFullQualityFrame) {
+  LodPolicy p(100.0);
+  p.startFromFullQuality(100.0);  // level 1 expected at 56 ms: fits
+  EXPECT_EQ(p.movingLevel(), 1);
+  EXPECT_EQ(p.measuredMs(0), 100.0);
+  p.startFromFullQuality(1600.0);  // level 4 costs ~3.9% (62 ms), level 3 ~13% (206 ms)
+  EXPECT_EQ(p.movingLevel(), 4);
+  p.startFromFullQuality(1e6);  // nothing fits: the coarsest
+  EXPECT_EQ(p.movingLevel(), LodPolicy::kLevelCount - 1);
+}
+
 TEST(LodPolicy, RefineAfterTheQuietDelay) {
   LodPolicy p(100.0, 150.0);
   EXPECT_FALSE(p.shouldRefine(149.0));
