@@ -1,10 +1,14 @@
 // ewaview entry point: parse the command line, then --info, headless output or the window.
+#include <filesystem>
 #include <iostream>
+#include <memory>
 #include <string>
 
 #include "app/headless.h"
 #include "app/options.h"
 #include "app/scene.h"
+#include "app/turntable.h"
+#include "io/viewer_settings.h"
 #include "ui/viewer.h"
 
 namespace {
@@ -24,6 +28,63 @@ std::string oneLine(const std::string& text) {
   return out;
 }
 
+// The window: saved settings where the command line says nothing, and an opener for files
+// chosen in the window (the same loaders and transfer-function rules as the command line).
+int runWindow(ewa::Scene scene, const ewa::Options& options) {
+  ewa::ViewerConfig config;
+  config.configDir = options.configDir.empty() ? ewa::defaultConfigDir() : options.configDir;
+  if (!config.configDir.empty()) {
+    try {
+      config.saved = ewa::loadViewerSettings(ewa::settingsPathIn(config.configDir));
+    } catch (const std::exception& e) {
+      std::cerr << "ewaview: " << e.what() << " (using defaults)\n";
+    }
+  }
+  ewa::Options o = options;
+  if (!o.resolutionGiven) {
+    o.width = config.saved.windowWidth;
+    o.height = config.saved.windowHeight;
+  }
+  if (!o.renderOptionsGiven) {
+    o.render.filter = config.saved.filter;
+    ewa::parseRenderMode(config.saved.renderMode, &o.render.mode);
+    o.render.cutoff = config.saved.cutoff;
+    o.render.slabThickness = config.saved.slabThickness;
+    o.render.background = config.saved.background;
+  }
+  if (!o.tfFile.empty())
+    config.saved.lastTransferFunction = std::filesystem::absolute(o.tfFile).string();
+  config.width = o.width;
+  config.height = o.height;
+  config.camera = ewa::initialCamera(scene.volume, o);
+  config.settings = o.render;
+  config.shaderDir = o.shaderDir;
+  config.recordCameraPath = o.recordCameraPath;
+  config.opener = [base = o](const std::string& path) {
+    ewa::Options fileOptions = base;
+    fileOptions.file = path;
+    fileOptions.synthetic.clear();
+    fileOptions.rawDims.clear();
+    fileOptions.tfFile.clear();  // --tf was for the first volume; others use their sidecar
+    ewa::Scene s = ewa::loadScene(fileOptions);
+    ewa::LoadedVolume loaded;
+    loaded.volume = std::make_shared<ewa::Volume>(std::move(s.volume));
+    loaded.tf = std::move(s.transferFunction);
+    loaded.name = s.name;
+    loaded.path = std::filesystem::absolute(path).string();
+    return loaded;
+  };
+  ewa::LoadedVolume initial;
+  initial.volume = std::make_shared<ewa::Volume>(std::move(scene.volume));
+  initial.tf = std::move(scene.transferFunction);
+  initial.name = scene.name;
+  if (options.synthetic.empty())
+    initial.path =
+        std::filesystem::absolute(options.file.empty() ? ewa::defaultVolumePath() : options.file)
+            .string();
+  return ewa::runViewer(std::move(initial), config);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -39,18 +100,15 @@ int main(int argc, char** argv) {
     if (options.render.renderer == ewa::RendererKind::ShearWarp && !options.orthographic)
       std::cerr << "ewaview: note: shear-warp renders parallel projection; the perspective camera "
                    "is drawn as the orthographic view of the same height at the focal point\n";
+    if (options.turntable > 0) {
+      ewa::renderTurntable(scene, options);
+      return 0;
+    }
     if (!options.output.empty()) {
       ewa::renderHeadless(scene, options);
       return 0;
     }
-    ewa::ViewerConfig config;
-    config.width = options.width;
-    config.height = options.height;
-    config.camera = ewa::initialCamera(scene.volume, options);
-    config.settings = options.render;
-    config.shaderDir = options.shaderDir;
-    config.volumeName = scene.name;
-    return ewa::runViewer(scene.volume, scene.transferFunction, config);
+    return runWindow(std::move(scene), options);
   } catch (const std::exception& e) {
     std::cerr << "ewaview: " << oneLine(e.what()) << "\n";
     return 1;

@@ -31,6 +31,16 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--synthetic", o->synthetic,
                  "Synthetic volume: marschner-lobb[:N], sphere[:N], checkerboard, zebra[:RATIO]");
   app.add_option("-o,--output", o->output, "Render headless to this PNG and exit");
+  app.add_option("--turntable", o->turntable,
+                 "Render N frames over 360 degrees about view-up; --output is a pattern with one "
+                 "%d (frame_%03d.png) or a folder")
+      ->check(CLI::Range(1, 100000));
+  app.add_option("--config-dir", o->configDir,
+                 "Window settings folder (default $EWAVIEW_CONFIG_DIR, else "
+                 "$XDG_CONFIG_HOME/ewaview or ~/.config/ewaview)");
+  app.add_option("--record-camera-path", o->recordCameraPath,
+                 "Window: write the cameras of the session to this file on exit, for "
+                 "ewaview-interact-bench --path");
   app.add_flag("--info", o->info, "Print dims, spacing, type and value range as JSON and exit");
   std::vector<int> res;
   app.add_option("--resolution", res, "Image size W,H (default 800,600)")
@@ -93,6 +103,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!o->file.empty() && !o->synthetic.empty()) return usage("give a FILE or --synthetic, not both");
   if (!o->rawDims.empty() && o->rawType.empty()) return usage("--raw-dims needs --raw-type");
   if (!o->rawDims.empty() && o->file.empty()) return usage("--raw-dims needs a FILE");
+  if (o->turntable > 0 && o->output.empty()) return usage("--turntable needs --output");
+  o->resolutionGiven = !res.empty();
+  for (const char* name : {"--filter", "--render-mode", "--cutoff", "--slab-thickness", "--background"})
+    o->renderOptionsGiven |= app.count(name) > 0;
   if (!res.empty()) {
     o->width = res[0];
     o->height = res[1];

@@ -14,6 +14,11 @@ struct Options {
   std::string file;            // volume file; empty: --synthetic or the default asset
   std::string synthetic;       // "sphere:64", ...
   std::string output;          // PNG path: render headless and exit
+  int turntable = 0;           // > 0: that many frames over 360 degrees, --output a pattern or folder
+  std::string configDir;       // the window's settings folder; empty: defaultConfigDir()
+  std::string recordCameraPath;  // the window writes every camera it draws to this file on exit
+  bool resolutionGiven = false;      // --resolution was given (overrides the saved window size)
+  bool renderOptionsGiven = false;   // a render option was given (overrides the saved ones)
   bool info = false;           // print the volume's description as JSON and exit
   int width = 800;
   int height = 600;

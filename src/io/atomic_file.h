@@ -11,10 +11,14 @@ namespace ewa {
 // over `path`. On any failure the temporary file is removed and `path` is left as it was.
 // Refuses a `path` that is a directory. The new file gets mode 0644 less the process umask.
 // Throws std::runtime_error("<path>: cannot write: <reason>").
-void writeFileAtomically(const std::string& path, std::string_view bytes);
+// Creates missing parent folders when `makeParents`.
+void writeFileAtomically(const std::string& path, std::string_view bytes, bool makeParents = false);
 
 // True when `a` and `b` name the same existing file (same device and inode), so a writer can
 // refuse to replace one of its inputs whatever the spelling of the two paths.
 bool sameExistingFile(const std::string& a, const std::string& b);
+
+// The whole file as a string; throws std::runtime_error("path: problem").
+std::string readTextFile(const std::string& path);
 
 }  // namespace ewa

@@ -71,6 +71,14 @@ struct RenderStats {
   size_t slabEntries = 0;   // splats drawn summed over slabs (kernels span several slabs)
   bool quadPass = false;    // some footprints exceeded the point-size limit
   double cpuMs = 0.0;       // CPU time of the last render() call, GPU work included (it waits)
+  // Time per stage of the last render() call, for the statistics panel; 0 where a renderer
+  // does not measure it (classify: splats from the transfer function; sort: slab bucketing;
+  // splat: drawing the kernels; composite: blending slabs and the final pass).
+  double classifyMs = 0.0;
+  double sortMs = 0.0;
+  double splatMs = 0.0;
+  double compositeMs = 0.0;
+  size_t gpuBytes = 0;      // bytes of GL buffers and textures the renderer holds; 0: not counted
 };
 
 class Renderer {

@@ -84,4 +84,10 @@ void CameraController::setCamera(const Camera& camera) {
   changed();
 }
 
+void CameraController::restart(const Camera& camera) {
+  initial_ = camera;
+  mode_ = DragMode::None;
+  setCamera(camera);
+}
+
 }  // namespace ewa

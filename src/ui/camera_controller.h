@@ -41,6 +41,8 @@ class CameraController {
   void reset();
   // Replaces the camera (e.g. edited in the panel) and keeps the initial one for reset().
   void setCamera(const Camera& camera);
+  // Replaces both the camera and the one reset() returns to (a new volume was opened).
+  void restart(const Camera& camera);
 
   const Camera& camera() const { return camera_; }
   const Camera& initialCamera() const { return initial_; }

@@ -25,8 +25,12 @@ bool sliderDouble(const char* label, double* value, double lo, double hi, const 
 
 }  // namespace
 
-ControlPanel::ControlPanel(std::string volumeName, const Volume& volume)
-    : volumeName_(std::move(volumeName)) {
+ControlPanel::ControlPanel(std::string volumeName, const Volume& volume) {
+  setVolume(std::move(volumeName), volume);
+}
+
+void ControlPanel::setVolume(std::string volumeName, const Volume& volume) {
+  volumeName_ = std::move(volumeName);
   char text[256];
   const auto& d = volume.dims();
   const glm::dvec3& s = volume.spacing();
@@ -38,7 +42,7 @@ ControlPanel::ControlPanel(std::string volumeName, const Volume& volume)
   if (volumeName_.empty()) volumeName_ = "(unnamed volume)";
 }
 
-PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera,
+PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& levelOfDetail,
                               const FrameStats& stats) {
   PanelEdits edits;
   ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
@@ -50,7 +54,10 @@ PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera,
     edits.settings = drawSettings(settings);
     ImGui::Separator();
     edits.camera = drawCamera(camera);
+    edits.axisView = drawAxisViews();
     edits.resetCamera = ImGui::Button("Reset camera (R)");
+    ImGui::SameLine();
+    edits.levelOfDetail = ImGui::Checkbox("coarser while moving", &levelOfDetail);
     ImGui::Separator();
     drawStats(stats);
     ImGui::TextDisabled("left: orbit  right/wheel: zoom  middle/shift+left: pan");
@@ -146,10 +153,32 @@ bool ControlPanel::drawCamera(Camera& camera) {
   return changed;
 }
 
+std::optional<AxisView> ControlPanel::drawAxisViews() {
+  std::optional<AxisView> chosen;
+  ImGui::TextUnformatted("look along");
+  for (AxisView v : kAxisViews) {
+    ImGui::SameLine();
+    if (ImGui::SmallButton(axisViewName(v))) chosen = v;
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("keys 1-6: +X -X +Y -Y +Z -Z");
+  return chosen;
+}
+
 void ControlPanel::drawStats(const FrameStats& stats) {
   const RenderStats& r = stats.render;
   ImGui::Text("render %.1f ms   frame %.1f ms", r.cpuMs, stats.frameMs);
-  ImGui::Text("image %d x %d", stats.imageWidth, stats.imageHeight);
+  if (r.classifyMs + r.sortMs + r.splatMs + r.compositeMs > 0.0)
+    ImGui::Text("classify %.1f  sort %.1f  splat %.1f  composite %.1f ms", r.classifyMs,
+                r.sortMs, r.splatMs, r.compositeMs);
+  if (stats.lodLevel == 0)
+    ImGui::Text("image %d x %d, full quality", stats.imageWidth, stats.imageHeight);
+  else
+    ImGui::Text("image %d x %d, coarse level %d", stats.imageWidth, stats.imageHeight,
+                stats.lodLevel);
+  ImGui::Text("GPU memory %.1f MiB (renderers)", double(stats.gpuBytes) / (1024.0 * 1024.0));
+  if (stats.gpuMemory)
+    ImGui::Text("GPU %.0f of %.0f MiB free", double(stats.gpuMemory->availableKiB) / 1024.0,
+                double(stats.gpuMemory->totalKiB) / 1024.0);
   ImGui::Text("splats %zu / %zu", r.splatsDrawn, r.splatsTotal);
   ImGui::Text("slabs %zu (drawn %zu)   quad path %s", r.slabs, r.slabsDrawn, r.quadPass ? "yes" : "no");
   ImGui::Text("surface splats %zu   splat draws %zu", r.surfaceSplats, r.slabEntries);

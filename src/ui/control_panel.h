@@ -2,9 +2,12 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include "core/camera.h"
+#include "core/camera_views.h"
+#include "gl/gpu_memory.h"
 #include "core/volume.h"
 #include "render/renderer.h"
 
@@ -16,6 +19,9 @@ struct FrameStats {
   double frameMs = 0.0;   // the last window frame: events, render (if any), drawing, swap
   int imageWidth = 0;     // size of the rendered image
   int imageHeight = 0;
+  int lodLevel = 0;        // LodPolicy level of the image shown (0: full quality)
+  size_t gpuBytes = 0;     // buffers and images the renderers hold
+  std::optional<gl::GpuMemoryInfo> gpuMemory;  // driver figures, when it reports them
 };
 
 // What the user changed this frame.
@@ -23,6 +29,8 @@ struct PanelEdits {
   bool settings = false;     // the RenderSettings were edited
   bool camera = false;       // the Camera was edited (projection, view angle)
   bool resetCamera = false;  // "Reset camera" was pressed
+  std::optional<AxisView> axisView;  // a view along an axis was asked for
+  bool levelOfDetail = false;        // the level-of-detail checkbox changed
 };
 
 class ControlPanel {
@@ -32,12 +40,17 @@ class ControlPanel {
 
   // Builds the panel between ImGuiLayer::beginFrame and render, editing `settings` and
   // `camera` in place.
-  PanelEdits draw(RenderSettings& settings, Camera& camera, const FrameStats& stats);
+  // `levelOfDetail` is the "coarser while moving" switch.
+  PanelEdits draw(RenderSettings& settings, Camera& camera, bool& levelOfDetail,
+                  const FrameStats& stats);
+  // A new volume was opened.
+  void setVolume(std::string volumeName, const Volume& volume);
 
  private:
   bool drawSettings(RenderSettings& settings);
   bool drawShearWarp(ShearWarpSettings& settings);
   bool drawCamera(Camera& camera);
+  std::optional<AxisView> drawAxisViews();
   void drawStats(const FrameStats& stats);
 
   std::string volumeName_;

@@ -56,4 +56,16 @@ bool ImGuiLayer::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
 
 bool ImGuiLayer::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
 
+void ImGuiLayer::loadLayout(const std::string& iniText) {
+  ImGui::SetCurrentContext(context_);
+  if (!iniText.empty()) ImGui::LoadIniSettingsFromMemory(iniText.data(), iniText.size());
+}
+
+std::string ImGuiLayer::saveLayout() const {
+  ImGui::SetCurrentContext(context_);
+  size_t size = 0;
+  const char* text = ImGui::SaveIniSettingsToMemory(&size);
+  return text ? std::string(text, size) : std::string();
+}
+
 }  // namespace ewa

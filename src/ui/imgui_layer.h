@@ -1,6 +1,8 @@
 // ImGuiLayer: Dear ImGui's context and its GLFW + OpenGL 3 backends for one window.
 #pragma once
 
+#include <string>
+
 struct GLFWwindow;
 struct ImGuiContext;
 
@@ -27,6 +29,11 @@ class ImGuiLayer {
   // widget is being dragged, a text field has focus): the camera must then leave them alone.
   bool wantsMouse() const;
   bool wantsKeyboard() const;
+
+  // Panel layout (ImGui's ini text): ImGui never writes a file itself; the viewer keeps the
+  // text in its config folder, written atomically. Load before the first frame.
+  void loadLayout(const std::string& iniText);
+  std::string saveLayout() const;
 
  private:
   void shutdown();

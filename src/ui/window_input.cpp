@@ -3,6 +3,8 @@
 
 #include <GLFW/glfw3.h>
 
+#include <utility>
+
 #include "ui/camera_controller.h"
 
 namespace ewa {
@@ -19,6 +21,7 @@ WindowInput::WindowInput(GLFWwindow* window, CameraController& controller)
   glfwSetWindowFocusCallback(window_, [](GLFWwindow* w, int) { onOtherEvent(w); });
   glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { onOtherEvent(w); });
   glfwSetWindowRefreshCallback(window_, onOtherEvent);
+  glfwSetDropCallback(window_, onDrop);
   updateViewportSize();
 }
 
@@ -32,6 +35,7 @@ WindowInput::~WindowInput() {
   glfwSetWindowFocusCallback(window_, nullptr);
   glfwSetFramebufferSizeCallback(window_, nullptr);
   glfwSetWindowRefreshCallback(window_, nullptr);
+  glfwSetDropCallback(window_, nullptr);
   glfwSetWindowUserPointer(window_, nullptr);
 }
 
@@ -50,6 +54,16 @@ bool WindowInput::takeActivity() {
   const bool any = activity_;
   activity_ = false;
   return any;
+}
+
+std::vector<KeyCommand> WindowInput::takeCommands() { return std::exchange(commands_, {}); }
+
+std::vector<std::string> WindowInput::takeDroppedPaths() { return std::exchange(dropped_, {}); }
+
+void WindowInput::onDrop(GLFWwindow* window, int count, const char** paths) {
+  WindowInput& self = from(window);
+  self.activity_ = true;
+  for (int n = 0; n < count; ++n) self.dropped_.emplace_back(paths[n]);
 }
 
 WindowInput& WindowInput::from(GLFWwindow* window) {
@@ -94,6 +108,17 @@ void WindowInput::onKey(GLFWwindow* window, int key, int scancode, int action, i
   if (action != GLFW_PRESS || self.uiWantsKeyboard_) return;
   switch (key) {
     case GLFW_KEY_R: self.controller_.reset(); break;
+    case GLFW_KEY_F12: self.commands_.push_back(KeyCommand::Screenshot); break;
+    case GLFW_KEY_O:
+      if (mods & GLFW_MOD_CONTROL) self.commands_.push_back(KeyCommand::OpenFile);
+      break;
+    // 1..6: views along +X, -X, +Y, -Y, +Z, -Z (the order of the panel's buttons).
+    case GLFW_KEY_1: self.commands_.push_back(KeyCommand::ViewPlusX); break;
+    case GLFW_KEY_2: self.commands_.push_back(KeyCommand::ViewMinusX); break;
+    case GLFW_KEY_3: self.commands_.push_back(KeyCommand::ViewPlusY); break;
+    case GLFW_KEY_4: self.commands_.push_back(KeyCommand::ViewMinusY); break;
+    case GLFW_KEY_5: self.commands_.push_back(KeyCommand::ViewPlusZ); break;
+    case GLFW_KEY_6: self.commands_.push_back(KeyCommand::ViewMinusZ); break;
     case GLFW_KEY_ESCAPE:
     case GLFW_KEY_Q: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
     default: break;

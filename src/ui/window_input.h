@@ -1,9 +1,16 @@
 // WindowInput: GLFW mouse and key callbacks of the viewer window, forwarded to the camera.
 #pragma once
 
+#include <string>
+#include <vector>
+
 struct GLFWwindow;
 
 namespace ewa {
+
+// Keys that ask the viewer (not the camera) to do something.
+enum class KeyCommand { Screenshot, OpenFile, ViewPlusX, ViewMinusX, ViewPlusY, ViewMinusY,
+                        ViewPlusZ, ViewMinusZ };
 
 class CameraController;
 
@@ -24,6 +31,9 @@ class WindowInput {
   // True when any event (input, resize, expose) arrived since the last call: the viewer then
   // draws a few frames so that ImGui can react, and otherwise sleeps in glfwWaitEvents.
   bool takeActivity();
+  // Key commands and dropped file paths since the last call, oldest first.
+  std::vector<KeyCommand> takeCommands();
+  std::vector<std::string> takeDroppedPaths();
 
  private:
   static WindowInput& from(GLFWwindow* window);
@@ -32,12 +42,15 @@ class WindowInput {
   static void onScroll(GLFWwindow* window, double dx, double dy);
   static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
   static void onOtherEvent(GLFWwindow* window);
+  static void onDrop(GLFWwindow* window, int count, const char** paths);
 
   GLFWwindow* window_;
   CameraController& controller_;
   bool uiWantsMouse_ = false;
   bool uiWantsKeyboard_ = false;
   bool activity_ = true;  // draw the first frames
+  std::vector<KeyCommand> commands_;
+  std::vector<std::string> dropped_;
 };
 
 }  // namespace ewa

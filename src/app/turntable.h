@@ -1,0 +1,18 @@
+// Headless turntables: N frames over 360 degrees about the view-up axis, written as PNGs.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "app/options.h"
+#include "app/scene.h"
+#include "core/camera_views.h"
+
+namespace ewa {
+
+// Renders options.turntable frames with the options' camera and settings and writes them as
+// options.output names them (a %d pattern or a folder, see io/frame_names.h). Progress goes to
+// the terminal. Throws on failure ("path: problem").
+void renderTurntable(const Scene& scene, const Options& options);
+
+}  // namespace ewa

@@ -1,0 +1,62 @@
+// Standard axis views, framed like Camera::frame does.
+#include "core/camera_views.h"
+
+namespace ewa {
+
+const char* axisViewName(AxisView view) {
+  switch (view) {
+    case AxisView::PlusX:
+      return "+X";
+    case AxisView::MinusX:
+      return "-X";
+    case AxisView::PlusY:
+      return "+Y";
+    case AxisView::MinusY:
+      return "-Y";
+    case AxisView::PlusZ:
+      return "+Z";
+    case AxisView::MinusZ:
+      return "-Z";
+  }
+  return "?";
+}
+
+glm::dvec3 axisViewDirection(AxisView view) {
+  switch (view) {
+    case AxisView::PlusX:
+      return {1, 0, 0};
+    case AxisView::MinusX:
+      return {-1, 0, 0};
+    case AxisView::PlusY:
+      return {0, 1, 0};
+    case AxisView::MinusY:
+      return {0, -1, 0};
+    case AxisView::PlusZ:
+      return {0, 0, 1};
+    case AxisView::MinusZ:
+      return {0, 0, -1};
+  }
+  return {0, 0, -1};
+}
+
+glm::dvec3 axisViewUp(AxisView view) {
+  return view == AxisView::PlusZ || view == AxisView::MinusZ ? glm::dvec3(0, 1, 0)
+                                                             : glm::dvec3(0, 0, 1);
+}
+
+Camera cameraForAxisView(const Camera& camera, AxisView view, const glm::dvec3& lo,
+                         const glm::dvec3& hi, double aspect) {
+  Camera out = camera;
+  // frame() takes the direction from the focal point to the eye: the opposite of the look.
+  out.frame(lo, hi, -axisViewDirection(view), axisViewUp(view), aspect);
+  return out;
+}
+
+Camera turntableCamera(const Camera& start, int index, int count) {
+  Camera camera = start;
+  // One orbit per frame from the start (not accumulated), so rounding does not drift.
+  if (count > 0) camera.orbit(360.0 * double(index) / double(count), 0.0);
+  return camera;
+}
+
+}  // namespace ewa

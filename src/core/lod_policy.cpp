@@ -1,0 +1,51 @@
+// LodPolicy: adaptive choice of the level of detail from measured frame times.
+#include "core/lod_policy.h"
+
+#include <algorithm>
+
+namespace ewa {
+
+LodPolicy::LodPolicy(double targetMs, double refineDelayMs)
+    : targetMs_(targetMs), refineDelayMs_(refineDelayMs) {
+  resetMeasurements();
+}
+
+void LodPolicy::resetMeasurements() {
+  measured_.fill(-1.0);
+  level_ = kStartLevel;
+}
+
+double LodPolicy::expectedCostRatio(int index) {
+  const LodLevel& l = kLevels[size_t(index)];
+  const double f = l.volumeFactor, d = l.imageDivisor;
+  return 0.5 * (1.0 / (f * f * f) + 1.0 / (d * d));
+}
+
+void LodPolicy::startFromFullQuality(double fullMs) {
+  if (!(fullMs >= 0.0)) return;
+  measured_[0] = fullMs;
+  level_ = kLevelCount - 1;
+  for (int l = 1; l < kLevelCount; ++l) {
+    if (fullMs * expectedCostRatio(l) < 0.8 * targetMs_) {
+      level_ = l;
+      return;
+    }
+  }
+}
+
+void LodPolicy::reportMovingFrame(int index, double ms) {
+  if (index < 0 || index >= kLevelCount || !(ms >= 0.0)) return;
+  measured_[size_t(index)] = ms;
+  level_ = index;
+  if (ms > targetMs_) {
+    level_ = std::min(index + 1, kLevelCount - 1);
+    return;
+  }
+  if (index == 0) return;
+  const int finer = index - 1;
+  double expected = measured_[size_t(finer)];
+  if (expected < 0.0) expected = ms * expectedCostRatio(finer) / expectedCostRatio(index);
+  if (expected < 0.8 * targetMs_) level_ = finer;
+}
+
+}  // namespace ewa

@@ -1,0 +1,65 @@
+// LodPolicy: which level of detail to draw while the view moves, chosen from measured frame
+// times, and when to refine to full quality (pure logic, no GL).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace ewa {
+
+// A level of detail: the volume downsampled by volumeFactor per axis, drawn into an image
+// 1/imageDivisor the window's size (then scaled up). {1, 1} is full quality.
+struct LodLevel {
+  int volumeFactor = 1;
+  int imageDivisor = 1;
+};
+
+class LodPolicy {
+ public:
+  // Level 0 is full quality; each next level is cheaper. The volume factors (2, 4, 8) are the
+  // downsampled volumes the viewer keeps.
+  // The last one (volume/8, image/4) is for big volumes on slow (software) GL.
+  static constexpr std::array<LodLevel, 6> kLevels{
+      {{1, 1}, {2, 1}, {2, 2}, {4, 2}, {4, 4}, {8, 4}}};
+  static constexpr int kLevelCount = int(kLevels.size());
+  // Start at volume/2 and image/2: safe for both splat-bound (big volumes) and fill-bound
+  // (magnified small volumes) cases; measurements move it from there.
+  static constexpr int kStartLevel = 2;
+
+  // targetMs: the frame time to stay under while moving; refineDelayMs: quiet time after the
+  // last input before the full-quality frame.
+  explicit LodPolicy(double targetMs = 100.0, double refineDelayMs = 150.0);
+
+  // The level to draw the next moving frame with.
+  int movingLevel() const { return level_; }
+  static const LodLevel& level(int index) { return kLevels[std::size_t(index)]; }
+  // Records how long a moving frame at `level` took and picks the next moving level: coarser
+  // when over the target, finer when the finer level is known (or expected, from this frame's
+  // time times its cost ratio) to fit under 80% of the target.
+  void reportMovingFrame(int level, double ms);
+  // Picks the first moving level from a measured full-quality frame: the finest coarse level
+  // expected (by expectedCostRatio) to fit under 80% of the target, else the coarsest. Moving
+  // frames measured later take over.
+  void startFromFullQuality(double fullMs);
+  // True once `msSinceInput` of quiet has passed: draw full quality.
+  bool shouldRefine(double msSinceInput) const { return msSinceInput >= refineDelayMs_; }
+  double targetMs() const { return targetMs_; }
+  double refineDelayMs() const { return refineDelayMs_; }
+  // Last measured time per level (negative: not measured yet).
+  double measuredMs(int level) const { return measured_[std::size_t(level)]; }
+  // Forgets the measurements (a new volume or transfer function changes the costs).
+  void resetMeasurements();
+
+  // Expected cost of `level` relative to full quality: splats scale with 1/factor^3, pixels
+  // with 1/divisor^2; the slower of the two dominates, so take their mean as a rough guess.
+  static double expectedCostRatio(int level);
+
+ private:
+  double targetMs_;
+  double refineDelayMs_;
+  int level_ = kStartLevel;
+  std::array<double, kLevelCount> measured_{};
+};
+
+}  // namespace ewa

@@ -1,0 +1,57 @@
+// File listing for the open dialog, through std::filesystem.
+#include "io/file_listing.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <stdexcept>
+
+namespace ewa {
+
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+}  // namespace
+
+const std::vector<std::string>& volumeFileExtensions() {
+  static const std::vector<std::string> kExtensions = {".nrrd", ".nhdr", ".mhd",
+                                                       ".mha",  ".dat",  ".vti"};
+  return kExtensions;
+}
+
+bool hasExtension(const std::string& path, const std::vector<std::string>& extensions) {
+  const std::string ext = lower(std::filesystem::path(path).extension().string());
+  return std::find(extensions.begin(), extensions.end(), ext) != extensions.end();
+}
+
+std::vector<DirEntry> listDirectory(const std::string& dir,
+                                    const std::vector<std::string>& extensions, bool showHidden) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
+  if (ec) throw std::runtime_error(dir + ": cannot list: " + ec.message());
+  std::vector<DirEntry> dirs, files;
+  for (; it != fs::directory_iterator(); it.increment(ec)) {
+    if (ec) break;
+    const std::string name = it->path().filename().string();
+    if (!showHidden && !name.empty() && name[0] == '.') continue;
+    std::error_code statError;
+    if (it->is_directory(statError)) {
+      dirs.push_back({name, true, 0});
+    } else if (it->is_regular_file(statError) &&
+               (extensions.empty() || hasExtension(name, extensions))) {
+      files.push_back({name, false, it->file_size(statError)});
+    }
+  }
+  auto byName = [](const DirEntry& a, const DirEntry& b) { return a.name < b.name; };
+  std::sort(dirs.begin(), dirs.end(), byName);
+  std::sort(files.begin(), files.end(), byName);
+  dirs.insert(dirs.end(), files.begin(), files.end());
+  return dirs;
+}
+
+}  // namespace ewa

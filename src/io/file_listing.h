@@ -1,0 +1,29 @@
+// File listing for the open dialog: folders and volume files of one folder (no UI).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ewa {
+
+struct DirEntry {
+  std::string name;  // file name only
+  bool directory = false;
+  uintmax_t size = 0;  // bytes (files)
+};
+
+// Extensions loadVolume reads (lower case, with the dot).
+const std::vector<std::string>& volumeFileExtensions();
+// True when `path` ends in one of `extensions` (case-insensitive).
+bool hasExtension(const std::string& path, const std::vector<std::string>& extensions);
+
+// Folders (sorted by name) then files whose extension is in `extensions` (sorted; all files
+// when `extensions` is empty). Names starting with '.' are left out unless `showHidden`;
+// unreadable entries are skipped. Throws std::runtime_error("dir: problem") when the folder
+// cannot be read.
+std::vector<DirEntry> listDirectory(const std::string& dir,
+                                    const std::vector<std::string>& extensions,
+                                    bool showHidden = false);
+
+}  // namespace ewa

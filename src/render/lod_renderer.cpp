@@ -1,0 +1,123 @@
+// LodRenderer: one renderer instance per level of detail, created on first use.
+#include "render/lod_renderer.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "core/splat_set.h"
+#include "core/volume_downsample.h"
+#include "render/splat_renderer.h"
+
+namespace ewa {
+
+namespace {
+// RGBA32F slab and accumulation images and the RGBA8 output, per pixel (render_targets.h).
+constexpr size_t kTargetBytesPerPixel = 16 + 16 + 4;
+constexpr size_t kTransferTableBytes = 4096 * 16;
+}  // namespace
+
+LodVolumes buildLodVolumes(const Volume& volume) {
+  LodVolumes out;
+  std::vector<int> factors;
+  for (const LodLevel& l : LodPolicy::kLevels)
+    if (l.volumeFactor > 1 &&
+        std::find(factors.begin(), factors.end(), l.volumeFactor) == factors.end())
+      factors.push_back(l.volumeFactor);
+  std::shared_ptr<const Volume> previous;
+  int previousFactor = 1;
+  for (int f : factors) {
+    // 4 = 2 x 2: downsampling the half-size volume again is 8x cheaper than the full one.
+    if (previous && f % previousFactor == 0)
+      previous = std::make_shared<Volume>(downsampleVolume(*previous, f / previousFactor));
+    else
+      previous = std::make_shared<Volume>(downsampleVolume(volume, f));
+    previousFactor = f;
+    out.levels.emplace_back(f, previous);
+  }
+  return out;
+}
+
+LodRenderer::LodRenderer(Factory factory) : factory_(std::move(factory)) {}
+
+void LodRenderer::setVolume(const Volume& volume, LodVolumes coarse) {
+  volume_ = &volume;
+  coarse_ = std::move(coarse);
+  for (auto& [factor, renderer] : renderers_) {
+    if (factor == 1) {
+      renderer->setVolume(volume);
+      continue;
+    }
+    const Volume* v = nullptr;
+    for (const auto& [f, vol] : coarse_.levels)
+      if (f == factor) v = vol.get();
+    renderer->setVolume(v ? *v : volume);
+  }
+}
+
+void LodRenderer::setTransferFunction(const TransferFunction& tf) {
+  tf_ = tf;
+  hasTf_ = true;
+  for (auto& entry : renderers_) entry.second->setTransferFunction(tf);
+}
+
+bool LodRenderer::hasFactor(int factor) const {
+  if (factor == 1) return volume_ != nullptr;
+  for (const auto& level : coarse_.levels)
+    if (level.first == factor) return true;
+  return false;
+}
+
+Renderer& LodRenderer::rendererFor(int factor) {
+  auto it = renderers_.find(factor);
+  if (it != renderers_.end()) return *it->second;
+  std::unique_ptr<Renderer> r = factory_();
+  const Volume* v = volume_;
+  for (const auto& [f, vol] : coarse_.levels)
+    if (f == factor) v = vol.get();
+  if (v) r->setVolume(*v);
+  if (hasTf_) r->setTransferFunction(tf_);
+  return *renderers_.emplace(factor, std::move(r)).first->second;
+}
+
+void LodRenderer::render(int level, const Camera& camera, const RenderSettings& settings, int width,
+                         int height) {
+  if (!volume_) throw std::logic_error("LodRenderer::render before setVolume");
+  level = std::clamp(level, 0, LodPolicy::kLevelCount - 1);
+  LodLevel lod = LodPolicy::level(level);
+  if (!hasFactor(lod.volumeFactor)) lod.volumeFactor = 1;  // still being built: full volume
+  imageWidth_ = std::max(1, width / lod.imageDivisor);
+  imageHeight_ = std::max(1, height / lod.imageDivisor);
+  rendererFor(lod.volumeFactor).render(camera, settings, imageWidth_, imageHeight_);
+  sizes_[lod.volumeFactor] = {imageWidth_, imageHeight_};
+  lastFactor_ = lod.volumeFactor;
+  lastLevel_ = level;
+}
+
+void LodRenderer::warmUp(const Camera& camera, const RenderSettings& settings) {
+  constexpr int kWarmUpSize = 8;
+  for (const auto& level : coarse_.levels)
+    rendererFor(level.first).render(camera, settings, kWarmUpSize, kWarmUpSize);
+}
+
+size_t LodRenderer::gpuBytes() const {
+  size_t bytes = 0;
+  for (const auto& [factor, renderer] : renderers_) {
+    const RenderStats stats = renderer->stats();
+    if (stats.gpuBytes > 0) {
+      bytes += stats.gpuBytes;
+      continue;
+    }
+    // Estimate for renderers that do not count: splat and order buffers, the transfer table,
+    // the images of the last size drawn.
+    size_t splats = stats.splatsTotal;
+    if (const auto* splat = dynamic_cast<const SplatRenderer*>(renderer.get()))
+      splats = splat->splats().size();
+    bytes += splats * (sizeof(PackedSplat) + sizeof(uint32_t)) + kTransferTableBytes;
+    const auto it = sizes_.find(factor);
+    if (it != sizes_.end())
+      bytes += size_t(it->second.first) * size_t(it->second.second) * kTargetBytesPerPixel;
+  }
+  return bytes;
+}
+
+}  // namespace ewa

@@ -1,0 +1,75 @@
+// LodRenderer: a volume at full resolution and its downsampled levels, each drawn by its own
+// renderer instance, so a moving view can draw a coarse level and the still view full quality.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "core/lod_policy.h"
+#include "render/renderer.h"
+
+namespace ewa {
+
+// The coarse volumes of every volume factor LodPolicy uses (2, 4, 8), made on the CPU; slow
+// for big volumes, so the viewer makes them on its loading thread.
+struct LodVolumes {
+  std::vector<std::pair<int, std::shared_ptr<const Volume>>> levels;  // (factor, volume)
+};
+LodVolumes buildLodVolumes(const Volume& volume);
+
+class LodRenderer {
+ public:
+  using Factory = std::function<std::unique_ptr<Renderer>()>;
+  // `factory` makes one renderer per volume factor (the same kind for every level).
+  explicit LodRenderer(Factory factory);
+
+  // `volume` must outlive this object or the next setVolume; the coarse ones are shared.
+  void setVolume(const Volume& volume, LodVolumes coarse);
+  void setTransferFunction(const TransferFunction& tf);
+  // Draws LodPolicy level `level` for a width x height window: the level's volume factor
+  // picks the renderer, its image divisor shrinks the image (at least 1x1).
+  void render(int level, const Camera& camera, const RenderSettings& settings, int width,
+              int height);
+
+  // Makes the full-resolution renderer now (it compiles its shaders), so a broken shader
+  // fails here, before a window loop starts, instead of on the first frame.
+  void prepareFullLevel() { rendererFor(1); }
+
+  // Makes every coarse level's renderer and classifies its splats by drawing a tiny image, so
+  // the first moving frame does not pay for it. Leaves last() as it was.
+  void warmUp(const Camera& camera, const RenderSettings& settings);
+
+  // The renderer and image of the last render() (render() must have run).
+  const Renderer& last() const { return *renderers_.at(lastFactor_); }
+  // 0 before the first render().
+  unsigned outputTexture() const {
+    const auto it = renderers_.find(lastFactor_);
+    return it == renderers_.end() ? 0u : it->second->outputTexture();
+  }
+  int imageWidth() const { return imageWidth_; }
+  int imageHeight() const { return imageHeight_; }
+  int lastLevel() const { return lastLevel_; }
+  // Whether the coarse volume for `factor` is there (1 always is once a volume is set).
+  bool hasFactor(int factor) const;
+  // Bytes of GPU buffers and images all levels hold (renderer-reported when they report it,
+  // else estimated from the splat counts and image sizes).
+  size_t gpuBytes() const;
+
+ private:
+  Renderer& rendererFor(int factor);
+
+  Factory factory_;
+  const Volume* volume_ = nullptr;
+  LodVolumes coarse_;
+  TransferFunction tf_;
+  bool hasTf_ = false;
+  std::map<int, std::unique_ptr<Renderer>> renderers_;
+  std::map<int, std::pair<int, int>> sizes_;  // image size per factor, for the estimate
+  int lastFactor_ = 1;
+  int lastLevel_ = 0;
+  int imageWidth_ = 0, imageHeight_ = 0;
+};
+
+}  // namespace ewa

@@ -1,0 +1,53 @@
+// SessionPanel: the panel's file, bookmark and capture sections, progress and messages.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/camera_bookmarks.h"
+#include "ui/status_messages.h"
+
+namespace ewa {
+
+// What the panel shows this frame.
+struct SessionView {
+  const std::vector<std::string>* recentFiles = nullptr;
+  const std::vector<CameraBookmark>* bookmarks = nullptr;
+  std::string bookmarksPath;  // where they are saved
+  bool loading = false;       // a volume is being opened
+  std::string loadingPath;
+  double loadingSeconds = 0.0;
+  std::string busyText;                       // other long work ("building splats"), or empty
+  int turntableDone = 0, turntableTotal = 0;  // a turntable in progress when total > 0
+  const std::vector<StatusMessages::Message>* messages = nullptr;
+};
+
+// What the user asked for this frame.
+struct SessionEdits {
+  bool openDialog = false;
+  std::optional<std::string> openPath;     // a recent file
+  std::optional<std::string> addBookmark;  // name of the bookmark to add at the current view
+  int applyBookmark = -1;
+  int deleteBookmark = -1;
+  bool screenshot = false;
+  int turntableFrames = 0;  // > 0: start a turntable of that many frames
+  bool cancelTurntable = false;
+};
+
+class SessionPanel {
+ public:
+  // Adds the sections to the "ewaview" window (ImGui appends to a window begun twice).
+  SessionEdits draw(const SessionView& view);
+
+ private:
+  void drawFiles(const SessionView& view, SessionEdits& edits);
+  void drawBookmarks(const SessionView& view, SessionEdits& edits);
+  void drawCapture(const SessionView& view, SessionEdits& edits);
+  void drawStatus(const SessionView& view);
+
+  char bookmarkName_[64] = "view 1";
+  int turntableFrames_ = 36;
+};
+
+}  // namespace ewa
