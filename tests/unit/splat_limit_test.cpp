@@ -17,12 +17,12 @@ TEST(SplatLimit, ExactlyTheLimitFitsOneMoreThrows) {
   const auto above50 = [](double x) { return x > 50.0; };
   const size_t visible = SplatSet::build(v, above50).size();
   ASSERT_GT(visible, 10u);
-  EXPECT_EQ(SplatSet::build(v, above50, 1, visible).size(), visible);
-  EXPECT_THROW(SplatSet::build(v, above50, 1, visible - 1), SplatLimitError);
-  EXPECT_THROW(SplatSet::build(v, above50, 1, 0), SplatLimitError);
+  EXPECT_EQ(SplatSet::build(v, above50, 1, nullptr, visible).size(), visible);
+  EXPECT_THROW(SplatSet::build(v, above50, 1, nullptr, visible - 1), SplatLimitError);
+  EXPECT_THROW(SplatSet::build(v, above50, 1, nullptr, 0), SplatLimitError);
   // Nothing visible: no limit is too small.
   EXPECT_EQ(SplatSet::build(
-                v, [](double) { return false; }, 1, 0)
+                v, [](double) { return false; }, 1, nullptr, 0)
                 .size(),
             0u);
 }
