@@ -47,10 +47,29 @@ void SplatRenderer::setTransferFunction(const TransferFunction& tf) {
 
 void SplatRenderer::rebuildSplats() {
   splatsDirty_ = false;
+  uploadTransferTexture();
+  splats_ = SplatSet::build(*volume_, [this](double v) { return tf_.alphaAt(v) > 0.0; });
+  uploadSplats();
+}
+
+void SplatRenderer::uploadTransferTexture() {
   const double lo = volume_->minValue(), hi = volume_->maxValue();
   const std::vector<glm::vec4> table = tf_.bake(lo, hi, kTransferSamples);
   transferTexture_.subImage1D(0, 0, kTransferSamples, GL_RGBA, GL_FLOAT, table.data());
-  splats_ = SplatSet::build(*volume_, [this](double v) { return tf_.alphaAt(v) > 0.0; });
+}
+
+void SplatRenderer::updateTransferTexture(const TransferFunction& tf) {
+  tf_ = tf;
+  if (volume_) uploadTransferTexture();
+}
+
+void SplatRenderer::setSplats(SplatSet splats) {
+  splats_ = std::move(splats);
+  splatsDirty_ = false;
+  uploadSplats();
+}
+
+void SplatRenderer::uploadSplats() {
   const auto bytes = GLsizeiptr(std::max<size_t>(1, splats_.size()) * sizeof(PackedSplat));
   splatBuffer_.setData(bytes, splats_.size() ? splats_.splats().data() : nullptr, GL_STATIC_DRAW);
   orderBuffer_.setData(GLsizeiptr(std::max<size_t>(1, splats_.size()) * sizeof(uint32_t)),

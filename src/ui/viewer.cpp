@@ -5,9 +5,12 @@
 
 #include <chrono>
 #include <cstdint>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <optional>
 
+#include "core/async_splat_builder.h"
 #include "gl/shader_library.h"
 #include "platform/glfw_window_context.h"
 #include "render/splat_renderer.h"
@@ -15,6 +18,7 @@
 #include "ui/control_panel.h"
 #include "ui/image_presenter.h"
 #include "ui/imgui_layer.h"
+#include "ui/tf_editor.h"
 #include "ui/window_input.h"
 
 namespace ewa {
@@ -26,6 +30,8 @@ namespace {
 constexpr int kFramesAfterActivity = 3;
 // Longest sleep when idle; events wake the loop at once.
 constexpr double kIdleWaitSeconds = 0.5;
+// Wait while splats are being built on the worker thread: short, so the new set shows soon.
+constexpr double kBuildPollSeconds = 0.02;
 
 using Clock = std::chrono::steady_clock;
 
@@ -46,7 +52,11 @@ class Viewer {
         settings_(config.settings),
         input_(window.window(), controller_),
         imgui_(window.window()),
-        panel_(config.volumeName, volume) {
+        panel_(config.volumeName, volume),
+        volume_(volume),
+        tfEditor_(volume, tf, "transfer_function.json") {
+    const char* printLayout = std::getenv("EWAVIEW_PRINT_LAYOUT");
+    tfEditor_.setPrintLayout(printLayout && *printLayout == '1');
     renderer_.setVolume(volume);
     renderer_.setTransferFunction(tf);
   }
@@ -55,12 +65,12 @@ class Viewer {
     int quietFrames = 0;
     while (!window_.shouldClose()) {
       if (quietFrames >= kFramesAfterActivity) {
-        glfwWaitEventsTimeout(kIdleWaitSeconds);
+        glfwWaitEventsTimeout(splatBuilder_.busy() ? kBuildPollSeconds : kIdleWaitSeconds);
       } else {
         glfwPollEvents();
       }
       const Clock::time_point start = Clock::now();
-      const bool active = input_.takeActivity();
+      const bool active = input_.takeActivity() | takeBuiltSplats();
       if (!active && quietFrames >= kFramesAfterActivity) continue;  // nothing to redraw
 
       const bool rendered = drawFrame();
@@ -71,6 +81,15 @@ class Viewer {
   }
 
  private:
+  // Swaps in a splat set the worker finished; true when one arrived.
+  bool takeBuiltSplats() {
+    std::optional<SplatSet> set = splatBuilder_.poll();
+    if (!set) return false;
+    renderer_.setSplats(std::move(*set));
+    ++tfRevision_;
+    return true;
+  }
+
   // One frame; returns true when the volume was rendered again.
   bool drawFrame() {
     input_.updateViewportSize();
@@ -83,15 +102,24 @@ class Viewer {
     if (edits.camera) controller_.setCamera(camera);
     if (edits.resetCamera) controller_.reset();
     if (edits.settings) ++settingsRevision_;
+    if (tfEditor_.draw()) {
+      // The new table is on the GPU for this frame; the old splats draw with it until the
+      // worker's set for the new function is swapped in.
+      renderer_.updateTransferTexture(tfEditor_.transferFunction());
+      splatBuilder_.request(volume_, tfEditor_.transferFunction());
+      ++tfRevision_;
+    }
 
     const bool stale = !hasImage_ || renderedCamera_ != controller_.revision() ||
-                       renderedSettings_ != settingsRevision_ || renderedSize_ != fb;
+                       renderedSettings_ != settingsRevision_ || renderedSize_ != fb ||
+                       renderedTf_ != tfRevision_;
     if (stale) {
       renderer_.render(controller_.camera(), settings_, fb.x, fb.y);
       hasImage_ = true;
       renderedCamera_ = controller_.revision();
       renderedSettings_ = settingsRevision_;
       renderedSize_ = fb;
+      renderedTf_ = tfRevision_;
       frameStats_.render = renderer_.stats();
       frameStats_.imageWidth = fb.x;
       frameStats_.imageHeight = fb.y;
@@ -114,6 +142,9 @@ class Viewer {
   WindowInput input_;
   ImGuiLayer imgui_;
   ControlPanel panel_;
+  const Volume& volume_;
+  TfEditor tfEditor_;
+  AsyncSplatBuilder splatBuilder_;  // after the renderer: destroyed first, joining its worker
 
   FrameStats frameStats_;
   uint64_t settingsRevision_ = 0;
@@ -121,6 +152,8 @@ class Viewer {
   uint64_t renderedCamera_ = 0;
   uint64_t renderedSettings_ = 0;
   glm::ivec2 renderedSize_{0, 0};
+  uint64_t tfRevision_ = 0;
+  uint64_t renderedTf_ = 0;
 };
 
 }  // namespace
