@@ -106,7 +106,8 @@ const std::vector<Preset>& presets() {
 double place(const Preset& p, double at, double lo, double hi) {
   if (p.placement == Placement::Fraction) return lo + at * (hi - lo);
   if (lo <= -500.0 && hi >= 500.0) return std::clamp(at, lo, hi);  // already HU
-  return lo + (at + 1000.0) / 3000.0 * (hi - lo);
+  // Points above 2000 HU (dense bone, metal) land on hi.
+  return std::clamp(lo + (at + 1000.0) / 3000.0 * (hi - lo), lo, hi);
 }
 
 }  // namespace
