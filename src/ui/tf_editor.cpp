@@ -95,9 +95,14 @@ bool TfEditor::drawOpacityPlot() {
       changed = true;
     }
     selectedOpacity_ = dragOpacity_;
+    // Grabbing a point a few pixels off its centre must not make it jump to the cursor.
+    const OpacityPoint& p = tf_.opacity[size_t(dragOpacity_)];
+    grabOffsetX_ = canvas_.toX(p.value) - mouse.x;
+    grabOffsetY_ = canvas_.toY(p.alpha) - mouse.y;
   } else if (dragOpacity_ >= 0 && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
     const OpacityPoint before = tf_.opacity[size_t(dragOpacity_)];
-    tf_.moveOpacityPoint(size_t(dragOpacity_), canvas_.toValue(mouse.x), canvas_.toAlpha(mouse.y));
+    tf_.moveOpacityPoint(size_t(dragOpacity_), canvas_.toValue(mouse.x + grabOffsetX_),
+                         canvas_.toAlpha(mouse.y + grabOffsetY_));
     changed = !(tf_.opacity[size_t(dragOpacity_)] == before);
   }
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) dragOpacity_ = -1;
@@ -160,9 +165,10 @@ bool TfEditor::drawColorBar() {
       changed = true;
     }
     selectedColor_ = dragColor_;
+    grabOffsetX_ = canvas_.toX(tf_.color[size_t(dragColor_)].value) - mouse.x;
   } else if (dragColor_ >= 0 && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
     const double before = tf_.color[size_t(dragColor_)].value;
-    tf_.moveColorPoint(size_t(dragColor_), canvas_.toValue(mouse.x));
+    tf_.moveColorPoint(size_t(dragColor_), canvas_.toValue(mouse.x + grabOffsetX_));
     changed = tf_.color[size_t(dragColor_)].value != before;
   }
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) dragColor_ = -1;

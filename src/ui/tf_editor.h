@@ -41,6 +41,7 @@ class TfEditor {
   bool logHistogram_ = true;
   int dragOpacity_ = -1, dragColor_ = -1;          // point under the mouse drag, or -1
   int selectedOpacity_ = -1, selectedColor_ = -1;  // last point clicked, or -1
+  float grabOffsetX_ = 0, grabOffsetY_ = 0;        // point centre minus cursor at the press
   std::vector<float> histogram_;                   // counts, linear
   char path_[512] = {};
   bool rescaleImport_ = true;

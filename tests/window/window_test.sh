@@ -29,6 +29,8 @@ fail() {
   exit 1
 }
 
+log() { echo "[${SECONDS}s] $*"; }
+
 # Waits up to `timeout` seconds (long: a loaded 2-core llvmpipe machine) for a condition.
 timeout=180
 poll() {  # poll DESCRIPTION COMMAND...
@@ -90,15 +92,18 @@ settled() {  # settled RESULT BEFORE CROP
 # First picture: wait until the volume is drawn and the window is still.
 black="$work/black.png"
 convert -size "${width}x${height}" xc:black "$black"
+log "window up; waiting for the first picture"
 settled "$out/0_start.png" "$black" "$volume_crop"
 start_coverage=$(coverage "$out/0_start.png" "$volume_crop")
 greater "$start_coverage" 0.05 || fail "the volume is not visible at start (coverage $start_coverage)"
 
+log "first picture"
 # Idle: nothing happens, nothing changes.
 sleep 2; shot "$out/1_idle.png"
 idle_diff=$(differ "$out/0_start.png" "$out/1_idle.png")
 [ "$idle_diff" -eq 0 ] || fail "an idle window changed ($idle_diff pixels)"
 
+log "idle checked"
 # Orbit: left-drag across the volume.
 mx=$((415 + 145)); my=300
 xdotool mousemove --window "$wid" $mx $my; sleep 0.3
@@ -109,6 +114,7 @@ settled "$out/2_orbit.png" "$out/1_idle.png" "$volume_crop"
 orbit_diff=$(differ "$out/1_idle.png" "$out/2_orbit.png" "$volume_crop")
 greater "$orbit_diff" $((290 * 600 / 50)) || fail "orbit changed only $orbit_diff pixels of the volume region"
 
+log "orbit checked"
 # Zoom out: three wheel notches towards the user make the volume smaller.
 xdotool mousemove --window "$wid" $mx $my; sleep 0.3
 xdotool click --repeat 3 --delay 150 5
@@ -117,6 +123,7 @@ before=$(coverage "$out/2_orbit.png" "$volume_crop"); after=$(coverage "$out/3_z
 greater "$before" "$(awk -v a="$after" 'BEGIN { print a * 1.15 }')" ||
   fail "zooming out did not shrink the volume (coverage $before -> $after)"
 
+log "zoom checked"
 # Transfer function: drag the opacity point at value 0.5 (alpha 0: the plot's bottom edge, half
 # way across) up to alpha 0.6. Values between 0 and 0.5 become visible: more and brighter pixels.
 px=$((cx + cw / 2)); py=$((cy + ch - 2)); ty=$((cy + ch * 4 / 10))
@@ -126,7 +133,7 @@ shot "$work/hover.png"
 xdotool mousedown 1
 # The press selects the point (its ring turns yellow): wait for ImGui to have seen it there.
 settled "$out/4_press.png" "$work/hover.png" "$editor_crop"
-for step in 1 2 3 4; do xdotool mousemove --window "$wid" $px $((py + (ty - py) * step / 4)); sleep 0.2; done
+for step in 1 2; do xdotool mousemove --window "$wid" $px $((py + (ty - py) * step / 2)); sleep 0.2; done
 settled "$out/5_drag.png" "$out/4_press.png" "$volume_crop"
 xdotool mouseup 1
 settled "$out/6_tf.png" "$out/4_press.png" "$volume_crop"
@@ -136,6 +143,7 @@ greater "$m1" "$(awk -v a="$m0" 'BEGIN { print a * 1.2 }')" ||
   fail "raising the opacity did not brighten the volume (mean $m0 -> $m1)"
 greater "$c1" "$c0" || fail "raising the opacity did not show more of the volume ($c0 -> $c1)"
 
+log "transfer-function edit checked"
 # Quit with Q: the process ends with status 0.
 xdotool key --window "$wid" q
 start=$SECONDS
