@@ -117,6 +117,9 @@ bool TfEditor::drawOpacityPlot() {
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 end(origin.x + kPlotWidth, origin.y + kPlotHeight);
+  // Points outside the volume's range (from a loaded file) stay inside the plot's frame.
+  draw->PushClipRect(ImVec2(origin.x - 6.0f, origin.y - 6.0f), ImVec2(end.x + 6.0f, end.y + 6.0f),
+                     true);
   draw->AddRectFilled(origin, end, IM_COL32(22, 22, 26, 255));
   // Histogram behind the curve.
   float top = 0.0f;
@@ -146,6 +149,7 @@ bool TfEditor::drawOpacityPlot() {
                     0, selected ? 2.0f : 1.0f);
   }
   draw->AddRect(origin, end, IM_COL32(120, 120, 130, 255));
+  draw->PopClipRect();
   return changed;
 }
 
@@ -182,6 +186,8 @@ bool TfEditor::drawColorBar() {
   }
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->PushClipRect(ImVec2(origin.x - 6.0f, origin.y),
+                     ImVec2(origin.x + kPlotWidth + 6.0f, origin.y + height), true);
   for (int column = 0; column < int(kPlotWidth); ++column) {
     const float x = origin.x + column + 0.5f;
     draw->AddLine(ImVec2(x, origin.y), ImVec2(x, origin.y + kBarHeight),
@@ -197,6 +203,7 @@ bool TfEditor::drawColorBar() {
                       ImVec2(x + 5.0f, y + kMarkerHeight),
                       selected ? IM_COL32(255, 220, 0, 255) : IM_COL32(255, 255, 255, 255), 1.0f);
   }
+  draw->PopClipRect();
   return changed;
 }
 

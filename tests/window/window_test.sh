@@ -14,6 +14,7 @@ if [ -z "${DISPLAY:-}" ]; then
   command -v xvfb-run >/dev/null || skip "no DISPLAY and no xvfb-run"
   exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
 fi
+xdotool getdisplaygeometry >/dev/null 2>&1 || skip "cannot reach the X server on DISPLAY=$DISPLAY"
 mkdir -p "$out"
 rm -f "$out"/*.png
 work="$(mktemp -d)"
