@@ -102,5 +102,19 @@ TEST(ParaViewImport, MissingFileAndDirectoryNameThePath) {
   std::filesystem::remove(path);
 }
 
+TEST(ParaViewImport, ShippedExampleLoadsAndGivesValidFunctions) {
+  const auto maps = loadParaViewPresets(std::string(EWA_TEST_DIR) +
+                                        "/../assets/presets/paraview_example.json");
+  ASSERT_EQ(maps.size(), 3u);
+  EXPECT_EQ(maps[1].name, "Black-Body Radiation");
+  EXPECT_EQ(maps[2].opacity.size(), 3u);
+  for (const auto& map : maps) {
+    const TransferFunction tf = applyImportedColorMap({}, map, -1024.0, 3071.0, true);
+    EXPECT_NO_THROW(tf.validate());
+    EXPECT_DOUBLE_EQ(tf.color.front().value, -1024.0);
+    EXPECT_DOUBLE_EQ(tf.color.back().value, 3071.0);
+  }
+}
+
 }  // namespace
 }  // namespace ewa
