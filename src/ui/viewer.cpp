@@ -70,6 +70,7 @@ class Viewer {
         glfwPollEvents();
       }
       const Clock::time_point start = Clock::now();
+      // `|`, not `||`: both must run (take the flag and swap in a finished splat set).
       const bool active = input_.takeActivity() | takeBuiltSplats();
       if (!active && quietFrames >= kFramesAfterActivity) continue;  // nothing to redraw
 
