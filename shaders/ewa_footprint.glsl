@@ -1,6 +1,7 @@
 // The EWA splat footprint: a line-for-line mirror of src/core/ewa_footprint.cpp.
 const float kPi = 3.14159265358979323846;
 const float kMinDet = 1e-10;
+const float kMinDepthVariance = 1e-4;
 const int kFilterEwa = 0;
 const int kFilterPlain = 1;
 const int kFilterSwan = 2;
@@ -30,6 +31,8 @@ struct Footprint {
   float radius;
   float depth;
   float stretch;
+  vec2 depthSlope;  // depth along the ray through center + dx: depth + dot(depthSlope, dx)
+  float depthSigma;
 };
 
 float windowIntegral(float c) {
@@ -44,6 +47,35 @@ float windowedGaussian(float r, float cutoff) {
   if (r > cutoff) return 0.0;
   float t = 1.0 - r / cutoff;
   return exp(-0.5 * r) * t * t;
+}
+
+mat3 surfaceCovariance(mat3 rotation, vec3 spacing, vec3 n) {
+  mat3 p = mat3(1.0) - outerProduct(n, n);
+  mat3 v = mat3(vec3(spacing.x * spacing.x, 0, 0), vec3(0, spacing.y * spacing.y, 0),
+                vec3(0, 0, spacing.z * spacing.z));
+  return rotation * (p * v * p) * transpose(rotation);
+}
+
+float surfaceSplatMass(vec3 h, vec3 n, float tauSurface) {
+  float layer = max(max(abs(n.x) * h.x, abs(n.y) * h.y), abs(n.z) * h.z);
+  return tauSurface * h.x * h.y * h.z / max(layer, 1e-6 * min(min(h.x, h.y), h.z));
+}
+
+float erfApprox(float x) {
+  float ax = abs(x);
+  float t = 1.0 / (1.0 + 0.3275911 * ax);
+  float poly =
+      t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+  float y = 1.0 - poly * exp(-ax * ax);
+  return x < 0.0 ? -y : y;
+}
+
+// Infinite bounds are passed as flags: open tails of the first and last slab of a kernel.
+float slabFraction(float mu, float sigma, float zNear, float zFar, bool openNear, bool openFar) {
+  float s = 1.0 / (sqrt(2.0) * sigma);
+  float hi = openFar ? 1.0 : erfApprox((zFar - mu) * s);
+  float lo = openNear ? -1.0 : erfApprox((zNear - mu) * s);
+  return 0.5 * (hi - lo);
 }
 
 bool cullKernel(vec3 u, float radius, Projection proj, FootprintParams params) {
@@ -93,6 +125,10 @@ Footprint computeFootprint(vec3 u, mat3 covIn, Projection proj, FootprintParams 
   fp.peak = fp.jacobianDet / (kPi * sqrt(det) * windowIntegral(params.cutoff));
   float lambdaMax = 0.5 * (a + c) + sqrt(0.25 * (a - c) * (a - c) + b * b);
   fp.radius = sqrt(params.cutoff * lambdaMax);
+  vec2 v = vec2(-c0.z, -c1.z);
+  fp.depthSlope = vec2(fp.conic.x * v.x + fp.conic.y * v.y, fp.conic.y * v.x + fp.conic.z * v.y);
+  float var = cov[2][2] - dot(v, fp.depthSlope);
+  fp.depthSigma = sqrt(max(var, kMinDepthVariance * cov[2][2] + 1e-20));
   fp.visible = !isinf(fp.peak) && !isnan(fp.peak) && !isinf(fp.radius) && !isnan(fp.radius);
   return fp;
 }

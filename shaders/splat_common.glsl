@@ -3,6 +3,8 @@
 
 layout(std430, binding = 0) readonly buffer Splats { uvec2 splats[]; };
 layout(std430, binding = 1) readonly buffer Order { uint order[]; };
+// packHalf2x16(nx, ny), packHalf2x16(nz, kind): see src/core/splat_attributes.h.
+layout(std430, binding = 2) readonly buffer Attributes { uvec2 attributes[]; };
 
 uniform mat4 uView;          // world -> camera
 uniform mat3 uCovariance;    // camera-space kernel covariance W V'' W^T
@@ -20,22 +22,57 @@ uniform float uMinSpacing;
 uniform float uNearDepth;
 uniform uint uFirst;         // offset of this draw's slab in order[]
 uniform sampler1D uTransfer; // rgb + extinction tau per world unit
+uniform float uSurfaceTau;   // optical depth of a surface-splat layer along its normal
+uniform bool uShading;
+uniform float uAmbient;
+uniform float uDiffuse;
+uniform float uSpecular;
+uniform float uShininess;
 
 flat out vec2 vCenter;
 flat out vec3 vConic;
 flat out float vAmplitude;
 flat out vec3 vColor;
+flat out float vValue;       // normalized value, for MIP
+flat out vec3 vDepth;        // mean depth at the center, depth slope per pixel (x, y)
+flat out float vDepthSigma;
+flat out int vOpen;          // 1: first slab of this splat, 2: last slab (open tails)
+
+const uint kFirstSlab = 0x80000000u;
+const uint kLastSlab = 0x40000000u;
+const uint kIndexMask = 0x3fffffffu;
+
+// The mirror of headlightShade in src/core/shading.cpp.
+vec3 headlightShade(vec3 rgb, vec3 normal, vec3 toEye) {
+  if (!uShading || !(dot(normal, normal) > 0.0)) return rgb;
+  float ndl = abs(dot(normal, toEye));
+  return rgb * (uAmbient + uDiffuse * ndl) + vec3(uSpecular * pow(ndl, uShininess));
+}
 
 // Fills the flat outputs for splat number `n` of this draw; false when nothing is to be drawn.
 bool setupSplat(uint n, out Footprint fp) {
-  uvec2 s = splats[order[uFirst + n]];
+  uint entry = order[uFirst + n];
+  uint index = entry & kIndexMask;
+  uvec2 s = splats[index];
   uvec3 ijk = uvec3(s.x & 0xffffu, s.x >> 16, s.y & 0xffffu);
   float value = float(s.y >> 16) / 65535.0;
   int size = textureSize(uTransfer, 0);
   vec4 tf = texture(uTransfer, (value * float(size - 1) + 0.5) / float(size));
+  uvec2 at = attributes[index];
+  vec2 nxy = unpackHalf2x16(at.x), nzKind = unpackHalf2x16(at.y);
+  vec3 normal = vec3(nxy, nzKind.x);
+  bool surface = nzKind.y >= 1.0;
   fp.visible = false;
-  if (!(tf.a > 0.0)) return false;
+  if (!surface && !(tf.a > 0.0)) return false;
   vec3 world = uOrigin + vec3(ijk) * uSpacing;
+  mat3 rotation = mat3(uView);
+  mat3 cov = uCovariance;
+  float mass = tf.a * uVoxelVolume;
+  if (surface) {
+    world += normal * ((nzKind.y - 3.0) * uMinSpacing);
+    cov = surfaceCovariance(rotation, uSpacing, normal);
+    mass = surfaceSplatMass(uSpacing, normal, uSurfaceTau);
+  }
   vec3 u = (uView * vec4(world, 1.0)).xyz;
   Projection proj = Projection(uOrthographic, uFocalPixels, uPixelsPerUnit, 0.5 * uViewport,
                                uViewport);
@@ -45,12 +82,17 @@ bool setupSplat(uint n, out Footprint fp) {
   float stretch = uFilter == kFilterSwan ? max(1.0, pixelWorld / uMinSpacing) : 1.0;
   float radius = uKernelRadius * stretch + sqrt(uCutoff) * pixelWorld;
   if (cullKernel(u, radius, proj, params)) return false;
-  fp = computeFootprint(u, uCovariance, proj, params);
+  fp = computeFootprint(u, cov, proj, params);
   if (!fp.visible) return false;
   vCenter = fp.center;
   vConic = fp.conic;
-  vAmplitude = tf.a * uVoxelVolume * fp.peak;
-  vColor = tf.rgb;
+  vAmplitude = mass * fp.peak;
+  vec3 toEye = uOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(-u);
+  vColor = headlightShade(tf.rgb, rotation * normal, toEye);
+  vValue = value;
+  vDepth = vec3(fp.depth, fp.depthSlope);
+  vDepthSigma = fp.depthSigma;
+  vOpen = ((entry & kFirstSlab) != 0u ? 1 : 0) | ((entry & kLastSlab) != 0u ? 2 : 0);
   return true;
 }
 

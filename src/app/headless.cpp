@@ -1,7 +1,10 @@
 // Headless rendering: context, renderer, one frame, PNG.
 #include "app/headless.h"
 
+#include <stdexcept>
+
 #include "gl/shader_library.h"
+#include "io/atomic_file.h"
 #include "io/png_io.h"
 #include "platform/headless_context.h"
 #include "render/splat_renderer.h"
@@ -9,6 +12,11 @@
 namespace ewa {
 
 void renderHeadless(const Scene& scene, const Options& o) {
+  // The picture replaces whatever --output names, but never one of the files being read.
+  for (const std::string& input : {o.file, o.tfFile}) {
+    if (!input.empty() && sameExistingFile(o.output, input))
+      throw std::runtime_error(o.output + ": is an input file; refusing to overwrite it");
+  }
   auto context = platform::createHeadlessContext(platform::parseHeadlessBackend(o.backend));
   const gl::ShaderLibrary shaders(o.shaderDir);
   SplatRenderer renderer(shaders);

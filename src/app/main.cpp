@@ -1,10 +1,30 @@
 // ewaview entry point: parse the command line, then --info, headless output or the window.
 #include <iostream>
+#include <string>
 
 #include "app/headless.h"
 #include "app/options.h"
 #include "app/scene.h"
 #include "ui/viewer.h"
+
+namespace {
+
+// Errors are one line on stderr (GL compile logs come with several): breaks become " | ".
+std::string oneLine(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '\n') {
+      if (!out.empty() && out.back() != ' ' && out.back() != ':') out += " |";
+      out += ' ';
+    } else if (c != '\r') {
+      out += c;
+    }
+  }
+  while (!out.empty() && (out.back() == ' ' || out.back() == '|')) out.pop_back();
+  return out;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   ewa::Options options;
@@ -29,7 +49,7 @@ int main(int argc, char** argv) {
     config.volumeName = scene.name;
     return ewa::runViewer(scene.volume, scene.transferFunction, config);
   } catch (const std::exception& e) {
-    std::cerr << "ewaview: " << e.what() << "\n";
+    std::cerr << "ewaview: " << oneLine(e.what()) << "\n";
     return 1;
   }
 }

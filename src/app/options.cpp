@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/render_options.h"
 #include "app/version.h"
 
 namespace ewa {
@@ -44,13 +45,15 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   std::string filter = "ewa", mode = "composite";
   app.add_option("--filter", filter, "Splat filter: ewa (default), swan, plain")
       ->check(CLI::IsMember({"ewa", "swan", "plain"}));
-  app.add_option("--render-mode", mode, "composite (default) or xray")
-      ->check(CLI::IsMember({"composite", "xray"}));
+  app.add_option("--render-mode", mode, "composite (default), xray or mip")
+      ->check(CLI::IsMember({"composite", "xray", "mip"}));
+  RenderOptionText renderText;
+  addShadingOptions(app, o->render, renderText);
   app.add_option("--cutoff", o->render.cutoff, "Footprint cutoff r = dx^T Q dx (default 4)")
       ->check(CLI::Range(0.25, 64.0));
   app.add_option("--slab-thickness", o->render.slabThickness,
                  "Slab thickness in voxels of the smallest spacing (default 1)")
-      ->check(CLI::Range(0.05, 1000.0));
+      ->check(CLI::Range(0.25, 1000.0));
   app.add_option("--tf", o->tfFile, "Transfer function JSON file");
   app.add_option("--background", bg, "Background colour R,G,B in [0,1] (default 0,0,0)")
       ->delimiter(',')->expected(3)->check(CLI::Range(0.0, 1.0));
@@ -87,6 +90,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!bg.empty()) o->render.background = glm::dvec3(bg[0], bg[1], bg[2]);
   parseFilterMode(filter, &o->render.filter);
   parseRenderMode(mode, &o->render.mode);
+  if (const std::string e = finishShadingOptions(renderText, &o->render); !e.empty()) return usage(e);
   return {true, 0};
 }
 

@@ -11,13 +11,14 @@ AsyncSplatBuilder::~AsyncSplatBuilder() {
 
 void AsyncSplatBuilder::start(Request request) {
   running_ = std::async(std::launch::async, [r = std::move(request)] {
-    const TransferFunction& tf = r.tf;
-    return SplatSet::build(*r.volume, [&tf](double v) { return tf.alphaAt(v) > 0.0; });
+    return BuiltSplats{classifySplats(*r.volume, r.tf, r.classification, r.maxSplats),
+                       r.classification};
   });
 }
 
-void AsyncSplatBuilder::request(const Volume& volume, const TransferFunction& tf) {
-  Request r{&volume, tf};
+void AsyncSplatBuilder::request(const Volume& volume, const TransferFunction& tf,
+                                const Classification& classification, size_t maxSplats) {
+  Request r{&volume, tf, classification, maxSplats};
   if (running_.valid()) {
     pending_ = std::move(r);  // replaces an older waiting request: only the newest matters
   } else {
@@ -25,10 +26,10 @@ void AsyncSplatBuilder::request(const Volume& volume, const TransferFunction& tf
   }
 }
 
-std::optional<SplatSet> AsyncSplatBuilder::poll() {
+std::optional<BuiltSplats> AsyncSplatBuilder::poll() {
   if (!running_.valid()) return std::nullopt;
   if (running_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
-  SplatSet set = running_.get();  // rethrows a build failure to the caller
+  BuiltSplats set = running_.get();  // rethrows a build failure to the caller
   if (pending_) {
     // Out of date already, but closer than what is drawn: hand it over and build the newest.
     Request next = std::move(*pending_);
@@ -38,8 +39,8 @@ std::optional<SplatSet> AsyncSplatBuilder::poll() {
   return set;
 }
 
-std::optional<SplatSet> AsyncSplatBuilder::finish() {
-  std::optional<SplatSet> last;
+std::optional<BuiltSplats> AsyncSplatBuilder::finish() {
+  std::optional<BuiltSplats> last;
   while (running_.valid()) {
     running_.wait();
     if (auto set = poll()) last = std::move(set);

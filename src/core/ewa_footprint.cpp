@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -13,6 +12,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 // Smallest screen covariance determinant allowed, so a vanishing plain splat cannot divide by 0.
 constexpr double kMinDet = 1e-10;
+// Smallest conditional depth variance, relative to the kernel's: keeps erf's argument finite.
+constexpr double kMinDepthVariance = 1e-4;
 }  // namespace
 
 double windowIntegral(double c) {
@@ -32,25 +33,64 @@ double windowedGaussian(double r, double cutoff) {
 
 const char* filterModeName(FilterMode mode) {
   switch (mode) {
-    case FilterMode::Ewa: return "ewa";
-    case FilterMode::Plain: return "plain";
-    case FilterMode::Swan: return "swan";
+    case FilterMode::Ewa:
+      return "ewa";
+    case FilterMode::Plain:
+      return "plain";
+    case FilterMode::Swan:
+      return "swan";
   }
   return "?";
 }
 
 bool parseFilterMode(const std::string& text, FilterMode* mode) {
-  if (text == "ewa") *mode = FilterMode::Ewa;
-  else if (text == "plain") *mode = FilterMode::Plain;
-  else if (text == "swan") *mode = FilterMode::Swan;
-  else return false;
+  if (text == "ewa")
+    *mode = FilterMode::Ewa;
+  else if (text == "plain")
+    *mode = FilterMode::Plain;
+  else if (text == "swan")
+    *mode = FilterMode::Swan;
+  else
+    return false;
   return true;
 }
 
 glm::dmat3 cameraCovariance(const glm::dmat3& rotation, const glm::dvec3& spacing) {
-  const glm::dmat3 v(glm::dvec3(spacing.x * spacing.x, 0, 0), glm::dvec3(0, spacing.y * spacing.y, 0),
+  const glm::dmat3 v(glm::dvec3(spacing.x * spacing.x, 0, 0),
+                     glm::dvec3(0, spacing.y * spacing.y, 0),
                      glm::dvec3(0, 0, spacing.z * spacing.z));
   return rotation * v * glm::transpose(rotation);
+}
+
+glm::dmat3 surfaceCovariance(const glm::dmat3& rotation, const glm::dvec3& spacing,
+                             const glm::dvec3& n) {
+  const glm::dmat3 p = glm::dmat3(1.0) - glm::outerProduct(n, n);
+  const glm::dmat3 v(glm::dvec3(spacing.x * spacing.x, 0, 0),
+                     glm::dvec3(0, spacing.y * spacing.y, 0),
+                     glm::dvec3(0, 0, spacing.z * spacing.z));
+  return rotation * (p * v * p) * glm::transpose(rotation);
+}
+
+double surfaceSplatMass(const glm::dvec3& h, const glm::dvec3& n, double tauSurface) {
+  const double layer = std::max({std::abs(n.x) * h.x, std::abs(n.y) * h.y, std::abs(n.z) * h.z});
+  return tauSurface * h.x * h.y * h.z / std::max(layer, 1e-6 * std::min({h.x, h.y, h.z}));
+}
+
+double erfApprox(double x) {
+  const double ax = std::abs(x);
+  const double t = 1.0 / (1.0 + 0.3275911 * ax);
+  const double poly =
+      t *
+      (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+  const double y = 1.0 - poly * std::exp(-ax * ax);
+  return x < 0.0 ? -y : y;
+}
+
+double slabFraction(double mu, double sigma, double zNear, double zFar) {
+  const double s = 1.0 / (std::sqrt(2.0) * sigma);
+  const double hi = std::isinf(zFar) ? (zFar > 0 ? 1.0 : -1.0) : erfApprox((zFar - mu) * s);
+  const double lo = std::isinf(zNear) ? (zNear > 0 ? 1.0 : -1.0) : erfApprox((zNear - mu) * s);
+  return 0.5 * (hi - lo);
 }
 
 bool cullKernel(const glm::dvec3& u, double radius, const Projection& proj,
@@ -65,7 +105,8 @@ bool cullKernel(const glm::dvec3& u, double radius, const Projection& proj,
   // Side planes of the view frustum through the eye; outward normals (±f, 0, hw) etc.
   const double f = proj.focalPixels;
   const double nx = 1.0 / std::sqrt(f * f + hw * hw), ny = 1.0 / std::sqrt(f * f + hh * hh);
-  return (f * std::abs(u.x) + hw * u.z) * nx > radius || (f * std::abs(u.y) + hh * u.z) * ny > radius;
+  return (f * std::abs(u.x) + hw * u.z) * nx > radius ||
+         (f * std::abs(u.y) + hh * u.z) * ny > radius;
 }
 
 Footprint computeFootprint(const glm::dvec3& u, const glm::dmat3& covIn, const Projection& proj,
@@ -76,7 +117,8 @@ Footprint computeFootprint(const glm::dvec3& u, const glm::dmat3& covIn, const P
   const double d = fp.depth;
   // Pixels per world unit across the ray at this depth: Swan's sampling rate test.
   const double ppu = proj.orthographic ? proj.pixelsPerUnit : proj.focalPixels / d;
-  fp.stretch = params.filter == FilterMode::Swan ? std::max(1.0, 1.0 / (ppu * params.minSpacing)) : 1.0;
+  fp.stretch =
+      params.filter == FilterMode::Swan ? std::max(1.0, 1.0 / (ppu * params.minSpacing)) : 1.0;
   const glm::dmat3 cov = covIn * (fp.stretch * fp.stretch);
 
   // First two rows of the Jacobian J of camera space -> (pixel x, pixel y, distance along ray).
@@ -107,6 +149,14 @@ Footprint computeFootprint(const glm::dvec3& u, const glm::dmat3& covIn, const P
   fp.peak = fp.jacobianDet / (kPi * std::sqrt(det) * windowIntegral(params.cutoff));
   const double lambdaMax = 0.5 * (a + c) + std::sqrt(0.25 * (a - c) * (a - c) + b * b);
   fp.radius = std::sqrt(params.cutoff * lambdaMax);
+  // Depth is -u.z, so its row of the Jacobian is (0, 0, -1): covariances with the screen axes
+  // are -c0.z and -c1.z, and the depth variance is cov[2][2]. Conditioning on the pixel offset
+  // shifts the mean by conic * v and leaves the variance cov22 - v . conic v (floored, for the
+  // flat kernels of surface splats).
+  const glm::dvec2 v(-c0.z, -c1.z);
+  fp.depthSlope = fp.conic * v;
+  const double var = cov[2][2] - glm::dot(v, fp.depthSlope);
+  fp.depthSigma = std::sqrt(std::max(var, kMinDepthVariance * cov[2][2] + 1e-20));
   fp.visible = std::isfinite(fp.peak) && std::isfinite(fp.radius);
   return fp;
 }

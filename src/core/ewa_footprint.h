@@ -2,12 +2,11 @@
 // shaders/ewa_footprint.glsl mirrors these formulas line for line; tests hold them equal.
 #pragma once
 
-#include <string>
-
 #include <glm/mat2x2.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <string>
 
 #include "core/camera.h"
 
@@ -21,25 +20,48 @@ bool parseFilterMode(const std::string& text, FilterMode* mode);
 
 struct FootprintParams {
   FilterMode filter = FilterMode::Ewa;
-  double cutoff = 4.0;       // r = dx^T Q dx is cut off above this
-  double minSpacing = 1.0;   // smallest voxel spacing: Swan's s (the highest sampling rate)
-  double nearDepth = 1e-3;   // voxels closer than this to the eye plane are culled
+  double cutoff = 4.0;      // r = dx^T Q dx is cut off above this
+  double minSpacing = 1.0;  // smallest voxel spacing: Swan's s (the highest sampling rate)
+  double nearDepth = 1e-3;  // voxels closer than this to the eye plane are culled
 };
 
 struct Footprint {
   bool visible = false;
-  glm::dvec2 center{0.0};     // pixel coordinates (y up, pixel centers at +0.5)
-  glm::dmat2 covariance{1.0}; // screen covariance in pixels^2, low-pass included for EWA
-  glm::dmat2 conic{1.0};      // inverse of covariance
-  double jacobianDet = 0.0;   // |det J|: pixels^2 per world unit^2 across the ray
-  double peak = 0.0;          // weight at the center for unit mass g (window normalized)
-  double radius = 0.0;        // half extent in pixels of the ellipse r <= cutoff
-  double depth = 0.0;         // distance in front of the eye plane
-  double stretch = 1.0;       // Swan's d/k (1 for the other filters)
+  glm::dvec2 center{0.0};      // pixel coordinates (y up, pixel centers at +0.5)
+  glm::dmat2 covariance{1.0};  // screen covariance in pixels^2, low-pass included for EWA
+  glm::dmat2 conic{1.0};       // inverse of covariance
+  double jacobianDet = 0.0;    // |det J|: pixels^2 per world unit^2 across the ray
+  double peak = 0.0;           // weight at the center for unit mass g (window normalized)
+  double radius = 0.0;         // half extent in pixels of the ellipse r <= cutoff
+  double depth = 0.0;          // distance in front of the eye plane
+  double stretch = 1.0;        // Swan's d/k (1 for the other filters)
+  // The kernel along the ray through pixel center + dx, as a 1D Gaussian in camera depth (the
+  // conditional of the 3D Gaussian in (pixel x, pixel y, depth) given the pixel, low-pass
+  // included): mean depth + dot(depthSlope, dx), standard deviation depthSigma.
+  glm::dvec2 depthSlope{0.0};
+  double depthSigma = 0.0;
 };
 
 // Camera-space covariance W V'' W^T of a kernel with V'' = diag(spacing^2).
 glm::dmat3 cameraCovariance(const glm::dmat3& rotation, const glm::dvec3& spacing);
+
+// Camera-space covariance of a surface splat (EWA paper, section 5): the kernel
+// diag(spacing^2) flattened along the unit world normal n in the limit s -> infinity,
+// V'' = P diag(spacing^2) P with P = I - n n^T, a 2D Gaussian in the tangent plane.
+glm::dmat3 surfaceCovariance(const glm::dmat3& rotation, const glm::dvec3& spacing,
+                             const glm::dvec3& normal);
+
+// Mass g of a surface splat so that a layer of them has optical depth `tauSurface` seen along
+// its normal: the voxels of an iso-surface's boundary layer (>= iso with a 6-neighbour below)
+// have areal density max_i(|n_i| h_i) / (hx hy hz), and each tangent Gaussian integrates to 1.
+double surfaceSplatMass(const glm::dvec3& spacing, const glm::dvec3& normal, double tauSurface);
+
+// erf by Abramowitz and Stegun 7.1.26 (|error| < 1.5e-7): the GLSL has no erf, and the C++
+// uses the same formula so the two agree to float rounding.
+double erfApprox(double x);
+// Fraction of a 1D Gaussian (mean mu, standard deviation sigma) between depths zNear and zFar;
+// infinite bounds give the open tails. The per-slab share of a kernel's ray integral.
+double slabFraction(double mu, double sigma, double zNear, double zFar);
 
 // True when a kernel of world bounding radius `radius` centred at camera-space point `u` lies
 // wholly outside the view (or at or behind the eye): tested before the Jacobian is formed.

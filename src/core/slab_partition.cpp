@@ -1,52 +1,87 @@
-// SlabPartition: per-frame depth bucketing of splats into view-aligned slabs.
+// SlabPartition: per-frame bucketing of splats into every image-aligned slab they reach.
 #include "core/slab_partition.h"
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "core/ewa_footprint.h"
 
 namespace ewa {
 
-void SlabPartition::build(const SplatSet& splats, const glm::dvec3& origin,
-                          const glm::dvec3& spacing, const glm::dmat4& view, double thickness,
-                          double nearCull) {
+void SlabPartition::build(const SplatSet& splats, const std::vector<PackedAttributes>& attributes,
+                          const glm::dvec3& origin, const glm::dmat4& view, double thickness,
+                          double nearCull, const DepthExtent& extent) {
   order_.clear();
   slabs_.clear();
+  splatCount_ = 0;
   const auto& s = splats.splats();
   const size_t n = s.size();
   if (n == 0 || !(thickness > 0.0)) return;
+  const glm::dvec3& spacing = extent.spacing;
+  const double minSpacing = std::min({spacing.x, spacing.y, spacing.z});
   // Depth is affine in (i,j,k): depth = d0 + i*di + j*dj + k*dk.
   const glm::dvec3 row(-view[0][2], -view[1][2], -view[2][2]);
   const double d0 = glm::dot(row, origin) - view[3][2];
   const double di = row.x * spacing.x, dj = row.y * spacing.y, dk = row.z * spacing.z;
-  depth_.resize(n);
+  // Depth variance of a volume kernel: (W V'' W^T)_zz, the same for every voxel.
+  const double volumeRadius =
+      std::sqrt(extent.cutoff * cameraCovariance(extent.rotation, spacing)[2][2]);
+  const bool surfaces = attributes.size() == n;
+  lo_.resize(n);
+  hi_.resize(n);
   double lo = INFINITY, hi = -INFINITY;
+  nearestCenter_ = INFINITY;
   for (size_t m = 0; m < n; ++m) {
-    const double d = d0 + SplatSet::i(s[m]) * di + SplatSet::j(s[m]) * dj + SplatSet::k(s[m]) * dk;
-    depth_[m] = float(d);
-    if (d > nearCull) {
-      lo = std::min(lo, d);
-      hi = std::max(hi, d);
+    double d = d0 + SplatSet::i(s[m]) * di + SplatSet::j(s[m]) * dj + SplatSet::k(s[m]) * dk;
+    double radius = volumeRadius;
+    if (surfaces && (attributes[m].nzKind >> 16) != 0) {
+      const UnpackedAttributes a = unpackAttributes(attributes[m]);
+      if (a.surface) {
+        d += glm::dot(row, a.normal) * a.offset * minSpacing;
+        radius =
+            std::sqrt(extent.cutoff * surfaceCovariance(extent.rotation, spacing, a.normal)[2][2]);
+      }
     }
+    if (!(d > nearCull)) {
+      lo_[m] = NAN;
+      continue;
+    }
+    nearestCenter_ = std::min(nearestCenter_, d);
+    if (extent.swan)
+      radius *= extent.orthographic ? extent.swanStretch : std::max(1.0, d / extent.swanDepth);
+    lo_[m] = float(d - radius);
+    hi_[m] = float(d + radius);
+    lo = std::min(lo, double(lo_[m]));
+    hi = std::max(hi, double(hi_[m]));
   }
   if (!(lo <= hi)) return;
   // Cap the slab count so a tiny thickness on a deep scene cannot exhaust memory.
   const double count = std::min(std::floor((hi - lo) / thickness) + 1.0, 1.0e6);
   const auto slabCount = static_cast<size_t>(count);
   const double scale = count < 1.0e6 ? 1.0 / thickness : count / (hi - lo) * (1.0 - 1e-9);
-  bucket_.assign(slabCount + 1, 0);
   auto slabOf = [&](float d) {
     return std::min(slabCount - 1, static_cast<size_t>(std::max(0.0, (d - lo) * scale)));
   };
-  for (size_t m = 0; m < n; ++m)
-    if (depth_[m] > nearCull) bucket_[slabOf(depth_[m]) + 1]++;
+  bucket_.assign(slabCount + 1, 0);
+  for (size_t m = 0; m < n; ++m) {
+    if (std::isnan(lo_[m])) continue;
+    ++splatCount_;
+    for (size_t b = slabOf(lo_[m]), e = slabOf(hi_[m]); b <= e; ++b) bucket_[b + 1]++;
+  }
   for (size_t b = 1; b <= slabCount; ++b) bucket_[b] += bucket_[b - 1];
   order_.resize(bucket_[slabCount]);
   std::vector<uint32_t> cursor(bucket_.begin(), bucket_.end() - 1);
-  for (size_t m = 0; m < n; ++m)
-    if (depth_[m] > nearCull) order_[cursor[slabOf(depth_[m])]++] = uint32_t(m);
+  for (size_t m = 0; m < n; ++m) {
+    if (std::isnan(lo_[m])) continue;
+    const size_t b0 = slabOf(lo_[m]), b1 = slabOf(hi_[m]);
+    for (size_t b = b0; b <= b1; ++b)
+      order_[cursor[b]++] = uint32_t(m) | (b == b0 ? kFirstSlab : 0u) | (b == b1 ? kLastSlab : 0u);
+  }
   for (size_t b = 0; b < slabCount; ++b) {
     const uint32_t c = bucket_[b + 1] - bucket_[b];
-    if (c) slabs_.push_back({lo + b / scale, bucket_[b], c});
+    if (c) slabs_.push_back({lo + b / scale, lo + (b + 1) / scale, bucket_[b], c});
   }
 }
 

@@ -1,39 +1,68 @@
-// SlabPartition: splats bucketed into view-aligned slabs by camera depth (a counting sort).
+// SlabPartition: splats bucketed into image-aligned slabs (planes of constant camera depth),
+// each splat listed in every slab its depth extent overlaps (a counting sort).
 #pragma once
 
 #include <cstdint>
-#include <vector>
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <vector>
 
+#include "core/splat_attributes.h"
 #include "core/splat_set.h"
 
 namespace ewa {
 
 struct Slab {
   double nearDepth = 0.0;  // camera depth of the slab's front plane
+  double farDepth = 0.0;   // and of its back plane
   uint32_t first = 0;      // offset into order()
   uint32_t count = 0;
 };
 
+// How far in camera depth a kernel reaches: sqrt(cutoff * variance of depth), the depth extent
+// of the ellipsoid r <= cutoff; Swan's filter stretches kernels beyond the distance k.
+struct DepthExtent {
+  double cutoff = 4.0;
+  glm::dmat3 rotation{1.0};  // W: world to camera
+  glm::dvec3 spacing{1.0};
+  bool swan = false;
+  bool orthographic = false;
+  double swanDepth = 1.0;    // perspective: kernels stretch by depth / swanDepth beyond it
+  double swanStretch = 1.0;  // orthographic: the one stretch of every kernel
+};
+
 class SlabPartition {
  public:
-  // Buckets splats whose depth lies in (nearCull, inf) into slabs of `thickness` world units
-  // starting at the smallest such depth. Splats at or behind nearCull are left out.
-  // `view` maps world to camera space; voxel (i,j,k) sits at origin + (i,j,k) * spacing.
-  void build(const SplatSet& splats, const glm::dvec3& origin, const glm::dvec3& spacing,
-             const glm::dmat4& view, double thickness, double nearCull);
+  // Order entries carry the splat index in the low 30 bits and these flags: the slab is the
+  // first (last) one of that splat, so its share integrates the open tail in front (behind).
+  static constexpr uint32_t kFirstSlab = 1u << 31;
+  static constexpr uint32_t kLastSlab = 1u << 30;
+  static constexpr uint32_t kIndexMask = kLastSlab - 1u;
+
+  // Buckets splats whose center depth lies in (nearCull, inf) into slabs of `thickness` world
+  // units starting at the front of the nearest kernel; each splat goes to every slab its depth
+  // extent overlaps. `attributes` (may be empty) marks surface splats, whose extent and center
+  // follow their normal. `view` maps world to camera space; voxel (i,j,k) sits at
+  // origin + (i,j,k) * spacing. Splats at or behind nearCull are left out.
+  void build(const SplatSet& splats, const std::vector<PackedAttributes>& attributes,
+             const glm::dvec3& origin, const glm::dmat4& view, double thickness, double nearCull,
+             const DepthExtent& extent);
 
   const std::vector<uint32_t>& order() const { return order_; }
   // Slabs front (smallest depth) to back; empty slabs are dropped.
   const std::vector<Slab>& slabs() const { return slabs_; }
+  // Number of splats listed at least once.
+  size_t splatCount() const { return splatCount_; }
+  // Smallest center depth among them (footprints are largest there).
+  double nearestCenter() const { return nearestCenter_; }
 
  private:
   std::vector<uint32_t> order_;
   std::vector<Slab> slabs_;
-  std::vector<float> depth_;     // scratch, kept to avoid reallocating every frame
+  std::vector<float> lo_, hi_;  // per-splat depth extent, scratch kept between frames
   std::vector<uint32_t> bucket_;
+  size_t splatCount_ = 0;
+  double nearestCenter_ = 0.0;
 };
 
 }  // namespace ewa

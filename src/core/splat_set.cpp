@@ -4,11 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace ewa {
 
 SplatSet SplatSet::build(const Volume& volume, const std::function<bool(double)>& isVisible,
-                         int stride) {
+                         int stride, const VoxelPredicate& alsoKeep, size_t maxSplats) {
   SplatSet set;
   set.stride_ = std::max(1, stride);
   const auto& d = volume.dims();
@@ -31,7 +32,12 @@ SplatSet SplatSet::build(const Volume& volume, const std::function<bool(double)>
         const double v = volume.valueAt(n);
         if (!std::isfinite(v)) continue;
         const double x = std::clamp((v - lo) / width, 0.0, 1.0);
-        if (!visible[std::min(kTable - 1, int(x * (kTable - 1)))]) continue;
+        if (!visible[std::min(kTable - 1, int(x * (kTable - 1)))] &&
+            !(alsoKeep && alsoKeep(i, j, k, v)))
+          continue;
+        if (set.splats_.size() >= maxSplats)
+          throw SplatLimitError("more than " + std::to_string(maxSplats) +
+                                " voxels are visible, the most that fit");
         const auto q = static_cast<uint32_t>(std::lround(x * (kValueLevels - 1)));
         set.splats_.push_back({uint32_t(i) | uint32_t(j) << 16, uint32_t(k) | q << 16});
       }

@@ -2,12 +2,20 @@
 #pragma once
 
 #include <cstdint>
+#include <cstddef>
 #include <functional>
+#include <stdexcept>
 #include <vector>
 
 #include "core/volume.h"
 
 namespace ewa {
+
+// More voxels are visible than the limit given to SplatSet::build allows.
+class SplatLimitError : public std::length_error {
+ public:
+  using std::length_error::length_error;
+};
 
 // 8 bytes a splat: voxel indices and the value quantized over the volume's range.
 struct PackedSplat {
@@ -20,8 +28,14 @@ class SplatSet {
   // Keeps voxels whose value's opacity (by `isVisible`, called on a 4096-entry table over the
   // value range, not per voxel) is above zero. Throws std::invalid_argument if a dimension
   // exceeds 65535. `stride` > 1 keeps every stride-th voxel along each axis (a coarse level).
+  // Throws SplatLimitError as soon as more than `maxSplats` voxels are kept, before the list
+  // grows past that (the caller's memory or GPU buffer limit).
+  // `alsoKeep(i, j, k, value)`, when given, is asked about voxels the table leaves out (surface
+  // voxels are kept whatever their opacity).
+  using VoxelPredicate = std::function<bool(int64_t, int64_t, int64_t, double)>;
   static SplatSet build(const Volume& volume, const std::function<bool(double)>& isVisible,
-                        int stride = 1);
+                        int stride = 1, const VoxelPredicate& alsoKeep = nullptr,
+                        size_t maxSplats = SIZE_MAX);
 
   const std::vector<PackedSplat>& splats() const { return splats_; }
   size_t size() const { return splats_.size(); }

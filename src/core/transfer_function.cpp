@@ -12,6 +12,8 @@ namespace {
 
 // Opaque points stay finite: -ln(1e-6) is about 13.8 per unit distance.
 constexpr double kMaxAlpha = 1.0 - 1e-6;
+// The largest extinction bake() writes: finite in float with room for sums over many splats.
+constexpr double kMaxBakedExtinction = 1e20;
 
 // Piecewise-linear lookup in a sorted point list; `get` reads a point's payload.
 template <typename Point, typename Get>
@@ -102,7 +104,10 @@ std::vector<glm::vec4> TransferFunction::bake(double lo, double hi, int n) const
   for (int i = 0; i < n; ++i) {
     const double v = n == 1 ? lo : lo + (hi - lo) * i / (n - 1);
     const glm::dvec3 rgb = colorAt(v);
-    table[i] = glm::vec4(float(rgb.r), float(rgb.g), float(rgb.b), float(extinctionAt(v)));
+    // A tiny unit distance makes tau overflow float; infinite tau would turn the shader's
+    // colour average (sum c*tau / sum tau) into NaN, so cap it far above any visible opacity.
+    const double tau = std::min(extinctionAt(v), kMaxBakedExtinction);
+    table[i] = glm::vec4(float(rgb.r), float(rgb.g), float(rgb.b), float(tau));
   }
   return table;
 }

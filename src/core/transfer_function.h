@@ -43,7 +43,8 @@ class TransferFunction {
   // alpha clamped to [0, 1 - 1e-6] so an opaque point stays finite.
   double extinctionAt(double value) const;
   // n samples over [lo, hi] (sample i at lo + (hi - lo) * i / (n - 1); one sample at lo when
-  // n == 1) of (r, g, b, tau) for a GPU texture. Throws std::invalid_argument for n < 1 or
+  // n == 1) of (r, g, b, tau) for a GPU texture, tau capped at 1e20 so it stays finite in float.
+  // Throws std::invalid_argument for n < 1 or
   // non-finite bounds.
   std::vector<glm::vec4> bake(double lo, double hi, int n) const;
   // True when no value in [lo, hi] has alpha > 0 (nothing would be drawn). Exact: the

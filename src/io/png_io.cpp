@@ -1,6 +1,8 @@
 // PNG reading and writing through stb_image / stb_image_write.
 #include "io/png_io.h"
 
+#include <string_view>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -9,23 +11,23 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include "io/atomic_file.h"
+
 namespace ewa {
 
 void writePng(const std::string& path, const Image8& image) {
   if (image.width <= 0 || image.height <= 0 || (image.channels != 3 && image.channels != 4) ||
       image.pixels.size() != size_t(image.width) * image.height * image.channels)
     throw std::runtime_error(path + ": image to write has inconsistent size");
-  const std::string tmp = path + ".tmp";
-  if (!stbi_write_png(tmp.c_str(), image.width, image.height, image.channels,
-                      image.pixels.data(), image.width * image.channels)) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot write PNG");
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot write PNG: " + why);
-  }
+  // Encode in memory first: an encoder failure then never touches the file system.
+  std::string png;
+  const auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
+  };
+  if (!stbi_write_png_to_func(append, &png, image.width, image.height, image.channels,
+                              image.pixels.data(), image.width * image.channels))
+    throw std::runtime_error(path + ": cannot encode PNG");
+  writeFileAtomically(path, png);
 }
 
 Image8 readPng(const std::string& path) {

@@ -10,6 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/atomic_file.h"
+
 namespace ewa {
 namespace {
 
@@ -148,22 +150,7 @@ void saveTransferFunction(const std::string& path, const TransferFunction& unsor
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(path + ": not saved: " + e.what());
   }
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
-    out << transferFunctionToJson(tf);
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot write: " + why);
-  }
+  writeFileAtomically(path, transferFunctionToJson(tf));
 }
 
 }  // namespace ewa

@@ -9,6 +9,7 @@ const char* renderModeName(RenderMode mode) {
   switch (mode) {
     case RenderMode::Composite: return "composite";
     case RenderMode::XRay: return "xray";
+    case RenderMode::Mip: return "mip";
   }
   return "?";
 }
@@ -25,6 +26,27 @@ FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3
 bool parseRenderMode(const std::string& text, RenderMode* mode) {
   if (text == "composite") *mode = RenderMode::Composite;
   else if (text == "xray") *mode = RenderMode::XRay;
+  else if (text == "mip") *mode = RenderMode::Mip;
+  else return false;
+  return true;
+}
+
+const char* compositeOrderName(CompositeOrder order) {
+  return order == CompositeOrder::BackToFront ? "back-to-front" : "front-to-back";
+}
+
+bool parseCompositeOrder(const std::string& text, CompositeOrder* order) {
+  if (text == "front-to-back") *order = CompositeOrder::FrontToBack;
+  else if (text == "back-to-front") *order = CompositeOrder::BackToFront;
+  else return false;
+  return true;
+}
+
+const char* xrayMapName(XRayMap map) { return map == XRayMap::Sum ? "sum" : "exp"; }
+
+bool parseXRayMap(const std::string& text, XRayMap* map) {
+  if (text == "exp") *map = XRayMap::Attenuation;
+  else if (text == "sum") *map = XRayMap::Sum;
   else return false;
   return true;
 }

@@ -9,23 +9,43 @@
 
 #include "core/camera.h"
 #include "core/ewa_footprint.h"
+#include "core/shading.h"
+#include "core/splat_attributes.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
 #include "io/png_io.h"
 
 namespace ewa {
 
-enum class RenderMode { Composite = 0, XRay = 1 };
+// composite: slabs composited with opacity 1 - exp(-depth); xray: the summed optical depth
+// shown as gray; mip: the largest classified value along each pixel's footprint.
+enum class RenderMode { Composite = 0, XRay = 1, Mip = 2 };
+enum class CompositeOrder { FrontToBack = 0, BackToFront = 1 };
+// X-ray gray: exp(-scale * sum) (light through the volume) or scale * sum.
+enum class XRayMap { Attenuation = 0, Sum = 1 };
 
 const char* renderModeName(RenderMode mode);
 bool parseRenderMode(const std::string& text, RenderMode* mode);
+const char* compositeOrderName(CompositeOrder order);
+bool parseCompositeOrder(const std::string& text, CompositeOrder* order);
+const char* xrayMapName(XRayMap map);
+bool parseXRayMap(const std::string& text, XRayMap* map);
 
 struct RenderSettings {
   FilterMode filter = FilterMode::Ewa;
   RenderMode mode = RenderMode::Composite;
   double cutoff = 4.0;         // footprint cutoff r = dx^T Q dx
-  double slabThickness = 1.0;  // in units of the smallest voxel spacing
+  double slabThickness = 1.0;  // in units of the smallest voxel spacing, at least 0.25
   glm::dvec3 background{0.0};
+  CompositeOrder order = CompositeOrder::FrontToBack;
+  // Front to back: a pixel stops taking slabs once its opacity reaches this (>= 1: never), and
+  // drawing stops once every pixel the volume covers has.
+  double terminationOpacity = 0.99;
+  XRayMap xrayMap = XRayMap::Attenuation;
+  double xrayScale = 1.0;
+  Lighting lighting;            // per splat, every frame: the camera moves the light
+  Classification classification;  // gradients and surface voxels: rebuilds the splats
+  double surfaceOpacity = 0.95;   // opacity of the surface-splat layer seen along its normal
 };
 
 // The footprint parameters every splat of a volume with this spacing gets under `settings`:
@@ -36,6 +56,9 @@ struct RenderStats {
   size_t splatsTotal = 0;   // non-transparent voxels
   size_t splatsDrawn = 0;   // in front of the eye, sent to the GPU this frame
   size_t slabs = 0;
+  size_t slabsDrawn = 0;    // before early termination stopped the slab loop
+  size_t surfaceSplats = 0; // splats drawn as flat surface kernels
+  size_t slabEntries = 0;   // splats drawn summed over slabs (kernels span several slabs)
   bool quadPass = false;    // some footprints exceeded the point-size limit
   double cpuMs = 0.0;       // CPU time of the last render() call, GPU work included (it waits)
 };

@@ -1,9 +1,11 @@
-// SplatRenderer: classification into splats, slab sorting, splat drawing and compositing.
+// SplatRenderer: classification into splats, per-frame uniforms, splat drawing and read-back.
 #include "render/splat_renderer.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <string>
+
+#include <unistd.h>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -21,7 +23,9 @@ SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
     : pointProgram_(shaders.program("splat_point.vert.glsl", "splat.frag.glsl")),
       quadProgram_(shaders.program("splat_quad.vert.glsl", "splat.frag.glsl")),
       slabProgram_(shaders.program("fullscreen.vert.glsl", "slab_composite.frag.glsl")),
+      markProgram_(shaders.program("fullscreen.vert.glsl", "opacity_mark.frag.glsl")),
       finalProgram_(shaders.program("fullscreen.vert.glsl", "final_composite.frag.glsl")),
+      boxProgram_(shaders.program("bounds_box.vert.glsl", "baseline_point.frag.glsl")),
       emptyVao_(gl::VertexArray::create()),
       transferTexture_(gl::Texture::create1D(GL_RGBA32F, kTransferSamples)) {
   GLfloat range[2] = {1.0f, 1.0f};
@@ -29,6 +33,19 @@ SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
   glPointSizeLimit_ = pointSizeLimit_ = std::max(1.0f, range[1]);
   transferTexture_.setFilter(GL_LINEAR, GL_LINEAR);
   transferTexture_.setWrap(GL_CLAMP_TO_EDGE);
+  // The splat list must fit one shader storage block and, on the CPU, the machine's memory.
+  GLint64 block = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
+  maxStorageBlockBytes_ = uint64_t(std::max<GLint64>(block, 0));
+  const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
+  const uint64_t memory = pages > 0 && pageSize > 0 ? uint64_t(pages) * uint64_t(pageSize) : ~0ull;
+  glMaxSplats_ = maxSplats_ =
+      size_t(std::min(maxStorageBlockBytes_, memory / 2) / sizeof(PackedSplat));
+  glCreateQueries(GL_SAMPLES_PASSED, 1, &query_);
+}
+
+SplatRenderer::~SplatRenderer() {
+  if (query_) glDeleteQueries(1, &query_);
 }
 
 void SplatRenderer::setPointSizeLimit(float limit) {
@@ -45,10 +62,23 @@ void SplatRenderer::setTransferFunction(const TransferFunction& tf) {
   splatsDirty_ = true;
 }
 
-void SplatRenderer::rebuildSplats() {
+void SplatRenderer::rebuildSplats(const Classification& classification) {
   splatsDirty_ = false;
+  classification_ = classification;
   uploadTransferTexture();
-  splats_ = SplatSet::build(*volume_, [this](double v) { return tf_.alphaAt(v) > 0.0; });
+  classified_ = ClassifiedSplats();
+  try {
+    // Gradients and surface voxels are found here, once per volume, transfer function and
+    // classification; camera and light changes only change uniforms.
+    classified_ = classifySplats(*volume_, tf_, classification, maxSplats_);
+  } catch (const SplatLimitError&) {
+    splatsDirty_ = true;  // nothing drawn until the volume or transfer function changes
+    throw gl::GlError("volume: more than " + std::to_string(maxSplats_) +
+                      " visible voxels; the splat buffer (8 bytes a voxel) may hold at most " +
+                      std::to_string(maxStorageBlockBytes_) +
+                      " bytes (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) and half the machine's memory: "
+                      "make more of the volume transparent");
+  }
   uploadSplats();
 }
 
@@ -63,17 +93,23 @@ void SplatRenderer::updateTransferTexture(const TransferFunction& tf) {
   if (volume_) uploadTransferTexture();
 }
 
-void SplatRenderer::setSplats(SplatSet splats) {
-  splats_ = std::move(splats);
+void SplatRenderer::setSplats(ClassifiedSplats splats, const Classification& classification) {
+  classified_ = std::move(splats);
+  classification_ = classification;
   splatsDirty_ = false;
   uploadSplats();
 }
 
 void SplatRenderer::uploadSplats() {
-  const auto bytes = GLsizeiptr(std::max<size_t>(1, splats_.size()) * sizeof(PackedSplat));
-  splatBuffer_.setData(bytes, splats_.size() ? splats_.splats().data() : nullptr, GL_STATIC_DRAW);
-  orderBuffer_.setData(GLsizeiptr(std::max<size_t>(1, splats_.size()) * sizeof(uint32_t)),
-                       nullptr, GL_STREAM_DRAW);
+  const size_t n = std::max<size_t>(1, classified_.splats.size());
+  const auto& splats = classified_.splats.splats();
+  splatBuffer_.setData(GLsizeiptr(n * sizeof(PackedSplat)),
+                       splats.empty() ? nullptr : splats.data(), GL_STATIC_DRAW);
+  attributeBuffer_.setData(GLsizeiptr(n * sizeof(PackedAttributes)),
+                           splats.empty() ? nullptr : classified_.attributes.data(),
+                           GL_STATIC_DRAW);
+  // GL_OUT_OF_MEMORY here names the buffer instead of surfacing at the end of the frame.
+  gl::checkGlError(("splat buffer upload (" + std::to_string(n) + " splats)").c_str());
 }
 
 double SplatRenderer::footprintRadiusBound(const Projection& proj, const RenderSettings& settings,
@@ -86,7 +122,7 @@ double SplatRenderer::footprintRadiusBound(const Projection& proj, const RenderS
     // Off-axis kernels stretch by up to 1 + tan^2 of the half diagonal angle.
     const double t2 = (proj.width * proj.width + proj.height * proj.height) /
                       (4.0 * proj.focalPixels * proj.focalPixels);
-    ppu = proj.focalPixels / nearestDepth * (1.0 + t2);
+    ppu = proj.focalPixels / std::max(nearestDepth, 1e-9) * (1.0 + t2);
   }
   const double swan = settings.filter == FilterMode::Swan ? sigma / minSpacing : 0.0;
   return std::sqrt(settings.cutoff) * (sigma * ppu + 1.0 + swan);
@@ -96,6 +132,7 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
                                       const RenderSettings& settings) {
   const glm::dvec3& sp = volume_->spacing();
   const FootprintParams params = footprintParams(settings, sp);
+  const Lighting& light = settings.lighting;
   p.setMat4("uView", glm::mat4(camera.viewMatrix()));
   p.setMat3("uCovariance", glm::mat3(cameraCovariance(camera.rotation(), sp)));
   p.setVec3("uOrigin", glm::vec3(volume_->origin()));
@@ -112,94 +149,34 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setFloat("uNearDepth", float(params.nearDepth));
   p.setFloat("uPointSizeLimit", pointSizeLimit_);
   p.setInt("uTransfer", 0);
+  p.setFloat("uSurfaceTau",
+             float(-std::log(1.0 - std::clamp(settings.surfaceOpacity, 0.0, 0.999999))));
+  p.setInt("uShading", light.enabled ? 1 : 0);
+  p.setFloat("uAmbient", float(light.ambient));
+  p.setFloat("uDiffuse", float(light.diffuse));
+  p.setFloat("uSpecular", float(light.specular));
+  p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
+  p.setInt("uMode", int(settings.mode));
+}
+
+void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails) {
+  for (gl::Program* p : {&pointProgram_, &quadProgram_}) {
+    p->setUInt("uFirst", slab.first);
+    p->setInt("uSplitDepth", split ? 1 : 0);
+    p->setInt("uOpenTails", openTails ? 1 : 0);
+    p->setFloat("uSlabNear", float(slab.nearDepth));
+    p->setFloat("uSlabFar", float(slab.farDepth));
+  }
 }
 
 void SplatRenderer::drawSplats(const Slab& slab, bool quads) {
-  pointProgram_.setUInt("uFirst", slab.first);
   glUseProgram(pointProgram_.id());
   glDrawArrays(GL_POINTS, 0, GLsizei(slab.count));
   if (quads) {
-    quadProgram_.setUInt("uFirst", slab.first);
     glUseProgram(quadProgram_.id());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(slab.count));
   }
-}
-
-void SplatRenderer::render(const Camera& camera, const RenderSettings& settings, int width,
-                           int height) {
-  const auto start = std::chrono::steady_clock::now();
-  targets_.resize(width, height);
-  stats_ = RenderStats{};
-  const GLfloat zero[4] = {0, 0, 0, 0};
-  targets_.accumFbo.clearColor(0, zero);
-  if (volume_ && splatsDirty_) rebuildSplats();
-  const Projection proj = camera.projection(width, height);
-  if (volume_ && splats_.size() > 0 && camera.valid()) {
-    const glm::dvec3& sp = volume_->spacing();
-    const FootprintParams params = footprintParams(settings, sp);
-    // X-ray sums every splat into one buffer: a single slab of unbounded thickness.
-    const double thickness = settings.mode == RenderMode::XRay
-                                 ? 1e30
-                                 : std::max(1e-3, settings.slabThickness) * params.minSpacing;
-    partition_.build(splats_, volume_->origin(), sp, camera.viewMatrix(), thickness,
-                     params.nearDepth);
-    const auto& order = partition_.order();
-    stats_.splatsTotal = splats_.size();
-    stats_.splatsDrawn = order.size();
-    stats_.slabs = partition_.slabs().size();
-    if (!order.empty()) {
-      orderBuffer_.setSubData(0, GLsizeiptr(order.size() * sizeof(uint32_t)), order.data());
-      const double nearest = partition_.slabs().front().nearDepth;
-      stats_.quadPass = 2.0 * footprintRadiusBound(proj, settings, nearest) + 0.5 > pointSizeLimit_;
-      setCommonUniforms(pointProgram_, camera, proj, settings);
-      setCommonUniforms(quadProgram_, camera, proj, settings);
-      splatBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-      orderBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-      transferTexture_.bindUnit(0);
-      targets_.slab.bindUnit(1);
-      slabProgram_.setInt("uSlab", 1);
-      glBindVertexArray(emptyVao_.id());
-      glViewport(0, 0, width, height);
-      glEnable(GL_PROGRAM_POINT_SIZE);
-      glDisable(GL_DEPTH_TEST);
-      glEnable(GL_BLEND);
-      for (const Slab& slab : partition_.slabs()) {
-        // Inside a slab: order-independent sums of optical depth and emitted light.
-        glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
-        targets_.slabFbo.clearColor(0, zero);
-        glBlendFunc(GL_ONE, GL_ONE);
-        drawSplats(slab, stats_.quadPass);
-        if (settings.mode == RenderMode::XRay) break;
-        // Between slabs: front-to-back "under" compositing of 1 - exp(-depth).
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-        glBindFramebuffer(GL_FRAMEBUFFER, targets_.accumFbo.id());
-        glBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_ONE);
-        glUseProgram(slabProgram_.id());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-      }
-      if (settings.mode == RenderMode::XRay) {
-        glBindFramebuffer(GL_FRAMEBUFFER, targets_.accumFbo.id());
-        glBlendFunc(GL_ONE, GL_ZERO);
-        glUseProgram(slabProgram_.id());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-      }
-      glDisable(GL_BLEND);
-    }
-  }
-  glBindVertexArray(emptyVao_.id());
-  glBindFramebuffer(GL_FRAMEBUFFER, targets_.outputFbo.id());
-  glViewport(0, 0, width, height);
-  glDisable(GL_BLEND);
-  targets_.accum.bindUnit(2);
-  finalProgram_.setInt("uImage", 2);
-  finalProgram_.setVec3("uBackground", glm::vec3(settings.background));
-  glUseProgram(finalProgram_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glUseProgram(0);
-  glFinish();
-  gl::checkGlError("SplatRenderer::render");
-  stats_.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  stats_.slabEntries += slab.count;
 }
 
 Image8 SplatRenderer::readImage() const {

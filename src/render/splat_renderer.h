@@ -1,9 +1,14 @@
-// SplatRenderer: EWA (and Swan and plain) volume splatting with view-aligned slab compositing.
+// SplatRenderer: EWA (and Swan and plain) volume splatting with image-aligned slab compositing.
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
 #include <memory>
+#include <optional>
+#include <utility>
 
 #include "core/slab_partition.h"
+#include "core/splat_attributes.h"
 #include "core/splat_set.h"
 #include "gl/buffer.h"
 #include "gl/program.h"
@@ -19,11 +24,11 @@ class SplatRenderer : public Renderer {
  public:
   // Builds the shader programs; a GL 4.5 context must be current. Throws gl::GlError.
   explicit SplatRenderer(const gl::ShaderLibrary& shaders);
+  ~SplatRenderer() override;
 
   void setVolume(const Volume& volume) override;
   void setTransferFunction(const TransferFunction& tf) override;
-  void render(const Camera& camera, const RenderSettings& settings, int width,
-              int height) override;
+  void render(const Camera& camera, const RenderSettings& settings, int width, int height) override;
   Image8 readImage() const override;
   unsigned outputTexture() const override { return targets_.output.id(); }
   RenderStats stats() const override { return stats_; }
@@ -33,44 +38,66 @@ class SplatRenderer : public Renderer {
   // opacities without classifying the volume again. Voxels the new function makes visible
   // appear once a matching set comes through setSplats(). Needs setVolume() first.
   void updateTransferTexture(const TransferFunction& tf);
-  // Replaces the splats with a set built elsewhere (e.g. AsyncSplatBuilder) for the current
-  // volume and uploads it; the next render draws it.
-  void setSplats(SplatSet splats);
+  // Replaces the splats with a set classified elsewhere (e.g. AsyncSplatBuilder) for the
+  // current volume under `classification` and uploads it; the next render draws it (and does
+  // not classify again unless the settings ask for another classification).
+  void setSplats(ClassifiedSplats splats, const Classification& classification);
+  // The most splats the GL buffers may hold: pass it to a classification made elsewhere.
+  size_t maxSplats() const { return maxSplats_; }
 
   // X-ray mode only: the summed optical depth per pixel, bottom row first (for tests).
   std::vector<float> readOpticalDepth() const;
   // The splats of the current volume and transfer function (built on the next render()).
-  const SplatSet& splats() const { return splats_; }
+  const SplatSet& splats() const { return classified_.splats; }
+  const std::vector<PackedAttributes>& attributes() const { return classified_.attributes; }
   // The largest point size this GL draws; bigger footprints go through the quad path.
   float pointSizeLimit() const { return pointSizeLimit_; }
   // Test hook: a lower limit forces the quad path (never above the GL limit).
   void setPointSizeLimit(float limit);
+  // Test hook: fewer splats allowed than the GL limit, to test the error without a huge volume.
+  void setMaxSplats(size_t maxSplats) { maxSplats_ = std::min(glMaxSplats_, maxSplats); }
+  // Test hook: in X-ray mode, sum only each kernel's share between these camera depths (the
+  // share one composite slab gets, without open tails). nullopt: the whole kernel.
+  void setDepthWindow(std::optional<std::pair<double, double>> window) { depthWindow_ = window; }
 
  private:
-  void rebuildSplats();
+  void rebuildSplats(const Classification& classification);
   void uploadTransferTexture();
   void uploadSplats();
   void setCommonUniforms(gl::Program& program, const Camera& camera, const Projection& proj,
                          const RenderSettings& settings);
+  void setSlabUniforms(const Slab& slab, bool split, bool openTails);
   void drawSplats(const Slab& slab, bool quads);
+  void compositeSlabs(const Camera& camera, const Projection& proj, const RenderSettings& settings);
+  // True when every pixel the volume's bounding box covers is marked opaque.
+  bool allOpaque(const Camera& camera, const Projection& proj, const RenderSettings& settings);
   double footprintRadiusBound(const Projection& proj, const RenderSettings& settings,
                               double nearestDepth) const;
 
   const Volume* volume_ = nullptr;
   TransferFunction tf_;
   bool splatsDirty_ = true;
-  SplatSet splats_;
+  Classification classification_;
+  ClassifiedSplats classified_;
   SlabPartition partition_;
+  std::optional<std::pair<double, double>> depthWindow_;
 
   gl::Program pointProgram_;
   gl::Program quadProgram_;
   gl::Program slabProgram_;
+  gl::Program markProgram_;
   gl::Program finalProgram_;
+  gl::Program boxProgram_;
   gl::VertexArray emptyVao_;
   gl::Buffer splatBuffer_;
   gl::Buffer orderBuffer_;
+  gl::Buffer attributeBuffer_;
   gl::Texture transferTexture_;
   RenderTargets targets_;
+  size_t glMaxSplats_ = SIZE_MAX;        // splats that fit the GPU's storage block and memory
+  size_t maxSplats_ = SIZE_MAX;          // the limit in force (lower in tests)
+  uint64_t maxStorageBlockBytes_ = 0;    // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
+  unsigned query_ = 0;
   float pointSizeLimit_ = 64.0f;
   float glPointSizeLimit_ = 64.0f;
   RenderStats stats_;

@@ -6,13 +6,15 @@
 
 #include <imgui.h>
 
+#include "ui/render_options_panel.h"
+
 namespace ewa {
 
 namespace {
 
 // The combo's order, best filter first.
 constexpr FilterMode kFilters[] = {FilterMode::Ewa, FilterMode::Swan, FilterMode::Plain};
-constexpr RenderMode kModes[] = {RenderMode::Composite, RenderMode::XRay};
+constexpr RenderMode kModes[] = {RenderMode::Composite, RenderMode::XRay, RenderMode::Mip};
 
 // A slider over a double (the settings are doubles; ImGui's float sliders would round them).
 bool sliderDouble(const char* label, double* value, double lo, double hi, const char* format,
@@ -32,6 +34,7 @@ ControlPanel::ControlPanel(std::string volumeName, const Volume& volume)
                 static_cast<long long>(d[0]), static_cast<long long>(d[1]),
                 static_cast<long long>(d[2]), scalarName(volume.type()), s.x, s.y, s.z);
   volumeText_ = text;
+  valueRange_ = {volume.minValue(), volume.maxValue()};
   if (volumeName_.empty()) volumeName_ = "(unnamed volume)";
 }
 
@@ -86,6 +89,8 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
     }
   }
 
+  changed |= drawRenderOptions(settings, valueRange_[0], valueRange_[1]);
+
   float background[3] = {float(settings.background.r), float(settings.background.g),
                          float(settings.background.b)};
   if (ImGui::ColorEdit3("background", background)) {
@@ -116,7 +121,8 @@ void ControlPanel::drawStats(const FrameStats& stats) {
   ImGui::Text("render %.1f ms   frame %.1f ms", r.cpuMs, stats.frameMs);
   ImGui::Text("image %d x %d", stats.imageWidth, stats.imageHeight);
   ImGui::Text("splats %zu / %zu", r.splatsDrawn, r.splatsTotal);
-  ImGui::Text("slabs %zu   quad path %s", r.slabs, r.quadPass ? "yes" : "no");
+  ImGui::Text("slabs %zu (drawn %zu)   quad path %s", r.slabs, r.slabsDrawn, r.quadPass ? "yes" : "no");
+  ImGui::Text("surface splats %zu   splat draws %zu", r.surfaceSplats, r.slabEntries);
 }
 
 }  // namespace ewa

@@ -1,6 +1,7 @@
 // ControlPanel: the ImGui window that shows the volume and statistics and edits the view.
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "core/camera.h"
@@ -40,6 +41,7 @@ class ControlPanel {
 
   std::string volumeName_;
   std::string volumeText_;  // "64 x 64 x 64 uint8, spacing 1 1 1"
+  std::array<double, 2> valueRange_{0.0, 1.0};
 };
 
 }  // namespace ewa

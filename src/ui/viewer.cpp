@@ -2,6 +2,7 @@
 #include "ui/viewer.h"
 
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include <chrono>
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "core/async_splat_builder.h"
 #include "gl/shader_library.h"
@@ -84,10 +86,15 @@ class Viewer {
  private:
   // Swaps in a splat set the worker finished; true when one arrived.
   bool takeBuiltSplats() {
-    std::optional<SplatSet> set = splatBuilder_.poll();
-    if (!set) return false;
-    renderer_.setSplats(std::move(*set));
-    ++tfRevision_;
+    try {
+      std::optional<BuiltSplats> built = splatBuilder_.poll();
+      if (!built) return false;
+      renderer_.setSplats(std::move(built->splats), built->classification);
+      ++tfRevision_;
+    } catch (const std::exception& e) {  // too many visible voxels: say so, keep the old set
+      renderError_ = e.what();
+      std::cerr << "ewaview: " << renderError_ << " (the window keeps running)\n";
+    }
     return true;
   }
 
@@ -107,7 +114,8 @@ class Viewer {
       // The new table is on the GPU for this frame; the old splats draw with it until the
       // worker's set for the new function is swapped in.
       renderer_.updateTransferTexture(tfEditor_.transferFunction());
-      splatBuilder_.request(volume_, tfEditor_.transferFunction());
+      splatBuilder_.request(volume_, tfEditor_.transferFunction(), settings_.classification,
+                            renderer_.maxSplats());
       ++tfRevision_;
     }
 
@@ -115,7 +123,7 @@ class Viewer {
                        renderedSettings_ != settingsRevision_ || renderedSize_ != fb ||
                        renderedTf_ != tfRevision_;
     if (stale) {
-      renderer_.render(controller_.camera(), settings_, fb.x, fb.y);
+      renderSafely(fb);
       hasImage_ = true;
       renderedCamera_ = controller_.revision();
       renderedSettings_ = settingsRevision_;
@@ -127,11 +135,31 @@ class Viewer {
     }
 
     presenter_.present(renderer_.outputTexture(), renderedSize_.x, renderedSize_.y, fb.x, fb.y);
+    if (!renderError_.empty()) {
+      ImGui::GetForegroundDrawList()->AddText(ImVec2(10.0f, float(fb.y) - 30.0f),
+                                              IM_COL32(255, 90, 90, 255), renderError_.c_str());
+    }
     imgui_.render();
     window_.swapBuffers();
     // ImGui decides what it captures while building the frame; the next events obey that.
     input_.setUiCapture(imgui_.wantsMouse(), imgui_.wantsKeyboard());
     return stale;
+  }
+
+  // A GL failure while rendering (out of memory, a limit, an incomplete framebuffer) keeps the
+  // window open: the message is printed once and shown until a change renders again.
+  void renderSafely(glm::ivec2 fb) {
+    try {
+      renderer_.render(controller_.camera(), settings_, fb.x, fb.y);
+      renderError_.clear();
+    } catch (const std::exception& e) {
+      std::string message = e.what();
+      for (char& c : message) c = (c == '\n' || c == '\r') ? ' ' : c;
+      if (message != renderError_)
+        std::cerr << "ewaview: " << message << " (the window keeps running)\n";
+      renderError_ = message;
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
   }
 
   platform::GlfwWindowContext& window_;
@@ -155,6 +183,7 @@ class Viewer {
   glm::ivec2 renderedSize_{0, 0};
   uint64_t tfRevision_ = 0;
   uint64_t renderedTf_ = 0;
+  std::string renderError_;
 };
 
 }  // namespace

@@ -70,9 +70,9 @@ TEST_F(LiveTransfer, NewTableShowsAtOnceAndWorkerSetMatchesFullRebuild) {
   EXPECT_LT(sideMean(renderer()->readImage(), true, 0), 1.0);  // old set: nothing there yet
   AsyncSplatBuilder builder;
   builder.request(vol, both);
-  std::optional<SplatSet> set = builder.finish();
-  ASSERT_TRUE(set.has_value());
-  renderer()->setSplats(std::move(*set));
+  std::optional<BuiltSplats> built = builder.finish();
+  ASSERT_TRUE(built.has_value());
+  renderer()->setSplats(std::move(built->splats), built->classification);
   renderer()->render(cam, settings, size, size);
   EXPECT_EQ(renderer()->splats().size(), size_t(12 * 12 * 12));
   const Image8 swapped = renderer()->readImage();

@@ -22,7 +22,7 @@ TransferFunction above(double threshold) {
 }
 
 size_t directCount(const Volume& v, const TransferFunction& tf) {
-  return SplatSet::build(v, [&](double x) { return tf.alphaAt(x) > 0.0; }).size();
+  return classifySplats(v, tf, {}).splats.size();
 }
 
 TEST(AsyncSplatBuilder, BuildsTheSameSetAsADirectBuild) {
@@ -32,14 +32,16 @@ TEST(AsyncSplatBuilder, BuildsTheSameSetAsADirectBuild) {
   EXPECT_FALSE(builder.poll().has_value());
   builder.request(v, above(100.0));
   EXPECT_TRUE(builder.busy());
-  std::optional<SplatSet> set;
+  std::optional<BuiltSplats> built;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!set && std::chrono::steady_clock::now() < deadline) {
-    set = builder.poll();  // never blocks
+  while (!built && std::chrono::steady_clock::now() < deadline) {
+    built = builder.poll();  // never blocks
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
-  ASSERT_TRUE(set.has_value());
+  ASSERT_TRUE(built.has_value());
   EXPECT_FALSE(builder.busy());
+  const SplatSet* set = &built->splats.splats;
+  EXPECT_EQ(built->splats.attributes.size(), set->size());
   const SplatSet direct = SplatSet::build(v, [](double x) { return x > 100.0; });
   ASSERT_EQ(set->size(), direct.size());
   EXPECT_GT(set->size(), 0u);
@@ -54,9 +56,17 @@ TEST(AsyncSplatBuilder, TheNewestRequestIsTheLastSetHandedOver) {
   AsyncSplatBuilder builder;
   // Many requests while the first builds (a drag): the last one handed over is the newest.
   for (double t = 0.0; t <= 200.0; t += 20.0) builder.request(v, above(t));
-  const std::optional<SplatSet> last = builder.finish();
+  // A splat limit below what the first request keeps: the error comes out of finish().
+  AsyncSplatBuilder limited;
+  limited.request(v, above(0.0), {}, 10);
+  EXPECT_ANY_THROW(limited.finish());
+  Classification smooth;
+  smooth.gradient = GradientMode::Smooth;
+  builder.request(v, above(220.0), smooth);
+  const std::optional<BuiltSplats> last = builder.finish();
   ASSERT_TRUE(last.has_value());
-  EXPECT_EQ(last->size(), directCount(v, above(200.0)));
+  EXPECT_EQ(last->splats.splats.size(), directCount(v, above(220.0)));
+  EXPECT_EQ(last->classification, smooth);
   EXPECT_FALSE(builder.busy());
   EXPECT_FALSE(builder.finish().has_value());
 }

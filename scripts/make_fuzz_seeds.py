@@ -1,0 +1,227 @@
+#!/usr/bin/env python3
+"""Writes the fuzz seed corpora in fuzz/corpus/<target>/ from the headers in ../shared/data.
+
+Each seed keeps a real header's text but shrinks its sizes to a few voxels and carries its own
+small data (attached, or as "--ewa-fuzz-file--" sections that the harness writes to data.0,
+data.1, ...), so seeds are tiny and still reach the data-reading code. Run it again when the
+shared data or the harness's input format changes; the output is deterministic.
+"""
+import base64
+import os
+import re
+import struct
+import sys
+import zlib
+import gzip
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DATA = os.path.join(ROOT, "..", "shared", "data")
+OUT = os.path.join(ROOT, "fuzz", "corpus")
+MARK = b"\n--ewa-fuzz-file--\n"
+SIZES = (4, 3, 2)
+TYPE_BYTES = {"uchar": 1, "uint8_t": 1, "uint8": 1, "char": 1, "short": 2, "int16": 2,
+              "ushort": 2, "uint16": 2, "float": 4, "float32": 4, "met_uchar": 1,
+              "met_char": 1, "met_short": 2, "met_ushort": 2, "met_float": 4}
+
+
+def payload(count, width, seed):
+    # Deterministic bytes; for floats, finite values plus one NaN and one infinity.
+    if width == 4:
+        vals = [float((i * 37 + seed) % 200) for i in range(count)]
+        if count > 2:
+            vals[1] = float("nan")
+            vals[2] = float("inf")
+        return struct.pack("<%df" % count, *vals)
+    return bytes(((i * 53 + seed * 7) % 251) for i in range(count * width))
+
+
+def write(target, name, data):
+    folder = os.path.join(OUT, target)
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, name), "wb") as f:
+        f.write(data)
+
+
+def read_text(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
+def nrrd_header_lines(raw):
+    end = raw.find(b"\n\n")
+    head = raw if end < 0 else raw[:end]
+    return head.decode("latin-1").split("\n")
+
+
+def shrink_nrrd(lines, data_file):
+    out, type_name, encoding, dim = [], "uchar", "raw", 3
+    for line in lines:
+        key = line.split(":", 1)[0].strip().lower().replace(" ", "")
+        if key == "type":
+            type_name = line.split(":", 1)[1].strip().lower()
+        if key == "encoding":
+            encoding = line.split(":", 1)[1].strip().lower()
+        if key == "dimension":
+            dim = int(line.split(":", 1)[1])
+        if key == "sizes":
+            line = "sizes: " + " ".join(str(s) for s in SIZES[:dim])
+        if key in ("datafile", "data file") or key == "datafile":
+            if data_file is None:
+                continue
+            line = "data file: " + data_file
+        out.append(line)
+    return out, TYPE_BYTES.get(type_name, 1), encoding
+
+
+def nrrd_seeds():
+    n = SIZES[0] * SIZES[1] * SIZES[2]
+    for rel in ["engine/engine.nhdr", "cthead/CThead.nhdr", "headsq/quarter.nhdr",
+                "nucleon/nucleon.nrrd", "tooth/tooth.nrrd", "fetal-t2/template_T2.nrrd"]:
+        path = os.path.join(DATA, rel)
+        if not os.path.exists(path):
+            continue
+        lines = nrrd_header_lines(read_text(path))
+        name = os.path.basename(rel)
+        detached = any(l.lower().replace(" ", "").startswith("datafile:") for l in lines)
+        pattern = "%d" in "".join(lines)
+        data_file = ("data.%d 0 1 1" if pattern else "data.0") if detached else None
+        header, width, encoding = shrink_nrrd(lines, data_file)
+        body = payload(n, width, len(name))
+        if encoding in ("gzip", "gz"):
+            body = gzip.compress(body, mtime=0)
+        text = ("\n".join(header) + "\n").encode()
+        if not detached:
+            write("nrrd", name, text + b"\n" + body)
+        elif pattern:
+            half = len(body) // 2
+            write("nrrd", name, text + MARK + body[:half] + MARK + body[half:])
+        else:
+            write("nrrd", name, text + MARK + body)
+
+
+def metaimage_seeds():
+    n = SIZES[0] * SIZES[1] * SIZES[2]
+    for rel in ["headmr/HeadMRVolume.mhd", "lidc2/LIDC2.mha"]:
+        path = os.path.join(DATA, rel)
+        if not os.path.exists(path):
+            continue
+        raw = read_text(path)
+        end = raw.find(b"ElementDataFile")
+        end = raw.find(b"\n", end) + 1
+        lines = raw[:end].decode("latin-1").split("\n")
+        width, compressed, local, out = 1, False, False, []
+        for line in lines:
+            key = line.split("=", 1)[0].strip().lower()
+            value = line.split("=", 1)[1].strip() if "=" in line else ""
+            if key == "dimsize":
+                line = "DimSize = %d %d %d" % SIZES
+            if key == "elementtype":
+                width = TYPE_BYTES.get(value.lower(), 1)
+            if key == "compresseddata":
+                compressed = value.lower() == "true"
+            if key == "elementdatafile":
+                local = value.upper() == "LOCAL"
+                if not local:
+                    line = "ElementDataFile = data.0"
+            out.append(line)
+        body = payload(n, width, len(rel))
+        if compressed:
+            body = zlib.compress(body)
+            out = [("CompressedDataSize = %d" % len(body))
+                   if l.lower().startswith("compresseddatasize") else l for l in out]
+        text = "\n".join(out).encode()
+        name = os.path.basename(rel)
+        write("metaimage", name, text + body if local else text + MARK + body)
+    # A plain LOCAL uncompressed short volume as well.
+    text = ("ObjectType = Image\nNDims = 3\nDimSize = %d %d %d\nElementSpacing = 1 1 2\n"
+            "ElementType = MET_SHORT\nElementByteOrderMSB = True\nElementDataFile = LOCAL\n" % SIZES)
+    write("metaimage", "local_short.mha", text.encode() + payload(n, 2, 3))
+
+
+def dat_seeds():
+    n = SIZES[0] * SIZES[1] * SIZES[2]
+    for rel in ["hydrogen/hydrogenatom.dat", "walnut/walnut.dat", "nucleon/nucleon.dat"]:
+        path = os.path.join(DATA, rel)
+        if not os.path.exists(path):
+            continue
+        out, width = [], 1
+        for line in read_text(path).decode("latin-1").split("\n"):
+            key = line.split(":", 1)[0].strip().lower()
+            value = line.split(":", 1)[1].strip() if ":" in line else ""
+            if key == "objectfilename":
+                line = "ObjectFileName:\tdata.0"
+            if key == "resolution":
+                line = "Resolution:\t%d %d %d" % SIZES
+            if key == "format":
+                width = TYPE_BYTES.get(value.lower(), 1)
+            out.append(line)
+        write("dat", os.path.basename(rel), "\n".join(out).encode() + MARK + payload(n, width, 5))
+
+
+def vti_seeds():
+    n = SIZES[0] * SIZES[1] * SIZES[2]
+    path = os.path.join(DATA, "engine", "engine.vti")
+    if not os.path.exists(path):
+        return
+    raw = read_text(path)
+    head = raw[:raw.find(b"_", raw.find(b"<AppendedData")) + 1].decode("latin-1")
+    extent = "0 %d 0 %d 0 %d" % (SIZES[0] - 1, SIZES[1] - 1, SIZES[2] - 1)
+    head = re.sub(r'Extent="[^"]*"', 'Extent="%s"' % extent, head)
+    body = payload(n, 1, 9)
+    # zlib blocks with UInt64 headers, as the original: 2 blocks.
+    block = 16
+    blocks = [body[i:i + block] for i in range(0, len(body), block)]
+    packed = [zlib.compress(b) for b in blocks]
+    table = struct.pack("<QQQ", len(blocks), block, len(blocks[-1]) % block)
+    table += b"".join(struct.pack("<Q", len(p)) for p in packed)
+    tail = "\n  </AppendedData>\n</VTKFile>\n".encode()
+    write("vti", "engine_zlib.vti", head.encode() + table + b"".join(packed) + tail)
+    # Uncompressed appended raw, UInt32 header.
+    plain = head.replace(' compressor="vtkZLibDataCompressor"', "").replace("UInt64", "UInt32")
+    write("vti", "appended_raw.vti", plain.encode() + struct.pack("<I", n) + body + tail)
+    # Inline base64, Int16, big endian.
+    body16 = payload(n, 2, 4)
+    b64 = base64.b64encode(struct.pack(">I", len(body16)) + body16).decode()
+    inline = ('<?xml version="1.0"?>\n<VTKFile type="ImageData" version="1.0" '
+              'byte_order="BigEndian" header_type="UInt32">\n'
+              '  <ImageData WholeExtent="%s" Origin="1 2 3" Spacing="0.5 1 2">\n'
+              '    <Piece Extent="%s">\n      <PointData Scalars="s">\n'
+              '        <DataArray type="Int16" Name="s" format="binary">%s</DataArray>\n'
+              '      </PointData>\n    </Piece>\n  </ImageData>\n</VTKFile>\n' % (extent, extent, b64))
+    write("vti", "inline_base64.vti", inline.encode())
+
+
+def raw_seeds():
+    n = SIZES[0] * SIZES[1] * SIZES[2]
+    dims = "%d,%d,%d" % SIZES
+    for name, opts, width in [("uint8", [dims, "uint8", "", ""], 1),
+                              ("uint16_big", [dims, "uint16", "1,1,2", "big"], 2),
+                              ("float32", [dims, "float32", "0.5", "little"], 4),
+                              ("int16", [dims.replace(",", "x"), "short", "1 2 3", "le"], 2)]:
+        write("raw", name, "\n".join(opts).encode() + MARK + payload(n, width, 1))
+
+
+def tf_seeds():
+    for rel in ["assets/default.tf.json", "assets/presets/bonsai.tf.json"]:
+        path = os.path.join(ROOT, rel)
+        if os.path.exists(path):
+            write("tf_json", os.path.basename(rel), read_text(path))
+    write("tf_json", "minimal.json", b'{"opacity": [[0, 0], [255, 1]]}')
+    write("tf_json", "step.json",
+          b'{"opacity": [[0, 0], [10, 0], [10, 0.5]], "color": [[0, 1, 0, 0], [10, 0, 0, 1]],'
+          b' "opacity_unit_distance": 0.25, "name": "step"}')
+
+
+def main():
+    if not os.path.isdir(DATA):
+        sys.exit("make_fuzz_seeds.py: %s: no such folder (the shared data)" % DATA)
+    nrrd_seeds()
+    metaimage_seeds()
+    dat_seeds()
+    vti_seeds()
+    raw_seeds()
+    tf_seeds()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Builds the whole project with AddressSanitizer + UndefinedBehaviorSanitizer in a second build
+# folder (default build-asan) and runs every test there. Any sanitizer report fails the run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="${1:-build-asan}"
+here="$(pwd)"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DEWA_SANITIZE=ON >/dev/null
+nice cmake --build "$build" -j"$(nproc)"
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$here/scripts/lsan.supp:print_suppressions=0"
+run=(ctest --test-dir "$build" --output-on-failure -j"$(nproc)")
+if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null; then
+  xvfb-run -a -s "-screen 0 1280x800x24" "${run[@]}"
+else
+  "${run[@]}"
+fi

@@ -1,0 +1,62 @@
+// The command-line options of compositing, shading, surface splats and the X-ray map (CLI11).
+#include "app/render_options.h"
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+
+namespace ewa {
+
+void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
+  app.add_option("--compositing", p.compositing,
+                 "Slab order: front-to-back (default) or back-to-front")
+      ->check(CLI::IsMember({"front-to-back", "back-to-front"}));
+  app.add_option("--termination", s.terminationOpacity,
+                 "Front to back: stop a pixel at this opacity (default 0.99; 1 never stops)")
+      ->check(CLI::Range(0.5, 1.0));
+  app.add_option("--xray-map", p.xrayMap, "X-ray gray: exp (exp(-sum), default) or sum")
+      ->check(CLI::IsMember({"exp", "sum"}));
+  app.add_option("--xray-scale", s.xrayScale, "X-ray: optical depth multiplied by this (default 1)")
+      ->check(CLI::Range(1e-6, 1e6));
+  app.add_flag("--shading", s.lighting.enabled, "Phong shading with a head light");
+  app.add_option("--ambient", s.lighting.ambient, "Ambient term (default 0.3)")
+      ->check(CLI::Range(0.0, 4.0));
+  app.add_option("--diffuse", s.lighting.diffuse, "Diffuse term (default 0.7)")
+      ->check(CLI::Range(0.0, 4.0));
+  app.add_option("--specular", s.lighting.specular, "Specular term (default 0.25)")
+      ->check(CLI::Range(0.0, 4.0));
+  app.add_option("--shininess", s.lighting.shininess, "Specular exponent (default 24)")
+      ->check(CLI::Range(1.0, 1000.0));
+  app.add_option("--gradient", p.gradient, "Gradients: central (default) or smooth (Sobel-like)")
+      ->check(CLI::IsMember({"central", "smooth"}));
+  auto* value = app.add_option("--surface-threshold", p.surfaceValue,
+                               "Surface splats on the iso-surface of this data value");
+  auto* alpha = app.add_option("--surface-opacity-threshold", p.surfaceOpacity,
+                               "Surface splats where the transfer function's opacity crosses this")
+                    ->check(CLI::Range(0.0, 1.0));
+  value->excludes(alpha);
+  app.add_option("--surface-min-gradient", s.classification.minGradient,
+                 "With --surface-opacity-threshold: least gradient, as a fraction of the value "
+                 "range per voxel (default 0)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->needs(alpha);
+  app.add_option("--surface-opacity", s.surfaceOpacity,
+                 "Opacity of the surface-splat layer seen along its normal (default 0.95)")
+      ->check(CLI::Range(0.0, 0.999999));
+}
+
+std::string finishShadingOptions(const RenderOptionText& p, RenderSettings* s) {
+  parseCompositeOrder(p.compositing, &s->order);
+  parseXRayMap(p.xrayMap, &s->xrayMap);
+  parseGradientMode(p.gradient, &s->classification.gradient);
+  if (p.surfaceValue) {
+    if (!std::isfinite(*p.surfaceValue)) return "--surface-threshold: not a finite number";
+    s->classification.surface = SurfaceCriterion::Value;
+    s->classification.threshold = *p.surfaceValue;
+  } else if (p.surfaceOpacity) {
+    s->classification.surface = SurfaceCriterion::Opacity;
+    s->classification.threshold = *p.surfaceOpacity;
+  }
+  return "";
+}
+
+}  // namespace ewa

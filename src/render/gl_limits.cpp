@@ -1,0 +1,19 @@
+// Queries of the current GL context's size limits.
+#include "render/gl_limits.h"
+
+#include <algorithm>
+
+#include "gl/gl_api.h"
+
+namespace ewa {
+
+int maxRenderTargetSize() {
+  GLint texture = 0, viewport[2] = {0, 0}, fbWidth = 0, fbHeight = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &fbWidth);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &fbHeight);
+  return std::min({texture, viewport[0], viewport[1], fbWidth, fbHeight});
+}
+
+}  // namespace ewa

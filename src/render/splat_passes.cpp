@@ -1,0 +1,226 @@
+// SplatRenderer::render: the slab partition, the slab loop (front to back with early
+// termination, or back to front), the X-ray and MIP passes and the final picture.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gl/gl_error.h"
+#include "render/splat_renderer.h"
+
+namespace ewa {
+
+namespace {
+
+// Front to back, the opaque pixels are marked and counted after every this many slabs: often
+// enough to stop soon after the picture is opaque, rarely enough to cost little.
+constexpr size_t kCheckEvery = 4;
+
+// World to clip space for the pixel mapping of `proj`: x_pixel = principal + f u.xy / depth
+// (or ppu u.xy), and clip z inside [-w, w] for depths beyond `nearDepth`.
+glm::mat4 clipMatrix(const Projection& proj, const glm::dmat4& view, double nearDepth) {
+  glm::dmat4 p(0.0);
+  const double w = proj.width, h = proj.height;
+  const double ox = 2.0 * proj.principal.x / w - 1.0, oy = 2.0 * proj.principal.y / h - 1.0;
+  if (proj.orthographic) {
+    p[0][0] = 2.0 * proj.pixelsPerUnit / w;
+    p[1][1] = 2.0 * proj.pixelsPerUnit / h;
+    p[3][0] = ox;
+    p[3][1] = oy;
+    p[3][3] = 1.0;
+  } else {
+    p[0][0] = 2.0 * proj.focalPixels / w;
+    p[1][1] = 2.0 * proj.focalPixels / h;
+    p[2][0] = -ox;
+    p[2][1] = -oy;
+    p[2][2] = -1.0;
+    p[3][2] = -2.0 * nearDepth;
+    p[2][3] = -1.0;
+  }
+  return glm::mat4(p * view);
+}
+
+}  // namespace
+
+bool SplatRenderer::allOpaque(const Camera& camera, const Projection& proj,
+                              const RenderSettings& settings) {
+  const glm::dvec3& sp = volume_->spacing();
+  const double maxSpacing = std::max({sp.x, sp.y, sp.z});
+  const double minSpacing = std::min({sp.x, sp.y, sp.z});
+  const glm::dvec3 lo = volume_->boundsMin(), hi = volume_->boundsMax();
+  const glm::dmat4 view = camera.viewMatrix();
+  double farDepth = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    const glm::dvec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+    const double depth = -(view * glm::dvec4(p, 1.0)).z;
+    // A box reaching the eye plane would be clipped: not a safe bound for the test.
+    if (!proj.orthographic && depth < 2.0 * maxSpacing * std::sqrt(settings.cutoff)) return false;
+    farDepth = std::max(farDepth, depth);
+  }
+  // Grow the box by what a kernel reaches beyond its center: its cutoff radius (stretched by
+  // Swan's filter) plus the low-pass filter's, in world units at the farthest corner.
+  const double pixelWorld =
+      proj.orthographic ? 1.0 / proj.pixelsPerUnit : farDepth / proj.focalPixels;
+  const double stretch =
+      settings.filter == FilterMode::Swan ? std::max(1.0, pixelWorld / minSpacing) : 1.0;
+  const double grow = std::sqrt(settings.cutoff) * (maxSpacing * stretch + pixelWorld) + pixelWorld;
+  boxProgram_.setMat4("uClip", clipMatrix(proj, view, 0.5 * maxSpacing));
+  boxProgram_.setVec3("uBoxMin", glm::vec3(lo - grow));
+  boxProgram_.setVec3("uBoxMax", glm::vec3(hi + grow));
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glBeginQuery(GL_SAMPLES_PASSED, query_);
+  glUseProgram(boxProgram_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 36);
+  glEndQuery(GL_SAMPLES_PASSED);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  GLuint samples = 1;
+  glGetQueryObjectuiv(query_, GL_QUERY_RESULT, &samples);
+  return samples == 0;
+}
+
+void SplatRenderer::compositeSlabs(const Camera& camera, const Projection& proj,
+                                   const RenderSettings& settings) {
+  const bool frontToBack = settings.order == CompositeOrder::FrontToBack;
+  const bool terminate = frontToBack && settings.terminationOpacity < 1.0;
+  const GLfloat zero[4] = {0, 0, 0, 0};
+  targets_.slab.bindUnit(1);
+  slabProgram_.setInt("uSlab", 1);
+  targets_.accum.bindUnit(2);
+  markProgram_.setInt("uAccum", 2);
+  markProgram_.setFloat("uThreshold", float(settings.terminationOpacity));
+  if (terminate) {
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, 0, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  }
+  const auto& slabs = partition_.slabs();
+  const size_t n = slabs.size();
+  for (size_t s = 0; s < n; ++s) {
+    const Slab& slab = slabs[frontToBack ? s : n - 1 - s];
+    // Inside a slab: order-independent sums of each kernel's share of optical depth and light.
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+    targets_.slabFbo.clearColor(0, zero);
+    glBlendFunc(GL_ONE, GL_ONE);
+    setSlabUniforms(slab, true, true);
+    drawSplats(slab, stats_.quadPass);
+    // Between slabs: 1 - exp(-depth) composited under (front to back) or over (back to front).
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_.accumFbo.id());
+    if (frontToBack)
+      glBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+    else
+      glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glUseProgram(slabProgram_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    ++stats_.slabsDrawn;
+    if (terminate && (s + 1) % kCheckEvery == 0 && s + 1 < n) {
+      // Mark pixels that reached the threshold; later splat fragments there fail the stencil.
+      glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      glStencilFunc(GL_ALWAYS, 1, 0xff);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+      glUseProgram(markProgram_.id());
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+      glStencilFunc(GL_EQUAL, 0, 0xff);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+      if (allOpaque(camera, proj, settings)) break;
+    }
+  }
+  glDisable(GL_STENCIL_TEST);
+}
+
+void SplatRenderer::render(const Camera& camera, const RenderSettings& settings, int width,
+                           int height) {
+  const auto start = std::chrono::steady_clock::now();
+  targets_.resize(width, height);
+  stats_ = RenderStats{};
+  const GLfloat zero[4] = {0, 0, 0, 0};
+  targets_.accumFbo.clearColor(0, zero);
+  targets_.slabFbo.clearColor(0, zero);
+  glClearNamedFramebufferfi(targets_.slabFbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  if (volume_ && (splatsDirty_ || settings.classification != classification_))
+    rebuildSplats(settings.classification);
+  const Projection proj = camera.projection(width, height);
+  const SplatSet& splats = classified_.splats;
+  if (volume_ && splats.size() > 0 && camera.valid()) {
+    const glm::dvec3& sp = volume_->spacing();
+    const FootprintParams params = footprintParams(settings, sp);
+    const bool composite = settings.mode == RenderMode::Composite;
+    // X-ray and MIP take every splat at once: a single slab of unbounded thickness.
+    const double thickness =
+        composite ? std::max(0.25, settings.slabThickness) * params.minSpacing : 1e30;
+    DepthExtent extent;
+    extent.cutoff = settings.cutoff;
+    extent.rotation = camera.rotation();
+    extent.spacing = sp;
+    extent.swan = settings.filter == FilterMode::Swan;
+    extent.orthographic = proj.orthographic;
+    extent.swanDepth = proj.focalPixels * params.minSpacing;
+    extent.swanStretch = std::max(1.0, 1.0 / (proj.pixelsPerUnit * params.minSpacing));
+    partition_.build(splats, classified_.attributes, volume_->origin(), camera.viewMatrix(),
+                     thickness, params.nearDepth, extent);
+    const auto& order = partition_.order();
+    stats_.splatsTotal = splats.size();
+    stats_.splatsDrawn = partition_.splatCount();
+    stats_.slabs = partition_.slabs().size();
+    stats_.surfaceSplats = classified_.surfaceCount;
+    if (!order.empty()) {
+      orderBuffer_.setData(GLsizeiptr(order.size() * sizeof(uint32_t)), order.data(),
+                           GL_STREAM_DRAW);
+      const double nearest = partition_.nearestCenter();
+      stats_.quadPass = 2.0 * footprintRadiusBound(proj, settings, nearest) + 0.5 > pointSizeLimit_;
+      setCommonUniforms(pointProgram_, camera, proj, settings);
+      setCommonUniforms(quadProgram_, camera, proj, settings);
+      splatBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+      orderBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+      attributeBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+      transferTexture_.bindUnit(0);
+      glBindVertexArray(emptyVao_.id());
+      glViewport(0, 0, width, height);
+      glEnable(GL_PROGRAM_POINT_SIZE);
+      glDisable(GL_DEPTH_TEST);
+      glEnable(GL_BLEND);
+      if (composite) {
+        compositeSlabs(camera, proj, settings);
+      } else {
+        glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+        glBlendFunc(GL_ONE, GL_ONE);
+        if (settings.mode == RenderMode::Mip) glBlendEquation(GL_MAX);
+        Slab all = partition_.slabs().front();
+        const bool window = depthWindow_ && settings.mode == RenderMode::XRay;
+        if (window) {
+          all.nearDepth = depthWindow_->first;
+          all.farDepth = depthWindow_->second;
+        }
+        setSlabUniforms(all, window, false);
+        drawSplats(all, stats_.quadPass);
+        glBlendEquation(GL_FUNC_ADD);
+        stats_.slabsDrawn = 1;
+      }
+      glDisable(GL_BLEND);
+    }
+  }
+  glBindVertexArray(emptyVao_.id());
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.outputFbo.id());
+  glViewport(0, 0, width, height);
+  glDisable(GL_BLEND);
+  targets_.slab.bindUnit(1);
+  targets_.accum.bindUnit(2);
+  finalProgram_.setInt("uSlab", 1);
+  finalProgram_.setInt("uImage", 2);
+  finalProgram_.setInt("uMode", int(settings.mode));
+  finalProgram_.setInt("uXRayMap", int(settings.xrayMap));
+  finalProgram_.setFloat("uXRayScale", float(settings.xrayScale));
+  finalProgram_.setVec3("uBackground", glm::vec3(settings.background));
+  glUseProgram(finalProgram_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glUseProgram(0);
+  glFinish();
+  gl::checkGlError("SplatRenderer::render");
+  stats_.cpuMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace ewa

@@ -1,0 +1,46 @@
+// Detached headers that name hostile data files: devices, FIFOs, folders, /proc files and
+// the header itself. Reading ordinary files is allowed (NRRD allows any path); these must fail
+// fast with one line, never block, and never write anything.
+#include <sys/stat.h>
+
+#include "loader_test_files.h"
+
+namespace ewa {
+namespace {
+
+using testing::expectVolumeLoadError;
+using testing::TempDir;
+
+std::string nhdr(const std::string& dataFile) {
+  return "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 4 4 4\nencoding: raw\ndata file: " +
+         dataFile + "\n";
+}
+
+TEST(LoaderHostilePaths, DevicesFifosFoldersAndProcFilesAreRefused) {
+  TempDir dir;
+  expectVolumeLoadError(dir.write("zero.nhdr", nhdr("/dev/zero")), "not a regular file");
+  expectVolumeLoadError(dir.write("null.nhdr", nhdr("/dev/null")), "not a regular file");
+  ASSERT_EQ(mkfifo(dir.path("pipe").c_str(), 0600), 0);
+  expectVolumeLoadError(dir.write("fifo.nhdr", nhdr("pipe")), "not a regular file");
+  expectVolumeLoadError(dir.write("dir.nhdr", nhdr("/")), "directory");
+  // /proc files say they are empty: the data is not there.
+  expectVolumeLoadError(dir.write("proc.nhdr", nhdr("/proc/self/status")), "bytes");
+  // The same checks for MetaImage and .dat data files.
+  expectVolumeLoadError(dir.write("zero.mhd",
+                                  "NDims = 3\nDimSize = 4 4 4\nElementType = "
+                                  "MET_UCHAR\nElementDataFile = /dev/zero\n"),
+                        "not a regular file");
+  expectVolumeLoadError(
+      dir.write("zero.dat", "ObjectFileName: /dev/zero\nResolution: 4 4 4\nFormat: UCHAR\n"),
+      "not a regular file");
+  // A header naming itself as its data is read (its first 64 bytes are the voxels), not changed.
+  const std::string self = dir.write("self.nhdr", nhdr("self.nhdr"));
+  EXPECT_EQ(loadVolume(self).voxelCount(), 64);
+  std::ifstream in(self);
+  std::string first;
+  std::getline(in, first);
+  EXPECT_EQ(first, "NRRD0004");
+}
+
+}  // namespace
+}  // namespace ewa

@@ -1,0 +1,148 @@
+// Unit tests of the slab split (erf, conditional depth Gaussian), surface-splat kernels,
+// per-splat attributes, gradients and surface classification.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
+
+#include "core/camera.h"
+#include "core/ewa_footprint.h"
+#include "core/shading.h"
+#include "core/splat_attributes.h"
+
+namespace ewa {
+namespace {
+
+TEST(SlabMath, ErfApproximationIsWithinItsBound) {
+  for (double x = -5.0; x <= 5.0; x += 0.01) EXPECT_NEAR(erfApprox(x), std::erf(x), 2e-7) << x;
+}
+
+TEST(SlabMath, SlabSharesOfAKernelSumToOne) {
+  const double mu = 3.3, sigma = 0.7;
+  double sum = slabFraction(mu, sigma, -INFINITY, 1.0) + slabFraction(mu, sigma, 5.0, INFINITY);
+  for (double z = 1.0; z < 5.0; z += 0.25) sum += slabFraction(mu, sigma, z, z + 0.25);
+  EXPECT_NEAR(sum, 1.0, 1e-12);
+  // One sigma either side holds 68.27%.
+  EXPECT_NEAR(slabFraction(mu, sigma, mu - sigma, mu + sigma), 0.682689, 1e-6);
+}
+
+// The footprint's depth Gaussian is the conditional of the 3D kernel along the ray: checked
+// against numerical moments of the kernel along orthographic rays (plain filter: no low-pass).
+TEST(SlabMath, DepthGaussianIsTheKernelAlongTheRay) {
+  Camera cam;
+  cam.position = {3.0, -2.0, 7.0};
+  cam.focalPoint = {0.0, 0.0, 0.0};
+  cam.orthographic = true;
+  const Projection proj = cam.projection(64, 64);
+  FootprintParams params;
+  params.filter = FilterMode::Plain;
+  const glm::dvec3 spacing(1.0, 0.5, 2.0);
+  const glm::dmat3 cov = cameraCovariance(cam.rotation(), spacing);
+  const glm::dvec3 u(0.3, -0.2, -8.0);
+  const Footprint fp = computeFootprint(u, cov, proj, params);
+  ASSERT_TRUE(fp.visible);
+  const glm::dmat3 inv = glm::inverse(cov);
+  for (const glm::dvec2 dx : {glm::dvec2(0, 0), glm::dvec2(3, -2), glm::dvec2(-4, 1)}) {
+    // Camera-space ray through pixel center + dx: (x, y) fixed, depth varying.
+    const glm::dvec2 xy = glm::dvec2(u.x, u.y) + dx / proj.pixelsPerUnit;
+    double m0 = 0, m1 = 0, m2 = 0;
+    for (int i = 0; i < 20000; ++i) {
+      const double depth = 8.0 - 10.0 + 20.0 * (i + 0.5) / 20000;
+      const glm::dvec3 p = glm::dvec3(xy, -depth) - u;
+      const double w = std::exp(-0.5 * glm::dot(p, inv * p));
+      m0 += w;
+      m1 += w * depth;
+      m2 += w * depth * depth;
+    }
+    const double mean = m1 / m0, sd = std::sqrt(m2 / m0 - mean * mean);
+    EXPECT_NEAR(fp.depth + glm::dot(fp.depthSlope, dx), mean, 1e-6);
+    EXPECT_NEAR(fp.depthSigma, sd, 1e-5);
+  }
+}
+
+TEST(SlabMath, SurfaceCovarianceIsFlatAlongTheNormal) {
+  const glm::dmat3 rot =
+      glm::dmat3(glm::lookAt(glm::dvec3(1, 2, 3), glm::dvec3(0), glm::dvec3(0, 0, 1)));
+  const glm::dvec3 n = glm::normalize(glm::dvec3(1, -2, 0.5));
+  const glm::dmat3 cov = surfaceCovariance(rot, glm::dvec3(1.0), n);
+  EXPECT_NEAR(glm::length(cov * (rot * n)), 0.0, 1e-12);  // no spread along the normal
+  const glm::dvec3 t = glm::normalize(glm::cross(n, glm::dvec3(0, 0, 1)));
+  EXPECT_NEAR(glm::dot(rot * t, cov * (rot * t)), 1.0, 1e-12);  // unit variance across it
+  // A layer seen along its normal: mass times areal density is the optical depth.
+  EXPECT_NEAR(surfaceSplatMass(glm::dvec3(2.0), glm::dvec3(0, 0, 1), 1.5), 1.5 * 4.0, 1e-12);
+}
+
+TEST(SplatAttributes, PackingRoundTrips) {
+  const glm::dvec3 n = glm::normalize(glm::dvec3(0.3, -0.8, 0.2));
+  const UnpackedAttributes s = unpackAttributes(packAttributes(n, true, -0.37));
+  EXPECT_TRUE(s.surface);
+  EXPECT_NEAR(s.offset, -0.37, 2e-3);
+  EXPECT_NEAR(glm::length(s.normal - n), 0.0, 2e-3);
+  const UnpackedAttributes v = unpackAttributes(packAttributes(n, false, 0.5));
+  EXPECT_FALSE(v.surface);
+  EXPECT_EQ(v.offset, 0.0);
+}
+
+// A float volume from f(world position).
+Volume fieldVolume(int n, glm::dvec3 spacing, double (*f)(glm::dvec3)) {
+  std::vector<uint8_t> bytes(size_t(n) * n * n * 4);
+  float* v = reinterpret_cast<float*>(bytes.data());
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        v[i + n * (j + size_t(n) * k)] = float(f(glm::dvec3(i, j, k) * spacing));
+  return Volume({n, n, n}, spacing, glm::dvec3(0.0), ScalarType::Float32, std::move(bytes));
+}
+
+TEST(SplatAttributes, GradientsOfALinearFieldAreExact) {
+  const Volume vol = fieldVolume(8, glm::dvec3(1.0, 0.5, 2.0),
+                                 [](glm::dvec3 p) { return 2.0 * p.x - 3.0 * p.y + 0.5 * p.z; });
+  for (GradientMode mode : {GradientMode::Central, GradientMode::Smooth}) {
+    const glm::dvec3 g = volumeGradient(vol, 3, 4, 5, mode);
+    EXPECT_NEAR(g.x, 2.0, 1e-5);
+    EXPECT_NEAR(g.y, -3.0, 1e-5);
+    EXPECT_NEAR(g.z, 0.5, 1e-5);
+  }
+}
+
+double ballField(glm::dvec3 p) {
+  return 0.5 - (glm::length(p - glm::dvec3(7.5)) - 5.0) / 3.0;
+}
+
+TEST(SplatAttributes, SurfaceSplatsSitOnTheIsoSurfaceWithOutwardNormals) {
+  const Volume vol = fieldVolume(16, glm::dvec3(1.0), ballField);
+  TransferFunction clear;  // fully transparent: only surface splats are kept
+  clear.opacity = {{-10.0, 0.0}, {10.0, 0.0}};
+  Classification c;
+  c.surface = SurfaceCriterion::Value;
+  c.threshold = 0.5;  // the sphere of radius 5 about (7.5, 7.5, 7.5)
+  const ClassifiedSplats cs = classifySplats(vol, clear, c);
+  ASSERT_GT(cs.surfaceCount, 100u);
+  EXPECT_EQ(cs.surfaceCount, cs.splats.size());
+  for (size_t m = 0; m < cs.splats.size(); ++m) {
+    const PackedSplat& s = cs.splats.splats()[m];
+    const UnpackedAttributes a = unpackAttributes(cs.attributes[m]);
+    ASSERT_TRUE(a.surface);
+    const glm::dvec3 p(SplatSet::i(s), SplatSet::j(s), SplatSet::k(s));
+    const glm::dvec3 radial = glm::normalize(p - glm::dvec3(7.5));
+    EXPECT_GT(glm::dot(a.normal, radial), 0.99);  // outward, along the analytic normal
+    EXPECT_NEAR(glm::length(p + a.offset * a.normal - glm::dvec3(7.5)), 5.0, 0.02);
+  }
+}
+
+TEST(Shading, HeadLightPhong) {
+  Lighting light;
+  light.enabled = true;
+  const glm::dvec3 rgb(0.5, 1.0, 0.25), n = glm::normalize(glm::dvec3(0, 0.6, -0.8));
+  const glm::dvec3 c = headlightShade(rgb, n, glm::dvec3(0, 0, 1), light);
+  const double ndl = 0.8;  // two-sided
+  EXPECT_NEAR(c.x, 0.5 * (0.3 + 0.7 * ndl) + 0.25 * std::pow(ndl, 24.0), 1e-12);
+  EXPECT_EQ(headlightShade(rgb, glm::dvec3(0.0), glm::dvec3(0, 0, 1), light), rgb);  // no normal
+  light.enabled = false;
+  EXPECT_EQ(headlightShade(rgb, n, glm::dvec3(0, 0, 1), light), rgb);
+}
+
+}  // namespace
+}  // namespace ewa
