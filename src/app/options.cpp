@@ -52,7 +52,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--cutoff", o->render.cutoff, "Footprint cutoff r = dx^T Q dx (default 4)")
       ->check(CLI::Range(0.25, 64.0));
   app.add_option("--slab-thickness", o->render.slabThickness,
-                 "Slab thickness in voxels of the smallest spacing (default 1)")
+                 "Slab thickness in voxels of the smallest spacing, 0.25 and up (default 2)")
       ->check(CLI::Range(0.25, 1000.0));
   app.add_option("--tf", o->tfFile, "Transfer function JSON file");
   app.add_option("--background", bg, "Background colour R,G,B in [0,1] (default 0,0,0)")

@@ -101,6 +101,12 @@ void SplatRenderer::setSplats(ClassifiedSplats splats, const Classification& cla
 }
 
 void SplatRenderer::uploadSplats() {
+  // Order entries keep two flag bits above the splat index.
+  if (classified_.splats.size() > SlabPartition::kIndexMask) {
+    classified_ = ClassifiedSplats{};
+    splatsDirty_ = true;
+    throw gl::GlError("volume: more than 2^30 visible voxels: not supported by splatting");
+  }
   const size_t n = std::max<size_t>(1, classified_.splats.size());
   const auto& splats = classified_.splats.splats();
   splatBuffer_.setData(GLsizeiptr(n * sizeof(PackedSplat)),

@@ -30,7 +30,8 @@ CliRun ewaview(const std::string& args) {
   const std::string stem =
       dir + "/cli_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
   const std::string out = stem + ".out", err = stem + ".err";
-  const std::string cmd = std::string(EWA_BINARY) + " " + args + " >" + out + " 2>" + err + " </dev/null";
+  const std::string cmd =
+      std::string(EWA_BINARY) + " " + args + " >" + out + " 2>" + err + " </dev/null";
   const int status = std::system(cmd.c_str());
   CliRun r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -51,10 +52,10 @@ TEST(Cli, VersionAndHelpExitZero) {
   EXPECT_NE(r.out.find("ewaview 0."), std::string::npos) << r.out;
   r = ewaview("--help");
   EXPECT_EQ(r.code, 0);
-  for (const char* opt : {"--output", "--resolution", "--camera-position", "--camera-focal-point",
-                          "--camera-view-up", "--camera-view-angle", "--camera-orthographic",
-                          "--filter", "--cutoff", "--slab-thickness", "--tf", "--background",
-                          "--backend", "--info", "--synthetic", "--raw-dims"})
+  for (const char* opt :
+       {"--output", "--resolution", "--camera-position", "--camera-focal-point", "--camera-view-up",
+        "--camera-view-angle", "--camera-orthographic", "--filter", "--cutoff", "--slab-thickness",
+        "--tf", "--background", "--backend", "--info", "--synthetic", "--raw-dims"})
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt << " missing from --help";
 }
 
@@ -88,7 +89,9 @@ TEST(Cli, BadInputIsOneLineNamingTheFileAndExitOne) {
 TEST(Cli, InfoPrintsOneJsonObject) {
   CliRun r = ewaview("--synthetic checkerboard --info");
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(r.out, "{\"dims\":[400,400,1],\"spacing\":[1.0,1.0,1.0],\"type\":\"uint8\",\"range\":[1.0,2.0]}\n");
+  EXPECT_EQ(
+      r.out,
+      "{\"dims\":[400,400,1],\"spacing\":[1.0,1.0,1.0],\"type\":\"uint8\",\"range\":[1.0,2.0]}\n");
   const std::string tooth = std::string(EWA_SHARED_DATA) + "/tooth/tooth.nrrd";
   if (!std::filesystem::exists(tooth)) GTEST_SKIP() << "shared data absent: " << tooth;
   r = ewaview(tooth + " --info");
@@ -111,11 +114,37 @@ TEST(Cli, HeadlessOutputOnBothBackendsAndTheDefaultAsset) {
   const Image8 ib = readPng(b);
   ASSERT_EQ(ia.pixels.size(), ib.pixels.size());
   int worst = 0;
-  for (size_t p = 0; p < ia.pixels.size(); ++p) worst = std::max(worst, std::abs(ia.pixels[p] - ib.pixels[p]));
+  for (size_t p = 0; p < ia.pixels.size(); ++p)
+    worst = std::max(worst, std::abs(ia.pixels[p] - ib.pixels[p]));
   EXPECT_LE(worst, 1) << "OSMesa and EGL pictures differ";
   // No FILE: the default volume in assets/.
   r = ewaview("--resolution 32,32 --output " + dir + "/cli_default.png");
   EXPECT_EQ(r.code, 0) << r.err;
+}
+
+}  // namespace
+}  // namespace ewa::test
+
+namespace ewa::test {
+namespace {
+
+TEST(Cli, RenderModeAndShadingOptions) {
+  const std::string png = testOutputDir() + "/cli_modes.png";
+  for (const char* args : {"--render-mode mip", "--render-mode xray --xray-map sum",
+                           "--shading --surface-threshold 200 --compositing back-to-front"}) {
+    std::filesystem::remove(png);
+    const CliRun r = ewaview(std::string("--synthetic sphere:16 --resolution 24,24 ") + args +
+                             " --output " + png);
+    EXPECT_EQ(r.code, 0) << args << ": " << r.err;
+    EXPECT_TRUE(std::filesystem::exists(png)) << args;
+  }
+  for (const char* bad : {"--render-mode maximum", "--surface-threshold nan", "--termination 2",
+                          "--surface-threshold 1 --surface-opacity-threshold 0.5",
+                          "--surface-min-gradient 0.1", "--xray-map log"}) {
+    const CliRun r = ewaview(std::string("--synthetic sphere:16 -o x.png ") + bad);
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_EQ(lineCount(r.err), 1) << bad << ": " << r.err;
+  }
 }
 
 }  // namespace

@@ -132,6 +132,28 @@ TEST(SplatAttributes, SurfaceSplatsSitOnTheIsoSurfaceWithOutwardNormals) {
   }
 }
 
+TEST(SplatAttributes, OpacityCriterionFindsTheSameShellAndHonoursTheGradientFloor) {
+  const Volume vol = fieldVolume(16, glm::dvec3(1.0), ballField);
+  TransferFunction tf;  // opacity 0.8 above value 0.5, so it crosses where the value does
+  tf.opacity = {{0.49, 0.0}, {0.5, 0.8}, {10.0, 0.8}};
+  Classification c;
+  c.surface = SurfaceCriterion::Opacity;
+  c.threshold = 0.5;
+  const ClassifiedSplats cs = classifySplats(vol, tf, c);
+  ASSERT_GT(cs.surfaceCount, 100u);
+  for (size_t m = 0; m < cs.splats.size(); ++m) {
+    if (!unpackAttributes(cs.attributes[m]).surface) continue;
+    const PackedSplat& s = cs.splats.splats()[m];
+    const double r =
+        glm::length(glm::dvec3(SplatSet::i(s), SplatSet::j(s), SplatSet::k(s)) - glm::dvec3(7.5));
+    EXPECT_GT(r, 3.9);  // the boundary layer just inside radius 5 (within one voxel diagonal)
+    EXPECT_LE(r, 5.0 + 1e-9);
+  }
+  // The field changes by 1/3 per voxel, under 0.9 of its range: no voxel qualifies.
+  c.minGradient = 0.9;
+  EXPECT_EQ(classifySplats(vol, tf, c).surfaceCount, 0u);
+}
+
 TEST(Shading, HeadLightPhong) {
   Lighting light;
   light.enabled = true;
