@@ -36,6 +36,9 @@ int main(int argc, char** argv) {
       std::cout << ewa::volumeInfoJson(scene.volume) << "\n";
       return 0;
     }
+    if (options.render.renderer == ewa::RendererKind::ShearWarp && !options.orthographic)
+      std::cerr << "ewaview: note: shear-warp renders parallel projection; the perspective camera "
+                   "is drawn as the orthographic view of the same height at the focal point\n";
     if (!options.output.empty()) {
       ewa::renderHeadless(scene, options);
       return 0;

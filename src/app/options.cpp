@@ -54,6 +54,19 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--slab-thickness", o->render.slabThickness,
                  "Slab thickness in voxels of the smallest spacing, 0.25 and up (default 2)")
       ->check(CLI::Range(0.25, 1000.0));
+  std::string rendererName = "splat", lookup = "nearest", correction = "on", buffers = "slice";
+  app.add_option("--renderer", rendererName, "splat (default, GPU EWA splatting) or shearwarp (CPU)")
+      ->check(CLI::IsMember({"splat", "shearwarp"}));
+  app.add_flag("--preintegrated", o->render.shearWarp.preintegrated,
+               "Shear-warp: pre-integrated slabs between slices");
+  app.add_option("--table-lookup", lookup, "Shear-warp pre-integration lookup: nearest (default) or bilinear")
+      ->check(CLI::IsMember({"nearest", "bilinear"}));
+  app.add_option("--opacity-correction", correction,
+                 "Shear-warp opacity and colour correction for the view's sample distance: on (default) or off")
+      ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--buffer-slices", buffers,
+                 "Shear-warp buffer slices: slice (two slice-sized, default) or image (one intermediate-image-sized)")
+      ->check(CLI::IsMember({"slice", "image"}));
   app.add_option("--tf", o->tfFile, "Transfer function JSON file");
   app.add_option("--background", bg, "Background colour R,G,B in [0,1] (default 0,0,0)")
       ->delimiter(',')->expected(3)->check(CLI::Range(0.0, 1.0));
@@ -91,6 +104,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   parseFilterMode(filter, &o->render.filter);
   parseRenderMode(mode, &o->render.mode);
   if (const std::string e = finishShadingOptions(renderText, &o->render); !e.empty()) return usage(e);
+  parseRendererKind(rendererName, &o->render.renderer);
+  parseTableLookup(lookup, &o->render.shearWarp.lookup);
+  parseBufferSlices(buffers, &o->render.shearWarp.buffers);
+  o->render.shearWarp.opacityCorrection = correction == "on";
   return {true, 0};
 }
 

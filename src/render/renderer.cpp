@@ -51,4 +51,15 @@ bool parseXRayMap(const std::string& text, XRayMap* map) {
   return true;
 }
 
+const char* rendererKindName(RendererKind kind) {
+  return kind == RendererKind::ShearWarp ? "shearwarp" : "splat";
+}
+
+bool parseRendererKind(const std::string& text, RendererKind* kind) {
+  if (text == "splat") *kind = RendererKind::Splat;
+  else if (text == "shearwarp") *kind = RendererKind::ShearWarp;
+  else return false;
+  return true;
+}
+
 }  // namespace ewa

@@ -11,6 +11,7 @@
 #include "core/ewa_footprint.h"
 #include "core/shading.h"
 #include "core/splat_attributes.h"
+#include "core/shear_warp_settings.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
 #include "io/png_io.h"
@@ -31,7 +32,12 @@ bool parseCompositeOrder(const std::string& text, CompositeOrder* order);
 const char* xrayMapName(XRayMap map);
 bool parseXRayMap(const std::string& text, XRayMap* map);
 
+enum class RendererKind { Splat = 0, ShearWarp = 1 };
+const char* rendererKindName(RendererKind kind);
+bool parseRendererKind(const std::string& text, RendererKind* kind);
+
 struct RenderSettings {
+  RendererKind renderer = RendererKind::Splat;  // which renderer the program creates
   FilterMode filter = FilterMode::Ewa;
   RenderMode mode = RenderMode::Composite;
   double cutoff = 4.0;         // footprint cutoff r = dx^T Q dx
@@ -48,7 +54,9 @@ struct RenderSettings {
   Lighting lighting;            // per splat, every frame: the camera moves the light
   Classification classification;  // gradients and surface voxels: rebuilds the splats
   double surfaceOpacity = 0.95;   // opacity of the surface-splat layer seen along its normal
+  ShearWarpSettings shearWarp;  // read by the shear-warp renderer only
 };
+
 
 // The footprint parameters every splat of a volume with this spacing gets under `settings`:
 // Swan's s is the smallest spacing, and voxels closer than it to the eye plane are culled.

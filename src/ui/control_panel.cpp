@@ -63,6 +63,16 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
   bool changed = false;
   ImGui::PushItemWidth(180.0f);
 
+  int kind = int(settings.renderer);
+  const char* kinds[] = {"EWA splatting (GPU)", "shear-warp (CPU)"};
+  if (ImGui::Combo("renderer", &kind, kinds, 2) && kind != int(settings.renderer)) {
+    settings.renderer = RendererKind(kind);
+    changed = true;
+  }
+  const bool shearWarp = settings.renderer == RendererKind::ShearWarp;
+  if (shearWarp) changed |= drawShearWarp(settings.shearWarp);
+  ImGui::BeginDisabled(shearWarp);  // the splat renderer's own settings
+
   int filter = 0;
   for (int i = 0; i < 3; ++i)
     if (kFilters[i] == settings.filter) filter = i;
@@ -88,6 +98,7 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
       changed = true;
     }
   }
+  ImGui::EndDisabled();
 
   changed |= drawRenderOptions(settings, valueRange_[0], valueRange_[1]);
 
@@ -98,6 +109,25 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
     changed = true;
   }
   ImGui::PopItemWidth();
+  return changed;
+}
+
+bool ControlPanel::drawShearWarp(ShearWarpSettings& s) {
+  bool changed = ImGui::Checkbox("pre-integrated", &s.preintegrated);
+  if (s.preintegrated) {
+    bool bilinear = s.lookup == TableLookup::Bilinear;
+    if (ImGui::Checkbox("bilinear table lookup", &bilinear)) {
+      s.lookup = bilinear ? TableLookup::Bilinear : TableLookup::Nearest;
+      changed = true;
+    }
+    bool image = s.buffers == BufferSlices::Image;
+    if (ImGui::Checkbox("image-sized buffer slice", &image)) {
+      s.buffers = image ? BufferSlices::Image : BufferSlices::Slice;
+      changed = true;
+    }
+  }
+  changed |= ImGui::Checkbox("opacity correction", &s.opacityCorrection);
+  ImGui::TextDisabled("parallel projection (perspective is drawn orthographic)");
   return changed;
 }
 

@@ -36,6 +36,7 @@ class ControlPanel {
 
  private:
   bool drawSettings(RenderSettings& settings);
+  bool drawShearWarp(ShearWarpSettings& settings);
   bool drawCamera(Camera& camera);
   void drawStats(const FrameStats& stats);
 

@@ -15,6 +15,7 @@
 #include "core/async_splat_builder.h"
 #include "gl/shader_library.h"
 #include "platform/glfw_window_context.h"
+#include "render/renderer_factory.h"
 #include "render/splat_renderer.h"
 #include "ui/camera_controller.h"
 #include "ui/control_panel.h"
@@ -49,18 +50,17 @@ class Viewer {
          const ViewerConfig& config)
       : window_(window),
         shaders_(config.shaderDir),
-        renderer_(shaders_),
+        volume_(volume),
+        tf_(tf),
         controller_(config.camera),
         settings_(config.settings),
         input_(window.window(), controller_),
         imgui_(window.window()),
         panel_(config.volumeName, volume),
-        volume_(volume),
         tfEditor_(volume, tf, "transfer_function.json") {
     const char* printLayout = std::getenv("EWAVIEW_PRINT_LAYOUT");
     tfEditor_.setPrintLayout(printLayout && *printLayout == '1');
-    renderer_.setVolume(volume);
-    renderer_.setTransferFunction(tf);
+    makeRenderer();
   }
 
   void run() {
@@ -89,13 +89,24 @@ class Viewer {
     try {
       std::optional<BuiltSplats> built = splatBuilder_.poll();
       if (!built) return false;
-      renderer_.setSplats(std::move(built->splats), built->classification);
-      ++tfRevision_;
+      // A set finished after a switch to another renderer is of no use.
+      if (auto* splat = dynamic_cast<SplatRenderer*>(renderer_.get())) {
+        splat->setSplats(std::move(built->splats), built->classification);
+        ++tfRevision_;
+      }
     } catch (const std::exception& e) {  // too many visible voxels: say so, keep the old set
       renderError_ = e.what();
       std::cerr << "ewaview: " << renderError_ << " (the window keeps running)\n";
     }
     return true;
+  }
+
+  // The renderer settings_.renderer names, given the volume and transfer function.
+  void makeRenderer() {
+    renderer_ = createRenderer(settings_.renderer, shaders_);
+    rendererKind_ = settings_.renderer;
+    renderer_->setVolume(volume_);
+    renderer_->setTransferFunction(tf_);
   }
 
   // One frame; returns true when the volume was rendered again.
@@ -111,13 +122,18 @@ class Viewer {
     if (edits.resetCamera) controller_.reset();
     if (edits.settings) ++settingsRevision_;
     if (tfEditor_.draw()) {
-      // The new table is on the GPU for this frame; the old splats draw with it until the
-      // worker's set for the new function is swapped in.
-      renderer_.updateTransferTexture(tfEditor_.transferFunction());
-      splatBuilder_.request(volume_, tfEditor_.transferFunction(), settings_.classification,
-                            renderer_.maxSplats());
+      tf_ = tfEditor_.transferFunction();
+      if (auto* splat = dynamic_cast<SplatRenderer*>(renderer_.get())) {
+        // The new table is on the GPU for this frame; the old splats draw with it until the
+        // worker's set for the new function is swapped in.
+        splat->updateTransferTexture(tf_);
+        splatBuilder_.request(volume_, tf_, settings_.classification, splat->maxSplats());
+      } else {
+        renderer_->setTransferFunction(tf_);
+      }
       ++tfRevision_;
     }
+    if (settings_.renderer != rendererKind_) makeRenderer();
 
     const bool stale = !hasImage_ || renderedCamera_ != controller_.revision() ||
                        renderedSettings_ != settingsRevision_ || renderedSize_ != fb ||
@@ -129,12 +145,12 @@ class Viewer {
       renderedSettings_ = settingsRevision_;
       renderedSize_ = fb;
       renderedTf_ = tfRevision_;
-      frameStats_.render = renderer_.stats();
+      frameStats_.render = renderer_->stats();
       frameStats_.imageWidth = fb.x;
       frameStats_.imageHeight = fb.y;
     }
 
-    presenter_.present(renderer_.outputTexture(), renderedSize_.x, renderedSize_.y, fb.x, fb.y);
+    presenter_.present(renderer_->outputTexture(), renderedSize_.x, renderedSize_.y, fb.x, fb.y);
     if (!renderError_.empty()) {
       ImGui::GetForegroundDrawList()->AddText(ImVec2(10.0f, float(fb.y) - 30.0f),
                                               IM_COL32(255, 90, 90, 255), renderError_.c_str());
@@ -150,7 +166,7 @@ class Viewer {
   // window open: the message is printed once and shown until a change renders again.
   void renderSafely(glm::ivec2 fb) {
     try {
-      renderer_.render(controller_.camera(), settings_, fb.x, fb.y);
+      renderer_->render(controller_.camera(), settings_, fb.x, fb.y);
       renderError_.clear();
     } catch (const std::exception& e) {
       std::string message = e.what();
@@ -164,14 +180,16 @@ class Viewer {
 
   platform::GlfwWindowContext& window_;
   gl::ShaderLibrary shaders_;
-  SplatRenderer renderer_;
+  const Volume& volume_;
+  TransferFunction tf_;
+  std::unique_ptr<Renderer> renderer_;
+  RendererKind rendererKind_ = RendererKind::Splat;
   ImagePresenter presenter_;
   CameraController controller_;
   RenderSettings settings_;
   WindowInput input_;
   ImGuiLayer imgui_;
   ControlPanel panel_;
-  const Volume& volume_;
   TfEditor tfEditor_;
   AsyncSplatBuilder splatBuilder_;  // after the renderer: destroyed first, joining its worker
 

@@ -1,4 +1,4 @@
-// runViewer: the interactive window that shows a volume with the EWA splat renderer.
+// runViewer: the interactive window that shows a volume with the splat or shear-warp renderer.
 #pragma once
 
 #include <string>
@@ -13,13 +13,13 @@ namespace ewa {
 struct ViewerConfig {
   int width = 1024, height = 768;  // window size
   Camera camera;                   // initial camera (already framed by the caller)
-  RenderSettings settings;         // filter, cutoff, slab thickness, background...
+  RenderSettings settings;         // renderer, filter, cutoff, slab thickness, background...
   std::string title = "ewaview";
   std::string shaderDir;           // empty: embedded shaders
   std::string volumeName;          // shown in the panel
 };
 
-// Opens a window, renders `volume` with the EWA splat renderer and runs until the window closes
+// Opens a window, renders `volume` with settings.renderer (switchable in the panel) and runs until the window closes
 // (Escape, Q or the close button). Mouse: left-drag orbits, right-drag or the wheel zooms,
 // middle-drag or shift+left-drag pans; R resets the camera. The volume is rendered again only
 // when the camera, the settings or the window size change.

@@ -1,0 +1,109 @@
+// Shear-warp renderer behind the Renderer interface: close to the EWA splat renderer on a smooth
+// volume, and its output texture holds the picture readImage returns.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <glm/geometric.hpp>
+#include <string>
+
+#include "core/image_metrics.h"
+#include "image_compare.h"
+#include "io/image_convert.h"
+#include "render/shear_warp_renderer.h"
+#include "render_fixture.h"
+
+namespace ewa::test {
+namespace {
+
+class ShearWarpRender : public RenderFixture {};
+
+// A smooth float blob: a Gaussian of sigma 7 voxels in a 40^3 grid, with a soft ramp TF.
+Volume smoothBlob() {
+  const int n = 40;
+  std::vector<float> values(size_t(n) * n * n);
+  size_t idx = 0;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i, ++idx) {
+        const glm::dvec3 d = glm::dvec3(i, j, k) - glm::dvec3(19.5, 18.0, 20.5);
+        values[idx] = float(
+            std::exp(-glm::dot(d, d) / (2.0 * 49.0)) +
+            0.3 * std::exp(-glm::dot(d - glm::dvec3(8, 6, -4), d - glm::dvec3(8, 6, -4)) / 18.0));
+      }
+  std::vector<uint8_t> bytes(values.size() * 4);
+  std::memcpy(bytes.data(), values.data(), bytes.size());
+  return Volume({n, n, n}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::Float32, std::move(bytes));
+}
+
+TransferFunction blobTf() {
+  TransferFunction tf;
+  tf.opacity = {{0.05, 0.0}, {0.4, 0.08}, {1.0, 0.3}};
+  tf.color = {{0.0, {0.9, 0.3, 0.1}}, {0.5, {1.0, 0.8, 0.3}}, {1.0, {1.0, 1.0, 1.0}}};
+  tf.opacityUnitDistance = 1.0;
+  return tf;
+}
+
+TEST_F(ShearWarpRender, SmoothVolumeLooksLikeTheEwaSplatImage) {
+  const Volume volume = smoothBlob();
+  Camera cam;
+  cam.orthographic = true;
+  cam.frame(volume.boundsMin(), volume.boundsMax(), glm::dvec3(0.6, 0.4, 1.0), glm::dvec3(0, 1, 0),
+            1.0);
+  RenderSettings settings;
+  settings.background = glm::dvec3(0.1, 0.1, 0.15);
+  renderer()->setVolume(volume);
+  renderer()->setTransferFunction(blobTf());
+  renderer()->render(cam, settings, 96, 96);
+  const FloatImage ewa = toFloatImage(renderer()->readImage());
+  ShearWarpRenderer sw;
+  sw.setVolume(volume);
+  sw.setTransferFunction(blobTf());
+  for (bool pre : {false, true}) {
+    settings.shearWarp.preintegrated = pre;
+    sw.render(cam, settings, 96, 96);
+    const Image8 img = sw.readImage();
+    const FloatImage f = toFloatImage(img);
+    const double ssim = structuralSimilarity(f, ewa, 1.0);
+    const double rmse = rootMeanSquareError(f, ewa);
+    std::printf("shear-warp (pre-integrated %d) vs EWA: SSIM %.4f, RMSE %.4f\n", pre, ssim, rmse);
+    EXPECT_GT(ssim, 0.99) << "preintegrated " << pre;
+    EXPECT_LT(rmse, 0.01) << "preintegrated " << pre;
+    if (std::getenv("EWA_KEEP_IMAGES") || ::testing::Test::HasFailure())
+      writePng(testOutputDir() + "/shear_warp_blob" + std::to_string(pre) + ".png", img);
+  }
+}
+
+TEST_F(ShearWarpRender, OutputTextureHoldsThePicture) {
+  const Volume volume = smoothBlob();
+  Camera cam;
+  cam.orthographic = true;
+  cam.frame(volume.boundsMin(), volume.boundsMax(), glm::dvec3(-0.3, 1.0, 0.2), glm::dvec3(0, 0, 1),
+            1.5);
+  ShearWarpRenderer sw;
+  sw.setVolume(volume);
+  sw.setTransferFunction(blobTf());
+  RenderSettings settings;
+  settings.renderer = RendererKind::ShearWarp;
+  sw.render(cam, settings, 48, 32);
+  const Image8 img = sw.readImage();
+  ASSERT_EQ(img.width, 48);
+  ASSERT_EQ(img.height, 32);
+  std::vector<uint8_t> texels(48 * 32 * 4);
+  glGetTextureImage(sw.outputTexture(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(texels.size()),
+                    texels.data());
+  int lit = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 48; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const uint8_t v = img.pixels[(size_t(y) * 48 + x) * 3 + c];
+        lit += v > 20;
+        ASSERT_EQ(v, texels[(size_t(31 - y) * 48 + x) * 4 + c]) << x << "," << y;
+      }
+  EXPECT_GT(lit, 100);
+  EXPECT_GT(sw.stats().slabs, 0u);
+}
+
+}  // namespace
+}  // namespace ewa::test
