@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace ewa {
 namespace {
@@ -119,6 +120,88 @@ bool TransferFunction::allTransparent(double lo, double hi) const {
     if (p.value >= lo && p.value <= hi && p.alpha > 0.0) return false;
   }
   return true;
+}
+
+namespace {
+
+double finiteOr(double value, double fallback) { return std::isfinite(value) ? value : fallback; }
+
+glm::dvec3 clampColor(const glm::dvec3& rgb) {
+  glm::dvec3 out;
+  for (int c = 0; c < 3; ++c) {
+    if (!std::isfinite(rgb[c])) throw std::invalid_argument("colour component is not finite");
+    out[c] = std::clamp(rgb[c], 0.0, 1.0);
+  }
+  return out;
+}
+
+template <typename Point>
+void checkIndex(const std::vector<Point>& points, size_t index, const char* list) {
+  if (index >= points.size())
+    throw std::out_of_range(std::string(list) + " point " + std::to_string(index) +
+                            " does not exist (" + std::to_string(points.size()) + " points)");
+}
+
+// Index after the last point whose value is <= value: where a new point goes.
+template <typename Point>
+size_t insertionIndex(const std::vector<Point>& points, double value) {
+  return size_t(std::upper_bound(points.begin(), points.end(), value,
+                                 [](double v, const Point& p) { return v < p.value; }) -
+                points.begin());
+}
+
+// The value a point may take: between its neighbours, so the order never changes.
+template <typename Point>
+double clampBetweenNeighbours(const std::vector<Point>& points, size_t index, double value) {
+  if (!std::isfinite(value)) return points[index].value;
+  if (index > 0) value = std::max(value, points[index - 1].value);
+  if (index + 1 < points.size()) value = std::min(value, points[index + 1].value);
+  return value;
+}
+
+}  // namespace
+
+size_t TransferFunction::addOpacityPoint(double value, double alpha) {
+  if (!std::isfinite(value) || !std::isfinite(alpha))
+    throw std::invalid_argument("opacity point must be finite");
+  const size_t at = insertionIndex(opacity, value);
+  opacity.insert(opacity.begin() + std::ptrdiff_t(at), {value, std::clamp(alpha, 0.0, 1.0)});
+  return at;
+}
+
+size_t TransferFunction::addColorPoint(double value, const glm::dvec3& rgb) {
+  if (!std::isfinite(value)) throw std::invalid_argument("colour point value is not finite");
+  const glm::dvec3 c = clampColor(rgb);
+  const size_t at = insertionIndex(color, value);
+  color.insert(color.begin() + std::ptrdiff_t(at), {value, c});
+  return at;
+}
+
+void TransferFunction::moveOpacityPoint(size_t index, double value, double alpha) {
+  checkIndex(opacity, index, "opacity");
+  OpacityPoint& p = opacity[index];
+  p.value = clampBetweenNeighbours(opacity, index, value);
+  p.alpha = std::clamp(finiteOr(alpha, p.alpha), 0.0, 1.0);
+}
+
+void TransferFunction::moveColorPoint(size_t index, double value) {
+  checkIndex(color, index, "color");
+  color[index].value = clampBetweenNeighbours(color, index, value);
+}
+
+void TransferFunction::setPointColor(size_t index, const glm::dvec3& rgb) {
+  checkIndex(color, index, "color");
+  color[index].rgb = clampColor(rgb);
+}
+
+void TransferFunction::removeOpacityPoint(size_t index) {
+  checkIndex(opacity, index, "opacity");
+  opacity.erase(opacity.begin() + std::ptrdiff_t(index));
+}
+
+void TransferFunction::removeColorPoint(size_t index) {
+  checkIndex(color, index, "color");
+  color.erase(color.begin() + std::ptrdiff_t(index));
 }
 
 bool operator==(const OpacityPoint& a, const OpacityPoint& b) {

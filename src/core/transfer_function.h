@@ -3,6 +3,7 @@
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <cstddef>
 #include <vector>
 
 #include "core/volume.h"
@@ -48,6 +49,21 @@ class TransferFunction {
   // True when no value in [lo, hi] has alpha > 0 (nothing would be drawn). Exact: the
   // function is linear between points, so the ends and the points inside decide.
   bool allTransparent(double lo, double hi) const;
+
+  // ---- Editing (what the editor's mouse does). Points stay sorted and valid. ----
+  // Inserts a point (alpha and colour clamped to [0, 1]) after any point of equal value and
+  // returns its index. Throws std::invalid_argument for non-finite numbers.
+  size_t addOpacityPoint(double value, double alpha);
+  size_t addColorPoint(double value, const glm::dvec3& rgb);
+  // Moves point `index` to (value, alpha): the value is clamped between its neighbours' values
+  // (a dragged point never passes another, so its index stays the same) and alpha to [0, 1].
+  // Non-finite inputs keep the old coordinate. Throws std::out_of_range for a bad index.
+  void moveOpacityPoint(size_t index, double value, double alpha);
+  void moveColorPoint(size_t index, double value);
+  void setPointColor(size_t index, const glm::dvec3& rgb);  // clamped to [0, 1]
+  // Removes point `index`. Throws std::out_of_range for a bad index.
+  void removeOpacityPoint(size_t index);
+  void removeColorPoint(size_t index);
 };
 
 bool operator==(const OpacityPoint& a, const OpacityPoint& b);

@@ -60,6 +60,30 @@ void LodRenderer::setTransferFunction(const TransferFunction& tf) {
   for (auto& entry : renderers_) entry.second->setTransferFunction(tf);
 }
 
+SplatRenderer* LodRenderer::editTransferFunction(const TransferFunction& tf) {
+  tf_ = tf;
+  hasTf_ = true;
+  SplatRenderer* live = nullptr;
+  for (auto& [factor, renderer] : renderers_) {
+    auto* splat = factor == 1 ? dynamic_cast<SplatRenderer*>(renderer.get()) : nullptr;
+    if (splat) {
+      splat->updateTransferTexture(tf);
+      live = splat;
+    } else {
+      renderer->setTransferFunction(tf);
+    }
+  }
+  return live;
+}
+
+bool LodRenderer::setFullSplats(ClassifiedSplats splats, const Classification& classification) {
+  const auto it = renderers_.find(1);
+  auto* splat = it == renderers_.end() ? nullptr : dynamic_cast<SplatRenderer*>(it->second.get());
+  if (!splat) return false;
+  splat->setSplats(std::move(splats), classification);
+  return true;
+}
+
 bool LodRenderer::hasFactor(int factor) const {
   if (factor == 1) return volume_ != nullptr;
   for (const auto& level : coarse_.levels)

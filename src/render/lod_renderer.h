@@ -8,9 +8,12 @@
 #include <vector>
 
 #include "core/lod_policy.h"
+#include "core/splat_attributes.h"
 #include "render/renderer.h"
 
 namespace ewa {
+
+class SplatRenderer;
 
 // The coarse volumes of every volume factor LodPolicy uses (2, 4, 8), made on the CPU; slow
 // for big volumes, so the viewer makes them on its loading thread.
@@ -28,6 +31,14 @@ class LodRenderer {
   // `volume` must outlive this object or the next setVolume; the coarse ones are shared.
   void setVolume(const Volume& volume, LodVolumes coarse);
   void setTransferFunction(const TransferFunction& tf);
+  // A live edit (a dragged control point): coarse levels classify again on their next render
+  // (small volumes, cheap); a full-resolution splat renderer only gets the new table and keeps
+  // its splats, and is returned so the caller can build the new set on a worker thread and
+  // hand it over with setFullSplats(). Other full-level renderers take the function as usual.
+  SplatRenderer* editTransferFunction(const TransferFunction& tf);
+  // Gives the full-resolution splat renderer a set built elsewhere; false when the full level
+  // is not a splat renderer (any more).
+  bool setFullSplats(ClassifiedSplats splats, const Classification& classification);
   // Draws LodPolicy level `level` for a width x height window: the level's volume factor
   // picks the renderer, its image divisor shrinks the image (at least 1x1).
   void render(int level, const Camera& camera, const RenderSettings& settings, int width,

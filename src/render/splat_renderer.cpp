@@ -65,9 +65,7 @@ void SplatRenderer::setTransferFunction(const TransferFunction& tf) {
 void SplatRenderer::rebuildSplats(const Classification& classification) {
   splatsDirty_ = false;
   classification_ = classification;
-  const double lo = volume_->minValue(), hi = volume_->maxValue();
-  const std::vector<glm::vec4> table = tf_.bake(lo, hi, kTransferSamples);
-  transferTexture_.subImage1D(0, 0, kTransferSamples, GL_RGBA, GL_FLOAT, table.data());
+  uploadTransferTexture();
   classified_ = ClassifiedSplats();
   try {
     // Gradients and surface voxels are found here, once per volume, transfer function and
@@ -81,6 +79,28 @@ void SplatRenderer::rebuildSplats(const Classification& classification) {
                       " bytes (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) and half the machine's memory: "
                       "make more of the volume transparent");
   }
+  uploadSplats();
+}
+
+void SplatRenderer::uploadTransferTexture() {
+  const double lo = volume_->minValue(), hi = volume_->maxValue();
+  const std::vector<glm::vec4> table = tf_.bake(lo, hi, kTransferSamples);
+  transferTexture_.subImage1D(0, 0, kTransferSamples, GL_RGBA, GL_FLOAT, table.data());
+}
+
+void SplatRenderer::updateTransferTexture(const TransferFunction& tf) {
+  tf_ = tf;
+  if (volume_) uploadTransferTexture();
+}
+
+void SplatRenderer::setSplats(ClassifiedSplats splats, const Classification& classification) {
+  classified_ = std::move(splats);
+  classification_ = classification;
+  splatsDirty_ = false;
+  uploadSplats();
+}
+
+void SplatRenderer::uploadSplats() {
   // Order entries keep two flag bits above the splat index.
   if (classified_.splats.size() > SlabPartition::kIndexMask) {
     classified_ = ClassifiedSplats{};

@@ -33,6 +33,18 @@ class SplatRenderer : public Renderer {
   unsigned outputTexture() const override { return targets_.output.id(); }
   RenderStats stats() const override { return stats_; }
 
+  // Live transfer-function editing (kept apart from the drawing code): uploads `tf`'s table to
+  // the GPU now and keeps the current splats, so the next render shows the new colours and
+  // opacities without classifying the volume again. Voxels the new function makes visible
+  // appear once a matching set comes through setSplats(). Needs setVolume() first.
+  void updateTransferTexture(const TransferFunction& tf);
+  // Replaces the splats with a set classified elsewhere (e.g. AsyncSplatBuilder) for the
+  // current volume under `classification` and uploads it; the next render draws it (and does
+  // not classify again unless the settings ask for another classification).
+  void setSplats(ClassifiedSplats splats, const Classification& classification);
+  // The most splats the GL buffers may hold: pass it to a classification made elsewhere.
+  size_t maxSplats() const { return maxSplats_; }
+
   // X-ray mode only: the summed optical depth per pixel, bottom row first (for tests).
   std::vector<float> readOpticalDepth() const;
   // The splats of the current volume and transfer function (built on the next render()).
@@ -50,6 +62,8 @@ class SplatRenderer : public Renderer {
 
  private:
   void rebuildSplats(const Classification& classification);
+  void uploadTransferTexture();
+  void uploadSplats();
   void setCommonUniforms(gl::Program& program, const Camera& camera, const Projection& proj,
                          const RenderSettings& settings);
   void setSlabUniforms(const Slab& slab, bool split, bool openTails);

@@ -6,11 +6,14 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
+#include "core/async_splat_builder.h"
 #include "core/camera_path.h"
 #include "core/camera_views.h"
 #include "core/lod_policy.h"
@@ -20,9 +23,11 @@
 #include "io/frame_names.h"
 #include "io/png_io.h"
 #include "io/terminal_progress.h"
+#include "io/transfer_function_io.h"
 #include "platform/glfw_window_context.h"
 #include "render/lod_renderer.h"
 #include "render/renderer_factory.h"
+#include "render/splat_renderer.h"
 #include "ui/camera_controller.h"
 #include "ui/control_panel.h"
 #include "ui/file_dialog.h"
@@ -30,6 +35,7 @@
 #include "ui/imgui_layer.h"
 #include "ui/session_panel.h"
 #include "ui/status_messages.h"
+#include "ui/tf_editor.h"
 #include "ui/window_input.h"
 
 namespace ewa {
@@ -43,6 +49,8 @@ constexpr int kFramesAfterActivity = 3;
 constexpr double kIdleWaitSeconds = 0.5;
 // Redraw rate while a volume loads (the progress bar moves).
 constexpr double kLoadingWaitSeconds = 0.1;
+// Wait while splats are built on the worker thread: short, so the new set shows soon.
+constexpr double kBuildPollSeconds = 0.02;
 
 using Clock = std::chrono::steady_clock;
 
@@ -82,6 +90,8 @@ class Viewer {
       }
     }
     rendererKind_ = settings_.renderer;  // lod_ makes renderers of this kind
+    const char* printLayout = std::getenv("EWAVIEW_PRINT_LAYOUT");
+    printLayout_ = printLayout && *printLayout == '1';
     levelOfDetail_ = saved_.levelOfDetail;
     hasNvx_ = gl::queryGpuMemory().has_value();
     if (initial.coarse.levels.empty()) initial.coarse = buildLodVolumes(*initial.volume);
@@ -98,7 +108,8 @@ class Viewer {
       else
         glfwPollEvents();
       const Clock::time_point start = Clock::now();
-      const bool active = input_.takeActivity();
+      // `|`, not `||`: both must run (take the flag and swap in a finished splat set).
+      const bool active = input_.takeActivity() | takeBuiltSplats();
       const bool due = busy() || refineDue() || !messages_.current(now()).empty();
       if (!active && !due && quietFrames >= kFramesAfterActivity) continue;
 
@@ -137,6 +148,7 @@ class Viewer {
     saved_.slabThickness = settings_.slabThickness;
     saved_.background = settings_.background;
     saved_.levelOfDetail = levelOfDetail_;
+    keepTransferFunction();
     try {
       saveViewerSettings(settingsPathIn(config_.configDir), saved_);
       writeFileAtomically(imguiIniPathIn(config_.configDir), imgui_.saveLayout(), true);
@@ -147,7 +159,9 @@ class Viewer {
 
  private:
   double now() const { return std::chrono::duration<double>(Clock::now() - epoch_).count(); }
-  bool busy() const { return loadJob_.running() || turntable_.total > 0 || buildPending_; }
+  bool busy() const {
+    return loadJob_.running() || turntable_.total > 0 || buildPending_ || splatBuilder_.busy();
+  }
   // A coarse image is shown and the quiet time before full quality has passed.
   bool refineDue() const {
     return hasImage_ && lod_.lastLevel() != 0 &&
@@ -155,6 +169,7 @@ class Viewer {
   }
   double waitSeconds() const {
     if (turntable_.total > 0 || buildPending_) return 0.0;
+    if (splatBuilder_.busy()) return kBuildPollSeconds;
     if (hasImage_ && lod_.lastLevel() != 0)
       return std::max(0.0, (policy_.refineDelayMs() - millisecondsSince(lastChange_)) / 1000.0);
     if (loadJob_.running()) return kLoadingWaitSeconds;
@@ -172,12 +187,17 @@ class Viewer {
 
   // Makes `loaded` the volume on screen (the old one stays alive until the renderers let go).
   void adopt(LoadedVolume loaded, bool newCamera) {
+    dropSplatBuild();  // a build may still read the old volume
     LoadedVolume old = std::move(current_);
     current_ = std::move(loaded);
     lod_.setVolume(*current_.volume, current_.coarse);
     lod_.setTransferFunction(current_.tf);
     policy_.resetMeasurements();
     panel_.setVolume(current_.name, *current_.volume);
+    tfEditor_ = std::make_unique<TfEditor>(
+        *current_.volume, current_.tf,
+        saved_.lastTransferFunction.empty() ? "transfer_function.json" : saved_.lastTransferFunction);
+    tfEditor_->setPrintLayout(printLayout_);
     if (newCamera) {
       const glm::ivec2 fb = window_.framebufferSize();
       Camera camera;
@@ -266,6 +286,7 @@ class Viewer {
   // A new set of renderers when the panel switched the renderer kind.
   void switchRendererIfAsked() {
     if (settings_.renderer == rendererKind_) return;
+    dropSplatBuild();
     lod_ = LodRenderer(rendererFactory());
     lod_.setVolume(*current_.volume, current_.coarse);
     lod_.setTransferFunction(current_.tf);
@@ -291,6 +312,7 @@ class Viewer {
       renderedCamera_ = controller_.revision();
       renderedSettings_ = settingsRevision_;
       renderedSize_ = fb;
+      renderedTf_ = tfRevision_;
       return millisecondsSince(start);
     }
     const double ms = millisecondsSince(start);
@@ -298,6 +320,7 @@ class Viewer {
     renderedCamera_ = controller_.revision();
     renderedSettings_ = settingsRevision_;
     renderedSize_ = fb;
+    renderedTf_ = tfRevision_;
     frameStats_.render = lod_.last().stats();
     frameStats_.imageWidth = lod_.imageWidth();
     frameStats_.imageHeight = lod_.imageHeight();
@@ -305,6 +328,57 @@ class Viewer {
     frameStats_.gpuBytes = lod_.gpuBytes();
     if (hasNvx_) frameStats_.gpuMemory = gl::queryGpuMemory();
     return ms;
+  }
+
+  // The editor changed the function: the next frame draws it (a coarse level while it keeps
+  // changing, full quality after), the full level's new splat set is built on a worker thread.
+  void transferFunctionEdited() {
+    current_.tf = tfEditor_->transferFunction();
+    if (SplatRenderer* full = lod_.editTransferFunction(current_.tf))
+      splatBuilder_.request(*current_.volume, current_.tf, settings_.classification,
+                            full->maxSplats());
+    ++tfRevision_;
+  }
+
+  // Swaps in a splat set the worker finished; true when one arrived.
+  bool takeBuiltSplats() {
+    try {
+      std::optional<BuiltSplats> built = splatBuilder_.poll();
+      if (!built) return false;
+      // Redraw at once when full quality is on screen; a coarse one refines later anyway.
+      if (lod_.setFullSplats(std::move(built->splats), built->classification))
+        fullSplatsArrived_ = hasImage_ && lod_.lastLevel() == 0;
+    } catch (const std::exception& e) {  // too many visible voxels: say so, keep the old set
+      error(std::string(e.what()) + " (the window keeps running)");
+    }
+    return true;
+  }
+
+  // Waits for a running build and throws its result away (the volume or renderer changes).
+  void dropSplatBuild() {
+    try {
+      splatBuilder_.finish();
+    } catch (const std::exception&) {
+      // Its error is about a set nobody will draw.
+    }
+  }
+
+  // The last transfer function for the settings file: the file last saved or loaded, or, when
+  // it was edited since, a copy of the edits in the settings folder (so they are never lost).
+  void keepTransferFunction() {
+    if (!tfEditor_) return;
+    if (tfEditor_->editedSinceFile()) {
+      const std::string path = (std::filesystem::path(config_.configDir) / "last.tf.json").string();
+      try {
+        saveTransferFunction(path, tfEditor_->transferFunction());
+        saved_.lastTransferFunction = path;
+        std::cerr << "ewaview: unsaved transfer function kept in " << path << "\n";
+      } catch (const std::exception& e) {
+        std::cerr << "ewaview: " << e.what() << "\n";
+      }
+    } else if (!tfEditor_->lastFile().empty()) {
+      saved_.lastTransferFunction = std::filesystem::absolute(tfEditor_->lastFile()).string();
+    }
   }
 
   void screenshot(const glm::ivec2& fb) {
@@ -453,13 +527,15 @@ class Viewer {
     if (edits.resetCamera) controller_.reset();
     if (edits.axisView) showAxisView(*edits.axisView, fb);
     if (edits.settings) ++settingsRevision_;
+    if (tfEditor_->draw()) transferFunctionEdited();
     switchRendererIfAsked();
     applySessionEdits(session_.draw(sessionView()), fb, &screenshotNow);
     if (const auto chosen = fileDialog_.draw()) startLoad(*chosen);
 
     bool rendered = false;
     const bool stale = !hasImage_ || renderedCamera_ != controller_.revision() ||
-                       renderedSettings_ != settingsRevision_ || renderedSize_ != fb;
+                       renderedSettings_ != settingsRevision_ || renderedSize_ != fb ||
+                       renderedTf_ != tfRevision_;
     if (turntable_.total > 0) {
       turntableFrame(fb);
       rendered = true;
@@ -487,9 +563,14 @@ class Viewer {
         recorded_ += cameraStepLine(controller_.camera()) + "\n";
       lastChange_ = Clock::now();
       rendered = true;
-    } else if (refineDue()) {
+    } else if (refineDue() || fullSplatsArrived_) {
       renderLevel(0, controller_.camera(), fb);
       rendered = true;
+    }
+    fullSplatsArrived_ = false;
+    if (printLayout_ && rendered) {  // for the scripted window test: which level is on screen
+      std::printf("frame level %d\n", lod_.lastLevel());
+      std::fflush(stdout);
     }
     if (screenshotNow) screenshot(fb);
 
@@ -518,6 +599,8 @@ class Viewer {
   ImGuiLayer imgui_;
   ControlPanel panel_;
   SessionPanel session_;
+  std::unique_ptr<TfEditor> tfEditor_;  // made per volume (it holds the histogram)
+  AsyncSplatBuilder splatBuilder_;      // after current_: destroyed first, joining its worker
   FileDialog fileDialog_;
   StatusMessages messages_;
   VolumeLoadJob loadJob_;
@@ -528,6 +611,10 @@ class Viewer {
 
   FrameStats frameStats_;
   bool levelOfDetail_ = true;
+  bool printLayout_ = false;
+  bool fullSplatsArrived_ = false;
+  uint64_t tfRevision_ = 0;
+  uint64_t renderedTf_ = 0;
   bool hasNvx_ = false;
   bool buildPending_ = false;
   uint64_t settingsRevision_ = 0;

@@ -1,0 +1,162 @@
+#!/usr/bin/env bash
+# Scripted window test: starts the real ewaview under X, replays an orbit drag, a scroll zoom and
+# a transfer-function drag with xdotool, and checks the screenshots change as they should.
+# Usage: window_test.sh EWAVIEW_BINARY OUTPUT_DIR.  Exit 77 (CTest skip) without X tools.
+set -uo pipefail
+binary="$(realpath "$1")"
+out="$2"
+here="$(cd "$(dirname "$0")" && pwd)"
+skip() { echo "SKIP: $*"; exit 77; }
+for tool in xdotool import compare convert; do
+  command -v "$tool" >/dev/null || skip "$tool not installed (scripts/setup.sh installs it)"
+done
+if [ -z "${DISPLAY:-}" ]; then
+  command -v xvfb-run >/dev/null || skip "no DISPLAY and no xvfb-run"
+  exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
+fi
+xdotool getdisplaygeometry >/dev/null 2>&1 || skip "cannot reach the X server on DISPLAY=$DISPLAY"
+mkdir -p "$out"
+rm -f "$out"/*.png
+work="$(mktemp -d)"
+pid=""
+cleanup() {
+  [ -n "$pid" ] && kill "$pid" 2>/dev/null
+  rm -rf "$work"
+}
+trap cleanup EXIT
+fail() {
+  echo "FAIL: $*"
+  echo "--- ewaview stdout/stderr:"; cat "$work/stdout" "$work/stderr" 2>/dev/null
+  exit 1
+}
+
+log() { echo "[${SECONDS}s] $*"; }
+
+# Waits up to `timeout` seconds (long: a loaded 2-core llvmpipe machine) for a condition.
+timeout=180
+poll() {  # poll DESCRIPTION COMMAND...
+  local what="$1"; shift
+  local start=$SECONDS
+  until "$@"; do
+    [ $((SECONDS - start)) -ge $timeout ] && fail "timed out after ${timeout}s waiting for $what"
+    kill -0 "$pid" 2>/dev/null || fail "ewaview exited while waiting for $what"
+    sleep 0.3
+  done
+}
+
+# Window 1100x600: the control panel covers x < ~405, the editor x >= 714; the volume region
+# between them is what the camera checks look at.
+width=1100; height=600
+volume_crop="290x600+415+0"
+mkdir -p "$work/config"  # a scratch settings folder: no saved layout or window size applies
+(cd "$work" && EWAVIEW_CONFIG_DIR="$work/config" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" --synthetic marschner-lobb:32 \
+  --tf "$here/ml_test.tf.json" --slab-thickness 4 --resolution "$width,$height" >stdout 2>stderr) &
+pid=$!
+have_layout() { grep -q '^tf-canvas ' "$work/stdout"; }
+poll "the editor's layout line" have_layout
+find_window() { wid=$(xdotool search --onlyvisible --pid "$pid" --name '^ewaview$' 2>/dev/null | head -1); [ -n "$wid" ]; }
+poll "the ewaview window" find_window
+read -r _ cx cy cw ch < <(grep '^tf-canvas ' "$work/stdout" | tail -1)
+
+shot() { import -window "$wid" "$1" 2>/dev/null; }
+# Pixels that differ (by more than 2%) between two images, optionally in a crop.
+differ() {  # differ A B [CROP]
+  local a="$1" b="$2"
+  if [ -n "${3:-}" ]; then
+    convert "$1" -crop "$3" +repage "$work/da.png"; convert "$2" -crop "$3" +repage "$work/db.png"
+    a="$work/da.png"; b="$work/db.png"
+  fi
+  compare -metric AE -fuzz 2% "$a" "$b" null: 2>&1 | cut -d' ' -f1
+}
+mean() { convert "$1" -crop "$2" +repage -colorspace gray -format '%[fx:mean]' info:; }
+# Fraction of the crop that shows the volume (brighter than the black background).
+coverage() { convert "$1" -crop "$2" +repage -colorspace gray -threshold 4% -format '%[fx:mean]' info:; }
+greater() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a > b) }'; }
+
+# The viewer prints "frame level L" for every picture it draws: the last one must be full quality
+# (level 0), not a coarse level still waiting to be refined.
+full_quality() { [ "$(grep '^frame level ' "$work/stdout" | tail -1)" = "frame level 0" ]; }
+
+# Takes screenshots until the picture differs from `before` (in `crop`), the last frame drawn is
+# full quality and the picture holds still for two shots in a row; leaves the result in `$1`.
+settled() {  # settled RESULT BEFORE CROP
+  local result="$1" before="$2" crop="$3" start=$SECONDS
+  shot "$work/a.png"
+  until [ "$(differ "$before" "$work/a.png" "$crop")" -gt 0 ]; do
+    [ $((SECONDS - start)) -ge $timeout ] && fail "no change on screen after ${timeout}s ($result)"
+    sleep 0.3; shot "$work/a.png"
+  done
+  while :; do
+    sleep 0.5; shot "$work/b.png"
+    [ "$(differ "$work/a.png" "$work/b.png")" -eq 0 ] && full_quality && break
+    [ $((SECONDS - start)) -ge $timeout ] && fail "picture never settled ($result)"
+    cp "$work/b.png" "$work/a.png"
+  done
+  cp "$work/b.png" "$result"
+}
+
+# First picture: wait until the volume is drawn and the window is still.
+black="$work/black.png"
+convert -size "${width}x${height}" xc:black "$black"
+log "window up; waiting for the first picture"
+settled "$out/0_start.png" "$black" "$volume_crop"
+start_coverage=$(coverage "$out/0_start.png" "$volume_crop")
+greater "$start_coverage" 0.05 || fail "the volume is not visible at start (coverage $start_coverage)"
+
+log "first picture"
+# Idle: nothing happens, nothing changes.
+sleep 2; shot "$out/1_idle.png"
+idle_diff=$(differ "$out/0_start.png" "$out/1_idle.png")
+[ "$idle_diff" -eq 0 ] || fail "an idle window changed ($idle_diff pixels)"
+
+log "idle checked"
+# Orbit: left-drag across the volume.
+mx=$((415 + 145)); my=300
+xdotool mousemove --window "$wid" $mx $my; sleep 0.3
+xdotool mousedown 1
+for step in 1 2 3 4 5 6; do xdotool mousemove --window "$wid" $((mx + 15 * step)) $my; sleep 0.1; done
+xdotool mouseup 1
+settled "$out/2_orbit.png" "$out/1_idle.png" "$volume_crop"
+orbit_diff=$(differ "$out/1_idle.png" "$out/2_orbit.png" "$volume_crop")
+greater "$orbit_diff" $((290 * 600 / 50)) || fail "orbit changed only $orbit_diff pixels of the volume region"
+
+log "orbit checked"
+# Zoom out: three wheel notches towards the user make the volume smaller.
+xdotool mousemove --window "$wid" $mx $my; sleep 0.3
+xdotool click --repeat 3 --delay 150 5
+settled "$out/3_zoom.png" "$out/2_orbit.png" "$volume_crop"
+before=$(coverage "$out/2_orbit.png" "$volume_crop"); after=$(coverage "$out/3_zoom.png" "$volume_crop")
+greater "$before" "$(awk -v a="$after" 'BEGIN { print a * 1.15 }')" ||
+  fail "zooming out did not shrink the volume (coverage $before -> $after)"
+
+log "zoom checked"
+# Transfer function: drag the opacity point at value 0.5 (alpha 0: the plot's bottom edge, half
+# way across) up to alpha 0.6. Values between 0 and 0.5 become visible: more and brighter pixels.
+px=$((cx + cw / 2)); py=$((cy + ch - 2)); ty=$((cy + ch * 4 / 10))
+editor_crop="${cw}x$((ch + 30))+${cx}+${cy}"
+xdotool mousemove --window "$wid" $px $py; sleep 0.5
+shot "$work/hover.png"
+xdotool mousedown 1
+# The press selects the point (its ring turns yellow): wait for ImGui to have seen it there.
+settled "$out/4_press.png" "$work/hover.png" "$editor_crop"
+for step in 1 2; do xdotool mousemove --window "$wid" $px $((py + (ty - py) * step / 2)); sleep 0.2; done
+settled "$out/5_drag.png" "$out/4_press.png" "$volume_crop"
+xdotool mouseup 1
+settled "$out/6_tf.png" "$out/4_press.png" "$volume_crop"
+m0=$(mean "$out/3_zoom.png" "$volume_crop"); m1=$(mean "$out/6_tf.png" "$volume_crop")
+c0=$(coverage "$out/3_zoom.png" "$volume_crop"); c1=$(coverage "$out/6_tf.png" "$volume_crop")
+greater "$m1" "$(awk -v a="$m0" 'BEGIN { print a * 1.2 }')" ||
+  fail "raising the opacity did not brighten the volume (mean $m0 -> $m1)"
+greater "$c1" "$c0" || fail "raising the opacity did not show more of the volume ($c0 -> $c1)"
+
+log "transfer-function edit checked"
+# Quit with Q: the process ends with status 0.
+xdotool key --window "$wid" q
+start=$SECONDS
+while kill -0 "$pid" 2>/dev/null; do
+  [ $((SECONDS - start)) -ge 60 ] && fail "Q did not close the window"
+  sleep 0.3
+done
+wait "$pid"; rc=$?; pid=""
+[ "$rc" -eq 0 ] || fail "ewaview exited with $rc"
+echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1"
