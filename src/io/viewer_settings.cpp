@@ -83,10 +83,10 @@ ViewerSettings viewerSettingsFromJson(const std::string& text, const std::string
       FilterMode filter;
       if (parseFilterMode(r.value("filter", std::string("ewa")), &filter)) s.filter = filter;
       const std::string mode = r.value("mode", std::string("composite"));
-      if (mode == "composite" || mode == "xray") s.renderMode = mode;
+      if (mode == "composite" || mode == "xray" || mode == "mip") s.renderMode = mode;
       const double cutoff = r.value("cutoff", 4.0);
       if (std::isfinite(cutoff)) s.cutoff = std::clamp(cutoff, 0.25, 64.0);
-      const double slab = r.value("slab_thickness", 1.0);
+      const double slab = r.value("slab_thickness", 2.0);
       if (std::isfinite(slab)) s.slabThickness = std::clamp(slab, 0.05, 1000.0);
       if (r.contains("background")) {
         const auto bg = r.at("background").get<std::vector<double>>();

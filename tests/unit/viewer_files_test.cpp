@@ -11,6 +11,7 @@
 #include "io/file_listing.h"
 #include "io/frame_names.h"
 #include "io/viewer_settings.h"
+#include "render/renderer.h"
 
 namespace ewa {
 namespace {
@@ -70,6 +71,26 @@ TEST_F(ViewerFiles, SettingsRoundTripAndDefaults) {
   EXPECT_EQ(r.slabThickness, 2.5);
   EXPECT_EQ(r.background, s.background);
   EXPECT_FALSE(r.levelOfDetail);
+}
+
+// A first run (no settings file) and a settings file without a "render" part must give the
+// renderer's own defaults, not older ones.
+TEST_F(ViewerFiles, SettingsDefaultsAreTheRenderersDefaults) {
+  const RenderSettings render;
+  const ViewerSettings fresh;
+  EXPECT_EQ(fresh.filter, render.filter);
+  EXPECT_EQ(render.mode, RenderMode::Composite);
+  EXPECT_EQ(fresh.renderMode, "composite");
+  EXPECT_EQ(fresh.cutoff, render.cutoff);
+  EXPECT_EQ(fresh.slabThickness, render.slabThickness);
+  EXPECT_EQ(fresh.background, render.background);
+  const std::string p = path("partial/settings.json");
+  std::filesystem::create_directories(std::filesystem::path(p).parent_path());
+  std::ofstream(p) << R"({"render": {"mode": "mip"}})";
+  const ViewerSettings partial = loadViewerSettings(p);
+  EXPECT_EQ(partial.renderMode, "mip");
+  EXPECT_EQ(partial.slabThickness, render.slabThickness);
+  EXPECT_EQ(partial.cutoff, render.cutoff);
 }
 
 TEST_F(ViewerFiles, SettingsClampOddValuesAndRejectBadJson) {
