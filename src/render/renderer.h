@@ -72,8 +72,9 @@ struct RenderStats {
   bool quadPass = false;    // some footprints exceeded the point-size limit
   double cpuMs = 0.0;       // CPU time of the last render() call, GPU work included (it waits)
   // Time per stage of the last render() call, for the statistics panel; 0 where a renderer
-  // does not measure it (classify: splats from the transfer function; sort: slab bucketing;
-  // splat: drawing the kernels; composite: blending slabs and the final pass).
+  // does not measure it (classify: splats from the transfer function, 0 when the set was
+  // kept; sort: slab bucketing and its upload; splat: drawing the kernels and blending each
+  // slab under the image, which interleave per slab; composite: the final pass to the output).
   double classifyMs = 0.0;
   double sortMs = 0.0;
   double splatMs = 0.0;

@@ -40,6 +40,11 @@ glm::mat4 clipMatrix(const Projection& proj, const glm::dmat4& view, double near
   return glm::mat4(p * view);
 }
 
+using Clock = std::chrono::steady_clock;
+double millisecondsSince(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
 }  // namespace
 
 bool SplatRenderer::allOpaque(const Camera& camera, const Projection& proj,
@@ -132,15 +137,19 @@ void SplatRenderer::compositeSlabs(const Camera& camera, const Projection& proj,
 
 void SplatRenderer::render(const Camera& camera, const RenderSettings& settings, int width,
                            int height) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   targets_.resize(width, height);
   stats_ = RenderStats{};
   const GLfloat zero[4] = {0, 0, 0, 0};
   targets_.accumFbo.clearColor(0, zero);
   targets_.slabFbo.clearColor(0, zero);
   glClearNamedFramebufferfi(targets_.slabFbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-  if (volume_ && (splatsDirty_ || settings.classification != classification_))
+  if (volume_ && (splatsDirty_ || settings.classification != classification_)) {
+    const auto classifyStart = Clock::now();
     rebuildSplats(settings.classification);
+    stats_.classifyMs = millisecondsSince(classifyStart);
+  }
+  auto stageStart = Clock::now();
   const Projection proj = camera.projection(width, height);
   const SplatSet& splats = classified_.splats;
   if (volume_ && splats.size() > 0 && camera.valid()) {
@@ -158,6 +167,7 @@ void SplatRenderer::render(const Camera& camera, const RenderSettings& settings,
     extent.orthographic = proj.orthographic;
     extent.swanDepth = proj.focalPixels * params.minSpacing;
     extent.swanStretch = std::max(1.0, 1.0 / (proj.pixelsPerUnit * params.minSpacing));
+    stageStart = Clock::now();
     partition_.build(splats, classified_.attributes, volume_->origin(), camera.viewMatrix(),
                      thickness, params.nearDepth, extent);
     const auto& order = partition_.order();
@@ -180,6 +190,8 @@ void SplatRenderer::render(const Camera& camera, const RenderSettings& settings,
       glViewport(0, 0, width, height);
       glEnable(GL_PROGRAM_POINT_SIZE);
       glDisable(GL_DEPTH_TEST);
+      stats_.sortMs = millisecondsSince(stageStart);  // bucketing and the order upload
+      stageStart = Clock::now();
       glEnable(GL_BLEND);
       if (composite) {
         compositeSlabs(camera, proj, settings);
@@ -199,8 +211,13 @@ void SplatRenderer::render(const Camera& camera, const RenderSettings& settings,
         stats_.slabsDrawn = 1;
       }
       glDisable(GL_BLEND);
+      // The slab loop's GPU work (splats and the blends between slabs) ends here; waiting for
+      // it costs little, since the final pass below waits anyway.
+      glFinish();
+      stats_.splatMs = millisecondsSince(stageStart);
     }
   }
+  stageStart = Clock::now();
   glBindVertexArray(emptyVao_.id());
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.outputFbo.id());
   glViewport(0, 0, width, height);
@@ -219,8 +236,8 @@ void SplatRenderer::render(const Camera& camera, const RenderSettings& settings,
   glUseProgram(0);
   glFinish();
   gl::checkGlError("SplatRenderer::render");
-  stats_.cpuMs =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  stats_.compositeMs = millisecondsSince(stageStart);
+  stats_.cpuMs = millisecondsSince(start);
 }
 
 }  // namespace ewa

@@ -188,5 +188,29 @@ TEST_F(SplatInvariants, DegenerateViewsGiveFinitePictures) {
   EXPECT_GT(img.pixels[(16 * 32 + 16) * 3], 20);
 }
 
+// The statistics panel's time per stage: classification only when the set is rebuilt, the
+// stages within the whole call's time.
+TEST_F(SplatInvariants, StageTimesAreMeasuredAndFitInTheFrame) {
+  const Volume cube = makeVolume(12, 12, 12, glm::dvec3(1.0), [](int, int, int) { return true; });
+  renderer()->setVolume(cube);
+  renderer()->setTransferFunction(whiteTf(0.3, 1.0));
+  Camera cam;
+  cam.position = {5.5, 5.5, 40.0};
+  cam.focalPoint = {5.5, 5.5, 5.5};
+  RenderSettings settings;
+  renderer()->render(cam, settings, 48, 48);
+  RenderStats first = renderer()->stats();
+  EXPECT_GT(first.classifyMs, 0.0);
+  EXPECT_GT(first.sortMs, 0.0);
+  EXPECT_GT(first.splatMs, 0.0);
+  EXPECT_GT(first.compositeMs, 0.0);
+  EXPECT_LE(first.classifyMs + first.sortMs + first.splatMs + first.compositeMs,
+            first.cpuMs * 1.0001);
+  renderer()->render(cam, settings, 48, 48);  // same function: the splats are kept
+  const RenderStats second = renderer()->stats();
+  EXPECT_EQ(second.classifyMs, 0.0);
+  EXPECT_GT(second.splatMs, 0.0);
+}
+
 }  // namespace
 }  // namespace ewa::test
