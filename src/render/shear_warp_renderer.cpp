@@ -48,6 +48,9 @@ void ShearWarpRenderer::render(const Camera& camera, const RenderSettings& setti
   const ShearWarpStats& s = core_.stats();
   stats_ = RenderStats{};
   stats_.slabs = size_t(s.slices);
+  // In the panel's stages: its tables are the classification, slices and warp the compositing.
+  stats_.classifyMs = s.tableMs;
+  stats_.compositeMs = s.compositeMs + s.warpMs;
   stats_.cpuMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
