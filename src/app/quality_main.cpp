@@ -71,7 +71,12 @@ int run(int argc, char** argv) {
                      [&](const QualityScene& s) { return s.spec == name; }))
       throw std::invalid_argument("--scene " + name +
                                   ": unknown (expected checkerboard:10, zebra:2 or zebra:4)");
-  if (!outputDir.empty()) std::filesystem::create_directories(outputDir);
+  if (!outputDir.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(outputDir, error);
+    if (error || !std::filesystem::is_directory(outputDir))
+      throw std::runtime_error(outputDir + ": cannot create the output folder");
+  }
 
   auto context = platform::createHeadlessContext(platform::parseHeadlessBackend(backend));
   const int limit = std::min(kMaxReferenceSize, maxRenderTargetSize());
