@@ -13,15 +13,11 @@ export LSAN_OPTIONS="suppressions=$here/scripts/lsan.supp:print_suppressions=0"
 # The GLFW window tests leak 112 bytes inside the X11 GL driver, which is unloaded before LSan
 # reports, so no suppression can name it: those tests run without leak checking.
 window_tests='GlfwWindowContext|window_scripted_input'
-# The filter-quality benchmark tests render large supersampled images with the same code the
-# other render tests cover; under ASan they would take most of CI's hour, so they run only in
-# the plain build (scripts/test.sh).
-slow_tests='QualityBenchmark'
 run=(ctest --test-dir "$build" --output-on-failure -j"$(nproc)")
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null; then
   xvfb=(xvfb-run -a -s "-screen 0 1280x800x24")
 else
   xvfb=()
 fi
-"${xvfb[@]}" "${run[@]}" -E "$window_tests|$slow_tests"
+"${xvfb[@]}" "${run[@]}" -E "$window_tests"
 ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0" "${xvfb[@]}" "${run[@]}" -R "$window_tests"
