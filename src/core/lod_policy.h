@@ -20,8 +20,10 @@ class LodPolicy {
   // Level 0 is full quality; each next level is cheaper. The volume factors (2, 4, 8) are the
   // downsampled volumes the viewer keeps.
   // The last one (volume/8, image/4) is for big volumes on slow (software) GL.
-  static constexpr std::array<LodLevel, 6> kLevels{
-      {{1, 1}, {2, 1}, {2, 2}, {4, 2}, {4, 4}, {8, 4}}};
+  // The last, {8, 8}, is for fill-bound views of big volumes on slow GL (llvmpipe): CThead
+  // close up still took ~106 ms a frame at {8, 4}.
+  static constexpr std::array<LodLevel, 7> kLevels{
+      {{1, 1}, {2, 1}, {2, 2}, {4, 2}, {4, 4}, {8, 4}, {8, 8}}};
   static constexpr int kLevelCount = int(kLevels.size());
   // Start at volume/2 and image/2: safe for both splat-bound (big volumes) and fill-bound
   // (magnified small volumes) cases; measurements move it from there.

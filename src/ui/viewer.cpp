@@ -13,7 +13,6 @@
 #include <memory>
 #include <optional>
 
-#include "core/async_splat_builder.h"
 #include "core/camera_path.h"
 #include "core/camera_views.h"
 #include "core/lod_policy.h"
@@ -23,19 +22,18 @@
 #include "io/frame_names.h"
 #include "io/png_io.h"
 #include "io/terminal_progress.h"
-#include "io/transfer_function_io.h"
 #include "platform/glfw_window_context.h"
 #include "render/lod_renderer.h"
 #include "render/renderer_factory.h"
-#include "render/splat_renderer.h"
 #include "ui/camera_controller.h"
 #include "ui/control_panel.h"
 #include "ui/file_dialog.h"
 #include "ui/image_presenter.h"
 #include "ui/imgui_layer.h"
+#include "ui/bookmark_store.h"
 #include "ui/session_panel.h"
 #include "ui/status_messages.h"
-#include "ui/tf_editor.h"
+#include "ui/live_transfer_function.h"
 #include "ui/window_input.h"
 
 namespace ewa {
@@ -148,7 +146,10 @@ class Viewer {
     saved_.slabThickness = settings_.slabThickness;
     saved_.background = settings_.background;
     saved_.levelOfDetail = levelOfDetail_;
-    keepTransferFunction();
+    std::string problem;
+    saved_.lastTransferFunction =
+        liveTf_.keep(config_.configDir, saved_.lastTransferFunction, &problem);
+    if (!problem.empty()) std::cerr << "ewaview: " << problem << "\n";
     try {
       saveViewerSettings(settingsPathIn(config_.configDir), saved_);
       writeFileAtomically(imguiIniPathIn(config_.configDir), imgui_.saveLayout(), true);
@@ -160,7 +161,7 @@ class Viewer {
  private:
   double now() const { return std::chrono::duration<double>(Clock::now() - epoch_).count(); }
   bool busy() const {
-    return loadJob_.running() || turntable_.total > 0 || buildPending_ || splatBuilder_.busy();
+    return loadJob_.running() || turntable_.total > 0 || buildPending_ || liveTf_.building();
   }
   // A coarse image is shown and the quiet time before full quality has passed.
   bool refineDue() const {
@@ -169,7 +170,7 @@ class Viewer {
   }
   double waitSeconds() const {
     if (turntable_.total > 0 || buildPending_) return 0.0;
-    if (splatBuilder_.busy()) return kBuildPollSeconds;
+    if (liveTf_.building()) return kBuildPollSeconds;
     if (hasImage_ && lod_.lastLevel() != 0)
       return std::max(0.0, (policy_.refineDelayMs() - millisecondsSince(lastChange_)) / 1000.0);
     if (loadJob_.running()) return kLoadingWaitSeconds;
@@ -187,17 +188,17 @@ class Viewer {
 
   // Makes `loaded` the volume on screen (the old one stays alive until the renderers let go).
   void adopt(LoadedVolume loaded, bool newCamera) {
-    dropSplatBuild();  // a build may still read the old volume
+    liveTf_.dropBuild();  // a build may still read the old volume
     LoadedVolume old = std::move(current_);
     current_ = std::move(loaded);
     lod_.setVolume(*current_.volume, current_.coarse);
     lod_.setTransferFunction(current_.tf);
     policy_.resetMeasurements();
     panel_.setVolume(current_.name, *current_.volume);
-    tfEditor_ = std::make_unique<TfEditor>(
-        *current_.volume, current_.tf,
-        saved_.lastTransferFunction.empty() ? "transfer_function.json" : saved_.lastTransferFunction);
-    tfEditor_->setPrintLayout(printLayout_);
+    liveTf_.reset(*current_.volume, current_.tf,
+                  saved_.lastTransferFunction.empty() ? "transfer_function.json"
+                                                      : saved_.lastTransferFunction,
+                  printLayout_);
     if (newCamera) {
       const glm::ivec2 fb = window_.framebufferSize();
       Camera camera;
@@ -208,7 +209,8 @@ class Viewer {
       controller_.restart(camera);
     }
     if (!current_.path.empty()) addRecentFile(saved_.recentFiles, current_.path);
-    loadBookmarks();
+    const std::string problem = bookmarks_.open(current_.path, current_.name, config_.configDir);
+    if (!problem.empty()) error(problem);
     hasImage_ = false;
     buildPending_ = true;  // one frame says so before the first (slow) render classifies
   }
@@ -237,45 +239,7 @@ class Viewer {
     adopt(std::move(*loaded), /*newCamera=*/true);
   }
 
-  // Bookmarks beside the volume file, else (read-only folder, synthetic volume) in the config.
-  void loadBookmarks() {
-    bookmarks_.clear();
-    const std::string key = current_.path.empty() ? "synthetic-" + current_.name : current_.path;
-    const std::string beside = current_.path.empty() ? "" : bookmarksPathFor(current_.path);
-    const std::string fallback =
-        config_.configDir.empty() ? "" : fallbackBookmarksPath(key, config_.configDir);
-    bookmarksPath_ = !beside.empty() && (std::filesystem::exists(beside) || fallback.empty() ||
-                                         !std::filesystem::exists(fallback))
-                         ? beside
-                         : fallback;
-    if (bookmarksPath_.empty()) return;
-    try {
-      bookmarks_ = ewa::loadBookmarks(bookmarksPath_);
-    } catch (const std::exception& e) {
-      error(e.what());
-    }
-  }
 
-  void saveBookmarks() {
-    try {
-      ewa::saveBookmarks(bookmarksPath_, bookmarks_);
-      return;
-    } catch (const std::exception& e) {
-      if (config_.configDir.empty()) {
-        error(e.what());
-        return;
-      }
-    }
-    const std::string key = current_.path.empty() ? "synthetic-" + current_.name : current_.path;
-    const std::string fallback = fallbackBookmarksPath(key, config_.configDir);
-    try {
-      ewa::saveBookmarks(fallback, bookmarks_, /*makeParents=*/true);
-      if (fallback != bookmarksPath_) info("volume folder not writable; bookmarks in " + fallback);
-      bookmarksPath_ = fallback;
-    } catch (const std::exception& e) {
-      error(e.what());
-    }
-  }
 
   // Every level's renderer is of the kind settings_.renderer names (the panel switches it).
   LodRenderer::Factory rendererFactory() {
@@ -286,7 +250,7 @@ class Viewer {
   // A new set of renderers when the panel switched the renderer kind.
   void switchRendererIfAsked() {
     if (settings_.renderer == rendererKind_) return;
-    dropSplatBuild();
+    liveTf_.dropBuild();
     lod_ = LodRenderer(rendererFactory());
     lod_.setVolume(*current_.volume, current_.coarse);
     lod_.setTransferFunction(current_.tf);
@@ -312,7 +276,7 @@ class Viewer {
       renderedCamera_ = controller_.revision();
       renderedSettings_ = settingsRevision_;
       renderedSize_ = fb;
-      renderedTf_ = tfRevision_;
+      renderedTf_ = liveTf_.revision();
       return millisecondsSince(start);
     }
     const double ms = millisecondsSince(start);
@@ -320,7 +284,7 @@ class Viewer {
     renderedCamera_ = controller_.revision();
     renderedSettings_ = settingsRevision_;
     renderedSize_ = fb;
-    renderedTf_ = tfRevision_;
+    renderedTf_ = liveTf_.revision();
     frameStats_.render = lod_.last().stats();
     frameStats_.imageWidth = lod_.imageWidth();
     frameStats_.imageHeight = lod_.imageHeight();
@@ -330,55 +294,27 @@ class Viewer {
     return ms;
   }
 
-  // The editor changed the function: the next frame draws it (a coarse level while it keeps
-  // changing, full quality after), the full level's new splat set is built on a worker thread.
-  void transferFunctionEdited() {
-    current_.tf = tfEditor_->transferFunction();
-    if (SplatRenderer* full = lod_.editTransferFunction(current_.tf))
-      splatBuilder_.request(*current_.volume, current_.tf, settings_.classification,
-                            full->maxSplats());
-    ++tfRevision_;
-  }
 
-  // Swaps in a splat set the worker finished; true when one arrived.
+
+
+
+  // Swaps in a splat set the worker finished; true when one arrived. Full quality on screen
+  // is drawn again at once; a coarse picture refines later anyway.
   bool takeBuiltSplats() {
-    try {
-      std::optional<BuiltSplats> built = splatBuilder_.poll();
-      if (!built) return false;
-      // Redraw at once when full quality is on screen; a coarse one refines later anyway.
-      if (lod_.setFullSplats(std::move(built->splats), built->classification))
-        fullSplatsArrived_ = hasImage_ && lod_.lastLevel() == 0;
-    } catch (const std::exception& e) {  // too many visible voxels: say so, keep the old set
-      error(std::string(e.what()) + " (the window keeps running)");
-    }
+    std::string problem;
+    if (!liveTf_.takeBuilt(lod_, &problem)) return false;
+    if (!problem.empty())
+      error(problem + " (the window keeps running)");
+    else
+      fullSplatsArrived_ = hasImage_ && lod_.lastLevel() == 0;
     return true;
   }
 
-  // Waits for a running build and throws its result away (the volume or renderer changes).
-  void dropSplatBuild() {
-    try {
-      splatBuilder_.finish();
-    } catch (const std::exception&) {
-      // Its error is about a set nobody will draw.
-    }
-  }
-
-  // The last transfer function for the settings file: the file last saved or loaded, or, when
-  // it was edited since, a copy of the edits in the settings folder (so they are never lost).
-  void keepTransferFunction() {
-    if (!tfEditor_) return;
-    if (tfEditor_->editedSinceFile()) {
-      const std::string path = (std::filesystem::path(config_.configDir) / "last.tf.json").string();
-      try {
-        saveTransferFunction(path, tfEditor_->transferFunction());
-        saved_.lastTransferFunction = path;
-        std::cerr << "ewaview: unsaved transfer function kept in " << path << "\n";
-      } catch (const std::exception& e) {
-        std::cerr << "ewaview: " << e.what() << "\n";
-      }
-    } else if (!tfEditor_->lastFile().empty()) {
-      saved_.lastTransferFunction = std::filesystem::absolute(tfEditor_->lastFile()).string();
-    }
+  void saveBookmarks() {
+    std::string note;
+    const std::string problem = bookmarks_.save(&note);
+    if (!problem.empty()) error(problem);
+    if (!note.empty()) info(note);
   }
 
   void screenshot(const glm::ivec2& fb) {
@@ -477,13 +413,14 @@ class Viewer {
     if (e.openDialog) openDialog();
     if (e.openPath) startLoad(*e.openPath);
     if (e.addBookmark) {
-      bookmarks_.push_back({*e.addBookmark, controller_.camera()});
+      bookmarks_.list().push_back({*e.addBookmark, controller_.camera()});
       saveBookmarks();
     }
-    if (e.applyBookmark >= 0 && e.applyBookmark < int(bookmarks_.size()))
-      controller_.setCamera(bookmarks_[size_t(e.applyBookmark)].camera);
-    if (e.deleteBookmark >= 0 && e.deleteBookmark < int(bookmarks_.size())) {
-      bookmarks_.erase(bookmarks_.begin() + e.deleteBookmark);
+    std::vector<CameraBookmark>& marks = bookmarks_.list();
+    if (e.applyBookmark >= 0 && e.applyBookmark < int(marks.size()))
+      controller_.setCamera(marks[size_t(e.applyBookmark)].camera);
+    if (e.deleteBookmark >= 0 && e.deleteBookmark < int(marks.size())) {
+      marks.erase(marks.begin() + e.deleteBookmark);
       saveBookmarks();
     }
     if (e.screenshot) *screenshotNow = true;
@@ -498,8 +435,8 @@ class Viewer {
   SessionView sessionView() {
     SessionView v;
     v.recentFiles = &saved_.recentFiles;
-    v.bookmarks = &bookmarks_;
-    v.bookmarksPath = bookmarksPath_;
+    v.bookmarks = &bookmarks_.list();
+    v.bookmarksPath = bookmarks_.path();
     v.loading = loadJob_.running();
     v.loadingPath = loadJob_.path();
     v.loadingSeconds = loadJob_.elapsedSeconds();
@@ -527,7 +464,8 @@ class Viewer {
     if (edits.resetCamera) controller_.reset();
     if (edits.axisView) showAxisView(*edits.axisView, fb);
     if (edits.settings) ++settingsRevision_;
-    if (tfEditor_->draw()) transferFunctionEdited();
+    if (const TransferFunction* tf = liveTf_.drawAndApply(lod_, settings_.classification))
+      current_.tf = *tf;
     switchRendererIfAsked();
     applySessionEdits(session_.draw(sessionView()), fb, &screenshotNow);
     if (const auto chosen = fileDialog_.draw()) startLoad(*chosen);
@@ -535,7 +473,7 @@ class Viewer {
     bool rendered = false;
     const bool stale = !hasImage_ || renderedCamera_ != controller_.revision() ||
                        renderedSettings_ != settingsRevision_ || renderedSize_ != fb ||
-                       renderedTf_ != tfRevision_;
+                       renderedTf_ != liveTf_.revision();
     if (turntable_.total > 0) {
       turntableFrame(fb);
       rendered = true;
@@ -599,13 +537,11 @@ class Viewer {
   ImGuiLayer imgui_;
   ControlPanel panel_;
   SessionPanel session_;
-  std::unique_ptr<TfEditor> tfEditor_;  // made per volume (it holds the histogram)
-  AsyncSplatBuilder splatBuilder_;      // after current_: destroyed first, joining its worker
+  LiveTransferFunction liveTf_;  // after current_ and lod_: its worker ends before they go
   FileDialog fileDialog_;
   StatusMessages messages_;
   VolumeLoadJob loadJob_;
-  std::vector<CameraBookmark> bookmarks_;
-  std::string bookmarksPath_;
+  BookmarkStore bookmarks_;
   WindowTurntable turntable_;
   std::string recorded_;  // camera path lines, when recording
 
@@ -613,7 +549,6 @@ class Viewer {
   bool levelOfDetail_ = true;
   bool printLayout_ = false;
   bool fullSplatsArrived_ = false;
-  uint64_t tfRevision_ = 0;
   uint64_t renderedTf_ = 0;
   bool hasNvx_ = false;
   bool buildPending_ = false;

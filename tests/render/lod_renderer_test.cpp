@@ -73,8 +73,9 @@ TEST_F(LodRendererTest, LevelsShrinkImageAndSplatsButKeepThePicture) {
     // the full-quality brightness and a modest mean difference per pixel.
     EXPECT_NEAR(meanValue(coarse), meanValue(full), 0.15 * meanValue(full)) << level;
     // Compared pixel by pixel after nearest upscaling, so 16x16 images (divisor 4) are blocky,
-    // and the last level holds this 32^3 sphere in 4^3 voxels: a wider blob.
-    const double allowed = l.imageDivisor >= 4 ? 0.7 : 0.25;
+    // and the last levels hold this 32^3 sphere in 4^3 voxels: a wider blob; at divisor 8 the
+    // image is 8x8, so only a blank or misplaced picture fails (the brightness check above holds).
+    const double allowed = l.imageDivisor >= 8 ? 0.9 : l.imageDivisor >= 4 ? 0.7 : 0.25;
     EXPECT_LT(meanDifference(full, coarse), allowed * meanValue(full)) << level;
     writePng(testOutputDir() + "/lod_level" + std::to_string(level) + ".png", coarse);
   }
