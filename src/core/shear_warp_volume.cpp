@@ -9,11 +9,11 @@ namespace ewa {
 
 namespace {
 
-// In-place running min (or max) over [x, x + reach] along one axis of an x-fastest grid,
-// clamped at the end: a separable pass of a box filter.
+// In-place running min (or max) along one axis of an x-fastest grid over [x, x + reach]
+// (step +1) or [x - reach, x] (step -1), clamped at the ends: a separable pass of a box filter.
 template <typename Op>
-void extendForward(std::vector<uint8_t>& a, const std::array<int64_t, 3>& d, int axis, int reach,
-                   Op op) {
+void extend(std::vector<uint8_t>& a, const std::array<int64_t, 3>& d, int axis, int reach,
+            int step, Op op) {
   const int64_t stride = axis == 0 ? 1 : axis == 1 ? d[0] : d[0] * d[1];
   const int64_t n = d[axis];
   const int64_t total = d[0] * d[1] * d[2];
@@ -23,26 +23,11 @@ void extendForward(std::vector<uint8_t>& a, const std::array<int64_t, 3>& d, int
       for (int64_t x = 0; x < n; ++x) line[x] = a[base + x * stride];
       for (int64_t x = 0; x < n; ++x) {
         uint8_t v = line[x];
-        for (int r = 1; r <= reach && x + r < n; ++r) v = op(v, line[x + r]);
-        a[base + x * stride] = v;
-      }
-    }
-}
-
-// The same, backwards: over [x - reach, x].
-template <typename Op>
-void extendBackward(std::vector<uint8_t>& a, const std::array<int64_t, 3>& d, int axis, int reach,
-                    Op op) {
-  const int64_t stride = axis == 0 ? 1 : axis == 1 ? d[0] : d[0] * d[1];
-  const int64_t n = d[axis];
-  const int64_t total = d[0] * d[1] * d[2];
-  std::vector<uint8_t> line(n);
-  for (int64_t outer = 0; outer < total; outer += stride * n)
-    for (int64_t base = outer; base < outer + stride; ++base) {
-      for (int64_t x = 0; x < n; ++x) line[x] = a[base + x * stride];
-      for (int64_t x = 0; x < n; ++x) {
-        uint8_t v = line[x];
-        for (int r = 1; r <= reach && x - r >= 0; ++r) v = op(v, line[x - r]);
+        for (int r = 1; r <= reach; ++r) {
+          const int64_t y = x + int64_t(step) * r;
+          if (y < 0 || y >= n) break;
+          v = op(v, line[y]);
+        }
         a[base + x * stride] = v;
       }
     }
@@ -78,17 +63,17 @@ void ShearWarpVolume::setVolume(const Volume& volume, double lo, double hi, int 
   }
   // Cell (x, y, z) spans voxels x..x+1, y..y+1, z..z+1.
   for (int axis = 0; axis < 3; ++axis) {
-    extendForward(cellLo_, dims_, axis, 1, kMin);
-    extendForward(cellHi_, dims_, axis, 1, kMax);
+    extend(cellLo_, dims_, axis, 1, +1, kMin);
+    extend(cellHi_, dims_, axis, 1, +1, kMax);
   }
   // Wide cells span x-1..x+2: the cells x-1..x+1.
   wideLo_ = cellLo_;
   wideHi_ = cellHi_;
   for (int axis = 0; axis < 3; ++axis) {
-    extendForward(wideLo_, dims_, axis, 1, kMin);
-    extendBackward(wideLo_, dims_, axis, 1, kMin);
-    extendForward(wideHi_, dims_, axis, 1, kMax);
-    extendBackward(wideHi_, dims_, axis, 1, kMax);
+    extend(wideLo_, dims_, axis, 1, +1, kMin);
+    extend(wideLo_, dims_, axis, 1, -1, kMin);
+    extend(wideHi_, dims_, axis, 1, +1, kMax);
+    extend(wideHi_, dims_, axis, 1, -1, kMax);
   }
 }
 

@@ -84,9 +84,9 @@ ViewerSettings viewerSettingsFromJson(const std::string& text, const std::string
       if (parseFilterMode(r.value("filter", std::string("ewa")), &filter)) s.filter = filter;
       const std::string mode = r.value("mode", std::string("composite"));
       if (mode == "composite" || mode == "xray" || mode == "mip") s.renderMode = mode;
-      const double cutoff = r.value("cutoff", 4.0);
+      const double cutoff = r.value("cutoff", s.cutoff);
       if (std::isfinite(cutoff)) s.cutoff = std::clamp(cutoff, 0.25, 64.0);
-      const double slab = r.value("slab_thickness", 2.0);
+      const double slab = r.value("slab_thickness", s.slabThickness);
       if (std::isfinite(slab)) s.slabThickness = std::clamp(slab, 0.05, 1000.0);
       if (r.contains("background")) {
         const auto bg = r.at("background").get<std::vector<double>>();
