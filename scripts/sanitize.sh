@@ -19,5 +19,7 @@ if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null; then
 else
   xvfb=()
 fi
-"${xvfb[@]}" "${run[@]}" -E "$window_tests"
-ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0" "${xvfb[@]}" "${run[@]}" -R "$window_tests"
+# CTest's output is kept in $build/ctest.log too: .ci/run counts the skipped tests from it.
+"${xvfb[@]}" "${run[@]}" -E "$window_tests" | tee "$build/ctest.log"
+ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0" "${xvfb[@]}" "${run[@]}" -R "$window_tests" |
+  tee -a "$build/ctest.log"

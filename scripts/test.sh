@@ -6,8 +6,9 @@ cd "$(dirname "$0")/.."
 build="${1:-build}"
 scripts/setup.sh "$build"
 run=(ctest --test-dir "$build" --output-on-failure -j"$(nproc)")
+# CTest's output is kept in $build/ctest.log too: .ci/run counts the skipped tests from it.
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null; then
-  xvfb-run -a -s "-screen 0 1280x800x24" "${run[@]}"
+  xvfb-run -a -s "-screen 0 1280x800x24" "${run[@]}" | tee "$build/ctest.log"
 else
-  "${run[@]}"
+  "${run[@]}" | tee "$build/ctest.log"
 fi

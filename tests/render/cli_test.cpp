@@ -6,44 +6,16 @@
 #include <fstream>
 #include <sstream>
 
+#include "ci_skip.h"
+#include "cli_run.h"
 #include "image_compare.h"
 #include "io/png_io.h"
 
 namespace ewa::test {
 namespace {
 
-struct CliRun {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
 CliRun ewaview(const std::string& args) {
-  const std::string dir = testOutputDir();
-  // CTest runs each test as its own process, in parallel: name the capture files per test.
-  const std::string stem =
-      dir + "/cli_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  const std::string out = stem + ".out", err = stem + ".err";
-  const std::string cmd =
-      std::string(EWA_BINARY) + " " + args + " >" + out + " 2>" + err + " </dev/null";
-  const int status = std::system(cmd.c_str());
-  CliRun r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
-
-int lineCount(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
+  return runEwaview(args, "cli");
 }
 
 TEST(Cli, VersionAndHelpExitZero) {
@@ -109,7 +81,7 @@ TEST(Cli, HeadlessOutputOnBothBackendsAndTheDefaultAsset) {
   EXPECT_EQ(ia.width, 64);
   EXPECT_EQ(ia.height, 48);
   r = ewaview("--synthetic sphere:16 --resolution 64,48 --backend egl --output " + b);
-  if (r.code != 0 && r.err.find("EGL") != std::string::npos) GTEST_SKIP() << r.err;
+  if (r.code != 0 && r.err.find("EGL") != std::string::npos) EWA_SKIP_UNLESS_CI() << r.err;
   ASSERT_EQ(r.code, 0) << r.err;
   const Image8 ib = readPng(b);
   ASSERT_EQ(ia.pixels.size(), ib.pixels.size());

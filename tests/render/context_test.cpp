@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ci_skip.h"
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
 #include "gl/gl_error.h"
@@ -116,7 +117,7 @@ class HeadlessContextTest : public ::testing::TestWithParam<HeadlessBackend> {
   void SetUp() override {
     std::string skipReason;
     context_ = makeContext(GetParam(), skipReason);
-    if (!context_) GTEST_SKIP() << skipReason;
+    if (!context_) EWA_SKIP_UNLESS_CI() << skipReason;
   }
 
   std::unique_ptr<GlContext> context_;
@@ -276,7 +277,7 @@ TEST(HeadlessContexts, OsMesaAndEglInOneProcess) {
   auto osmesa = makeContext(HeadlessBackend::OsMesa, skipReason);
   expectTestFill(renderTestFill());
   auto egl = makeContext(HeadlessBackend::Egl, skipReason);
-  if (!egl) GTEST_SKIP() << skipReason;
+  if (!egl) EWA_SKIP_UNLESS_CI() << skipReason;
   expectTestFill(renderTestFill());
   osmesa->makeCurrent();
   expectTestFill(renderTestFill());
@@ -300,7 +301,7 @@ TEST(HeadlessContexts, ParsesBackendNames) {
 TEST(GlfwWindowContext, OpensHiddenWindowWith45Core) {
   const char* display = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
-  if (!(display && *display) && !(wayland && *wayland)) GTEST_SKIP() << "no display";
+  if (!(display && *display) && !(wayland && *wayland)) EWA_SKIP_UNLESS_CI() << "no display";
   platform::WindowOptions options;
   options.width = 64;
   options.height = 48;

@@ -8,24 +8,14 @@
 #include <fstream>
 #include <sstream>
 
+#include "ci_skip.h"
+#include "cli_run.h"
 #include "image_compare.h"
 
 namespace ewa::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CliResult {
-  int code = -1;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
 
 // A per-test scratch folder under the test output folder.
 fs::path scratch() {
@@ -37,18 +27,9 @@ fs::path scratch() {
   return dir;
 }
 
-CliResult ewaview(const fs::path& dir, const std::string& args) {
-  const std::string err = (dir / "stderr.txt").string();
-  const std::string cmd =
-      "timeout 60 " + std::string(EWA_BINARY) + " " + args + " >/dev/null 2>" + err + " </dev/null";
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(err)};
-}
-
-int lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
+// `timeout`: were an error missed, the window would wait for a user for ever.
+CliRun ewaview(const fs::path& dir, const std::string& args) {
+  return runEwaview(args, "gl_fault", 60);
 }
 
 // A copy of shaders/ in `dir` with the text `from` in `file` replaced by `to`.
@@ -56,7 +37,7 @@ fs::path brokenShaders(const fs::path& dir, const std::string& file, const std::
                        const std::string& to) {
   const fs::path shaders = dir / "shaders";
   if (!fs::exists(shaders)) fs::copy(EWA_SOURCE_SHADER_DIR, shaders);
-  std::string text = slurp(shaders / file);
+  std::string text = readWholeFile(shaders / file);
   const size_t at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from << " not in " << file;
   if (at != std::string::npos) text.replace(at, from.size(), to);
@@ -69,10 +50,10 @@ TEST(GlFaults, ShaderCompileErrorIsOneLineWithTheGlLogAndExitOne) {
   const fs::path shaders =
       brokenShaders(dir, "final_composite.frag.glsl", "void main", "int broken = ;\nvoid main");
   const fs::path out = dir / "x.png";
-  const CliResult r = ewaview(dir, "--synthetic sphere:8 --resolution 16,16 --shader-dir " +
-                                       shaders.string() + " --output " + out.string());
+  const CliRun r = ewaview(dir, "--synthetic sphere:8 --resolution 16,16 --shader-dir " +
+                                    shaders.string() + " --output " + out.string());
   EXPECT_EQ(r.code, 1);
-  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("cannot compile fragment shader"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("final_composite.frag.glsl"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("error"), std::string::npos) << "no GL log: " << r.err;
@@ -87,35 +68,35 @@ TEST(GlFaults, ShaderLinkErrorIsOneLineWithTheGlLogAndExitOne) {
       "  outColor = vec4(clamp(rgb, 0.0, 1.0), neverDefined(1.0));");
   brokenShaders(dir, "final_composite.frag.glsl", "void main",
                 "float neverDefined(float x);\nvoid main");
-  const CliResult r = ewaview(dir, "--synthetic sphere:8 --resolution 16,16 --shader-dir " +
-                                       shaders.string() + " --output " + (dir / "x.png").string());
+  const CliRun r = ewaview(dir, "--synthetic sphere:8 --resolution 16,16 --shader-dir " +
+                                    shaders.string() + " --output " + (dir / "x.png").string());
   EXPECT_EQ(r.code, 1);
-  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("cannot link program"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("neverDefined"), std::string::npos) << "no GL log: " << r.err;
 }
 
 TEST(GlFaults, WindowWithABrokenShaderSaysSoAndExitsOne) {
   const char* display = std::getenv("DISPLAY");
-  if (!display || !*display) GTEST_SKIP() << "no display";
+  if (!display || !*display) EWA_SKIP_UNLESS_CI() << "no display";
   const fs::path dir = scratch();
   const fs::path shaders =
       brokenShaders(dir, "splat.frag.glsl", "void main", "int broken = ;\nvoid main");
   // `timeout`: were the error missed, the window would wait for a user for ever.
-  const CliResult r =
+  const CliRun r =
       ewaview(dir, "--synthetic sphere:8 --resolution 64,64 --shader-dir " + shaders.string());
   EXPECT_EQ(r.code, 1) << r.err;
-  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("splat.frag.glsl"), std::string::npos) << r.err;
 }
 
 TEST(GlFaults, MissingShaderFolderIsOneLine) {
   const fs::path dir = scratch();
-  const CliResult r =
+  const CliRun r =
       ewaview(dir, "--synthetic sphere:8 --resolution 16,16 --shader-dir " +
                        (dir / "nowhere").string() + " --output " + (dir / "x.png").string());
   EXPECT_EQ(r.code, 1);
-  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("nowhere"), std::string::npos) << r.err;
 }
 
@@ -127,31 +108,30 @@ TEST(GlFaults, OutputNamingAnInputIsRefusedAndTheInputKept) {
     f << "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\n";
     f.write("\x00\x10\x20\x30\x40\x50\x60\x70", 8);
   }
-  const std::string before = slurp(volume);
-  CliResult r = ewaview(dir, volume.string() + " --resolution 16,16 --output " + volume.string());
+  const std::string before = readWholeFile(volume);
+  CliRun r = ewaview(dir, volume.string() + " --resolution 16,16 --output " + volume.string());
   EXPECT_EQ(r.code, 1);
-  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("refusing to overwrite"), std::string::npos) << r.err;
   // Another spelling of the same file is caught too.
   r = ewaview(dir,
               volume.string() + " --resolution 16,16 --output " + (dir / "." / "v.nrrd").string());
   EXPECT_EQ(r.code, 1);
-  EXPECT_EQ(slurp(volume), before);
+  EXPECT_EQ(readWholeFile(volume), before);
   // A transfer-function input as well.
   const fs::path tf = dir / "t.tf.json";
   std::ofstream(tf) << R"({"opacity": [[0, 0], [255, 1]]})";
   r = ewaview(dir, volume.string() + " --tf " + tf.string() + " --resolution 16,16 --output " +
                        tf.string());
   EXPECT_EQ(r.code, 1);
-  EXPECT_NE(slurp(tf).find("opacity"), std::string::npos);
+  EXPECT_NE(readWholeFile(tf).find("opacity"), std::string::npos);
 }
 
 TEST(GlFaults, ScreenshotReplacesAFileWholeAndLeavesNoTemporaryFile) {
   const fs::path dir = scratch();
   const fs::path out = dir / "shot.png";
   std::ofstream(out) << "old contents";
-  const CliResult r =
-      ewaview(dir, "--synthetic sphere:8 --resolution 16,12 --output " + out.string());
+  const CliRun r = ewaview(dir, "--synthetic sphere:8 --resolution 16,12 --output " + out.string());
   ASSERT_EQ(r.code, 0) << r.err;
   const Image8 img = readPng(out.string());
   EXPECT_EQ(img.width, 16);
@@ -161,10 +141,10 @@ TEST(GlFaults, ScreenshotReplacesAFileWholeAndLeavesNoTemporaryFile) {
     files += entry.path().filename() != "stderr.txt";
   EXPECT_EQ(files, 1) << "a temporary file was left beside the screenshot";
   // An output folder that does not exist: one line, nothing created.
-  const CliResult bad = ewaview(dir, "--synthetic sphere:8 --resolution 16,12 --output " +
-                                         (dir / "no" / "such" / "x.png").string());
+  const CliRun bad = ewaview(dir, "--synthetic sphere:8 --resolution 16,12 --output " +
+                                      (dir / "no" / "such" / "x.png").string());
   EXPECT_EQ(bad.code, 1);
-  EXPECT_EQ(lines(bad.err), 1) << bad.err;
+  EXPECT_EQ(lineCount(bad.err), 1) << bad.err;
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // Shared set-up for renderer tests: context, shaders, renderer; small volume builders.
 #include "render_fixture.h"
 
+#include "ci_skip.h"
+
 namespace ewa::test {
 
 std::unique_ptr<platform::GlContext>& RenderFixture::context() {
@@ -31,7 +33,7 @@ void RenderFixture::TearDownTestSuite() {
 }
 
 void RenderFixture::SetUp() {
-  if (!renderer()) GTEST_SKIP() << "no OpenGL 4.5 context: " << skipReason();
+  if (!renderer()) EWA_SKIP_UNLESS_CI() << "no OpenGL 4.5 context: " << skipReason();
   context()->makeCurrent();
   renderer()->setPointSizeLimit(1e9f);
 }

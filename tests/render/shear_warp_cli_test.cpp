@@ -5,47 +5,19 @@
 #include <fstream>
 #include <sstream>
 
+#include "cli_run.h"
 #include "image_compare.h"
 #include "io/png_io.h"
 
 namespace ewa::test {
 namespace {
 
-struct CliResult {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-// Runs ewaview with `args`, capturing output in files named after the test (CTest runs tests
-// in parallel).
-CliResult ewaview(const std::string& args) {
-  const std::string stem =
-      testOutputDir() + "/swcli_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  const std::string cmd =
-      std::string(EWA_BINARY) + " " + args + " >" + stem + ".out 2>" + stem + ".err </dev/null";
-  const int status = std::system(cmd.c_str());
-  CliResult r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(stem + ".out");
-  r.err = slurp(stem + ".err");
-  return r;
-}
-
-int lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
+CliRun ewaview(const std::string& args) {
+  return runEwaview(args, "swcli");
 }
 
 TEST(ShearWarpCli, HelpListsTheOptions) {
-  const CliResult r = ewaview("--help");
+  const CliRun r = ewaview("--help");
   EXPECT_EQ(r.code, 0);
   for (const char* opt : {"--renderer", "--preintegrated", "--table-lookup", "--opacity-correction",
                           "--buffer-slices"})
@@ -56,18 +28,18 @@ TEST(ShearWarpCli, BadValuesAreUsageErrors) {
   for (const char* args : {"--renderer raytrace", "--renderer shearwarp --table-lookup cubic",
                            "--renderer shearwarp --opacity-correction maybe",
                            "--renderer shearwarp --buffer-slices both"}) {
-    const CliResult r = ewaview(std::string("--synthetic sphere:8 ") + args);
+    const CliRun r = ewaview(std::string("--synthetic sphere:8 ") + args);
     EXPECT_EQ(r.code, 2) << args;
-    EXPECT_EQ(lines(r.err), 1) << args << ": " << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << args << ": " << r.err;
   }
 }
 
 TEST(ShearWarpCli, RendersHeadlessAndSaysPerspectiveIsDrawnParallel) {
   const std::string dir = testOutputDir();
   const std::string common = "--synthetic sphere:24 --renderer shearwarp --resolution 64,48 ";
-  CliResult r = ewaview(common + "--output " + dir + "/sw_persp.png");
+  CliRun r = ewaview(common + "--output " + dir + "/sw_persp.png");
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("parallel"), std::string::npos) << r.err;
   r = ewaview(common +
               "--camera-orthographic --preintegrated --table-lookup bilinear "

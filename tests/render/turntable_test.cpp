@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "cli_run.h"
 #include "image_compare.h"
 #include "io/png_io.h"
 
@@ -14,21 +15,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct ToolRun {
-  int code = -1;
-  std::string err;
-};
-
-// Runs ewaview with `args`; stderr goes to a file named after the test.
-ToolRun ewaview(const std::string& args) {
-  const std::string err = testOutputDir() + "/turntable_" +
-                          ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".err";
-  const int status = std::system(
-      (std::string(EWA_BINARY) + " " + args + " >/dev/null 2>" + err + " </dev/null").c_str());
-  std::ifstream f(err);
-  std::stringstream s;
-  s << f.rdbuf();
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, s.str()};
+CliRun ewaview(const std::string& args) {
+  return runEwaview(args, "turntable");
 }
 
 // A fresh folder for one test's frames.
@@ -54,8 +42,8 @@ const std::string kScene =
 
 TEST(Turntable, PatternFramesMatchSinglePicturesFromTheOrbitedCameras) {
   const std::string dir = freshDir("turntable_pattern");
-  ToolRun r = ewaview(kScene + "--camera-position 11.5,11.5,71.5 --turntable 4 --output " + dir +
-                      "/tt_%02d.png");
+  CliRun r = ewaview(kScene + "--camera-position 11.5,11.5,71.5 --turntable 4 --output " + dir +
+                     "/tt_%02d.png");
   ASSERT_EQ(r.code, 0) << r.err;
   for (int f = 0; f < 4; ++f)
     EXPECT_TRUE(fs::exists(dir + "/tt_0" + std::to_string(f) + ".png")) << f;
@@ -79,7 +67,7 @@ TEST(Turntable, PatternFramesMatchSinglePicturesFromTheOrbitedCameras) {
 
 TEST(Turntable, FolderOutputNamesFramesInOrder) {
   const std::string dir = freshDir("turntable_folder") + "/frames";
-  const ToolRun r =
+  const CliRun r =
       ewaview("--synthetic sphere:12 --resolution 24,24 --turntable 3 --output " + dir);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;  // no progress noise when stderr is not a terminal
@@ -92,7 +80,7 @@ TEST(Turntable, FolderOutputNamesFramesInOrder) {
 
 TEST(Turntable, BadUseIsOneLineAndNonZero) {
   const std::string dir = freshDir("turntable_bad");
-  ToolRun r = ewaview("--synthetic sphere:8 --turntable 3");
+  CliRun r = ewaview("--synthetic sphere:8 --turntable 3");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--turntable needs --output"), std::string::npos) << r.err;
   r = ewaview("--synthetic sphere:8 --turntable 3 --output " + dir + "/t_%s.png");

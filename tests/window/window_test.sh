@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
 # Scripted window test: starts the real ewaview under X, replays an orbit drag, a scroll zoom and
 # a transfer-function drag with xdotool, and checks the screenshots change as they should.
-# Usage: window_test.sh EWAVIEW_BINARY OUTPUT_DIR.  Exit 77 (CTest skip) without X tools.
+# Usage: window_test.sh EWAVIEW_BINARY OUTPUT_DIR.  Exit 77 (CTest skip) without X tools, or
+# exit 1 when CI=true: CI must not pass by skipping.
 set -uo pipefail
 binary="$(realpath "$1")"
 out="$2"
 here="$(cd "$(dirname "$0")" && pwd)"
-skip() { echo "SKIP: $*"; exit 77; }
+skip() {
+  case "${CI:-}" in
+    "" | 0 | false) echo "SKIP (would fail with CI=true): $*"; exit 77 ;;
+    *) echo "FAIL: CI=true and the window test cannot run: $*"; exit 1 ;;
+  esac
+}
 for tool in xdotool import compare convert; do
   command -v "$tool" >/dev/null || skip "$tool not installed (scripts/setup.sh installs it)"
 done

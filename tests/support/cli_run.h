@@ -1,0 +1,26 @@
+// Runs the ewaview program as a user does and captures its exit status and output: the one
+// command-line runner of the render tests.
+#pragma once
+
+#include <string>
+
+namespace ewa::test {
+
+struct CliRun {
+  int code = -1;  // exit status; -1 when killed by a signal
+  std::string out, err;
+};
+
+// Runs `EWA_BINARY args` (args as a shell would split them) with stdin closed, stopped after
+// `timeoutSeconds` (a hung program fails the test instead of hanging CTest). Output is captured
+// in files named `prefix_TESTNAME` in the test output folder, since CTest runs tests in parallel.
+CliRun runEwaview(const std::string& args, const std::string& prefix = "cli",
+                  int timeoutSeconds = 300);
+
+// Whole file as a string ("" when it cannot be read).
+std::string readWholeFile(const std::string& path);
+
+// Number of '\n' in `s`: errors must be one line.
+int lineCount(const std::string& s);
+
+}  // namespace ewa::test
