@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <array>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -38,7 +39,7 @@ TEST(LoaderErrors, MissingFileAndDirectory) {
       [&] { loadRawVolume(dir.path("folder.nrrd"), parseRawOptions("1,1,1", "", "", "")); },
       dir.path("folder.nrrd"), "directory");
   expectVolumeLoadError(dir.path("missing/x.mhd"), "no such file");
-  expectVolumeLoadError("", "");
+  expectVolumeLoadError("", "empty file name");
 }
 
 TEST(LoaderErrors, FifoDoesNotHang) {
@@ -91,13 +92,20 @@ TEST(LoaderErrors, NrrdTruncatedAndTooLargeSizes) {
 
 TEST(LoaderErrors, NrrdBadSizesText) {
   TempDir dir;
-  for (const char* sizes : {"0 3 4", "2 -3 4", "2 abc 4", "2 3.5 4", "2 3", "2 3 4 5", ""}) {
+  const std::pair<const char*, const char*> cases[] = {{"0 3 4", "must all be positive"},
+                                                       {"2 -3 4", "must all be positive"},
+                                                       {"2 abc 4", "bad sizes"},
+                                                       {"2 3.5 4", "bad sizes"},
+                                                       {"2 3", "has 2 values"},
+                                                       {"2 3 4 5", "has 4 values"},
+                                                       {"", "missing sizes"}};
+  for (const auto& [sizes, problem] : cases) {
     const std::string path = dir.write(
         "s.nrrd",
         nrrd("type: uchar\ndimension: 3\nsizes: " + std::string(sizes) + "\nencoding: raw\n\n") +
             kData24);
     SCOPED_TRACE(sizes);
-    expectVolumeLoadError(path);
+    expectVolumeLoadError(path, problem);
   }
 }
 
@@ -186,17 +194,25 @@ TEST(LoaderErrors, NrrdCorruptGzip) {
   EXPECT_NO_THROW(loadVolume(dir.write("g6.nrrd", head + good + "trailing junk")));
   std::string flipped = good;
   flipped[flipped.size() / 2] = static_cast<char>(flipped[flipped.size() / 2] ^ 0x55);
-  expectVolumeLoadError(dir.write("g7.nrrd", head + flipped));
-  expectVolumeLoadError(dir.write("g8.nrrd", head), "");
+  expectVolumeLoadError(dir.write("g7.nrrd", head + flipped), "corrupt");
+  expectVolumeLoadError(dir.write("g8.nrrd", head), "inflates to only 0 bytes");
 }
 
 TEST(LoaderErrors, GarbageTextInEveryFormat) {
   TempDir dir;
   const std::string garbage = "Lorem ipsum dolor sit amet\n\x01\x02\xff\xfe\n<<<>>>\n= : = :\n";
-  for (const std::string ext : {".nrrd", ".nhdr", ".mhd", ".mha", ".dat", ".vti"}) {
+  // Each format names what is wrong: {extension, for garbage, for an empty file}.
+  const std::vector<std::array<std::string, 3>> cases = {
+      {".nrrd", "not a NRRD file", "not a NRRD file"},
+      {".nhdr", "not a NRRD file", "not a NRRD file"},
+      {".mhd", "malformed header line", "no ElementDataFile"},
+      {".mha", "malformed header line", "no ElementDataFile"},
+      {".dat", "malformed header line", "missing ObjectFileName"},
+      {".vti", "malformed XML", "not a VTK XML file"}};
+  for (const auto& [ext, garbageProblem, emptyProblem] : cases) {
     SCOPED_TRACE(ext);
-    expectVolumeLoadError(dir.write("garbage" + ext, garbage));
-    expectVolumeLoadError(dir.write("empty" + ext, ""));
+    expectVolumeLoadError(dir.write("garbage" + ext, garbage), garbageProblem);
+    expectVolumeLoadError(dir.write("empty" + ext, ""), emptyProblem);
   }
 }
 
@@ -300,7 +316,8 @@ TEST(LoaderErrors, VtiProblems) {
                         "components");
   expectVolumeLoadError(dir.write("e.vti", vti("", ok, raw, "0 1 5 2 0 3")), "extent");
   expectVolumeLoadError(
-      dir.write("f.vti", vti("", "type=\"UInt8\" format=\"appended\" offset=\"999999\"", raw)), "");
+      dir.write("f.vti", vti("", "type=\"UInt8\" format=\"appended\" offset=\"999999\"", raw)),
+      "points past the end");
   expectVolumeLoadError(dir.write("g.vti", vti("", ok, uintBytes(25, 4) + kData24)),
                         "holds 25 bytes");
   const std::string cut = vti("", ok, raw);
@@ -310,10 +327,11 @@ TEST(LoaderErrors, VtiProblems) {
   expectVolumeLoadError(dir.write("j.vti", "<VTKFile type=\"PolyData\"></VTKFile>"),
                         "not ImageData");
   expectVolumeLoadError(
-      dir.write("k.vti", "<VTKFile type=\"ImageData\"><ImageData WholeExtent=\"0 1"), "");
+      dir.write("k.vti", "<VTKFile type=\"ImageData\"><ImageData WholeExtent=\"0 1"),
+      "unterminated value");
   expectVolumeLoadError(dir.write("l.vti", "<VTKFile type=\"ImageData\" a=b></VTKFile>"), "quoted");
   expectVolumeLoadError(
-      dir.write("m.vti", vti("", ok, raw, "0 4294967295 0 4294967295 0 4294967295")), "");
+      dir.write("m.vti", vti("", ok, raw, "0 4294967295 0 4294967295 0 4294967295")), "overflow");
   const std::string zl = "compressor=\"vtkZLibDataCompressor\"";
   // nblocks far beyond the data, a block table that overflows, compressed sizes past the end.
   expectVolumeLoadError(
@@ -336,19 +354,24 @@ TEST(LoaderErrors, VtiProblems) {
                                                    uintBytes(0, 4) + uintBytes(packed.size(), 4) +
                                                    uintBytes(packed.size(), 4) + packed + packed)),
                         "does not hold");
-  expectVolumeLoadError(dir.write("r.vti", vti("", "type=\"UInt8\" format=\"binary\"", "")), "");
+  expectVolumeLoadError(dir.write("r.vti", vti("", "type=\"UInt8\" format=\"binary\"", "")),
+                        "decoded data has only 0 bytes");
 }
 
 TEST(LoaderErrors, RawOptionsAndRawFiles) {
-  expectLoadError([] { parseRawOptions("", "uint8", "", ""); }, "--raw-dims");
-  expectLoadError([] { parseRawOptions("1,2", "uint8", "", ""); }, "--raw-dims");
-  expectLoadError([] { parseRawOptions("1,0,2", "uint8", "", ""); }, "--raw-dims");
-  expectLoadError([] { parseRawOptions("1,a,2", "uint8", "", ""); }, "--raw-dims");
-  expectLoadError([] { parseRawOptions("1,2,3", "double", "", ""); }, "--raw-type");
-  expectLoadError([] { parseRawOptions("1,2,3", "uint8", "1,x,1", ""); }, "--raw-spacing");
-  expectLoadError([] { parseRawOptions("1,2,3", "uint8", "1,-1,1", ""); }, "--raw-spacing");
-  expectLoadError([] { parseRawOptions("1,2,3", "uint8", "1,1", ""); }, "--raw-spacing");
-  expectLoadError([] { parseRawOptions("1,2,3", "uint8", "", "middle"); }, "--raw-endian");
+  expectLoadError([] { parseRawOptions("", "uint8", "", ""); }, "--raw-dims", "missing");
+  expectLoadError([] { parseRawOptions("1,2", "uint8", "", ""); }, "--raw-dims", "three sizes");
+  expectLoadError([] { parseRawOptions("1,0,2", "uint8", "", ""); }, "--raw-dims", "positive");
+  expectLoadError([] { parseRawOptions("1,a,2", "uint8", "", ""); }, "--raw-dims", "integers");
+  expectLoadError([] { parseRawOptions("1,2,3", "double", "", ""); }, "--raw-type", "unknown type");
+  expectLoadError([] { parseRawOptions("1,2,3", "uint8", "1,x,1", ""); }, "--raw-spacing",
+                  "numbers");
+  expectLoadError([] { parseRawOptions("1,2,3", "uint8", "1,-1,1", ""); }, "--raw-spacing",
+                  "positive");
+  expectLoadError([] { parseRawOptions("1,2,3", "uint8", "1,1", ""); }, "--raw-spacing",
+                  "one value");
+  expectLoadError([] { parseRawOptions("1,2,3", "uint8", "", "middle"); }, "--raw-endian",
+                  "little or big");
   TempDir dir;
   const std::string path = dir.write("r.raw", kData24);
   expectLoadError([&] { loadRawVolume(path, parseRawOptions("2,3,5", "uint8", "", "")); }, path,

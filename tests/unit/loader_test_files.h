@@ -102,8 +102,10 @@ inline std::string uintBytes(uint64_t v, int width, bool bigEndian = false) {
 
 // Expects `load` to throw a LoadError whose one-line message starts with "<path>: " and
 // contains `fragment` (when not empty).
+// `fragment` names the expected problem: a test that accepts any message would pass a loader
+// that fails for the wrong reason.
 inline void expectLoadError(const std::function<void()>& load, const std::string& path,
-                            const std::string& fragment = "") {
+                            const std::string& fragment) {
   try {
     load();
     ADD_FAILURE() << "no LoadError for " << path;
@@ -113,16 +115,15 @@ inline void expectLoadError(const std::function<void()>& load, const std::string
     if (std::getenv("EWA_SHOW_LOAD_ERRORS")) std::printf("  LoadError: %s\n", msg.c_str());
     EXPECT_EQ(msg.rfind(path + ": ", 0), 0u) << "message does not start with the path: " << msg;
     EXPECT_EQ(msg.find('\n'), std::string::npos) << "message is not one line: " << msg;
-    if (!fragment.empty()) {
-      EXPECT_NE(msg.find(fragment), std::string::npos)
-          << "message lacks '" << fragment << "': " << msg;
-    }
+    EXPECT_FALSE(fragment.empty()) << "the test must name the expected problem";
+    EXPECT_NE(msg.find(fragment), std::string::npos)
+        << "message lacks '" << fragment << "': " << msg;
   } catch (const std::exception& e) {
     ADD_FAILURE() << "not a LoadError for " << path << ": " << e.what();
   }
 }
 
-inline void expectVolumeLoadError(const std::string& path, const std::string& fragment = "") {
+inline void expectVolumeLoadError(const std::string& path, const std::string& fragment) {
   expectLoadError([&] { loadVolume(path); }, path, fragment);
 }
 
