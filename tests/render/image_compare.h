@@ -1,22 +1,42 @@
 // The one helper image tests use: compare a rendered image with a reference PNG in tests/.
 #pragma once
 
-#include <string>
-
 #include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <string>
 
 #include "io/png_io.h"
 
 namespace ewa::test {
 
-// Compares `actual` with tests/reference/<name>.png. Passes when the mean absolute channel
-// difference is at most `meanTolerance` and no more than `maxBadFraction` of the pixels
-// differ by more than `pixelTolerance` in any channel (0..255 units). On failure writes
+// The background an image was drawn over, as 8-bit RGB (what `--background R,G,B` gives).
+using Rgb8 = std::array<uint8_t, 3>;
+Rgb8 backgroundRgb8(double r, double g, double b);
+
+// How two pictures differ, in RGB only (alpha is ignored: it is 255 everywhere in a PNG from
+// ewaview and would only dilute the mean), over the pixels the object covers: those where
+// either picture differs from the background by more than 2 levels in a channel.
+struct ImageDifference {
+  double mean = 0.0;         // mean absolute channel difference over covered pixels, 0..255
+  double badFraction = 0.0;  // covered pixels off by more than the pixel tolerance in a channel
+  size_t covered = 0;        // number of covered pixels
+};
+ImageDifference compareCovered(const Image8& a, const Image8& b, const Rgb8& background,
+                               int pixelTolerance);
+
+// Reads tests/reference/<name>.png; throws std::runtime_error when absent or unreadable.
+Image8 readReference(const std::string& name);
+
+// Compares `actual` with tests/reference/<name>.png through compareCovered. Passes when the
+// mean is at most `meanTolerance` and no more than `maxBadFraction` of the covered pixels differ
+// by more than `pixelTolerance` (0..255 units); fails when nothing is covered. On failure writes
 // <name>.actual.png and <name>.diff.png into the test output folder and says where.
 // With EWA_UPDATE_REFERENCES=1 in the environment it (re)writes the reference instead.
 ::testing::AssertionResult matchesReference(const std::string& name, const Image8& actual,
-                                            double meanTolerance, int pixelTolerance,
-                                            double maxBadFraction);
+                                            const Rgb8& background, double meanTolerance,
+                                            int pixelTolerance, double maxBadFraction);
 
 // Folder where tests write their output images; created on demand.
 std::string testOutputDir();
