@@ -38,7 +38,7 @@ class Framebuffer {
   // Clears colour attachment `index` of this framebuffer to `rgba` (4 floats).
   void clearColor(GLint index, const GLfloat* rgba);
   void clearDepth(GLfloat depth = 1.0f);
-  // Binds as GL_FRAMEBUFFER; prefer ScopedFramebufferBind, which restores the previous one.
+  // Binds as GL_FRAMEBUFFER.
   void bind() const;
 
   GLuint id() const { return id_; }

@@ -43,7 +43,7 @@ class Program {
   Program(const Program&) = delete;
   Program& operator=(const Program&) = delete;
 
-  // glUseProgram; prefer ScopedProgramUse, which restores the previous program.
+  // glUseProgram.
   void use() const;
 
   // Location of an active uniform, or -1 when the program has none of that name (GL may have

@@ -31,7 +31,7 @@ class VertexArray {
   void setVertexBuffer(GLuint binding, const Buffer& buffer, GLintptr offset, GLsizei stride,
                        GLuint divisor = 0);
   void setElementBuffer(const Buffer& buffer);
-  // Binds for drawing; prefer ScopedVertexArrayBind, which restores the previous one.
+  // Binds for drawing.
   void bind() const;
 
   GLuint id() const { return id_; }

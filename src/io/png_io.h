@@ -1,18 +1,11 @@
 // PNG reading and writing (stb), RGBA8 or RGB8 images.
 #pragma once
 
-#include <cstdint>
 #include <string>
-#include <vector>
+
+#include "core/image8.h"
 
 namespace ewa {
-
-struct Image8 {
-  int width = 0;
-  int height = 0;
-  int channels = 4;            // 3 (RGB) or 4 (RGBA)
-  std::vector<uint8_t> pixels;  // row-major, top row first
-};
 
 // Writes `image` to `path` through a temporary file renamed into place, so a crash never
 // leaves half a PNG. Throws std::runtime_error("path: problem") on failure.

@@ -9,12 +9,12 @@
 
 #include "core/camera.h"
 #include "core/ewa_footprint.h"
+#include "core/image8.h"
 #include "core/shading.h"
 #include "core/splat_attributes.h"
 #include "core/shear_warp_settings.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
-#include "io/png_io.h"
 
 namespace ewa {
 

@@ -11,7 +11,6 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gl/gl_error.h"
-#include "gl/scoped_bind.h"
 
 namespace ewa {
 

@@ -14,7 +14,6 @@
 #include "gl/framebuffer.h"
 #include "gl/gl_error.h"
 #include "gl/program.h"
-#include "gl/scoped_bind.h"
 #include "gl/shader_library.h"
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
@@ -38,6 +37,8 @@ using platform::HeadlessBackend;
 
 constexpr int kWidth = 8;
 constexpr int kHeight = 6;
+// Shaders only the tests use: tests/shaders, read from disk (the product embeds shaders/ only).
+const std::string kTestShaders = std::string(EWA_TEST_DIR) + "/shaders";
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
@@ -74,7 +75,7 @@ std::unique_ptr<GlContext> makeContext(HeadlessBackend backend, std::string& ski
 // first. With TEST_SCALE 2 and uColor (0, 0, 0.375, -1.5) every pixel must be
 // (x + 0.5, y + 0.5, 0.75, -1.5) exactly: all of these are exact binary fractions.
 std::vector<float> renderTestFill() {
-  gl::ShaderLibrary library;
+  gl::ShaderLibrary library(kTestShaders);
   gl::Program program =
       library.program("test_fill.vert.glsl", "test_fill.frag.glsl", "#define TEST_SCALE 2.0");
   program.setVec4("uColor", glm::vec4(0.0f, 0.0f, 0.375f, -1.5f));
@@ -85,12 +86,14 @@ std::vector<float> renderTestFill() {
   const GLfloat clear[4] = {-7.0f, -7.0f, -7.0f, -7.0f};
   framebuffer.clearColor(0, clear);
   gl::VertexArray empty = gl::VertexArray::create();  // core profile draws need a VAO
-  {
-    gl::ScopedFramebufferBind bindTarget(framebuffer.id(), kWidth, kHeight);
-    gl::ScopedProgramUse useProgram(program.id());
-    gl::ScopedVertexArrayBind bindArray(empty.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-  }
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+  glViewport(0, 0, kWidth, kHeight);
+  glUseProgram(program.id());
+  glBindVertexArray(empty.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glUseProgram(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
   std::vector<float> pixels(kWidth * kHeight * 4, 0.0f);
   target.getImage(0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(pixels.size() * sizeof(float)),
                   pixels.data());
@@ -141,25 +144,18 @@ TEST_P(HeadlessContextTest, IsOpenGl45Core) {
 
 TEST_P(HeadlessContextTest, RendersExactValuesIntoRgba32fFramebuffer) {
   expectTestFill(renderTestFill());
-  // The scoped binds put the default framebuffer and program back.
-  GLint framebuffer = -1, program = -1;
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-  glGetIntegerv(GL_CURRENT_PROGRAM, &program);
-  EXPECT_EQ(framebuffer, 0);
-  EXPECT_EQ(program, 0);
 }
 
 TEST_P(HeadlessContextTest, ComputeProgramFillsStorageBuffer) {
   constexpr GLuint kCount = 100;
-  gl::Program program = gl::ShaderLibrary().computeProgram("test_fill.comp.glsl");
+  gl::Program program = gl::ShaderLibrary(kTestShaders).computeProgram("test_fill.comp.glsl");
   program.setFloat("uScale", 0.5f);
   program.setUInt("uCount", kCount);
   gl::Buffer values = gl::Buffer::create(kCount * sizeof(float));
   values.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  {
-    gl::ScopedProgramUse use(program.id());
-    glDispatchCompute((kCount + 63) / 64, 1, 1);
-  }
+  glUseProgram(program.id());
+  glDispatchCompute((kCount + 63) / 64, 1, 1);
+  glUseProgram(0);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<float> result(kCount, -1.0f);
   values.getSubData(0, kCount * sizeof(float), result.data());
@@ -169,7 +165,8 @@ TEST_P(HeadlessContextTest, ComputeProgramFillsStorageBuffer) {
 
 TEST_P(HeadlessContextTest, BrokenShaderNamesFileAndCompileLog) {
   std::filesystem::path dir = scratchDir("broken");
-  writeFile(dir / "test_fill.vert.glsl", embeddedShaders().at("test_fill.vert.glsl"));
+  writeFile(dir / "test_fill.vert.glsl",
+            gl::ShaderLibrary(kTestShaders).source("test_fill.vert.glsl"));
   writeFile(dir / "broken.frag.glsl",
             "// A fragment shader with an undeclared name.\n"
             "out vec4 fragColor;\n"
@@ -240,7 +237,8 @@ TEST_P(HeadlessContextTest, MovingBufferTransfersOwnership) {
 }
 
 TEST_P(HeadlessContextTest, UniformLocationsAreCachedAndMissingOnesAreMinusOne) {
-  gl::Program program = gl::ShaderLibrary().program("test_fill.vert.glsl", "test_fill.frag.glsl");
+  gl::Program program =
+      gl::ShaderLibrary(kTestShaders).program("test_fill.vert.glsl", "test_fill.frag.glsl");
   GLint location = program.uniformLocation("uColor");
   EXPECT_GE(location, 0);
   EXPECT_EQ(program.uniformLocation("uColor"), location);
