@@ -1,13 +1,12 @@
 // ewaview-bench: EWA splatting frame times over a turntable, beside bare point sprites of the
 // same sizes drawn in the same run.
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
+#include "app/bench_support.h"
 #include "app/options.h"
 #include "app/scene.h"
 #include "gl/shader_library.h"
@@ -17,15 +16,6 @@
 
 namespace ewa {
 namespace {
-
-struct Summary {
-  double median = 0, min = 0, max = 0;
-};
-
-Summary summarize(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return {v[v.size() / 2], v.front(), v.back()};
-}
 
 // The baseline's sprites: every splat's pixel centre and point size from the C++ footprint.
 std::vector<glm::vec3> spriteSizes(const SplatRenderer& r, const Volume& vol, const Camera& cam,
@@ -52,20 +42,21 @@ int run(int argc, char** argv) {
   int frames = 90, size = 512;
   double step = 2.0;
   std::string backend = "osmesa";
-  const std::string data = std::string(EWA_ASSET_DIR) + "/../../shared/data";
+  const std::string data = sharedDataDir();
   app.add_option("files", files, "Volumes (default: engine and bonsai from ../shared/data)");
   app.add_option("--frames", frames, "Turntable frames (default 90)")->check(CLI::Range(1, 3600));
   app.add_option("--step", step, "Degrees between frames (default 2)");
-  app.add_option("--size", size, "Image width and height (default 512)")->check(CLI::Range(16, 8192));
-  app.add_option("--backend", backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
+  app.add_option("--size", size, "Image width and height (default 512)")
+      ->check(CLI::Range(16, 8192));
+  addBackendOption(app, backend);
   CLI11_PARSE(app, argc, argv);
   if (files.empty()) files = {data + "/engine/engine.nhdr", data + "/bonsai/bonsai.nhdr"};
 
   auto context = platform::createHeadlessContext(platform::parseHeadlessBackend(backend));
   std::printf("# %s, %dx%d, %d frames, %.1f deg steps\n", context->description().c_str(), size,
               size, frames, step);
-  std::printf("%-14s %10s %10s %10s %10s | %10s %10s %10s | %7s\n", "volume", "splats",
-              "ewa_med", "ewa_min", "ewa_max", "bare_med", "bare_min", "bare_max", "ratio");
+  std::printf("%-14s %10s %10s %10s %10s | %10s %10s %10s | %7s\n", "volume", "splats", "ewa_med",
+              "ewa_min", "ewa_max", "bare_med", "bare_min", "bare_max", "ratio");
   const gl::ShaderLibrary shaders;
   SplatRenderer renderer(shaders);
   SpriteBaseline baseline(shaders);
@@ -87,10 +78,10 @@ int run(int argc, char** argv) {
       bareMs.push_back(baseline.draw(size, size));
       cam.orbit(step, 0.0);
     }
-    const Summary e = summarize(ewaMs), b = summarize(bareMs);
+    const TimingSummary e = summarize(ewaMs), b = summarize(bareMs);
     std::printf("%-14s %10zu %10.1f %10.1f %10.1f | %10.1f %10.1f %10.1f | %7.2f\n",
-                std::filesystem::path(file).stem().string().c_str(), drawn, e.median, e.min,
-                e.max, b.median, b.min, b.max, e.median / b.median);
+                std::filesystem::path(file).stem().string().c_str(), drawn, e.median, e.min, e.max,
+                b.median, b.min, b.max, e.median / b.median);
     std::fflush(stdout);
   }
   return 0;
@@ -100,10 +91,5 @@ int run(int argc, char** argv) {
 }  // namespace ewa
 
 int main(int argc, char** argv) {
-  try {
-    return ewa::run(argc, argv);
-  } catch (const std::exception& e) {
-    std::cerr << "ewaview-bench: " << e.what() << "\n";
-    return 1;
-  }
+  return ewa::benchmarkMain("ewaview-bench", ewa::run, argc, argv);
 }

@@ -3,13 +3,12 @@
 // full-quality frame time at the same cameras as the baseline, in the same run.
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 #include <sstream>
 #include <vector>
 
+#include "app/bench_support.h"
 #include "app/options.h"
 #include "app/scene.h"
 #include "core/camera_path.h"
@@ -23,16 +22,8 @@
 namespace ewa {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
+double median(const std::vector<double>& v) {
+  return summarize(v).median;
 }
 
 // "FILE" or "FILE@X,Y,Z@TYPE@SX,SY,SZ@ENDIAN" for headerless raw data (MRbrain.raw).
@@ -83,11 +74,10 @@ int run(int argc, char** argv) {
   app.add_option("--baseline-every", baselineEvery,
                  "Full-quality baseline at every Nth camera of the path (default 6)")
       ->check(CLI::Range(1, 100000));
-  app.add_option("--backend", backend, "osmesa (default) or egl")
-      ->check(CLI::IsMember({"osmesa", "egl"}));
+  addBackendOption(app, backend);
   CLI11_PARSE(app, argc, argv);
   if (files.empty()) {
-    const std::string data = std::string(EWA_ASSET_DIR) + "/../../shared/data";
+    const std::string data = sharedDataDir();
     for (const std::string& f : defaultVolumes(data))
       if (std::filesystem::exists(f.substr(0, f.find('@')))) files.push_back(f);
   }
@@ -111,7 +101,7 @@ int run(int argc, char** argv) {
                   e.what());
       continue;
     }
-    auto t = Clock::now();
+    auto t = BenchClock::now();
     LodVolumes coarse = buildLodVolumes(scene.volume);
     const double lodBuildMs = msSince(t);
     LodRenderer lod([&shaders] { return std::make_unique<SplatRenderer>(shaders); });
@@ -122,7 +112,7 @@ int run(int argc, char** argv) {
     for (int level = 0; level < LodPolicy::kLevelCount; ++level)
       lod.render(level, start, o.render, size, size);
     // As the window does: the first full-quality frame picks the first moving level.
-    t = Clock::now();
+    t = BenchClock::now();
     lod.render(0, start, o.render, size, size);
     const double firstFullMs = msSince(t);
     const size_t splats = lod.last().stats().splatsTotal;
@@ -136,7 +126,7 @@ int run(int argc, char** argv) {
     for (size_t f = 0; f < path.size(); ++f) {
       applyCameraStep(cam, path[f]);
       const int level = policy.movingLevel();
-      t = Clock::now();
+      t = BenchClock::now();
       lod.render(level, cam, o.render, size, size);
       const double ms = msSince(t);
       policy.reportMovingFrame(level, ms);
@@ -144,13 +134,13 @@ int run(int argc, char** argv) {
       ++levelUse[size_t(level)];
       within += ms <= target;
       if (f % size_t(baselineEvery) == 0) {
-        t = Clock::now();
+        t = BenchClock::now();
         lod.render(0, cam, o.render, size, size);
         full.push_back(msSince(t));
       }
     }
     // Input stops: the viewer waits refineDelay, then draws full quality.
-    t = Clock::now();
+    t = BenchClock::now();
     lod.render(0, cam, o.render, size, size);
     const double refine = refineDelay + msSince(t);
     std::string levels;
@@ -172,10 +162,5 @@ int run(int argc, char** argv) {
 }  // namespace ewa
 
 int main(int argc, char** argv) {
-  try {
-    return ewa::run(argc, argv);
-  } catch (const std::exception& e) {
-    std::cerr << "ewaview-interact-bench: " << e.what() << "\n";
-    return 1;
-  }
+  return ewa::benchmarkMain("ewaview-interact-bench", ewa::run, argc, argv);
 }

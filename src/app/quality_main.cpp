@@ -3,11 +3,10 @@
 // table and writes a montage per scene.
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 
+#include "app/bench_support.h"
 #include "app/quality_benchmark.h"
 #include "app/quality_report.h"
 #include "gl/shader_library.h"
@@ -57,8 +56,7 @@ int run(int argc, char** argv) {
       ->check(CLI::Range(0.001, 0.999));
   app.add_flag("--no-reference-flicker", noReferenceFlicker,
                "Skip rendering the reference at every move (its own flicker)");
-  app.add_option("--backend", backend, "osmesa (default) or egl")
-      ->check(CLI::IsMember({"osmesa", "egl"}));
+  addBackendOption(app, backend);
   CLI11_PARSE(app, argc, argv);
   o.referenceFlicker = !noReferenceFlicker;
 
@@ -99,10 +97,9 @@ int run(int argc, char** argv) {
   std::vector<SceneQuality> results;
   for (const QualityScene& scene : scenes) {
     const SyntheticVolume volume = makeSyntheticVolume(scene.spec);
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = BenchClock::now();
     results.push_back(measureScene(renderer, scene, volume, o));
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = secondsSince(start);
     const SceneQuality& q = results.back();
     std::fprintf(stderr,
                  "%s: k = %.1f, sheet %zu px, beyond k %zu px, anisotropic %zu px; "
@@ -124,10 +121,5 @@ int run(int argc, char** argv) {
 }  // namespace ewa
 
 int main(int argc, char** argv) {
-  try {
-    return ewa::run(argc, argv);
-  } catch (const std::exception& e) {
-    std::cerr << "ewaview-quality: " << e.what() << "\n";
-    return 1;
-  }
+  return ewa::benchmarkMain("ewaview-quality", ewa::run, argc, argv);
 }

@@ -3,16 +3,14 @@
 // the EWA splat renderer and VTK's CPU ray caster timed on the same views in the same run.
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <string>
 #include <vector>
 
+#include "app/bench_support.h"
 #include "app/options.h"
 #include "app/scene.h"
 #include "core/shear_warp.h"
@@ -23,18 +21,6 @@
 
 namespace ewa {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
-// CPU seconds of this process, all threads: less sensitive than wall time to other programs
-// loading the machine.
-double cpuSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
 
 struct Variant {
   const char* name;
@@ -133,7 +119,7 @@ int run(int argc, char** argv) {
   CLI::App app{
       "ewaview-shearwarp-bench: shear-warp variants (Table 1 of Schulze et al. 2003), "
       "EWA splatting and VTK's CPU ray caster on the same turntable views"};
-  std::string data = std::string(EWA_ASSET_DIR) + "/../../shared/data";
+  std::string data = sharedDataDir();
   int size = 512, frames = 90, every = 1, ewaViews = 1, threads = 0;
   double step = 2.0;
   bool noVtk = false, noEwa = false, breakdown = false;
@@ -227,7 +213,7 @@ int run(int argc, char** argv) {
     sw.prepareAllAxes();  // volume preparation, not timed
     sw.render(views[0], vs[1].settings, size, size);
     const double tableMs = [&] {
-      const auto t = Clock::now();
+      const auto t = BenchClock::now();
       PreintegrationTable::build(tf, vol.minValue(), vol.maxValue(), 256, vol.spacing().x);
       return secondsSince(t) * 1e3;
     }();
@@ -236,7 +222,7 @@ int run(int argc, char** argv) {
     std::vector<glm::dvec3> parts(vs.size(), glm::dvec3(0.0));  // table, composite, warp ms
     for (const Camera& c : views)
       for (size_t i = 0; i < vs.size(); ++i) {
-        const auto t = Clock::now();
+        const auto t = BenchClock::now();
         const double c0 = cpuSeconds();
         sw.render(c, vs[i].settings, size, size);
         total[i] += secondsSince(t);
@@ -300,10 +286,5 @@ int run(int argc, char** argv) {
 }  // namespace ewa
 
 int main(int argc, char** argv) {
-  try {
-    return ewa::run(argc, argv);
-  } catch (const std::exception& e) {
-    std::cerr << "ewaview-shearwarp-bench: " << e.what() << "\n";
-    return 1;
-  }
+  return ewa::benchmarkMain("ewaview-shearwarp-bench", ewa::run, argc, argv);
 }

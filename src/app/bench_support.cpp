@@ -1,0 +1,51 @@
+// The benchmark programs' shared main(), clock, timing summaries and options.
+#include "app/bench_support.h"
+
+#include <time.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <exception>
+#include <iostream>
+
+namespace ewa {
+
+int benchmarkMain(const char* program, int (*run)(int, char**), int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << program << ": " << e.what() << "\n";
+    return 1;
+  }
+}
+
+double msSince(BenchClock::time_point start) {
+  return std::chrono::duration<double, std::milli>(BenchClock::now() - start).count();
+}
+
+double secondsSince(BenchClock::time_point start) {
+  return std::chrono::duration<double>(BenchClock::now() - start).count();
+}
+
+double cpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+TimingSummary summarize(std::vector<double> values) {
+  if (values.empty()) return {};
+  std::sort(values.begin(), values.end());
+  return {values[values.size() / 2], values.front(), values.back()};
+}
+
+void addBackendOption(CLI::App& app, std::string& backend) {
+  app.add_option("--backend", backend, "osmesa (default) or egl")
+      ->check(CLI::IsMember({"osmesa", "egl"}));
+}
+
+std::string sharedDataDir() {
+  return std::string(EWA_ASSET_DIR) + "/../../shared/data";
+}
+
+}  // namespace ewa
