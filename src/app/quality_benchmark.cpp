@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/image_resample.h"
+#include "core/sheet_ray_image.h"
 #include "io/image_convert.h"
 
 namespace ewa {
@@ -54,17 +55,35 @@ int referenceRenderSize(const QualityOptions& o) {
   return (o.size + 2 * referenceMargin(o)) * o.supersample;
 }
 
-FloatImage renderReference(SplatRenderer& renderer, const Camera& camera, FilterMode filter,
-                           const QualityOptions& o) {
-  const int margin = referenceMargin(o);
-  const int big = o.size + 2 * margin;
-  // A wider view angle with the same focal length in pixels: the principal point stays at
-  // the centre, so the central size x size pixels are exactly the original frame.
+namespace {
+// A wider view angle with the same focal length in pixels, for the reference's margin: the
+// principal point stays at the centre, so the central size x size pixels are exactly the
+// original frame.
+Camera widened(const Camera& camera, const QualityOptions& o) {
+  const int big = o.size + 2 * referenceMargin(o);
   Camera wide = camera;
   const double halfTan = std::tan(camera.viewAngleDeg * kPi / 360.0) * big / o.size;
   wide.viewAngleDeg = std::atan(halfTan) * 360.0 / kPi;
-  const FloatImage fine = renderFloat(renderer, wide, filter, big * o.supersample);
-  return cropImage(gaussianDecimate(fine, o.supersample, o.sigma), margin, o.size, o.size);
+  return wide;
+}
+
+FloatImage lowPassAndCrop(const FloatImage& fine, const QualityOptions& o) {
+  return cropImage(gaussianDecimate(fine, o.supersample, o.sigma), referenceMargin(o), o.size,
+                   o.size);
+}
+}  // namespace
+
+FloatImage rayReference(const Volume& sheet, const TransferFunction& tf, const Camera& camera,
+                        const QualityOptions& o) {
+  const int fine = referenceRenderSize(o);
+  return lowPassAndCrop(
+      sheetRayImage(sheet, tf, widened(camera, o), fine, fine, RenderSettings().background), o);
+}
+
+FloatImage renderReference(SplatRenderer& renderer, const Camera& camera, FilterMode filter,
+                           const QualityOptions& o) {
+  return lowPassAndCrop(renderFloat(renderer, widened(camera, o), filter, referenceRenderSize(o)),
+                        o);
 }
 
 SceneQuality measureScene(SplatRenderer& renderer, const QualityScene& scene,
@@ -83,19 +102,16 @@ SceneQuality measureScene(SplatRenderer& renderer, const QualityScene& scene,
   q.regions = sheetRegions(volume.volume, camera, o.size, o.size);
 
   // The reference is the paper's ideal resampled image: the continuous image of the
-  // reconstructed volume convolved with the unit Gaussian low-pass. EWA splats at supersample x
-  // are the continuous image up to their own low-pass of 1/supersample pixel (a negligible
-  // widening, sigma^2 = 1 + 1/S^2), and unlike plain splats they stay alias-free beyond S k.
-  auto reference = [&](const Camera& c) {
-    return renderReference(renderer, c, FilterMode::Ewa, o);
-  };
+  // reconstructed volume convolved with the unit Gaussian low-pass. It is integrated along
+  // rays on the CPU, so an error the filters share (in the Jacobian, the conic, the slabs)
+  // shows against it instead of being built into it.
+  auto reference = [&](const Camera& c) { return rayReference(volume.volume, tf, c, o); };
   q.reference.name = "reference";
   q.reference.image = reference(camera);
-  if (o.plainReference) {
-    const FloatImage plainRef = renderReference(renderer, camera, FilterMode::Plain, o);
-    q.plainReferenceRmseAll = rootMeanSquareError(plainRef, q.reference.image);
-    q.plainReferenceRmseBeyond =
-        rootMeanSquareError(plainRef, q.reference.image, &q.regions.beyondK);
+  if (o.splatReference) {
+    const FloatImage old = renderReference(renderer, camera, FilterMode::Ewa, o);
+    q.splatReferenceRmseAll = rootMeanSquareError(old, q.reference.image);
+    q.splatReferenceRmseBeyond = rootMeanSquareError(old, q.reference.image, &q.regions.beyondK);
   }
   q.reference.contrast = 1.0;
   q.reference.gain = 1.0;

@@ -15,12 +15,12 @@ namespace ewa {
 
 struct QualityOptions {
   int size = 256;                // output image width and height
-  int supersample = 8;           // reference samples per output pixel along each axis
+  int supersample = 8;           // reference rays per output pixel along each axis
   int frames = 8;                // sub-pixel camera moves for the flicker measure
   double stepPixels = 0.25;      // image motion per move, in output pixels
   double sigma = 1.0;            // the reference's Gaussian low-pass, in output pixels
   bool referenceFlicker = true;  // also render the reference at every move (costly)
-  bool plainReference = true;    // also make the reference from plain splats (a cross-check)
+  bool splatReference = true;    // also make the old reference (EWA splats at supersample x)
   double sheetOpacity = -1.0;    // in (0, 1): replaces the sheet's opacity per voxel; else kept
 };
 
@@ -38,18 +38,26 @@ struct ModeResult {
 struct SceneQuality {
   QualityScene scene;
   SheetRegions regions;
-  ModeResult reference;              // EWA at supersample x, low-passed and decimated
-  double plainReferenceRmseAll = 0;  // the same made from plain splats: how far apart they are
-  double plainReferenceRmseBeyond = 0;
+  ModeResult reference;  // rays through the sheet on the CPU, low-passed and decimated
+  // The old reference, EWA splats at supersample x low-passed the same way: how far it is from
+  // the ray-integrated one (splatReference only).
+  double splatReferenceRmseAll = 0;
+  double splatReferenceRmseBeyond = 0;
   std::vector<ModeResult> modes;  // ewa, swan, plain
 };
 
 // The size of the supersampled image the reference needs (margin included).
 int referenceRenderSize(const QualityOptions& options);
 
-// Renders `camera`'s view at supersample x the resolution with `filter` (plus a margin of
-// 4 sigma, so the low-pass sees what lies just outside the frame), low-passes it with a
-// Gaussian of sigma output pixels and decimates it to size x size.
+// The reference: the continuous image of the sheet, by integration along rays on the CPU
+// (sheetRayImage, no EWA footprint code) at supersample x the resolution (plus a margin of
+// 4 sigma, so the low-pass sees what lies just outside the frame), low-passed with a Gaussian
+// of sigma output pixels and decimated to size x size.
+FloatImage rayReference(const Volume& sheet, const TransferFunction& tf, const Camera& camera,
+                        const QualityOptions& options);
+
+// The same from `renderer`'s picture with `filter` at supersample x (the reference before the
+// ray-integrated one, which shared the footprint code with the filters it judged).
 FloatImage renderReference(SplatRenderer& renderer, const Camera& camera, FilterMode filter,
                            const QualityOptions& options);
 
