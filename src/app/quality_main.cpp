@@ -94,7 +94,8 @@ int run(int argc, char** argv) {
   std::snprintf(opacityText, sizeof opacityText, "%g", o.sheetOpacity);
   const std::string opacity = o.sheetOpacity > 0.0 ? opacityText : "0.98 (the volumes' own)";
   std::printf(
-      "# %s; %dx%d, reference %dx%d supersampled (%d with margin), Gaussian sigma %.2f px; "
+      "# %s; %dx%d, reference integrated along %dx%d rays a pixel (%d with margin), Gaussian "
+      "sigma %.2f px; "
       "%d moves of %.3f px; sheet opacity %s\n\n",
       context->description().c_str(), o.size, o.size, o.supersample, o.supersample, needed, o.sigma,
       o.frames, o.stepPixels, opacity.c_str());
