@@ -2,6 +2,7 @@
 #include "app/scene.h"
 
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -35,11 +36,14 @@ Scene loadScene(const Options& o) {
   } else {
     const std::string path = o.file.empty() ? defaultVolumePath() : o.file;
     scene.volume = o.rawDims.empty()
-                       ? loadVolume(path)
+                       ? loadVolume(path, o.load)
                        : loadRawVolume(path, parseRawOptions(o.rawDims, o.rawType, o.rawSpacing,
                                                              o.rawEndian));
     scene.name = std::filesystem::path(path).filename().string();
     sidecar = sidecarTransferFunctionPath(path);
+    // Warnings (uneven slices, a sheared grid) are worth a line even when the load succeeds.
+    for (const std::string& note : scene.volume.notes())
+      if (note.compare(0, 9, "warning: ") == 0) std::cerr << "ewaview: " << path << ": " << note << "\n";
   }
   if (!o.tfFile.empty()) {
     scene.transferFunction = loadTransferFunction(o.tfFile);
@@ -57,8 +61,8 @@ Camera initialCamera(const Volume& volume, const Options& o) {
   Camera cam;
   cam.viewAngleDeg = o.cameraViewAngle;
   cam.orthographic = o.orthographic;
-  // VTK's default view: from +z towards the volume's centre, y up.
-  cam.frame(volume.boundsMin(), volume.boundsMax(), glm::dvec3(0, 0, 1), glm::dvec3(0, 1, 0),
+  // VTK's default view: from +z towards the volume's centre (in world space), y up.
+  cam.frame(volume.worldBoundsMin(), volume.worldBoundsMax(), glm::dvec3(0, 0, 1), glm::dvec3(0, 1, 0),
             double(o.width) / double(o.height));
   if (o.cameraFocalPoint) cam.focalPoint = *o.cameraFocalPoint;
   if (o.cameraPosition) cam.position = *o.cameraPosition;
@@ -74,6 +78,13 @@ std::string volumeInfoJson(const Volume& v) {
   j["spacing"] = {v.spacing().x, v.spacing().y, v.spacing().z};
   j["type"] = scalarName(v.type());
   j["range"] = {v.minValue(), v.maxValue()};
+  j["origin"] = {v.origin().x, v.origin().y, v.origin().z};
+  // Rows of D: column a is the world direction of data axis a.
+  const glm::dmat3& d = v.direction();
+  j["direction"] = {{d[0][0], d[1][0], d[2][0]}, {d[0][1], d[1][1], d[2][1]},
+                    {d[0][2], d[1][2], d[2][2]}};
+  j["frame"] = v.patientFrame() ? "LPS" : "none";
+  j["notes"] = v.notes();
   return j.dump();
 }
 
