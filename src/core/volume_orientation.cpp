@@ -47,8 +47,10 @@ void flipSlices(OrientedGrid& g) {
 
 std::vector<std::string> makeRotation(OrientedGrid& g) {
   std::vector<std::string> notes;
-  if (!isOrthonormal(g.direction)) {
-    g.direction = orthonormalized(g.direction);
+  const bool sheared = !isOrthonormal(g.direction);
+  // Even a direction within rounding of a rotation is made exact (float headers are not).
+  g.direction = orthonormalized(g.direction);
+  if (sheared) {
     notes.push_back(
         "warning: the direction matrix is not orthonormal (gantry tilt or shear); drawn with "
         "the nearest rotation");

@@ -33,7 +33,7 @@ struct OrientedGrid {
 };
 
 // Leaves grid.direction a rotation without moving any voxel in world space: a non-orthonormal
-// direction (gantry tilt, shear) is orthonormalized, and a reflection (det < 0) is undone by
+// direction (gantry tilt, shear) is orthonormalized (so those voxels do move, with a warning), and a reflection (det < 0) is undone by
 // reversing the data along the third axis (origin moved to the last slice, third column
 // negated). Returns the notes to show the user (a warning for the orthonormalization, a note
 // for the flip); empty when nothing changed.

@@ -161,7 +161,7 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid) {
   std::string fileSeries;
   const std::vector<DicomSeries> all =
       scanDicomFolder(dir.empty() ? "." : dir, folder ? std::string() : path, &fileSeries);
-  if (all.empty()) failLoad(path, folder ? "no DICOM image in the folder" : "not a DICOM image");
+  if (all.empty()) failLoad(path, folder ? "a directory with no DICOM image or TIFF file" : "not a DICOM image");
   if (!folder && fileSeries.empty() && seriesUid.empty())
     failLoad(path, "not a DICOM image (no Rows and Columns)");
   const DicomSeries& chosen = pickSeries(path, all, seriesUid, fileSeries);
