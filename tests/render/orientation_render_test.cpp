@@ -42,7 +42,8 @@ std::vector<uint8_t> gridBytes(glm::bvec3 flip) {
 }
 
 Volume plainVolume() {
-  return Volume({kNx, kNy, kNz}, kSpacing, kOrigin, ScalarType::UInt8, gridBytes({false, false, false}));
+  return Volume({kNx, kNy, kNz}, kSpacing, kOrigin, ScalarType::UInt8,
+                gridBytes({false, false, false}));
 }
 
 // The same world object stored with the axes in `flip` reversed: origin at the far end of each
@@ -112,7 +113,8 @@ TEST_F(OrientationRender, FlippedAxesWithNegatedDirectionsDrawTheSamePicture) {
   for (const glm::bvec3 flip : {glm::bvec3(true, false, false), glm::bvec3(false, true, true),
                                 glm::bvec3(true, true, true)}) {
     const Volume flipped = flippedVolume(flip);
-    const std::string name = std::to_string(flip.x) + std::to_string(flip.y) + std::to_string(flip.z);
+    const std::string name =
+        std::to_string(flip.x) + std::to_string(flip.y) + std::to_string(flip.z);
     const auto got = pictures(flipped, cam, "flip" + name);
     // Were the direction ignored, the flipped data would look different.
     Volume ignored({kNx, kNy, kNz}, kSpacing, kOrigin, ScalarType::UInt8, gridBytes(flip));
@@ -120,8 +122,8 @@ TEST_F(OrientationRender, FlippedAxesWithNegatedDirectionsDrawTheSamePicture) {
     for (int r = 0; r < 2; ++r) {
       const double rmse = rootMeanSquareError(got[size_t(r)], expected[size_t(r)]);
       const double wrongRmse = rootMeanSquareError(wrong[size_t(r)], expected[size_t(r)]);
-      std::printf("%s flip %s: RMSE %.4f (direction ignored: %.4f)\n",
-                  r ? "shear-warp" : "splat", name.c_str(), rmse, wrongRmse);
+      std::printf("%s flip %s: RMSE %.4f (direction ignored: %.4f)\n", r ? "shear-warp" : "splat",
+                  name.c_str(), rmse, wrongRmse);
       // Shear-warp samples each slice where the shear puts it, and a reversed slice order
       // moves those points by a fraction of a voxel: the same object, resampled a little apart.
       EXPECT_LT(rmse, r ? 0.03 : 0.005) << (r ? "shear-warp" : "splat") << " flip " << name;

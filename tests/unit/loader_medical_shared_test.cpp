@@ -4,10 +4,9 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <string>
-
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <string>
 
 #include "core/volume_orientation.h"
 #include "io/volume_loader.h"
@@ -62,7 +61,8 @@ void check(const Volume& v, const Expected& e) {
   EXPECT_TRUE(isOrthonormal(v.direction(), 1e-9));
   EXPECT_GT(glm::determinant(v.direction()), 0.0);
   for (const WorldVoxel& w : e.voxels)
-    EXPECT_NEAR(valueAtWorld(v, w.lps), w.value, tol) << w.lps.x << "," << w.lps.y << "," << w.lps.z;
+    EXPECT_NEAR(valueAtWorld(v, w.lps), w.value, tol)
+        << w.lps.x << "," << w.lps.y << "," << w.lps.z;
 }
 
 class MedicalData : public ::testing::Test {
@@ -75,13 +75,23 @@ class MedicalData : public ::testing::Test {
 
 TEST_F(MedicalData, NiftiAnatomicalBigEndianWithReflectedSform) {
   const Volume v = loadVolume(data("nifti/anatomical.nii"));
-  check(v, {{33, 41, 25}, ScalarType::Int16, glm::dvec3(2.0), -610, 30393,
-            {{{-32, 40, -16}, 10712}, {{0, 0, 8}, 11881}, {{32, 14, 32}, 9545},
+  check(v, {{33, 41, 25},
+            ScalarType::Int16,
+            glm::dvec3(2.0),
+            -610,
+            30393,
+            {{{-32, 40, -16}, 10712},
+             {{0, 0, 8}, 11881},
+             {{32, 14, 32}, 9545},
              {{-30, -40, -16}, 3966}}});
 }
 
 TEST_F(MedicalData, Nifti4dObliqueFramesAndNifti2) {
-  const Expected first{{128, 96, 24}, ScalarType::Int16, {2.0, 2.0, 2.2}, 0, 1162,
+  const Expected first{{128, 96, 24},
+                       ScalarType::Int16,
+                       {2.0, 2.0, 2.2},
+                       0,
+                       1162,
                        {{{10.1448974609375, -54.74887037277222, 34.318148612976074}, 265}}};
   const Volume v = loadVolume(data("nifti/example4d.nii.gz"));
   check(v, first);
@@ -89,10 +99,17 @@ TEST_F(MedicalData, Nifti4dObliqueFramesAndNifti2) {
   EXPECT_NEAR(v.direction()[1].z, 0.3232076168060303 / 2.0, 1e-6);
   EXPECT_EQ(loadVolume(data("nifti/example4d.nii.gz"), {"", 1, 0}).dims(), first.dims);
   EXPECT_NE(loadVolume(data("nifti/example4d.nii.gz"), {"", 1, 0}).bytes(), v.bytes());
-  testing::expectLoadError([] { loadVolume(data("nifti/example4d.nii.gz"), {"", 2, 0}); },
-                           data("nifti/example4d.nii.gz"), "out of range (the file has 2 frames)");
+  testing::expectLoadError(
+      [] {
+        loadVolume(data("nifti/example4d.nii.gz"), {"", 2, 0});
+      },
+      data("nifti/example4d.nii.gz"), "out of range (the file has 2 frames)");
   check(loadVolume(data("nifti/example_nifti2.nii.gz")),
-        {{32, 20, 12}, ScalarType::Int16, {2.0, 2.0, 2.2}, 49, 742,
+        {{32, 20, 12},
+         ScalarType::Int16,
+         {2.0, 2.0, 2.2},
+         49,
+         742,
          {{{-117.8551025390625, 35.72294235229492, -7.248798370361328}, 424},
           {{-85.8551025390625, 18.1189968585968, 9.00976848602295}, 265},
           {{-55.8551025390625, 27.791483998298645, 18.572346925735474}, 553}}});
@@ -100,16 +117,28 @@ TEST_F(MedicalData, Nifti4dObliqueFramesAndNifti2) {
 
 TEST_F(MedicalData, NiftiScaledFunctionalAndSformOnly) {
   const Volume f = loadVolume(data("nifti/functional.nii"));
-  check(f, {{17, 21, 3}, ScalarType::Float32, {4, 4, 8}, 762.5424365997314, 5538.065757632256,
-            {{{-32, 40, 0}, 4004.137202501297}, {{0, 0, 8}, 3865.7654151320457},
+  check(f, {{17, 21, 3},
+            ScalarType::Float32,
+            {4, 4, 8},
+            762.5424365997314,
+            5538.065757632256,
+            {{{-32, 40, 0}, 4004.137202501297},
+             {{0, 0, 8}, 3865.7654151320457},
              {{32, 12, 16}, 3669.9335176944733}}});
   check(loadVolume(data("nifti/standard.nii.gz")),
-        {{4, 5, 7}, ScalarType::UInt8, {1, 3, 2}, 0, 255,
+        {{4, 5, 7},
+         ScalarType::UInt8,
+         {1, 3, 2},
+         0,
+         255,
          {{{0, 0, 0}, 0}, {{-3, -3, 12}, 255}, {{-2, -6, 6}, 0}}});
 }
 
 TEST_F(MedicalData, DicomPetFolderAndAnyFileSortedByPosition) {
-  const Expected e{{128, 128, 299}, ScalarType::Float32, {3.5378182, 3.5378182, 3.375}, 0.0,
+  const Expected e{{128, 128, 299},
+                   ScalarType::Float32,
+                   {3.5378182, 3.5378182, 3.375},
+                   0.0,
                    66260.7617124,
                    {{{-226.13246, -425.88375, -1259.459}, 4.0444828},
                     {{0.2879047999999784, -199.46338520000003, -756.584}, 10669.3456264},
@@ -120,8 +149,11 @@ TEST_F(MedicalData, DicomPetFolderAndAnyFileSortedByPosition) {
   EXPECT_EQ(folder.origin(), glm::dvec3(-226.13246, -425.88375, -1259.459));
   const Volume one = loadVolume(data("dicom-pet/000123.dcm"));
   EXPECT_EQ(one.bytes(), folder.bytes());
-  testing::expectLoadError([] { loadVolume(data("dicom-pet"), {"1.2.3", 0, 0}); },
-                           data("dicom-pet"), "no series '1.2.3'");
+  testing::expectLoadError(
+      [] {
+        loadVolume(data("dicom-pet"), {"1.2.3", 0, 0});
+      },
+      data("dicom-pet"), "no series '1.2.3'");
 }
 
 TEST_F(MedicalData, DicomMrStackFromTheZip) {
@@ -132,16 +164,26 @@ TEST_F(MedicalData, DicomMrStackFromTheZip) {
   // Slices are 8 mm thick but 12 mm apart: the spacing comes from the positions. File 1-1 is the
   // top slice: the order is by position, not by name.
   check(loadVolume(dir.path("mr/data")),
-        {{512, 512, 3}, ScalarType::UInt16, {0.9765625, 0.9765625, 12.0}, 0, 346,
-         {{{-250, -250, -12}, 0}, {{-250 + 261 * 0.9765625, -250 + 274 * 0.9765625, 12}, 346},
+        {{512, 512, 3},
+         ScalarType::UInt16,
+         {0.9765625, 0.9765625, 12.0},
+         0,
+         346,
+         {{{-250, -250, -12}, 0},
+          {{-250 + 261 * 0.9765625, -250 + 274 * 0.9765625, 12}, 346},
           {{-250 + 250 * 0.9765625, -250 + 300 * 0.9765625, 0}, 93},
           {{-250 + 250 * 0.9765625, -250 + 300 * 0.9765625, -12}, 96}}});
 }
 
 TEST_F(MedicalData, NeghipSlc) {
   const Volume v = loadVolume(data("neghip/neghip.slc"));
-  check(v, {{66, 66, 66}, ScalarType::UInt8, glm::dvec3(1.0), 0, 255,
-            {{{0, 0, 0}, 0}, {{10, 40, 20}, 20}, {{33, 33, 33}, 0}}, false});
+  check(v, {{66, 66, 66},
+            ScalarType::UInt8,
+            glm::dvec3(1.0),
+            0,
+            255,
+            {{{0, 0, 0}, 0}, {{10, 40, 20}, 20}, {{33, 33, 33}, 0}},
+            false});
 }
 
 }  // namespace
