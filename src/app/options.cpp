@@ -112,6 +112,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!o->rawDims.empty() && o->rawType.empty()) return usage("--raw-dims needs --raw-type");
   if (!o->rawDims.empty() && o->file.empty()) return usage("--raw-dims needs a FILE");
   if (o->turntable > 0 && o->output.empty()) return usage("--turntable needs --output");
+  // "series/" and "series" are one folder (and name one bookmarks file beside it).
+  while (o->file.size() > 1 && o->file.back() == '/') o->file.pop_back();
   o->resolutionGiven = !res.empty();
   for (const char* name : {"--filter", "--render-mode", "--cutoff", "--slab-thickness", "--background"})
     o->renderOptionsGiven |= app.count(name) > 0;

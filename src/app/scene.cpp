@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "core/camera_views.h"
 #include "core/synthetic_volume.h"
 #include "io/transfer_function_io.h"
 #include "io/volume_loader.h"
@@ -61,9 +62,9 @@ Camera initialCamera(const Volume& volume, const Options& o) {
   Camera cam;
   cam.viewAngleDeg = o.cameraViewAngle;
   cam.orthographic = o.orthographic;
-  // VTK's default view: from +z towards the volume's centre (in world space), y up.
-  cam.frame(volume.worldBoundsMin(), volume.worldBoundsMax(), glm::dvec3(0, 0, 1), glm::dvec3(0, 1, 0),
-            double(o.width) / double(o.height));
+  // VTK's default view (from +z, y up), or the anterior view of a patient; in world space.
+  cam = initialVolumeView(cam, volume.worldBoundsMin(), volume.worldBoundsMax(),
+                          double(o.width) / double(o.height), volume.patientFrame());
   if (o.cameraFocalPoint) cam.focalPoint = *o.cameraFocalPoint;
   if (o.cameraPosition) cam.position = *o.cameraPosition;
   if (o.cameraViewUp) cam.viewUp = *o.cameraViewUp;

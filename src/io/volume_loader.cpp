@@ -59,13 +59,6 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options) {
 
 }  // namespace
 
-const std::vector<std::string>& volumeExtensions() {
-  static const std::vector<std::string> extensions{
-      ".nrrd", ".nhdr", ".mhd", ".mha", ".dat", ".vti", ".nii", ".nii.gz",
-      ".hdr",  ".img",  ".dcm", ".ima", ".tif", ".tiff", ".slc"};
-  return extensions;
-}
-
 Volume loadVolume(const std::string& path, const LoadOptions& options) {
   try {
     return loadByExtension(path, options);

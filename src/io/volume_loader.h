@@ -6,7 +6,6 @@
 #include <glm/vec3.hpp>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 #include "core/volume.h"
 
@@ -47,8 +46,6 @@ struct LoadOptions {
 // direction is left a rotation (a reflected one reverses the slices, see volume_orientation.h).
 Volume loadVolume(const std::string& path, const LoadOptions& options = {});
 
-// File name extensions loadVolume reads (".nrrd", ...), for the open dialog.
-const std::vector<std::string>& volumeExtensions();
 
 // Loads a headerless file laid out as `options` says. The file must hold at least the
 // voxels; extra trailing bytes are ignored. Throws LoadError.

@@ -39,6 +39,7 @@ void ControlPanel::setVolume(std::string volumeName, const Volume& volume) {
                 static_cast<long long>(d[2]), scalarName(volume.type()), s.x, s.y, s.z);
   volumeText_ = text;
   valueRange_ = {volume.minValue(), volume.maxValue()};
+  patientFrame_ = volume.patientFrame();
   if (volumeName_.empty()) volumeName_ = "(unnamed volume)";
 }
 
@@ -158,9 +159,9 @@ std::optional<AxisView> ControlPanel::drawAxisViews() {
   ImGui::TextUnformatted("look along");
   for (AxisView v : kAxisViews) {
     ImGui::SameLine();
-    if (ImGui::SmallButton(axisViewName(v))) chosen = v;
+    if (ImGui::SmallButton(axisViewLabel(v, patientFrame_))) chosen = v;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", axisViewKeysHint(patientFrame_));
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("keys 1-6: +X -X +Y -Y +Z -Z");
   return chosen;
 }
 
