@@ -237,6 +237,9 @@ class Viewer {
     char text[64];
     std::snprintf(text, sizeof text, " in %.1f s", seconds);
     info("opened " + loaded->name + text);
+    // Uneven slices, a sheared grid: on stderr already (loadScene), and in the panel.
+    for (const std::string& note : loaded->volume->notes())
+      if (note.rfind("warning: ", 0) == 0) messages_.post(StatusMessages::Kind::Info, note, now());
     adopt(std::move(*loaded), /*newCamera=*/true);
   }
 

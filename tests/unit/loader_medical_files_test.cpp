@@ -160,6 +160,19 @@ TEST(DicomFiles, SeriesSortedByPositionWithRescale) {
   EXPECT_EQ(loadVolume(folder + "/im3.dcm").bytes(), v.bytes());
 }
 
+TEST(DicomFiles, CompressedSlicesLoadLikeTheOthers) {
+  TempDir dir;
+  const std::string folder = dicomSeries(dir, "c", 4);
+  const Volume plain = loadVolume(folder);
+  ASSERT_TRUE(testing::recompressDicom(folder + "/im1.dcm", gdcm::TransferSyntax::RLELossless));
+  ASSERT_TRUE(
+      testing::recompressDicom(folder + "/im2.dcm", gdcm::TransferSyntax::JPEGLosslessProcess14_1));
+  // The files really changed (encapsulated now), and the volume did not.
+  EXPECT_NE(std::filesystem::file_size(folder + "/im1.dcm"),
+            std::filesystem::file_size(folder + "/im0.dcm"));
+  EXPECT_EQ(loadVolume(folder).bytes(), plain.bytes());
+}
+
 TEST(DicomFiles, GantryTiltWarnsAndSeveralSeriesAreListed) {
   TempDir dir;
   testing::DicomSliceSpec spec;

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <gdcmAttribute.h>
+#include <gdcmImageChangeTransferSyntax.h>
+#include <gdcmImageReader.h>
 #include <gdcmImageWriter.h>
 #include <gdcmReader.h>
 #include <gdcmWriter.h>
@@ -111,6 +113,22 @@ inline bool writeDicomSlice(const std::string& path, const DicomSliceSpec& s) {
   plain.SetFile(reader.GetFile());
   plain.SetFileName(path.c_str());
   return plain.Write();
+}
+
+// Rewrites the DICOM file at `path` in another transfer syntax (RLE or JPEG lossless, ...).
+inline bool recompressDicom(const std::string& path, gdcm::TransferSyntax::TSType syntax) {
+  gdcm::ImageReader reader;
+  reader.SetFileName(path.c_str());
+  if (!reader.Read()) return false;
+  gdcm::ImageChangeTransferSyntax change;
+  change.SetTransferSyntax(syntax);
+  change.SetInput(reader.GetImage());
+  if (!change.Change()) return false;
+  gdcm::ImageWriter writer;
+  writer.SetFile(reader.GetFile());
+  writer.SetImage(change.GetOutput());
+  writer.SetFileName(path.c_str());
+  return writer.Write();
 }
 
 // A TIFF written by libtiff: one page per entry of `pages` (width x height samples of T each,

@@ -1,5 +1,7 @@
 // Direction matrices: made rotations without moving voxels, kept by coarse levels, and the
 // anatomical axis views of a patient frame.
+#include "core/volume_orientation.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -7,7 +9,6 @@
 
 #include "core/camera_views.h"
 #include "core/volume_downsample.h"
-#include "core/volume_orientation.h"
 #include "io/file_listing.h"
 
 namespace ewa {
@@ -27,7 +28,8 @@ TEST(VolumeOrientation, ReflectionReversesSlicesKeepingWorldPositions) {
   g.bytes = &bytes;
   g.spacing = {1.0, 2.0, 3.0};
   g.origin = {10, 20, 30};
-  g.direction = glm::dmat3(glm::dvec3(0, 1, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1));  // det -1
+  g.direction =
+      glm::dmat3(glm::dvec3(0, 1, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1));  // det -1
   const glm::dmat3 before = g.direction;
   const std::vector<std::string> notes = makeRotation(g);
   ASSERT_EQ(notes.size(), 1u);
@@ -55,7 +57,7 @@ TEST(VolumeOrientation, ShearIsOrthonormalizedWithAWarning) {
   EXPECT_EQ(notes[0].rfind("warning: ", 0), 0u);
   EXPECT_TRUE(isOrthonormal(g.direction, 1e-12));
   EXPECT_EQ(g.direction, glm::dmat3(1.0));  // Gram-Schmidt keeps the first two axes
-  OrientedGrid r;  // a rotation stays as it is, silently
+  OrientedGrid r;                           // a rotation stays as it is, silently
   r.direction = glm::dmat3(glm::dvec3(0, 1, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1));
   EXPECT_TRUE(makeRotation(r).empty());
   EXPECT_EQ(r.direction[0], glm::dvec3(0, 1, 0));
@@ -78,7 +80,8 @@ TEST(VolumeOrientation, CameraInVolumeFrameUndoesTheRigidMap) {
 }
 
 TEST(VolumeOrientation, CoarseLevelsKeepTheDirectionAndWorldBox) {
-  Volume v({3, 2, 4}, glm::dvec3(1.0, 1.0, 2.0), glm::dvec3(1, 2, 3), ScalarType::UInt8, rampBytes());
+  Volume v({3, 2, 4}, glm::dvec3(1.0, 1.0, 2.0), glm::dvec3(1, 2, 3), ScalarType::UInt8,
+           rampBytes());
   const glm::dmat3 d(glm::dvec3(0, 1, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1));
   v.setDirection(d, true);
   const Volume coarse = downsampleVolume(v, 2);
