@@ -1,10 +1,10 @@
 // ControlPanel: the ImGui window that shows the volume and statistics and edits the view.
 #include "ui/control_panel.h"
 
-#include <imgui.h>
-
 #include <cstdio>
 #include <utility>
+
+#include <imgui.h>
 
 #include "ui/render_options_panel.h"
 
@@ -100,7 +100,8 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
 
   for (RenderMode mode : kModes) {
     if (mode != kModes[0]) ImGui::SameLine();
-    if (ImGui::RadioButton(renderModeName(mode), settings.mode == mode) && settings.mode != mode) {
+    if (ImGui::RadioButton(renderModeName(mode), settings.mode == mode) &&
+        settings.mode != mode) {
       settings.mode = mode;
       changed = true;
     }
@@ -168,8 +169,8 @@ void ControlPanel::drawStats(const FrameStats& stats) {
   const RenderStats& r = stats.render;
   ImGui::Text("render %.1f ms   frame %.1f ms", r.cpuMs, stats.frameMs);
   if (r.classifyMs + r.sortMs + r.splatMs + r.compositeMs > 0.0)
-    ImGui::Text("classify %.1f  sort %.1f  splat %.1f  composite %.1f ms", r.classifyMs, r.sortMs,
-                r.splatMs, r.compositeMs);
+    ImGui::Text("classify %.1f  sort %.1f  splat %.1f  composite %.1f ms", r.classifyMs,
+                r.sortMs, r.splatMs, r.compositeMs);
   if (stats.lodLevel == 0)
     ImGui::Text("image %d x %d, full quality", stats.imageWidth, stats.imageHeight);
   else
@@ -180,8 +181,7 @@ void ControlPanel::drawStats(const FrameStats& stats) {
     ImGui::Text("GPU %.0f of %.0f MiB free", double(stats.gpuMemory->availableKiB) / 1024.0,
                 double(stats.gpuMemory->totalKiB) / 1024.0);
   ImGui::Text("splats %zu / %zu", r.splatsDrawn, r.splatsTotal);
-  ImGui::Text("slabs %zu (drawn %zu)   quad path %s", r.slabs, r.slabsDrawn,
-              r.quadPass ? "yes" : "no");
+  ImGui::Text("slabs %zu (drawn %zu)   quad path %s", r.slabs, r.slabsDrawn, r.quadPass ? "yes" : "no");
   ImGui::Text("surface splats %zu   splat draws %zu", r.surfaceSplats, r.slabEntries);
 }
 
