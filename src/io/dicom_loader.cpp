@@ -38,30 +38,6 @@ void appendValues(const std::vector<char>& buffer, size_t count, std::vector<dou
   }
 }
 
-// GDCM reads a file whose uncompressed pixel data were cut short without complaint (it pads).
-// The Pixel Data element comes last: find its tag (declaring the length the image needs) near
-// the end and check that the file holds that many bytes after it.
-void checkPixelDataComplete(const std::string& file, uint64_t pixelBytes) {
-  const uint64_t size = regularFileSize(file);
-  const uint64_t window = std::min<uint64_t>(size, pixelBytes + 4096);
-  const std::vector<uint8_t> tail = readFileRange(file, size - window, window, "pixel data");
-  static const uint8_t kTag[4] = {0xe0, 0x7f, 0x10, 0x00};  // (7FE0,0010), little-endian
-  for (size_t at = tail.size() >= 12 ? tail.size() - 12 : 0; at-- > 0;) {
-    if (std::memcmp(&tail[at], kTag, 4) != 0) continue;
-    const bool explicitVr = (tail[at + 4] == 'O' && (tail[at + 5] == 'B' || tail[at + 5] == 'W'));
-    const size_t header = explicitVr ? 12 : 8;
-    const uint64_t length = readUnsigned(&tail[at + header - 4], 4, false);
-    if (length == 0xffffffffu) return;  // encapsulated (compressed): GDCM checks the fragments
-    // The same four bytes inside the pixels would not declare the pixels' own length.
-    if (length != pixelBytes && length != pixelBytes + 1) continue;
-    const uint64_t have = tail.size() - at - header;
-    if (have < pixelBytes)
-      failLoad(file, "pixel data are truncated (" + std::to_string(have) + " of " +
-                         std::to_string(pixelBytes) + " bytes)");
-    return;
-  }
-}
-
 SlicePixels readSlice(const DicomSlice& slice) {
   gdcm::ImageReader reader;
   reader.SetFileName(slice.file.c_str());
@@ -78,8 +54,6 @@ SlicePixels readSlice(const DicomSlice& slice) {
                          uint64_t(std::max(1u, image.GetNumberOfDimensions() > 2 ? dims[2] : 1u));
   if (count != uint64_t(slice.rows) * uint64_t(slice.columns) * uint64_t(slice.frames))
     failLoad(slice.file, "pixel count disagrees with the header");
-  if (image.GetDataElement().GetByteValue())
-    checkPixelDataComplete(slice.file, count * format.GetPixelSize());
   std::vector<char> buffer(image.GetBufferLength());
   if (buffer.size() < count * format.GetPixelSize() || !image.GetBuffer(buffer.data()))
     failLoad(slice.file, "pixel data are missing, truncated or cannot be decoded");

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <map>
 
+#include "io/dicom_guard.h"
 #include "io/load_failure.h"
 #include "io/text_fields.h"
 
@@ -55,7 +56,10 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
   std::error_code ec;
   for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end;
        it.increment(ec)) {
-    if (it->is_regular_file(ec)) files.push_back(it->path().string());
+    if (!it->is_regular_file(ec)) continue;
+    // GDCM sizes buffers by element lengths: only files whose lengths fit reach it.
+    if (checkDicomStructure(it->path().string()) == DicomStructure::Plausible)
+      files.push_back(it->path().string());
   }
   if (ec) failLoad(folder, "cannot list the folder (" + ec.message() + ")");
   std::sort(files.begin(), files.end());

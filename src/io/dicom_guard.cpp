@@ -1,0 +1,147 @@
+// checkDicomStructure: element lengths against the file size, before GDCM allocates by them.
+#include "io/dicom_guard.h"
+
+#include <cstring>
+#include <vector>
+
+#include "io/byte_order.h"
+#include "io/file_bytes.h"
+#include "io/load_failure.h"
+#include "io/memory_limit.h"
+
+namespace ewa {
+
+namespace {
+
+// VRs whose explicit form has two reserved bytes and a 4-byte length.
+bool longVr(const uint8_t* vr) {
+  static const char* const kLong[] = {"OB", "OD", "OF", "OL", "OV", "OW", "SQ",
+                                      "SV", "UC", "UN", "UR", "UT", "UV"};
+  for (const char* v : kLong)
+    if (vr[0] == v[0] && vr[1] == v[1]) return true;
+  return false;
+}
+
+bool isVr(const uint8_t* vr) {
+  return vr[0] >= 'A' && vr[0] <= 'Z' && vr[1] >= 'A' && vr[1] <= 'Z';
+}
+
+struct Walk {
+  const std::vector<uint8_t>& bytes;
+  std::string problem;     // empty while the walk is fine
+  bool fragments = false;  // inside encapsulated pixel data: items hold compressed bytes
+
+  // Walks elements from `pos` to the end (or, with `metaOnly`, while the group is 0002).
+  // Returns where it stopped.
+  size_t run(size_t pos, bool explicitVr, bool bigEndian, bool metaOnly) {
+    const size_t n = bytes.size();
+    while (pos < n && problem.empty()) {
+      if (n - pos < 8) return fail(pos, "an element header is cut short");
+      const bool big = bigEndian && !metaOnly;
+      const auto group = uint16_t(readUnsigned(&bytes[pos], 2, big));
+      const auto element = uint16_t(readUnsigned(&bytes[pos + 2], 2, big));
+      if (metaOnly && group != 0x0002) return pos;
+      if (group == 0xfffe) {  // item and delimiters: no VR; an item's content is walked
+        const uint64_t length = readUnsigned(&bytes[pos + 4], 4, big);
+        pos += 8;
+        if (element == 0xe0dd) fragments = false;
+        if (element == 0xe000 && length != 0xffffffffu) {
+          if (length > n - pos)
+            return fail(pos, "an item claims " + std::to_string(length) + " bytes");
+          if (fragments) pos += size_t(length);  // a compressed fragment: skip it whole
+        }
+        continue;
+      }
+      uint64_t length = 0;
+      bool enter = false;  // a sequence (or encapsulated pixel data): walk into it
+      if (explicitVr || metaOnly) {
+        const uint8_t* vr = &bytes[pos + 4];
+        if (!isVr(vr)) return fail(pos, "an element has no valid VR");
+        if (longVr(vr)) {
+          if (n - pos < 12) return fail(pos, "an element header is cut short");
+          length = readUnsigned(&bytes[pos + 8], 4, big);
+          pos += 12;
+        } else {
+          length = readUnsigned(&bytes[pos + 6], 2, big);
+          pos += 8;
+        }
+        enter = vr[0] == 'S' && vr[1] == 'Q';
+      } else {
+        length = readUnsigned(&bytes[pos + 4], 4, big);
+        pos += 8;
+      }
+      if (length == 0xffffffffu) {  // undefined length: its items follow
+        fragments = group == 0x7fe0;
+        continue;
+      }
+      if (enter) continue;  // a defined-length sequence: its items follow
+      if (length > n - pos) {
+        return fail(pos, "element (" + hex(group) + "," + hex(element) + ") claims " +
+                             std::to_string(length) + " bytes but only " + std::to_string(n - pos) +
+                             " remain");
+      }
+      pos += size_t(length);
+    }
+    return pos;
+  }
+
+  size_t fail(size_t pos, const std::string& what) {
+    problem = what + " at byte " + std::to_string(pos);
+    return bytes.size();
+  }
+
+  static std::string hex(uint16_t v) {
+    char text[8];
+    std::snprintf(text, sizeof text, "%04X", v);
+    return text;
+  }
+};
+
+// The transfer syntax UID in the meta header's (0002,0010), or "".
+std::string transferSyntax(const std::vector<uint8_t>& b, size_t from, size_t to) {
+  for (size_t p = from; p + 8 <= to;) {
+    const auto element = uint16_t(readUnsigned(&b[p + 2], 2, false));
+    const bool longForm = longVr(&b[p + 4]);
+    const size_t header = longForm ? 12 : 8;
+    const uint64_t length =
+        longForm ? readUnsigned(&b[p + 8], 4, false) : readUnsigned(&b[p + 6], 2, false);
+    if (p + header + length > to) return "";
+    if (element == 0x0010) {
+      std::string uid(reinterpret_cast<const char*>(&b[p + header]), size_t(length));
+      while (!uid.empty() && (uid.back() == '\0' || uid.back() == ' ')) uid.pop_back();
+      return uid;
+    }
+    p += header + size_t(length);
+  }
+  return "";
+}
+
+}  // namespace
+
+DicomStructure checkDicomStructure(const std::string& path) {
+  const uint64_t size = regularFileSize(path);
+  checkAllocation(path, size, "file");
+  const std::vector<uint8_t> bytes = readFileRange(path, 0, size, "file");
+  const bool part10 = bytes.size() >= 132 && std::memcmp(&bytes[128], "DICM", 4) == 0;
+  Walk walk{bytes, {}};
+  size_t start = 0;
+  bool explicitVr = false, bigEndian = false;
+  if (part10) {
+    const size_t metaEnd = walk.run(132, true, false, true);
+    if (!walk.problem.empty()) failLoad(path, "corrupt DICOM meta header: " + walk.problem);
+    const std::string syntax = transferSyntax(bytes, 132, metaEnd);
+    if (syntax == "1.2.840.10008.1.2.1.99") return DicomStructure::Plausible;  // deflated
+    explicitVr = syntax != "1.2.840.10008.1.2";
+    bigEndian = syntax == "1.2.840.10008.1.2.2";
+    start = metaEnd;
+  } else {
+    // No preamble: GDCM may still read a bare data set; guess its VR form from the first bytes.
+    explicitVr = bytes.size() >= 8 && isVr(&bytes[4]);
+  }
+  walk.run(start, explicitVr, bigEndian, false);
+  if (walk.problem.empty()) return DicomStructure::Plausible;
+  if (!part10) return DicomStructure::NotDicom;
+  failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
+}
+
+}  // namespace ewa
