@@ -156,7 +156,8 @@ bool ControlPanel::drawCamera(Camera& camera) {
 
 std::optional<AxisView> ControlPanel::drawAxisViews() {
   std::optional<AxisView> chosen;
-  ImGui::TextUnformatted("look along");
+  // Patient axes are named by the side the eye is on (R = from the patient's right).
+  ImGui::TextUnformatted(patientFrame_ ? "view from" : "look along");
   for (AxisView v : kAxisViews) {
     ImGui::SameLine();
     if (ImGui::SmallButton(axisViewLabel(v, patientFrame_))) chosen = v;
