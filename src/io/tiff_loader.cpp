@@ -195,19 +195,27 @@ Volume loadTiff(const std::string& path, int channel) {
           failLoad(path, "--channel " + std::to_string(channel) + " is out of range (" +
                              std::to_string(channels) + " channel" + (channels == 1 ? "" : "s") +
                              ")");
+        // Resolution tags give the pixel size only in ImageJ's files (its unit) or with no
+        // unit; inch and centimetre resolutions are print sizes (72 dpi), not the sample's.
+        uint16_t resolutionUnit = RESUNIT_INCH;
+        TIFFGetFieldDefaulted(tiff.get(), TIFFTAG_RESOLUTIONUNIT, &resolutionUnit);
+        const bool imageJ = text.compare(0, 7, "ImageJ=") == 0;
         float xres = 0.0f, yres = 0.0f;
-        if (TIFFGetField(tiff.get(), TIFFTAG_XRESOLUTION, &xres) && xres > 0.0f &&
-            std::isfinite(xres))
-          layout.spacing.x = 1.0 / xres;
-        if (TIFFGetField(tiff.get(), TIFFTAG_YRESOLUTION, &yres) && yres > 0.0f &&
-            std::isfinite(yres))
-          layout.spacing.y = 1.0 / yres;
+        if (imageJ || resolutionUnit == RESUNIT_NONE) {
+          if (TIFFGetField(tiff.get(), TIFFTAG_XRESOLUTION, &xres) && xres > 0.0f &&
+              std::isfinite(1.0 / xres))
+            layout.spacing.x = 1.0 / xres;
+          if (TIFFGetField(tiff.get(), TIFFTAG_YRESOLUTION, &yres) && yres > 0.0f &&
+              std::isfinite(1.0 / yres))
+            layout.spacing.y = 1.0 / yres;
+        }
         double z = 0.0;
         if (parseDouble(imageJField(text, "spacing"), z) && z > 0.0 && std::isfinite(z))
           layout.spacing.z = z;
         else
           layout.notes.push_back("no slice spacing in the file: 1 assumed");
-        if (!(xres > 0.0f)) layout.notes.push_back("no pixel size in the file: 1 assumed");
+        if (layout.spacing.x == 1.0 && layout.spacing.y == 1.0)
+          layout.notes.push_back("no pixel size in the file: 1 assumed");
         const std::string unit = imageJField(text, "unit");
         if (!unit.empty()) layout.notes.push_back("spacing unit: " + quoteText(unit, 20));
         if (channels > 1)

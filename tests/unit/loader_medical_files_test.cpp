@@ -249,10 +249,12 @@ TEST(TiffFiles, MultiPageTypesChannelsAndImageJSpacing) {
   EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{3, 2, 3}));
   EXPECT_EQ(v.type(), ScalarType::UInt16);
   EXPECT_EQ(v.value(2, 1, 2), 2005);
-  EXPECT_DOUBLE_EQ(v.spacing().z, 2.5);
+  EXPECT_EQ(v.spacing(), glm::dvec3(0.25, 0.5, 2.5));  // resolution tags and spacing=
+  // 72 dpi in a plain TIFF is a print size, not the sample's: spacing 1.
   std::vector<std::vector<float>> fpages(2, std::vector<float>(4, 0.25f));
   ASSERT_TRUE(testing::writeTiff(dir.path("f.tiff"), 2, 2, fpages, SAMPLEFORMAT_IEEEFP));
   EXPECT_EQ(loadVolume(dir.path("f.tiff")).type(), ScalarType::Float32);
+  EXPECT_EQ(loadVolume(dir.path("f.tiff")).spacing(), glm::dvec3(1.0));
   // Three interleaved channels: channel 2 holds 100 + pixel index.
   std::vector<std::vector<uint8_t>> rgb(2, std::vector<uint8_t>(4 * 3));
   for (int p = 0; p < 2; ++p)

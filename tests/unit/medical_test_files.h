@@ -150,6 +150,9 @@ bool writeTiff(const std::string& path, uint32_t width, uint32_t height,
     TIFFSetField(t, TIFFTAG_ROWSPERSTRIP, height);
     if (p == 0 && !description.empty())
       TIFFSetField(t, TIFFTAG_IMAGEDESCRIPTION, description.c_str());
+    TIFFSetField(t, TIFFTAG_XRESOLUTION, description.empty() ? 72.0f : 4.0f);  // ImageJ: 0.25
+    TIFFSetField(t, TIFFTAG_YRESOLUTION, description.empty() ? 72.0f : 2.0f);  // ImageJ: 0.5
+    TIFFSetField(t, TIFFTAG_RESOLUTIONUNIT, description.empty() ? RESUNIT_INCH : RESUNIT_NONE);
     std::vector<T> row(size_t(width) * samples);
     for (uint32_t y = 0; y < height; ++y) {
       std::memcpy(row.data(), pages[p].data() + size_t(y) * width * samples,
