@@ -131,6 +131,40 @@ TEST(NiftiFiles, BadFilesFailWithOneLine) {
       dir.path("trunc.nii"), "--frame 3 is out of range");
 }
 
+TEST(Directions, NrrdSpaceDirectionsAndMetaImageTransformMatrix) {
+  TempDir dir;
+  // RAS directions and origin become LPS: x and y change sign.
+  const Volume n = loadVolume(
+      dir.write("ras.nrrd",
+                "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 3 4\nencoding: raw\n"
+                "space: right-anterior-superior\nspace directions: (0,2,0) (-1,0,0) (0,0,3)\n"
+                "space origin: (10,20,30)\n\n" +
+                    kVoxels24));
+  EXPECT_TRUE(n.patientFrame());
+  EXPECT_EQ(n.spacing(), glm::dvec3(2, 1, 3));
+  EXPECT_EQ(n.origin(), glm::dvec3(-10, -20, 30));
+  EXPECT_EQ(n.direction(),
+            glm::dmat3(glm::dvec3(0, -1, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1)));
+  // MetaImage lists each axis's direction in turn.
+  const Volume m = loadVolume(
+      dir.write("m.mha",
+                "ObjectType = Image\nNDims = 3\nDimSize = 2 3 4\nElementType = MET_UCHAR\n"
+                "TransformMatrix = 0 1 0 -1 0 0 0 0 1\nAnatomicalOrientation = RAI\n"
+                "ElementDataFile = LOCAL\n" +
+                    kVoxels24));
+  EXPECT_TRUE(m.patientFrame());
+  EXPECT_EQ(m.direction(),
+            glm::dmat3(glm::dvec3(0, 1, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1)));
+  // No space field: directions kept, no patient frame.
+  const Volume plain =
+      loadVolume(dir.write("p.nrrd",
+                           "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 3 4\nencoding: raw\n"
+                           "space directions: (0,1,0) (-1,0,0) (0,0,1)\n\n" +
+                               kVoxels24));
+  EXPECT_FALSE(plain.patientFrame());
+  EXPECT_EQ(plain.direction()[0], glm::dvec3(0, 1, 0));
+}
+
 // A folder of `count` slices 2 apart along z, in shuffled file names.
 std::string dicomSeries(const TempDir& dir, const std::string& name, int count,
                         testing::DicomSliceSpec spec = {}) {
