@@ -1,6 +1,8 @@
 // checkDicomStructure: element lengths against the file size, before GDCM allocates by them.
 #include "io/dicom_guard.h"
 
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <vector>
 
@@ -26,34 +28,60 @@ bool isVr(const uint8_t* vr) {
   return vr[0] >= 'A' && vr[0] <= 'Z' && vr[1] >= 'A' && vr[1] <= 'Z';
 }
 
+// Where the walk is: inside a sequence, an item, or encapsulated pixel data (whose items hold
+// compressed bytes), each ending at a byte offset or, with undefined length, at a delimiter.
+struct Container {
+  enum Kind { Sequence, Item, Fragments } kind;
+  size_t end;  // kUndefined: ends at its delimiter
+};
+constexpr size_t kUndefined = SIZE_MAX;
+
 struct Walk {
   const std::vector<uint8_t>& bytes;
-  std::string problem;     // empty while the walk is fine
-  bool fragments = false;  // inside encapsulated pixel data: items hold compressed bytes
+  std::string problem;  // empty while the walk is fine
+  std::vector<Container> open;
 
-  // Walks elements from `pos` to the end (or, with `metaOnly`, while the group is 0002).
+  // Walks elements from `pos` to the end (or, with `metaOnly`, while the group is 0002). Items
+  // and delimiters must sit where they belong: GDCM asserts (aborts) on one out of place.
   // Returns where it stopped.
   size_t run(size_t pos, bool explicitVr, bool bigEndian, bool metaOnly) {
     const size_t n = bytes.size();
-    while (pos < n && problem.empty()) {
+    while (problem.empty()) {
+      while (!open.empty() && open.back().end != kUndefined && pos >= open.back().end) {
+        if (pos > open.back().end) return fail(pos, "an element overruns its sequence or item");
+        open.pop_back();
+      }
+      if (pos >= n) break;
       if (n - pos < 8) return fail(pos, "an element header is cut short");
       const bool big = bigEndian && !metaOnly;
       const auto group = uint16_t(readUnsigned(&bytes[pos], 2, big));
       const auto element = uint16_t(readUnsigned(&bytes[pos + 2], 2, big));
       if (metaOnly && group != 0x0002) return pos;
-      if (group == 0xfffe) {  // item and delimiters: no VR; an item's content is walked
+      const Container::Kind top = open.empty() ? Container::Item : open.back().kind;
+      if (group == 0xfffe) {
         const uint64_t length = readUnsigned(&bytes[pos + 4], 4, big);
         pos += 8;
-        if (element == 0xe0dd) fragments = false;
-        if (element == 0xe000 && length != 0xffffffffu) {
-          if (length > n - pos)
+        if (element == 0xe000 && top == Container::Fragments) {
+          if (length > n - pos) return fail(pos, "a pixel data fragment is cut short");
+          pos += size_t(length);
+        } else if (element == 0xe000 && top == Container::Sequence) {
+          if (length != 0xffffffffu && length > n - pos)
             return fail(pos, "an item claims " + std::to_string(length) + " bytes");
-          if (fragments) pos += size_t(length);  // a compressed fragment: skip it whole
+          open.push_back({Container::Item, length == 0xffffffffu ? kUndefined : pos + length});
+        } else if (element == 0xe00d && !open.empty() && top == Container::Item &&
+                   open.back().end == kUndefined) {
+          open.pop_back();
+        } else if (element == 0xe0dd && !open.empty() && top != Container::Item &&
+                   open.back().end == kUndefined) {
+          open.pop_back();
+        } else {
+          return fail(pos - 8, "an item or delimiter out of place");
         }
         continue;
       }
+      if (top != Container::Item) return fail(pos, "an element outside any item");
       uint64_t length = 0;
-      bool enter = false;  // a sequence (or encapsulated pixel data): walk into it
+      bool sequence = false;
       if (explicitVr || metaOnly) {
         const uint8_t* vr = &bytes[pos + 4];
         if (!isVr(vr)) return fail(pos, "an element has no valid VR");
@@ -65,23 +93,28 @@ struct Walk {
           length = readUnsigned(&bytes[pos + 6], 2, big);
           pos += 8;
         }
-        enter = vr[0] == 'S' && vr[1] == 'Q';
+        sequence = vr[0] == 'S' && vr[1] == 'Q';
       } else {
         length = readUnsigned(&bytes[pos + 4], 4, big);
         pos += 8;
       }
-      if (length == 0xffffffffu) {  // undefined length: its items follow
-        fragments = group == 0x7fe0;
+      if (length == 0xffffffffu) {  // undefined length: items follow, then a delimiter
+        open.push_back({group == 0x7fe0 ? Container::Fragments : Container::Sequence, kUndefined});
         continue;
       }
-      if (enter) continue;  // a defined-length sequence: its items follow
       if (length > n - pos) {
         return fail(pos, "element (" + hex(group) + "," + hex(element) + ") claims " +
                              std::to_string(length) + " bytes but only " + std::to_string(n - pos) +
                              " remain");
       }
+      if (sequence) {
+        open.push_back({Container::Sequence, pos + size_t(length)});
+        continue;
+      }
       pos += size_t(length);
     }
+    if (problem.empty() && !metaOnly && !open.empty())
+      return fail(pos, "a sequence or item is not closed (truncated file?)");
     return pos;
   }
 
