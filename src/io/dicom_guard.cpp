@@ -24,8 +24,13 @@ bool longVr(const uint8_t* vr) {
   return false;
 }
 
+// One of the standard's value representations (GDCM falls back to other readers, which assert,
+// on anything else).
 bool isVr(const uint8_t* vr) {
-  return vr[0] >= 'A' && vr[0] <= 'Z' && vr[1] >= 'A' && vr[1] <= 'Z';
+  static const char kAll[] = "AEASATCSDADSDTFLFDISLOLTOBODOFOLOVOWPNSHSLSQSSSTSVTMUCUIULUNURUSUTUV";
+  for (size_t i = 0; i + 1 < sizeof kAll; i += 2)
+    if (vr[0] == uint8_t(kAll[i]) && vr[1] == uint8_t(kAll[i + 1])) return true;
+  return false;
 }
 
 // Where the walk is: inside a sequence, an item, or encapsulated pixel data (whose items hold
@@ -156,7 +161,7 @@ DicomStructure checkDicomStructure(const std::string& path) {
   checkAllocation(path, size, "file");
   const std::vector<uint8_t> bytes = readFileRange(path, 0, size, "file");
   const bool part10 = bytes.size() >= 132 && std::memcmp(&bytes[128], "DICM", 4) == 0;
-  Walk walk{bytes, {}};
+  Walk walk{bytes, {}, {}};
   size_t start = 0;
   bool explicitVr = false, bigEndian = false;
   if (part10) {
@@ -168,12 +173,11 @@ DicomStructure checkDicomStructure(const std::string& path) {
     bigEndian = syntax == "1.2.840.10008.1.2.2";
     start = metaEnd;
   } else {
-    // No preamble: GDCM may still read a bare data set; guess its VR form from the first bytes.
-    explicitVr = bytes.size() >= 8 && isVr(&bytes[4]);
+    // No preamble (ACR-NEMA and bare data sets): GDCM's reader for those asserts on bad input.
+    return DicomStructure::NotDicom;
   }
   walk.run(start, explicitVr, bigEndian, false);
   if (walk.problem.empty()) return DicomStructure::Plausible;
-  if (!part10) return DicomStructure::NotDicom;
   failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
 }
 

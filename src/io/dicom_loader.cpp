@@ -160,6 +160,9 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid) {
   std::error_code ec;
   const bool folder = std::filesystem::is_directory(path, ec);
   const std::string dir = folder ? path : std::filesystem::path(path).parent_path().string();
+  if (!folder && !looksLikeDicom(path))
+    failLoad(path, "not a DICOM file (no 'DICM' at byte 128; files without the Part 10 preamble "
+                   "are not read)");
   std::string fileSeries;
   const std::vector<DicomSeries> all =
       scanDicomFolder(dir.empty() ? "." : dir, folder ? std::string() : path, &fileSeries);

@@ -256,7 +256,7 @@ TEST(DicomFiles, BadSeriesFailWithOneLine) {
   std::filesystem::resize_file(cut + "/im1.dcm", std::filesystem::file_size(cut + "/im1.dcm") - 9);
   expectLoadError([&] { loadVolume(cut); }, cut, "im1.dcm: ");
   // A file that is not DICOM but says .dcm.
-  expectVolumeLoadError(dir.write("fake.dcm", std::string(200, 'x')), "not a DICOM image");
+  expectVolumeLoadError(dir.write("fake.dcm", std::string(200, 'x')), "not a DICOM file");
 }
 
 TEST(DicomFiles, MissingSliceWarns) {
