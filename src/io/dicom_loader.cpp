@@ -38,7 +38,24 @@ void appendValues(const std::vector<char>& buffer, size_t count, std::vector<dou
   }
 }
 
+// The pixel module must describe monochrome integer or float samples GDCM can decode; its
+// image reader asserts (aborts) on some impossible values instead of failing.
+void checkPixelModule(const DicomSlice& s) {
+  if (s.samplesPerPixel != 1)
+    failLoad(s.file, "colour or bad SamplesPerPixel " + std::to_string(s.samplesPerPixel) +
+                         " (monochrome images only)");
+  const int64_t bits = s.bitsAllocated;
+  if (bits != 8 && bits != 16 && bits != 32 && bits != 64)
+    failLoad(s.file, "unsupported BitsAllocated " + std::to_string(bits) + " (8, 16, 32 or 64)");
+  if (s.bitsStored < 1 || s.bitsStored > bits || s.highBit < s.bitsStored - 1 || s.highBit >= bits)
+    failLoad(s.file, "inconsistent BitsStored " + std::to_string(s.bitsStored) + " and HighBit " +
+                         std::to_string(s.highBit));
+  if (s.representation != 0 && s.representation != 1)
+    failLoad(s.file, "bad PixelRepresentation " + std::to_string(s.representation));
+}
+
 SlicePixels readSlice(const DicomSlice& slice) {
+  checkPixelModule(slice);
   gdcm::ImageReader reader;
   reader.SetFileName(slice.file.c_str());
   if (!reader.Read()) failLoad(slice.file, "GDCM cannot read the image");
@@ -161,8 +178,9 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid) {
   const bool folder = std::filesystem::is_directory(path, ec);
   const std::string dir = folder ? path : std::filesystem::path(path).parent_path().string();
   if (!folder && !looksLikeDicom(path))
-    failLoad(path, "not a DICOM file (no 'DICM' at byte 128; files without the Part 10 preamble "
-                   "are not read)");
+    failLoad(path,
+             "not a DICOM file (no 'DICM' at byte 128; files without the Part 10 preamble "
+             "are not read)");
   std::string fileSeries;
   const std::vector<DicomSeries> all =
       scanDicomFolder(dir.empty() ? "." : dir, folder ? std::string() : path, &fileSeries);

@@ -26,6 +26,11 @@ const gdcm::Tag kRows(0x0028, 0x0010);
 const gdcm::Tag kColumns(0x0028, 0x0011);
 const gdcm::Tag kPixelSpacing(0x0028, 0x0030);
 const gdcm::Tag kFrames(0x0028, 0x0008);
+const gdcm::Tag kSamplesPerPixel(0x0028, 0x0002);
+const gdcm::Tag kBitsAllocated(0x0028, 0x0100);
+const gdcm::Tag kBitsStored(0x0028, 0x0101);
+const gdcm::Tag kHighBit(0x0028, 0x0102);
+const gdcm::Tag kRepresentation(0x0028, 0x0103);
 
 // Numbers of a multi-valued DICOM string ("a\b\c"); empty when any is not a number.
 std::vector<double> numbers(const char* text) {
@@ -65,8 +70,9 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
   std::sort(files.begin(), files.end());
 
   gdcm::Scanner scanner;
-  for (const gdcm::Tag& t : {kSeriesUid, kSeriesDescription, kPosition, kOrientation, kRows,
-                             kColumns, kPixelSpacing, kFrames})
+  for (const gdcm::Tag& t :
+       {kSeriesUid, kSeriesDescription, kPosition, kOrientation, kRows, kColumns, kPixelSpacing,
+        kFrames, kSamplesPerPixel, kBitsAllocated, kBitsStored, kHighBit, kRepresentation})
     scanner.AddTag(t);
   if (!files.empty() && !scanner.Scan(files)) failLoad(folder, "cannot read the DICOM headers");
 
@@ -87,6 +93,12 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
     if (sp.size() == 2 && sp[0] > 0.0 && sp[1] > 0.0)
       s.rowSpacing = sp[0], s.columnSpacing = sp[1], s.hasSpacing = true;
     s.frames = std::max<int64_t>(1, integer(scanner.GetValue(file.c_str(), kFrames)));
+    if (const char* spp = scanner.GetValue(file.c_str(), kSamplesPerPixel))
+      s.samplesPerPixel = integer(spp);
+    s.bitsAllocated = integer(scanner.GetValue(file.c_str(), kBitsAllocated));
+    s.bitsStored = integer(scanner.GetValue(file.c_str(), kBitsStored));
+    s.highBit = integer(scanner.GetValue(file.c_str(), kHighBit));
+    s.representation = integer(scanner.GetValue(file.c_str(), kRepresentation));
     const char* uid = scanner.GetValue(file.c_str(), kSeriesUid);
     DicomSeries& series = byUid[uid ? trim(std::string(uid)) : std::string()];
     series.uid = uid ? trim(std::string(uid)) : std::string();

@@ -18,6 +18,8 @@ struct DicomSlice {
   double rowSpacing = 1.0, columnSpacing = 1.0;  // PixelSpacing: between rows, between columns
   bool hasSpacing = false;
   int64_t frames = 1;  // NumberOfFrames
+  // Pixel module values, checked before GDCM decodes (its reader asserts on some bad ones).
+  int64_t samplesPerPixel = 1, bitsAllocated = 0, bitsStored = 0, highBit = 0, representation = 0;
 };
 
 struct DicomSeries {
