@@ -167,7 +167,14 @@ DicomStructure checkDicomStructure(const std::string& path) {
   if (part10) {
     const size_t metaEnd = walk.run(132, true, false, true);
     if (!walk.problem.empty()) failLoad(path, "corrupt DICOM meta header: " + walk.problem);
+    // GDCM trusts the meta header's group length (0002,0000) and asserts when it lies.
+    if (metaEnd >= 144 && std::memcmp(&bytes[132], "\x02\x00\x00\x00UL\x04\x00", 8) == 0 &&
+        readUnsigned(&bytes[140], 4, false) != metaEnd - 144)
+      failLoad(path, "corrupt DICOM meta header: its group length is " +
+                         std::to_string(readUnsigned(&bytes[140], 4, false)) + ", its elements " +
+                         std::to_string(metaEnd - 144) + " bytes");
     const std::string syntax = transferSyntax(bytes, 132, metaEnd);
+    if (syntax.empty()) failLoad(path, "DICOM meta header without a transfer syntax");
     if (syntax == "1.2.840.10008.1.2.1.99") return DicomStructure::Plausible;  // deflated
     explicitVr = syntax != "1.2.840.10008.1.2";
     bigEndian = syntax == "1.2.840.10008.1.2.2";
