@@ -77,6 +77,29 @@ struct PageFormat {
   }
 };
 
+// The page's samples must fit in its strips before anything is sized by the header: all of
+// them when uncompressed, and at most kMaxRatio times the strips' bytes when compressed (LZW,
+// the loosest of TIFF's codecs, stays under it).
+constexpr uint64_t kMaxRatio = 4096;
+
+void checkStripBytes(const TiffFile& file, const PageFormat& f) {
+  TIFF* t = file.get();
+  uint16_t compression = COMPRESSION_NONE;
+  TIFFGetFieldDefaulted(t, TIFFTAG_COMPRESSION, &compression);
+  uint64_t* counts = nullptr;
+  if (!TIFFGetField(t, TIFFTAG_STRIPBYTECOUNTS, &counts) || !counts)
+    file.fail("a page has no strip byte counts");
+  uint64_t stored = 0;
+  for (uint32_t s = 0; s < TIFFNumberOfStrips(t); ++s)
+    if (__builtin_add_overflow(stored, counts[s], &stored)) file.fail("bad strip byte counts");
+  const unsigned __int128 samples =
+      (unsigned __int128)f.width * f.height * f.samples * std::max<uint16_t>(f.bits, 1) / 8;
+  if (compression == COMPRESSION_NONE ? samples > stored
+                                      : samples > (unsigned __int128)stored * kMaxRatio + 65536)
+    file.fail("a page of " + std::to_string(f.width) + " x " + std::to_string(f.height) +
+              " does not fit in its " + std::to_string(stored) + " bytes of strips (truncated?)");
+}
+
 PageFormat pageFormat(const TiffFile& file) {
   PageFormat f;
   TIFF* t = file.get();
@@ -88,6 +111,7 @@ PageFormat pageFormat(const TiffFile& file) {
   TIFFGetFieldDefaulted(t, TIFFTAG_SAMPLEFORMAT, &f.sampleFormat);
   TIFFGetFieldDefaulted(t, TIFFTAG_PLANARCONFIG, &f.planar);
   if (TIFFIsTiled(t)) file.fail("tiled TIFF pages are not supported (only strips)");
+  checkStripBytes(file, f);
   return f;
 }
 
