@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "io/byte_order.h"
+#include "io/file_bytes.h"
 #include "io/format_loaders.h"
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
@@ -42,7 +43,7 @@ struct TiffCloser {
 // An open TIFF file and the first error libtiff reported about it.
 class TiffFile {
  public:
-  explicit TiffFile(const std::string& path) : path_(path) {
+  explicit TiffFile(const std::string& path) : path_(path), size_(regularFileSize(path)) {
     TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
     TIFFOpenOptionsSetErrorHandlerExtR(options, &keepMessage, &error_);
     TIFFOpenOptionsSetWarningHandlerExtR(options, &ignoreMessage, nullptr);
@@ -53,12 +54,14 @@ class TiffFile {
     if (!tiff_) fail("not a readable TIFF file");
   }
   TIFF* get() const { return tiff_.get(); }
+  uint64_t size() const { return size_; }
   [[noreturn]] void fail(const std::string& problem) const {
     failLoad(path_, problem + (error_.empty() ? "" : " (" + oneLine(error_) + ")"));
   }
 
  private:
   std::string path_;
+  uint64_t size_ = 0;
   std::string error_;
   std::unique_ptr<TIFF, TiffCloser> tiff_;
 };
@@ -92,6 +95,9 @@ void checkStripBytes(const TiffFile& file, const PageFormat& f) {
   uint64_t stored = 0;
   for (uint32_t s = 0; s < TIFFNumberOfStrips(t); ++s)
     if (__builtin_add_overflow(stored, counts[s], &stored)) file.fail("bad strip byte counts");
+  if (stored > file.size())
+    file.fail("strip byte counts of " + std::to_string(stored) + " exceed the file's " +
+              std::to_string(file.size()) + " bytes");
   const unsigned __int128 samples =
       (unsigned __int128)f.width * f.height * f.samples * std::max<uint16_t>(f.bits, 1) / 8;
   if (compression == COMPRESSION_NONE ? samples > stored
