@@ -84,7 +84,7 @@ std::string volumeInfoJson(const Volume& v) {
   const glm::dmat3& d = v.direction();
   j["direction"] = {{d[0][0], d[1][0], d[2][0]}, {d[0][1], d[1][1], d[2][1]},
                     {d[0][2], d[1][2], d[2][2]}};
-  j["frame"] = v.patientFrame() ? "LPS" : "none";
+  j["space"] = v.patientFrame() ? "LPS" : "none";  // patient axes, or none
   j["notes"] = v.notes();
   return j.dump();
 }
