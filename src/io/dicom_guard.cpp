@@ -179,6 +179,7 @@ DicomStructure checkDicomStructure(const std::string& path) {
     explicitVr = syntax != "1.2.840.10008.1.2";
     bigEndian = syntax == "1.2.840.10008.1.2.2";
     start = metaEnd;
+    if (bytes.size() - start < 8) failLoad(path, "no data set after the DICOM meta header");
   } else {
     // No preamble (ACR-NEMA and bare data sets): GDCM's reader for those asserts on bad input.
     return DicomStructure::NotDicom;
