@@ -4,9 +4,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <vector>
 
 #include "io/byte_order.h"
+#include "io/format_loaders.h"
 #include "io/file_bytes.h"
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
@@ -156,35 +158,34 @@ std::string transferSyntax(const std::vector<uint8_t>& b, size_t from, size_t to
 
 }  // namespace
 
+bool looksLikeDicom(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::file_size(path, ec) < 132 || ec) return false;
+  return std::memcmp(readFileRange(path, 128, 4, "DICOM preamble").data(), "DICM", 4) == 0;
+}
+
 DicomStructure checkDicomStructure(const std::string& path) {
   const uint64_t size = regularFileSize(path);
+  // Other files in a folder (notes, pictures) are only looked at as far as the preamble.
+  if (!looksLikeDicom(path)) return DicomStructure::NotDicom;
   checkAllocation(path, size, "file");
   const std::vector<uint8_t> bytes = readFileRange(path, 0, size, "file");
-  const bool part10 = bytes.size() >= 132 && std::memcmp(&bytes[128], "DICM", 4) == 0;
   Walk walk{bytes, {}, {}};
-  size_t start = 0;
-  bool explicitVr = false, bigEndian = false;
-  if (part10) {
-    const size_t metaEnd = walk.run(132, true, false, true);
-    if (!walk.problem.empty()) failLoad(path, "corrupt DICOM meta header: " + walk.problem);
-    // GDCM trusts the meta header's group length (0002,0000) and asserts when it lies.
-    if (metaEnd >= 144 && std::memcmp(&bytes[132], "\x02\x00\x00\x00UL\x04\x00", 8) == 0 &&
-        readUnsigned(&bytes[140], 4, false) != metaEnd - 144)
-      failLoad(path, "corrupt DICOM meta header: its group length is " +
-                         std::to_string(readUnsigned(&bytes[140], 4, false)) + ", its elements " +
-                         std::to_string(metaEnd - 144) + " bytes");
-    const std::string syntax = transferSyntax(bytes, 132, metaEnd);
-    if (syntax.empty()) failLoad(path, "DICOM meta header without a transfer syntax");
-    if (syntax == "1.2.840.10008.1.2.1.99") return DicomStructure::Plausible;  // deflated
-    explicitVr = syntax != "1.2.840.10008.1.2";
-    bigEndian = syntax == "1.2.840.10008.1.2.2";
-    start = metaEnd;
-    if (bytes.size() - start < 8) failLoad(path, "no data set after the DICOM meta header");
-  } else {
-    // No preamble (ACR-NEMA and bare data sets): GDCM's reader for those asserts on bad input.
-    return DicomStructure::NotDicom;
-  }
-  walk.run(start, explicitVr, bigEndian, false);
+  const size_t metaEnd = walk.run(132, true, false, true);
+  if (!walk.problem.empty()) failLoad(path, "corrupt DICOM meta header: " + walk.problem);
+  // GDCM trusts the meta header's group length (0002,0000) and asserts when it lies.
+  if (metaEnd >= 144 && std::memcmp(&bytes[132], "\x02\x00\x00\x00UL\x04\x00", 8) == 0 &&
+      readUnsigned(&bytes[140], 4, false) != metaEnd - 144)
+    failLoad(path, "corrupt DICOM meta header: its group length is " +
+                       std::to_string(readUnsigned(&bytes[140], 4, false)) + ", its elements " +
+                       std::to_string(metaEnd - 144) + " bytes");
+  const std::string syntax = transferSyntax(bytes, 132, metaEnd);
+  if (syntax.empty()) failLoad(path, "DICOM meta header without a transfer syntax");
+  if (syntax == "1.2.840.10008.1.2.1.99") return DicomStructure::Plausible;  // deflated
+  const bool explicitVr = syntax != "1.2.840.10008.1.2";
+  const bool bigEndian = syntax == "1.2.840.10008.1.2.2";
+  if (bytes.size() - metaEnd < 8) failLoad(path, "no data set after the DICOM meta header");
+  walk.run(metaEnd, explicitVr, bigEndian, false);
   if (walk.problem.empty()) return DicomStructure::Plausible;
   failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
 }

@@ -166,13 +166,6 @@ const DicomSeries& pickSeries(const std::string& path, const std::vector<DicomSe
 
 }  // namespace
 
-bool looksLikeDicom(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::file_size(path, ec) < 132 || ec) return false;
-  const std::vector<uint8_t> head = readFileRange(path, 128, 4, "DICOM preamble");
-  return std::memcmp(head.data(), "DICM", 4) == 0;
-}
-
 Volume loadDicom(const std::string& path, const std::string& seriesUid) {
   std::error_code ec;
   const bool folder = std::filesystem::is_directory(path, ec);
