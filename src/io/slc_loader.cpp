@@ -52,6 +52,7 @@ class SlcScanner {
       failLoad(path_, std::string("missing X after the ") + what);
     ++pos_;
   }
+  uint64_t remaining() const { return bytes_.size() - pos_; }
   const uint8_t* take(uint64_t count, const std::string& what) {
     if (count > bytes_.size() - pos_)
       failLoad(path_, what + " needs " + std::to_string(count) + " bytes but only " +
@@ -127,6 +128,12 @@ Volume loadSlc(const std::string& path) {
     failLoad(path, "bad icon size");
   in.take(3 * uint64_t(iconWidth) * uint64_t(iconHeight), "icon");  // R, G and B planes
 
+  // The slices must be able to hold the voxels before a buffer is sized by the header: byte for
+  // byte raw, and at most 127 bytes from each 2-byte run (plus each slice's size line) encoded.
+  if (compression == 0 ? total > in.remaining() : total > 64 * in.remaining())
+    failLoad(path, "the file's " + std::to_string(in.remaining()) +
+                       " bytes of slices cannot hold " + std::to_string(total) +
+                       " voxels (truncated file or wrong sizes?)");
   const size_t plane = size_t(layout.dims[0]) * size_t(layout.dims[1]);
   std::vector<uint8_t> voxels(total);
   for (int64_t z = 0; z < layout.dims[2]; ++z) {
