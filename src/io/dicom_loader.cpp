@@ -1,6 +1,7 @@
 // DICOM series (a folder or any file of it) through GDCM: sorted slices, rescale, orientation.
 #include <gdcmImage.h>
 #include <gdcmImageReader.h>
+#include <gdcmSequenceOfFragments.h>
 
 #include <algorithm>
 #include <cmath>
@@ -71,6 +72,18 @@ SlicePixels readSlice(const DicomSlice& slice) {
                          uint64_t(std::max(1u, image.GetNumberOfDimensions() > 2 ? dims[2] : 1u));
   if (count != uint64_t(slice.rows) * uint64_t(slice.columns) * uint64_t(slice.frames))
     failLoad(slice.file, "pixel count disagrees with the header");
+  // The stored pixel data must be able to hold the image before a buffer is sized by Rows and
+  // Columns: all of it uncompressed; compressed, within a ratio no real image reaches.
+  const uint64_t need = count * format.GetPixelSize();
+  uint64_t capacity = 0;
+  if (const gdcm::ByteValue* raw = image.GetDataElement().GetByteValue())
+    capacity = raw->GetLength();
+  else if (const gdcm::SequenceOfFragments* f = image.GetDataElement().GetSequenceOfFragments())
+    capacity = uint64_t(f->ComputeByteLength()) * 65536 + (1u << 20);
+  if (capacity < need)
+    failLoad(slice.file, "pixel data cannot hold a " + std::to_string(slice.columns) + " x " +
+                             std::to_string(slice.rows) + " image (truncated file?)");
+  checkAllocation(slice.file, need, "DICOM image");
   std::vector<char> buffer(image.GetBufferLength());
   if (buffer.size() < count * format.GetPixelSize() || !image.GetBuffer(buffer.data()))
     failLoad(slice.file, "pixel data are missing, truncated or cannot be decoded");
@@ -227,7 +240,6 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid) {
   checkAllocation(path, total * 2, "DICOM values");  // doubles while rescaling
 
   std::vector<double> values;
-  values.reserve(size_t(layout.dims[0] * layout.dims[1] * layout.dims[2]));
   bool integral = true, sameRescale = true, sameType = true;
   double slope0 = 0.0, intercept0 = 0.0;
   gdcm::PixelFormat::ScalarType type0 = gdcm::PixelFormat::UNKNOWN;

@@ -255,6 +255,22 @@ TEST(DicomFiles, BadSeriesFailWithOneLine) {
   const std::string cut = dicomSeries(dir, "cut", 3);
   std::filesystem::resize_file(cut + "/im1.dcm", std::filesystem::file_size(cut + "/im1.dcm") - 9);
   expectLoadError([&] { loadVolume(cut); }, cut, "im1.dcm: ");
+  // Rows and Columns that claim far more pixels than the file holds: refused before any buffer.
+  const std::string liar = dicomSeries(dir, "liar", 1);
+  {
+    gdcm::Reader reader;
+    reader.SetFileName((liar + "/im0.dcm").c_str());
+    ASSERT_TRUE(reader.Read());
+    gdcm::Attribute<0x0028, 0x0010> rows{40000};
+    gdcm::Attribute<0x0028, 0x0011> columns{40000};
+    reader.GetFile().GetDataSet().Replace(rows.GetAsDataElement());
+    reader.GetFile().GetDataSet().Replace(columns.GetAsDataElement());
+    gdcm::Writer writer;
+    writer.SetFile(reader.GetFile());
+    writer.SetFileName((liar + "/im0.dcm").c_str());
+    ASSERT_TRUE(writer.Write());
+  }
+  expectLoadError([&] { loadVolume(liar); }, liar, "cannot hold a 40000 x 40000 image");
   // A file that is not DICOM but says .dcm.
   expectVolumeLoadError(dir.write("fake.dcm", std::string(200, 'x')), "not a DICOM file");
 }
