@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "io/byte_order.h"
-#include "io/format_loaders.h"
 #include "io/file_bytes.h"
+#include "io/format_loaders.h"
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
 
@@ -118,11 +118,21 @@ struct Walk {
         open.push_back({Container::Sequence, pos + size_t(length)});
         continue;
       }
+      // GDCM asserts that a retired Recognition Code names ACR-NEMA or MIPS.
+      if (group == 0x0008 && element == 0x0010 && open.empty() && !recognitionCodeOk(pos, length))
+        return fail(pos, "a Recognition Code (0008,0010) that is not ACR-NEMA");
       pos += size_t(length);
     }
     if (problem.empty() && !metaOnly && !open.empty())
       return fail(pos, "a sequence or item is not closed (truncated file?)");
     return pos;
+  }
+
+  bool recognitionCodeOk(size_t pos, uint64_t length) const {
+    const std::string value(reinterpret_cast<const char*>(&bytes[pos]), size_t(length));
+    for (const char* ok : {"ACR-NEMA", "ACRNEMA", "MIPS 2.0"})
+      if (value.compare(0, std::strlen(ok), ok) == 0) return true;
+    return false;
   }
 
   size_t fail(size_t pos, const std::string& what) {
