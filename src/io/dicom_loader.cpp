@@ -51,6 +51,9 @@ void checkPixelModule(const DicomSlice& s) {
   if (s.bitsStored < 1 || s.bitsStored > bits || s.highBit < s.bitsStored - 1 || s.highBit >= bits)
     failLoad(s.file, "inconsistent BitsStored " + std::to_string(s.bitsStored) + " and HighBit " +
                          std::to_string(s.highBit));
+  if (!s.photometric.empty() && s.photometric != "MONOCHROME1" && s.photometric != "MONOCHROME2")
+    failLoad(s.file, "PhotometricInterpretation " + quoteText(s.photometric, 20) +
+                         " (monochrome images only)");
   if (s.representation != 0 && s.representation != 1)
     failLoad(s.file, "bad PixelRepresentation " + std::to_string(s.representation));
 }

@@ -31,6 +31,7 @@ const gdcm::Tag kBitsAllocated(0x0028, 0x0100);
 const gdcm::Tag kBitsStored(0x0028, 0x0101);
 const gdcm::Tag kHighBit(0x0028, 0x0102);
 const gdcm::Tag kRepresentation(0x0028, 0x0103);
+const gdcm::Tag kPhotometric(0x0028, 0x0004);
 
 // Numbers of a multi-valued DICOM string ("a\b\c"); empty when any is not a number.
 std::vector<double> numbers(const char* text) {
@@ -70,9 +71,9 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
   std::sort(files.begin(), files.end());
 
   gdcm::Scanner scanner;
-  for (const gdcm::Tag& t :
-       {kSeriesUid, kSeriesDescription, kPosition, kOrientation, kRows, kColumns, kPixelSpacing,
-        kFrames, kSamplesPerPixel, kBitsAllocated, kBitsStored, kHighBit, kRepresentation})
+  for (const gdcm::Tag& t : {kSeriesUid, kSeriesDescription, kPosition, kOrientation, kRows,
+                             kColumns, kPixelSpacing, kFrames, kSamplesPerPixel, kBitsAllocated,
+                             kBitsStored, kHighBit, kRepresentation, kPhotometric})
     scanner.AddTag(t);
   if (!files.empty() && !scanner.Scan(files)) failLoad(folder, "cannot read the DICOM headers");
 
@@ -99,6 +100,7 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
     s.bitsStored = integer(scanner.GetValue(file.c_str(), kBitsStored));
     s.highBit = integer(scanner.GetValue(file.c_str(), kHighBit));
     s.representation = integer(scanner.GetValue(file.c_str(), kRepresentation));
+    if (const char* pi = scanner.GetValue(file.c_str(), kPhotometric)) s.photometric = trim(pi);
     const char* uid = scanner.GetValue(file.c_str(), kSeriesUid);
     DicomSeries& series = byUid[uid ? trim(std::string(uid)) : std::string()];
     series.uid = uid ? trim(std::string(uid)) : std::string();

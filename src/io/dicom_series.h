@@ -20,6 +20,7 @@ struct DicomSlice {
   int64_t frames = 1;  // NumberOfFrames
   // Pixel module values, checked before GDCM decodes (its reader asserts on some bad ones).
   int64_t samplesPerPixel = 1, bitsAllocated = 0, bitsStored = 0, highBit = 0, representation = 0;
+  std::string photometric;  // PhotometricInterpretation, trimmed; empty when absent
 };
 
 struct DicomSeries {
