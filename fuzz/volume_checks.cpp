@@ -4,7 +4,10 @@
 #include <cmath>
 #include <numeric>
 
+#include <glm/matrix.hpp>
+
 #include "core/splat_set.h"
+#include "core/volume_orientation.h"
 #include "core/transfer_function.h"
 #include "fuzz_case.h"
 #include "io/volume_loader.h"
@@ -24,6 +27,8 @@ void checkVolume(const Volume& v) {
     EWA_FUZZ_CHECK(std::isfinite(v.spacing()[a]) && v.spacing()[a] > 0.0);
     EWA_FUZZ_CHECK(std::isfinite(v.origin()[a]));
   }
+  // The direction loaders leave: a rotation (renderers move the camera by its inverse).
+  EWA_FUZZ_CHECK(isOrthonormal(v.direction(), 1e-6) && glm::determinant(v.direction()) > 0.0);
   EWA_FUZZ_CHECK(std::isfinite(v.minValue()) && std::isfinite(v.maxValue()));
   EWA_FUZZ_CHECK(v.minValue() <= v.maxValue());
   const uint64_t counted = std::accumulate(v.histogram().begin(), v.histogram().end(), uint64_t{0});

@@ -13,7 +13,8 @@ namespace ewa::fuzz {
 // A LoadError is the expected answer to a bad file; a loaded volume must pass checkVolume.
 void fuzzVolumeFile(const uint8_t* data, size_t size, const std::string& extension);
 
-// Invariants of any loaded volume: data size = dims x type size, finite range with lo <= hi,
+// Invariants of any loaded volume: data size = dims x type size, a rotation for direction,
+// finite range with lo <= hi,
 // a histogram counting only finite voxels, and (for small volumes) a splat set from the
 // histogram's default transfer function with every splat inside the grid.
 void checkVolume(const Volume& volume);

@@ -212,6 +212,152 @@ def tf_seeds():
           b' "opacity_unit_distance": 0.25, "name": "step"}')
 
 
+def nifti_seeds():
+    # Real headers with the sizes cut to 4 x 3 x 2 (4D: 2 frames) and data of their type.
+    for rel in ["nifti/anatomical.nii", "nifti/functional.nii", "nifti/example4d.nii.gz",
+                "nifti/example_nifti2.nii.gz", "nifti/standard.nii.gz"]:
+        raw = read_text(os.path.join(DATA, rel))
+        if rel.endswith(".gz"):
+            raw = gzip.decompress(raw)
+        big = struct.unpack("<i", raw[:4])[0] not in (348, 540)
+        e = ">" if big else "<"
+        nifti2 = struct.unpack(e + "i", raw[:4])[0] == 540
+        head = bytearray(raw[:544 if nifti2 else 352])
+        if nifti2:
+            dims = list(struct.unpack(e + "8q", head[16:80]))
+            datatype, bitpix = struct.unpack(e + "2h", head[12:16])
+        else:
+            dims = list(struct.unpack(e + "8h", head[40:56]))
+            datatype, bitpix = struct.unpack(e + "2h", head[70:74])
+        frames = 2 if dims[0] >= 4 else 1
+        dims[1:5] = [SIZES[0], SIZES[1], SIZES[2], frames]
+        if nifti2:
+            head[16:80] = struct.pack(e + "8q", *dims)
+            head[168:176] = struct.pack(e + "q", len(head))
+        else:
+            head[40:56] = struct.pack(e + "8h", *dims)
+            head[108:112] = struct.pack(e + "f", float(len(head)))
+        body = payload(SIZES[0] * SIZES[1] * SIZES[2] * frames, max(1, bitpix // 8), 3)
+        out = bytes(head) + body
+        name = os.path.basename(rel)
+        write("nifti", name, gzip.compress(out, mtime=0) if rel.endswith(".gz") else out)
+
+
+def dicom_elements(raw):
+    # (tag, value offset, length) of the top-level elements of an implicit VR little-endian
+    # data set after the explicit-VR group 2 meta header; enough to rewrite sizes in a seed.
+    pos, out = 132, []
+    while pos < len(raw):
+        group, elem = struct.unpack("<HH", raw[pos:pos + 4])
+        if group == 2:
+            vr = raw[pos + 4:pos + 6]
+            if vr in (b"OB", b"OW", b"SQ", b"UN", b"UT"):
+                length = struct.unpack("<I", raw[pos + 8:pos + 12])[0]
+                start = pos + 12
+            else:
+                length = struct.unpack("<H", raw[pos + 6:pos + 8])[0]
+                start = pos + 8
+        else:
+            length = struct.unpack("<I", raw[pos + 4:pos + 8])[0]
+            start = pos + 8
+            if length == 0xFFFFFFFF:
+                end = raw.find(b"\xfe\xff\xdd\xe0", pos)
+                out.append(((group, elem), start, end - start))
+                pos = end + 8
+                continue
+        out.append(((group, elem), start, length))
+        pos = start + length
+    return out
+
+
+def small_dicom(raw, z, rows=3, cols=4):
+    # A PET slice shrunk to cols x rows pixels, moved to height z.
+    out = bytearray()
+    last = 0
+    for tag, start, length in dicom_elements(raw):
+        value = None
+        if tag == (0x0028, 0x0010):
+            value = struct.pack("<H", rows)
+        elif tag == (0x0028, 0x0011):
+            value = struct.pack("<H", cols)
+        elif tag == (0x0020, 0x0032):
+            value = ("0\\0\\%g" % z).encode()
+            value += b" " * (len(value) % 2)
+        elif tag == (0x7FE0, 0x0010):
+            value = payload(rows * cols, 2, int(z))
+        if value is None:
+            continue
+        out += raw[last:start - 4] + struct.pack("<I", len(value)) + value
+        last = start + length
+    out += raw[last:]
+    return bytes(out)
+
+
+def dicom_seeds():
+    pet = read_text(os.path.join(DATA, "dicom-pet", "000000.dcm"))
+    write("dicom", "pet_slice.dcm", small_dicom(pet, 0))
+    write("dicom", "pet_three_slices.dcm",
+          small_dicom(pet, 0) + MARK + small_dicom(pet, 3.375) + MARK + small_dicom(pet, 6.75))
+
+
+def tiff_file(pages, bits, sample_format, description=b""):
+    # A little-endian TIFF: one strip per page, width 4, height 3, one sample.
+    width, height = SIZES[0], SIZES[1]
+    out = bytearray(b"II*\0" + struct.pack("<I", 0))
+    ifd_offsets = []
+    for p in range(pages):
+        data = payload(width * height, bits // 8, p) if sample_format != 3 else \
+            struct.pack("<%df" % (width * height), *[float(i + p) for i in range(width * height)])
+        data_at = len(out)
+        out += data
+        desc_at = len(out)
+        out += description + b"\0" if description and p == 0 else b""
+        if len(out) % 2:
+            out += b"\0"
+        entries = [(256, 4, 1, width), (257, 4, 1, height), (258, 3, 1, bits), (259, 3, 1, 1),
+                   (262, 3, 1, 1), (273, 4, 1, data_at), (277, 3, 1, 1), (278, 4, 1, height),
+                   (279, 4, 1, len(data)), (339, 3, 1, sample_format)]
+        if description and p == 0:
+            entries.append((270, 2, len(description) + 1, desc_at))
+        entries.sort()
+        ifd_offsets.append(len(out))
+        out += struct.pack("<H", len(entries))
+        for tag, typ, count, value in entries:
+            if typ == 3 and count == 1:
+                out += struct.pack("<HHIHH", tag, typ, count, value, 0)
+            else:
+                out += struct.pack("<HHII", tag, typ, count, value)
+        out += struct.pack("<I", 0)
+    out[4:8] = struct.pack("<I", ifd_offsets[0])
+    for a, b in zip(ifd_offsets, ifd_offsets[1:]):
+        count = struct.unpack("<H", out[a:a + 2])[0]
+        out[a + 2 + 12 * count:a + 6 + 12 * count] = struct.pack("<I", b)
+    return bytes(out)
+
+
+def tiff_seeds():
+    write("tiff", "uint8_pages.tif", tiff_file(2, 8, 1))
+    write("tiff", "uint16_imagej.tif",
+          tiff_file(2, 16, 1, b"ImageJ=1.53\nimages=2\nslices=2\nunit=micron\nspacing=2.5\n"))
+    write("tiff", "float32.tif", tiff_file(2, 32, 3))
+
+
+def slc_seeds():
+    # neghip.slc's header with 4 x 3 x 2 voxels: raw slices, and run-length encoded ones.
+    head = read_text(os.path.join(DATA, "neghip", "neghip.slc"))[:48].split(b"\n")
+    lines = head[:4]
+    lines[1] = b"%d %d %d 8" % SIZES
+    icon = b"2 2 X" + bytes(12)
+    plane = SIZES[0] * SIZES[1]
+    write("slc", "raw.slc", b"\n".join(lines[:3] + [b"1 6 0 0"]) + b"\n" + icon +
+          payload(plane * SIZES[2], 1, 5))
+    rle = b""
+    for z in range(SIZES[2]):
+        body = bytes([0x80 | 4]) + payload(4, 1, z) + bytes([plane - 4, 9, 0])
+        rle += b"%d X" % len(body) + body
+    write("slc", "rle.slc", b"\n".join(lines[:3] + [b"1 6 0 1"]) + b"\n" + icon + rle)
+
+
 def main():
     if not os.path.isdir(DATA):
         sys.exit("make_fuzz_seeds.py: %s: no such folder (the shared data)" % DATA)
@@ -221,6 +367,10 @@ def main():
     vti_seeds()
     raw_seeds()
     tf_seeds()
+    nifti_seeds()
+    dicom_seeds()
+    tiff_seeds()
+    slc_seeds()
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@
 #include "app/bench_support.h"
 #include "app/options.h"
 #include "app/scene.h"
+#include "core/volume_orientation.h"
 #include "gl/shader_library.h"
 #include "platform/headless_context.h"
 #include "render/splat_renderer.h"
@@ -21,13 +22,15 @@ namespace {
 std::vector<glm::vec3> spriteSizes(const SplatRenderer& r, const Volume& vol, const Camera& cam,
                                    const RenderSettings& s, int w, int h) {
   const Projection proj = cam.projection(w, h);
-  const glm::dmat4 view = cam.viewMatrix();
-  const glm::dmat3 cov = cameraCovariance(cam.rotation(), vol.spacing());
+  // Splats sit in the volume's own frame, seen by the camera moved as the renderer moves it.
+  const Camera local = cameraInVolumeFrame(cam, vol);
+  const glm::dmat4 view = local.viewMatrix();
+  const glm::dmat3 cov = cameraCovariance(local.rotation(), vol.spacing());
   const FootprintParams params = footprintParams(s, vol.spacing());
   std::vector<glm::vec3> out;
   for (const PackedSplat& p : r.splats().splats()) {
-    const glm::dvec3 world = vol.worldPosition(SplatSet::i(p), SplatSet::j(p), SplatSet::k(p));
-    const glm::dvec3 u(view * glm::dvec4(world, 1.0));
+    const glm::dvec3 at = vol.framePosition(SplatSet::i(p), SplatSet::j(p), SplatSet::k(p));
+    const glm::dvec3 u(view * glm::dvec4(at, 1.0));
     const Footprint fp = computeFootprint(u, cov, proj, params);
     if (!fp.visible) continue;
     const double size = std::min<double>(pointSpriteSize(fp, s.cutoff), r.pointSizeLimit());

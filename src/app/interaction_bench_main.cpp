@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <vector>
@@ -53,7 +54,19 @@ std::vector<std::string> defaultVolumes(const std::string& d) {
           d + "/fetal-t2/template_T2.nrrd", d + "/hydrogen/hydrogenatom.dat",
           d + "/cthead/CThead.nhdr",        d + "/mrbrain/MRbrain.raw@256,256,109@uint16@1,1,2@big",
           d + "/lidc2/LIDC2.mha",           d + "/engine/engine.nhdr",
-          d + "/aneurism/aneurism.nhdr",    d + "/bonsai/bonsai.nhdr"};
+          d + "/aneurism/aneurism.nhdr",    d + "/bonsai/bonsai.nhdr",
+          d + "/dicom-pet",                 d + "/nifti/anatomical.nii",
+          d + "/nifti/example4d.nii.gz",    d + "/nifti/example_nifti2.nii.gz",
+          d + "/nifti/functional.nii",      d + "/nifti/standard.nii.gz"};
+}
+
+// The MR DICOM stack comes zipped: unpacked (with unzip) into a temporary folder to be read.
+std::string unpackedMrStack(const std::string& d) {
+  const std::string zip = d + "/dicom-mr-stack/data.zip";
+  const std::string out = (std::filesystem::temp_directory_path() / "ewaview-bench-mr").string();
+  if (!std::filesystem::exists(zip)) return "";
+  const std::string command = "unzip -q -o '" + zip + "' -d '" + out + "' >/dev/null 2>&1";
+  return std::system(command.c_str()) == 0 ? out + "/data" : "";
 }
 
 int run(int argc, char** argv) {
@@ -80,6 +93,7 @@ int run(int argc, char** argv) {
     const std::string data = sharedDataDir();
     for (const std::string& f : defaultVolumes(data))
       if (std::filesystem::exists(f.substr(0, f.find('@')))) files.push_back(f);
+    if (const std::string mr = unpackedMrStack(data); !mr.empty()) files.push_back(mr);
   }
   const std::vector<CameraStep> path = loadCameraPath(pathFile);
 

@@ -66,6 +66,7 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
     fileOptions.synthetic.clear();
     fileOptions.rawDims.clear();
     fileOptions.tfFile.clear();  // --tf was for the first volume; others use their sidecar
+    fileOptions.load = {};       // so were --series, --frame and --channel
     ewa::Scene s = ewa::loadScene(fileOptions);
     ewa::LoadedVolume loaded;
     loaded.volume = std::make_shared<ewa::Volume>(std::move(s.volume));

@@ -27,7 +27,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                "Without --output it opens a window; with --output it renders headless and exits.",
                "ewaview"};
   app.set_version_flag("--version", std::string("ewaview ") + versionString());
-  app.add_option("file", o->file, "Volume file (.nrrd .nhdr .mhd .mha .dat .vti, or raw with --raw-*)");
+  app.add_option("file", o->file,
+                 "Volume file (.nrrd .nhdr .mhd .mha .dat .vti .nii .nii.gz .hdr .img .dcm .tif "
+                 ".tiff .slc), a DICOM or TIFF folder, or raw with --raw-*");
   app.add_option("--synthetic", o->synthetic,
                  "Synthetic volume: marschner-lobb[:N], sphere[:N], checkerboard, zebra[:RATIO]");
   app.add_option("-o,--output", o->output, "Render headless to this PNG and exit");
@@ -41,7 +43,13 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--record-camera-path", o->recordCameraPath,
                  "Window: write the cameras of the session to this file on exit, for "
                  "ewaview-interact-bench --path");
-  app.add_flag("--info", o->info, "Print dims, spacing, type and value range as JSON and exit");
+  app.add_flag("--info", o->info,
+               "Print dims, spacing, type, value range, direction and notes as JSON and exit");
+  app.add_option("--series", o->load.series, "DICOM: open the series with this SeriesInstanceUID");
+  app.add_option("--frame", o->load.frame, "4D NIfTI: open this frame (default 0)")
+      ->check(CLI::Range(0, 1 << 30));
+  app.add_option("--channel", o->load.channel, "Multi-channel TIFF: open this channel (default 0)")
+      ->check(CLI::Range(0, 1 << 20));
   std::vector<int> res;
   app.add_option("--resolution", res, "Image size W,H (default 800,600)")
       ->delimiter(',')->expected(2)->check(CLI::Range(1, 16384));
@@ -104,6 +112,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!o->rawDims.empty() && o->rawType.empty()) return usage("--raw-dims needs --raw-type");
   if (!o->rawDims.empty() && o->file.empty()) return usage("--raw-dims needs a FILE");
   if (o->turntable > 0 && o->output.empty()) return usage("--turntable needs --output");
+  // "series/" and "series" are one folder (and name one bookmarks file beside it).
+  while (o->file.size() > 1 && o->file.back() == '/') o->file.pop_back();
   o->resolutionGiven = !res.empty();
   for (const char* name : {"--filter", "--render-mode", "--cutoff", "--slab-thickness", "--background"})
     o->renderOptionsGiven |= app.count(name) > 0;

@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "io/volume_loader.h"
 #include "render/renderer.h"
 
 namespace ewa {
@@ -31,6 +32,7 @@ struct Options {
   std::string tfFile;
   std::string backend = "osmesa";
   std::string shaderDir;       // load shaders from this folder instead of the embedded ones
+  LoadOptions load;            // --series, --frame, --channel
   // Plain raw input.
   std::string rawDims, rawType, rawSpacing = "1,1,1", rawEndian = "little";
 };

@@ -2,11 +2,13 @@
 #include "app/scene.h"
 
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "core/camera_views.h"
 #include "core/synthetic_volume.h"
 #include "io/transfer_function_io.h"
 #include "io/volume_loader.h"
@@ -35,11 +37,14 @@ Scene loadScene(const Options& o) {
   } else {
     const std::string path = o.file.empty() ? defaultVolumePath() : o.file;
     scene.volume = o.rawDims.empty()
-                       ? loadVolume(path)
+                       ? loadVolume(path, o.load)
                        : loadRawVolume(path, parseRawOptions(o.rawDims, o.rawType, o.rawSpacing,
                                                              o.rawEndian));
     scene.name = std::filesystem::path(path).filename().string();
     sidecar = sidecarTransferFunctionPath(path);
+    // Warnings (uneven slices, a sheared grid) are worth a line even when the load succeeds.
+    for (const std::string& note : scene.volume.notes())
+      if (note.compare(0, 9, "warning: ") == 0) std::cerr << "ewaview: " << path << ": " << note << "\n";
   }
   if (!o.tfFile.empty()) {
     scene.transferFunction = loadTransferFunction(o.tfFile);
@@ -57,9 +62,9 @@ Camera initialCamera(const Volume& volume, const Options& o) {
   Camera cam;
   cam.viewAngleDeg = o.cameraViewAngle;
   cam.orthographic = o.orthographic;
-  // VTK's default view: from +z towards the volume's centre, y up.
-  cam.frame(volume.boundsMin(), volume.boundsMax(), glm::dvec3(0, 0, 1), glm::dvec3(0, 1, 0),
-            double(o.width) / double(o.height));
+  // VTK's default view (from +z, y up), or the anterior view of a patient; in world space.
+  cam = initialVolumeView(cam, volume.worldBoundsMin(), volume.worldBoundsMax(),
+                          double(o.width) / double(o.height), volume.patientFrame());
   if (o.cameraFocalPoint) cam.focalPoint = *o.cameraFocalPoint;
   if (o.cameraPosition) cam.position = *o.cameraPosition;
   if (o.cameraViewUp) cam.viewUp = *o.cameraViewUp;
@@ -74,6 +79,13 @@ std::string volumeInfoJson(const Volume& v) {
   j["spacing"] = {v.spacing().x, v.spacing().y, v.spacing().z};
   j["type"] = scalarName(v.type());
   j["range"] = {v.minValue(), v.maxValue()};
+  j["origin"] = {v.origin().x, v.origin().y, v.origin().z};
+  // Rows of D: column a is the world direction of data axis a.
+  const glm::dmat3& d = v.direction();
+  j["direction"] = {{d[0][0], d[1][0], d[2][0]}, {d[0][1], d[1][1], d[2][1]},
+                    {d[0][2], d[1][2], d[2][2]}};
+  j["space"] = v.patientFrame() ? "LPS" : "none";  // patient axes, or none
+  j["notes"] = v.notes();
   return j.dump();
 }
 

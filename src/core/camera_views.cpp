@@ -39,16 +39,50 @@ glm::dvec3 axisViewDirection(AxisView view) {
   return {0, 0, -1};
 }
 
-glm::dvec3 axisViewUp(AxisView view) {
-  return view == AxisView::PlusZ || view == AxisView::MinusZ ? glm::dvec3(0, 1, 0)
-                                                             : glm::dvec3(0, 0, 1);
+glm::dvec3 axisViewUp(AxisView view, bool patientFrame) {
+  if (view == AxisView::PlusZ || view == AxisView::MinusZ)
+    return patientFrame ? glm::dvec3(0, -1, 0) : glm::dvec3(0, 1, 0);
+  return glm::dvec3(0, 0, 1);
+}
+
+const char* axisViewLabel(AxisView view, bool patientFrame) {
+  if (!patientFrame) return axisViewName(view);
+  switch (view) {
+    case AxisView::PlusX:
+      return "R";
+    case AxisView::MinusX:
+      return "L";
+    case AxisView::PlusY:
+      return "A";
+    case AxisView::MinusY:
+      return "P";
+    case AxisView::PlusZ:
+      return "I";
+    case AxisView::MinusZ:
+      return "S";
+  }
+  return "?";
+}
+
+const char* axisViewKeysHint(bool patientFrame) {
+  return patientFrame ? "keys 1-6: from the patient's right, left, anterior, posterior, "
+                        "inferior, superior (LPS patient axes)"
+                      : "keys 1-6: +X -X +Y -Y +Z -Z";
 }
 
 Camera cameraForAxisView(const Camera& camera, AxisView view, const glm::dvec3& lo,
-                         const glm::dvec3& hi, double aspect) {
+                         const glm::dvec3& hi, double aspect, bool patientFrame) {
   Camera out = camera;
   // frame() takes the direction from the focal point to the eye: the opposite of the look.
-  out.frame(lo, hi, -axisViewDirection(view), axisViewUp(view), aspect);
+  out.frame(lo, hi, -axisViewDirection(view), axisViewUp(view, patientFrame), aspect);
+  return out;
+}
+
+Camera initialVolumeView(const Camera& camera, const glm::dvec3& lo, const glm::dvec3& hi,
+                         double aspect, bool patientFrame) {
+  if (patientFrame) return cameraForAxisView(camera, AxisView::PlusY, lo, hi, aspect, true);
+  Camera out = camera;
+  out.frame(lo, hi, glm::dvec3(0, 0, 1), glm::dvec3(0, 1, 0), aspect);
   return out;
 }
 

@@ -18,12 +18,26 @@ const char* axisViewName(AxisView view);
 // Unit vector the camera looks along.
 glm::dvec3 axisViewDirection(AxisView view);
 // View-up used with it: +Z for views along X and Y, +Y for views along Z (ParaView's choice).
-glm::dvec3 axisViewUp(AxisView view);
+// In a patient frame (LPS) the views along Z have the anterior side (-Y) up instead, as
+// radiologists show axial slices.
+glm::dvec3 axisViewUp(AxisView view, bool patientFrame = false);
+
+// The label of the view's button in a patient frame (LPS: +X left, +Y posterior, +Z superior):
+// the side the eye is on ("R": looking along +X from the patient's right; then "L", "A" along
+// +Y, "P", "I" along +Z, "S"); axisViewName's "+X" ... otherwise.
+const char* axisViewLabel(AxisView view, bool patientFrame);
+// What keys 1 to 6 do, for a tooltip.
+const char* axisViewKeysHint(bool patientFrame);
 
 // `camera` (keeping its view angle and projection) turned to look along `view`, framing the
 // box [lo, hi] in an image of the given aspect (width / height).
 Camera cameraForAxisView(const Camera& camera, AxisView view, const glm::dvec3& lo,
-                         const glm::dvec3& hi, double aspect);
+                         const glm::dvec3& hi, double aspect, bool patientFrame = false);
+
+// The first view of a volume with world bounds [lo, hi]: VTK's (from +Z, +Y up), or in a
+// patient frame the anterior view (superior up), so a patient is seen face on.
+Camera initialVolumeView(const Camera& camera, const glm::dvec3& lo, const glm::dvec3& hi,
+                         double aspect, bool patientFrame);
 
 // Frame `index` of a turntable of `count` frames: `start` orbited by index * 360 / count
 // degrees about its view-up through the focal point (frame 0 is `start`).

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "core/opacity_correction.h"
+#include "core/volume_orientation.h"
 
 namespace ewa {
 
@@ -151,8 +152,9 @@ void ShearWarp::render(const Camera& camera, const ShearWarpSettings& settings, 
   if (!volume_ || volume_->empty() || !camera.valid()) return;
   const int size = std::clamp(settings.tableSize, 2, 256);
   prepare(size);
+  // Shear-warp works in voxel space: the volume's own frame under the rigidly moved camera.
   const ShearWarpFactorization view =
-      factorizeView(camera, volume_->dims(), volume_->spacing(), volume_->origin(), width, height);
+      factorizeView(cameraInVolumeFrame(camera, *volume_), volume_->dims(), volume_->spacing(), volume_->origin(), width, height);
   stats_.principal = view.principal;
   stats_.sampleRatio = view.sampleRatio;
   stats_.perspectiveAsParallel = view.perspectiveAsParallel;

@@ -7,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include <glm/common.hpp>
+
 namespace ewa {
 
 size_t scalarSize(ScalarType type) {
@@ -56,13 +58,46 @@ double Volume::valueAt(int64_t n) const {
   return 0.0;
 }
 
-glm::dvec3 Volume::worldPosition(double i, double j, double k) const {
+void Volume::setDirection(const glm::dmat3& direction, bool patientFrame) {
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r)
+      if (!std::isfinite(direction[c][r]))
+        throw std::invalid_argument("volume direction must be finite");
+  direction_ = direction;
+  patientFrame_ = patientFrame;
+}
+
+glm::dvec3 Volume::framePosition(double i, double j, double k) const {
   return origin_ + glm::dvec3(i, j, k) * spacing_;
 }
 
-glm::dvec3 Volume::boundsMax() const {
-  return worldPosition(double(dims_[0] - 1), double(dims_[1] - 1), double(dims_[2] - 1));
+glm::dvec3 Volume::worldPosition(double i, double j, double k) const {
+  return origin_ + direction_ * (glm::dvec3(i, j, k) * spacing_);
 }
+
+glm::dvec3 Volume::boundsMax() const {
+  return framePosition(double(dims_[0] - 1), double(dims_[1] - 1), double(dims_[2] - 1));
+}
+
+namespace {
+
+// The world bounds: lower corner when `upper` is false, else the upper one.
+glm::dvec3 worldCornerBound(const Volume& v, bool upper) {
+  glm::dvec3 out = v.worldPosition(0, 0, 0);
+  const auto& d = v.dims();
+  for (int c = 1; c < 8; ++c) {
+    const glm::dvec3 p = v.worldPosition((c & 1) ? double(d[0] - 1) : 0.0,
+                                         (c & 2) ? double(d[1] - 1) : 0.0,
+                                         (c & 4) ? double(d[2] - 1) : 0.0);
+    out = upper ? glm::max(out, p) : glm::min(out, p);
+  }
+  return out;
+}
+
+}  // namespace
+
+glm::dvec3 Volume::worldBoundsMin() const { return worldCornerBound(*this, false); }
+glm::dvec3 Volume::worldBoundsMax() const { return worldCornerBound(*this, true); }
 
 void Volume::computeStatistics() {
   const int64_t n = voxelCount();

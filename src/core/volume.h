@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 namespace ewa {
@@ -30,6 +31,18 @@ class Volume {
   const std::array<int64_t, 3>& dims() const { return dims_; }
   const glm::dvec3& spacing() const { return spacing_; }
   const glm::dvec3& origin() const { return origin_; }
+  // Direction cosines: column a is the world direction of data axis a (identity by default).
+  // Loaders leave it a rotation (see volume_orientation.h), so renderers can draw the volume in
+  // its own frame under a rigidly moved camera.
+  const glm::dmat3& direction() const { return direction_; }
+  // True when the axes are patient axes (LPS: x left, y posterior, z superior), from DICOM,
+  // NIfTI or a NRRD/MetaImage anatomical space: axis views are then labelled anatomically.
+  bool patientFrame() const { return patientFrame_; }
+  void setDirection(const glm::dmat3& direction, bool patientFrame);
+  // Remarks from the loader for --info and the user: frames in the file, conversions, the other
+  // series in a folder. Warnings start with "warning: " and are printed when the file opens.
+  const std::vector<std::string>& notes() const { return notes_; }
+  void addNote(std::string note) { notes_.push_back(std::move(note)); }
   ScalarType type() const { return type_; }
   int64_t voxelCount() const { return dims_[0] * dims_[1] * dims_[2]; }
   const std::vector<uint8_t>& bytes() const { return bytes_; }
@@ -49,11 +62,17 @@ class Volume {
   const std::vector<uint64_t>& histogram() const { return histogram_; }
   static constexpr int histogramBins() { return 256; }
 
-  // World position of voxel (i,j,k): origin + (i,j,k) * spacing.
+  // Position of voxel (i,j,k) in the volume's own frame, where renderers draw it:
+  // origin + (i,j,k) * spacing (the direction left out; see cameraInVolumeFrame).
+  glm::dvec3 framePosition(double i, double j, double k) const;
+  // World (patient) position of voxel (i,j,k): origin + D * ((i,j,k) * spacing).
   glm::dvec3 worldPosition(double i, double j, double k) const;
-  // Axis-aligned world bounds through the voxel centers.
+  // Axis-aligned bounds through the voxel centers in the volume's own frame.
   glm::dvec3 boundsMin() const { return origin_; }
   glm::dvec3 boundsMax() const;
+  // Axis-aligned world bounds of the eight corner voxel centers (for framing the camera).
+  glm::dvec3 worldBoundsMin() const;
+  glm::dvec3 worldBoundsMax() const;
 
  private:
   void computeStatistics();
@@ -61,6 +80,9 @@ class Volume {
   std::array<int64_t, 3> dims_{0, 0, 0};
   glm::dvec3 spacing_{1.0};
   glm::dvec3 origin_{0.0};
+  glm::dmat3 direction_{1.0};
+  bool patientFrame_ = false;
+  std::vector<std::string> notes_;
   ScalarType type_ = ScalarType::UInt8;
   std::vector<uint8_t> bytes_;
   std::array<double, 2> range_{0.0, 0.0};

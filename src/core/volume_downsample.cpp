@@ -48,8 +48,11 @@ Volume downsampleVolume(const Volume& v, int factor) {
     std::memcpy(bytes.data() + c * sizeof(float), &mean, sizeof(float));
   }
   const glm::dvec3 scale(f[0], f[1], f[2]);
-  const glm::dvec3 origin = v.origin() + 0.5 * (scale - 1.0) * v.spacing();
-  return Volume(out, v.spacing() * scale, origin, ScalarType::Float32, std::move(bytes));
+  // The first block's centre, moved along the volume's own axes.
+  const glm::dvec3 origin = v.origin() + v.direction() * (0.5 * (scale - 1.0) * v.spacing());
+  Volume coarse(out, v.spacing() * scale, origin, ScalarType::Float32, std::move(bytes));
+  coarse.setDirection(v.direction(), v.patientFrame());
+  return coarse;
 }
 
 }  // namespace ewa

@@ -118,4 +118,48 @@ std::vector<uint8_t> inflateExact(const std::string& path, const uint8_t* data, 
   }
 }
 
+std::vector<uint8_t> inflatePrefix(const std::string& path, const uint8_t* data, size_t size,
+                                   uint64_t maxBytes, const std::string& what) {
+  const std::string prefix = what + ": ";
+  checkAllocation(path, maxBytes, what + " after decompression");
+  Inflater inflater;
+  if (!inflater.ok()) failLoad(path, prefix + "cannot start zlib");
+  z_stream& zs = inflater.stream();
+  const auto limit = static_cast<size_t>(maxBytes);
+  // Grow as data comes, so a lying size costs nothing until the stream really holds the bytes.
+  std::vector<uint8_t> out(std::min<size_t>(limit, size_t{1} << 16));
+  size_t produced = 0;
+  const uint8_t* in = data;
+  size_t inLeft = size;
+  bool afterEnd = false;  // a gzip member ended: what follows may be another member or junk
+  while (produced < limit) {
+    if (produced == out.size()) out.resize(std::min(limit, out.size() * 2));
+    if (zs.avail_in == 0 && inLeft > 0) {
+      const size_t chunk = std::min(inLeft, kMaxChunk);
+      zs.next_in = const_cast<Bytef*>(in);
+      zs.avail_in = static_cast<uInt>(chunk);
+      in += chunk;
+      inLeft -= chunk;
+    }
+    const size_t room = std::min(out.size() - produced, kMaxChunk);
+    zs.next_out = out.data() + produced;
+    zs.avail_out = static_cast<uInt>(room);
+    const int ret = inflate(&zs, Z_NO_FLUSH);
+    produced += room - zs.avail_out;
+    if (room != zs.avail_out) afterEnd = false;
+    if (ret == Z_OK) continue;
+    if (ret == Z_STREAM_END) {
+      if (zs.avail_in == 0 && inLeft == 0) break;
+      if (inflateReset(&zs) != Z_OK) failLoad(path, prefix + "cannot restart zlib");
+      afterEnd = true;
+      continue;
+    }
+    if (ret == Z_DATA_ERROR && afterEnd) break;
+    if (ret == Z_BUF_ERROR && zs.avail_in == 0 && inLeft == 0) break;  // truncated: caller checks
+    failLoad(path, prefix + "corrupt (" + std::string(zs.msg ? zs.msg : "invalid stream") + ")");
+  }
+  out.resize(produced);
+  return out;
+}
+
 }  // namespace ewa

@@ -16,4 +16,10 @@ namespace ewa {
 std::vector<uint8_t> inflateExact(const std::string& path, const uint8_t* data, size_t size,
                                   uint64_t expectedSize, const std::string& what);
 
+// Inflates the first `maxBytes` bytes of a zlib or gzip stream (fewer when the stream ends
+// sooner; trailing data is never looked at), for formats whose header is inside the stream.
+// Throws LoadError for corrupt data; the caller checks that it got as many bytes as it needs.
+std::vector<uint8_t> inflatePrefix(const std::string& path, const uint8_t* data, size_t size,
+                                   uint64_t maxBytes, const std::string& what);
+
 }  // namespace ewa

@@ -18,14 +18,18 @@ std::string lower(std::string s) {
 }  // namespace
 
 const std::vector<std::string>& volumeFileExtensions() {
-  static const std::vector<std::string> kExtensions = {".nrrd", ".nhdr", ".mhd",
-                                                       ".mha",  ".dat",  ".vti"};
+  static const std::vector<std::string> kExtensions = {
+      ".nrrd", ".nhdr", ".mhd", ".mha", ".dat", ".vti", ".nii", ".nii.gz",
+      ".hdr",  ".img",  ".dcm", ".ima", ".tif", ".tiff", ".slc"};
   return kExtensions;
 }
 
 bool hasExtension(const std::string& path, const std::vector<std::string>& extensions) {
-  const std::string ext = lower(std::filesystem::path(path).extension().string());
-  return std::find(extensions.begin(), extensions.end(), ext) != extensions.end();
+  // By suffix, so that two-part extensions (".nii.gz") match too.
+  const std::string name = lower(std::filesystem::path(path).filename().string());
+  return std::any_of(extensions.begin(), extensions.end(), [&](const std::string& ext) {
+    return name.size() > ext.size() && name.compare(name.size() - ext.size(), ext.size(), ext) == 0;
+  });
 }
 
 std::vector<DirEntry> listDirectory(const std::string& dir,

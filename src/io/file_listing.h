@@ -15,7 +15,7 @@ struct DirEntry {
 
 // Extensions loadVolume reads (lower case, with the dot).
 const std::vector<std::string>& volumeFileExtensions();
-// True when `path` ends in one of `extensions` (case-insensitive).
+// True when the file name of `path` ends in one of `extensions` (case-insensitive).
 bool hasExtension(const std::string& path, const std::vector<std::string>& extensions);
 
 // Folders (sorted by name) then files whose extension is in `extensions` (sorted; all files

@@ -11,5 +11,16 @@ Volume loadNrrd(const std::string& path);       // .nrrd, .nhdr
 Volume loadMetaImage(const std::string& path);  // .mhd, .mha
 Volume loadDat(const std::string& path);        // .dat (Voreen / Inviwo)
 Volume loadVti(const std::string& path);        // .vti (VTK XML ImageData)
+// .nii, .nii.gz, .hdr/.img (NIfTI-1 and -2); `frame` of a 4D file.
+Volume loadNifti(const std::string& path, int frame);
+Volume loadSlc(const std::string& path);  // .slc (VTK SLC)
+// A DICOM series: `path` is a folder or one file of the series; `series` a SeriesInstanceUID
+// or empty (the named file's series, else the folder's series with the most slices).
+Volume loadDicom(const std::string& path, const std::string& series);
+// A multi-page TIFF, or a folder of single-page TIFFs; `channel` of multi-channel data.
+Volume loadTiff(const std::string& path, int channel);
+
+// True when the file starts like DICOM Part 10 ("DICM" at byte 128).
+bool looksLikeDicom(const std::string& path);
 
 }  // namespace ewa

@@ -51,7 +51,7 @@ bool parseBool(const std::string& path, const std::string& key, const std::strin
   failLoad(path, "bad " + key + " value " + quoteText(value));
 }
 
-// Reads `count` numbers of `key` into the first axes of `out` (the rest keep their default).
+// Reads `count` numbers of `key` into `out` (the rest keep their default).
 void parseAxes(const std::string& path, const std::string& key, const std::string& value,
                size_t count, double* out) {
   std::vector<double> v;
@@ -128,6 +128,17 @@ Volume loadMetaImage(const std::string& path) {
       break;
     }
   }
+  // TransformMatrix lists the direction of each axis in turn (ITK's convention, LPS world).
+  for (const char* key : {"transformmatrix", "rotation", "orientation"}) {
+    if (const std::string* v = field(key)) {
+      double m[9] = {};
+      parseAxes(path, key, *v, n * n, m);
+      for (size_t a = 0; a < n; ++a)
+        for (size_t c = 0; c < n; ++c) layout.direction[int(a)][int(c)] = m[a * n + c];
+      break;
+    }
+  }
+  layout.patientFrame = field("anatomicalorientation") != nullptr;
   if (const std::string* v = field("elementnumberofchannels"); v && trim(*v) != "1")
     failLoad(path, "unsupported ElementNumberOfChannels " + quoteText(*v) + " (need 1)");
   if (const std::string* v = field("binarydata"); v && !parseBool(path, "BinaryData", *v))

@@ -153,6 +153,22 @@ void parseDataFile(const std::string& path, const std::string& value, NrrdHeader
   }
 }
 
+// Anatomical spaces become LPS (the viewer's world): RAS and LAS flip the axes that differ.
+void applyNrrdSpace(const std::string& space, VolumeLayout& layout) {
+  glm::dvec3 sign(1.0);
+  if (space == "left-posterior-superior" || space == "lps") {
+  } else if (space == "right-anterior-superior" || space == "ras") {
+    sign = {-1.0, -1.0, 1.0};
+  } else if (space == "left-anterior-superior" || space == "las") {
+    sign = {1.0, -1.0, 1.0};
+  } else {
+    return;  // scanner or plain 3D spaces: no patient frame
+  }
+  layout.patientFrame = true;
+  layout.origin *= sign;
+  for (int a = 0; a < 3; ++a) layout.direction[a] *= sign;
+}
+
 }  // namespace
 
 std::string formatNrrdPattern(const std::string& path, const std::string& pattern, int64_t index) {
@@ -230,6 +246,7 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
   std::vector<int64_t> sizes;
   std::vector<double> spacings;
   std::vector<std::vector<double>> directions, origin;
+  std::string space;
   size_t pos = text.find('\n');
   pos = pos == std::string::npos ? text.size() : pos + 1;
   while (pos < text.size()) {
@@ -280,6 +297,8 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
       if (!parseDoubleList(value, spacings)) failLoad(path, "bad spacings " + quoteText(value));
     } else if (key == "spacedirections") {
       directions = parseVectors(path, "space directions", value);
+    } else if (key == "space") {
+      space = toLower(value);
     } else if (key == "spaceorigin") {
       origin = parseVectors(path, "space origin", value);
       if (origin.size() != 1 || origin[0].empty())
@@ -329,8 +348,14 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
     }
   }
   if (!origin.empty()) {
-    for (size_t a = 0; a < origin[0].size(); ++a) h.layout.origin[a] = origin[0][a];
+    for (size_t a = 0; a < origin[0].size() && a < 3; ++a) h.layout.origin[a] = origin[0][a];
   }
+  for (size_t a = 0; a < dim; ++a) {
+    if (directions.empty() || directions[a].empty()) continue;
+    for (size_t c = 0; c < directions[a].size() && c < 3; ++c)
+      h.layout.direction[a][c] = directions[a][c] / h.layout.spacing[a];
+  }
+  applyNrrdSpace(space, h.layout);
   return h;
 }
 

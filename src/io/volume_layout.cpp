@@ -5,6 +5,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/volume_orientation.h"
 #include "io/byte_order.h"
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
@@ -128,9 +129,18 @@ Volume makeVolume(const std::string& path, const VolumeLayout& layout, std::vect
     swapBytes(bytes.data(), bytes.size(), fileScalarSize(layout.type));
   }
   if (layout.type == FileScalar::Int8) bytes = widenInt8(bytes);
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r)
+      if (!std::isfinite(layout.direction[c][r])) failLoad(path, "direction is not finite");
+  OrientedGrid grid{layout.dims, scalarSize(volumeScalarOf(layout.type)), &bytes, spacing,
+                    layout.origin, layout.direction};
+  std::vector<std::string> notes = makeRotation(grid);
   try {
-    return Volume(layout.dims, spacing, layout.origin, volumeScalarOf(layout.type),
-                  std::move(bytes));
+    Volume v(layout.dims, spacing, grid.origin, volumeScalarOf(layout.type), std::move(bytes));
+    v.setDirection(grid.direction, layout.patientFrame);
+    for (const std::string& note : layout.notes) v.addNote(note);
+    for (std::string& note : notes) v.addNote(std::move(note));
+    return v;
   } catch (const std::invalid_argument& e) {
     failLoad(path, e.what());
   }

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 #include <string>
 #include <vector>
@@ -24,6 +25,9 @@ struct VolumeLayout {
   glm::dvec3 origin{0.0};
   FileScalar type = FileScalar::UInt8;
   bool bigEndian = false;  // byte order of the file's data
+  glm::dmat3 direction{1.0};  // column a: world direction of axis a (any matrix; made a rotation)
+  bool patientFrame = false;  // the world axes are LPS patient axes
+  std::vector<std::string> notes;  // for Volume::notes
 };
 
 // Bytes of data the dims describe, after checking that every size is positive and that the
@@ -33,7 +37,8 @@ uint64_t dataByteCount(const std::string& path, const std::array<int64_t, 3>& di
                        FileScalar type);
 
 // Builds the Volume from the file's data bytes: native byte order, Int8 widened to Int16,
-// negative spacing taken by magnitude, zero or non-finite spacing/origin rejected.
+// negative spacing taken by magnitude, zero or non-finite spacing/origin rejected, the
+// direction made a rotation (makeRotation: a reflection reverses the slices).
 Volume makeVolume(const std::string& path, const VolumeLayout& layout, std::vector<uint8_t> bytes);
 
 }  // namespace ewa

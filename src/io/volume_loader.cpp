@@ -13,17 +13,42 @@ namespace ewa {
 
 namespace {
 
-Volume loadByExtension(const std::string& path) {
-  // Missing files and folders get the same message whatever their extension.
+// A folder holds a DICOM series or a TIFF stack.
+Volume loadFolder(const std::string& path, const LoadOptions& options) {
+  std::error_code ec;
+  bool tiff = false;
+  for (std::filesystem::directory_iterator it(path, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string ext = toLower(it->path().extension().string());
+    if (ext == ".tif" || ext == ".tiff") tiff = true;
+  }
+  if (ec) failLoad(path, "cannot list the folder (" + ec.message() + ")");
+  if (tiff) return loadTiff(path, options.channel);
+  return loadDicom(path, options.series);
+}
+
+Volume loadByExtension(const std::string& path, const LoadOptions& options) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) return loadFolder(path, options);
+  // Missing files get the same message whatever their extension.
   regularFileSize(path);
+  const std::string name = toLower(std::filesystem::path(path).filename().string());
   const std::string ext = toLower(std::filesystem::path(path).extension().string());
+  const bool gz = ext == ".gz";
+  const std::string inner =
+      gz ? toLower(std::filesystem::path(name.substr(0, name.size() - 3)).extension().string())
+         : ext;
   if (ext == ".nrrd" || ext == ".nhdr") return loadNrrd(path);
   if (ext == ".mhd" || ext == ".mha") return loadMetaImage(path);
   if (ext == ".dat") return loadDat(path);
   if (ext == ".vti") return loadVti(path);
+  if (inner == ".nii" || inner == ".hdr" || inner == ".img") return loadNifti(path, options.frame);
+  if (ext == ".slc") return loadSlc(path);
+  if (ext == ".tif" || ext == ".tiff") return loadTiff(path, options.channel);
+  if (ext == ".dcm" || ext == ".ima" || looksLikeDicom(path)) return loadDicom(path, options.series);
   failLoad(path, "unknown volume file extension " + quoteText(ext) +
-                     " (supported: .nrrd .nhdr .mhd .mha .dat .vti; raw files need their "
-                     "dimensions and type given)");
+                     " (supported: .nrrd .nhdr .mhd .mha .dat .vti .nii .nii.gz .hdr .img .dcm "
+                     ".tif .tiff .slc, DICOM files and folders; raw files need their dimensions "
+                     "and type given)");
 }
 
 // Errors about a data file named by the header still start with the path the caller gave.
@@ -34,9 +59,9 @@ Volume loadByExtension(const std::string& path) {
 
 }  // namespace
 
-Volume loadVolume(const std::string& path) {
+Volume loadVolume(const std::string& path, const LoadOptions& options) {
   try {
-    return loadByExtension(path);
+    return loadByExtension(path, options);
   } catch (const LoadError& e) {
     rethrowWithPath(path, e.what());
   } catch (const std::bad_alloc&) {

@@ -31,10 +31,21 @@ struct RawOptions {
 RawOptions parseRawOptions(const std::string& dims, const std::string& type,
                            const std::string& spacing, const std::string& endian);
 
+// Choices inside files that hold more than one volume.
+struct LoadOptions {
+  std::string series;  // DICOM SeriesInstanceUID; empty: the named file's, else the largest
+  int frame = 0;       // 4D NIfTI: the volume (time point) to open
+  int channel = 0;     // multi-channel TIFF: the channel to open
+};
+
 // Loads by file extension (case-insensitive): .nrrd/.nhdr (NRRD), .mhd/.mha (MetaImage),
-// .dat (Voreen/Inviwo text header), .vti (VTK XML image data). Throws LoadError. Signed 8-bit
-// data (which Volume has no type for) is widened to Int16; negative spacings keep their magnitude.
-Volume loadVolume(const std::string& path);
+// .dat (Voreen/Inviwo text header), .vti (VTK XML image data), .nii/.nii.gz/.hdr/.img
+// (NIfTI), .dcm or any DICOM file (its series), .tif/.tiff (TIFF stack), .slc (VTK SLC); a
+// folder opens its DICOM series or its TIFF files. Throws LoadError. Signed 8-bit data (which
+// Volume has no type for) is widened to Int16; negative spacings keep their magnitude; the
+// direction is left a rotation (a reflected one reverses the slices, see volume_orientation.h).
+Volume loadVolume(const std::string& path, const LoadOptions& options = {});
+
 
 // Loads a headerless file laid out as `options` says. The file must hold at least the
 // voxels; extra trailing bytes are ignored. Throws LoadError.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/volume_orientation.h"
 #include "gl/gl_error.h"
 #include "render/splat_renderer.h"
 
@@ -135,8 +136,10 @@ void SplatRenderer::compositeSlabs(const Camera& camera, const Projection& proj,
   glDisable(GL_STENCIL_TEST);
 }
 
-void SplatRenderer::render(const Camera& camera, const RenderSettings& settings, int width,
+void SplatRenderer::render(const Camera& worldCamera, const RenderSettings& settings, int width,
                            int height) {
+  // Splats live in the volume's own frame; the camera moves instead (volume_orientation.h).
+  const Camera camera = volume_ ? cameraInVolumeFrame(worldCamera, *volume_) : worldCamera;
   const auto start = Clock::now();
   targets_.resize(width, height);
   stats_ = RenderStats{};

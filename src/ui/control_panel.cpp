@@ -39,6 +39,7 @@ void ControlPanel::setVolume(std::string volumeName, const Volume& volume) {
                 static_cast<long long>(d[2]), scalarName(volume.type()), s.x, s.y, s.z);
   volumeText_ = text;
   valueRange_ = {volume.minValue(), volume.maxValue()};
+  patientFrame_ = volume.patientFrame();
   if (volumeName_.empty()) volumeName_ = "(unnamed volume)";
 }
 
@@ -155,12 +156,13 @@ bool ControlPanel::drawCamera(Camera& camera) {
 
 std::optional<AxisView> ControlPanel::drawAxisViews() {
   std::optional<AxisView> chosen;
-  ImGui::TextUnformatted("look along");
+  // Patient axes are named by the side the eye is on (R = from the patient's right).
+  ImGui::TextUnformatted(patientFrame_ ? "view from" : "look along");
   for (AxisView v : kAxisViews) {
     ImGui::SameLine();
-    if (ImGui::SmallButton(axisViewName(v))) chosen = v;
+    if (ImGui::SmallButton(axisViewLabel(v, patientFrame_))) chosen = v;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", axisViewKeysHint(patientFrame_));
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("keys 1-6: +X -X +Y -Y +Z -Z");
   return chosen;
 }
 

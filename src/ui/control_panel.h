@@ -56,6 +56,7 @@ class ControlPanel {
   std::string volumeName_;
   std::string volumeText_;  // "64 x 64 x 64 uint8, spacing 1 1 1"
   std::array<double, 2> valueRange_{0.0, 1.0};
+  bool patientFrame_ = false;  // label the axis views anatomically (LPS)
 };
 
 }  // namespace ewa

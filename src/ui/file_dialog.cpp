@@ -84,8 +84,11 @@ std::optional<std::string> FileDialog::draw() {
     if (ImGui::Checkbox("all files", &allFiles_)) changeFolder(folder_);
     ImGui::SameLine();
     ImGui::TextDisabled(allFiles_ ? "(raw files need --raw-* on the command line)"
-                                  : ".nrrd .nhdr .mhd .mha .dat .vti");
-    ImGui::SameLine(ImGui::GetWindowWidth() - 130.0f);
+                                  : "volumes, DICOM, NIfTI, TIFF, SLC");
+    // A DICOM series or a TIFF stack is a folder: open the one shown.
+    ImGui::SameLine(ImGui::GetWindowWidth() - 240.0f);
+    if (ImGui::Button("Open folder")) chosen = folder_;
+    ImGui::SameLine();
     if (ImGui::Button("Open")) {
       std::error_code ec;
       if (fs::is_directory(pathBuffer_, ec))

@@ -204,8 +204,9 @@ class Viewer {
       Camera camera;
       camera.viewAngleDeg = controller_.camera().viewAngleDeg;
       camera.orthographic = controller_.camera().orthographic;
-      camera.frame(current_.volume->boundsMin(), current_.volume->boundsMax(), glm::dvec3(0, 0, 1),
-                   glm::dvec3(0, 1, 0), fb.y > 0 ? double(fb.x) / fb.y : 1.0);
+      camera = initialVolumeView(camera, current_.volume->worldBoundsMin(),
+                                 current_.volume->worldBoundsMax(),
+                                 fb.y > 0 ? double(fb.x) / fb.y : 1.0, current_.volume->patientFrame());
       controller_.restart(camera);
     }
     if (!current_.path.empty()) addRecentFile(saved_.recentFiles, current_.path);
@@ -236,6 +237,9 @@ class Viewer {
     char text[64];
     std::snprintf(text, sizeof text, " in %.1f s", seconds);
     info("opened " + loaded->name + text);
+    // Uneven slices, a sheared grid: on stderr already (loadScene), and in the panel.
+    for (const std::string& note : loaded->volume->notes())
+      if (note.rfind("warning: ", 0) == 0) messages_.post(StatusMessages::Kind::Info, note, now());
     adopt(std::move(*loaded), /*newCamera=*/true);
   }
 
@@ -404,9 +408,11 @@ class Viewer {
   }
 
   void showAxisView(AxisView v, const glm::ivec2& fb) {
-    controller_.setCamera(cameraForAxisView(controller_.camera(), v, current_.volume->boundsMin(),
-                                            current_.volume->boundsMax(),
-                                            fb.y > 0 ? double(fb.x) / fb.y : 1.0));
+    const Volume& volume = *current_.volume;
+    controller_.setCamera(cameraForAxisView(controller_.camera(), v, volume.worldBoundsMin(),
+                                            volume.worldBoundsMax(),
+                                            fb.y > 0 ? double(fb.x) / fb.y : 1.0,
+                                            volume.patientFrame()));
   }
 
   void applySessionEdits(const SessionEdits& e, const glm::ivec2& fb, bool* screenshotNow) {

@@ -63,13 +63,29 @@ TEST(Cli, InfoPrintsOneJsonObject) {
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(
       r.out,
-      "{\"dims\":[400,400,1],\"spacing\":[1.0,1.0,1.0],\"type\":\"uint8\",\"range\":[1.0,2.0]}\n");
+      "{\"dims\":[400,400,1],\"spacing\":[1.0,1.0,1.0],\"type\":\"uint8\",\"range\":[1.0,2.0],"
+      "\"origin\":[0.0,0.0,0.0],\"direction\":[[1.0,0.0,0.0],[0.0,1.0,0.0],[0.0,0.0,1.0]],"
+      "\"space\":\"none\",\"notes\":[]}\n");
   const std::string tooth = std::string(EWA_SHARED_DATA) + "/tooth/tooth.nrrd";
   if (!std::filesystem::exists(tooth)) GTEST_SKIP() << "shared data absent: " << tooth;
   r = ewaview(tooth + " --info");
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("\"dims\":[103,94,161]"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"type\":\"uint8\""), std::string::npos) << r.out;
+  // Patient data: the direction and frame; --frame picks a time point, out of range is exit 1.
+  const std::string nifti = std::string(EWA_SHARED_DATA) + "/nifti/functional.nii";
+  r = ewaview(nifti + " --info --frame 19");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"space\":\"LPS\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("20 frames; showing frame 19"), std::string::npos) << r.out;
+  r = ewaview(nifti + " --info --frame 20");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("functional.nii: --frame 20 is out of range"), std::string::npos) << r.err;
+  r = ewaview(std::string(EWA_SHARED_DATA) + "/dicom-pet/ --info --series 9.9");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("dicom-pet: no series '9.9' here (series: 1.3.6.1.4.1.14519"),
+            std::string::npos)
+      << r.err;
 }
 
 TEST(Cli, HeadlessOutputOnBothBackendsAndTheDefaultAsset) {

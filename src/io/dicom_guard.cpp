@@ -1,0 +1,203 @@
+// checkDicomStructure: element lengths against the file size, before GDCM allocates by them.
+#include "io/dicom_guard.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+#include "io/byte_order.h"
+#include "io/file_bytes.h"
+#include "io/format_loaders.h"
+#include "io/load_failure.h"
+#include "io/memory_limit.h"
+
+namespace ewa {
+
+namespace {
+
+// VRs whose explicit form has two reserved bytes and a 4-byte length.
+bool longVr(const uint8_t* vr) {
+  static const char* const kLong[] = {"OB", "OD", "OF", "OL", "OV", "OW", "SQ",
+                                      "SV", "UC", "UN", "UR", "UT", "UV"};
+  for (const char* v : kLong)
+    if (vr[0] == v[0] && vr[1] == v[1]) return true;
+  return false;
+}
+
+// One of the standard's value representations (GDCM falls back to other readers, which assert,
+// on anything else).
+bool isVr(const uint8_t* vr) {
+  static const char kAll[] = "AEASATCSDADSDTFLFDISLOLTOBODOFOLOVOWPNSHSLSQSSSTSVTMUCUIULUNURUSUTUV";
+  for (size_t i = 0; i + 1 < sizeof kAll; i += 2)
+    if (vr[0] == uint8_t(kAll[i]) && vr[1] == uint8_t(kAll[i + 1])) return true;
+  return false;
+}
+
+// Where the walk is: inside a sequence, an item, or encapsulated pixel data (whose items hold
+// compressed bytes), each ending at a byte offset or, with undefined length, at a delimiter.
+struct Container {
+  enum Kind { Sequence, Item, Fragments } kind;
+  size_t end;  // kUndefined: ends at its delimiter
+};
+constexpr size_t kUndefined = SIZE_MAX;
+
+struct Walk {
+  const std::vector<uint8_t>& bytes;
+  std::string problem;  // empty while the walk is fine
+  std::vector<Container> open;
+
+  // Walks elements from `pos` to the end (or, with `metaOnly`, while the group is 0002). Items
+  // and delimiters must sit where they belong: GDCM asserts (aborts) on one out of place.
+  // Returns where it stopped.
+  size_t run(size_t pos, bool explicitVr, bool bigEndian, bool metaOnly) {
+    const size_t n = bytes.size();
+    while (problem.empty()) {
+      while (!open.empty() && open.back().end != kUndefined && pos >= open.back().end) {
+        if (pos > open.back().end) return fail(pos, "an element overruns its sequence or item");
+        open.pop_back();
+      }
+      if (pos >= n) break;
+      if (n - pos < 8) return fail(pos, "an element header is cut short");
+      const bool big = bigEndian && !metaOnly;
+      const auto group = uint16_t(readUnsigned(&bytes[pos], 2, big));
+      const auto element = uint16_t(readUnsigned(&bytes[pos + 2], 2, big));
+      if (metaOnly && group != 0x0002) return pos;
+      const Container::Kind top = open.empty() ? Container::Item : open.back().kind;
+      if (group == 0xfffe) {
+        const uint64_t length = readUnsigned(&bytes[pos + 4], 4, big);
+        pos += 8;
+        if (element == 0xe000 && top == Container::Fragments) {
+          if (length > n - pos) return fail(pos, "a pixel data fragment is cut short");
+          pos += size_t(length);
+        } else if (element == 0xe000 && top == Container::Sequence) {
+          if (length != 0xffffffffu && length > n - pos)
+            return fail(pos, "an item claims " + std::to_string(length) + " bytes");
+          open.push_back({Container::Item, length == 0xffffffffu ? kUndefined : pos + length});
+        } else if (element == 0xe00d && !open.empty() && top == Container::Item &&
+                   open.back().end == kUndefined) {
+          open.pop_back();
+        } else if (element == 0xe0dd && !open.empty() && top != Container::Item &&
+                   open.back().end == kUndefined) {
+          open.pop_back();
+        } else {
+          return fail(pos - 8, "an item or delimiter out of place");
+        }
+        continue;
+      }
+      if (top != Container::Item) return fail(pos, "an element outside any item");
+      uint64_t length = 0;
+      bool sequence = false;
+      if (explicitVr || metaOnly) {
+        const uint8_t* vr = &bytes[pos + 4];
+        if (!isVr(vr)) return fail(pos, "an element has no valid VR");
+        if (longVr(vr)) {
+          if (n - pos < 12) return fail(pos, "an element header is cut short");
+          length = readUnsigned(&bytes[pos + 8], 4, big);
+          pos += 12;
+        } else {
+          length = readUnsigned(&bytes[pos + 6], 2, big);
+          pos += 8;
+        }
+        sequence = vr[0] == 'S' && vr[1] == 'Q';
+      } else {
+        length = readUnsigned(&bytes[pos + 4], 4, big);
+        pos += 8;
+      }
+      if (length == 0xffffffffu) {  // undefined length: items follow, then a delimiter
+        open.push_back({group == 0x7fe0 ? Container::Fragments : Container::Sequence, kUndefined});
+        continue;
+      }
+      if (length > n - pos) {
+        return fail(pos, "element (" + hex(group) + "," + hex(element) + ") claims " +
+                             std::to_string(length) + " bytes but only " + std::to_string(n - pos) +
+                             " remain");
+      }
+      if (sequence) {
+        open.push_back({Container::Sequence, pos + size_t(length)});
+        continue;
+      }
+      // GDCM asserts that a retired Recognition Code names ACR-NEMA or MIPS.
+      if (group == 0x0008 && element == 0x0010 && open.empty() && !recognitionCodeOk(pos, length))
+        return fail(pos, "a Recognition Code (0008,0010) that is not ACR-NEMA");
+      pos += size_t(length);
+    }
+    if (problem.empty() && !metaOnly && !open.empty())
+      return fail(pos, "a sequence or item is not closed (truncated file?)");
+    return pos;
+  }
+
+  bool recognitionCodeOk(size_t pos, uint64_t length) const {
+    const std::string value(reinterpret_cast<const char*>(&bytes[pos]), size_t(length));
+    for (const char* ok : {"ACR-NEMA", "ACRNEMA", "MIPS 2.0"})
+      if (value.compare(0, std::strlen(ok), ok) == 0) return true;
+    return false;
+  }
+
+  size_t fail(size_t pos, const std::string& what) {
+    problem = what + " at byte " + std::to_string(pos);
+    return bytes.size();
+  }
+
+  static std::string hex(uint16_t v) {
+    char text[8];
+    std::snprintf(text, sizeof text, "%04X", v);
+    return text;
+  }
+};
+
+// The transfer syntax UID in the meta header's (0002,0010), or "".
+std::string transferSyntax(const std::vector<uint8_t>& b, size_t from, size_t to) {
+  for (size_t p = from; p + 8 <= to;) {
+    const auto element = uint16_t(readUnsigned(&b[p + 2], 2, false));
+    const bool longForm = longVr(&b[p + 4]);
+    const size_t header = longForm ? 12 : 8;
+    const uint64_t length =
+        longForm ? readUnsigned(&b[p + 8], 4, false) : readUnsigned(&b[p + 6], 2, false);
+    if (p + header + length > to) return "";
+    if (element == 0x0010) {
+      std::string uid(reinterpret_cast<const char*>(&b[p + header]), size_t(length));
+      while (!uid.empty() && (uid.back() == '\0' || uid.back() == ' ')) uid.pop_back();
+      return uid;
+    }
+    p += header + size_t(length);
+  }
+  return "";
+}
+
+}  // namespace
+
+bool looksLikeDicom(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::file_size(path, ec) < 132 || ec) return false;
+  return std::memcmp(readFileRange(path, 128, 4, "DICOM preamble").data(), "DICM", 4) == 0;
+}
+
+DicomStructure checkDicomStructure(const std::string& path) {
+  const uint64_t size = regularFileSize(path);
+  // Other files in a folder (notes, pictures) are only looked at as far as the preamble.
+  if (!looksLikeDicom(path)) return DicomStructure::NotDicom;
+  checkAllocation(path, size, "file");
+  const std::vector<uint8_t> bytes = readFileRange(path, 0, size, "file");
+  Walk walk{bytes, {}, {}};
+  const size_t metaEnd = walk.run(132, true, false, true);
+  if (!walk.problem.empty()) failLoad(path, "corrupt DICOM meta header: " + walk.problem);
+  // GDCM trusts the meta header's group length (0002,0000) and asserts when it lies.
+  if (metaEnd >= 144 && std::memcmp(&bytes[132], "\x02\x00\x00\x00UL\x04\x00", 8) == 0 &&
+      readUnsigned(&bytes[140], 4, false) != metaEnd - 144)
+    failLoad(path, "corrupt DICOM meta header: its group length is " +
+                       std::to_string(readUnsigned(&bytes[140], 4, false)) + ", its elements " +
+                       std::to_string(metaEnd - 144) + " bytes");
+  const std::string syntax = transferSyntax(bytes, 132, metaEnd);
+  if (syntax.empty()) failLoad(path, "DICOM meta header without a transfer syntax");
+  if (syntax == "1.2.840.10008.1.2.1.99") return DicomStructure::Plausible;  // deflated
+  const bool explicitVr = syntax != "1.2.840.10008.1.2";
+  const bool bigEndian = syntax == "1.2.840.10008.1.2.2";
+  if (bytes.size() - metaEnd < 8) failLoad(path, "no data set after the DICOM meta header");
+  walk.run(metaEnd, explicitVr, bigEndian, false);
+  if (walk.problem.empty()) return DicomStructure::Plausible;
+  failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
+}
+
+}  // namespace ewa

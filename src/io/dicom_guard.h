@@ -1,0 +1,23 @@
+// A structural check run before GDCM sees a file: no element may claim more bytes than remain.
+#pragma once
+
+#include <string>
+
+namespace ewa {
+
+// What checkDicomStructure found.
+enum class DicomStructure {
+  Plausible,  // every element's length fits in the file
+  NotDicom,   // no "DICM" preamble: not read as DICOM (ACR-NEMA files without it are not read)
+};
+
+// Walks the elements of the file at `path` (Part 10 preamble and meta header, then the data
+// set in its transfer syntax: implicit or explicit VR, little or big endian; deflated data sets
+// are not walked), entering sequences and items, and checks each defined length against the
+// bytes left. GDCM sizes its buffers by those lengths before reading (up to 4 GiB for one
+// element) and asserts (aborts) on items out of place, so such files must be caught here.
+// Throws LoadError naming the file when a file with the DICM preamble is cut short or corrupt;
+// returns NotDicom for files without the preamble, which never reach GDCM.
+DicomStructure checkDicomStructure(const std::string& path);
+
+}  // namespace ewa

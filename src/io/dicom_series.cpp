@@ -1,0 +1,164 @@
+// DICOM series discovery with gdcm::Scanner (headers only) and slice ordering along the normal.
+#include "io/dicom_series.h"
+
+#include <gdcmScanner.h>
+#include <gdcmTrace.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <glm/geometric.hpp>
+#include <map>
+
+#include "io/dicom_guard.h"
+#include "io/load_failure.h"
+#include "io/text_fields.h"
+
+namespace ewa {
+
+namespace {
+
+const gdcm::Tag kSeriesUid(0x0020, 0x000e);
+const gdcm::Tag kSeriesDescription(0x0008, 0x103e);
+const gdcm::Tag kPosition(0x0020, 0x0032);
+const gdcm::Tag kOrientation(0x0020, 0x0037);
+const gdcm::Tag kRows(0x0028, 0x0010);
+const gdcm::Tag kColumns(0x0028, 0x0011);
+const gdcm::Tag kPixelSpacing(0x0028, 0x0030);
+const gdcm::Tag kFrames(0x0028, 0x0008);
+const gdcm::Tag kSamplesPerPixel(0x0028, 0x0002);
+const gdcm::Tag kBitsAllocated(0x0028, 0x0100);
+const gdcm::Tag kBitsStored(0x0028, 0x0101);
+const gdcm::Tag kHighBit(0x0028, 0x0102);
+const gdcm::Tag kRepresentation(0x0028, 0x0103);
+const gdcm::Tag kPhotometric(0x0028, 0x0004);
+
+// Numbers of a multi-valued DICOM string ("a\b\c"); empty when any is not a number.
+std::vector<double> numbers(const char* text) {
+  std::vector<double> out;
+  if (!text) return out;
+  for (const std::string& part : splitWords(std::string(text), "\\")) {
+    double v = 0.0;
+    if (!parseDouble(trim(part), v) || !std::isfinite(v)) return {};
+    out.push_back(v);
+  }
+  return out;
+}
+
+int64_t integer(const char* text) {
+  int64_t v = 0;
+  return text && parseInt64(trim(std::string(text)), v) ? v : 0;
+}
+
+}  // namespace
+
+std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::string& namedFile,
+                                         std::string* fileSeries) {
+  // GDCM reports on stderr by default; our errors are one line each, from us.
+  gdcm::Trace::WarningOff();
+  gdcm::Trace::ErrorOff();
+  gdcm::Trace::DebugOff();
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end;
+       it.increment(ec)) {
+    if (!it->is_regular_file(ec)) continue;
+    // GDCM sizes buffers by element lengths: only files whose lengths fit reach it.
+    if (checkDicomStructure(it->path().string()) == DicomStructure::Plausible)
+      files.push_back(it->path().string());
+  }
+  if (ec) failLoad(folder, "cannot list the folder (" + ec.message() + ")");
+  std::sort(files.begin(), files.end());
+
+  gdcm::Scanner scanner;
+  for (const gdcm::Tag& t : {kSeriesUid, kSeriesDescription, kPosition, kOrientation, kRows,
+                             kColumns, kPixelSpacing, kFrames, kSamplesPerPixel, kBitsAllocated,
+                             kBitsStored, kHighBit, kRepresentation, kPhotometric})
+    scanner.AddTag(t);
+  if (!files.empty() && !scanner.Scan(files)) failLoad(folder, "cannot read the DICOM headers");
+
+  std::map<std::string, DicomSeries> byUid;
+  for (const std::string& file : files) {
+    if (!scanner.IsKey(file.c_str())) continue;
+    DicomSlice s;
+    s.file = file;
+    s.rows = integer(scanner.GetValue(file.c_str(), kRows));
+    s.columns = integer(scanner.GetValue(file.c_str(), kColumns));
+    if (s.rows <= 0 || s.columns <= 0) continue;  // not an image (DICOMDIR, report, ...)
+    const std::vector<double> p = numbers(scanner.GetValue(file.c_str(), kPosition));
+    if (p.size() == 3) s.position = {p[0], p[1], p[2]}, s.hasPosition = true;
+    const std::vector<double> o = numbers(scanner.GetValue(file.c_str(), kOrientation));
+    if (o.size() == 6)
+      std::copy(o.begin(), o.end(), s.orientation.begin()), s.hasOrientation = true;
+    const std::vector<double> sp = numbers(scanner.GetValue(file.c_str(), kPixelSpacing));
+    if (sp.size() == 2 && sp[0] > 0.0 && sp[1] > 0.0)
+      s.rowSpacing = sp[0], s.columnSpacing = sp[1], s.hasSpacing = true;
+    s.frames = std::max<int64_t>(1, integer(scanner.GetValue(file.c_str(), kFrames)));
+    if (const char* spp = scanner.GetValue(file.c_str(), kSamplesPerPixel))
+      s.samplesPerPixel = integer(spp);
+    s.bitsAllocated = integer(scanner.GetValue(file.c_str(), kBitsAllocated));
+    s.bitsStored = integer(scanner.GetValue(file.c_str(), kBitsStored));
+    s.highBit = integer(scanner.GetValue(file.c_str(), kHighBit));
+    s.representation = integer(scanner.GetValue(file.c_str(), kRepresentation));
+    if (const char* pi = scanner.GetValue(file.c_str(), kPhotometric)) s.photometric = trim(pi);
+    const char* uid = scanner.GetValue(file.c_str(), kSeriesUid);
+    DicomSeries& series = byUid[uid ? trim(std::string(uid)) : std::string()];
+    series.uid = uid ? trim(std::string(uid)) : std::string();
+    if (const char* d = scanner.GetValue(file.c_str(), kSeriesDescription))
+      series.description = trim(std::string(d));
+    if (fileSeries && !namedFile.empty() && std::filesystem::equivalent(file, namedFile, ec))
+      *fileSeries = series.uid;
+    series.slices.push_back(std::move(s));
+  }
+  std::vector<DicomSeries> out;
+  for (auto& entry : byUid) out.push_back(std::move(entry.second));
+  std::stable_sort(out.begin(), out.end(), [](const DicomSeries& a, const DicomSeries& b) {
+    return a.slices.size() > b.slices.size();
+  });
+  return out;
+}
+
+glm::dvec3 sortDicomSlices(const std::string& path, std::vector<DicomSlice>& slices,
+                           std::vector<std::string>& notes) {
+  if (slices.size() < 2) return glm::dvec3(0.0);
+  const DicomSlice& first = slices.front();
+  for (const DicomSlice& s : slices) {
+    if (!s.hasPosition || !s.hasOrientation)
+      failLoad(s.file,
+               "no ImagePositionPatient or ImageOrientationPatient: cannot order the "
+               "slices of the series");
+    for (int i = 0; i < 6; ++i)
+      if (std::fabs(s.orientation[size_t(i)] - first.orientation[size_t(i)]) > 1e-3)
+        failLoad(s.file, "ImageOrientationPatient differs from the series' other slices");
+  }
+  const glm::dvec3 row(first.orientation[0], first.orientation[1], first.orientation[2]);
+  const glm::dvec3 column(first.orientation[3], first.orientation[4], first.orientation[5]);
+  const glm::dvec3 normal = glm::cross(row, column);
+  if (glm::length(normal) < 1e-6) failLoad(first.file, "degenerate ImageOrientationPatient");
+  std::stable_sort(slices.begin(), slices.end(), [&](const DicomSlice& a, const DicomSlice& b) {
+    return glm::dot(a.position, normal) < glm::dot(b.position, normal);
+  });
+  std::vector<double> gaps;
+  for (size_t i = 1; i < slices.size(); ++i) {
+    const double gap = glm::dot(slices[i].position - slices[i - 1].position, normal);
+    if (gap < 1e-6)
+      failLoad(path, "two slices share one position (" + slices[i - 1].file + " and " +
+                         slices[i].file + "): more than one volume in the series?");
+    gaps.push_back(gap);
+  }
+  std::vector<double> sorted = gaps;
+  std::sort(sorted.begin(), sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  const double lo = sorted.front(), hi = sorted.back();
+  if (hi > 1.5 * median) {
+    notes.push_back("warning: a gap of " + std::to_string(hi) + " between slices where most are " +
+                    std::to_string(median) + ": missing slices? drawn evenly spaced");
+  } else if (hi - lo > 0.01 * median) {
+    notes.push_back("warning: uneven slice spacing (" + std::to_string(lo) + " to " +
+                    std::to_string(hi) + "); drawn evenly spaced");
+  }
+  // The mean step: along the normal, or oblique when the gantry was tilted.
+  return (slices.back().position - slices.front().position) / double(slices.size() - 1);
+}
+
+}  // namespace ewa

@@ -1,0 +1,45 @@
+// DICOM series in a folder: which files belong together and in what order (through GDCM's Scanner).
+#pragma once
+
+#include <array>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+namespace ewa {
+
+// One image file of a series, with the header values the volume is built from.
+struct DicomSlice {
+  std::string file;
+  glm::dvec3 position{0.0};                             // ImagePositionPatient
+  std::array<double, 6> orientation{1, 0, 0, 0, 1, 0};  // ImageOrientationPatient
+  bool hasPosition = false, hasOrientation = false;
+  int64_t rows = 0, columns = 0;
+  double rowSpacing = 1.0, columnSpacing = 1.0;  // PixelSpacing: between rows, between columns
+  bool hasSpacing = false;
+  int64_t frames = 1;  // NumberOfFrames
+  // Pixel module values, checked before GDCM decodes (its reader asserts on some bad ones).
+  int64_t samplesPerPixel = 1, bitsAllocated = 0, bitsStored = 0, highBit = 0, representation = 0;
+  std::string photometric;  // PhotometricInterpretation, trimmed; empty when absent
+};
+
+struct DicomSeries {
+  std::string uid;
+  std::string description;
+  std::vector<DicomSlice> slices;
+};
+
+// Reads the headers of the regular files in `folder` (not below it) and groups the images
+// (files with Rows and Columns) by SeriesInstanceUID, largest series first. Files that are not
+// DICOM are skipped. `fileSeries` gets the series of `namedFile` when that is one of them.
+std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::string& namedFile,
+                                         std::string* fileSeries);
+
+// Sorts the slices by their position along the slice normal (row x column cosines), never by
+// name. Throws LoadError naming `path` when slices share a position or their orientations
+// differ. Returns the slice step vector (mean of the steps between neighbours) and adds
+// warnings (uneven spacing, missing slices) to `notes`.
+glm::dvec3 sortDicomSlices(const std::string& path, std::vector<DicomSlice>& slices,
+                           std::vector<std::string>& notes);
+
+}  // namespace ewa

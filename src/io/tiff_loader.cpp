@@ -1,0 +1,276 @@
+// TIFF stacks through libtiff: a multi-page file or a folder of single-page files, one channel.
+#include <tiffio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdarg>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+#include "io/byte_order.h"
+#include "io/file_bytes.h"
+#include "io/format_loaders.h"
+#include "io/load_failure.h"
+#include "io/memory_limit.h"
+#include "io/text_fields.h"
+#include "io/volume_layout.h"
+
+namespace ewa {
+
+namespace {
+
+// libtiff's messages go into the open file's record instead of stderr.
+int keepMessage(TIFF*, void* user, const char*, const char* fmt, va_list args) {
+  auto* message = static_cast<std::string*>(user);
+  if (message->empty()) {
+    char text[256];
+    std::vsnprintf(text, sizeof text, fmt, args);
+    *message = text;
+  }
+  return 1;
+}
+
+int ignoreMessage(TIFF*, void*, const char*, const char*, va_list) {
+  return 1;
+}
+
+struct TiffCloser {
+  void operator()(TIFF* t) const { TIFFClose(t); }
+};
+
+// An open TIFF file and the first error libtiff reported about it.
+class TiffFile {
+ public:
+  explicit TiffFile(const std::string& path) : path_(path), size_(regularFileSize(path)) {
+    TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
+    TIFFOpenOptionsSetErrorHandlerExtR(options, &keepMessage, &error_);
+    TIFFOpenOptionsSetWarningHandlerExtR(options, &ignoreMessage, nullptr);
+    TIFFOpenOptionsSetMaxSingleMemAlloc(
+        options, tmsize_t(std::min<uint64_t>(physicalMemoryBytes(), INT64_MAX / 2)));
+    tiff_.reset(TIFFOpenExt(path.c_str(), "r", options));
+    TIFFOpenOptionsFree(options);
+    if (!tiff_) fail("not a readable TIFF file");
+  }
+  TIFF* get() const { return tiff_.get(); }
+  uint64_t size() const { return size_; }
+  [[noreturn]] void fail(const std::string& problem) const {
+    failLoad(path_, problem + (error_.empty() ? "" : " (" + oneLine(error_) + ")"));
+  }
+
+ private:
+  std::string path_;
+  uint64_t size_ = 0;
+  std::string error_;
+  std::unique_ptr<TIFF, TiffCloser> tiff_;
+};
+
+// What a page holds; pages of one stack must agree on all of it.
+struct PageFormat {
+  uint32_t width = 0, height = 0;
+  uint16_t bits = 0, samples = 1, sampleFormat = SAMPLEFORMAT_UINT, planar = PLANARCONFIG_CONTIG;
+  bool operator==(const PageFormat& o) const {
+    return width == o.width && height == o.height && bits == o.bits && samples == o.samples &&
+           sampleFormat == o.sampleFormat && planar == o.planar;
+  }
+  std::string text() const {
+    return std::to_string(width) + " x " + std::to_string(height) + ", " + std::to_string(bits) +
+           "-bit, " + std::to_string(samples) + " sample(s)";
+  }
+};
+
+// The page's samples must fit in its strips before anything is sized by the header: all of
+// them when uncompressed, and at most kMaxRatio times the strips' bytes when compressed (LZW,
+// the loosest of TIFF's codecs, stays under it).
+constexpr uint64_t kMaxRatio = 4096;
+
+void checkStripBytes(const TiffFile& file, const PageFormat& f) {
+  TIFF* t = file.get();
+  uint16_t compression = COMPRESSION_NONE;
+  TIFFGetFieldDefaulted(t, TIFFTAG_COMPRESSION, &compression);
+  uint64_t* counts = nullptr;
+  if (!TIFFGetField(t, TIFFTAG_STRIPBYTECOUNTS, &counts) || !counts)
+    file.fail("a page has no strip byte counts");
+  uint64_t stored = 0;
+  for (uint32_t s = 0; s < TIFFNumberOfStrips(t); ++s)
+    if (__builtin_add_overflow(stored, counts[s], &stored)) file.fail("bad strip byte counts");
+  if (stored > file.size())
+    file.fail("strip byte counts of " + std::to_string(stored) + " exceed the file's " +
+              std::to_string(file.size()) + " bytes");
+  const unsigned __int128 samples =
+      (unsigned __int128)f.width * f.height * f.samples * std::max<uint16_t>(f.bits, 1) / 8;
+  if (compression == COMPRESSION_NONE ? samples > stored
+                                      : samples > (unsigned __int128)stored * kMaxRatio + 65536)
+    file.fail("a page of " + std::to_string(f.width) + " x " + std::to_string(f.height) +
+              " does not fit in its " + std::to_string(stored) + " bytes of strips (truncated?)");
+}
+
+PageFormat pageFormat(const TiffFile& file) {
+  PageFormat f;
+  TIFF* t = file.get();
+  if (!TIFFGetField(t, TIFFTAG_IMAGEWIDTH, &f.width) ||
+      !TIFFGetField(t, TIFFTAG_IMAGELENGTH, &f.height))
+    file.fail("a page has no image size");
+  TIFFGetFieldDefaulted(t, TIFFTAG_BITSPERSAMPLE, &f.bits);
+  TIFFGetFieldDefaulted(t, TIFFTAG_SAMPLESPERPIXEL, &f.samples);
+  TIFFGetFieldDefaulted(t, TIFFTAG_SAMPLEFORMAT, &f.sampleFormat);
+  TIFFGetFieldDefaulted(t, TIFFTAG_PLANARCONFIG, &f.planar);
+  if (TIFFIsTiled(t)) file.fail("tiled TIFF pages are not supported (only strips)");
+  checkStripBytes(file, f);
+  return f;
+}
+
+FileScalar scalarOf(const TiffFile& file, const PageFormat& f) {
+  if (f.sampleFormat == SAMPLEFORMAT_IEEEFP && f.bits == 32) return FileScalar::Float32;
+  if (f.sampleFormat == SAMPLEFORMAT_UINT && f.bits == 8) return FileScalar::UInt8;
+  if (f.sampleFormat == SAMPLEFORMAT_INT && f.bits == 8) return FileScalar::Int8;
+  if (f.sampleFormat == SAMPLEFORMAT_UINT && f.bits == 16) return FileScalar::UInt16;
+  if (f.sampleFormat == SAMPLEFORMAT_INT && f.bits == 16) return FileScalar::Int16;
+  file.fail("unsupported TIFF samples (" + std::to_string(f.bits) + "-bit, format " +
+            std::to_string(f.sampleFormat) + "; supported: 8/16-bit integers, 32-bit float)");
+}
+
+// Copies channel `channel` of the current page into `out` (width * height samples).
+void readPage(const TiffFile& file, const PageFormat& f, int channel, uint8_t* out) {
+  TIFF* t = file.get();
+  const size_t bytes = f.bits / 8;
+  const tmsize_t lineSize = TIFFScanlineSize(t);
+  const bool planar = f.planar == PLANARCONFIG_SEPARATE;
+  const uint64_t need = uint64_t(f.width) * bytes * (planar ? 1 : f.samples);
+  if (lineSize <= 0 || uint64_t(lineSize) < need) file.fail("bad scanline size");
+  std::vector<uint8_t> line(static_cast<size_t>(lineSize));
+  for (uint32_t y = 0; y < f.height; ++y) {
+    if (TIFFReadScanline(t, line.data(), y, planar ? uint16_t(channel) : 0) < 0)
+      file.fail("cannot read row " + std::to_string(y) + " (truncated or corrupt file?)");
+    uint8_t* dst = out + size_t(y) * f.width * bytes;
+    for (uint32_t x = 0; x < f.width; ++x) {
+      const size_t src = planar ? x * bytes : (size_t(x) * f.samples + size_t(channel)) * bytes;
+      std::memcpy(dst + x * bytes, line.data() + src, bytes);
+    }
+  }
+}
+
+// ImageJ's description: "spacing=", "unit=", "channels=" lines.
+std::string imageJField(const std::string& description, const std::string& key) {
+  for (const std::string& line : splitWords(description, "\n")) {
+    if (line.compare(0, key.size() + 1, key + "=") == 0) return trim(line.substr(key.size() + 1));
+  }
+  return "";
+}
+
+// Names in natural order: digit runs compare by value ("slice2" before "slice10").
+bool naturalLess(const std::string& a, const std::string& b) {
+  size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (std::isdigit(uint8_t(a[i])) && std::isdigit(uint8_t(b[j]))) {
+      size_t ie = i, je = j;
+      while (ie < a.size() && std::isdigit(uint8_t(a[ie]))) ++ie;
+      while (je < b.size() && std::isdigit(uint8_t(b[je]))) ++je;
+      std::string na = a.substr(i, ie - i), nb = b.substr(j, je - j);
+      na.erase(0, std::min(na.find_first_not_of('0'), na.size()));
+      nb.erase(0, std::min(nb.find_first_not_of('0'), nb.size()));
+      if (na.size() != nb.size()) return na.size() < nb.size();
+      if (na != nb) return na < nb;
+      i = ie, j = je;
+    } else {
+      if (a[i] != b[j]) return a[i] < b[j];
+      ++i, ++j;
+    }
+  }
+  return a.size() - i < b.size() - j;
+}
+
+}  // namespace
+
+Volume loadTiff(const std::string& path, int channel) {
+  std::error_code ec;
+  std::vector<std::string> files;
+  if (std::filesystem::is_directory(path, ec)) {
+    for (std::filesystem::directory_iterator it(path, ec), end; !ec && it != end;
+         it.increment(ec)) {
+      const std::string ext = toLower(it->path().extension().string());
+      if ((ext == ".tif" || ext == ".tiff") && it->is_regular_file(ec))
+        files.push_back(it->path().string());
+    }
+    if (files.empty()) failLoad(path, "no TIFF file in the folder");
+    std::sort(files.begin(), files.end(), naturalLess);
+  } else {
+    files.push_back(path);
+  }
+
+  // Pages in order: every page of every file.
+  VolumeLayout layout;
+  PageFormat format;
+  std::vector<uint8_t> bytes;
+  int64_t pages = 0, channels = 1, pagesPerSlice = 1;
+  size_t pageBytes = 0;
+  for (const std::string& file : files) {
+    TiffFile tiff(file);
+    do {
+      const PageFormat f = pageFormat(tiff);
+      if (pages == 0) {
+        format = f;
+        layout.type = scalarOf(tiff, f);
+        char* description = nullptr;
+        std::string text;
+        if (TIFFGetField(tiff.get(), TIFFTAG_IMAGEDESCRIPTION, &description) && description)
+          text = std::string(description).substr(0, 1 << 16);
+        channels = f.samples;
+        int64_t imageJChannels = 0;
+        if (f.samples == 1 && parseInt64(imageJField(text, "channels"), imageJChannels) &&
+            imageJChannels > 1 && imageJChannels < 1024)
+          channels = pagesPerSlice = imageJChannels;  // ImageJ hyperstack: channels interleaved
+        if (channel < 0 || channel >= channels)
+          failLoad(path, "--channel " + std::to_string(channel) + " is out of range (" +
+                             std::to_string(channels) + " channel" + (channels == 1 ? "" : "s") +
+                             ")");
+        // Resolution tags give the pixel size only in ImageJ's files (its unit) or with no
+        // unit; inch and centimetre resolutions are print sizes (72 dpi), not the sample's.
+        uint16_t resolutionUnit = RESUNIT_INCH;
+        TIFFGetFieldDefaulted(tiff.get(), TIFFTAG_RESOLUTIONUNIT, &resolutionUnit);
+        const bool imageJ = text.compare(0, 7, "ImageJ=") == 0;
+        float xres = 0.0f, yres = 0.0f;
+        if (imageJ || resolutionUnit == RESUNIT_NONE) {
+          if (TIFFGetField(tiff.get(), TIFFTAG_XRESOLUTION, &xres) && xres > 0.0f &&
+              std::isfinite(1.0 / xres))
+            layout.spacing.x = 1.0 / xres;
+          if (TIFFGetField(tiff.get(), TIFFTAG_YRESOLUTION, &yres) && yres > 0.0f &&
+              std::isfinite(1.0 / yres))
+            layout.spacing.y = 1.0 / yres;
+        }
+        double z = 0.0;
+        if (parseDouble(imageJField(text, "spacing"), z) && z > 0.0 && std::isfinite(z))
+          layout.spacing.z = z;
+        else
+          layout.notes.push_back("no slice spacing in the file: 1 assumed");
+        if (layout.spacing.x == 1.0 && layout.spacing.y == 1.0)
+          layout.notes.push_back("no pixel size in the file: 1 assumed");
+        const std::string unit = imageJField(text, "unit");
+        if (!unit.empty()) layout.notes.push_back("spacing unit: " + quoteText(unit, 20));
+        if (channels > 1)
+          layout.notes.push_back(std::to_string(channels) + " channels; showing channel " +
+                                 std::to_string(channel) + " (--channel N picks another)");
+        pageBytes = size_t(f.width) * f.height * fileScalarSize(layout.type);
+        dataByteCount(file, {int64_t(f.width), int64_t(f.height), 1}, layout.type);
+      } else if (!(f == format)) {
+        tiff.fail("page " + std::to_string(pages) + " is " + f.text() + ", the first " +
+                  format.text() + ": all pages must agree");
+      }
+      if (pagesPerSlice == 1 || pages % pagesPerSlice == channel) {
+        const auto slices = int64_t(bytes.size() / std::max<size_t>(pageBytes, 1));
+        dataByteCount(file, {int64_t(f.width), int64_t(f.height), slices + 1}, layout.type);
+        bytes.resize(bytes.size() + pageBytes);
+        readPage(tiff, f, pagesPerSlice == 1 ? channel : 0,
+                 bytes.data() + bytes.size() - pageBytes);
+      }
+      ++pages;
+    } while (TIFFReadDirectory(tiff.get()));
+  }
+  layout.dims = {int64_t(format.width), int64_t(format.height),
+                 int64_t(bytes.size() / std::max<size_t>(pageBytes, 1))};
+  layout.bigEndian = hostIsBigEndian();  // libtiff gives native order
+  return makeVolume(path, layout, std::move(bytes));
+}
+
+}  // namespace ewa

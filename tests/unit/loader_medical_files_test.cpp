@@ -1,0 +1,401 @@
+// Hand-made NIfTI, DICOM, TIFF and SLC files: what good ones hold, and one-line errors for bad
+// ones.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <glm/matrix.hpp>
+#include <string>
+
+#include "io/volume_loader.h"
+#include "medical_test_files.h"
+
+namespace ewa {
+namespace {
+
+using testing::expectLoadError;
+using testing::expectVolumeLoadError;
+using testing::NiftiFields;
+using testing::TempDir;
+
+const std::string kVoxels24 = [] {
+  std::string s;
+  for (int i = 0; i < 24; ++i) s.push_back(char(i * 10));
+  return s;
+}();
+
+TEST(NiftiFiles, BothByteOrdersPairsAndScaling) {
+  TempDir dir;
+  for (bool big : {false, true}) {
+    const Volume v =
+        loadVolume(dir.write(big ? "be.nii" : "le.nii", testing::niftiHeader({}, big) + kVoxels24));
+    EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{2, 3, 4}));
+    EXPECT_EQ(v.type(), ScalarType::UInt8);
+    EXPECT_EQ(v.value(1, 2, 3), 230);
+    EXPECT_FALSE(v.patientFrame());
+  }
+  // int16 big-endian scaled by 0.5 + 1 becomes float32.
+  NiftiFields f;
+  f.datatype = 4;
+  f.bitpix = 16;
+  f.sclSlope = 0.5f;
+  f.sclInter = 1.0f;
+  std::vector<int16_t> values(24);
+  for (int i = 0; i < 24; ++i) values[size_t(i)] = int16_t(i - 10);
+  const Volume scaled = loadVolume(
+      dir.write("s.nii", testing::niftiHeader(f, true) + testing::bytesOf(values, true)));
+  EXPECT_EQ(scaled.type(), ScalarType::Float32);
+  EXPECT_DOUBLE_EQ(scaled.value(0, 0, 0), -4.0);
+  EXPECT_DOUBLE_EQ(scaled.maxValue(), 7.5);
+  // A .hdr/.img pair, opened through either name; vox_offset counts in the .img.
+  NiftiFields pair;
+  pair.voxOffset = 0;
+  std::string header = testing::niftiHeader(pair).substr(0, 348);
+  header.replace(344, 4, std::string("ni1\0", 4));
+  dir.write("pair.hdr", header);
+  dir.write("pair.img", kVoxels24);
+  EXPECT_EQ(loadVolume(dir.path("pair.hdr")).value(1, 0, 0), 10);
+  EXPECT_EQ(loadVolume(dir.path("pair.img")).value(1, 0, 0), 10);
+  // Gzip: the whole file compressed.
+  const Volume gz =
+      loadVolume(dir.write("g.nii.gz", testing::gzipBytes(testing::niftiHeader({}) + kVoxels24)));
+  EXPECT_EQ(gz.value(1, 2, 3), 230);
+}
+
+TEST(NiftiFiles, QformRotationAndReflection) {
+  TempDir dir;
+  // qform: quaternion (b,c,d) = (0,0,1): 180 degrees about z, so RAS x,y negate: LPS identity.
+  NiftiFields f;
+  f.qformCode = 1;
+  f.pixdim = {1, 2, 3, 4, 0, 0, 0, 0};
+  std::string h = testing::niftiHeader(f);
+  uint32_t one;
+  const float oneF = 1.0f;
+  std::memcpy(&one, &oneF, 4);
+  h.replace(264, 4, testing::uintBytes(one, 4));  // quatern_d
+  const Volume v = loadVolume(dir.write("q.nii", h + kVoxels24));
+  EXPECT_TRUE(v.patientFrame());
+  EXPECT_NEAR(glm::determinant(v.direction() - glm::dmat3(1.0)), 0.0, 1e-12);
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(v.direction()[a][a], 1.0, 1e-6);
+  EXPECT_EQ(v.spacing(), glm::dvec3(2, 3, 4));
+  // qfac -1 reflects the third axis: the loader reverses the slices, keeping world positions.
+  f.pixdim[0] = -1;
+  std::string hr = testing::niftiHeader(f);
+  hr.replace(264, 4, testing::uintBytes(one, 4));
+  const Volume r = loadVolume(dir.write("r.nii", hr + kVoxels24));
+  EXPECT_GT(glm::determinant(r.direction()), 0.0);
+  // File voxel (1,2,0) (value 50) sits at RAS (1*2, 2*3, -0*4) rotated: LPS (2, 6, 0).
+  const glm::dvec3 ijk =
+      glm::transpose(r.direction()) * (glm::dvec3(2, 6, 0) - r.origin()) / r.spacing();
+  EXPECT_EQ(r.value(int64_t(std::lround(ijk.x)), int64_t(std::lround(ijk.y)),
+                    int64_t(std::lround(ijk.z))),
+            50);
+}
+
+TEST(NiftiFiles, BadFilesFailWithOneLine) {
+  TempDir dir;
+  const std::string good = testing::niftiHeader({});
+  expectVolumeLoadError(dir.write("trunc.nii", good + kVoxels24.substr(0, 20)), "truncated");
+  NiftiFields far;
+  far.voxOffset = 4096;
+  expectVolumeLoadError(dir.write("far.nii", testing::niftiHeader(far) + kVoxels24),
+                        "beyond the end of the file");
+  NiftiFields huge;
+  huge.dim = {3, 32767, 32767, 32767, 1, 1, 1, 1};
+  huge.datatype = 64;
+  huge.bitpix = 64;
+  expectVolumeLoadError(dir.write("huge.nii", testing::niftiHeader(huge) + kVoxels24), "memory");
+  NiftiFields five;
+  five.dim = {5, 2, 3, 4, 1, 2, 1, 1};
+  expectVolumeLoadError(dir.write("five.nii", testing::niftiHeader(five) + kVoxels24),
+                        "5D NIfTI data");
+  NiftiFields negative;
+  negative.dim = {3, 2, -3, 4, 1, 1, 1, 1};
+  expectVolumeLoadError(dir.write("neg.nii", testing::niftiHeader(negative) + kVoxels24),
+                        "not positive");
+  NiftiFields complex;
+  complex.datatype = 32;
+  expectVolumeLoadError(dir.write("c.nii", testing::niftiHeader(complex) + kVoxels24),
+                        "unsupported NIfTI datatype 32");
+  expectVolumeLoadError(dir.write("magic.nii", good.substr(0, 344) + "xyz" + good.substr(347)),
+                        "magic");
+  expectVolumeLoadError(dir.write("size.nii", "garbage that is no header"), "not a NIfTI file");
+  expectVolumeLoadError(dir.write("short.nii", good.substr(0, 100)), "truncated");
+  expectVolumeLoadError(dir.write("gz.nii.gz", testing::gzipBytes(good + kVoxels24).substr(0, 40)),
+                        "");
+  expectVolumeLoadError(dir.write("gzt.nii.gz", testing::gzipBytes(good + kVoxels24.substr(0, 5))),
+                        "truncated");
+  expectLoadError(
+      [&] {
+        loadVolume(dir.path("trunc.nii"), {"", 3, 0});
+      },
+      dir.path("trunc.nii"), "--frame 3 is out of range");
+}
+
+TEST(Directions, NrrdSpaceDirectionsAndMetaImageTransformMatrix) {
+  TempDir dir;
+  // RAS directions and origin become LPS: x and y change sign.
+  const Volume n = loadVolume(
+      dir.write("ras.nrrd",
+                "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 3 4\nencoding: raw\n"
+                "space: right-anterior-superior\nspace directions: (0,2,0) (-1,0,0) (0,0,3)\n"
+                "space origin: (10,20,30)\n\n" +
+                    kVoxels24));
+  EXPECT_TRUE(n.patientFrame());
+  EXPECT_EQ(n.spacing(), glm::dvec3(2, 1, 3));
+  EXPECT_EQ(n.origin(), glm::dvec3(-10, -20, 30));
+  EXPECT_EQ(n.direction(),
+            glm::dmat3(glm::dvec3(0, -1, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1)));
+  // MetaImage lists each axis's direction in turn.
+  const Volume m = loadVolume(
+      dir.write("m.mha",
+                "ObjectType = Image\nNDims = 3\nDimSize = 2 3 4\nElementType = MET_UCHAR\n"
+                "TransformMatrix = 0 1 0 -1 0 0 0 0 1\nAnatomicalOrientation = RAI\n"
+                "ElementDataFile = LOCAL\n" +
+                    kVoxels24));
+  EXPECT_TRUE(m.patientFrame());
+  EXPECT_EQ(m.direction(),
+            glm::dmat3(glm::dvec3(0, 1, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1)));
+  // No space field: directions kept, no patient frame.
+  const Volume plain =
+      loadVolume(dir.write("p.nrrd",
+                           "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 3 4\nencoding: raw\n"
+                           "space directions: (0,1,0) (-1,0,0) (0,0,1)\n\n" +
+                               kVoxels24));
+  EXPECT_FALSE(plain.patientFrame());
+  EXPECT_EQ(plain.direction()[0], glm::dvec3(0, 1, 0));
+}
+
+// A folder of `count` slices 2 apart along z, in shuffled file names.
+std::string dicomSeries(const TempDir& dir, const std::string& name, int count,
+                        testing::DicomSliceSpec spec = {}) {
+  std::filesystem::create_directories(dir.path(name));
+  for (int n = 0; n < count; ++n) {
+    spec.position = {10.0, 20.0, 2.0 * ((n * 7) % count)};
+    EXPECT_TRUE(
+        testing::writeDicomSlice(dir.path(name + "/im" + std::to_string(n) + ".dcm"), spec));
+  }
+  return dir.path(name);
+}
+
+TEST(DicomFiles, SeriesSortedByPositionWithRescale) {
+  TempDir dir;
+  testing::DicomSliceSpec spec;
+  spec.slope = 2.0;
+  spec.intercept = -5.0;
+  const std::string folder = dicomSeries(dir, "s", 5, spec);
+  const Volume v = loadVolume(folder);
+  EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{5, 4, 5}));
+  EXPECT_EQ(v.spacing(), glm::dvec3(0.75, 0.5, 2.0));
+  EXPECT_EQ(v.origin(), glm::dvec3(10, 20, 0));
+  EXPECT_EQ(v.type(), ScalarType::Int16);  // integral rescale that fits
+  // Slice k has z = 2k and raw values i + 10 j + 100 z.
+  EXPECT_DOUBLE_EQ(v.value(3, 2, 4), 2.0 * (3 + 20 + 800) - 5.0);
+  EXPECT_TRUE(v.patientFrame());
+  EXPECT_EQ(loadVolume(folder + "/im3.dcm").bytes(), v.bytes());
+}
+
+TEST(DicomFiles, CompressedSlicesLoadLikeTheOthers) {
+  TempDir dir;
+  const std::string folder = dicomSeries(dir, "c", 4);
+  const Volume plain = loadVolume(folder);
+  ASSERT_TRUE(testing::recompressDicom(folder + "/im1.dcm", gdcm::TransferSyntax::RLELossless));
+  ASSERT_TRUE(
+      testing::recompressDicom(folder + "/im2.dcm", gdcm::TransferSyntax::JPEGLosslessProcess14_1));
+  // The files really changed (encapsulated now), and the volume did not.
+  EXPECT_NE(std::filesystem::file_size(folder + "/im1.dcm"),
+            std::filesystem::file_size(folder + "/im0.dcm"));
+  EXPECT_EQ(loadVolume(folder).bytes(), plain.bytes());
+}
+
+TEST(DicomFiles, GantryTiltWarnsAndSeveralSeriesAreListed) {
+  TempDir dir;
+  testing::DicomSliceSpec spec;
+  std::filesystem::create_directories(dir.path("tilt"));
+  for (int n = 0; n < 4; ++n) {
+    spec.position = {0.0, 0.5 * n, 2.0 * n};  // slices step obliquely
+    ASSERT_TRUE(testing::writeDicomSlice(dir.path("tilt/" + std::to_string(n) + ".dcm"), spec));
+  }
+  spec.seriesUid = "1.2.826.0.1.3680043.2.1125.2";
+  for (int n = 0; n < 2; ++n) {
+    spec.position = {0.0, 0.0, 3.0 * n};
+    ASSERT_TRUE(
+        testing::writeDicomSlice(dir.path("tilt/other" + std::to_string(n) + ".dcm"), spec));
+  }
+  const Volume v = loadVolume(dir.path("tilt"));
+  EXPECT_EQ(v.dims()[2], 4);
+  std::string notes;
+  for (const std::string& n : v.notes()) notes += n + "\n";
+  EXPECT_NE(notes.find("warning: the direction matrix is not orthonormal"), std::string::npos)
+      << notes;
+  EXPECT_NE(notes.find("series 1.2.826.0.1.3680043.2.1125.2: 2 slices"), std::string::npos)
+      << notes;
+  const Volume other = loadVolume(dir.path("tilt"), {"1.2.826.0.1.3680043.2.1125.2", 0, 0});
+  EXPECT_EQ(other.dims()[2], 2);
+  EXPECT_DOUBLE_EQ(other.spacing().z, 3.0);
+}
+
+TEST(DicomFiles, BadSeriesFailWithOneLine) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path("empty"));
+  dir.write("empty/notes.txt", "no images here");
+  expectVolumeLoadError(dir.path("empty"), "no DICOM image");
+  // A slice of another size in the series.
+  const std::string mixed = dicomSeries(dir, "mixed", 3);
+  testing::DicomSliceSpec big;
+  big.rows = 6;
+  big.position = {10, 20, 10};
+  ASSERT_TRUE(testing::writeDicomSlice(mixed + "/big.dcm", big));
+  expectLoadError([&] { loadVolume(mixed); }, mixed,
+                  "big.dcm: slice of 5 x 6 in a series of 5 x 4");
+  // Two slices at one place.
+  const std::string twice = dicomSeries(dir, "twice", 3);
+  std::filesystem::copy_file(twice + "/im0.dcm", twice + "/copy.dcm");
+  expectVolumeLoadError(twice, "share one position");
+  // Truncated pixel data.
+  const std::string cut = dicomSeries(dir, "cut", 3);
+  std::filesystem::resize_file(cut + "/im1.dcm", std::filesystem::file_size(cut + "/im1.dcm") - 9);
+  expectLoadError([&] { loadVolume(cut); }, cut, "im1.dcm: ");
+  // Rows and Columns that claim far more pixels than the file holds: refused before any buffer.
+  const std::string liar = dicomSeries(dir, "liar", 1);
+  {
+    gdcm::Reader reader;
+    reader.SetFileName((liar + "/im0.dcm").c_str());
+    ASSERT_TRUE(reader.Read());
+    gdcm::Attribute<0x0028, 0x0010> rows{40000};
+    gdcm::Attribute<0x0028, 0x0011> columns{40000};
+    reader.GetFile().GetDataSet().Replace(rows.GetAsDataElement());
+    reader.GetFile().GetDataSet().Replace(columns.GetAsDataElement());
+    gdcm::Writer writer;
+    writer.SetFile(reader.GetFile());
+    writer.SetFileName((liar + "/im0.dcm").c_str());
+    ASSERT_TRUE(writer.Write());
+  }
+  expectLoadError([&] { loadVolume(liar); }, liar, "cannot hold a 40000 x 40000 image");
+  // A file that is not DICOM but says .dcm.
+  expectVolumeLoadError(dir.write("fake.dcm", std::string(200, 'x')), "not a DICOM file");
+}
+
+TEST(DicomFiles, MissingSliceWarns) {
+  TempDir dir;
+  testing::DicomSliceSpec spec;
+  std::filesystem::create_directories(dir.path("gap"));
+  for (int z : {0, 2, 4, 8, 10}) {
+    spec.position = {0, 0, double(z)};
+    ASSERT_TRUE(testing::writeDicomSlice(dir.path("gap/" + std::to_string(z) + ".dcm"), spec));
+  }
+  const Volume v = loadVolume(dir.path("gap"));
+  ASSERT_FALSE(v.notes().empty());
+  EXPECT_NE(v.notes()[0].find("missing slices"), std::string::npos) << v.notes()[0];
+}
+
+TEST(TiffFiles, MultiPageTypesChannelsAndImageJSpacing) {
+  TempDir dir;
+  std::vector<std::vector<uint16_t>> pages(3, std::vector<uint16_t>(6));
+  for (int p = 0; p < 3; ++p)
+    for (int i = 0; i < 6; ++i) pages[size_t(p)][size_t(i)] = uint16_t(1000 * p + i);
+  ASSERT_TRUE(testing::writeTiff(dir.path("u16.tif"), 3, 2, pages, SAMPLEFORMAT_UINT, 1,
+                                 "ImageJ=1.53\nimages=3\nslices=3\nunit=micron\nspacing=2.5\n"));
+  const Volume v = loadVolume(dir.path("u16.tif"));
+  EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{3, 2, 3}));
+  EXPECT_EQ(v.type(), ScalarType::UInt16);
+  EXPECT_EQ(v.value(2, 1, 2), 2005);
+  EXPECT_EQ(v.spacing(), glm::dvec3(0.25, 0.5, 2.5));  // resolution tags and spacing=
+  // 72 dpi in a plain TIFF is a print size, not the sample's: spacing 1.
+  std::vector<std::vector<float>> fpages(2, std::vector<float>(4, 0.25f));
+  ASSERT_TRUE(testing::writeTiff(dir.path("f.tiff"), 2, 2, fpages, SAMPLEFORMAT_IEEEFP));
+  EXPECT_EQ(loadVolume(dir.path("f.tiff")).type(), ScalarType::Float32);
+  EXPECT_EQ(loadVolume(dir.path("f.tiff")).spacing(), glm::dvec3(1.0));
+  // Three interleaved channels: channel 2 holds 100 + pixel index.
+  std::vector<std::vector<uint8_t>> rgb(2, std::vector<uint8_t>(4 * 3));
+  for (int p = 0; p < 2; ++p)
+    for (int i = 0; i < 4; ++i)
+      for (int c = 0; c < 3; ++c) rgb[size_t(p)][size_t(3 * i + c)] = uint8_t(50 * c + i + p);
+  ASSERT_TRUE(testing::writeTiff(dir.path("rgb.tif"), 2, 2, rgb, SAMPLEFORMAT_UINT, 3));
+  EXPECT_EQ(loadVolume(dir.path("rgb.tif"), {"", 0, 2}).value(1, 1, 1), 100 + 3 + 1);
+  expectLoadError(
+      [&] {
+        loadVolume(dir.path("rgb.tif"), {"", 0, 3});
+      },
+      dir.path("rgb.tif"), "--channel 3 is out of range (3 channels)");
+}
+
+TEST(TiffFiles, FolderInNaturalOrder) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path("stack"));
+  for (int n : {1, 2, 10}) {
+    std::vector<std::vector<uint8_t>> page(1, std::vector<uint8_t>(4, uint8_t(n)));
+    ASSERT_TRUE(testing::writeTiff(dir.path("stack/z" + std::to_string(n) + ".tif"), 2, 2, page,
+                                   SAMPLEFORMAT_UINT));
+  }
+  const Volume v = loadVolume(dir.path("stack"));
+  EXPECT_EQ(v.dims()[2], 3);
+  EXPECT_EQ(v.value(0, 0, 0), 1);
+  EXPECT_EQ(v.value(0, 0, 1), 2);
+  EXPECT_EQ(v.value(0, 0, 2), 10);
+}
+
+TEST(TiffFiles, PagesThatDisagreeFailWithOneLine) {
+  TempDir dir;
+  std::vector<std::vector<uint8_t>> pages{std::vector<uint8_t>(4), std::vector<uint8_t>(4)};
+  ASSERT_TRUE(testing::writeTiff(dir.path("a.tif"), 2, 2, pages, SAMPLEFORMAT_UINT));
+  // Mixed sizes: a folder whose second file is 3 x 2.
+  std::filesystem::create_directories(dir.path("mixed"));
+  std::vector<std::vector<uint8_t>> small(1, std::vector<uint8_t>(4)),
+      wide(1, std::vector<uint8_t>(6));
+  ASSERT_TRUE(testing::writeTiff(dir.path("mixed/1.tif"), 2, 2, small, SAMPLEFORMAT_UINT));
+  ASSERT_TRUE(testing::writeTiff(dir.path("mixed/2.tif"), 3, 2, wide, SAMPLEFORMAT_UINT));
+  expectLoadError([&] { loadVolume(dir.path("mixed")); }, dir.path("mixed"),
+                  "2.tif: page 1 is 3 x 2, 8-bit, 1 sample(s), the first 2 x 2");
+  // Mixed types in one file: write 8-bit then a 16-bit page by hand.
+  {
+    TIFF* t = TIFFOpen(dir.path("types.tif").c_str(), "w");
+    ASSERT_NE(t, nullptr);
+    for (uint16_t bits : {8, 16}) {
+      TIFFSetField(t, TIFFTAG_IMAGEWIDTH, 2u);
+      TIFFSetField(t, TIFFTAG_IMAGELENGTH, 1u);
+      TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, bits);
+      TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, uint16_t(1));
+      TIFFSetField(t, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_MINISBLACK);
+      uint8_t row[4] = {1, 2, 3, 4};
+      TIFFWriteScanline(t, row, 0, 0);
+      TIFFWriteDirectory(t);
+    }
+    TIFFClose(t);
+  }
+  expectVolumeLoadError(dir.path("types.tif"), "all pages must agree");
+  // Truncated strips.
+  std::vector<std::vector<uint8_t>> big(1, std::vector<uint8_t>(64 * 64, 7));
+  ASSERT_TRUE(testing::writeTiff(dir.path("cut.tif"), 64, 64, big, SAMPLEFORMAT_UINT));
+  const std::string bytes = [&] {
+    std::ifstream in(dir.path("cut.tif"), std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  expectVolumeLoadError(dir.write("cut2.tif", bytes.substr(0, 2000) + bytes.substr(4000)), "");
+  expectVolumeLoadError(dir.write("junk.tif", "II*\0junk"), "");
+}
+
+TEST(SlcFiles, RawAndRunLengthSlicesAndBadOnes) {
+  TempDir dir;
+  const std::string head = "11111\n2 2 2 8\n1.0 2.0 3.0\n1 6 0 ";
+  const std::string icon = "1 1 X" + std::string(3, '\0');
+  const Volume raw = loadVolume(dir.write("raw.slc", head + "0\n" + icon + "abcdefgh"));
+  EXPECT_EQ(raw.value(1, 1, 1), 'h');
+  EXPECT_EQ(raw.spacing(), glm::dvec3(1, 2, 3));
+  // Run-length: slice 0 = four 9s, slice 1 = literal 1 2 3 4.
+  const std::string rle =
+      "3 X" + std::string("\x04\x09\x00", 3) + "6 X" + std::string("\x84\x01\x02\x03\x04\x00", 6);
+  const Volume packed = loadVolume(dir.write("rle.slc", head + "1\n" + icon + rle));
+  EXPECT_EQ(packed.value(1, 1, 0), 9);
+  EXPECT_EQ(packed.value(1, 1, 1), 4);
+  expectVolumeLoadError(dir.write("magic.slc", "12345\n"), "magic");
+  expectVolumeLoadError(dir.write("cut.slc", head + "0\n" + icon + "abc"), "truncated");
+  expectVolumeLoadError(
+      dir.write("over.slc", head + "1\n" + icon + "3 X" + std::string("\x7f\x09\x00", 3)),
+      "more than a slice");
+  expectVolumeLoadError(dir.write("huge.slc", "11111\n100000 100000 100000 8\n1 1 1\n1 6 0 0\n"),
+                        "");
+  expectVolumeLoadError(dir.write("bits.slc", "11111\n2 2 2 16\n1 1 1\n1 6 0 0\n"), "16 bits");
+}
+
+}  // namespace
+}  // namespace ewa

@@ -1,0 +1,171 @@
+// Writers for hand-made NIfTI, DICOM and TIFF test files (GDCM and libtiff write the latter two).
+#pragma once
+
+#include <gdcmAttribute.h>
+#include <gdcmImageChangeTransferSyntax.h>
+#include <gdcmImageReader.h>
+#include <gdcmImageWriter.h>
+#include <gdcmReader.h>
+#include <gdcmWriter.h>
+#include <tiffio.h>
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "loader_test_files.h"
+
+namespace ewa::testing {
+
+// A NIfTI-1 single-file header (348 bytes, "n+1", 4 extension bytes) in the given byte order.
+struct NiftiFields {
+  std::array<int16_t, 8> dim{3, 2, 3, 4, 1, 1, 1, 1};
+  int16_t datatype = 2, bitpix = 8;
+  std::array<float, 8> pixdim{1, 1, 1, 1, 0, 0, 0, 0};
+  float voxOffset = 352, sclSlope = 0, sclInter = 0;
+  int16_t qformCode = 0, sformCode = 0;
+  std::array<float, 12> srow{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+};
+
+inline std::string niftiHeader(const NiftiFields& f, bool bigEndian = false) {
+  std::string h(352, '\0');
+  auto put = [&](size_t at, const std::string& bytes) { h.replace(at, bytes.size(), bytes); };
+  put(0, uintBytes(348, 4, bigEndian));
+  for (int i = 0; i < 8; ++i)
+    put(40 + 2 * size_t(i), uintBytes(uint16_t(f.dim[size_t(i)]), 2, bigEndian));
+  put(70, uintBytes(uint16_t(f.datatype), 2, bigEndian));
+  put(72, uintBytes(uint16_t(f.bitpix), 2, bigEndian));
+  auto putFloat = [&](size_t at, float v) {
+    uint32_t u;
+    std::memcpy(&u, &v, 4);
+    put(at, uintBytes(u, 4, bigEndian));
+  };
+  for (int i = 0; i < 8; ++i) putFloat(76 + 4 * size_t(i), f.pixdim[size_t(i)]);
+  putFloat(108, f.voxOffset);
+  putFloat(112, f.sclSlope);
+  putFloat(116, f.sclInter);
+  put(252, uintBytes(uint16_t(f.qformCode), 2, bigEndian));
+  put(254, uintBytes(uint16_t(f.sformCode), 2, bigEndian));
+  for (int i = 0; i < 12; ++i) putFloat(280 + 4 * size_t(i), f.srow[size_t(i)]);
+  put(344, std::string("n+1\0", 4));
+  return h;
+}
+
+// One CT slice written by GDCM: int16 pixels `values` (rows * columns), at `position` with
+// the given orientation, pixel spacing and rescale, in series `seriesUid`.
+struct DicomSliceSpec {
+  std::string seriesUid = "1.2.826.0.1.3680043.2.1125.1";
+  unsigned rows = 4, columns = 5;
+  std::array<double, 3> position{0, 0, 0};
+  std::array<double, 6> orientation{1, 0, 0, 0, 1, 0};
+  double rowSpacing = 0.5, columnSpacing = 0.75;
+  double slope = 1.0, intercept = 0.0;
+  std::vector<int16_t> values;  // empty: i + 10 * j + 100 * slice index given by position z
+};
+
+inline bool writeDicomSlice(const std::string& path, const DicomSliceSpec& s) {
+  gdcm::ImageWriter writer;
+  gdcm::Image& image = writer.GetImage();
+  image.SetNumberOfDimensions(2);
+  image.SetDimension(0, s.columns);
+  image.SetDimension(1, s.rows);
+  image.SetPhotometricInterpretation(gdcm::PhotometricInterpretation::MONOCHROME2);
+  image.SetPixelFormat(gdcm::PixelFormat::INT16);
+  image.SetOrigin(s.position.data());
+  image.SetDirectionCosines(s.orientation.data());
+  image.SetSpacing(0, s.columnSpacing);
+  image.SetSpacing(1, s.rowSpacing);
+  image.SetSlope(s.slope);
+  image.SetIntercept(s.intercept);
+  std::vector<int16_t> values = s.values;
+  if (values.empty()) {
+    for (unsigned j = 0; j < s.rows; ++j)
+      for (unsigned i = 0; i < s.columns; ++i)
+        values.push_back(int16_t(i + 10 * j + 100 * int(s.position[2])));
+  }
+  gdcm::DataElement pixels(gdcm::Tag(0x7fe0, 0x0010));
+  pixels.SetByteValue(reinterpret_cast<const char*>(values.data()),
+                      uint32_t(values.size() * sizeof(int16_t)));
+  image.SetDataElement(pixels);
+  gdcm::File& file = writer.GetFile();
+  gdcm::DataSet& ds = file.GetDataSet();
+  gdcm::Attribute<0x0008, 0x0016> sopClass;
+  sopClass.SetValue("1.2.840.10008.5.1.4.1.1.2");  // CT Image Storage: keeps IPP and IOP
+  ds.Replace(sopClass.GetAsDataElement());
+  gdcm::Attribute<0x0008, 0x0060> modality;
+  modality.SetValue("CT");
+  ds.Replace(modality.GetAsDataElement());
+  gdcm::Attribute<0x0020, 0x000e> series;
+  series.SetValue(s.seriesUid);
+  ds.Replace(series.GetAsDataElement());
+  writer.SetFileName(path.c_str());
+  if (!writer.Write()) return false;
+  // The image writer keeps only x and y of a 2D image's origin: set the position afterwards.
+  gdcm::Reader reader;
+  reader.SetFileName(path.c_str());
+  if (!reader.Read()) return false;
+  gdcm::Attribute<0x0020, 0x0032> ipp;
+  ipp.SetValues(s.position.data(), 3);
+  reader.GetFile().GetDataSet().Replace(ipp.GetAsDataElement());
+  gdcm::Writer plain;
+  plain.SetFile(reader.GetFile());
+  plain.SetFileName(path.c_str());
+  return plain.Write();
+}
+
+// Rewrites the DICOM file at `path` in another transfer syntax (RLE or JPEG lossless, ...).
+inline bool recompressDicom(const std::string& path, gdcm::TransferSyntax::TSType syntax) {
+  gdcm::ImageReader reader;
+  reader.SetFileName(path.c_str());
+  if (!reader.Read()) return false;
+  gdcm::ImageChangeTransferSyntax change;
+  change.SetTransferSyntax(syntax);
+  change.SetInput(reader.GetImage());
+  if (!change.Change()) return false;
+  gdcm::ImageWriter writer;
+  writer.SetFile(reader.GetFile());
+  writer.SetImage(change.GetOutput());
+  writer.SetFileName(path.c_str());
+  return writer.Write();
+}
+
+// A TIFF written by libtiff: one page per entry of `pages` (width x height samples of T each,
+// `samples` per pixel interleaved), with an optional ImageDescription on the first page.
+template <typename T>
+bool writeTiff(const std::string& path, uint32_t width, uint32_t height,
+               const std::vector<std::vector<T>>& pages, uint16_t sampleFormat,
+               uint16_t samples = 1, const std::string& description = "") {
+  TIFF* t = TIFFOpen(path.c_str(), "w");
+  if (!t) return false;
+  for (size_t p = 0; p < pages.size(); ++p) {
+    TIFFSetField(t, TIFFTAG_IMAGEWIDTH, width);
+    TIFFSetField(t, TIFFTAG_IMAGELENGTH, height);
+    TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, uint16_t(8 * sizeof(T)));
+    TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, samples);
+    TIFFSetField(t, TIFFTAG_SAMPLEFORMAT, sampleFormat);
+    TIFFSetField(t, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
+    TIFFSetField(t, TIFFTAG_PHOTOMETRIC, samples == 3 ? PHOTOMETRIC_RGB : PHOTOMETRIC_MINISBLACK);
+    TIFFSetField(t, TIFFTAG_ROWSPERSTRIP, height);
+    if (p == 0 && !description.empty())
+      TIFFSetField(t, TIFFTAG_IMAGEDESCRIPTION, description.c_str());
+    TIFFSetField(t, TIFFTAG_XRESOLUTION, description.empty() ? 72.0f : 4.0f);  // ImageJ: 0.25
+    TIFFSetField(t, TIFFTAG_YRESOLUTION, description.empty() ? 72.0f : 2.0f);  // ImageJ: 0.5
+    TIFFSetField(t, TIFFTAG_RESOLUTIONUNIT, description.empty() ? RESUNIT_INCH : RESUNIT_NONE);
+    std::vector<T> row(size_t(width) * samples);
+    for (uint32_t y = 0; y < height; ++y) {
+      std::memcpy(row.data(), pages[p].data() + size_t(y) * width * samples,
+                  row.size() * sizeof(T));
+      if (TIFFWriteScanline(t, row.data(), y, 0) < 0) {
+        TIFFClose(t);
+        return false;
+      }
+    }
+    TIFFWriteDirectory(t);
+  }
+  TIFFClose(t);
+  return true;
+}
+
+}  // namespace ewa::testing
