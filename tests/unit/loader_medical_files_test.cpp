@@ -121,7 +121,7 @@ TEST(NiftiFiles, BadFilesFailWithOneLine) {
   expectVolumeLoadError(dir.write("size.nii", "garbage that is no header"), "not a NIfTI file");
   expectVolumeLoadError(dir.write("short.nii", good.substr(0, 100)), "truncated");
   expectVolumeLoadError(dir.write("gz.nii.gz", testing::gzipBytes(good + kVoxels24).substr(0, 40)),
-                        "");
+                        "NIfTI header is truncated");
   expectVolumeLoadError(dir.write("gzt.nii.gz", testing::gzipBytes(good + kVoxels24.substr(0, 5))),
                         "truncated");
   expectLoadError(
@@ -370,8 +370,8 @@ TEST(TiffFiles, PagesThatDisagreeFailWithOneLine) {
     std::ifstream in(dir.path("cut.tif"), std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
   }();
-  expectVolumeLoadError(dir.write("cut2.tif", bytes.substr(0, 2000) + bytes.substr(4000)), "");
-  expectVolumeLoadError(dir.write("junk.tif", "II*\0junk"), "");
+  expectVolumeLoadError(dir.write("cut2.tif", bytes.substr(0, 2000) + bytes.substr(4000)), "not a readable TIFF file");
+  expectVolumeLoadError(dir.write("junk.tif", "II*\0junk"), "not a readable TIFF file");
 }
 
 TEST(SlcFiles, RawAndRunLengthSlicesAndBadOnes) {
@@ -393,7 +393,7 @@ TEST(SlcFiles, RawAndRunLengthSlicesAndBadOnes) {
       dir.write("over.slc", head + "1\n" + icon + "3 X" + std::string("\x7f\x09\x00", 3)),
       "more than a slice");
   expectVolumeLoadError(dir.write("huge.slc", "11111\n100000 100000 100000 8\n1 1 1\n1 6 0 0\n"),
-                        "");
+                        "more than this machine's memory");
   expectVolumeLoadError(dir.write("bits.slc", "11111\n2 2 2 16\n1 1 1\n1 6 0 0\n"), "16 bits");
 }
 
