@@ -33,8 +33,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("-o,--output", o->output, "Render headless to this PNG and exit");
   app.add_option("--turntable", o->turntable,
                  "Render N frames over 360 degrees about view-up; --output is a pattern with one "
-                 "%d (frame_%03d.png) or a folder")
+                 "%d (frame_%03d.png), a folder, or a video (.mp4: H.264, .webm: VP9)")
       ->check(CLI::Range(1, 100000));
+  app.add_option("--fps", o->fps, "Frames per second of a --turntable video (default 30)")
+      ->check(CLI::Range(1, 240));
   app.add_option("--config-dir", o->configDir,
                  "Window settings folder (default $EWAVIEW_CONFIG_DIR, else "
                  "$XDG_CONFIG_HOME/ewaview or ~/.config/ewaview)");
