@@ -76,7 +76,7 @@ DecodedVideo readVideo(const std::string& path) {
       if (e < 0) throw fail("cannot decode: " + avError(e));
       const AVFrame& f = *d.frame;
       d.scaler = sws_getCachedContext(d.scaler, f.width, f.height, AVPixelFormat(f.format), f.width,
-                                      f.height, AV_PIX_FMT_RGB24, SWS_BICUBIC | SWS_ACCURATE_RND,
+                                      f.height, AV_PIX_FMT_RGB24, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT,
                                       nullptr, nullptr, nullptr);
       if (!d.scaler) throw fail("cannot convert the frame to RGB");
       const int* coefficients = sws_getCoefficients(swsColorspace(f.colorspace));

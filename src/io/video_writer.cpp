@@ -179,7 +179,7 @@ void VideoWriter::add(const Image8& image) {
   const int srcH = sameSize ? s.encoder->height : image.height;
   const AVPixelFormat srcFormat = image.channels == 4 ? AV_PIX_FMT_RGBA : AV_PIX_FMT_RGB24;
   s.scaler = sws_getCachedContext(s.scaler, srcW, srcH, srcFormat, s.encoder->width,
-                                  s.encoder->height, AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr,
+                                  s.encoder->height, AV_PIX_FMT_YUV420P, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr,
                                   nullptr, nullptr);
   if (!s.scaler) throw s.fail("cannot convert the frame to YUV");
   // Full-range RGB in, limited-range BT.709 out (what the stream's colour tags say).
