@@ -17,6 +17,9 @@ namespace ewa::python {
 
 namespace {
 
+// A new dict with the same items (py::dict's copy constructor shares the object).
+py::dict copyOf(const py::dict& d) { return py::reinterpret_steal<py::dict>(PyDict_Copy(d.ptr())); }
+
 py::object fromJson(const std::string& text) {
   return py::module_::import("json").attr("loads")(text);
 }
@@ -98,7 +101,7 @@ PythonScene::PythonScene(const py::array& data, const py::object& spacing,
 }
 
 void PythonScene::set(const py::dict& options) {
-  py::dict merged = options_;
+  py::dict merged = copyOf(options_);
   for (const auto& [k, v] : options) {
     const std::string key = py::str(k).cast<std::string>();
     if (isLoadOption(key))
@@ -109,7 +112,7 @@ void PythonScene::set(const py::dict& options) {
   options_ = merged;
 }
 
-py::dict PythonScene::options() const { return py::dict(options_); }
+py::dict PythonScene::options() const { return copyOf(options_); }
 
 void PythonScene::setTransferFunction(const py::object& tf) {
   if (py::isinstance<py::str>(tf)) {
@@ -117,7 +120,11 @@ void PythonScene::setTransferFunction(const py::object& tf) {
                                       volume_->maxValue());
   } else if (py::isinstance<py::dict>(tf)) {
     const std::string text = py::module_::import("json").attr("dumps")(tf).cast<std::string>();
-    tf_ = parseTransferFunctionJson(text, "transfer_function");
+    try {
+      tf_ = parseTransferFunctionJson(text, "transfer_function");
+    } catch (const std::runtime_error& e) {
+      throw UsageError(e.what());  // a bad argument here, where the command line has a bad file
+    }
   } else {
     throw UsageError("transfer_function: give a preset name or a dict like the --tf JSON");
   }
@@ -126,7 +133,7 @@ void PythonScene::setTransferFunction(const py::object& tf) {
 py::object PythonScene::transferFunction() const { return fromJson(transferFunctionToJson(tf_)); }
 
 Image8 PythonScene::renderImage(const py::dict& overrides) {
-  py::dict all = options_;
+  py::dict all = copyOf(options_);
   for (const auto& [k, v] : overrides) {
     if (isLoadOption(py::str(k).cast<std::string>()))
       throw UsageError(py::str(k).cast<std::string>() + ": give it when the scene is made");
