@@ -9,7 +9,9 @@ packages=(build-essential cmake pkg-config
   libglfw3-dev libglm-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri
   libimgui-dev libstb-dev libcli11-dev nlohmann-json3-dev zlib1g-dev libgtest-dev
   xvfb xauth xdotool imagemagick  # tests/window/window_test.sh
-  clang libclang-rt-14-dev)  # scripts/fuzz.sh: clang with libFuzzer
+  clang libclang-rt-14-dev  # scripts/fuzz.sh: clang with libFuzzer
+  libavformat-dev libavcodec-dev libswscale-dev libavutil-dev  # turntable videos (.mp4, .webm)
+  pybind11-dev python3-dev python3-numpy python3-pytest)  # Python module in build/python
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

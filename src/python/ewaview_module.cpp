@@ -1,6 +1,7 @@
 // The Python module `ewaview` (pybind11): scenes from files or NumPy arrays, rendered headless.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "app/one_line.h"
 #include "app/version.h"
@@ -30,6 +31,13 @@ PYBIND11_MODULE(ewaview, m) {
     }
   });
   m.def("presets", &ewa::python::presetNames, "Names of the transfer-function presets.");
+  m.def(
+      "write_png",
+      [](const std::filesystem::path& path, const py::array& image) {
+        ewa::python::writePngArray(path.string(), image);
+      },
+      py::arg("path"), py::arg("image"),
+        "Writes a uint8 (H, W, 3) or (H, W, 4) array as a PNG file (atomically).");
 
   py::class_<PythonScene>(m, "Scene", R"(A volume, its transfer function and render options.
 
@@ -65,6 +73,14 @@ the histogram, as on the command line.)")
       .def(
           "png", [](PythonScene& s, py::kwargs overrides) { return s.png(overrides); },
           "Renders like render() and returns the PNG file's bytes.")
+      .def(
+          "turntable",
+          [](PythonScene& s, const std::filesystem::path& path, int frames, int fps,
+             py::kwargs overrides) { s.turntable(path.string(), frames, fps, overrides);
+          },
+          py::arg("path"), py::arg("frames") = 36, py::arg("fps") = 30,
+          "Writes `frames` pictures over 360 degrees about view-up like --turntable: a .mp4 or "
+          ".webm video at `fps`, a %d pattern ending in .png, or a folder of PNGs.")
       .def("_repr_png_", [](PythonScene& s) { return s.png(py::dict()); })
       .def_property_readonly("info", &PythonScene::info,
                              "dims, spacing, type, range (as --info prints) and name.")

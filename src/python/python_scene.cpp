@@ -6,7 +6,9 @@
 #include <cstring>
 
 #include "app/scene.h"
+#include "core/camera_views.h"
 #include "core/transfer_function_presets.h"
+#include "io/frame_sink.h"
 #include "io/png_io.h"
 #include "io/transfer_function_io.h"
 #include "python/python_options.h"
@@ -132,21 +134,41 @@ void PythonScene::setTransferFunction(const py::object& tf) {
 
 py::object PythonScene::transferFunction() const { return fromJson(transferFunctionToJson(tf_)); }
 
-Image8 PythonScene::renderImage(const py::dict& overrides) {
+Options PythonScene::renderOptions(const py::dict& overrides) {
   py::dict all = copyOf(options_);
   for (const auto& [k, v] : overrides) {
     if (isLoadOption(py::str(k).cast<std::string>()))
       throw UsageError(py::str(k).cast<std::string>() + ": give it when the scene is made");
     all[k] = v;
   }
-  const Options o = parseOptionWords(optionWords(all));
+  return parseOptionWords(optionWords(all));
+}
+
+HeadlessSession& PythonScene::session(const Options& o) {
   if (!session_ || o.backend != sessionBackend_ || o.shaderDir != sessionShaders_) {
     session_.reset();
     session_ = std::make_unique<HeadlessSession>(o.backend, o.shaderDir);
     sessionBackend_ = o.backend;
     sessionShaders_ = o.shaderDir;
   }
-  return session_->render(*volume_, tf_, initialCamera(*volume_, o), o.render, o.width, o.height);
+  return *session_;
+}
+
+Image8 PythonScene::renderImage(const py::dict& overrides) {
+  const Options o = renderOptions(overrides);
+  return session(o).render(*volume_, tf_, initialCamera(*volume_, o), o.render, o.width, o.height);
+}
+
+void PythonScene::turntable(const std::string& path, int frames, int fps,
+                            const py::dict& overrides) {
+  const Options o = renderOptions(overrides);
+  const std::unique_ptr<FrameSink> sink = openFrameSink(path, frames, fps);
+  HeadlessSession& s = session(o);
+  const Camera start = initialCamera(*volume_, o);
+  for (int f = 0; f < frames; ++f)
+    sink->add(s.render(*volume_, tf_, turntableCamera(start, f, frames), o.render, o.width, o.height),
+              f);
+  sink->finish();
 }
 
 py::array_t<uint8_t> PythonScene::render(const py::dict& overrides) {
@@ -174,6 +196,19 @@ std::string PythonScene::repr() const {
   const auto& d = volume_->dims();
   return "<ewaview.Scene " + name_ + " " + std::to_string(d[0]) + "x" + std::to_string(d[1]) +
          "x" + std::to_string(d[2]) + " " + scalarName(volume_->type()) + ">";
+}
+
+void writePngArray(const std::string& path, const py::array& image) {
+  const auto a = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(image);
+  if (!a || a.ndim() != 3 || (a.shape(2) != 3 && a.shape(2) != 4) ||
+      image.dtype().kind() != 'u' || image.itemsize() != 1)
+    throw UsageError(path + ": needs a uint8 array of shape (H, W, 3) or (H, W, 4)");
+  Image8 img;
+  img.height = int(a.shape(0));
+  img.width = int(a.shape(1));
+  img.channels = int(a.shape(2));
+  img.pixels.assign(a.data(), a.data() + a.size());
+  writePng(path, img);
 }
 
 py::list presetNames() {

@@ -36,12 +36,17 @@ class PythonScene {
 
   // The picture as the command line draws it for these options: uint8 (H, W, 3).
   pybind11::array_t<uint8_t> render(const pybind11::dict& overrides);
+  // `frames` pictures over 360 degrees about view-up, written as --turntable writes them to
+  // `path` (a .mp4/.webm video at `fps`, a %d pattern or a folder).
+  void turntable(const std::string& path, int frames, int fps, const pybind11::dict& overrides);
   // The same picture as PNG bytes, for Jupyter.
   pybind11::bytes png(const pybind11::dict& overrides);
   pybind11::dict info() const;
   std::string repr() const;
 
  private:
+  Options renderOptions(const pybind11::dict& overrides);
+  HeadlessSession& session(const Options& options);
   Image8 renderImage(const pybind11::dict& overrides);
 
   std::shared_ptr<Volume> volume_;
@@ -54,5 +59,7 @@ class PythonScene {
 
 // Names of the transfer-function presets, in menu order.
 pybind11::list presetNames();
+// Writes a uint8 (H, W, 3) or (H, W, 4) array as a PNG, atomically.
+void writePngArray(const std::string& path, const pybind11::array& image);
 
 }  // namespace ewa::python
