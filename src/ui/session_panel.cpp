@@ -104,7 +104,6 @@ void SessionPanel::drawCapture(const SessionView& view, SessionEdits& edits) {
   if (turntableFrames_ > 3600) turntableFrames_ = 3600;
   // The formats --turntable writes: a folder of PNGs, or a video through FFmpeg.
   static constexpr const char* kFormats[] = {"png", "mp4", "webm"};
-  ImGui::SameLine();
   ImGui::SetNextItemWidth(100.0f);
   ImGui::Combo("##format", &turntableFormat_, "PNG frames\0MP4\0WebM\0");
   if (turntableFormat_ != 0) {
