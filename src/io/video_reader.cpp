@@ -38,10 +38,13 @@ struct Decoder {
 
 int swsColorspace(AVColorSpace space) {
   switch (space) {
-    case AVCOL_SPC_BT709: return SWS_CS_ITU709;
+    case AVCOL_SPC_BT709:
+      return SWS_CS_ITU709;
     case AVCOL_SPC_BT2020_NCL:
-    case AVCOL_SPC_BT2020_CL: return SWS_CS_BT2020;
-    default: return SWS_CS_ITU601;
+    case AVCOL_SPC_BT2020_CL:
+      return SWS_CS_BT2020;
+    default:
+      return SWS_CS_ITU601;
   }
 }
 
@@ -61,7 +64,8 @@ DecodedVideo readVideo(const std::string& path) {
   d.codec = avcodec_alloc_context3(codec);
   if (!d.codec) throw fail("out of memory");
   avcodec_parameters_to_context(d.codec, stream->codecpar);
-  if (int e = avcodec_open2(d.codec, codec, nullptr); e < 0) throw fail("cannot open decoder: " + avError(e));
+  if (int e = avcodec_open2(d.codec, codec, nullptr); e < 0)
+    throw fail("cannot open decoder: " + avError(e));
   d.frame = av_frame_alloc();
   d.packet = av_packet_alloc();
   if (!d.frame || !d.packet) throw fail("out of memory");
@@ -75,9 +79,9 @@ DecodedVideo readVideo(const std::string& path) {
       if (e == AVERROR(EAGAIN) || e == AVERROR_EOF) return;
       if (e < 0) throw fail("cannot decode: " + avError(e));
       const AVFrame& f = *d.frame;
-      d.scaler = sws_getCachedContext(d.scaler, f.width, f.height, AVPixelFormat(f.format), f.width,
-                                      f.height, AV_PIX_FMT_RGB24, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT,
-                                      nullptr, nullptr, nullptr);
+      d.scaler = sws_getCachedContext(
+          d.scaler, f.width, f.height, AVPixelFormat(f.format), f.width, f.height, AV_PIX_FMT_RGB24,
+          SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr, nullptr);
       if (!d.scaler) throw fail("cannot convert the frame to RGB");
       const int* coefficients = sws_getCoefficients(swsColorspace(f.colorspace));
       sws_setColorspaceDetails(d.scaler, coefficients, f.color_range == AVCOL_RANGE_JPEG,

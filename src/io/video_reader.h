@@ -9,8 +9,8 @@
 namespace ewa {
 
 struct DecodedVideo {
-  std::string codec;          // the decoder's name, e.g. "h264", "vp9"
-  double fps = 0.0;           // the stream's average frame rate
+  std::string codec;           // the decoder's name, e.g. "h264", "vp9"
+  double fps = 0.0;            // the stream's average frame rate
   std::vector<Image8> frames;  // RGB (channels 3), top row first, in display order
 };
 

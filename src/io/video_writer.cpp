@@ -56,7 +56,9 @@ struct VideoWriter::State {
   int64_t next = 0;  // pts of the next frame, in 1/fps
   bool finished = false;
 
-  std::runtime_error fail(const std::string& what) const { return std::runtime_error(path + ": " + what); }
+  std::runtime_error fail(const std::string& what) const {
+    return std::runtime_error(path + ": " + what);
+  }
 
   ~State() {
     sws_freeContext(scaler);
@@ -111,7 +113,8 @@ struct VideoWriter::State {
     frame->format = encoder->pix_fmt;
     frame->width = width;
     frame->height = height;
-    if (int e = av_frame_get_buffer(frame, 0); e < 0) throw fail("cannot allocate a frame: " + avError(e));
+    if (int e = av_frame_get_buffer(frame, 0); e < 0)
+      throw fail("cannot allocate a frame: " + avError(e));
   }
 
   // Sends `f` (nullptr: flush) and writes every packet the encoder returns.
@@ -140,7 +143,8 @@ VideoWriter::VideoWriter(const std::string& path, int fps) : state_(std::make_un
   av_log_set_level(AV_LOG_ERROR);
   s.codec = avcodec_find_encoder_by_name(c.encoder);
   if (!s.codec)
-    throw s.fail(std::string("this FFmpeg has no ") + c.encoder + " encoder (install one that has)");
+    throw s.fail(std::string("this FFmpeg has no ") + c.encoder +
+                 " encoder (install one that has)");
   namespace fs = std::filesystem;
   const fs::path target(path);
   std::error_code ec;
@@ -159,8 +163,12 @@ VideoWriter::VideoWriter(const std::string& path, int fps) : state_(std::make_un
 
 VideoWriter::~VideoWriter() = default;
 
-int VideoWriter::width() const { return state_->encoder ? state_->encoder->width : 0; }
-int VideoWriter::height() const { return state_->encoder ? state_->encoder->height : 0; }
+int VideoWriter::width() const {
+  return state_->encoder ? state_->encoder->width : 0;
+}
+int VideoWriter::height() const {
+  return state_->encoder ? state_->encoder->height : 0;
+}
 
 void VideoWriter::add(const Image8& image) {
   State& s = *state_;
@@ -174,13 +182,14 @@ void VideoWriter::add(const Image8& image) {
     s.openEncoder(w, h);
   }
   // The first frame's odd row/column is cropped (source size rounded down); other sizes scale.
-  const bool sameSize = (image.width & ~1) == s.encoder->width && (image.height & ~1) == s.encoder->height;
+  const bool sameSize =
+      (image.width & ~1) == s.encoder->width && (image.height & ~1) == s.encoder->height;
   const int srcW = sameSize ? s.encoder->width : image.width;
   const int srcH = sameSize ? s.encoder->height : image.height;
   const AVPixelFormat srcFormat = image.channels == 4 ? AV_PIX_FMT_RGBA : AV_PIX_FMT_RGB24;
-  s.scaler = sws_getCachedContext(s.scaler, srcW, srcH, srcFormat, s.encoder->width,
-                                  s.encoder->height, AV_PIX_FMT_YUV420P, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr,
-                                  nullptr, nullptr);
+  s.scaler = sws_getCachedContext(
+      s.scaler, srcW, srcH, srcFormat, s.encoder->width, s.encoder->height, AV_PIX_FMT_YUV420P,
+      SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr, nullptr);
   if (!s.scaler) throw s.fail("cannot convert the frame to YUV");
   // Full-range RGB in, limited-range BT.709 out (what the stream's colour tags say).
   const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);

@@ -37,7 +37,7 @@ PYBIND11_MODULE(ewaview, m) {
         ewa::python::writePngArray(path.string(), image);
       },
       py::arg("path"), py::arg("image"),
-        "Writes a uint8 (H, W, 3) or (H, W, 4) array as a PNG file (atomically).");
+      "Writes a uint8 (H, W, 3) or (H, W, 4) array as a PNG file (atomically).");
 
   py::class_<PythonScene>(m, "Scene", R"(A volume, its transfer function and render options.
 
@@ -47,16 +47,16 @@ Scene(array, spacing=(1, 1, 1), origin=(0, 0, 0), **options): a NumPy array inde
 (uint8, int16, uint16, float32; float64 becomes float32).
 The transfer function is tf=FILE's, else a FILE.tf.json beside the volume, else one made from
 the histogram, as on the command line.)")
-      .def(py::init([](py::object source, py::object spacing, py::object origin,
-                       py::kwargs options) {
-             if (py::isinstance<py::array>(source))
-               return std::make_unique<PythonScene>(source.cast<py::array>(), spacing, origin,
-                                                    options);
-             if (!spacing.is_none() || !origin.is_none())
-               throw ewa::python::UsageError("spacing and origin go with an array volume");
-             if (source.is_none()) return std::make_unique<PythonScene>("", options);
-             return std::make_unique<PythonScene>(py::str(source).cast<std::string>(), options);
-           }),
+      .def(py::init(
+               [](py::object source, py::object spacing, py::object origin, py::kwargs options) {
+                 if (py::isinstance<py::array>(source))
+                   return std::make_unique<PythonScene>(source.cast<py::array>(), spacing, origin,
+                                                        options);
+                 if (!spacing.is_none() || !origin.is_none())
+                   throw ewa::python::UsageError("spacing and origin go with an array volume");
+                 if (source.is_none()) return std::make_unique<PythonScene>("", options);
+                 return std::make_unique<PythonScene>(py::str(source).cast<std::string>(), options);
+               }),
            py::arg("source") = py::none(), py::arg("spacing") = py::none(),
            py::arg("origin") = py::none())
       .def(
@@ -64,9 +64,9 @@ the histogram, as on the command line.)")
           "Keeps render options for later renders (any command-line option but output, "
           "turntable and loading ones), checked now.")
       .def_property_readonly("options", &PythonScene::options, "The render options kept.")
-      .def_property("transfer_function", &PythonScene::transferFunction,
-                    &PythonScene::setTransferFunction,
-                    "As a dict like the --tf JSON; set a dict or a preset name (ewaview.presets()).")
+      .def_property(
+          "transfer_function", &PythonScene::transferFunction, &PythonScene::setTransferFunction,
+          "As a dict like the --tf JSON; set a dict or a preset name (ewaview.presets()).")
       .def(
           "render", [](PythonScene& s, py::kwargs overrides) { return s.render(overrides); },
           "Renders with the kept options and these ones; returns uint8 (H, W, 3).")
@@ -76,8 +76,7 @@ the histogram, as on the command line.)")
       .def(
           "turntable",
           [](PythonScene& s, const std::filesystem::path& path, int frames, int fps,
-             py::kwargs overrides) { s.turntable(path.string(), frames, fps, overrides);
-          },
+             py::kwargs overrides) { s.turntable(path.string(), frames, fps, overrides); },
           py::arg("path"), py::arg("frames") = 36, py::arg("fps") = 30,
           "Writes `frames` pictures over 360 degrees about view-up like --turntable: a .mp4 or "
           ".webm video at `fps`, a %d pattern ending in .png, or a folder of PNGs.")

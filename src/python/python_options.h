@@ -1,11 +1,11 @@
 // Python keyword options -> ewaview::Options through the command line's own parser.
 #pragma once
 
+#include <pybind11/pybind11.h>
+
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <pybind11/pybind11.h>
 
 #include "app/options.h"
 

@@ -20,7 +20,9 @@ namespace ewa::python {
 namespace {
 
 // A new dict with the same items (py::dict's copy constructor shares the object).
-py::dict copyOf(const py::dict& d) { return py::reinterpret_steal<py::dict>(PyDict_Copy(d.ptr())); }
+py::dict copyOf(const py::dict& d) {
+  return py::reinterpret_steal<py::dict>(PyDict_Copy(d.ptr()));
+}
 
 py::object fromJson(const std::string& text) {
   return py::module_::import("json").attr("loads")(text);
@@ -67,8 +69,8 @@ PythonScene::PythonScene(const std::string& path, const py::dict& options) {
   options_ = renderOptionsOf(options);
 }
 
-PythonScene::PythonScene(const py::array& data, const py::object& spacing,
-                         const py::object& origin, const py::dict& options) {
+PythonScene::PythonScene(const py::array& data, const py::object& spacing, const py::object& origin,
+                         const py::dict& options) {
   for (const auto& [k, v] : options) {
     const std::string key = py::str(k).cast<std::string>();
     if (key != "tf" && isLoadOption(key)) throw UsageError(key + ": not with an array volume");
@@ -114,7 +116,9 @@ void PythonScene::set(const py::dict& options) {
   options_ = merged;
 }
 
-py::dict PythonScene::options() const { return copyOf(options_); }
+py::dict PythonScene::options() const {
+  return copyOf(options_);
+}
 
 void PythonScene::setTransferFunction(const py::object& tf) {
   if (py::isinstance<py::str>(tf)) {
@@ -132,7 +136,9 @@ void PythonScene::setTransferFunction(const py::object& tf) {
   }
 }
 
-py::object PythonScene::transferFunction() const { return fromJson(transferFunctionToJson(tf_)); }
+py::object PythonScene::transferFunction() const {
+  return fromJson(transferFunctionToJson(tf_));
+}
 
 Options PythonScene::renderOptions(const py::dict& overrides) {
   py::dict all = copyOf(options_);
@@ -166,8 +172,8 @@ void PythonScene::turntable(const std::string& path, int frames, int fps,
   HeadlessSession& s = session(o);
   const Camera start = initialCamera(*volume_, o);
   for (int f = 0; f < frames; ++f)
-    sink->add(s.render(*volume_, tf_, turntableCamera(start, f, frames), o.render, o.width, o.height),
-              f);
+    sink->add(
+        s.render(*volume_, tf_, turntableCamera(start, f, frames), o.render, o.width, o.height), f);
   sink->finish();
 }
 
@@ -194,14 +200,14 @@ py::dict PythonScene::info() const {
 
 std::string PythonScene::repr() const {
   const auto& d = volume_->dims();
-  return "<ewaview.Scene " + name_ + " " + std::to_string(d[0]) + "x" + std::to_string(d[1]) +
-         "x" + std::to_string(d[2]) + " " + scalarName(volume_->type()) + ">";
+  return "<ewaview.Scene " + name_ + " " + std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" +
+         std::to_string(d[2]) + " " + scalarName(volume_->type()) + ">";
 }
 
 void writePngArray(const std::string& path, const py::array& image) {
   const auto a = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(image);
-  if (!a || a.ndim() != 3 || (a.shape(2) != 3 && a.shape(2) != 4) ||
-      image.dtype().kind() != 'u' || image.itemsize() != 1)
+  if (!a || a.ndim() != 3 || (a.shape(2) != 3 && a.shape(2) != 4) || image.dtype().kind() != 'u' ||
+      image.itemsize() != 1)
     throw UsageError(path + ": needs a uint8 array of shape (H, W, 3) or (H, W, 4)");
   Image8 img;
   img.height = int(a.shape(0));

@@ -1,12 +1,12 @@
 // PythonScene: what `ewaview.Scene` holds: a volume, its transfer function, options, a renderer.
 #pragma once
 
-#include <memory>
-#include <string>
-
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+
+#include <memory>
+#include <string>
 
 #include "app/headless_session.h"
 #include "app/options.h"
