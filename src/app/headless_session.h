@@ -28,7 +28,6 @@ class HeadlessSession {
   // with `tf` from `camera`, and returns the RGB picture, top row first.
   Image8 render(const Volume& volume, const TransferFunction& tf, const Camera& camera,
                 const RenderSettings& settings, int width, int height);
-  const Renderer* renderer() const { return renderer_.get(); }
 
  private:
   std::unique_ptr<platform::GlContext> context_;

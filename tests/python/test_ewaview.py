@@ -182,3 +182,14 @@ def test_write_png_round_trips(out_dir):
     assert np.array_equal(read_png((out_dir / "array.png").read_bytes()), image)
     with pytest.raises(ValueError, match="uint8 array"):
         ewaview.write_png(str(out_dir / "bad.png"), np.zeros((4, 4), np.uint8))
+
+
+def test_the_module_imports_with_only_pythonpath_set():
+    import os
+    import subprocess
+    import sys
+    env = {"PATH": "/usr/bin:/bin", "PYTHONPATH": os.path.dirname(ewaview.__file__)}
+    run = subprocess.run([sys.executable, "-c", "import ewaview; print(ewaview.__version__)"],
+                         env=env, capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.strip() == ewaview.__version__
