@@ -7,6 +7,7 @@
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
+#include <libavutil/log.h>
 #include <libswscale/swscale.h>
 }
 
@@ -52,6 +53,7 @@ int swsColorspace(AVColorSpace space) {
 
 DecodedVideo readVideo(const std::string& path) {
   const auto fail = [&](const std::string& what) { return std::runtime_error(path + ": " + what); };
+  av_log_set_level(AV_LOG_QUIET);  // errors come back as one line with FFmpeg's reason
   Decoder d;
   if (int e = avformat_open_input(&d.format, path.c_str(), nullptr, nullptr); e < 0)
     throw fail("cannot open video: " + avError(e));

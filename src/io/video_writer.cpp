@@ -139,8 +139,9 @@ VideoWriter::VideoWriter(const std::string& path, int fps) : state_(std::make_un
   const Codec c = codecFor(path);
   if (fps < 1 || fps > 1000) throw s.fail("frame rate must be 1 to 1000 frames per second");
   s.fps = fps;
-  // FFmpeg's encoders chat on stderr at info level; only their errors belong in ewaview's.
-  av_log_set_level(AV_LOG_ERROR);
+  // FFmpeg logs to stderr (encoder banners, its own error lines); ewaview reports errors itself,
+  // in one line with the reason FFmpeg returns.
+  av_log_set_level(AV_LOG_QUIET);
   s.codec = avcodec_find_encoder_by_name(c.encoder);
   if (!s.codec)
     throw s.fail(std::string("this FFmpeg has no ") + c.encoder +
