@@ -30,7 +30,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("file", o->file, "Volume file (.nrrd .nhdr .mhd .mha .dat .vti, or raw with --raw-*)");
   app.add_option("--synthetic", o->synthetic,
                  "Synthetic volume: marschner-lobb[:N], sphere[:N], checkerboard, zebra[:RATIO]");
-  app.add_option("-o,--output", o->output, "Render headless to this PNG and exit");
+  app.add_option("-o,--output", o->output,
+                 "Render headless to this PNG and exit (with --turntable: frames or a video)");
   app.add_option("--turntable", o->turntable,
                  "Render N frames over 360 degrees about view-up; --output is a pattern with one "
                  "%d (frame_%03d.png), a folder, or a video (.mp4: H.264, .webm: VP9)")
