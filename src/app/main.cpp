@@ -83,9 +83,8 @@ int main(int argc, char** argv) {
       std::cout << ewa::volumeInfoJson(scene.volume) << "\n";
       return 0;
     }
-    if (options.render.renderer == ewa::RendererKind::ShearWarp && !options.orthographic)
-      std::cerr << "ewaview: note: shear-warp renders parallel projection; the perspective camera "
-                   "is drawn as the orthographic view of the same height at the focal point\n";
+    if (const std::string note = ewa::renderNote(options); !note.empty())
+      std::cerr << "ewaview: note: " << note << "\n";
     if (options.turntable > 0) {
       ewa::renderTurntable(scene, options);
       return 0;

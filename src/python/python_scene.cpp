@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "app/headless.h"
 #include "app/scene.h"
 #include "core/camera_views.h"
 #include "core/transfer_function_presets.h"
@@ -20,6 +21,13 @@ namespace ewa::python {
 namespace {
 
 // A new dict with the same items (py::dict's copy constructor shares the object).
+// The command line's stderr note, as a Python UserWarning (an error when warnings are errors).
+void warnAboutNote(const Options& o) {
+  const std::string note = renderNote(o);
+  if (!note.empty() && PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 2) != 0)
+    throw py::error_already_set();
+}
+
 py::dict copyOf(const py::dict& d) {
   return py::reinterpret_steal<py::dict>(PyDict_Copy(d.ptr()));
 }
@@ -121,6 +129,7 @@ py::dict PythonScene::options() const {
 }
 
 void PythonScene::setTransferFunction(const py::object& tf) {
+  std::lock_guard<std::mutex> lock(mutex_);
   if (py::isinstance<py::str>(tf)) {
     tf_ = applyTransferFunctionPreset(tf_, tf.cast<std::string>(), volume_->minValue(),
                                       volume_->maxValue());
@@ -162,15 +171,22 @@ HeadlessSession& PythonScene::session(const Options& o) {
 
 Image8 PythonScene::renderImage(const py::dict& overrides) {
   const Options o = renderOptions(overrides);
-  return session(o).render(*volume_, tf_, initialCamera(*volume_, o), o.render, o.width, o.height);
+  warnAboutNote(o);
+  const Camera camera = initialCamera(*volume_, o);
+  py::gil_scoped_release released;
+  std::lock_guard<std::mutex> lock(mutex_);
+  return session(o).render(*volume_, tf_, camera, o.render, o.width, o.height);
 }
 
 void PythonScene::turntable(const std::string& path, int frames, int fps,
                             const py::dict& overrides) {
   const Options o = renderOptions(overrides);
+  warnAboutNote(o);
+  const Camera start = initialCamera(*volume_, o);
+  py::gil_scoped_release released;
+  std::lock_guard<std::mutex> lock(mutex_);
   const std::unique_ptr<FrameSink> sink = openFrameSink(path, frames, fps);
   HeadlessSession& s = session(o);
-  const Camera start = initialCamera(*volume_, o);
   for (int f = 0; f < frames; ++f)
     sink->add(
         s.render(*volume_, tf_, turntableCamera(start, f, frames), o.render, o.width, o.height), f);

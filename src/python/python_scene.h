@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <mutex>
 #include <string>
 
 #include "app/headless_session.h"
@@ -54,6 +55,8 @@ class PythonScene {
   std::string name_;
   pybind11::dict options_;  // render options in Python form, in the order given
   std::unique_ptr<HeadlessSession> session_;
+  // Renders run without the GIL; this keeps one scene's renders and edits apart.
+  std::mutex mutex_;
   std::string sessionBackend_, sessionShaders_;
 };
 

@@ -193,3 +193,26 @@ def test_the_module_imports_with_only_pythonpath_set():
                          env=env, capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
     assert run.stdout.strip() == ewaview.__version__
+
+
+def test_shear_warp_perspective_note_is_a_warning():
+    scene = ewaview.Scene(synthetic="sphere:8", resolution=(16, 16), renderer="shearwarp")
+    with pytest.warns(UserWarning, match="parallel projection"):
+        scene.render()
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        scene.render(camera_orthographic=True)  # no note for a parallel camera
+
+
+def test_renders_in_threads_equal_renders_in_turn():
+    from concurrent.futures import ThreadPoolExecutor
+    scenes = [ewaview.Scene(synthetic=s, **SMALL) for s in ("sphere:16", "marschner-lobb:16")]
+    alone = [s.render() for s in scenes] + [scenes[0].render(renderer="shearwarp",
+                                                             camera_orthographic=True)]
+    with ThreadPoolExecutor(3) as pool:
+        together = list(pool.map(lambda job: job(), [
+            scenes[0].render, scenes[1].render,
+            lambda: scenes[0].render(renderer="shearwarp", camera_orthographic=True)]))
+    for a, b in zip(alone, together):
+        assert np.array_equal(a, b)
