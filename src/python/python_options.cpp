@@ -62,10 +62,13 @@ std::vector<std::string> optionWords(const py::dict& options) {
     const std::string key = py::str(k).cast<std::string>();
     if (std::find(std::begin(kNotOptions), std::end(kNotOptions), key) != std::end(kNotOptions))
       throw UsageError(key + ": not an option of the Python module");
-    if (value.is_none() || (py::isinstance<py::bool_>(value) && !value.cast<bool>())) continue;
+    // NumPy's bool (from comparisons on arrays) counts as a bool too.
+    const bool isBool = py::isinstance<py::bool_>(value) ||
+                        std::string(Py_TYPE(value.ptr())->tp_name) == "numpy.bool_";
+    if (value.is_none() || (isBool && !PyObject_IsTrue(value.ptr()))) continue;
     std::string name = "--" + key;
     std::replace(name.begin(), name.end(), '_', '-');
-    if (py::isinstance<py::bool_>(value)) {
+    if (isBool) {
       words.push_back(name);  // a flag
     } else {
       // One word, so a negative first number is not taken for an option.

@@ -58,6 +58,7 @@ def test_kept_options_and_overrides_are_the_command_line_s(cli):
                            "96,72", "--filter", "swan", "--camera-position", "60,30,70",
                            "--shading")
     assert np.array_equal(scene.render(shading=True), expected)
+    assert np.array_equal(scene.render(shading=np.bool_(True)), expected)
     # The override was for one render only, and switching renderers back and forth works.
     assert not np.array_equal(scene.render(), expected)
     splat = scene.render()
