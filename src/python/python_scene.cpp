@@ -24,7 +24,7 @@ namespace {
 // The command line's stderr note, as a Python UserWarning (an error when warnings are errors).
 void warnAboutNote(const Options& o) {
   const std::string note = renderNote(o);
-  if (!note.empty() && PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 2) != 0)
+  if (!note.empty() && PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0)
     throw py::error_already_set();
 }
 

@@ -39,6 +39,7 @@ def tooth(shared_data):
     dict(shading=True, filter="swan", background=(0.1, 0.2, 0.3), camera_view_angle=40),
     dict(render_mode="xray", xray_map="sum", xray_scale=0.02, camera_orthographic=True),
 ], ids=["splat", "shearwarp", "mip-camera", "shaded-swan", "xray-ortho"])
+@pytest.mark.filterwarnings("ignore:shear-warp renders parallel projection")
 def test_render_equals_the_command_line_picture(cli, shared_data, options):
     path = tooth(shared_data)
     options = dict(SMALL, **options)
@@ -50,6 +51,7 @@ def test_render_equals_the_command_line_picture(cli, shared_data, options):
     assert image.max() > 40  # not an empty picture that would equal any other empty one
 
 
+@pytest.mark.filterwarnings("ignore:shear-warp renders parallel projection")
 def test_kept_options_and_overrides_are_the_command_line_s(cli):
     scene = ewaview.Scene(synthetic="marschner-lobb:24", **SMALL)
     scene.set(filter="swan", camera_position=(60, 30, 70))
@@ -162,6 +164,7 @@ def test_bad_input_raises_the_command_line_s_messages(cli, out_dir):
         ewaview.Scene(np.zeros((2, 2, 2), np.uint8), spacing=(1, 1))
 
 
+@pytest.mark.filterwarnings("ignore:shear-warp renders parallel projection")
 def test_turntable_writes_what_the_command_line_writes(cli, out_dir):
     scene = ewaview.Scene(synthetic="marschner-lobb:24", resolution=(48, 40))
     scene.turntable(out_dir / "py_turn", frames=3, renderer="shearwarp")
