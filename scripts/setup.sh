@@ -11,7 +11,9 @@ packages=(build-essential cmake pkg-config
   libgdcm-dev libtiff-dev  # DICOM series, TIFF stacks
   xvfb xauth xdotool imagemagick  # tests/window/window_test.sh
   unzip  # the DICOM test series in a zip
-  clang libclang-rt-14-dev)  # scripts/fuzz.sh: clang with libFuzzer
+  clang libclang-rt-14-dev  # scripts/fuzz.sh: clang with libFuzzer
+  libavformat-dev libavcodec-dev libswscale-dev libavutil-dev  # turntable videos (.mp4, .webm)
+  pybind11-dev python3-dev python3-numpy python3-pytest)  # Python module in build/python
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,30 +1,33 @@
-// Headless rendering: context, renderer, one frame, PNG.
+// Headless rendering: a HeadlessSession's one frame, written as a PNG.
 #include "app/headless.h"
 
-#include <memory>
 #include <stdexcept>
 
-#include "gl/shader_library.h"
+#include "app/headless_session.h"
 #include "io/atomic_file.h"
 #include "io/png_io.h"
-#include "platform/headless_context.h"
-#include "render/renderer_factory.h"
 
 namespace ewa {
 
-void renderHeadless(const Scene& scene, const Options& o) {
-  // The picture replaces whatever --output names, but never one of the files being read.
+void refuseToOverwriteInputs(const std::string& output, const Options& o) {
   for (const std::string& input : {o.file, o.tfFile}) {
-    if (!input.empty() && sameExistingFile(o.output, input))
-      throw std::runtime_error(o.output + ": is an input file; refusing to overwrite it");
+    if (!input.empty() && sameExistingFile(output, input))
+      throw std::runtime_error(output + ": is an input file; refusing to overwrite it");
   }
-  auto context = platform::createHeadlessContext(platform::parseHeadlessBackend(o.backend));
-  const gl::ShaderLibrary shaders(o.shaderDir);
-  const std::unique_ptr<Renderer> renderer = createRenderer(o.render.renderer, shaders);
-  renderer->setVolume(scene.volume);
-  renderer->setTransferFunction(scene.transferFunction);
-  renderer->render(initialCamera(scene.volume, o), o.render, o.width, o.height);
-  writePng(o.output, renderer->readImage());
+}
+
+std::string renderNote(const Options& o) {
+  if (o.render.renderer == RendererKind::ShearWarp && !o.orthographic)
+    return "shear-warp renders parallel projection; the perspective camera is drawn as the "
+           "orthographic view of the same height at the focal point";
+  return "";
+}
+
+void renderHeadless(const Scene& scene, const Options& o) {
+  refuseToOverwriteInputs(o.output, o);
+  HeadlessSession session(o.backend, o.shaderDir);
+  writePng(o.output, session.render(scene.volume, scene.transferFunction,
+                                    initialCamera(scene.volume, o), o.render, o.width, o.height));
 }
 
 }  // namespace ewa

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/headless.h"
+#include "app/one_line.h"
 #include "app/options.h"
 #include "app/scene.h"
 #include "app/turntable.h"
@@ -12,21 +13,6 @@
 #include "ui/viewer.h"
 
 namespace {
-
-// Errors are one line on stderr (GL compile logs come with several): breaks become " | ".
-std::string oneLine(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '\n') {
-      if (!out.empty() && out.back() != ' ' && out.back() != ':') out += " |";
-      out += ' ';
-    } else if (c != '\r') {
-      out += c;
-    }
-  }
-  while (!out.empty() && (out.back() == ' ' || out.back() == '|')) out.pop_back();
-  return out;
-}
 
 // The window: saved settings where the command line says nothing, and an opener for files
 // chosen in the window (the same loaders and transfer-function rules as the command line).
@@ -98,9 +84,8 @@ int main(int argc, char** argv) {
       std::cout << ewa::volumeInfoJson(scene.volume) << "\n";
       return 0;
     }
-    if (options.render.renderer == ewa::RendererKind::ShearWarp && !options.orthographic)
-      std::cerr << "ewaview: note: shear-warp renders parallel projection; the perspective camera "
-                   "is drawn as the orthographic view of the same height at the focal point\n";
+    if (const std::string note = ewa::renderNote(options); !note.empty())
+      std::cerr << "ewaview: note: " << note << "\n";
     if (options.turntable > 0) {
       ewa::renderTurntable(scene, options);
       return 0;
@@ -111,7 +96,7 @@ int main(int argc, char** argv) {
     }
     return runWindow(std::move(scene), options);
   } catch (const std::exception& e) {
-    std::cerr << "ewaview: " << oneLine(e.what()) << "\n";
+    std::cerr << "ewaview: " << ewa::oneLine(e.what()) << "\n";
     return 1;
   }
 }

@@ -32,11 +32,14 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                  ".tiff .slc), a DICOM or TIFF folder, or raw with --raw-*");
   app.add_option("--synthetic", o->synthetic,
                  "Synthetic volume: marschner-lobb[:N], sphere[:N], checkerboard, zebra[:RATIO]");
-  app.add_option("-o,--output", o->output, "Render headless to this PNG and exit");
+  app.add_option("-o,--output", o->output,
+                 "Render headless to this PNG and exit (with --turntable: frames or a video)");
   app.add_option("--turntable", o->turntable,
                  "Render N frames over 360 degrees about view-up; --output is a pattern with one "
-                 "%d (frame_%03d.png) or a folder")
+                 "%d (frame_%03d.png), a folder, or a video (.mp4: H.264, .webm: VP9)")
       ->check(CLI::Range(1, 100000));
+  app.add_option("--fps", o->fps, "Frames per second of a --turntable video (default 30)")
+      ->check(CLI::Range(1, 240));
   app.add_option("--config-dir", o->configDir,
                  "Window settings folder (default $EWAVIEW_CONFIG_DIR, else "
                  "$XDG_CONFIG_HOME/ewaview or ~/.config/ewaview)");

@@ -16,6 +16,7 @@ struct Options {
   std::string synthetic;       // "sphere:64", ...
   std::string output;          // PNG path: render headless and exit
   int turntable = 0;           // > 0: that many frames over 360 degrees, --output a pattern or folder
+  int fps = 30;                // frames per second of a turntable written as a video
   std::string configDir;       // the window's settings folder; empty: defaultConfigDir()
   std::string recordCameraPath;  // the window writes every camera it draws to this file on exit
   bool resolutionGiven = false;      // --resolution was given (overrides the saved window size)

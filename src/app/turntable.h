@@ -1,4 +1,4 @@
-// Headless turntables: N frames over 360 degrees about the view-up axis, written as PNGs.
+// Headless turntables: N frames over 360 degrees about the view-up axis, as PNGs or a video.
 #pragma once
 
 #include <functional>
@@ -11,7 +11,8 @@
 namespace ewa {
 
 // Renders options.turntable frames with the options' camera and settings and writes them as
-// options.output names them (a %d pattern or a folder, see io/frame_names.h). Progress goes to
+// options.output names them (a %d pattern or a folder, see io/frame_names.h, or an .mp4/.webm
+// video at options.fps), with the renderer --renderer names. Progress goes to
 // the terminal. Throws on failure ("path: problem").
 void renderTurntable(const Scene& scene, const Options& options);
 

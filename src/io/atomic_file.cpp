@@ -70,6 +70,22 @@ void writeFileAtomically(const std::string& path, std::string_view bytes, bool m
   }
 }
 
+std::string createTemporaryBeside(const std::string& path) {
+  const std::filesystem::path target(path);
+  const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
+  std::string temp = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0) fail(path, std::strerror(errno));
+  const bool ok = ::fchmod(fd, 0666 & ~currentUmask()) == 0;
+  const std::string why = ok ? "" : std::strerror(errno);
+  ::close(fd);
+  if (!ok) {
+    ::unlink(temp.c_str());
+    fail(path, why);
+  }
+  return temp;
+}
+
 bool sameExistingFile(const std::string& a, const std::string& b) {
   struct stat sa {
   }, sb{};

@@ -14,6 +14,11 @@ namespace ewa {
 // Creates missing parent folders when `makeParents`.
 void writeFileAtomically(const std::string& path, std::string_view bytes, bool makeParents = false);
 
+// For writers that stream a file (videos): creates an empty file with a unique name beside
+// `path`, with the mode writeFileAtomically gives, and returns its name; the caller renames it
+// over `path` when complete or removes it. Throws std::runtime_error("<path>: cannot write: ...").
+std::string createTemporaryBeside(const std::string& path);
+
 // True when `a` and `b` name the same existing file (same device and inode), so a writer can
 // refuse to replace one of its inputs whatever the spelling of the two paths.
 bool sameExistingFile(const std::string& a, const std::string& b);

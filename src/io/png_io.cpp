@@ -15,18 +15,28 @@
 
 namespace ewa {
 
-void writePng(const std::string& path, const Image8& image) {
+std::string encodePng(const Image8& image) {
   if (image.width <= 0 || image.height <= 0 || (image.channels != 3 && image.channels != 4) ||
       image.pixels.size() != size_t(image.width) * image.height * image.channels)
-    throw std::runtime_error(path + ": image to write has inconsistent size");
-  // Encode in memory first: an encoder failure then never touches the file system.
+    throw std::runtime_error("image to write has inconsistent size");
   std::string png;
   const auto append = [](void* context, void* data, int size) {
     static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
   };
   if (!stbi_write_png_to_func(append, &png, image.width, image.height, image.channels,
                               image.pixels.data(), image.width * image.channels))
-    throw std::runtime_error(path + ": cannot encode PNG");
+    throw std::runtime_error("cannot encode PNG");
+  return png;
+}
+
+void writePng(const std::string& path, const Image8& image) {
+  // Encode in memory first: an encoder failure then never touches the file system.
+  std::string png;
+  try {
+    png = encodePng(image);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
   writeFileAtomically(path, png);
 }
 

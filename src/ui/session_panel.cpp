@@ -1,6 +1,8 @@
 // SessionPanel: open/recent files, camera bookmarks, screenshot and turntable, progress, messages.
 #include "ui/session_panel.h"
 
+#include <algorithm>
+
 #include <imgui.h>
 
 #include <cmath>
@@ -100,8 +102,22 @@ void SessionPanel::drawCapture(const SessionView& view, SessionEdits& edits) {
   ImGui::InputInt("frames", &turntableFrames_);
   if (turntableFrames_ < 1) turntableFrames_ = 1;
   if (turntableFrames_ > 3600) turntableFrames_ = 3600;
+  // The formats --turntable writes: a folder of PNGs, or a video through FFmpeg.
+  static constexpr const char* kFormats[] = {"png", "mp4", "webm"};
+  ImGui::SetNextItemWidth(100.0f);
+  ImGui::Combo("##format", &turntableFormat_, "PNG frames\0MP4\0WebM\0");
+  if (turntableFormat_ != 0) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(70.0f);
+    ImGui::InputInt("fps", &turntableFps_, 0);
+    turntableFps_ = std::clamp(turntableFps_, 1, 240);
+  }
   ImGui::SameLine();
-  if (ImGui::Button("Turntable")) edits.turntableFrames = turntableFrames_;
+  if (ImGui::Button("Turntable")) {
+    edits.turntableFrames = turntableFrames_;
+    edits.turntableFormat = kFormats[turntableFormat_];
+    edits.turntableFps = turntableFps_;
+  }
 }
 
 }  // namespace ewa

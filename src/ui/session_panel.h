@@ -32,6 +32,8 @@ struct SessionEdits {
   int deleteBookmark = -1;
   bool screenshot = false;
   int turntableFrames = 0;  // > 0: start a turntable of that many frames
+  std::string turntableFormat = "png";  // "png" (a folder of frames), "mp4" or "webm"
+  int turntableFps = 30;                // frames per second of a video
   bool cancelTurntable = false;
 };
 
@@ -48,6 +50,8 @@ class SessionPanel {
 
   char bookmarkName_[64] = "view 1";
   int turntableFrames_ = 36;
+  int turntableFormat_ = 0;  // index into the panel's format list
+  int turntableFps_ = 30;
 };
 
 }  // namespace ewa

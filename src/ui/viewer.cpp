@@ -20,6 +20,7 @@
 #include "gl/shader_library.h"
 #include "io/atomic_file.h"
 #include "io/frame_names.h"
+#include "io/frame_sink.h"
 #include "io/png_io.h"
 #include "io/terminal_progress.h"
 #include "platform/glfw_window_context.h"
@@ -61,7 +62,7 @@ struct WindowTurntable {
   int total = 0;  // 0: none running
   int done = 0;
   Camera start;
-  FrameNaming naming;
+  std::unique_ptr<FrameSink> sink;  // PNG frames in a folder, or a video
   std::unique_ptr<TerminalProgress> progress;
 };
 
@@ -337,34 +338,35 @@ class Viewer {
     }
   }
 
-  void startTurntable(int frames) {
+  // `format`: "png" (a folder of frames), "mp4" or "webm" (a video at `fps`).
+  void startTurntable(int frames, const std::string& format, int fps) {
     std::string folder =
         std::filesystem::absolute(
             screenshotFileName(saved_.screenshotDir, current_.name, std::time(nullptr)))
             .lexically_normal()
             .string();
     folder = folder.substr(0, folder.size() - 4) + "-turntable";
-    std::error_code ec;
-    std::filesystem::create_directories(folder, ec);
-    if (!std::filesystem::is_directory(folder)) {
-      error(folder + ": cannot create the turntable folder");
+    try {
+      turntable_.sink = openFrameSink(format == "png" ? folder : folder + "." + format, frames, fps);
+    } catch (const std::exception& e) {
+      error(e.what());
       return;
     }
     turntable_.total = frames;
     turntable_.done = 0;
     turntable_.start = controller_.camera();
-    turntable_.naming = {false, folder};
     turntable_.progress = std::make_unique<TerminalProgress>("ewaview: turntable");
   }
 
   // One turntable frame; ends the turntable after the last one.
   void turntableFrame(const glm::ivec2& fb) {
     WindowTurntable& t = turntable_;
-    const std::string file = frameFileName(t.naming, t.done, t.total);
+    const std::string file = t.sink->fileOf(t.done);
     try {
       renderLevel(0, turntableCamera(t.start, t.done, t.total), fb);
       renderedCamera_ = ~uint64_t(0);  // the view on screen is not the controller's camera
-      writePng(file, lod_.last().readImage());
+      t.sink->add(lod_.last().readImage(), t.done);
+      if (t.done + 1 == t.total) t.sink->finish();
     } catch (const std::exception& e) {
       error(e.what());
       t = WindowTurntable{};
@@ -375,7 +377,8 @@ class Viewer {
     if (t.done == t.total) {
       t.progress->finish("done");
       messages_.post(StatusMessages::Kind::Info,
-                     "saved " + std::to_string(t.total) + " frames in " + t.naming.text, now());
+                     "saved " + std::to_string(t.total) + " frames in " + t.sink->description(),
+                     now());
       t = WindowTurntable{};
     }
   }
@@ -430,7 +433,8 @@ class Viewer {
       saveBookmarks();
     }
     if (e.screenshot) *screenshotNow = true;
-    if (e.turntableFrames > 0 && turntable_.total == 0) startTurntable(e.turntableFrames);
+    if (e.turntableFrames > 0 && turntable_.total == 0)
+      startTurntable(e.turntableFrames, e.turntableFormat, e.turntableFps);
     if (e.cancelTurntable && turntable_.total > 0) {
       turntable_.progress->finish("cancelled");
       turntable_ = WindowTurntable{};

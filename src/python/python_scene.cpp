@@ -1,0 +1,242 @@
+// PythonScene: loading (file, options or array), transfer functions, rendering through the
+// command line's parser and HeadlessSession, so the pictures equal the command line's.
+#include "python/python_scene.h"
+
+#include <cmath>
+#include <cstring>
+
+#include "app/headless.h"
+#include "app/scene.h"
+#include "core/camera_views.h"
+#include "core/transfer_function_presets.h"
+#include "io/frame_sink.h"
+#include "io/png_io.h"
+#include "io/transfer_function_io.h"
+#include "python/python_options.h"
+
+namespace py = pybind11;
+
+namespace ewa::python {
+
+namespace {
+
+// A new dict with the same items (py::dict's copy constructor shares the object).
+// The command line's stderr note, as a Python UserWarning (an error when warnings are errors).
+void warnAboutNote(const Options& o) {
+  const std::string note = renderNote(o);
+  if (!note.empty() && PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0)
+    throw py::error_already_set();
+}
+
+py::dict copyOf(const py::dict& d) {
+  return py::reinterpret_steal<py::dict>(PyDict_Copy(d.ptr()));
+}
+
+py::object fromJson(const std::string& text) {
+  return py::module_::import("json").attr("loads")(text);
+}
+
+// Splits `options` into the load options and the render options kept for later renders.
+py::dict renderOptionsOf(const py::dict& options) {
+  py::dict kept;
+  for (const auto& [k, v] : options)
+    if (!isLoadOption(py::str(k).cast<std::string>())) kept[k] = v;
+  return kept;
+}
+
+glm::dvec3 vec3Argument(const py::object& value, glm::dvec3 fallback, const char* name) {
+  if (value.is_none()) return fallback;
+  std::vector<double> v;
+  try {
+    v = value.cast<std::vector<double>>();
+  } catch (const py::cast_error&) {
+  }
+  if (v.size() != 3) throw UsageError(std::string(name) + ": needs three numbers X,Y,Z");
+  return {v[0], v[1], v[2]};
+}
+
+template <typename T>
+std::vector<uint8_t> contiguousBytes(const py::array& data) {
+  const auto a = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(data);
+  if (!a) throw UsageError("array: cannot be read as a contiguous array");
+  std::vector<uint8_t> bytes(size_t(a.nbytes()));
+  if (!bytes.empty()) std::memcpy(bytes.data(), a.data(), bytes.size());
+  return bytes;
+}
+
+}  // namespace
+
+PythonScene::PythonScene(const std::string& path, const py::dict& options) {
+  std::vector<std::string> words = optionWords(options);
+  if (!path.empty()) words.insert(words.begin(), path);
+  const Options o = parseOptionWords(words);
+  Scene scene = loadScene(o);
+  volume_ = std::make_shared<Volume>(std::move(scene.volume));
+  tf_ = std::move(scene.transferFunction);
+  name_ = scene.name;
+  options_ = renderOptionsOf(options);
+}
+
+PythonScene::PythonScene(const py::array& data, const py::object& spacing, const py::object& origin,
+                         const py::dict& options) {
+  for (const auto& [k, v] : options) {
+    const std::string key = py::str(k).cast<std::string>();
+    if (key != "tf" && isLoadOption(key)) throw UsageError(key + ": not with an array volume");
+  }
+  const Options o = parseOptionWords(optionWords(options));
+  if (data.ndim() != 3)
+    throw UsageError("array: needs 3 dimensions [z, y, x], got " + std::to_string(data.ndim()));
+  const char kind = data.dtype().kind();
+  const size_t size = size_t(data.itemsize());
+  ScalarType type;
+  std::vector<uint8_t> bytes;
+  if (kind == 'u' && size == 1) {
+    type = ScalarType::UInt8, bytes = contiguousBytes<uint8_t>(data);
+  } else if (kind == 'i' && size == 2) {
+    type = ScalarType::Int16, bytes = contiguousBytes<int16_t>(data);
+  } else if (kind == 'u' && size == 2) {
+    type = ScalarType::UInt16, bytes = contiguousBytes<uint16_t>(data);
+  } else if (kind == 'f' && (size == 4 || size == 8)) {
+    type = ScalarType::Float32, bytes = contiguousBytes<float>(data);
+  } else {
+    throw UsageError("array: dtype " + py::str(data.dtype()).cast<std::string>() +
+                     " not supported (use uint8, int16, uint16, float32 or float64)");
+  }
+  const std::array<int64_t, 3> dims{int64_t(data.shape(2)), int64_t(data.shape(1)),
+                                    int64_t(data.shape(0))};
+  volume_ = std::make_shared<Volume>(dims, vec3Argument(spacing, glm::dvec3(1.0), "spacing"),
+                                     vec3Argument(origin, glm::dvec3(0.0), "origin"), type,
+                                     std::move(bytes));
+  tf_ = o.tfFile.empty() ? defaultTransferFunction(*volume_) : loadTransferFunction(o.tfFile);
+  name_ = "array";
+  options_ = renderOptionsOf(options);
+}
+
+void PythonScene::set(const py::dict& options) {
+  py::dict merged = copyOf(options_);
+  for (const auto& [k, v] : options) {
+    const std::string key = py::str(k).cast<std::string>();
+    if (isLoadOption(key))
+      throw UsageError(key + ": give it when the scene is made (or set transfer_function)");
+    merged[k] = v;
+  }
+  parseOptionWords(optionWords(merged));  // checked now, so errors show where they are made
+  options_ = merged;
+}
+
+py::dict PythonScene::options() const {
+  return copyOf(options_);
+}
+
+void PythonScene::setTransferFunction(const py::object& tf) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (py::isinstance<py::str>(tf)) {
+    tf_ = applyTransferFunctionPreset(tf_, tf.cast<std::string>(), volume_->minValue(),
+                                      volume_->maxValue());
+  } else if (py::isinstance<py::dict>(tf)) {
+    const std::string text = py::module_::import("json").attr("dumps")(tf).cast<std::string>();
+    try {
+      tf_ = parseTransferFunctionJson(text, "transfer_function");
+    } catch (const std::runtime_error& e) {
+      throw UsageError(e.what());  // a bad argument here, where the command line has a bad file
+    }
+  } else {
+    throw UsageError("transfer_function: give a preset name or a dict like the --tf JSON");
+  }
+}
+
+py::object PythonScene::transferFunction() const {
+  return fromJson(transferFunctionToJson(tf_));
+}
+
+Options PythonScene::renderOptions(const py::dict& overrides) {
+  py::dict all = copyOf(options_);
+  for (const auto& [k, v] : overrides) {
+    if (isLoadOption(py::str(k).cast<std::string>()))
+      throw UsageError(py::str(k).cast<std::string>() + ": give it when the scene is made");
+    all[k] = v;
+  }
+  return parseOptionWords(optionWords(all));
+}
+
+HeadlessSession& PythonScene::session(const Options& o) {
+  if (!session_ || o.backend != sessionBackend_ || o.shaderDir != sessionShaders_) {
+    session_.reset();
+    session_ = std::make_unique<HeadlessSession>(o.backend, o.shaderDir);
+    sessionBackend_ = o.backend;
+    sessionShaders_ = o.shaderDir;
+  }
+  return *session_;
+}
+
+Image8 PythonScene::renderImage(const py::dict& overrides) {
+  const Options o = renderOptions(overrides);
+  warnAboutNote(o);
+  const Camera camera = initialCamera(*volume_, o);
+  py::gil_scoped_release released;
+  std::lock_guard<std::mutex> lock(mutex_);
+  return session(o).render(*volume_, tf_, camera, o.render, o.width, o.height);
+}
+
+void PythonScene::turntable(const std::string& path, int frames, int fps,
+                            const py::dict& overrides) {
+  const Options o = renderOptions(overrides);
+  warnAboutNote(o);
+  const Camera start = initialCamera(*volume_, o);
+  py::gil_scoped_release released;
+  std::lock_guard<std::mutex> lock(mutex_);
+  const std::unique_ptr<FrameSink> sink = openFrameSink(path, frames, fps);
+  HeadlessSession& s = session(o);
+  for (int f = 0; f < frames; ++f)
+    sink->add(
+        s.render(*volume_, tf_, turntableCamera(start, f, frames), o.render, o.width, o.height), f);
+  sink->finish();
+}
+
+py::array_t<uint8_t> PythonScene::render(const py::dict& overrides) {
+  const Image8 img = renderImage(overrides);
+  py::array_t<uint8_t> out({img.height, img.width, 3});
+  uint8_t* dst = out.mutable_data();
+  const size_t pixels = size_t(img.width) * img.height;
+  for (size_t p = 0; p < pixels; ++p)
+    for (int c = 0; c < 3; ++c) dst[p * 3 + c] = img.pixels[p * img.channels + c];
+  return out;
+}
+
+py::bytes PythonScene::png(const py::dict& overrides) {
+  const std::string bytes = encodePng(renderImage(overrides));
+  return py::bytes(bytes);
+}
+
+py::dict PythonScene::info() const {
+  py::dict d = fromJson(volumeInfoJson(*volume_));
+  d["name"] = name_;
+  return d;
+}
+
+std::string PythonScene::repr() const {
+  const auto& d = volume_->dims();
+  return "<ewaview.Scene " + name_ + " " + std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" +
+         std::to_string(d[2]) + " " + scalarName(volume_->type()) + ">";
+}
+
+void writePngArray(const std::string& path, const py::array& image) {
+  const auto a = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(image);
+  if (!a || a.ndim() != 3 || (a.shape(2) != 3 && a.shape(2) != 4) || image.dtype().kind() != 'u' ||
+      image.itemsize() != 1)
+    throw UsageError(path + ": needs a uint8 array of shape (H, W, 3) or (H, W, 4)");
+  Image8 img;
+  img.height = int(a.shape(0));
+  img.width = int(a.shape(1));
+  img.channels = int(a.shape(2));
+  img.pixels.assign(a.data(), a.data() + a.size());
+  writePng(path, img);
+}
+
+py::list presetNames() {
+  py::list names;
+  for (const TransferFunctionPresetInfo& p : transferFunctionPresets()) names.append(p.name);
+  return names;
+}
+
+}  // namespace ewa::python

@@ -1,0 +1,68 @@
+// PythonScene: what `ewaview.Scene` holds: a volume, its transfer function, options, a renderer.
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "app/headless_session.h"
+#include "app/options.h"
+#include "core/transfer_function.h"
+#include "core/volume.h"
+
+namespace ewa::python {
+
+class PythonScene {
+ public:
+  // From a file (any loader ewaview has) or options alone (synthetic=...); `options` are
+  // command-line options in Python form, load options (tf, raw_*, synthetic) included.
+  PythonScene(const std::string& path, const pybind11::dict& options);
+  // From an array indexed [z, y, x] (x varies fastest, as in VTK), with world spacing and
+  // origin; uint8, int16, uint16 and float32 are kept, float64 becomes float32.
+  PythonScene(const pybind11::array& data, const pybind11::object& spacing,
+              const pybind11::object& origin, const pybind11::dict& options);
+
+  // Adds render options (checked now, with the command line's messages).
+  void set(const pybind11::dict& options);
+  pybind11::dict options() const;
+
+  // A preset name (ewaview.presets()) applied over the volume's value range, or the --tf JSON
+  // structure as a dict.
+  void setTransferFunction(const pybind11::object& tf);
+  pybind11::object transferFunction() const;
+
+  // The picture as the command line draws it for these options: uint8 (H, W, 3).
+  pybind11::array_t<uint8_t> render(const pybind11::dict& overrides);
+  // `frames` pictures over 360 degrees about view-up, written as --turntable writes them to
+  // `path` (a .mp4/.webm video at `fps`, a %d pattern or a folder).
+  void turntable(const std::string& path, int frames, int fps, const pybind11::dict& overrides);
+  // The same picture as PNG bytes, for Jupyter.
+  pybind11::bytes png(const pybind11::dict& overrides);
+  pybind11::dict info() const;
+  std::string repr() const;
+
+ private:
+  Options renderOptions(const pybind11::dict& overrides);
+  HeadlessSession& session(const Options& options);
+  Image8 renderImage(const pybind11::dict& overrides);
+
+  std::shared_ptr<Volume> volume_;
+  TransferFunction tf_;
+  std::string name_;
+  pybind11::dict options_;  // render options in Python form, in the order given
+  std::unique_ptr<HeadlessSession> session_;
+  // Renders run without the GIL; this keeps one scene's renders and edits apart.
+  std::mutex mutex_;
+  std::string sessionBackend_, sessionShaders_;
+};
+
+// Names of the transfer-function presets, in menu order.
+pybind11::list presetNames();
+// Writes a uint8 (H, W, 3) or (H, W, 4) array as a PNG, atomically.
+void writePngArray(const std::string& path, const pybind11::array& image);
+
+}  // namespace ewa::python

@@ -1,0 +1,222 @@
+"""The Python module against the command line: the same pictures for the same settings, and the
+same one-line messages, raised as exceptions, for bad input."""
+import json
+
+import numpy as np
+import pytest
+
+import ewaview
+from conftest import read_png
+
+SMALL = dict(resolution=(96, 72))
+
+
+def cli_words(options):
+    """The command-line words for keyword options, written out by hand (not by the module)."""
+    words = []
+    for key, value in options.items():
+        name = "--" + key.replace("_", "-")
+        if value is True:
+            words.append(name)
+        elif isinstance(value, (tuple, list)):
+            words += [name, ",".join(str(v) for v in value)]
+        else:
+            words += [name, str(value)]
+    return words
+
+
+def tooth(shared_data):
+    path = shared_data / "tooth" / "tooth.nrrd"
+    if not path.exists():
+        pytest.skip(f"shared data absent: {path}")
+    return path
+
+
+@pytest.mark.parametrize("options", [
+    dict(),
+    dict(renderer="shearwarp", preintegrated=True),
+    dict(render_mode="mip", camera_position=(200, 120, 300), camera_view_up=(0, 0, 1)),
+    dict(shading=True, filter="swan", background=(0.1, 0.2, 0.3), camera_view_angle=40),
+    dict(render_mode="xray", xray_map="sum", xray_scale=0.02, camera_orthographic=True),
+], ids=["splat", "shearwarp", "mip-camera", "shaded-swan", "xray-ortho"])
+@pytest.mark.filterwarnings("ignore:shear-warp renders parallel projection")
+def test_render_equals_the_command_line_picture(cli, shared_data, options):
+    path = tooth(shared_data)
+    options = dict(SMALL, **options)
+    scene = ewaview.Scene(path)
+    image = scene.render(**options)
+    assert image.dtype == np.uint8 and image.shape == (72, 96, 3)
+    expected = cli.picture("tooth_" + "_".join(options)[:60], path, *cli_words(options))
+    assert np.array_equal(image, expected)
+    assert image.max() > 40  # not an empty picture that would equal any other empty one
+
+
+@pytest.mark.filterwarnings("ignore:shear-warp renders parallel projection")
+def test_kept_options_and_overrides_are_the_command_line_s(cli):
+    scene = ewaview.Scene(synthetic="marschner-lobb:24", **SMALL)
+    scene.set(filter="swan", camera_position=(60, 30, 70))
+    assert scene.options["filter"] == "swan"
+    expected = cli.picture("ml_override", "--synthetic", "marschner-lobb:24", "--resolution",
+                           "96,72", "--filter", "swan", "--camera-position", "60,30,70",
+                           "--shading")
+    assert np.array_equal(scene.render(shading=True), expected)
+    assert np.array_equal(scene.render(shading=np.bool_(True)), expected)
+    # The override was for one render only, and switching renderers back and forth works.
+    assert not np.array_equal(scene.render(), expected)
+    splat = scene.render()
+    assert not np.array_equal(scene.render(renderer="shearwarp"), splat)
+    assert np.array_equal(scene.render(), splat)
+
+
+def test_numpy_array_equals_the_same_voxels_read_as_raw(cli, out_dir):
+    z, y, x = np.mgrid[0:20, 0:24, 0:28].astype(np.float64)
+    # A ball off centre along x, so a transposed axis would move it.
+    ball = np.sqrt((x - 18) ** 2 + ((y - 12) * 1.5) ** 2 + ((z - 10) * 2) ** 2)
+    data = np.clip(4000 - 250 * ball, 0, None).astype(np.uint16)
+    raw = out_dir / "ball.raw"
+    data.tofile(raw)
+    scene = ewaview.Scene(data, spacing=(1, 1.5, 2))
+    assert scene.info["dims"] == [28, 24, 20] and scene.info["spacing"] == [1, 1.5, 2]
+    expected = cli.picture("ball", raw, "--raw-dims", "28,24,20", "--raw-type", "uint16",
+                           "--raw-spacing", "1,1.5,2", "--resolution", "96,72")
+    image = scene.render(**SMALL)
+    assert np.array_equal(image, expected)
+    assert image.max() > 40
+    # float64 arrays become float32 volumes; non-contiguous views are copied in [z, y, x] order.
+    assert ewaview.Scene(data.astype(np.float64)).info["type"] == "float32"
+    flipped = ewaview.Scene(data[:, :, ::-1].copy()).render(**SMALL)
+    assert np.array_equal(ewaview.Scene(data[:, :, ::-1]).render(**SMALL), flipped)
+
+
+def test_transfer_function_dict_equals_the_tf_file(cli, out_dir):
+    tf = {"opacity": [[0, 0], [0.3, 0], [1, 0.6]],
+          "color": [[0, 0.2, 0.4, 1], [1, 1, 0.6, 0.1]], "opacity_unit_distance": 2}
+    path = out_dir / "tf.json"
+    path.write_text(json.dumps(tf))
+    scene = ewaview.Scene(synthetic="sphere:24")
+    scene.transfer_function = tf
+    assert scene.transfer_function["opacity"] == tf["opacity"]
+    expected = cli.picture("sphere_tf", "--synthetic", "sphere:24", "--tf", path,
+                           "--resolution", "96,72")
+    assert np.array_equal(scene.render(**SMALL), expected)
+    # tf= when the scene is made is --tf.
+    assert np.array_equal(ewaview.Scene(synthetic="sphere:24", tf=path).render(**SMALL), expected)
+
+
+def test_presets_change_the_picture():
+    scene = ewaview.Scene(synthetic="marschner-lobb:24", **SMALL)
+    before = scene.render()
+    assert "CT bone" in ewaview.presets()
+    scene.transfer_function = "Viridis (colour map)"
+    after = scene.render()
+    assert not np.array_equal(before, after)
+    with pytest.raises(ValueError, match="no such"):
+        scene.transfer_function = "no such preset"
+
+
+def test_repr_png_is_the_rendered_picture():
+    scene = ewaview.Scene(synthetic="sphere:16", **SMALL)
+    assert np.array_equal(read_png(scene._repr_png_())[:, :, :3], scene.render())
+    assert repr(scene) == "<ewaview.Scene sphere:16 16x16x16 uint8>"
+
+
+def message(run):
+    """The command line's one error line without the program name and usage hint."""
+    line = run.stderr.strip()
+    assert "\n" not in line
+    return line.removeprefix("ewaview: ").removesuffix(" (see --help)")
+
+
+def test_bad_input_raises_the_command_line_s_messages(cli, out_dir):
+    missing = out_dir / "no-such-volume.nrrd"
+    run = cli.run(missing, "--info")
+    assert run.returncode == 1
+    with pytest.raises(RuntimeError) as e:
+        ewaview.Scene(missing)
+    assert str(e.value) == message(run)
+
+    run = cli.run("--synthetic", "sphere:8", "--cutoff", "-1", "--info")
+    assert run.returncode == 2
+    scene = ewaview.Scene(synthetic="sphere:8")
+    with pytest.raises(ValueError) as e:
+        scene.set(cutoff=-1)
+    assert str(e.value) == message(run)
+    with pytest.raises(ValueError) as e:
+        scene.render(render_mode="blurry")
+    assert str(e.value) == message(cli.run("--render-mode", "blurry"))
+    with pytest.raises(ValueError, match="not-an-option"):
+        scene.render(not_an_option=1)
+    assert "cutoff" not in scene.options  # a rejected set() keeps nothing
+
+    with pytest.raises(ValueError, match="output: not an option"):
+        scene.render(output="x.png")
+    with pytest.raises(ValueError, match="tf: give it when the scene is made"):
+        scene.set(tf="x.json")
+    with pytest.raises(ValueError, match="opacity"):
+        scene.transfer_function = {"opacity": [[0, 2.5]]}
+    with pytest.raises(ValueError, match="dtype int64"):
+        ewaview.Scene(np.zeros((2, 2, 2), np.int64))
+    with pytest.raises(ValueError, match="3 dimensions"):
+        ewaview.Scene(np.zeros((2, 2), np.uint8))
+    with pytest.raises(ValueError, match="spacing must be positive"):
+        ewaview.Scene(np.zeros((2, 2, 2), np.uint8), spacing=(1, -1, 1))
+    with pytest.raises(ValueError, match="spacing: needs three numbers"):
+        ewaview.Scene(np.zeros((2, 2, 2), np.uint8), spacing=(1, 1))
+
+
+@pytest.mark.filterwarnings("ignore:shear-warp renders parallel projection")
+def test_turntable_writes_what_the_command_line_writes(cli, out_dir):
+    scene = ewaview.Scene(synthetic="marschner-lobb:24", resolution=(48, 40))
+    scene.turntable(out_dir / "py_turn", frames=3, renderer="shearwarp")
+    run = cli.run("--synthetic", "marschner-lobb:24", "--resolution", "48,40", "--renderer",
+                  "shearwarp", "--turntable", 3, "--output", out_dir / "cli_turn")
+    assert run.returncode == 0, run.stderr
+    for f in range(3):
+        name = f"frame_{f:03d}.png"
+        assert (out_dir / "py_turn" / name).read_bytes() == (out_dir / "cli_turn" / name).read_bytes()
+    scene.turntable(str(out_dir / "py_turn.mp4"), frames=4, fps=10)
+    assert (out_dir / "py_turn.mp4").read_bytes()[4:8] == b"ftyp"  # an MP4 (decoded in C++ tests)
+    with pytest.raises(RuntimeError, match="not a video format"):
+        scene.turntable(str(out_dir / "x.avi"), frames=2)
+
+
+def test_write_png_round_trips(out_dir):
+    image = (np.arange(5 * 7 * 3) % 256).astype(np.uint8).reshape(5, 7, 3)
+    ewaview.write_png(str(out_dir / "array.png"), image)
+    assert np.array_equal(read_png((out_dir / "array.png").read_bytes()), image)
+    with pytest.raises(ValueError, match="uint8 array"):
+        ewaview.write_png(str(out_dir / "bad.png"), np.zeros((4, 4), np.uint8))
+
+
+def test_the_module_imports_with_only_pythonpath_set():
+    import os
+    import subprocess
+    import sys
+    env = {"PATH": "/usr/bin:/bin", "PYTHONPATH": os.path.dirname(ewaview.__file__)}
+    run = subprocess.run([sys.executable, "-c", "import ewaview; print(ewaview.__version__)"],
+                         env=env, capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.strip() == ewaview.__version__
+
+
+def test_shear_warp_perspective_note_is_a_warning():
+    scene = ewaview.Scene(synthetic="sphere:8", resolution=(16, 16), renderer="shearwarp")
+    with pytest.warns(UserWarning, match="parallel projection"):
+        scene.render()
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        scene.render(camera_orthographic=True)  # no note for a parallel camera
+
+
+def test_renders_in_threads_equal_renders_in_turn():
+    from concurrent.futures import ThreadPoolExecutor
+    scenes = [ewaview.Scene(synthetic=s, **SMALL) for s in ("sphere:16", "marschner-lobb:16")]
+    alone = [s.render() for s in scenes] + [scenes[0].render(renderer="shearwarp",
+                                                             camera_orthographic=True)]
+    with ThreadPoolExecutor(3) as pool:
+        together = list(pool.map(lambda job: job(), [
+            scenes[0].render, scenes[1].render,
+            lambda: scenes[0].render(renderer="shearwarp", camera_orthographic=True)]))
+    for a, b in zip(alone, together):
+        assert np.array_equal(a, b)
