@@ -135,7 +135,7 @@ TEST(Turntable, VideosHoldTheFramesAtTheirSizeAndRate) {
   const Image8 single = readPng(dir + "/single.png");
   for (const auto& [name, codec] : {std::pair<std::string, std::string>{"spin.mp4", "h264"},
                                     {"spin.webm", "vp9"}}) {
-    const ToolRun r = ewaview(scene + "--turntable 8 --fps 12 --output " + dir + "/" + name);
+    const CliRun r = ewaview(scene + "--turntable 8 --fps 12 --output " + dir + "/" + name);
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_TRUE(r.err.empty()) << r.err;  // no encoder chatter
     const DecodedVideo video = readVideo(dir + "/" + name);
@@ -172,7 +172,7 @@ TEST(Turntable, BadVideoPathsAreOneLineAndExitOne) {
   std::ofstream(dir + "/file") << "x";
   for (const std::string& out :
        {dir + "/taken.mp4", dir + "/file/spin.mp4", dir + "/spin.avi", std::string("/proc/x.webm")}) {
-    const ToolRun r = ewaview("--synthetic sphere:8 --turntable 2 --output " + out);
+    const CliRun r = ewaview("--synthetic sphere:8 --turntable 2 --output " + out);
     EXPECT_EQ(r.code, 1) << out;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_EQ(r.err.rfind("ewaview: " + out + ": ", 0), 0u) << r.err;
