@@ -1,9 +1,11 @@
-// SplatRenderer::render: the slab partition, the slab loop (front to back with early
-// termination, or back to front), the X-ray and MIP passes and the final picture.
+// SplatRenderer's frame: the slab partition, the slab loop (front to back with early
+// termination, or back to front) drawn in timed chunks, the X-ray and MIP passes, the final
+// picture.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
+#include <limits>
 
 #include "gl/gl_error.h"
 #include "render/splat_renderer.h"
@@ -40,9 +42,8 @@ glm::mat4 clipMatrix(const Projection& proj, const glm::dmat4& view, double near
   return glm::mat4(p * view);
 }
 
-using Clock = std::chrono::steady_clock;
-double millisecondsSince(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+double millisecondsSince(SplatRenderer::Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(SplatRenderer::Clock::now() - t).count();
 }
 
 }  // namespace
@@ -84,11 +85,10 @@ bool SplatRenderer::allOpaque(const Camera& camera, const Projection& proj,
   return samples == 0;
 }
 
-void SplatRenderer::compositeSlabs(const Camera& camera, const Projection& proj,
-                                   const RenderSettings& settings) {
-  const bool frontToBack = settings.order == CompositeOrder::FrontToBack;
-  const bool terminate = frontToBack && settings.terminationOpacity < 1.0;
-  const GLfloat zero[4] = {0, 0, 0, 0};
+void SplatRenderer::setSlabLoopState() {
+  const RenderSettings& settings = frame_.settings;
+  const bool terminate =
+      settings.order == CompositeOrder::FrontToBack && settings.terminationOpacity < 1.0;
   targets_.slab.bindUnit(1);
   slabProgram_.setInt("uSlab", 1);
   targets_.accum.bindUnit(2);
@@ -99,45 +99,163 @@ void SplatRenderer::compositeSlabs(const Camera& camera, const Projection& proj,
     glStencilFunc(GL_EQUAL, 0, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   }
+}
+
+void SplatRenderer::drawCompositeSlab(size_t s) {
+  const Camera& camera = frame_.camera;
+  const Projection& proj = frame_.proj;
+  const RenderSettings& settings = frame_.settings;
+  const bool frontToBack = settings.order == CompositeOrder::FrontToBack;
+  const bool terminate = frontToBack && settings.terminationOpacity < 1.0;
+  const GLfloat zero[4] = {0, 0, 0, 0};
   const auto& slabs = partition_.slabs();
   const size_t n = slabs.size();
-  for (size_t s = 0; s < n; ++s) {
-    const Slab& slab = slabs[frontToBack ? s : n - 1 - s];
-    // Inside a slab: order-independent sums of each kernel's share of optical depth and light.
+  const Slab& slab = slabs[frontToBack ? s : n - 1 - s];
+  // Inside a slab: order-independent sums of each kernel's share of optical depth and light.
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+  targets_.slabFbo.clearColor(0, zero);
+  glBlendFunc(GL_ONE, GL_ONE);
+  setSlabUniforms(slab, true, true);
+  drawSplats(slab, stats_.quadPass);
+  // Between slabs: 1 - exp(-depth) composited under (front to back) or over (back to front).
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.accumFbo.id());
+  if (frontToBack)
+    glBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+  else
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glUseProgram(slabProgram_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  ++stats_.slabsDrawn;
+  if (terminate && (s + 1) % kCheckEvery == 0 && s + 1 < n) {
+    // Mark pixels that reached the threshold; later splat fragments there fail the stencil.
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
-    targets_.slabFbo.clearColor(0, zero);
-    glBlendFunc(GL_ONE, GL_ONE);
-    setSlabUniforms(slab, true, true);
-    drawSplats(slab, stats_.quadPass);
-    // Between slabs: 1 - exp(-depth) composited under (front to back) or over (back to front).
-    glBindFramebuffer(GL_FRAMEBUFFER, targets_.accumFbo.id());
-    if (frontToBack)
-      glBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_ONE);
-    else
-      glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    glUseProgram(slabProgram_.id());
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glStencilFunc(GL_ALWAYS, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glUseProgram(markProgram_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    ++stats_.slabsDrawn;
-    if (terminate && (s + 1) % kCheckEvery == 0 && s + 1 < n) {
-      // Mark pixels that reached the threshold; later splat fragments there fail the stencil.
-      glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
-      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      glStencilFunc(GL_ALWAYS, 1, 0xff);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-      glUseProgram(markProgram_.id());
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-      glStencilFunc(GL_EQUAL, 0, 0xff);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-      if (allOpaque(camera, proj, settings)) break;
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glStencilFunc(GL_EQUAL, 0, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    if (allOpaque(camera, proj, settings)) frame_.terminated = true;
+  }
+}
+
+double SplatRenderer::slabWeight(size_t s) const {
+  // A slab costs its splats plus passes over the whole image (clear, blend under the image):
+  // the mean entry count stands for the latter.
+  const auto& slabs = partition_.slabs();
+  const bool frontToBack = frame_.settings.order == CompositeOrder::FrontToBack;
+  return double(slabs[frontToBack ? s : slabs.size() - 1 - s].count) + frame_.meanEntries;
+}
+
+bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
+  const size_t n = partition_.slabs().size();
+  const bool unlimited = !std::isfinite(budgetMs);
+  setSlabLoopState();
+  while (frame_.nextSlab < n && !frame_.terminated) {
+    // A chunk: as many slabs as the measured cost per unit of weight says fit the time left
+    // (one when nothing is measured yet; all of them without a budget).
+    const double left = budgetMs - millisecondsSince(start);
+    size_t end = frame_.nextSlab + 1;
+    double weight = slabWeight(frame_.nextSlab);
+    while (end < n &&
+           (unlimited || (msPerWeight_ > 0.0 && msPerWeight_ * (weight + slabWeight(end)) <= left)))
+      weight += slabWeight(end++);
+    const auto chunkStart = Clock::now();
+    double drawn = 0.0;
+    while (frame_.nextSlab < end && !frame_.terminated) {
+      drawn += slabWeight(frame_.nextSlab);
+      drawCompositeSlab(frame_.nextSlab++);
     }
+    frame_.drawnWeight += drawn;
+    if (unlimited) continue;
+    // llvmpipe does the GL work by glFinish: the chunk's time is only known after it.
+    glFinish();
+    const double measured = millisecondsSince(chunkStart) / std::max(drawn, 1.0);
+    // Up at once, down slowly: an overestimate costs a little speed, an underestimate a
+    // stalled window.
+    msPerWeight_ =
+        msPerWeight_ > 0.0 && measured < msPerWeight_ ? 0.5 * (msPerWeight_ + measured) : measured;
+    if (frame_.nextSlab < n && !frame_.terminated &&
+        millisecondsSince(start) + msPerWeight_ * slabWeight(frame_.nextSlab) > budgetMs)
+      break;
   }
   glDisable(GL_STENCIL_TEST);
+  return frame_.nextSlab >= n || frame_.terminated;
+}
+
+bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point start) {
+  // X-ray and MIP: one pass over every splat with order-independent blending (sum or max),
+  // so the splat list may be drawn in ranges, as many entries per step as the budget allows.
+  const RenderSettings& settings = frame_.settings;
+  const bool unlimited = !std::isfinite(budgetMs);
+  Slab all = partition_.slabs().front();
+  const bool window = depthWindow_ && settings.mode == RenderMode::XRay;
+  if (window) {
+    all.nearDepth = depthWindow_->first;
+    all.farDepth = depthWindow_->second;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+  glBlendFunc(GL_ONE, GL_ONE);
+  if (settings.mode == RenderMode::Mip) glBlendEquation(GL_MAX);
+  // Entries drawn before anything is measured, and the fewest a step draws (cheap anywhere).
+  constexpr size_t kFirstChunk = 4096, kMinChunk = 1024;
+  while (frame_.nextEntry < all.count) {
+    size_t count = all.count - frame_.nextEntry;
+    if (!unlimited) {
+      const double left = budgetMs - millisecondsSince(start);
+      const double fit = msPerWeight_ > 0.0 ? left / msPerWeight_ : double(kFirstChunk);
+      count = size_t(std::clamp(fit, double(std::min(kMinChunk, count)), double(count)));
+    }
+    Slab range = all;
+    range.first = all.first + uint32_t(frame_.nextEntry);
+    range.count = count;
+    const auto chunkStart = Clock::now();
+    setSlabUniforms(range, window, false);
+    drawSplats(range, stats_.quadPass);
+    frame_.nextEntry += count;
+    frame_.drawnWeight += double(count);
+    if (unlimited) continue;
+    glFinish();
+    const double measured = millisecondsSince(chunkStart) / double(count);
+    msPerWeight_ =
+        msPerWeight_ > 0.0 && measured < msPerWeight_ ? 0.5 * (msPerWeight_ + measured) : measured;
+    if (millisecondsSince(start) + msPerWeight_ * double(kMinChunk) > budgetMs) break;
+  }
+  glBlendEquation(GL_FUNC_ADD);
+  stats_.slabsDrawn = 1;
+  return frame_.nextEntry >= all.count;
+}
+
+void SplatRenderer::bindFrameState() {
+  splatBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  orderBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  attributeBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  transferTexture_.bindUnit(0);
+  glBindVertexArray(emptyVao_.id());
+  glViewport(0, 0, frame_.width, frame_.height);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_CULL_FACE);
+  glBlendEquation(GL_FUNC_ADD);
 }
 
 void SplatRenderer::render(const Camera& camera, const RenderSettings& settings, int width,
                            int height) {
+  beginFrame(camera, settings, width, height);
+  stepFrame(std::numeric_limits<double>::infinity());
+}
+
+void SplatRenderer::beginFrame(const Camera& camera, const RenderSettings& settings, int width,
+                               int height) {
   const auto start = Clock::now();
+  frame_ = FrameState{};
+  frame_.camera = camera;
+  frame_.settings = settings;
+  frame_.width = width;
+  frame_.height = height;
   targets_.resize(width, height);
   stats_ = RenderStats{};
   const GLfloat zero[4] = {0, 0, 0, 0};
@@ -151,6 +269,7 @@ void SplatRenderer::render(const Camera& camera, const RenderSettings& settings,
   }
   auto stageStart = Clock::now();
   const Projection proj = camera.projection(width, height);
+  frame_.proj = proj;
   const SplatSet& splats = classified_.splats;
   if (volume_ && splats.size() > 0 && camera.valid()) {
     const glm::dvec3& sp = volume_->spacing();
@@ -182,46 +301,57 @@ void SplatRenderer::render(const Camera& camera, const RenderSettings& settings,
       stats_.quadPass = 2.0 * footprintRadiusBound(proj, settings, nearest) + 0.5 > pointSizeLimit_;
       setCommonUniforms(pointProgram_, camera, proj, settings);
       setCommonUniforms(quadProgram_, camera, proj, settings);
-      splatBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-      orderBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-      attributeBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
-      transferTexture_.bindUnit(0);
-      glBindVertexArray(emptyVao_.id());
-      glViewport(0, 0, width, height);
-      glEnable(GL_PROGRAM_POINT_SIZE);
-      glDisable(GL_DEPTH_TEST);
+      frame_.drawSplats = true;
+      const size_t slabCount = partition_.slabs().size();
+      frame_.meanEntries = double(order.size()) / double(std::max<size_t>(1, slabCount));
+      frame_.totalWeight = composite ? double(order.size()) + frame_.meanEntries * double(slabCount)
+                                     : double(partition_.slabs().front().count);
       stats_.sortMs = millisecondsSince(stageStart);  // bucketing and the order upload
-      stageStart = Clock::now();
-      glEnable(GL_BLEND);
-      if (composite) {
-        compositeSlabs(camera, proj, settings);
-      } else {
-        glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
-        glBlendFunc(GL_ONE, GL_ONE);
-        if (settings.mode == RenderMode::Mip) glBlendEquation(GL_MAX);
-        Slab all = partition_.slabs().front();
-        const bool window = depthWindow_ && settings.mode == RenderMode::XRay;
-        if (window) {
-          all.nearDepth = depthWindow_->first;
-          all.farDepth = depthWindow_->second;
-        }
-        setSlabUniforms(all, window, false);
-        drawSplats(all, stats_.quadPass);
-        glBlendEquation(GL_FUNC_ADD);
-        stats_.slabsDrawn = 1;
-      }
-      glDisable(GL_BLEND);
-      // The slab loop's GPU work (splats and the blends between slabs) ends here; waiting for
-      // it costs little, since the final pass below waits anyway.
-      glFinish();
-      stats_.splatMs = millisecondsSince(stageStart);
     }
   }
-  stageStart = Clock::now();
+  frame_.active = true;
+  stats_.cpuMs = millisecondsSince(start);
+}
+
+bool SplatRenderer::stepFrame(double budgetMs) {
+  if (!frame_.active) return true;
+  const auto start = Clock::now();
+  if (frame_.drawSplats) {
+    bindFrameState();
+    glEnable(GL_BLEND);
+    const bool done = frame_.settings.mode == RenderMode::Composite
+                          ? drawSlabChunks(budgetMs, start)
+                          : drawWholeVolumeChunks(budgetMs, start);
+    glDisable(GL_BLEND);
+    if (!done) {
+      stats_.splatMs += millisecondsSince(start);
+      stats_.cpuMs += millisecondsSince(start);
+      return false;
+    }
+    // The slab loop's GPU work (splats and the blends between slabs) ends here; waiting for
+    // it costs little, since the final pass below waits anyway.
+    glFinish();
+    stats_.splatMs += millisecondsSince(start);
+  }
+  drawFinalPass();
+  frame_.active = false;
+  stats_.cpuMs += millisecondsSince(start);
+  return true;
+}
+
+double SplatRenderer::frameProgress() const {
+  if (!frame_.active) return 1.0;
+  return frame_.totalWeight > 0.0 ? std::min(1.0, frame_.drawnWeight / frame_.totalWeight) : 0.0;
+}
+
+void SplatRenderer::drawFinalPass() {
+  const RenderSettings& settings = frame_.settings;
+  const auto stageStart = Clock::now();
   glBindVertexArray(emptyVao_.id());
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.outputFbo.id());
-  glViewport(0, 0, width, height);
+  glViewport(0, 0, frame_.width, frame_.height);
   glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
   targets_.slab.bindUnit(1);
   targets_.accum.bindUnit(2);
   finalProgram_.setInt("uSlab", 1);
@@ -237,7 +367,6 @@ void SplatRenderer::render(const Camera& camera, const RenderSettings& settings,
   glFinish();
   gl::checkGlError("SplatRenderer::render");
   stats_.compositeMs = millisecondsSince(stageStart);
-  stats_.cpuMs = millisecondsSince(start);
 }
 
 }  // namespace ewa
