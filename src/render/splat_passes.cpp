@@ -101,22 +101,34 @@ void SplatRenderer::setSlabLoopState() {
   }
 }
 
-void SplatRenderer::drawCompositeSlab(size_t s) {
-  const Camera& camera = frame_.camera;
-  const Projection& proj = frame_.proj;
+const Slab& SplatRenderer::slabInOrder(size_t s) const {
+  const auto& slabs = partition_.slabs();
+  const bool frontToBack = frame_.settings.order == CompositeOrder::FrontToBack;
+  return slabs[frontToBack ? s : slabs.size() - 1 - s];
+}
+
+void SplatRenderer::beginCompositeSlab() {
+  const GLfloat zero[4] = {0, 0, 0, 0};
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+  targets_.slabFbo.clearColor(0, zero);
+}
+
+void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
+  Slab range = slabInOrder(s);
+  range.first += uint32_t(first);
+  range.count = count;
+  // Inside a slab: order-independent sums of each kernel's share of optical depth and light.
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+  glBlendFunc(GL_ONE, GL_ONE);
+  setSlabUniforms(range, true, true);
+  drawSplats(range, stats_.quadPass);
+}
+
+void SplatRenderer::endCompositeSlab(size_t s) {
   const RenderSettings& settings = frame_.settings;
   const bool frontToBack = settings.order == CompositeOrder::FrontToBack;
   const bool terminate = frontToBack && settings.terminationOpacity < 1.0;
-  const GLfloat zero[4] = {0, 0, 0, 0};
-  const auto& slabs = partition_.slabs();
-  const size_t n = slabs.size();
-  const Slab& slab = slabs[frontToBack ? s : n - 1 - s];
-  // Inside a slab: order-independent sums of each kernel's share of optical depth and light.
-  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
-  targets_.slabFbo.clearColor(0, zero);
-  glBlendFunc(GL_ONE, GL_ONE);
-  setSlabUniforms(slab, true, true);
-  drawSplats(slab, stats_.quadPass);
+  const size_t n = partition_.slabs().size();
   // Between slabs: 1 - exp(-depth) composited under (front to back) or over (back to front).
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.accumFbo.id());
   if (frontToBack)
@@ -137,36 +149,55 @@ void SplatRenderer::drawCompositeSlab(size_t s) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glStencilFunc(GL_EQUAL, 0, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    if (allOpaque(camera, proj, settings)) frame_.terminated = true;
+    if (allOpaque(frame_.camera, frame_.proj, settings)) frame_.terminated = true;
   }
 }
 
-double SplatRenderer::slabWeight(size_t s) const {
-  // A slab costs its splats plus passes over the whole image (clear, blend under the image):
-  // the mean entry count stands for the latter.
-  const auto& slabs = partition_.slabs();
-  const bool frontToBack = frame_.settings.order == CompositeOrder::FrontToBack;
-  return double(slabs[frontToBack ? s : slabs.size() - 1 - s].count) + frame_.meanEntries;
+void SplatRenderer::drawCompositeSlab(size_t s) {
+  beginCompositeSlab();
+  drawSlabRange(s, 0, slabInOrder(s).count);
+  endCompositeSlab(s);
 }
 
 bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
+  // Weights: a slab costs its entries plus passes over the whole image (clear, blend under the
+  // image), for which the mean entry count stands. A chunk holds whole slabs while they fit;
+  // a slab too costly for the time left is drawn in ranges of entries over several steps (its
+  // sums are order-independent, so the picture is the same).
+  constexpr double kFirstChunk = 2048.0;  // weight drawn before anything is measured
+  constexpr double kMinRange = 512.0;     // the fewest entries a range holds
   const size_t n = partition_.slabs().size();
   const bool unlimited = !std::isfinite(budgetMs);
+  const auto finished = [&] { return frame_.nextSlab >= n || frame_.terminated; };
   setSlabLoopState();
-  while (frame_.nextSlab < n && !frame_.terminated) {
-    // A chunk: as many slabs as the measured cost per unit of weight says fit the time left
-    // (one when nothing is measured yet; all of them without a budget).
-    const double left = budgetMs - millisecondsSince(start);
-    size_t end = frame_.nextSlab + 1;
-    double weight = slabWeight(frame_.nextSlab);
-    while (end < n &&
-           (unlimited || (msPerWeight_ > 0.0 && msPerWeight_ * (weight + slabWeight(end)) <= left)))
-      weight += slabWeight(end++);
+  while (!finished()) {
+    const double allowed = unlimited ? budgetMs
+                           : msPerWeight_ > 0.0
+                               ? (budgetMs - millisecondsSince(start)) / msPerWeight_
+                               : kFirstChunk;
     const auto chunkStart = Clock::now();
     double drawn = 0.0;
-    while (frame_.nextSlab < end && !frame_.terminated) {
-      drawn += slabWeight(frame_.nextSlab);
-      drawCompositeSlab(frame_.nextSlab++);
+    while (!finished() && (drawn == 0.0 || drawn < allowed)) {
+      const size_t s = frame_.nextSlab;
+      const size_t count = slabInOrder(s).count;
+      if (frame_.nextEntry == 0 && drawn + double(count) + frame_.meanEntries <= allowed) {
+        drawCompositeSlab(s);
+        drawn += double(count) + frame_.meanEntries;
+        ++frame_.nextSlab;
+        continue;
+      }
+      if (frame_.nextEntry == 0) beginCompositeSlab();
+      const size_t take =
+          std::min(count - frame_.nextEntry, size_t(std::max(allowed - drawn, kMinRange)));
+      drawSlabRange(s, frame_.nextEntry, take);
+      frame_.nextEntry += take;
+      drawn += double(take);
+      if (frame_.nextEntry == count) {
+        endCompositeSlab(s);
+        drawn += frame_.meanEntries;
+        frame_.nextEntry = 0;
+        ++frame_.nextSlab;
+      }
     }
     frame_.drawnWeight += drawn;
     if (unlimited) continue;
@@ -177,12 +208,10 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
     // stalled window.
     msPerWeight_ =
         msPerWeight_ > 0.0 && measured < msPerWeight_ ? 0.5 * (msPerWeight_ + measured) : measured;
-    if (frame_.nextSlab < n && !frame_.terminated &&
-        millisecondsSince(start) + msPerWeight_ * slabWeight(frame_.nextSlab) > budgetMs)
-      break;
+    if (millisecondsSince(start) + msPerWeight_ * kMinRange > budgetMs) break;
   }
   glDisable(GL_STENCIL_TEST);
-  return frame_.nextSlab >= n || frame_.terminated;
+  return finished();
 }
 
 bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point start) {

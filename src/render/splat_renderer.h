@@ -82,10 +82,14 @@ class SplatRenderer : public Renderer {
   // GL state every step needs again (a window draws other things between steps).
   void bindFrameState();
   void setSlabLoopState();
-  // One slab of the front-to-back or back-to-front loop (index in drawing order): its splats,
-  // the blend under (over) the image and, every few slabs, the early-termination check.
+  // One slab of the front-to-back or back-to-front loop (index in drawing order): its splats
+  // (drawSlabRange: entries [first, first + count) of them, into the cleared slab buffer), the
+  // blend under (over) the image and, every few slabs, the early-termination check.
   void drawCompositeSlab(size_t slabIndex);
-  double slabWeight(size_t slabIndex) const;
+  void beginCompositeSlab();
+  void drawSlabRange(size_t slabIndex, size_t first, size_t count);
+  void endCompositeSlab(size_t slabIndex);
+  const Slab& slabInOrder(size_t slabIndex) const;
   // Return true once the frame's splats are all drawn (or early termination ended it).
   bool drawSlabChunks(double budgetMs, Clock::time_point start);
   bool drawWholeVolumeChunks(double budgetMs, Clock::time_point start);
