@@ -117,7 +117,8 @@ bool ViewerWindow::busy() const {
 
 // A coarse image is shown and the quiet time before full quality has passed.
 bool ViewerWindow::refineDue() const {
-  return hasImage_ && !refineFailed_ && lod_.lastLevel() != 0 &&
+  // A full splat set being built on the worker refines once it is there.
+  return hasImage_ && !refineFailed_ && lod_.lastLevel() != 0 && !liveTf_.building() &&
          policy_.shouldRefine(millisecondsSince(lastChange_));
 }
 
@@ -182,7 +183,10 @@ bool ViewerWindow::refine(const glm::ivec2& fb) {
       renderFailed(e, fb);
       return true;
     }
-    if (printLayout_) std::printf("refine start\n");
+    if (printLayout_) {
+      std::printf("refine start\n");
+      std::fflush(stdout);
+    }
     return false;
   }
   bool done = false;
@@ -206,7 +210,10 @@ bool ViewerWindow::refine(const glm::ivec2& fb) {
   if (hasNvx_) frameStats_.gpuMemory = gl::queryGpuMemory();
   if (calibrate_ && levelOfDetail_) policy_.startFromFullQuality(report.workMs);
   calibrate_ = false;
-  if (printLayout_) std::printf("refine done\n");
+  if (printLayout_) {
+    std::printf("refine done\n");
+    std::fflush(stdout);
+  }
   return true;
 }
 
@@ -254,10 +261,13 @@ bool ViewerWindow::drawFrame() {
     // levels of detail: full quality, whole).
     const int level = levelOfDetail_ ? LodPolicy::kLevelCount - 1 : 0;
     TerminalProgress note("ewaview: building splats for " + current_.name + ",");
+    if (levelOfDetail_) {
+      liveTf_.buildFullLevel(lod_, settings_.classification);
+      // The coarse levels classify now (it draws tiny images: before the picture shown).
+      lod_.warmUp(controller_.camera(), settings_);
+    }
     const double ms = renderLevel(level, controller_.camera(), fb);
     if (levelOfDetail_) {
-      // The coarse levels classify now, while the user looks at the first picture.
-      lod_.warmUp(controller_.camera(), settings_);
       calibrate_ = true;
       lastChange_ = Clock::now() - std::chrono::seconds(10);  // refine at once
     } else {
