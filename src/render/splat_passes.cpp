@@ -187,8 +187,8 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
         continue;
       }
       if (frame_.nextEntry == 0) beginCompositeSlab();
-      const size_t take =
-          std::min(count - frame_.nextEntry, size_t(std::max(allowed - drawn, kMinRange)));
+      const double left = double(count - frame_.nextEntry);
+      const size_t take = size_t(std::clamp(allowed - drawn, std::min(kMinRange, left), left));
       drawSlabRange(s, frame_.nextEntry, take);
       frame_.nextEntry += take;
       drawn += double(take);

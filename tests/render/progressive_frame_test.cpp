@@ -136,6 +136,32 @@ INSTANTIATE_TEST_SUITE_P(Modes, ProgressiveModes,
                          ::testing::Values("front-to-back", "back-to-front", "terminate", "xray",
                                            "mip", "shading"));
 
+// A budget that never runs out draws the whole frame in the first step, also when the step
+// before was cut short inside a slab (a fresh renderer's first, unmeasured chunk).
+TEST_F(ProgressiveFrame, AmpleBudgetFinishesInOneStep) {
+  const SyntheticVolume s = makeSyntheticVolume("marschner-lobb:32");
+  const gl::ShaderLibrary shaders;
+  SplatRenderer r(shaders);
+  r.setVolume(s.volume);
+  r.setTransferFunction(*s.transferFunction);
+  RenderSettings settings;
+  settings.slabThickness = 6.0;  // slabs of more entries than a first chunk holds
+  Camera cam;
+  cam.frame(s.volume.boundsMin(), s.volume.boundsMax(), {0.2, 0.3, 1.0}, {0, 1, 0}, 1.0);
+  r.render(cam, settings, 64, 64);
+  const Image8 whole = r.readImage();
+  ASSERT_GT(r.stats().slabEntries / r.stats().slabsDrawn, 2048u);
+  r.beginFrame(cam, settings, 64, 64);
+  EXPECT_FALSE(r.stepFrame(kTinyBudgetMs));  // inside the first slab
+  EXPECT_TRUE(r.stepFrame(1e30));
+  EXPECT_LE(maxDifference(r.readImage(), whole), 1);
+  for (double budget : {1e30, 1e6}) {
+    r.beginFrame(cam, settings, 64, 64);
+    EXPECT_TRUE(r.stepFrame(budget)) << budget;
+    EXPECT_LE(maxDifference(r.readImage(), whole), 1) << budget;
+  }
+}
+
 // A new beginFrame abandons the frame under way: the next one starts clean.
 TEST_F(ProgressiveFrame, AbandonedFrameLeavesNoTrace) {
   const SyntheticVolume s = makeSyntheticVolume("sphere:24");
