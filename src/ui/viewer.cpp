@@ -30,7 +30,7 @@ constexpr double kBuildPollSeconds = 0.02;
 // to stay under meanwhile (the bound is 100 ms; llvmpipe's swap and panel take
 // 10-30 ms of it).
 constexpr double kRefineBudgetMs = 30.0;
-constexpr double kRefineFrameTargetMs = 60.0;
+constexpr double kRefineFrameTargetMs = 50.0;
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
