@@ -26,7 +26,7 @@ void ProgressiveRefinement::start(LodRenderer& lod, const Camera& camera,
   current_ = RefinementReport{};
   const Clock::time_point begin = Clock::now();
   lod.beginFull(camera, settings, size.x, size.y);
-  current_.workMs = millisecondsSince(begin);
+  current_.workMs = lastStepMs_ = millisecondsSince(begin);
   active_ = true;
   finishedThisFrame_ = false;
 }

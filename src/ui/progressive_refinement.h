@@ -38,6 +38,8 @@ class ProgressiveRefinement {
   // The share drawn of the frame under way (0..1).
   double progress(const LodRenderer& lod) const { return active_ ? lod.fullProgress() : 1.0; }
   double budgetMs() const { return budgetMs_; }
+  // How long the last start or step took (the rest of its UI frame is events, panel, swap).
+  double lastStepMs() const { return lastStepMs_; }
   // The last finished refinement; frames == 0 before the first.
   const RefinementReport& last() const { return last_; }
 

@@ -222,8 +222,9 @@ void ViewerWindow::logFrame(double ms) {
   frameStats_.refinement = refinement_.last();
   if (!frameLog_) return;
   if (refinement_.active())
-    std::fprintf(stderr, "ewaview: frame %.1f ms, refining %.0f%% (budget %.0f ms)\n", ms,
-                 100.0 * refinement_.progress(lod_), refinement_.budgetMs());
+    std::fprintf(
+        stderr, "ewaview: frame %.1f ms, refining %.0f%% (step %.1f ms, next budget %.0f ms)\n", ms,
+        100.0 * refinement_.progress(lod_), refinement_.lastStepMs(), refinement_.budgetMs());
   else
     std::fprintf(stderr, "ewaview: frame %.1f ms, level %d\n", ms, lod_.lastLevel());
   if (refinement_.last().index != loggedRefinement_ && !refinement_.active()) {
