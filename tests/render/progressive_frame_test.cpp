@@ -11,6 +11,7 @@
 #include "io/png_io.h"
 #include "render/lod_renderer.h"
 #include "render_fixture.h"
+#include "ui/progressive_refinement.h"
 
 namespace ewa::test {
 namespace {
@@ -213,6 +214,59 @@ TEST_F(ProgressiveFrame, LodRendererKeepsCoarseLevelUntilFullFrameIsDone) {
   EXPECT_EQ(lod.lastLevel(), 0);
   EXPECT_EQ(lod.imageWidth(), 64);
   EXPECT_NE(lod.outputTexture(), coarseTexture);
+  EXPECT_LE(maxDifference(lod.last().readImage(), full), 1);
+}
+
+// The window's scheduler: the budget is what the UI frame target leaves beside the rest of the
+// frame, between 4 ms and the most it was given; a finished refinement reports its steps.
+TEST_F(ProgressiveFrame, RefinementBudgetAdaptsAndReportsItsFrames) {
+  const SyntheticVolume s = makeSyntheticVolume("marschner-lobb:32");
+  const gl::ShaderLibrary shaders;
+  LodRenderer lod([&shaders] { return std::make_unique<SplatRenderer>(shaders); });
+  lod.setVolume(s.volume, buildLodVolumes(s.volume));
+  lod.setTransferFunction(*s.transferFunction);
+  Camera cam;
+  cam.frame(s.volume.boundsMin(), s.volume.boundsMax(), {0.3, 0.4, 1.0}, {0, 1, 0}, 1.0);
+  RenderSettings settings;
+  settings.slabThickness = 1.0;
+  lod.render(0, cam, settings, 64, 64);
+  const Image8 full = lod.last().readImage();
+  lod.render(4, cam, settings, 64, 64);
+
+  ProgressiveRefinement budgeted(30.0, 50.0);
+  budgeted.start(lod, cam, settings, {64, 64});
+  EXPECT_TRUE(budgeted.active());
+  budgeted.reportFrame(budgeted.lastStepMs() + 35.0);  // 35 ms besides the step: 15 left
+  EXPECT_NEAR(budgeted.budgetMs(), 15.0, 1e-9);
+  budgeted.reportFrame(budgeted.lastStepMs() + 100.0);  // over the target: the least
+  EXPECT_NEAR(budgeted.budgetMs(), 4.0, 1e-9);
+  budgeted.reportFrame(budgeted.lastStepMs() + 1.0);  // never above the most it was given
+  EXPECT_NEAR(budgeted.budgetMs(), 30.0, 1e-9);
+  budgeted.cancel();
+  EXPECT_FALSE(budgeted.active());
+  EXPECT_FALSE(budgeted.step(lod));
+
+  // A budget no step can meet: many UI frames, each reported.
+  ProgressiveRefinement tiny(kTinyBudgetMs, 50.0);
+  tiny.start(lod, cam, settings, {64, 64});
+  int frames = 0;
+  bool done = false;
+  while (!done && frames < 100000) {
+    done = tiny.step(lod);
+    ++frames;
+    tiny.reportFrame(tiny.lastStepMs() + 1.0);
+    if (!done) {
+      EXPECT_EQ(lod.lastLevel(), 4);
+      EXPECT_LT(tiny.progress(lod), 1.0);
+    }
+  }
+  EXPECT_GT(frames, 10);
+  EXPECT_FALSE(tiny.active());
+  EXPECT_EQ(tiny.last().frames, frames);
+  EXPECT_EQ(tiny.last().index, 1);
+  EXPECT_GE(tiny.last().wallMs, tiny.last().workMs * 0.99);
+  EXPECT_GT(tiny.last().worstFrameMs, 0.0);
+  EXPECT_EQ(lod.lastLevel(), 0);
   EXPECT_LE(maxDifference(lod.last().readImage(), full), 1);
 }
 
