@@ -1,4 +1,5 @@
 // ViewerWindow's volumes: opening files on a worker thread, adopting a loaded volume, the
+// renderers of the chosen kind and the full level's splat sets built elsewhere.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -9,7 +10,6 @@
 
 namespace ewa {
 
-// renderers of the chosen kind and the full level's splat sets built elsewhere.
 void ViewerWindow::info(const std::string& text) {
   messages_.post(StatusMessages::Kind::Info, text, now());
   std::cerr << "ewaview: " << text << "\n";
