@@ -166,6 +166,7 @@ double ViewerWindow::renderLevel(int level, const Camera& camera, const glm::ive
   frameStats_.imageWidth = lod_.imageWidth();
   frameStats_.imageHeight = lod_.imageHeight();
   frameStats_.lodLevel = level;
+  frameStats_.refinement = RefinementReport{};  // drawn whole, not refined
   frameStats_.gpuBytes = lod_.gpuBytes();
   if (hasNvx_) frameStats_.gpuMemory = gl::queryGpuMemory();
   return ms;
@@ -219,7 +220,13 @@ bool ViewerWindow::refine(const glm::ivec2& fb) {
 
 void ViewerWindow::logFrame(double ms) {
   frameStats_.refineProgress = refinement_.active() ? refinement_.progress(lod_) : -1.0;
-  frameStats_.refinement = refinement_.last();
+  // A refinement finished with this frame: its report (worst frame included) goes to the panel.
+  const RefinementReport& r = refinement_.last();
+  const bool finished = r.index != reportedRefinement_ && !refinement_.active();
+  if (finished) {
+    reportedRefinement_ = r.index;
+    frameStats_.refinement = r;
+  }
   if (!frameLog_) return;
   if (refinement_.active())
     std::fprintf(
@@ -227,14 +234,11 @@ void ViewerWindow::logFrame(double ms) {
         100.0 * refinement_.progress(lod_), refinement_.lastStepMs(), refinement_.budgetMs());
   else
     std::fprintf(stderr, "ewaview: frame %.1f ms, level %d\n", ms, lod_.lastLevel());
-  if (refinement_.last().index != loggedRefinement_ && !refinement_.active()) {
-    const RefinementReport& r = refinement_.last();
-    loggedRefinement_ = r.index;
+  if (finished)
     std::fprintf(stderr,
                  "ewaview: full quality in %.0f ms over %d frames (renderer %.0f ms), worst "
                  "frame %.1f ms\n",
                  r.wallMs, r.frames, r.workMs, r.worstFrameMs);
-  }
 }
 
 bool ViewerWindow::drawFrame() {

@@ -123,9 +123,9 @@ class ViewerWindow {
   bool printLayout_ = false;  // EWAVIEW_PRINT_LAYOUT=1: layout and frame lines on stdout
   bool frameLog_ = false;     // EWAVIEW_FRAME_LOG=1: every frame's time on stderr
   bool fullSplatsArrived_ = false;
-  bool calibrate_ = false;     // the next full frame picks the first moving level
-  bool refineFailed_ = false;  // retried after the next change, not every frame
-  int loggedRefinement_ = 0;   // RefinementReport::index last written to the frame log
+  bool calibrate_ = false;      // the next full frame picks the first moving level
+  bool refineFailed_ = false;   // retried after the next change, not every frame
+  int reportedRefinement_ = 0;  // RefinementReport::index last shown and logged
   uint64_t renderedTf_ = 0;
   bool hasNvx_ = false;
   bool buildPending_ = false;
