@@ -353,6 +353,9 @@ bool SplatRenderer::stepFrame(double budgetMs) {
                           : drawWholeVolumeChunks(budgetMs, start);
     glDisable(GL_BLEND);
     if (!done) {
+      // The window draws between steps: leave it the default framebuffer, as render() does.
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      glUseProgram(0);
       stats_.splatMs += millisecondsSince(start);
       stats_.cpuMs += millisecondsSince(start);
       return false;
