@@ -160,58 +160,82 @@ void SplatRenderer::drawCompositeSlab(size_t s) {
 }
 
 bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
-  // Weights: a slab costs its entries plus passes over the whole image (clear, blend under the
-  // image), for which the mean entry count stands. A chunk holds whole slabs while they fit;
-  // a slab too costly for the time left is drawn in ranges of entries over several steps (its
-  // sums are order-independent, so the picture is the same).
-  constexpr double kFirstChunk = 2048.0;  // weight drawn before anything is measured
-  constexpr double kMinRange = 512.0;     // the fewest entries a range holds
+  // Cost model, measured per chunk: msPerEntry_ per splat entry drawn and msPerSlabEnd_ per
+  // slab finished (clear, blend under the image, termination check: passes over the whole
+  // image). A chunk holds whole slabs while they fit; a slab too costly for the time left is
+  // drawn in ranges of entries over several steps (its sums are order-independent, so the
+  // picture is the same).
+  constexpr size_t kFirstChunk = 2048;  // entries drawn before anything is measured
+  constexpr size_t kMinRange = 512;     // the fewest entries a range holds
   const size_t n = partition_.slabs().size();
   const bool unlimited = !std::isfinite(budgetMs);
   const auto finished = [&] { return frame_.nextSlab >= n || frame_.terminated; };
   setSlabLoopState();
   while (!finished()) {
-    const double allowed = unlimited ? budgetMs
-                           : msPerWeight_ > 0.0
-                               ? (budgetMs - millisecondsSince(start)) / msPerWeight_
-                               : kFirstChunk;
+    // Milliseconds this chunk may take, and what it is expected to take so far.
+    const double allowed = unlimited ? budgetMs : budgetMs - millisecondsSince(start);
+    const bool measured = msPerEntry_ > 0.0;
     const auto chunkStart = Clock::now();
-    double drawn = 0.0;
-    while (!finished() && (drawn == 0.0 || drawn < allowed)) {
+    size_t entries = 0, ends = 0;
+    double expected = 0.0;
+    while (!finished() && (entries + ends == 0 || expected < allowed)) {
       const size_t s = frame_.nextSlab;
       const size_t count = slabInOrder(s).count;
-      if (frame_.nextEntry == 0 && drawn + double(count) + frame_.meanEntries <= allowed) {
+      const double wholeMs = msPerEntry_ * double(count) + msPerSlabEnd_;
+      if (frame_.nextEntry == 0 && (unlimited || (measured && expected + wholeMs <= allowed) ||
+                                    (!measured && entries + count <= kFirstChunk))) {
         drawCompositeSlab(s);
-        drawn += double(count) + frame_.meanEntries;
+        entries += count;
+        ++ends;
+        expected += wholeMs;
+        frame_.drawnWeight += double(count) + frame_.meanEntries;
         ++frame_.nextSlab;
         continue;
       }
       if (frame_.nextEntry == 0) beginCompositeSlab();
       const double left = double(count - frame_.nextEntry);
-      const size_t take = size_t(std::clamp(allowed - drawn, std::min(kMinRange, left), left));
+      const double fit =
+          measured ? (allowed - expected) / msPerEntry_ : double(kFirstChunk - entries);
+      const size_t take = size_t(std::clamp(fit, std::min(double(kMinRange), left), left));
       drawSlabRange(s, frame_.nextEntry, take);
       frame_.nextEntry += take;
-      drawn += double(take);
+      entries += take;
+      expected += msPerEntry_ * double(take);
+      frame_.drawnWeight += double(take);
       if (frame_.nextEntry == count) {
         endCompositeSlab(s);
-        drawn += frame_.meanEntries;
+        ++ends;
+        expected += msPerSlabEnd_;
+        frame_.drawnWeight += frame_.meanEntries;
         frame_.nextEntry = 0;
         ++frame_.nextSlab;
       }
+      if (!measured) break;  // one measurement before planning more
     }
-    frame_.drawnWeight += drawn;
     if (unlimited) continue;
     // llvmpipe does the GL work by glFinish: the chunk's time is only known after it.
     glFinish();
-    const double measured = millisecondsSince(chunkStart) / std::max(drawn, 1.0);
-    // Up at once, down slowly: an overestimate costs a little speed, an underestimate a
-    // stalled window.
-    msPerWeight_ =
-        msPerWeight_ > 0.0 && measured < msPerWeight_ ? 0.5 * (msPerWeight_ + measured) : measured;
-    if (millisecondsSince(start) + msPerWeight_ * kMinRange > budgetMs) break;
+    updateCostModel(millisecondsSince(chunkStart), entries, ends);
+    const double nextMs = msPerEntry_ * double(kMinRange) + msPerSlabEnd_;
+    if (millisecondsSince(start) + nextMs > budgetMs) break;
   }
   glDisable(GL_STENCIL_TEST);
   return finished();
+}
+
+void SplatRenderer::updateCostModel(double ms, size_t entries, size_t slabEnds) {
+  // Up at once, down slowly: an overestimate costs a little speed, an underestimate a
+  // stalled window.
+  const auto blend = [](double old, double now) {
+    return old > 0.0 && now < old ? 0.5 * (old + now) : now;
+  };
+  if (slabEnds == 0 || msPerEntry_ <= 0.0) {
+    // Without a known per-entry cost the whole time is charged to the entries (safe: high).
+    msPerEntry_ = blend(msPerEntry_, ms / double(std::max<size_t>(entries, 1)));
+    return;
+  }
+  const double rest = std::max(0.0, ms - msPerEntry_ * double(entries));
+  msPerSlabEnd_ = blend(msPerSlabEnd_, rest / double(slabEnds));
 }
 
 bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point start) {
@@ -234,7 +258,7 @@ bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point sta
     size_t count = all.count - frame_.nextEntry;
     if (!unlimited) {
       const double left = budgetMs - millisecondsSince(start);
-      const double fit = msPerWeight_ > 0.0 ? left / msPerWeight_ : double(kFirstChunk);
+      const double fit = msPerEntry_ > 0.0 ? left / msPerEntry_ : double(kFirstChunk);
       count = size_t(std::clamp(fit, double(std::min(kMinChunk, count)), double(count)));
     }
     Slab range = all;
@@ -247,10 +271,8 @@ bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point sta
     frame_.drawnWeight += double(count);
     if (unlimited) continue;
     glFinish();
-    const double measured = millisecondsSince(chunkStart) / double(count);
-    msPerWeight_ =
-        msPerWeight_ > 0.0 && measured < msPerWeight_ ? 0.5 * (msPerWeight_ + measured) : measured;
-    if (millisecondsSince(start) + msPerWeight_ * double(kMinChunk) > budgetMs) break;
+    updateCostModel(millisecondsSince(chunkStart), count, 0);
+    if (millisecondsSince(start) + msPerEntry_ * double(kMinChunk) > budgetMs) break;
   }
   glBlendEquation(GL_FUNC_ADD);
   stats_.slabsDrawn = 1;

@@ -142,7 +142,11 @@ class SplatRenderer : public Renderer {
     double drawnWeight = 0.0, totalWeight = 0.0;  // for frameProgress()
   };
   FrameState frame_;
-  double msPerWeight_ = 0.0;  // measured ms per splat entry (0: not yet), kept across frames
+  // Folds a chunk's measured time into the cost model below.
+  void updateCostModel(double ms, size_t entries, size_t slabEnds);
+  // Measured, kept across frames (0: not yet): ms per splat entry drawn and per slab finished.
+  double msPerEntry_ = 0.0;
+  double msPerSlabEnd_ = 0.0;
 };
 
 }  // namespace ewa
