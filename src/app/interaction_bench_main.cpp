@@ -171,11 +171,10 @@ int run(int argc, char** argv) {
         levels += (levels.empty() ? "" : ",") + std::to_string(l) + "x" +
                   std::to_string(levelUse[size_t(l)]);
     const double mm = median(moving), fm = median(full);
-    std::printf(
-        "%-13s %9zu %8.0f | %8.1f %8.1f %3d/%-2zu %-9s | %8.1f %8.1f %6d %8.1f | %7.1f\n",
-        std::filesystem::path(o.file).stem().string().c_str(), splats, lodBuildMs, mm,
-        *std::max_element(moving.begin(), moving.end()), within, moving.size(), levels.c_str(),
-        fm, refine, steps, worstStep, fm / std::max(mm, 1e-3));
+    std::printf("%-13s %9zu %8.0f | %8.1f %8.1f %3d/%-2zu %-9s | %8.1f %8.1f %6d %8.1f | %7.1f\n",
+                std::filesystem::path(o.file).stem().string().c_str(), splats, lodBuildMs, mm,
+                *std::max_element(moving.begin(), moving.end()), within, moving.size(),
+                levels.c_str(), fm, refine, steps, worstStep, fm / std::max(mm, 1e-3));
     std::fflush(stdout);
   }
   return 0;
