@@ -30,6 +30,8 @@ struct ViewerConfig {
 // +X -X +Y -Y +Z -Z, F12 saves a screenshot, Ctrl+O opens a file. While the view moves a
 // coarser level of detail is drawn; once input stops full quality is refined in steps over UI
 // frames (any input interrupts it). Settings are saved to config.configDir on exit.
+// Returns the process exit code: 0, or 1 with a one-line message on stderr when no window with
+// an OpenGL 4.5 core context can be made. Other failures (shader builds) throw.
 int runViewer(LoadedVolume initial, const ViewerConfig& config);
 
 }  // namespace ewa
