@@ -76,6 +76,11 @@ SplatRenderer* LodRenderer::editTransferFunction(const TransferFunction& tf) {
   return live;
 }
 
+SplatRenderer* LodRenderer::fullSplatRenderer() {
+  if (!volume_) return nullptr;
+  return dynamic_cast<SplatRenderer*>(&rendererFor(1));
+}
+
 bool LodRenderer::setFullSplats(ClassifiedSplats splats, const Classification& classification) {
   const auto it = renderers_.find(1);
   auto* splat = it == renderers_.end() ? nullptr : dynamic_cast<SplatRenderer*>(it->second.get());

@@ -36,6 +36,8 @@ class LodRenderer {
   // its splats, and is returned so the caller can build the new set on a worker thread and
   // hand it over with setFullSplats(). Other full-level renderers take the function as usual.
   SplatRenderer* editTransferFunction(const TransferFunction& tf);
+  // The full-resolution renderer when it is a splat renderer (made on first use), else null.
+  SplatRenderer* fullSplatRenderer();
   // Gives the full-resolution splat renderer a set built elsewhere; false when the full level
   // is not a splat renderer (any more).
   bool setFullSplats(ClassifiedSplats splats, const Classification& classification);

@@ -53,6 +53,11 @@ class SplatRenderer : public Renderer {
   // current volume under `classification` and uploads it; the next render draws it (and does
   // not classify again unless the settings ask for another classification).
   void setSplats(ClassifiedSplats splats, const Classification& classification);
+  // True when the next frame under `classification` would classify the volume itself (no set
+  // for the current volume, function and classification is there).
+  bool needsSplats(const Classification& classification) const {
+    return volume_ && (splatsDirty_ || classification != classification_);
+  }
   // The most splats the GL buffers may hold: pass it to a classification made elsewhere.
   size_t maxSplats() const { return maxSplats_; }
 

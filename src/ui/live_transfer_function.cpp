@@ -35,6 +35,12 @@ void LiveTransferFunction::buildFullLevel(LodRenderer& lod, const Classification
     builder_.request(*volume_, tf, classification, full->maxSplats());
 }
 
+void LiveTransferFunction::buildFullSplats(LodRenderer& lod, const Classification& classification) {
+  if (!editor_) return;
+  if (SplatRenderer* full = lod.fullSplatRenderer())
+    builder_.request(*volume_, editor_->transferFunction(), classification, full->maxSplats());
+}
+
 bool LiveTransferFunction::takeBuilt(LodRenderer& lod, std::string* error) {
   try {
     std::optional<BuiltSplats> built = builder_.poll();

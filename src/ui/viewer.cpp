@@ -11,6 +11,7 @@
 #include "gl/gpu_memory.h"
 #include "io/atomic_file.h"
 #include "render/renderer_factory.h"
+#include "render/splat_renderer.h"
 #include "ui/viewer_window.h"
 
 namespace ewa {
@@ -174,8 +175,17 @@ double ViewerWindow::renderLevel(int level, const Camera& camera, const glm::ive
 
 bool ViewerWindow::refine(const glm::ivec2& fb) {
   if (!refinement_.active() || fullSplatsArrived_) {
-    // Classification (when due), the slab partition and the uniforms: this frame's work; the
-    // slabs follow in the next frames.
+    // Another classification (gradients, surface splats) is built on the worker first, once;
+    // refineDue() waits for it. Should that fail, the start below classifies itself.
+    SplatRenderer* full = lod_.fullSplatRenderer();
+    if (full && full->needsSplats(settings_.classification) &&
+        fullBuildFor_ != settings_.classification) {
+      fullBuildFor_ = settings_.classification;
+      liveTf_.buildFullSplats(lod_, settings_.classification);
+      return false;
+    }
+    // The slab partition and the uniforms: this frame's work; the slabs follow in the next
+    // frames.
     try {
       refinement_.start(lod_, controller_.camera(), settings_, fb);
     } catch (const std::exception& e) {
@@ -268,6 +278,7 @@ bool ViewerWindow::drawFrame() {
     TerminalProgress note("ewaview: building splats for " + current_.name + ",");
     if (levelOfDetail_) {
       liveTf_.buildFullLevel(lod_, settings_.classification);
+      fullBuildFor_ = settings_.classification;
       // The coarse levels classify now (it draws tiny images: before the picture shown).
       lod_.warmUp(controller_.camera(), settings_);
     }

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "core/camera_controller.h"
@@ -123,9 +124,10 @@ class ViewerWindow {
   bool printLayout_ = false;  // EWAVIEW_PRINT_LAYOUT=1: layout and frame lines on stdout
   bool frameLog_ = false;     // EWAVIEW_FRAME_LOG=1: every frame's time on stderr
   bool fullSplatsArrived_ = false;
-  bool calibrate_ = false;      // the next full frame picks the first moving level
-  bool refineFailed_ = false;   // retried after the next change, not every frame
-  int reportedRefinement_ = 0;  // RefinementReport::index last shown and logged
+  bool calibrate_ = false;                      // the next full frame picks the first moving level
+  bool refineFailed_ = false;                   // retried after the next change, not every frame
+  std::optional<Classification> fullBuildFor_;  // the last full splat set asked of the worker
+  int reportedRefinement_ = 0;                  // RefinementReport::index last shown and logged
   uint64_t renderedTf_ = 0;
   bool hasNvx_ = false;
   bool buildPending_ = false;
