@@ -76,6 +76,11 @@ SplatRenderer* LodRenderer::editTransferFunction(const TransferFunction& tf) {
   return live;
 }
 
+SplatRenderer* LodRenderer::fullSplatRenderer() {
+  if (!volume_) return nullptr;
+  return dynamic_cast<SplatRenderer*>(&rendererFor(1));
+}
+
 bool LodRenderer::setFullSplats(ClassifiedSplats splats, const Classification& classification) {
   const auto it = renderers_.find(1);
   auto* splat = it == renderers_.end() ? nullptr : dynamic_cast<SplatRenderer*>(it->second.get());
@@ -111,10 +116,38 @@ void LodRenderer::render(int level, const Camera& camera, const RenderSettings& 
   if (!hasFactor(lod.volumeFactor)) lod.volumeFactor = 1;  // still being built: full volume
   imageWidth_ = std::max(1, width / lod.imageDivisor);
   imageHeight_ = std::max(1, height / lod.imageDivisor);
+  if (lod.volumeFactor == 1) fullPending_ = false;
   rendererFor(lod.volumeFactor).render(camera, settings, imageWidth_, imageHeight_);
   sizes_[lod.volumeFactor] = {imageWidth_, imageHeight_};
   lastFactor_ = lod.volumeFactor;
   lastLevel_ = level;
+}
+
+void LodRenderer::beginFull(const Camera& camera, const RenderSettings& settings, int width,
+                            int height) {
+  if (!volume_) throw std::logic_error("LodRenderer::beginFull before setVolume");
+  fullWidth_ = std::max(1, width);
+  fullHeight_ = std::max(1, height);
+  fullPending_ = true;
+  rendererFor(1).beginFrame(camera, settings, fullWidth_, fullHeight_);
+}
+
+bool LodRenderer::stepFull(double budgetMs) {
+  if (!fullPending_) return true;
+  if (!rendererFor(1).stepFrame(budgetMs)) return false;
+  fullPending_ = false;
+  imageWidth_ = fullWidth_;
+  imageHeight_ = fullHeight_;
+  sizes_[1] = {imageWidth_, imageHeight_};
+  lastFactor_ = 1;
+  lastLevel_ = 0;
+  return true;
+}
+
+double LodRenderer::fullProgress() const {
+  if (!fullPending_) return 1.0;
+  const auto it = renderers_.find(1);
+  return it == renderers_.end() ? 0.0 : it->second->frameProgress();
 }
 
 void LodRenderer::warmUp(const Camera& camera, const RenderSettings& settings) {

@@ -36,6 +36,8 @@ class LodRenderer {
   // its splats, and is returned so the caller can build the new set on a worker thread and
   // hand it over with setFullSplats(). Other full-level renderers take the function as usual.
   SplatRenderer* editTransferFunction(const TransferFunction& tf);
+  // The full-resolution renderer when it is a splat renderer (made on first use), else null.
+  SplatRenderer* fullSplatRenderer();
   // Gives the full-resolution splat renderer a set built elsewhere; false when the full level
   // is not a splat renderer (any more).
   bool setFullSplats(ClassifiedSplats splats, const Classification& classification);
@@ -43,6 +45,19 @@ class LodRenderer {
   // picks the renderer, its image divisor shrinks the image (at least 1x1).
   void render(int level, const Camera& camera, const RenderSettings& settings, int width,
               int height);
+
+  // Full quality drawn over several calls (a window's refinement): beginFull starts the full
+  // level's frame for a width x height window, each stepFull draws about `budgetMs` of it and
+  // returns true once it is done; then the full image is last() (lastLevel() 0). Until then
+  // last() and outputTexture() keep the picture drawn before. render() of the full level
+  // abandons the frame under way.
+  void beginFull(const Camera& camera, const RenderSettings& settings, int width, int height);
+  bool stepFull(double budgetMs);
+  // The share of the full frame drawn (0..1); 1 when none is under way.
+  double fullProgress() const;
+  bool fullPending() const { return fullPending_; }
+  // The full-resolution renderer (made on first use).
+  const Renderer& fullLevel() { return rendererFor(1); }
 
   // Makes the full-resolution renderer now (it compiles its shaders), so a broken shader
   // fails here, before a window loop starts, instead of on the first frame.
@@ -81,6 +96,8 @@ class LodRenderer {
   int lastFactor_ = 1;
   int lastLevel_ = 0;
   int imageWidth_ = 0, imageHeight_ = 0;
+  bool fullPending_ = false;  // beginFull ran and stepFull has not finished the frame
+  int fullWidth_ = 0, fullHeight_ = 0;
 };
 
 }  // namespace ewa

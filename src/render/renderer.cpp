@@ -7,9 +7,12 @@ namespace ewa {
 
 const char* renderModeName(RenderMode mode) {
   switch (mode) {
-    case RenderMode::Composite: return "composite";
-    case RenderMode::XRay: return "xray";
-    case RenderMode::Mip: return "mip";
+    case RenderMode::Composite:
+      return "composite";
+    case RenderMode::XRay:
+      return "xray";
+    case RenderMode::Mip:
+      return "mip";
   }
   return "?";
 }
@@ -24,10 +27,14 @@ FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3
 }
 
 bool parseRenderMode(const std::string& text, RenderMode* mode) {
-  if (text == "composite") *mode = RenderMode::Composite;
-  else if (text == "xray") *mode = RenderMode::XRay;
-  else if (text == "mip") *mode = RenderMode::Mip;
-  else return false;
+  if (text == "composite")
+    *mode = RenderMode::Composite;
+  else if (text == "xray")
+    *mode = RenderMode::XRay;
+  else if (text == "mip")
+    *mode = RenderMode::Mip;
+  else
+    return false;
   return true;
 }
 
@@ -36,18 +43,26 @@ const char* compositeOrderName(CompositeOrder order) {
 }
 
 bool parseCompositeOrder(const std::string& text, CompositeOrder* order) {
-  if (text == "front-to-back") *order = CompositeOrder::FrontToBack;
-  else if (text == "back-to-front") *order = CompositeOrder::BackToFront;
-  else return false;
+  if (text == "front-to-back")
+    *order = CompositeOrder::FrontToBack;
+  else if (text == "back-to-front")
+    *order = CompositeOrder::BackToFront;
+  else
+    return false;
   return true;
 }
 
-const char* xrayMapName(XRayMap map) { return map == XRayMap::Sum ? "sum" : "exp"; }
+const char* xrayMapName(XRayMap map) {
+  return map == XRayMap::Sum ? "sum" : "exp";
+}
 
 bool parseXRayMap(const std::string& text, XRayMap* map) {
-  if (text == "exp") *map = XRayMap::Attenuation;
-  else if (text == "sum") *map = XRayMap::Sum;
-  else return false;
+  if (text == "exp")
+    *map = XRayMap::Attenuation;
+  else if (text == "sum")
+    *map = XRayMap::Sum;
+  else
+    return false;
   return true;
 }
 
@@ -55,10 +70,30 @@ const char* rendererKindName(RendererKind kind) {
   return kind == RendererKind::ShearWarp ? "shearwarp" : "splat";
 }
 
+void Renderer::beginFrame(const Camera& camera, const RenderSettings& settings, int width,
+                          int height) {
+  pending_ = PendingFrame{camera, settings, width, height};
+}
+
+bool Renderer::stepFrame(double /*budgetMs*/) {
+  if (!pending_) return true;
+  const PendingFrame frame = std::move(*pending_);
+  pending_.reset();
+  render(frame.camera, frame.settings, frame.width, frame.height);
+  return true;
+}
+
+double Renderer::frameProgress() const {
+  return pending_ ? 0.0 : 1.0;
+}
+
 bool parseRendererKind(const std::string& text, RendererKind* kind) {
-  if (text == "splat") *kind = RendererKind::Splat;
-  else if (text == "shearwarp") *kind = RendererKind::ShearWarp;
-  else return false;
+  if (text == "splat")
+    *kind = RendererKind::Splat;
+  else if (text == "shearwarp")
+    *kind = RendererKind::ShearWarp;
+  else
+    return false;
   return true;
 }
 

@@ -2,17 +2,17 @@
 #pragma once
 
 #include <cstddef>
+#include <glm/vec3.hpp>
+#include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "core/camera.h"
 #include "core/ewa_footprint.h"
 #include "core/image8.h"
 #include "core/shading.h"
-#include "core/splat_attributes.h"
 #include "core/shear_warp_settings.h"
+#include "core/splat_attributes.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
 
@@ -40,7 +40,7 @@ struct RenderSettings {
   RendererKind renderer = RendererKind::Splat;  // which renderer the program creates
   FilterMode filter = FilterMode::Ewa;
   RenderMode mode = RenderMode::Composite;
-  double cutoff = 4.0;         // footprint cutoff r = dx^T Q dx
+  double cutoff = 4.0;  // footprint cutoff r = dx^T Q dx
   // In units of the smallest voxel spacing, at least 0.25. 2 by default: kernels split exactly
   // between slabs, so thinner slabs change the picture little (tests) and cost more draws.
   double slabThickness = 2.0;
@@ -51,26 +51,25 @@ struct RenderSettings {
   double terminationOpacity = 0.99;
   XRayMap xrayMap = XRayMap::Attenuation;
   double xrayScale = 1.0;
-  Lighting lighting;            // per splat, every frame: the camera moves the light
+  Lighting lighting;              // per splat, every frame: the camera moves the light
   Classification classification;  // gradients and surface voxels: rebuilds the splats
   double surfaceOpacity = 0.95;   // opacity of the surface-splat layer seen along its normal
-  ShearWarpSettings shearWarp;  // read by the shear-warp renderer only
+  ShearWarpSettings shearWarp;    // read by the shear-warp renderer only
 };
-
 
 // The footprint parameters every splat of a volume with this spacing gets under `settings`:
 // Swan's s is the smallest spacing, and voxels closer than it to the eye plane are culled.
 FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3& spacing);
 
 struct RenderStats {
-  size_t splatsTotal = 0;   // non-transparent voxels
-  size_t splatsDrawn = 0;   // in front of the eye, sent to the GPU this frame
+  size_t splatsTotal = 0;  // non-transparent voxels
+  size_t splatsDrawn = 0;  // in front of the eye, sent to the GPU this frame
   size_t slabs = 0;
-  size_t slabsDrawn = 0;    // before early termination stopped the slab loop
-  size_t surfaceSplats = 0; // splats drawn as flat surface kernels
-  size_t slabEntries = 0;   // splats drawn summed over slabs (kernels span several slabs)
-  bool quadPass = false;    // some footprints exceeded the point-size limit
-  double cpuMs = 0.0;       // CPU time of the last render() call, GPU work included (it waits)
+  size_t slabsDrawn = 0;     // before early termination stopped the slab loop
+  size_t surfaceSplats = 0;  // splats drawn as flat surface kernels
+  size_t slabEntries = 0;    // splats drawn summed over slabs (kernels span several slabs)
+  bool quadPass = false;     // some footprints exceeded the point-size limit
+  double cpuMs = 0.0;        // CPU time of the last render() call, GPU work included (it waits)
   // Time per stage of the last render() call, for the statistics panel; 0 where a renderer
   // does not measure it (classify: splats from the transfer function, 0 when the set was
   // kept; sort: slab bucketing and its upload; splat: drawing the kernels and blending each
@@ -79,7 +78,7 @@ struct RenderStats {
   double sortMs = 0.0;
   double splatMs = 0.0;
   double compositeMs = 0.0;
-  size_t gpuBytes = 0;      // bytes of GL buffers and textures the renderer holds; 0: not counted
+  size_t gpuBytes = 0;  // bytes of GL buffers and textures the renderer holds; 0: not counted
 };
 
 class Renderer {
@@ -91,11 +90,29 @@ class Renderer {
   // Renders into the renderer's own output image of width x height pixels.
   virtual void render(const Camera& camera, const RenderSettings& settings, int width,
                       int height) = 0;
+  // Progressive drawing, for a window that must keep answering input: beginFrame starts a
+  // frame, each stepFrame call draws about `budgetMs` of it and returns true once the frame is
+  // complete and outputTexture()/readImage() show it; until then they keep the last complete
+  // image. frameProgress() is the share drawn so far (0..1). A new beginFrame abandons a frame
+  // under way. The defaults draw the whole frame with render() in the first step.
+  virtual void beginFrame(const Camera& camera, const RenderSettings& settings, int width,
+                          int height);
+  virtual bool stepFrame(double budgetMs);
+  virtual double frameProgress() const;
   // The last image, top row first, RGB over the background.
   virtual Image8 readImage() const = 0;
   // GL texture name of the last image (RGBA8, bottom row first), for drawing it in a window.
   virtual unsigned outputTexture() const = 0;
   virtual RenderStats stats() const = 0;
+
+ private:
+  // The frame the default beginFrame/stepFrame draw.
+  struct PendingFrame {
+    Camera camera;
+    RenderSettings settings;
+    int width = 0, height = 0;
+  };
+  std::optional<PendingFrame> pending_;
 };
 
 }  // namespace ewa

@@ -1,9 +1,11 @@
-// SplatRenderer::render: the slab partition, the slab loop (front to back with early
-// termination, or back to front), the X-ray and MIP passes and the final picture.
+// SplatRenderer's frame: the slab partition, the slab loop (front to back with early
+// termination, or back to front) drawn in timed chunks, the X-ray and MIP passes, the final
+// picture.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
+#include <limits>
 
 #include "core/volume_orientation.h"
 #include "gl/gl_error.h"
@@ -41,9 +43,8 @@ glm::mat4 clipMatrix(const Projection& proj, const glm::dmat4& view, double near
   return glm::mat4(p * view);
 }
 
-using Clock = std::chrono::steady_clock;
-double millisecondsSince(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+double millisecondsSince(SplatRenderer::Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(SplatRenderer::Clock::now() - t).count();
 }
 
 }  // namespace
@@ -85,11 +86,10 @@ bool SplatRenderer::allOpaque(const Camera& camera, const Projection& proj,
   return samples == 0;
 }
 
-void SplatRenderer::compositeSlabs(const Camera& camera, const Projection& proj,
-                                   const RenderSettings& settings) {
-  const bool frontToBack = settings.order == CompositeOrder::FrontToBack;
-  const bool terminate = frontToBack && settings.terminationOpacity < 1.0;
-  const GLfloat zero[4] = {0, 0, 0, 0};
+void SplatRenderer::setSlabLoopState() {
+  const RenderSettings& settings = frame_.settings;
+  const bool terminate =
+      settings.order == CompositeOrder::FrontToBack && settings.terminationOpacity < 1.0;
   targets_.slab.bindUnit(1);
   slabProgram_.setInt("uSlab", 1);
   targets_.accum.bindUnit(2);
@@ -100,47 +100,216 @@ void SplatRenderer::compositeSlabs(const Camera& camera, const Projection& proj,
     glStencilFunc(GL_EQUAL, 0, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   }
+}
+
+const Slab& SplatRenderer::slabInOrder(size_t s) const {
   const auto& slabs = partition_.slabs();
-  const size_t n = slabs.size();
-  for (size_t s = 0; s < n; ++s) {
-    const Slab& slab = slabs[frontToBack ? s : n - 1 - s];
-    // Inside a slab: order-independent sums of each kernel's share of optical depth and light.
+  const bool frontToBack = frame_.settings.order == CompositeOrder::FrontToBack;
+  return slabs[frontToBack ? s : slabs.size() - 1 - s];
+}
+
+void SplatRenderer::beginCompositeSlab() {
+  const GLfloat zero[4] = {0, 0, 0, 0};
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+  targets_.slabFbo.clearColor(0, zero);
+}
+
+void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
+  Slab range = slabInOrder(s);
+  range.first += uint32_t(first);
+  range.count = count;
+  // Inside a slab: order-independent sums of each kernel's share of optical depth and light.
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+  glBlendFunc(GL_ONE, GL_ONE);
+  setSlabUniforms(range, true, true);
+  drawSplats(range, stats_.quadPass);
+}
+
+void SplatRenderer::endCompositeSlab(size_t s) {
+  const RenderSettings& settings = frame_.settings;
+  const bool frontToBack = settings.order == CompositeOrder::FrontToBack;
+  const bool terminate = frontToBack && settings.terminationOpacity < 1.0;
+  const size_t n = partition_.slabs().size();
+  // Between slabs: 1 - exp(-depth) composited under (front to back) or over (back to front).
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.accumFbo.id());
+  if (frontToBack)
+    glBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+  else
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glUseProgram(slabProgram_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  ++stats_.slabsDrawn;
+  if (terminate && (s + 1) % kCheckEvery == 0 && s + 1 < n) {
+    // Mark pixels that reached the threshold; later splat fragments there fail the stencil.
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
-    targets_.slabFbo.clearColor(0, zero);
-    glBlendFunc(GL_ONE, GL_ONE);
-    setSlabUniforms(slab, true, true);
-    drawSplats(slab, stats_.quadPass);
-    // Between slabs: 1 - exp(-depth) composited under (front to back) or over (back to front).
-    glBindFramebuffer(GL_FRAMEBUFFER, targets_.accumFbo.id());
-    if (frontToBack)
-      glBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_ONE);
-    else
-      glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    glUseProgram(slabProgram_.id());
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glStencilFunc(GL_ALWAYS, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glUseProgram(markProgram_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    ++stats_.slabsDrawn;
-    if (terminate && (s + 1) % kCheckEvery == 0 && s + 1 < n) {
-      // Mark pixels that reached the threshold; later splat fragments there fail the stencil.
-      glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
-      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      glStencilFunc(GL_ALWAYS, 1, 0xff);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-      glUseProgram(markProgram_.id());
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-      glStencilFunc(GL_EQUAL, 0, 0xff);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-      if (allOpaque(camera, proj, settings)) break;
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glStencilFunc(GL_EQUAL, 0, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    if (allOpaque(frame_.camera, frame_.proj, settings)) frame_.terminated = true;
+  }
+}
+
+void SplatRenderer::drawCompositeSlab(size_t s) {
+  beginCompositeSlab();
+  drawSlabRange(s, 0, slabInOrder(s).count);
+  endCompositeSlab(s);
+}
+
+bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
+  // Cost model, measured per chunk: msPerEntry_ per splat entry drawn and msPerSlabEnd_ per
+  // slab finished (clear, blend under the image, termination check: passes over the whole
+  // image). A chunk holds whole slabs while they fit; a slab too costly for the time left is
+  // drawn in ranges of entries over several steps (its sums are order-independent, so the
+  // picture is the same).
+  constexpr size_t kFirstChunk = 2048;  // entries drawn before anything is measured
+  constexpr size_t kMinRange = 512;     // the fewest entries a range holds
+  const size_t n = partition_.slabs().size();
+  const bool unlimited = !std::isfinite(budgetMs);
+  const auto finished = [&] { return frame_.nextSlab >= n || frame_.terminated; };
+  setSlabLoopState();
+  while (!finished()) {
+    // Milliseconds this chunk may take, and what it is expected to take so far.
+    const double allowed = unlimited ? budgetMs : budgetMs - millisecondsSince(start);
+    const bool measured = msPerEntry_ > 0.0;
+    const auto chunkStart = Clock::now();
+    size_t entries = 0, ends = 0;
+    double expected = 0.0;
+    while (!finished() && (entries + ends == 0 || expected < allowed)) {
+      const size_t s = frame_.nextSlab;
+      const size_t count = slabInOrder(s).count;
+      const double wholeMs = msPerEntry_ * double(count) + msPerSlabEnd_;
+      if (frame_.nextEntry == 0 && (unlimited || (measured && expected + wholeMs <= allowed) ||
+                                    (!measured && entries + count <= kFirstChunk))) {
+        drawCompositeSlab(s);
+        entries += count;
+        ++ends;
+        expected += wholeMs;
+        frame_.drawnWeight += double(count) + frame_.meanEntries;
+        ++frame_.nextSlab;
+        continue;
+      }
+      if (frame_.nextEntry == 0) beginCompositeSlab();
+      const double left = double(count - frame_.nextEntry);
+      const double fit =
+          measured ? (allowed - expected) / msPerEntry_ : double(kFirstChunk - entries);
+      const size_t take = size_t(std::clamp(fit, std::min(double(kMinRange), left), left));
+      drawSlabRange(s, frame_.nextEntry, take);
+      frame_.nextEntry += take;
+      entries += take;
+      expected += msPerEntry_ * double(take);
+      frame_.drawnWeight += double(take);
+      if (frame_.nextEntry == count) {
+        endCompositeSlab(s);
+        ++ends;
+        expected += msPerSlabEnd_;
+        frame_.drawnWeight += frame_.meanEntries;
+        frame_.nextEntry = 0;
+        ++frame_.nextSlab;
+      }
+      if (!measured) break;  // one measurement before planning more
     }
+    if (unlimited) continue;
+    // llvmpipe does the GL work by glFinish: the chunk's time is only known after it.
+    glFinish();
+    updateCostModel(millisecondsSince(chunkStart), entries, ends);
+    const double nextMs = msPerEntry_ * double(kMinRange) + msPerSlabEnd_;
+    if (millisecondsSince(start) + nextMs > budgetMs) break;
   }
   glDisable(GL_STENCIL_TEST);
+  return finished();
+}
+
+void SplatRenderer::updateCostModel(double ms, size_t entries, size_t slabEnds) {
+  // Up at once, down slowly: an overestimate costs a little speed, an underestimate a
+  // stalled window.
+  const auto blend = [](double old, double now) {
+    return old > 0.0 && now < old ? 0.5 * (old + now) : now;
+  };
+  if (slabEnds == 0 || msPerEntry_ <= 0.0) {
+    // Without a known per-entry cost the whole time is charged to the entries (safe: high).
+    msPerEntry_ = blend(msPerEntry_, ms / double(std::max<size_t>(entries, 1)));
+    return;
+  }
+  const double rest = std::max(0.0, ms - msPerEntry_ * double(entries));
+  msPerSlabEnd_ = blend(msPerSlabEnd_, rest / double(slabEnds));
+}
+
+bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point start) {
+  // X-ray and MIP: one pass over every splat with order-independent blending (sum or max),
+  // so the splat list may be drawn in ranges, as many entries per step as the budget allows.
+  const RenderSettings& settings = frame_.settings;
+  const bool unlimited = !std::isfinite(budgetMs);
+  Slab all = partition_.slabs().front();
+  const bool window = depthWindow_ && settings.mode == RenderMode::XRay;
+  if (window) {
+    all.nearDepth = depthWindow_->first;
+    all.farDepth = depthWindow_->second;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+  glBlendFunc(GL_ONE, GL_ONE);
+  if (settings.mode == RenderMode::Mip) glBlendEquation(GL_MAX);
+  // Entries drawn before anything is measured, and the fewest a step draws (cheap anywhere).
+  constexpr size_t kFirstChunk = 4096, kMinChunk = 1024;
+  while (frame_.nextEntry < all.count) {
+    size_t count = all.count - frame_.nextEntry;
+    if (!unlimited) {
+      const double left = budgetMs - millisecondsSince(start);
+      const double fit = msPerEntry_ > 0.0 ? left / msPerEntry_ : double(kFirstChunk);
+      count = size_t(std::clamp(fit, double(std::min(kMinChunk, count)), double(count)));
+    }
+    Slab range = all;
+    range.first = all.first + uint32_t(frame_.nextEntry);
+    range.count = count;
+    const auto chunkStart = Clock::now();
+    setSlabUniforms(range, window, false);
+    drawSplats(range, stats_.quadPass);
+    frame_.nextEntry += count;
+    frame_.drawnWeight += double(count);
+    if (unlimited) continue;
+    glFinish();
+    updateCostModel(millisecondsSince(chunkStart), count, 0);
+    if (millisecondsSince(start) + msPerEntry_ * double(kMinChunk) > budgetMs) break;
+  }
+  glBlendEquation(GL_FUNC_ADD);
+  stats_.slabsDrawn = 1;
+  return frame_.nextEntry >= all.count;
+}
+
+void SplatRenderer::bindFrameState() {
+  splatBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  orderBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  attributeBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  transferTexture_.bindUnit(0);
+  glBindVertexArray(emptyVao_.id());
+  glViewport(0, 0, frame_.width, frame_.height);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_CULL_FACE);
+  glBlendEquation(GL_FUNC_ADD);
 }
 
 void SplatRenderer::render(const Camera& worldCamera, const RenderSettings& settings, int width,
                            int height) {
+  beginFrame(worldCamera, settings, width, height);
+  stepFrame(std::numeric_limits<double>::infinity());
+}
+
+void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& settings,
+                               int width, int height) {
   // Splats live in the volume's own frame; the camera moves instead (volume_orientation.h).
   const Camera camera = volume_ ? cameraInVolumeFrame(worldCamera, *volume_) : worldCamera;
   const auto start = Clock::now();
+  frame_ = FrameState{};
+  frame_.camera = camera;
+  frame_.settings = settings;
+  frame_.width = width;
+  frame_.height = height;
   targets_.resize(width, height);
   stats_ = RenderStats{};
   const GLfloat zero[4] = {0, 0, 0, 0};
@@ -154,6 +323,7 @@ void SplatRenderer::render(const Camera& worldCamera, const RenderSettings& sett
   }
   auto stageStart = Clock::now();
   const Projection proj = camera.projection(width, height);
+  frame_.proj = proj;
   const SplatSet& splats = classified_.splats;
   if (volume_ && splats.size() > 0 && camera.valid()) {
     const glm::dvec3& sp = volume_->spacing();
@@ -185,46 +355,60 @@ void SplatRenderer::render(const Camera& worldCamera, const RenderSettings& sett
       stats_.quadPass = 2.0 * footprintRadiusBound(proj, settings, nearest) + 0.5 > pointSizeLimit_;
       setCommonUniforms(pointProgram_, camera, proj, settings);
       setCommonUniforms(quadProgram_, camera, proj, settings);
-      splatBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-      orderBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-      attributeBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
-      transferTexture_.bindUnit(0);
-      glBindVertexArray(emptyVao_.id());
-      glViewport(0, 0, width, height);
-      glEnable(GL_PROGRAM_POINT_SIZE);
-      glDisable(GL_DEPTH_TEST);
+      frame_.drawSplats = true;
+      const size_t slabCount = partition_.slabs().size();
+      frame_.meanEntries = double(order.size()) / double(std::max<size_t>(1, slabCount));
+      frame_.totalWeight = composite ? double(order.size()) + frame_.meanEntries * double(slabCount)
+                                     : double(partition_.slabs().front().count);
       stats_.sortMs = millisecondsSince(stageStart);  // bucketing and the order upload
-      stageStart = Clock::now();
-      glEnable(GL_BLEND);
-      if (composite) {
-        compositeSlabs(camera, proj, settings);
-      } else {
-        glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
-        glBlendFunc(GL_ONE, GL_ONE);
-        if (settings.mode == RenderMode::Mip) glBlendEquation(GL_MAX);
-        Slab all = partition_.slabs().front();
-        const bool window = depthWindow_ && settings.mode == RenderMode::XRay;
-        if (window) {
-          all.nearDepth = depthWindow_->first;
-          all.farDepth = depthWindow_->second;
-        }
-        setSlabUniforms(all, window, false);
-        drawSplats(all, stats_.quadPass);
-        glBlendEquation(GL_FUNC_ADD);
-        stats_.slabsDrawn = 1;
-      }
-      glDisable(GL_BLEND);
-      // The slab loop's GPU work (splats and the blends between slabs) ends here; waiting for
-      // it costs little, since the final pass below waits anyway.
-      glFinish();
-      stats_.splatMs = millisecondsSince(stageStart);
     }
   }
-  stageStart = Clock::now();
+  frame_.active = true;
+  stats_.cpuMs = millisecondsSince(start);
+}
+
+bool SplatRenderer::stepFrame(double budgetMs) {
+  if (!frame_.active) return true;
+  const auto start = Clock::now();
+  if (frame_.drawSplats) {
+    bindFrameState();
+    glEnable(GL_BLEND);
+    const bool done = frame_.settings.mode == RenderMode::Composite
+                          ? drawSlabChunks(budgetMs, start)
+                          : drawWholeVolumeChunks(budgetMs, start);
+    glDisable(GL_BLEND);
+    if (!done) {
+      // The window draws between steps: leave it the default framebuffer, as render() does.
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      glUseProgram(0);
+      stats_.splatMs += millisecondsSince(start);
+      stats_.cpuMs += millisecondsSince(start);
+      return false;
+    }
+    // The slab loop's GPU work (splats and the blends between slabs) ends here; waiting for
+    // it costs little, since the final pass below waits anyway.
+    glFinish();
+    stats_.splatMs += millisecondsSince(start);
+  }
+  drawFinalPass();
+  frame_.active = false;
+  stats_.cpuMs += millisecondsSince(start);
+  return true;
+}
+
+double SplatRenderer::frameProgress() const {
+  if (!frame_.active) return 1.0;
+  return frame_.totalWeight > 0.0 ? std::min(1.0, frame_.drawnWeight / frame_.totalWeight) : 0.0;
+}
+
+void SplatRenderer::drawFinalPass() {
+  const RenderSettings& settings = frame_.settings;
+  const auto stageStart = Clock::now();
   glBindVertexArray(emptyVao_.id());
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.outputFbo.id());
-  glViewport(0, 0, width, height);
+  glViewport(0, 0, frame_.width, frame_.height);
   glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
   targets_.slab.bindUnit(1);
   targets_.accum.bindUnit(2);
   finalProgram_.setInt("uSlab", 1);
@@ -240,7 +424,6 @@ void SplatRenderer::render(const Camera& worldCamera, const RenderSettings& sett
   glFinish();
   gl::checkGlError("SplatRenderer::render");
   stats_.compositeMs = millisecondsSince(stageStart);
-  stats_.cpuMs = millisecondsSince(start);
 }
 
 }  // namespace ewa

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -28,7 +29,17 @@ class SplatRenderer : public Renderer {
 
   void setVolume(const Volume& volume) override;
   void setTransferFunction(const TransferFunction& tf) override;
+  using Clock = std::chrono::steady_clock;
+
+  // render() = beginFrame + stepFrame(infinity): the whole frame at once.
   void render(const Camera& camera, const RenderSettings& settings, int width, int height) override;
+  // Classification (when due), the slab partition and its upload, the per-frame uniforms.
+  void beginFrame(const Camera& camera, const RenderSettings& settings, int width,
+                  int height) override;
+  // Draws slabs in chunks, timing each (glFinish) and sizing the next from the measured cost
+  // per splat entry, until `budgetMs` would be passed; the last step runs the final pass.
+  bool stepFrame(double budgetMs) override;
+  double frameProgress() const override;
   Image8 readImage() const override;
   unsigned outputTexture() const override { return targets_.output.id(); }
   RenderStats stats() const override { return stats_; }
@@ -42,6 +53,11 @@ class SplatRenderer : public Renderer {
   // current volume under `classification` and uploads it; the next render draws it (and does
   // not classify again unless the settings ask for another classification).
   void setSplats(ClassifiedSplats splats, const Classification& classification);
+  // True when the next frame under `classification` would classify the volume itself (no set
+  // for the current volume, function and classification is there).
+  bool needsSplats(const Classification& classification) const {
+    return volume_ && (splatsDirty_ || classification != classification_);
+  }
   // The most splats the GL buffers may hold: pass it to a classification made elsewhere.
   size_t maxSplats() const { return maxSplats_; }
 
@@ -68,7 +84,21 @@ class SplatRenderer : public Renderer {
                          const RenderSettings& settings);
   void setSlabUniforms(const Slab& slab, bool split, bool openTails);
   void drawSplats(const Slab& slab, bool quads);
-  void compositeSlabs(const Camera& camera, const Projection& proj, const RenderSettings& settings);
+  // GL state every step needs again (a window draws other things between steps).
+  void bindFrameState();
+  void setSlabLoopState();
+  // One slab of the front-to-back or back-to-front loop (index in drawing order): its splats
+  // (drawSlabRange: entries [first, first + count) of them, into the cleared slab buffer), the
+  // blend under (over) the image and, every few slabs, the early-termination check.
+  void drawCompositeSlab(size_t slabIndex);
+  void beginCompositeSlab();
+  void drawSlabRange(size_t slabIndex, size_t first, size_t count);
+  void endCompositeSlab(size_t slabIndex);
+  const Slab& slabInOrder(size_t slabIndex) const;
+  // Return true once the frame's splats are all drawn (or early termination ended it).
+  bool drawSlabChunks(double budgetMs, Clock::time_point start);
+  bool drawWholeVolumeChunks(double budgetMs, Clock::time_point start);
+  void drawFinalPass();
   // True when every pixel the volume's bounding box covers is marked opaque.
   bool allOpaque(const Camera& camera, const Projection& proj, const RenderSettings& settings);
   double footprintRadiusBound(const Projection& proj, const RenderSettings& settings,
@@ -94,13 +124,34 @@ class SplatRenderer : public Renderer {
   gl::Buffer attributeBuffer_;
   gl::Texture transferTexture_;
   RenderTargets targets_;
-  size_t glMaxSplats_ = SIZE_MAX;        // splats that fit the GPU's storage block and memory
-  size_t maxSplats_ = SIZE_MAX;          // the limit in force (lower in tests)
-  uint64_t maxStorageBlockBytes_ = 0;    // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
+  size_t glMaxSplats_ = SIZE_MAX;      // splats that fit the GPU's storage block and memory
+  size_t maxSplats_ = SIZE_MAX;        // the limit in force (lower in tests)
+  uint64_t maxStorageBlockBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
   unsigned query_ = 0;
   float pointSizeLimit_ = 64.0f;
   float glPointSizeLimit_ = 64.0f;
   RenderStats stats_;
+
+  // The frame under way, from beginFrame to the step that draws the final pass.
+  struct FrameState {
+    bool active = false;      // begun and not finished
+    bool drawSplats = false;  // something to draw before the final pass
+    Camera camera;
+    Projection proj;
+    RenderSettings settings;
+    int width = 0, height = 0;
+    size_t nextSlab = 0;       // composite: the next slab in drawing order
+    bool terminated = false;   // early termination ended the slab loop
+    size_t nextEntry = 0;      // X-ray and MIP: the next entry of the single slab
+    double meanEntries = 0.0;  // per slab: the weight of a slab's whole-image passes
+    double drawnWeight = 0.0, totalWeight = 0.0;  // for frameProgress()
+  };
+  FrameState frame_;
+  // Folds a chunk's measured time into the cost model below.
+  void updateCostModel(double ms, size_t entries, size_t slabEnds);
+  // Measured, kept across frames (0: not yet): ms per splat entry drawn and per slab finished.
+  double msPerEntry_ = 0.0;
+  double msPerSlabEnd_ = 0.0;
 };
 
 }  // namespace ewa

@@ -1,10 +1,10 @@
 // ControlPanel: the ImGui window that shows the volume and statistics and edits the view.
 #include "ui/control_panel.h"
 
+#include <imgui.h>
+
 #include <cstdio>
 #include <utility>
-
-#include <imgui.h>
 
 #include "ui/render_options_panel.h"
 
@@ -100,8 +100,7 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
 
   for (RenderMode mode : kModes) {
     if (mode != kModes[0]) ImGui::SameLine();
-    if (ImGui::RadioButton(renderModeName(mode), settings.mode == mode) &&
-        settings.mode != mode) {
+    if (ImGui::RadioButton(renderModeName(mode), settings.mode == mode) && settings.mode != mode) {
       settings.mode = mode;
       changed = true;
     }
@@ -166,12 +165,40 @@ std::optional<AxisView> ControlPanel::drawAxisViews() {
   return chosen;
 }
 
+void drawRefinementOverlay(double progress) {
+  const ImGuiViewport* view = ImGui::GetMainViewport();
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const float height = 4.0f;
+  const ImVec2 lo(view->Pos.x, view->Pos.y + view->Size.y - height);
+  const ImVec2 hi(view->Pos.x + view->Size.x, view->Pos.y + view->Size.y);
+  draw->AddRectFilled(lo, hi, IM_COL32(40, 40, 40, 200));
+  draw->AddRectFilled(lo, ImVec2(lo.x + float(progress) * view->Size.x, hi.y),
+                      IM_COL32(90, 170, 255, 230));
+  char text[32];
+  std::snprintf(text, sizeof text, "refining %.0f%%", 100.0 * progress);
+  const ImVec2 size = ImGui::CalcTextSize(text);
+  const ImVec2 at(hi.x - size.x - 8.0f, lo.y - size.y - 4.0f);
+  draw->AddRectFilled(ImVec2(at.x - 4.0f, at.y - 2.0f), ImVec2(hi.x - 4.0f, lo.y - 2.0f),
+                      IM_COL32(0, 0, 0, 160), 3.0f);
+  draw->AddText(at, IM_COL32(230, 230, 230, 255), text);
+}
+
 void ControlPanel::drawStats(const FrameStats& stats) {
   const RenderStats& r = stats.render;
   ImGui::Text("render %.1f ms   frame %.1f ms", r.cpuMs, stats.frameMs);
+  if (stats.refineProgress >= 0.0) {
+    ImGui::ProgressBar(float(stats.refineProgress), ImVec2(180.0f, 0.0f));
+    ImGui::SameLine();
+    ImGui::TextUnformatted("full quality");
+  } else if (stats.refinement.frames > 0 && stats.lodLevel == 0) {
+    // Drawn in chunks over UI frames: render is the renderer's time summed over them.
+    const RefinementReport& f = stats.refinement;
+    ImGui::Text("refined in %.0f ms over %d frames (worst %.0f ms)", f.wallMs, f.frames,
+                f.worstFrameMs);
+  }
   if (r.classifyMs + r.sortMs + r.splatMs + r.compositeMs > 0.0)
-    ImGui::Text("classify %.1f  sort %.1f  splat %.1f  composite %.1f ms", r.classifyMs,
-                r.sortMs, r.splatMs, r.compositeMs);
+    ImGui::Text("classify %.1f  sort %.1f  splat %.1f  composite %.1f ms", r.classifyMs, r.sortMs,
+                r.splatMs, r.compositeMs);
   if (stats.lodLevel == 0)
     ImGui::Text("image %d x %d, full quality", stats.imageWidth, stats.imageHeight);
   else
@@ -182,7 +209,8 @@ void ControlPanel::drawStats(const FrameStats& stats) {
     ImGui::Text("GPU %.0f of %.0f MiB free", double(stats.gpuMemory->availableKiB) / 1024.0,
                 double(stats.gpuMemory->totalKiB) / 1024.0);
   ImGui::Text("splats %zu / %zu", r.splatsDrawn, r.splatsTotal);
-  ImGui::Text("slabs %zu (drawn %zu)   quad path %s", r.slabs, r.slabsDrawn, r.quadPass ? "yes" : "no");
+  ImGui::Text("slabs %zu (drawn %zu)   quad path %s", r.slabs, r.slabsDrawn,
+              r.quadPass ? "yes" : "no");
   ImGui::Text("surface splats %zu   splat draws %zu", r.surfaceSplats, r.slabEntries);
 }
 

@@ -7,28 +7,35 @@
 
 #include "core/camera.h"
 #include "core/camera_views.h"
-#include "gl/gpu_memory.h"
 #include "core/volume.h"
+#include "gl/gpu_memory.h"
 #include "render/renderer.h"
+#include "ui/progressive_refinement.h"
 
 namespace ewa {
 
 // What the panel shows about the last frames.
 struct FrameStats {
-  RenderStats render;     // of the last render() call
-  double frameMs = 0.0;   // the last window frame: events, render (if any), drawing, swap
-  int imageWidth = 0;     // size of the rendered image
+  RenderStats render;    // of the last render() call
+  double frameMs = 0.0;  // the last window frame: events, render (if any), drawing, swap
+  int imageWidth = 0;    // size of the rendered image
   int imageHeight = 0;
-  int lodLevel = 0;        // LodPolicy level of the image shown (0: full quality)
-  size_t gpuBytes = 0;     // buffers and images the renderers hold
+  int lodLevel = 0;     // LodPolicy level of the image shown (0: full quality)
+  size_t gpuBytes = 0;  // buffers and images the renderers hold
   std::optional<gl::GpuMemoryInfo> gpuMemory;  // driver figures, when it reports them
+  double refineProgress = -1.0;  // the full-quality frame being refined (0..1); < 0: none
+  RefinementReport refinement;   // the last finished refinement
 };
+
+// A thin progress bar along the window's bottom edge, with "refining NN%", while the
+// full-quality frame is refined over the coarse picture.
+void drawRefinementOverlay(double progress);
 
 // What the user changed this frame.
 struct PanelEdits {
-  bool settings = false;     // the RenderSettings were edited
-  bool camera = false;       // the Camera was edited (projection, view angle)
-  bool resetCamera = false;  // "Reset camera" was pressed
+  bool settings = false;             // the RenderSettings were edited
+  bool camera = false;               // the Camera was edited (projection, view angle)
+  bool resetCamera = false;          // "Reset camera" was pressed
   std::optional<AxisView> axisView;  // a view along an axis was asked for
   bool levelOfDetail = false;        // the level-of-detail checkbox changed
 };

@@ -27,6 +27,20 @@ const TransferFunction* LiveTransferFunction::drawAndApply(LodRenderer& lod,
   return &tf;
 }
 
+void LiveTransferFunction::buildFullLevel(LodRenderer& lod, const Classification& classification) {
+  if (!editor_) return;
+  lod.prepareFullLevel();  // a new set of renderers has none yet
+  const TransferFunction& tf = editor_->transferFunction();
+  if (SplatRenderer* full = lod.editTransferFunction(tf))
+    builder_.request(*volume_, tf, classification, full->maxSplats());
+}
+
+void LiveTransferFunction::buildFullSplats(LodRenderer& lod, const Classification& classification) {
+  if (!editor_) return;
+  if (SplatRenderer* full = lod.fullSplatRenderer())
+    builder_.request(*volume_, editor_->transferFunction(), classification, full->maxSplats());
+}
+
 bool LiveTransferFunction::takeBuilt(LodRenderer& lod, std::string* error) {
   try {
     std::optional<BuiltSplats> built = builder_.poll();

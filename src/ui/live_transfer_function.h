@@ -24,6 +24,12 @@ class LiveTransferFunction {
   // again, the full splat level only takes the new table) and a worker builds the full
   // level's set. Returns the edited function, or nullptr when nothing changed.
   const TransferFunction* drawAndApply(LodRenderer& lod, const Classification& classification);
+  // A new volume on screen: the full splat level gets the editor's function now and a worker
+  // builds its splats, so that no frame classifies the full volume itself.
+  void buildFullLevel(LodRenderer& lod, const Classification& classification);
+  // The full splat level's set for another classification (gradients, surface splats), built
+  // on the worker; the levels keep their functions.
+  void buildFullSplats(LodRenderer& lod, const Classification& classification);
   // Hands a finished set to the full level. Returns true when one arrived (it may also have
   // failed: then `*error` says why and the old set stays).
   bool takeBuilt(LodRenderer& lod, std::string* error);

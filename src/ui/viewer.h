@@ -24,11 +24,12 @@ struct ViewerConfig {
   std::string recordCameraPath;  // non-empty: every camera drawn is written here on exit
 };
 
-// Opens a window, renders `initial` with settings.renderer (switchable in the panel) and runs until the window closes (Escape, Q or the close
-// button). Mouse: left-drag orbits, right-drag or the wheel zooms, middle-drag or
-// shift+left-drag pans; R resets the camera, 1-6 look along +X -X +Y -Y +Z -Z, F12 saves a
-// screenshot, Ctrl+O opens a file. While the view moves a coarser level of detail is drawn;
-// full quality follows once input stops. Settings are saved to config.configDir on exit.
+// Opens a window, renders `initial` with settings.renderer (switchable in the panel) and runs
+// until the window closes (Escape, Q or the close button). Mouse: left-drag orbits, right-drag
+// or the wheel zooms, middle-drag or shift+left-drag pans; R resets the camera, 1-6 look along
+// +X -X +Y -Y +Z -Z, F12 saves a screenshot, Ctrl+O opens a file. While the view moves a
+// coarser level of detail is drawn; once input stops full quality is refined in steps over UI
+// frames (any input interrupts it). Settings are saved to config.configDir on exit.
 // Returns the process exit code: 0, or 1 with a one-line message on stderr when no window with
 // an OpenGL 4.5 core context can be made. Other failures (shader builds) throw.
 int runViewer(LoadedVolume initial, const ViewerConfig& config);

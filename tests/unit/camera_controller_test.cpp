@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "ui/camera_controller.h"
+#include "core/camera_controller.h"
 
 namespace ewa {
 namespace {

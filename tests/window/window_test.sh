@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Scripted window test: starts the real ewaview under X, replays an orbit drag, a scroll zoom and
-# a transfer-function drag with xdotool, and checks the screenshots change as they should.
+# a transfer-function drag with xdotool, and checks the screenshots change as they should; then
+# checks that an orbit drag is answered while a full-quality frame is being refined.
 # Usage: window_test.sh EWAVIEW_BINARY OUTPUT_DIR.  Exit 77 (CTest skip) without X tools, or
 # exit 1 when CI=true: CI must not pass by skipping.
 set -uo pipefail
@@ -165,4 +166,55 @@ while kill -0 "$pid" 2>/dev/null; do
 done
 wait "$pid"; rc=$?; pid=""
 [ "$rc" -eq 0 ] || fail "ewaview exited with $rc"
-echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1"
+
+# Refinement: a heavier volume whose full-quality frame is drawn in many small steps
+# (EWAVIEW_REFINE_BUDGET_MS=1: about a millisecond of GL work per UI frame). An orbit drag while
+# it refines must be answered by a moving frame before the refinement finishes, and the view
+# must refine again afterwards.
+log "refinement: starting a second window"
+: >"$work/stdout"
+mkdir -p "$work/config2"  # not the first window's saved transfer function and layout
+(cd "$work" && EWAVIEW_CONFIG_DIR="$work/config2" EWAVIEW_PRINT_LAYOUT=1 EWAVIEW_REFINE_BUDGET_MS=1 \
+  exec "$binary" --synthetic marschner-lobb:64 --slab-thickness 0.5 \
+  --resolution "$width,$height" >stdout 2>stderr) &
+pid=$!
+refining() { grep -q '^refine start' "$work/stdout"; }
+poll "a full-quality frame being refined" refining
+poll "the ewaview window" find_window
+refining_lines() { grep -c '' "$work/stdout"; }
+shot "$out/7_refining.png"
+before_drag=$(refining_lines)
+grep -q '^refine done' "$work/stdout" && fail "the refinement finished before the drag could start"
+xdotool mousemove --window "$wid" $mx $my; sleep 0.2
+drag_start=$SECONDS
+xdotool mousedown 1
+for step in 1 2 3 4; do xdotool mousemove --window "$wid" $((mx + 20 * step)) $my; sleep 0.1; done
+xdotool mouseup 1
+# The first frame drawn after the drag began must be a moving (coarse) one: the window answered
+# the input without finishing the full-quality frame first.
+moved() { tail -n +$((before_drag + 1)) "$work/stdout" | grep -q '^frame level [1-9]'; }
+poll "a moving frame after the drag" moved
+answer_s=$((SECONDS - drag_start))
+first_after=$(tail -n +$((before_drag + 1)) "$work/stdout" | grep -m1 '^frame level\|^refine done')
+case "$first_after" in
+  "frame level "[1-9]*) ;;
+  *) fail "the refinement finished ('$first_after') before the drag was answered" ;;
+esac
+[ "$answer_s" -le 20 ] || fail "the drag was answered only after ${answer_s}s"
+shot "$out/8_moved.png"
+moved_diff=$(differ "$out/7_refining.png" "$out/8_moved.png" "$volume_crop")
+greater "$moved_diff" $((290 * 600 / 50)) ||
+  fail "the orbit during refinement changed only $moved_diff pixels of the volume region"
+restarted() { tail -n +$((before_drag + 1)) "$work/stdout" | grep -q '^refine start'; }
+poll "the refinement to start again after the drag" restarted
+log "refinement answered the drag in ${answer_s}s ($moved_diff px)"
+xdotool key --window "$wid" q
+start=$SECONDS
+while kill -0 "$pid" 2>/dev/null; do
+  [ $((SECONDS - start)) -ge 60 ] && fail "Q did not close the second window"
+  sleep 0.3
+done
+wait "$pid"; rc=$?; pid=""
+[ "$rc" -eq 0 ] || fail "the second ewaview exited with $rc"
+
+echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1; drag during refinement answered in ${answer_s}s ($moved_diff px)"

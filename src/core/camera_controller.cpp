@@ -1,5 +1,5 @@
 // CameraController: turns mouse drags and scrolls into camera orbit, dolly and pan (no GL, no UI).
-#include "ui/camera_controller.h"
+#include "core/camera_controller.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,60 @@
+// ProgressiveRefinement: the window's full-quality frame drawn in chunks over several UI frames
+// under a time budget, so the window keeps answering input while it refines.
+#pragma once
+
+#include <chrono>
+#include <glm/vec2.hpp>
+
+#include "render/lod_renderer.h"
+
+namespace ewa {
+
+// How the last finished refinement went (statistics panel, frame log).
+struct RefinementReport {
+  double wallMs = 0.0;        // from its start to the full picture on screen
+  double workMs = 0.0;        // the steps' own time (GL work included: they wait for it)
+  int frames = 0;             // UI frames it took
+  double worstFrameMs = 0.0;  // the longest of those UI frames
+  int index = 0;              // 1 for the first finished refinement, 2 for the next...
+};
+
+class ProgressiveRefinement {
+ public:
+  // `budgetMs`: the most renderer time a UI frame gives the refinement; `frameTargetMs`: the
+  // UI frame time to stay under meanwhile (the budget shrinks when the rest of the frame,
+  // panel and swap, leaves less).
+  explicit ProgressiveRefinement(double budgetMs = 30.0, double frameTargetMs = 60.0);
+
+  // Starts the full frame of this view (abandoning one under way).
+  void start(LodRenderer& lod, const Camera& camera, const RenderSettings& settings,
+             glm::ivec2 size);
+  // Abandons the frame under way: the view, the size or a setting changed.
+  void cancel() { active_ = false; }
+  bool active() const { return active_; }
+  // Draws this UI frame's share; true when the full picture is done (lod.last() is it).
+  bool step(LodRenderer& lod);
+  // The UI frame that ran the last step took `ms` in all (only frames with a step count).
+  void reportFrame(double ms);
+  // The share drawn of the frame under way (0..1).
+  double progress(const LodRenderer& lod) const { return active_ ? lod.fullProgress() : 1.0; }
+  double budgetMs() const { return budgetMs_; }
+  // How long the last start or step took (the rest of its UI frame is events, panel, swap).
+  double lastStepMs() const { return lastStepMs_; }
+  // The last finished refinement; frames == 0 before the first.
+  const RefinementReport& last() const { return last_; }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+
+  double maxBudgetMs_;
+  double frameTargetMs_;
+  double budgetMs_;
+  bool active_ = false;
+  bool finishedThisFrame_ = false;  // the last step finished: its frame completes the report
+  double lastStepMs_ = 0.0;
+  Clock::time_point started_;
+  RefinementReport current_;
+  RefinementReport last_;
+};
+
+}  // namespace ewa

@@ -1,0 +1,87 @@
+// ViewerWindow's pictures written to files: screenshots, turntables, the recorded camera path.
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+#include <system_error>
+
+#include "core/camera_path.h"
+#include "io/atomic_file.h"
+#include "io/png_io.h"
+#include "ui/viewer_window.h"
+
+namespace ewa {
+
+// The cameras of the moving frames, replayable by ewaview-interact-bench --path.
+void ViewerWindow::saveRecording() {
+  if (config_.recordCameraPath.empty()) return;
+  try {
+    writeFileAtomically(config_.recordCameraPath,
+                        "# ewaview camera path recorded from the window (" + current_.name +
+                            "), one line per moving frame\n" + recorded_);
+    std::cerr << "ewaview: camera path written to " << config_.recordCameraPath << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "ewaview: " << e.what() << "\n";
+  }
+}
+
+void ViewerWindow::screenshot(const glm::ivec2& fb) {
+  try {
+    // Always the full-quality picture, even if a coarse one is on screen.
+    if (!hasImage_ || lod_.lastLevel() != 0) renderLevel(0, controller_.camera(), fb);
+    const std::string path =
+        std::filesystem::absolute(
+            screenshotFileName(saved_.screenshotDir, current_.name, std::time(nullptr)))
+            .lexically_normal()
+            .string();
+    writePng(path, lod_.last().readImage());
+    info("saved screenshot " + path);
+  } catch (const std::exception& e) {
+    error(e.what());
+  }
+}
+
+void ViewerWindow::startTurntable(int frames, const std::string& format, int fps) {
+  std::string folder =
+      std::filesystem::absolute(
+          screenshotFileName(saved_.screenshotDir, current_.name, std::time(nullptr)))
+          .lexically_normal()
+          .string();
+  folder = folder.substr(0, folder.size() - 4) + "-turntable";
+  try {
+    turntable_.sink = openFrameSink(format == "png" ? folder : folder + "." + format, frames, fps);
+  } catch (const std::exception& e) {
+    error(e.what());
+    return;
+  }
+  turntable_.total = frames;
+  turntable_.done = 0;
+  turntable_.start = controller_.camera();
+  turntable_.progress = std::make_unique<TerminalProgress>("ewaview: turntable");
+}
+
+// One turntable frame; ends the turntable after the last one.
+void ViewerWindow::turntableFrame(const glm::ivec2& fb) {
+  WindowTurntable& t = turntable_;
+  const std::string file = t.sink->fileOf(t.done);
+  try {
+    renderLevel(0, turntableCamera(t.start, t.done, t.total), fb);
+    renderedCamera_ = ~uint64_t(0);  // the view on screen is not the controller's camera
+    t.sink->add(lod_.last().readImage(), t.done);
+    if (t.done + 1 == t.total) t.sink->finish();
+  } catch (const std::exception& e) {
+    error(e.what());
+    t = WindowTurntable{};
+    return;
+  }
+  ++t.done;
+  t.progress->update(t.done, t.total, file);
+  if (t.done == t.total) {
+    t.progress->finish("done");
+    messages_.post(StatusMessages::Kind::Info,
+                   "saved " + std::to_string(t.total) + " frames in " + t.sink->description(),
+                   now());
+    t = WindowTurntable{};
+  }
+}
+
+}  // namespace ewa

@@ -1,0 +1,119 @@
+// ViewerWindow's volumes: opening files on a worker thread, adopting a loaded volume, the
+// renderers of the chosen kind and the full level's splat sets built elsewhere.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include "render/renderer_factory.h"
+#include "core/camera_views.h"
+#include "ui/viewer_window.h"
+
+namespace ewa {
+
+void ViewerWindow::info(const std::string& text) {
+  messages_.post(StatusMessages::Kind::Info, text, now());
+  std::cerr << "ewaview: " << text << "\n";
+}
+
+void ViewerWindow::error(const std::string& text) {
+  messages_.post(StatusMessages::Kind::Error, text, now());
+  std::cerr << "ewaview: " << text << "\n";
+}
+
+// Makes `loaded` the volume on screen (the old one stays alive until the renderers let go).
+void ViewerWindow::adopt(LoadedVolume loaded, bool newCamera) {
+  liveTf_.dropBuild();  // a build may still read the old volume
+  refinement_.cancel();
+  LoadedVolume old = std::move(current_);
+  current_ = std::move(loaded);
+  lod_.setVolume(*current_.volume, current_.coarse);
+  lod_.setTransferFunction(current_.tf);
+  policy_.resetMeasurements();
+  panel_.setVolume(current_.name, *current_.volume);
+  liveTf_.reset(
+      *current_.volume, current_.tf,
+      saved_.lastTransferFunction.empty() ? "transfer_function.json" : saved_.lastTransferFunction,
+      printLayout_);
+  if (newCamera) {
+    const glm::ivec2 fb = window_.framebufferSize();
+    Camera camera;
+    camera.viewAngleDeg = controller_.camera().viewAngleDeg;
+    camera.orthographic = controller_.camera().orthographic;
+    camera = initialVolumeView(camera, current_.volume->worldBoundsMin(),
+                               current_.volume->worldBoundsMax(),
+                               fb.y > 0 ? double(fb.x) / fb.y : 1.0, current_.volume->patientFrame());
+    controller_.restart(camera);
+  }
+  if (!current_.path.empty()) addRecentFile(saved_.recentFiles, current_.path);
+  const std::string problem = bookmarks_.open(current_.path, current_.name, config_.configDir);
+  if (!problem.empty()) error(problem);
+  hasImage_ = false;
+  buildPending_ = true;  // one frame says so before the first (slow) render classifies
+}
+
+void ViewerWindow::startLoad(const std::string& path) {
+  if (loadJob_.running()) {
+    error("still loading " + loadJob_.path() + "; try again when it is done");
+    return;
+  }
+  std::cerr << "ewaview: loading " << path << "\n";
+  loadJob_.start(path, config_.opener);
+}
+
+void ViewerWindow::pollLoad() {
+  std::optional<LoadedVolume> loaded;
+  std::string problem;
+  const double seconds = loadJob_.elapsedSeconds();
+  if (!loadJob_.poll(&loaded, &problem)) return;
+  if (!loaded) {
+    error(problem);  // the old volume stays
+    return;
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, " in %.1f s", seconds);
+  info("opened " + loaded->name + text);
+  // Uneven slices, a sheared grid: on stderr already (loadScene), and in the panel.
+  for (const std::string& note : loaded->volume->notes())
+    if (note.rfind("warning: ", 0) == 0) messages_.post(StatusMessages::Kind::Info, note, now());
+  adopt(std::move(*loaded), /*newCamera=*/true);
+}
+
+// Every level's renderer is of the kind settings_.renderer names (the panel switches it).
+LodRenderer::Factory ViewerWindow::rendererFactory() {
+  rendererKind_ = settings_.renderer;
+  return [this] { return createRenderer(settings_.renderer, shaders_); };
+}
+
+// A new set of renderers when the panel switched the renderer kind.
+void ViewerWindow::switchRendererIfAsked() {
+  if (settings_.renderer == rendererKind_) return;
+  liveTf_.dropBuild();
+  lod_ = LodRenderer(rendererFactory());
+  lod_.setVolume(*current_.volume, current_.coarse);
+  lod_.setTransferFunction(current_.tf);
+  policy_.resetMeasurements();
+  refinement_.cancel();
+  hasImage_ = false;
+}
+
+// Swaps in a splat set the worker finished; true when one arrived. Full quality on screen, or
+// being refined, is refined again with it (the old picture stays until then); a coarse
+// picture refines later anyway.
+bool ViewerWindow::takeBuiltSplats() {
+  std::string problem;
+  if (!liveTf_.takeBuilt(lod_, &problem)) return false;
+  if (!problem.empty())
+    error(problem + " (the window keeps running)");
+  else
+    fullSplatsArrived_ = hasImage_ && (lod_.lastLevel() == 0 || refinement_.active());
+  return true;
+}
+
+void ViewerWindow::openDialog() {
+  const std::string folder =
+      current_.path.empty() ? "" : std::filesystem::path(current_.path).parent_path().string();
+  fileDialog_.open(folder);
+}
+
+}  // namespace ewa

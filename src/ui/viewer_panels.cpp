@@ -1,0 +1,133 @@
+// ViewerWindow's panels and commands: the control, session and file panels, key commands,
+// dropped files, bookmarks and the settings saved on exit.
+#include <GLFW/glfw3.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include "io/atomic_file.h"
+#include "core/camera_views.h"
+#include "ui/viewer_window.h"
+
+namespace ewa {
+
+void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
+  imgui_.beginFrame();
+  Camera camera = controller_.camera();
+  const PanelEdits edits = panel_.draw(settings_, camera, levelOfDetail_, frameStats_);
+  if (edits.camera) controller_.setCamera(camera);
+  if (edits.resetCamera) controller_.reset();
+  if (edits.axisView) showAxisView(*edits.axisView, fb);
+  if (edits.settings) ++settingsRevision_;
+  if (const TransferFunction* tf = liveTf_.drawAndApply(lod_, settings_.classification))
+    current_.tf = *tf;
+  switchRendererIfAsked();
+  applySessionEdits(session_.draw(sessionView()), fb, screenshotNow);
+  if (const auto chosen = fileDialog_.draw()) startLoad(*chosen);
+  if (frameStats_.refineProgress >= 0.0) drawRefinementOverlay(frameStats_.refineProgress);
+}
+
+// Window size, render settings, recent files and the panel layout, for the next run.
+void ViewerWindow::saveSettings() {
+  if (config_.configDir.empty()) return;
+  int w = 0, h = 0;
+  glfwGetWindowSize(window_.window(), &w, &h);
+  if (w > 0 && h > 0) {
+    saved_.windowWidth = w;
+    saved_.windowHeight = h;
+  }
+  saved_.filter = settings_.filter;
+  saved_.renderMode = renderModeName(settings_.mode);
+  saved_.cutoff = settings_.cutoff;
+  saved_.slabThickness = settings_.slabThickness;
+  saved_.background = settings_.background;
+  saved_.levelOfDetail = levelOfDetail_;
+  std::string problem;
+  saved_.lastTransferFunction =
+      liveTf_.keep(config_.configDir, saved_.lastTransferFunction, &problem);
+  if (!problem.empty()) std::cerr << "ewaview: " << problem << "\n";
+  try {
+    saveViewerSettings(settingsPathIn(config_.configDir), saved_);
+    writeFileAtomically(imguiIniPathIn(config_.configDir), imgui_.saveLayout(), true);
+  } catch (const std::exception& e) {
+    std::cerr << "ewaview: " << e.what() << "\n";
+  }
+}
+
+void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
+  for (KeyCommand c : input_.takeCommands()) {
+    switch (c) {
+      case KeyCommand::Screenshot:
+        *screenshotNow = true;
+        break;
+      case KeyCommand::OpenFile:
+        openDialog();
+        break;
+      default: {
+        const int index = int(c) - int(KeyCommand::ViewPlusX);
+        showAxisView(kAxisViews[index], fb);
+      }
+    }
+  }
+  for (const std::string& path : input_.takeDroppedPaths()) {
+    startLoad(path);  // one volume at a time: the first drop wins, others say "still loading"
+    break;
+  }
+}
+
+void ViewerWindow::showAxisView(AxisView v, const glm::ivec2& fb) {
+  const Volume& volume = *current_.volume;
+  controller_.setCamera(cameraForAxisView(controller_.camera(), v, volume.worldBoundsMin(),
+                                          volume.worldBoundsMax(),
+                                          fb.y > 0 ? double(fb.x) / fb.y : 1.0,
+                                          volume.patientFrame()));
+}
+
+void ViewerWindow::applySessionEdits(const SessionEdits& e, const glm::ivec2& fb,
+                                     bool* screenshotNow) {
+  if (e.openDialog) openDialog();
+  if (e.openPath) startLoad(*e.openPath);
+  if (e.addBookmark) {
+    bookmarks_.list().push_back({*e.addBookmark, controller_.camera()});
+    saveBookmarks();
+  }
+  std::vector<CameraBookmark>& marks = bookmarks_.list();
+  if (e.applyBookmark >= 0 && e.applyBookmark < int(marks.size()))
+    controller_.setCamera(marks[size_t(e.applyBookmark)].camera);
+  if (e.deleteBookmark >= 0 && e.deleteBookmark < int(marks.size())) {
+    marks.erase(marks.begin() + e.deleteBookmark);
+    saveBookmarks();
+  }
+  if (e.screenshot) *screenshotNow = true;
+  if (e.turntableFrames > 0 && turntable_.total == 0)
+    startTurntable(e.turntableFrames, e.turntableFormat, e.turntableFps);
+  if (e.cancelTurntable && turntable_.total > 0) {
+    turntable_.progress->finish("cancelled");
+    turntable_ = WindowTurntable{};
+    renderedCamera_ = ~uint64_t(0);
+  }
+}
+
+SessionView ViewerWindow::sessionView() {
+  SessionView v;
+  v.recentFiles = &saved_.recentFiles;
+  v.bookmarks = &bookmarks_.list();
+  v.bookmarksPath = bookmarks_.path();
+  v.loading = loadJob_.running();
+  v.loadingPath = loadJob_.path();
+  v.loadingSeconds = loadJob_.elapsedSeconds();
+  if (buildPending_) v.busyText = "building splats for " + current_.name + "...";
+  v.turntableDone = turntable_.done;
+  v.turntableTotal = turntable_.total;
+  v.messages = &messages_.current(now());
+  return v;
+}
+
+void ViewerWindow::saveBookmarks() {
+  std::string note;
+  const std::string problem = bookmarks_.save(&note);
+  if (!problem.empty()) error(problem);
+  if (!note.empty()) info(note);
+}
+
+}  // namespace ewa

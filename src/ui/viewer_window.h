@@ -1,0 +1,144 @@
+// ViewerWindow: everything that lives as long as the viewer's window; its jobs are spread over
+// viewer.cpp (the loop and drawing), viewer_files.cpp (volumes and renderers),
+// viewer_capture.cpp (screenshots, turntables, recordings) and viewer_panels.cpp (panels, keys).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/camera_controller.h"
+#include "core/lod_policy.h"
+#include "gl/shader_library.h"
+#include "io/frame_names.h"
+#include "io/frame_sink.h"
+#include "io/terminal_progress.h"
+#include "platform/glfw_window_context.h"
+#include "render/lod_renderer.h"
+#include "ui/bookmark_store.h"
+#include "ui/control_panel.h"
+#include "ui/file_dialog.h"
+#include "ui/image_presenter.h"
+#include "ui/imgui_layer.h"
+#include "ui/live_transfer_function.h"
+#include "ui/progressive_refinement.h"
+#include "ui/session_panel.h"
+#include "ui/status_messages.h"
+#include "ui/viewer.h"
+#include "ui/window_input.h"
+
+namespace ewa {
+
+// A turntable being written from the window, one frame per loop iteration.
+struct WindowTurntable {
+  int total = 0;  // 0: none running
+  int done = 0;
+  Camera start;
+  std::unique_ptr<FrameSink> sink;  // PNG frames in a folder, or a video
+  std::unique_ptr<TerminalProgress> progress;
+};
+
+// Members are destroyed in reverse order, so GL objects go before the context and ImGui before
+// the callbacks it chains to.
+class ViewerWindow {
+ public:
+  ViewerWindow(platform::GlfwWindowContext& window, LoadedVolume initial,
+               const ViewerConfig& config);
+  void run();
+  // The cameras of the moving frames, replayable by ewaview-interact-bench --path.
+  void saveRecording();
+  // Window size, render settings, recent files and the panel layout, for the next run.
+  void saveSettings();
+
+ private:
+  using Clock = std::chrono::steady_clock;
+
+  // viewer.cpp: the loop, rendering and refinement.
+  double now() const;
+  bool busy() const;
+  bool refineDue() const;
+  double waitSeconds() const;
+  bool drawFrame();
+  // Renders one level of detail now, whole; returns the milliseconds it took.
+  double renderLevel(int level, const Camera& camera, const glm::ivec2& fb);
+  // Records a new picture on screen (rendered or refined) for the staleness checks and panel.
+  void noteImage(const glm::ivec2& fb);
+  void renderFailed(const std::exception& e, const glm::ivec2& fb);
+  // The progressive full-quality frame: start it, or draw this frame's share of it.
+  bool refine(const glm::ivec2& fb);
+  void logFrame(double ms);
+
+  // viewer_files.cpp: volumes, their renderers and splat sets.
+  void info(const std::string& text);
+  void error(const std::string& text);
+  void adopt(LoadedVolume loaded, bool newCamera);
+  void startLoad(const std::string& path);
+  void pollLoad();
+  LodRenderer::Factory rendererFactory();
+  void switchRendererIfAsked();
+  bool takeBuiltSplats();
+  void openDialog();
+
+  // viewer_capture.cpp: pictures written to files.
+  void screenshot(const glm::ivec2& fb);
+  // `format`: "png" (a folder of frames), "mp4" or "webm" (a video at `fps`).
+  void startTurntable(int frames, const std::string& format, int fps);
+  void turntableFrame(const glm::ivec2& fb);
+
+  // viewer_panels.cpp: the panels, key commands and bookmarks.
+  void drawPanels(const glm::ivec2& fb, bool* screenshotNow);
+  void applyCommands(const glm::ivec2& fb, bool* screenshotNow);
+  void showAxisView(AxisView v, const glm::ivec2& fb);
+  void applySessionEdits(const SessionEdits& e, const glm::ivec2& fb, bool* screenshotNow);
+  SessionView sessionView();
+  void saveBookmarks();
+
+  platform::GlfwWindowContext& window_;
+  ViewerConfig config_;
+  ViewerSettings saved_;
+  Clock::time_point epoch_ = Clock::now();
+  gl::ShaderLibrary shaders_;
+  LoadedVolume current_;
+  LodRenderer lod_;
+  RendererKind rendererKind_ = RendererKind::Splat;
+  std::string renderError_;  // the last render failure, until a render succeeds
+  LodPolicy policy_;
+  ProgressiveRefinement refinement_;
+  ImagePresenter presenter_;
+  CameraController controller_;
+  RenderSettings settings_;
+  WindowInput input_;
+  ImGuiLayer imgui_;
+  ControlPanel panel_;
+  SessionPanel session_;
+  LiveTransferFunction liveTf_;  // after current_ and lod_: its worker ends before they go
+  FileDialog fileDialog_;
+  StatusMessages messages_;
+  VolumeLoadJob loadJob_;
+  BookmarkStore bookmarks_;
+  WindowTurntable turntable_;
+  std::string recorded_;  // camera path lines, when recording
+
+  FrameStats frameStats_;
+  bool levelOfDetail_ = true;
+  bool printLayout_ = false;  // EWAVIEW_PRINT_LAYOUT=1: layout and frame lines on stdout
+  bool frameLog_ = false;     // EWAVIEW_FRAME_LOG=1: every frame's time on stderr
+  bool fullSplatsArrived_ = false;
+  bool calibrate_ = false;                      // the next full frame picks the first moving level
+  bool refineFailed_ = false;                   // retried after the next change, not every frame
+  std::optional<Classification> fullBuildFor_;  // the last full splat set asked of the worker
+  int reportedRefinement_ = 0;                  // RefinementReport::index last shown and logged
+  uint64_t renderedTf_ = 0;
+  bool hasNvx_ = false;
+  bool buildPending_ = false;
+  uint64_t settingsRevision_ = 0;
+  bool hasImage_ = false;
+  uint64_t renderedCamera_ = 0;
+  uint64_t renderedSettings_ = 0;
+  glm::ivec2 renderedSize_{0, 0};
+  Clock::time_point lastChange_ = Clock::now();
+};
+
+}  // namespace ewa

@@ -1,0 +1,276 @@
+// Progressive frames: beginFrame + stepFrame with a tiny budget draw the same picture as
+// render(), in many steps, while readImage() keeps the last complete picture until the end.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "core/synthetic_volume.h"
+#include "gl/shader_library.h"
+#include "image_compare.h"
+#include "io/png_io.h"
+#include "render/lod_renderer.h"
+#include "render_fixture.h"
+#include "ui/progressive_refinement.h"
+
+namespace ewa::test {
+namespace {
+
+class ProgressiveFrame : public RenderFixture {};
+
+// A budget no step can meet: every step draws the least it may (a slab's smallest range of
+// entries; X-ray and MIP: the smallest range of their one slab).
+constexpr double kTinyBudgetMs = 1e-6;
+
+int maxDifference(const Image8& a, const Image8& b) {
+  EXPECT_EQ(a.width, b.width);
+  EXPECT_EQ(a.height, b.height);
+  if (a.pixels.size() != b.pixels.size()) return 255;
+  int worst = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i)
+    worst = std::max(worst, std::abs(int(a.pixels[i]) - int(b.pixels[i])));
+  return worst;
+}
+
+double meanValue(const Image8& a) {
+  double sum = 0.0;
+  for (uint8_t v : a.pixels) sum += v;
+  return sum / double(std::max<size_t>(1, a.pixels.size()));
+}
+
+struct Stepped {
+  Image8 image;
+  int steps = 0;
+  RenderStats stats;
+};
+
+// Steps a frame to the end, checking after every unfinished step that the picture shown is
+// still `previous` and that the progress grows.
+Stepped stepToEnd(SplatRenderer& r, const Camera& cam, const RenderSettings& settings, int size,
+                  const Image8& previous) {
+  Stepped out;
+  r.beginFrame(cam, settings, size, size);
+  EXPECT_EQ(r.frameProgress(), 0.0);
+  double progress = 0.0;
+  while (!r.stepFrame(kTinyBudgetMs)) {
+    ++out.steps;
+    EXPECT_GT(r.frameProgress(), progress);
+    EXPECT_LT(r.frameProgress(), 1.0);
+    progress = r.frameProgress();
+    if (out.steps % 7 == 1) {  // reading back is slow; every few steps is enough
+      const Image8 shown = r.readImage();
+      EXPECT_EQ(maxDifference(shown, previous), 0) << "step " << out.steps;
+    }
+    if (out.steps > 100000) break;
+  }
+  ++out.steps;
+  EXPECT_EQ(r.frameProgress(), 1.0);
+  out.image = r.readImage();
+  out.stats = r.stats();
+  return out;
+}
+
+class ProgressiveModes : public ProgressiveFrame,
+                         public ::testing::WithParamInterface<const char*> {};
+
+// Stepping draws the same GL work in the same order as render(): the pictures are expected
+// equal; the tolerance is one level per channel (of 255) for a driver that rounds a blend
+// differently across a glFinish.
+TEST_P(ProgressiveModes, TinyBudgetStepsGiveRendersPicture) {
+  const std::string mode = GetParam();
+  const SyntheticVolume s = makeSyntheticVolume("marschner-lobb:32");
+  // Early termination needs a picture that turns opaque: a dense cube filling the view.
+  const Volume cube = makeVolume(24, 24, 24, glm::dvec3(1.0), [](int, int, int) { return true; });
+  const bool terminate = mode == "terminate";
+  const Volume& volume = terminate ? cube : s.volume;
+  SplatRenderer& r = *renderer();
+  r.setVolume(volume);
+  r.setTransferFunction(terminate ? whiteTf(0.9, 1.0) : *s.transferFunction);
+  RenderSettings settings;
+  settings.slabThickness = 1.0;  // many slabs: many steps
+  if (mode == "back-to-front") settings.order = CompositeOrder::BackToFront;
+  if (mode == "xray") settings.mode = RenderMode::XRay;
+  if (mode == "mip") settings.mode = RenderMode::Mip;
+  if (mode == "shading") settings.lighting.enabled = true;
+  Camera a, b;
+  a.frame(volume.boundsMin(), volume.boundsMax(), {0.2, 0.3, 1.0}, {0, 1, 0}, 1.0);
+  b.frame(volume.boundsMin(), volume.boundsMax(), {1.0, -0.4, 0.3}, {0, 0, 1}, 1.0);
+  if (terminate) {  // head-on, the front face covering the whole image
+    b = Camera{};
+    b.focalPoint = {11.5, 11.5, 11.5};
+    b.position = {11.5, 11.5, 60.0};
+    b.viewAngleDeg = 15.0;
+  }
+  constexpr int kSize = 96;
+  r.render(a, settings, kSize, kSize);
+  const Image8 before = r.readImage();
+  r.render(b, settings, kSize, kSize);
+  const Image8 whole = r.readImage();
+  const RenderStats wholeStats = r.stats();
+  ASSERT_GT(meanValue(whole), 3.0) << "nothing to compare";
+  ASSERT_GT(maxDifference(before, whole), 20) << "the two views must differ";
+
+  r.render(a, settings, kSize, kSize);
+  const Stepped stepped = stepToEnd(r, b, settings, kSize, before);
+  writePng(testOutputDir() + "/progressive_" + mode + ".png", stepped.image);
+  EXPECT_LE(maxDifference(stepped.image, whole), 1) << mode;
+  EXPECT_EQ(stepped.stats.slabsDrawn, wholeStats.slabsDrawn);
+  EXPECT_EQ(stepped.stats.slabEntries, wholeStats.slabEntries);
+  if (settings.mode == RenderMode::Composite) {
+    // A step draws one slab, or one range of at most 512 of a slab's entries (the first step
+    // of a fresh renderer, before anything is measured: up to 2048): the slabs here are
+    // bigger, so they are drawn in ranges over several steps.
+    EXPECT_GE(size_t(stepped.steps), wholeStats.slabsDrawn - 2048 / 512);
+    EXPECT_GE(size_t(stepped.steps), (wholeStats.slabEntries - 2048) / 512);
+    EXPECT_GT(wholeStats.slabEntries / wholeStats.slabsDrawn, 512u);
+    EXPECT_GT(wholeStats.slabsDrawn, terminate ? 4u : 10u);
+    if (mode == "terminate") {
+      EXPECT_LT(wholeStats.slabsDrawn, wholeStats.slabs);
+    }
+  } else {
+    // The smallest range of entries a step (1024; the first step of a fresh renderer: 4096):
+    // several steps for this volume.
+    EXPECT_GE(size_t(stepped.steps), (wholeStats.slabEntries - 4096) / 1024);
+    EXPECT_GT(stepped.steps, 3);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, ProgressiveModes,
+                         ::testing::Values("front-to-back", "back-to-front", "terminate", "xray",
+                                           "mip", "shading"));
+
+// A budget that never runs out draws the whole frame in the first step, also when the step
+// before was cut short inside a slab (a fresh renderer's first, unmeasured chunk).
+TEST_F(ProgressiveFrame, AmpleBudgetFinishesInOneStep) {
+  const SyntheticVolume s = makeSyntheticVolume("marschner-lobb:32");
+  const gl::ShaderLibrary shaders;
+  SplatRenderer r(shaders);
+  r.setVolume(s.volume);
+  r.setTransferFunction(*s.transferFunction);
+  RenderSettings settings;
+  settings.slabThickness = 6.0;  // slabs of more entries than a first chunk holds
+  Camera cam;
+  cam.frame(s.volume.boundsMin(), s.volume.boundsMax(), {0.2, 0.3, 1.0}, {0, 1, 0}, 1.0);
+  r.render(cam, settings, 64, 64);
+  const Image8 whole = r.readImage();
+  ASSERT_GT(r.stats().slabEntries / r.stats().slabsDrawn, 2048u);
+  r.beginFrame(cam, settings, 64, 64);
+  EXPECT_FALSE(r.stepFrame(kTinyBudgetMs));  // inside the first slab
+  EXPECT_TRUE(r.stepFrame(1e30));
+  EXPECT_LE(maxDifference(r.readImage(), whole), 1);
+  for (double budget : {1e30, 1e6}) {
+    r.beginFrame(cam, settings, 64, 64);
+    EXPECT_TRUE(r.stepFrame(budget)) << budget;
+    EXPECT_LE(maxDifference(r.readImage(), whole), 1) << budget;
+  }
+}
+
+// A new beginFrame abandons the frame under way: the next one starts clean.
+TEST_F(ProgressiveFrame, AbandonedFrameLeavesNoTrace) {
+  const SyntheticVolume s = makeSyntheticVolume("sphere:24");
+  SplatRenderer& r = *renderer();
+  r.setVolume(s.volume);
+  r.setTransferFunction(*s.transferFunction);
+  RenderSettings settings;
+  settings.slabThickness = 1.0;
+  Camera a, b;
+  a.frame(s.volume.boundsMin(), s.volume.boundsMax(), {0.0, 0.0, 1.0}, {0, 1, 0}, 1.0);
+  b.frame(s.volume.boundsMin(), s.volume.boundsMax(), {0.6, 0.0, 1.0}, {0, 1, 0}, 1.0);
+  r.render(b, settings, 64, 64);
+  const Image8 whole = r.readImage();
+  r.beginFrame(a, settings, 64, 64);
+  for (int i = 0; i < 5; ++i) ASSERT_FALSE(r.stepFrame(kTinyBudgetMs));
+  r.beginFrame(b, settings, 64, 64);
+  while (!r.stepFrame(kTinyBudgetMs)) {
+  }
+  EXPECT_LE(maxDifference(r.readImage(), whole), 1);
+}
+
+// LodRenderer's full level stepped: the coarse picture stays last() until the frame is done.
+TEST_F(ProgressiveFrame, LodRendererKeepsCoarseLevelUntilFullFrameIsDone) {
+  const SyntheticVolume s = makeSyntheticVolume("marschner-lobb:32");
+  const gl::ShaderLibrary shaders;
+  LodRenderer lod([&shaders] { return std::make_unique<SplatRenderer>(shaders); });
+  lod.setVolume(s.volume, buildLodVolumes(s.volume));
+  lod.setTransferFunction(*s.transferFunction);
+  Camera cam;
+  cam.frame(s.volume.boundsMin(), s.volume.boundsMax(), {0.3, 0.4, 1.0}, {0, 1, 0}, 1.0);
+  RenderSettings settings;
+  settings.slabThickness = 1.0;
+  lod.render(0, cam, settings, 64, 64);
+  const Image8 full = lod.last().readImage();
+  lod.render(3, cam, settings, 64, 64);
+  const unsigned coarseTexture = lod.outputTexture();
+  ASSERT_EQ(lod.lastLevel(), 3);
+  lod.beginFull(cam, settings, 64, 64);
+  int steps = 0;
+  while (!lod.stepFull(kTinyBudgetMs)) {
+    ++steps;
+    EXPECT_TRUE(lod.fullPending());
+    EXPECT_EQ(lod.lastLevel(), 3);
+    EXPECT_EQ(lod.outputTexture(), coarseTexture);
+    EXPECT_LT(lod.fullProgress(), 1.0);
+  }
+  EXPECT_GT(steps, 10);
+  EXPECT_FALSE(lod.fullPending());
+  EXPECT_EQ(lod.lastLevel(), 0);
+  EXPECT_EQ(lod.imageWidth(), 64);
+  EXPECT_NE(lod.outputTexture(), coarseTexture);
+  EXPECT_LE(maxDifference(lod.last().readImage(), full), 1);
+}
+
+// The window's scheduler: the budget is what the UI frame target leaves beside the rest of the
+// frame, between 4 ms and the most it was given; a finished refinement reports its steps.
+TEST_F(ProgressiveFrame, RefinementBudgetAdaptsAndReportsItsFrames) {
+  const SyntheticVolume s = makeSyntheticVolume("marschner-lobb:32");
+  const gl::ShaderLibrary shaders;
+  LodRenderer lod([&shaders] { return std::make_unique<SplatRenderer>(shaders); });
+  lod.setVolume(s.volume, buildLodVolumes(s.volume));
+  lod.setTransferFunction(*s.transferFunction);
+  Camera cam;
+  cam.frame(s.volume.boundsMin(), s.volume.boundsMax(), {0.3, 0.4, 1.0}, {0, 1, 0}, 1.0);
+  RenderSettings settings;
+  settings.slabThickness = 1.0;
+  lod.render(0, cam, settings, 64, 64);
+  const Image8 full = lod.last().readImage();
+  lod.render(4, cam, settings, 64, 64);
+
+  ProgressiveRefinement budgeted(30.0, 50.0);
+  budgeted.start(lod, cam, settings, {64, 64});
+  EXPECT_TRUE(budgeted.active());
+  budgeted.reportFrame(budgeted.lastStepMs() + 35.0);  // 35 ms besides the step: 15 left
+  EXPECT_NEAR(budgeted.budgetMs(), 15.0, 1e-9);
+  budgeted.reportFrame(budgeted.lastStepMs() + 100.0);  // over the target: the least
+  EXPECT_NEAR(budgeted.budgetMs(), 4.0, 1e-9);
+  budgeted.reportFrame(budgeted.lastStepMs() + 1.0);  // never above the most it was given
+  EXPECT_NEAR(budgeted.budgetMs(), 30.0, 1e-9);
+  budgeted.cancel();
+  EXPECT_FALSE(budgeted.active());
+  EXPECT_FALSE(budgeted.step(lod));
+
+  // A budget no step can meet: many UI frames, each reported.
+  ProgressiveRefinement tiny(kTinyBudgetMs, 50.0);
+  tiny.start(lod, cam, settings, {64, 64});
+  int frames = 0;
+  bool done = false;
+  while (!done && frames < 100000) {
+    done = tiny.step(lod);
+    ++frames;
+    tiny.reportFrame(tiny.lastStepMs() + 1.0);
+    if (!done) {
+      EXPECT_EQ(lod.lastLevel(), 4);
+      EXPECT_LT(tiny.progress(lod), 1.0);
+    }
+  }
+  EXPECT_GT(frames, 10);
+  EXPECT_FALSE(tiny.active());
+  EXPECT_EQ(tiny.last().frames, frames);
+  EXPECT_EQ(tiny.last().index, 1);
+  EXPECT_GE(tiny.last().wallMs, tiny.last().workMs * 0.99);
+  EXPECT_GT(tiny.last().worstFrameMs, 0.0);
+  EXPECT_EQ(lod.lastLevel(), 0);
+  EXPECT_LE(maxDifference(lod.last().readImage(), full), 1);
+}
+
+}  // namespace
+}  // namespace ewa::test
