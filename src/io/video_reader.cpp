@@ -11,15 +11,11 @@ extern "C" {
 #include <libswscale/swscale.h>
 }
 
+#include "io/av_error.h"
+
 namespace ewa {
 
 namespace {
-
-std::string avError(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {0};
-  av_strerror(code, text, sizeof text);
-  return text;
-}
 
 // Owns the FFmpeg objects of one decode, freed on every path.
 struct Decoder {

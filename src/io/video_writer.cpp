@@ -18,15 +18,11 @@ extern "C" {
 
 #include "io/atomic_file.h"
 
+#include "io/av_error.h"
+
 namespace ewa {
 
 namespace {
-
-std::string avError(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {0};
-  av_strerror(code, text, sizeof text);
-  return text;
-}
 
 struct Codec {
   const char* muxer;
