@@ -1,5 +1,6 @@
 // Per-splat setup shared by the point-sprite and quad vertex shaders.
 #include "ewa_footprint.glsl"
+#include "kernel_reach.glsl"
 
 layout(std430, binding = 0) readonly buffer Splats { uvec2 splats[]; };
 layout(std430, binding = 1) readonly buffer Order { uint order[]; };
@@ -11,7 +12,7 @@ uniform mat3 uCovariance;    // camera-space kernel covariance W V'' W^T
 uniform vec3 uOrigin;
 uniform vec3 uSpacing;
 uniform float uVoxelVolume;  // sx * sy * sz: g = tau * voxel volume
-uniform float uKernelRadius; // world bounding radius of a kernel, for culling
+uniform float uMaxSpacing;   // largest voxel spacing: a kernel's largest standard deviation
 uniform bool uOrthographic;
 uniform float uFocalPixels;
 uniform float uPixelsPerUnit;
@@ -19,7 +20,7 @@ uniform vec2 uViewport;
 uniform int uFilter;
 uniform float uCutoff;
 uniform float uMinSpacing;
-uniform float uNearDepth;
+uniform float uCullDepth;    // kernels at or nearer than this camera depth are culled
 uniform uint uFirst;         // offset of this draw's slab in order[]
 uniform sampler1D uTransfer; // rgb + extinction tau per world unit
 uniform float uSurfaceTau;   // optical depth of a surface-splat layer along its normal
@@ -41,6 +42,12 @@ flat out int vOpen;          // 1: first slab of this splat, 2: last slab (open 
 const uint kFirstSlab = 0x80000000u;
 const uint kLastSlab = 0x40000000u;
 const uint kIndexMask = 0x3fffffffu;
+
+// The reach of this frame's kernels (src/core/kernel_reach.h).
+KernelReach kernelReach() {
+  return KernelReach(uCutoff, uMaxSpacing, uMinSpacing, uFilter == kFilterSwan, uOrthographic,
+                     uFocalPixels, uPixelsPerUnit);
+}
 
 // The mirror of headlightShade in src/core/shading.cpp.
 vec3 headlightShade(vec3 rgb, vec3 normal, vec3 toEye) {
@@ -76,12 +83,9 @@ bool setupSplat(uint n, out Footprint fp) {
   vec3 u = (uView * vec4(world, 1.0)).xyz;
   Projection proj = Projection(uOrthographic, uFocalPixels, uPixelsPerUnit, 0.5 * uViewport,
                                uViewport);
-  FootprintParams params = FootprintParams(uFilter, uCutoff, uMinSpacing, uNearDepth);
-  // Cull before forming the Jacobian; Swan's stretch and the low-pass filter widen kernels.
-  float pixelWorld = uOrthographic ? 1.0 / uPixelsPerUnit : max(-u.z, 0.0) / uFocalPixels;
-  float stretch = uFilter == kFilterSwan ? max(1.0, pixelWorld / uMinSpacing) : 1.0;
-  float radius = uKernelRadius * stretch + sqrt(uCutoff) * pixelWorld;
-  if (cullKernel(u, radius, proj, params)) return false;
+  FootprintParams params = FootprintParams(uFilter, uCutoff, uMinSpacing, uCullDepth);
+  // Cull before forming the Jacobian.
+  if (cullKernel(u, worldReach(kernelReach(), -u.z), proj, params)) return false;
   fp = computeFootprint(u, cov, proj, params);
   if (!fp.visible) return false;
   vCenter = fp.center;

@@ -1,5 +1,8 @@
-// RenderTargets: the float slab, accumulation, stencil and 8-bit output images of one viewport size.
+// RenderTargets: the float slab, accumulation, stencil and 8-bit output images of one viewport
+// size.
 #pragma once
+
+#include <cstddef>
 
 #include "gl/framebuffer.h"
 #include "gl/texture.h"
@@ -9,16 +12,18 @@ namespace ewa {
 struct RenderTargets {
   int width = 0;
   int height = 0;
-  gl::Texture slab;    // RGBA32F: (sum of colour * optical depth, sum of optical depth)
-  gl::Texture accum;   // RGBA32F: premultiplied colour and opacity, front to back
-  gl::Texture output;  // RGBA8: the final picture over the background
-  gl::Texture stencil; // DEPTH24_STENCIL8, shared by slab and accumulation: opaque pixels
+  gl::Texture slab;     // RGBA32F: (sum of colour * optical depth, sum of optical depth)
+  gl::Texture accum;    // RGBA32F: premultiplied colour and opacity, front to back
+  gl::Texture output;   // RGBA8: the final picture over the background
+  gl::Texture stencil;  // DEPTH24_STENCIL8, shared by slab and accumulation: opaque pixels
   gl::Framebuffer slabFbo;
   gl::Framebuffer accumFbo;
   gl::Framebuffer outputFbo;
 
   // (Re)creates the images when the size changes; throws gl::GlError if incomplete.
   void resize(int w, int h);
+  // Bytes the images hold: two RGBA32F, one RGBA8, one depth-stencil (4 bytes) per pixel.
+  size_t bytes() const { return size_t(width) * size_t(height) * (16 + 16 + 4 + 4); }
 };
 
 }  // namespace ewa
