@@ -46,6 +46,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--record-camera-path", o->recordCameraPath,
                  "Window: write the cameras of the session to this file on exit, for "
                  "ewaview-interact-bench --path");
+  app.add_flag("--stats", o->stats,
+               "With --output: print the frame's statistics as one JSON line (times, splats, "
+               "gpu_bytes, gpu_bytes_per_splat, peak_rss)");
   app.add_flag("--info", o->info,
                "Print dims, spacing, type, value range, direction and notes as JSON and exit");
   app.add_option("--series", o->load.series, "DICOM: open the series with this SeriesInstanceUID");
@@ -115,6 +118,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!o->rawDims.empty() && o->rawType.empty()) return usage("--raw-dims needs --raw-type");
   if (!o->rawDims.empty() && o->file.empty()) return usage("--raw-dims needs a FILE");
   if (o->turntable > 0 && o->output.empty()) return usage("--turntable needs --output");
+  if (o->stats && (o->output.empty() || o->turntable > 0))
+    return usage("--stats needs --output (one picture, no --turntable)");
   // "series/" and "series" are one folder (and name one bookmarks file beside it).
   while (o->file.size() > 1 && o->file.back() == '/') o->file.pop_back();
   o->resolutionGiven = !res.empty();
