@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/clip_options.h"
 #include "app/render_options.h"
 #include "app/version.h"
 
@@ -73,6 +74,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       ->check(CLI::IsMember({"composite", "xray", "mip"}));
   RenderOptionText renderText;
   addShadingOptions(app, o->render, renderText);
+  ClipOptionText clipText;
+  addClipOptions(app, clipText);
   app.add_option("--cutoff", o->render.cutoff, "Footprint cutoff r = dx^T Q dx (default 4)")
       ->check(CLI::Range(0.25, 64.0));
   app.add_option("--slab-thickness", o->render.slabThickness,
@@ -136,6 +139,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   parseFilterMode(filter, &o->render.filter);
   parseRenderMode(mode, &o->render.mode);
   if (const std::string e = finishShadingOptions(renderText, &o->render); !e.empty()) return usage(e);
+  if (const std::string e = finishClipOptions(clipText, &o->render.clip); !e.empty())
+    return usage(e);
   parseRendererKind(rendererName, &o->render.renderer);
   parseTableLookup(lookup, &o->render.shearWarp.lookup);
   parseBufferSlices(buffers, &o->render.shearWarp.buffers);
