@@ -1,5 +1,6 @@
 // Per-splat setup shared by the point-sprite and quad vertex shaders.
 #include "ewa_footprint.glsl"
+#include "clip_region.glsl"
 #include "kernel_reach.glsl"
 
 layout(std430, binding = 0) readonly buffer Splats { uvec2 splats[]; };
@@ -85,7 +86,11 @@ bool setupSplat(uint n, out Footprint fp) {
                                uViewport);
   FootprintParams params = FootprintParams(uFilter, uCutoff, uMinSpacing, uCullDepth);
   // Cull before forming the Jacobian.
-  if (cullKernel(u, worldReach(kernelReach(), -u.z), proj, params)) return false;
+  float radius = worldReach(kernelReach(), -u.z);
+  if (cullKernel(u, radius, proj, params)) return false;
+  // Kernels wholly outside the crop box or a clipping plane; twice the cutoff radius, so the
+  // Gaussian tail a culled kernel would have left on the kept side is negligible.
+  if (clipCullsKernel(u, 2.0 * radius)) return false;
   fp = computeFootprint(u, cov, proj, params);
   if (!fp.visible) return false;
   vCenter = fp.center;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "gl/gl_error.h"
+#include "render/clip_uniforms.h"
 
 namespace ewa {
 
@@ -152,6 +153,7 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setFloat("uSpecular", float(light.specular));
   p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
   p.setInt("uMode", int(settings.mode));
+  setClipUniforms(p, settings.clip, *volume_, camera, proj);
 }
 
 void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails) {
