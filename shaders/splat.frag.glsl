@@ -11,6 +11,7 @@ uniform bool uSplitDepth;   // composite: take only the share between the slab's
 uniform bool uOpenTails;    // the first and last slab of a kernel take its tails
 uniform float uSlabNear;
 uniform float uSlabFar;
+uniform bool uPost;         // post-classification: sum weight * value and weight * normal
 
 flat in vec2 vCenter;
 flat in vec3 vConic;
@@ -21,7 +22,11 @@ flat in vec3 vDepth;
 flat in float vDepthSigma;
 flat in int vOpen;
 
-out vec4 outColor;  // (colour * optical depth, optical depth), blended additively in a slab
+// Blended additively in a slab. pre: (colour * optical depth, optical depth). post: (weight *
+// value, 0, 0, weight) and (weight * normal, 0), the weight being the optical depth a unit
+// extinction would give (world length of the ray the kernel covers).
+layout(location = 0) out vec4 outColor;
+layout(location = 1) out vec4 outNormal;
 
 void main() {
   vec2 dx = gl_FragCoord.xy - vCenter;
@@ -38,5 +43,11 @@ void main() {
     depth *= slabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, uOpenTails && (vOpen & 1) != 0,
                           uOpenTails && (vOpen & 2) != 0);
   }
+  if (uPost) {
+    outColor = vec4(vValue * depth, 0.0, 0.0, depth);
+    outNormal = vec4(vColor * depth, 0.0);
+    return;
+  }
   outColor = vec4(vColor * depth, depth);
+  outNormal = vec4(0.0);
 }

@@ -19,7 +19,7 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   if (edits.resetCamera) controller_.reset();
   if (edits.axisView) showAxisView(*edits.axisView, fb);
   if (edits.settings) ++settingsRevision_;
-  if (const TransferFunction* tf = liveTf_.drawAndApply(lod_, settings_.classification))
+  if (const TransferFunction* tf = liveTf_.drawAndApply(lod_, splatClassification(settings_)))
     current_.tf = *tf;
   switchRendererIfAsked();
   applySessionEdits(session_.draw(sessionView()), fb, screenshotNow);
@@ -39,6 +39,8 @@ void ViewerWindow::saveSettings() {
   saved_.filter = settings_.filter;
   saved_.renderMode = renderModeName(settings_.mode);
   saved_.cutoff = settings_.cutoff;
+  saved_.kernelWidth = settings_.kernelWidth;
+  saved_.classification = classificationModeName(settings_.classification.mode);
   saved_.slabThickness = settings_.slabThickness;
   saved_.background = settings_.background;
   saved_.levelOfDetail = levelOfDetail_;
