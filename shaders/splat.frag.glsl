@@ -1,6 +1,7 @@
 // Splat fragment: optical depth g * |det J| * windowed Gaussian * the share of the kernel's ray
 // integral inside this slab, and emitted colour, added up; or for MIP the value, maximized.
 #include "ewa_footprint.glsl"
+#include "clip_region.glsl"
 
 // Pixels marked opaque in the stencil are skipped before the shader runs.
 layout(early_fragment_tests) in;
@@ -33,16 +34,21 @@ void main() {
   float r = vConic.x * dx.x * dx.x + 2.0 * vConic.y * dx.x * dx.y + vConic.z * dx.y * dx.y;
   if (r > uCutoff) discard;
   float w = windowedGaussian(r, uCutoff);
+  float mu = vDepth.x + dot(vDepth.yz, dx);
+  bool openNear = !uSplitDepth || (uOpenTails && (vOpen & 1) != 0);
+  bool openFar = !uSplitDepth || (uOpenTails && (vOpen & 2) != 0);
+  // Cropped or clipped: the slab's share of the kernel on the kept side, in one erf difference.
+  if (uClipCount > 0)
+    w *= clippedSlabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar,
+                             clippedDepths(gl_FragCoord.xy));
+  else if (uSplitDepth)
+    w *= slabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar);
   if (uMode == 2) {
     outColor = vec4(vValue * w, 0.0, 0.0, 0.0);  // blended with GL_MAX
+    outNormal = vec4(0.0);
     return;
   }
   float depth = vAmplitude * w;
-  if (uSplitDepth) {
-    float mu = vDepth.x + dot(vDepth.yz, dx);
-    depth *= slabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, uOpenTails && (vOpen & 1) != 0,
-                          uOpenTails && (vOpen & 2) != 0);
-  }
   if (uPost) {
     outColor = vec4(vValue * depth, 0.0, 0.0, depth);
     outNormal = vec4(vColor * depth, 0.0);

@@ -1,5 +1,6 @@
 // Per-splat setup shared by the point-sprite and quad vertex shaders.
 #include "ewa_footprint.glsl"
+#include "clip_region.glsl"
 #include "headlight.glsl"
 
 layout(std430, binding = 0) readonly buffer Splats { uvec2 splats[]; };
@@ -76,6 +77,9 @@ bool setupSplat(uint n, out Footprint fp) {
   float stretch = uFilter == kFilterSwan ? max(1.0, pixelWorld / uMinSpacing) : 1.0;
   float radius = uKernelRadius * stretch + sqrt(uCutoff) * pixelWorld;
   if (cullKernel(u, radius, proj, params)) return false;
+  // Kernels wholly outside the crop box or a clipping plane; twice the cutoff radius, so the
+  // Gaussian tail a culled kernel would have left on the kept side is negligible.
+  if (clipCullsKernel(u, 2.0 * radius)) return false;
   fp = computeFootprint(u, cov, proj, params);
   if (!fp.visible) return false;
   vCenter = fp.center;

@@ -41,6 +41,15 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
     o.render.slabThickness = config.saved.slabThickness;
     o.render.background = config.saved.background;
   }
+  // The last session's crop box and planes, when it showed this volume and none are given.
+  const std::string clipKey =
+      options.synthetic.empty()
+          ? std::filesystem::absolute(options.file.empty() ? ewa::defaultVolumePath()
+                                                           : options.file)
+                .string()
+          : "synthetic:" + scene.name;
+  if (o.render.clip == ewa::ClipRegion{} && config.saved.clipVolume == clipKey)
+    o.render.clip = config.saved.clip;
   if (!o.tfFile.empty())
     config.saved.lastTransferFunction = std::filesystem::absolute(o.tfFile).string();
   config.width = o.width;

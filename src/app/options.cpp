@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/clip_options.h"
 #include "app/render_options.h"
 #include "app/version.h"
 #include "core/kernel_lattice.h"
@@ -47,6 +48,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--record-camera-path", o->recordCameraPath,
                  "Window: write the cameras of the session to this file on exit, for "
                  "ewaview-interact-bench --path");
+  app.add_flag("--stats", o->stats,
+               "With --output: print the frame's statistics as one JSON line (times, splats, "
+               "gpu_bytes, gpu_bytes_per_splat, peak_rss)");
   app.add_flag("--info", o->info,
                "Print dims, spacing, type, value range, direction and notes as JSON and exit");
   app.add_option("--series", o->load.series, "DICOM: open the series with this SeriesInstanceUID");
@@ -71,6 +75,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       ->check(CLI::IsMember({"composite", "xray", "mip"}));
   RenderOptionText renderText;
   addShadingOptions(app, o->render, renderText);
+  ClipOptionText clipText;
+  addClipOptions(app, clipText);
   app.add_option("--cutoff", o->render.cutoff, "Footprint cutoff r = dx^T Q dx (default 4)")
       ->check(CLI::Range(0.25, 64.0));
   app.add_option("--kernel-width", o->render.kernelWidth,
@@ -119,6 +125,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!o->rawDims.empty() && o->rawType.empty()) return usage("--raw-dims needs --raw-type");
   if (!o->rawDims.empty() && o->file.empty()) return usage("--raw-dims needs a FILE");
   if (o->turntable > 0 && o->output.empty()) return usage("--turntable needs --output");
+  if (o->stats && (o->output.empty() || o->turntable > 0))
+    return usage("--stats needs --output (one picture, no --turntable)");
   // "series/" and "series" are one folder (and name one bookmarks file beside it).
   while (o->file.size() > 1 && o->file.back() == '/') o->file.pop_back();
   o->resolutionGiven = !res.empty();
@@ -136,6 +144,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   parseFilterMode(filter, &o->render.filter);
   parseRenderMode(mode, &o->render.mode);
   if (const std::string e = finishShadingOptions(renderText, &o->render); !e.empty()) return usage(e);
+  if (const std::string e = finishClipOptions(clipText, &o->render.clip); !e.empty())
+    return usage(e);
   parseRendererKind(rendererName, &o->render.renderer);
   parseTableLookup(lookup, &o->render.shearWarp.lookup);
   parseBufferSlices(buffers, &o->render.shearWarp.buffers);

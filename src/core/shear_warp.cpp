@@ -146,7 +146,7 @@ const std::vector<glm::vec4>& ShearWarp::correctedTable(const ShearWarpFactoriza
 }
 
 void ShearWarp::render(const Camera& camera, const ShearWarpSettings& settings, int width,
-                       int height) {
+                       int height, const ClipRegion& clip) {
   stats_ = ShearWarpStats{};
   image_ = FloatImage(std::max(1, width), std::max(1, height), 4, 0.0f);
   if (!volume_ || volume_->empty() || !camera.valid()) return;
@@ -168,6 +168,8 @@ void ShearWarp::render(const Camera& camera, const ShearWarpSettings& settings, 
   input.view = &view;
   input.settings = settings;
   input.tableSize = size;
+  const ShearWarpClip clipCells(clip, *volume_, view);
+  input.clip = &clipCells;
   const std::vector<glm::vec4>& table = correctedTable(view, settings);
   (settings.preintegrated ? input.pairTable : input.pointTable) = table.data();
   input.slices = data_.slices(view.principal).data();

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "core/clip_region.h"
 #include "core/image_metrics.h"
 #include "core/intermediate_image.h"
 #include "core/preintegration_table.h"
@@ -37,7 +38,9 @@ class ShearWarp {
   void setVolume(const Volume& volume);
   void setTransferFunction(const TransferFunction& tf);
   // Renders a width x height picture: premultiplied RGBA, top row first (see image()).
-  void render(const Camera& camera, const ShearWarpSettings& settings, int width, int height);
+  // Samples outside `clip` (crop box and clipping planes, world space) are skipped.
+  void render(const Camera& camera, const ShearWarpSettings& settings, int width, int height,
+              const ClipRegion& clip = {});
 
   const FloatImage& image() const { return image_; }
   // Builds now what render() otherwise builds on first use: the slice copies and run-length

@@ -32,6 +32,18 @@ struct SlicePlacement {
   }
 };
 
+// Cells [first, last) of a slice row whose samples the crop box and clipping planes keep.
+struct CellRange {
+  int first, last;
+};
+
+CellRange keptCells(const CompositeInput& in, int k, int j, const SlicePlacement& place) {
+  CellRange r{0, in.view->width};
+  if (in.clip && in.clip->active())
+    in.clip->keptCells(k, j, place.fracI, place.fracJ, &r.first, &r.last);
+  return r;
+}
+
 inline void under(glm::vec4& pixel, const glm::vec4& sample) {
   pixel += (1.0f - pixel.a) * sample;
 }
@@ -66,9 +78,12 @@ void compositeStandard(const CompositeInput& in, IntermediateImage& out, int thr
       const float* row1 = row0 + f.width;
       glm::vec4* pixels = out.pixels.data() + size_t(v) * out.width;
       const OpaqueLinks links{in.links + size_t(v) * (out.width + 1)};
+      const CellRange kept = keptCells(in, k, j, place);
       for (auto run = in.runs->begin(k, j); run != in.runs->end(k, j); ++run) {
-        const int end = (*run)[1] + place.shiftI;
-        for (int u = links.find((*run)[0] + place.shiftI); u < end; u = links.find(u + 1)) {
+        const int end = std::min((*run)[1], kept.last) + place.shiftI;
+        const int start = std::max((*run)[0], kept.first) + place.shiftI;
+        if (start >= end) continue;
+        for (int u = links.find(start); u < end; u = links.find(u + 1)) {
           const int i = u - place.shiftI;
           glm::vec4& p = pixels[u];
           const float s = std::min(place.sample(row0, row1, i), top);
@@ -126,9 +141,13 @@ void compositeSlabs(const CompositeInput& in, IntermediateImage& out, int thread
       BufferedSample* previousRow = kImageBuffer ? nullptr : previous + size_t(j) * f.width;
       BufferedSample* currentRow = kImageBuffer ? nullptr : current + size_t(j2) * f.width;
       const OpaqueLinks links{in.links + size_t(v) * (out.width + 1)};
+      // Clipped by the front sample's position: a slab is kept or dropped whole.
+      const CellRange kept = keptCells(in, k, j, front);
       for (auto run = in.runs->begin(slab, j); run != in.runs->end(slab, j); ++run) {
-        const int end = (*run)[1] + front.shiftI;
-        for (int u = links.find((*run)[0] + front.shiftI); u < end; u = links.find(u + 1)) {
+        const int end = std::min((*run)[1], kept.last) + front.shiftI;
+        const int start = std::max((*run)[0], kept.first) + front.shiftI;
+        if (start >= end) continue;
+        for (int u = links.find(start); u < end; u = links.find(u + 1)) {
           const int i = u - front.shiftI;
           glm::vec4& p = pixels[u];
           const int i2 = u - back.shiftI;

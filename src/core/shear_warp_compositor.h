@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/intermediate_image.h"
+#include "core/shear_warp_clip.h"
 #include "core/shear_warp_factorization.h"
 #include "core/shear_warp_settings.h"
 #include "core/shear_warp_volume.h"
@@ -36,6 +37,7 @@ struct CompositeInput {
                                           // diagonal-major (see lookupPair), corrected
   int tableSize = 256;
   ShearWarpSettings settings;
+  const ShearWarpClip* clip = nullptr;  // crop box and planes; null or inactive: none
   int32_t* links = nullptr;  // set by compositeSlices
 };
 

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.h"
+#include "io/clip_region_json.h"
 
 namespace ewa {
 
@@ -62,6 +63,7 @@ std::string bookmarksToJson(const std::vector<CameraBookmark>& bookmarks) {
     j["view_up"] = vec3Json(b.camera.viewUp);
     j["view_angle"] = b.camera.viewAngleDeg;
     j["orthographic"] = b.camera.orthographic;
+    if (b.clip.active() || !b.clip.planes.empty()) j["clip"] = clipRegionToJson(b.clip);
     list.push_back(j);
   }
   return json{{"bookmarks", list}}.dump(2) + "\n";
@@ -81,6 +83,7 @@ std::vector<CameraBookmark> bookmarksFromJson(const std::string& text, const std
       b.camera.viewUp = vec3From(j, "view_up");
       b.camera.viewAngleDeg = j.value("view_angle", 30.0);
       b.camera.orthographic = j.value("orthographic", false);
+      if (j.contains("clip")) b.clip = clipRegionFromJson(j.at("clip"));
       if (!b.camera.valid())
         throw std::runtime_error("bookmark '" + b.name + "' is not a valid camera");
       out.push_back(std::move(b));

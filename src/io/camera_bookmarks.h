@@ -5,12 +5,14 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "core/clip_region.h"
 
 namespace ewa {
 
 struct CameraBookmark {
   std::string name;
   Camera camera;
+  ClipRegion clip;  // the crop box and planes shown with it (none in older files)
 };
 
 // "dir/name.bookmarks.json" beside "dir/name.ext" (like the .tf.json sidecar).
@@ -20,7 +22,7 @@ std::string bookmarksPathFor(const std::string& volumePath);
 std::string fallbackBookmarksPath(const std::string& volumePath, const std::string& configDir);
 
 // {"bookmarks": [{"name": "...", "position": [x,y,z], "focal_point": [...], "view_up": [...],
-//   "view_angle": deg, "orthographic": false}, ...]}
+//   "view_angle": deg, "orthographic": false, "clip": {...} (see clip_region_json.h)}, ...]}
 std::string bookmarksToJson(const std::vector<CameraBookmark>& bookmarks);
 // Throws std::runtime_error("name: problem") for bad JSON, missing fields or an invalid camera.
 std::vector<CameraBookmark> bookmarksFromJson(const std::string& text, const std::string& name);

@@ -10,6 +10,7 @@
 
 #include "core/kernel_lattice.h"
 #include "io/atomic_file.h"
+#include "io/clip_region_json.h"
 
 namespace ewa {
 
@@ -59,6 +60,10 @@ std::string viewerSettingsToJson(const ViewerSettings& s) {
                  {"slab_thickness", s.slabThickness},
                  {"background", {s.background.r, s.background.g, s.background.b}},
                  {"level_of_detail", s.levelOfDetail}};
+  if (!s.clipVolume.empty()) {
+    j["clip"] = clipRegionToJson(s.clip);
+    j["clip"]["volume"] = s.clipVolume;
+  }
   return j.dump(2) + "\n";
 }
 
@@ -103,6 +108,16 @@ ViewerSettings viewerSettingsFromJson(const std::string& text, const std::string
                 std::isfinite(bg[size_t(c)]) ? std::clamp(bg[size_t(c)], 0.0, 1.0) : 0.0;
       }
       s.levelOfDetail = r.value("level_of_detail", true);
+    }
+    if (j.contains("clip")) {
+      // A bad clip entry only loses the clip, not the other settings.
+      try {
+        s.clip = clipRegionFromJson(j.at("clip"));
+        s.clipVolume = j.at("clip").value("volume", std::string());
+      } catch (const std::exception&) {
+        s.clip = ClipRegion{};
+        s.clipVolume.clear();
+      }
     }
   } catch (const std::exception& e) {
     throw std::runtime_error(name + ": " + e.what());

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/clip_region.h"
 #include "core/ewa_footprint.h"
 
 namespace ewa {
@@ -26,6 +27,10 @@ struct ViewerSettings {
   double slabThickness = 2.0;          // RenderSettings' default
   glm::dvec3 background{0.0};
   bool levelOfDetail = true;  // coarser level while moving
+  // The crop box and planes of the last session and the volume they were for (its absolute
+  // path, or "synthetic:NAME"): restored only when that volume opens again.
+  ClipRegion clip;
+  std::string clipVolume;
 };
 
 // The folder for ewaview's settings: $EWAVIEW_CONFIG_DIR if set (tests point it at a scratch

@@ -66,6 +66,13 @@ std::vector<std::string> optionWords(const py::dict& options) {
     const bool isBool = py::isinstance<py::bool_>(value) ||
                         std::string(Py_TYPE(value.ptr())->tp_name) == "numpy.bool_";
     if (value.is_none() || (isBool && !PyObject_IsTrue(value.ptr()))) continue;
+    if (key == "clip_planes") {
+      // A list of planes (each PX,PY,PZ,NX,NY,NZ): one --clip-plane per plane.
+      if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value))
+        throw UsageError("clip_planes: a list of (px, py, pz, nx, ny, nz) planes");
+      for (const py::handle plane : value) words.push_back("--clip-plane=" + valueWord(plane));
+      continue;
+    }
     std::string name = "--" + key;
     std::replace(name.begin(), name.end(), '_', '-');
     if (isBool) {

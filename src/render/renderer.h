@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "core/clip_region.h"
 #include "core/ewa_footprint.h"
 #include "core/image8.h"
 #include "core/shading.h"
@@ -58,6 +59,7 @@ struct RenderSettings {
   Classification classification;  // gradients and surface voxels: rebuilds the splats
   double surfaceOpacity = 0.95;   // opacity of the surface-splat layer seen along its normal
   ShearWarpSettings shearWarp;    // read by the shear-warp renderer only
+  ClipRegion clip;                // crop box and clipping planes (world space), every renderer
 };
 
 // The footprint parameters every splat of a volume with this spacing gets under `settings`:

@@ -22,7 +22,7 @@ void ShearWarpRenderer::render(const Camera& camera, const RenderSettings& setti
   const auto start = std::chrono::steady_clock::now();
   width = std::max(1, width);
   height = std::max(1, height);
-  core_.render(camera, settings.shearWarp, width, height);
+  core_.render(camera, settings.shearWarp, width, height, settings.clip);
   const FloatImage& rgba = core_.image();
   image_.width = width;
   image_.height = height;

@@ -11,6 +11,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gl/gl_error.h"
+#include "render/clip_uniforms.h"
 
 namespace ewa {
 
@@ -165,6 +166,7 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setFloat("uSpecular", float(light.specular));
   p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
   p.setInt("uMode", int(settings.mode));
+  setClipUniforms(p, settings.clip, *volume_, camera, proj);
   p.setInt("uPost", postClassified(settings) ? 1 : 0);
 }
 

@@ -36,6 +36,8 @@ void ViewerWindow::adopt(LoadedVolume loaded, bool newCamera) {
       saved_.lastTransferFunction.empty() ? "transfer_function.json" : saved_.lastTransferFunction,
       printLayout_);
   if (newCamera) {
+    settings_.clip = ClipRegion{};  // a box and planes in another volume's coordinates
+    ++settingsRevision_;
     const glm::ivec2 fb = window_.framebufferSize();
     Camera camera;
     camera.viewAngleDeg = controller_.camera().viewAngleDeg;

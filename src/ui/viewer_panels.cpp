@@ -7,6 +7,7 @@
 
 #include "io/atomic_file.h"
 #include "core/camera_views.h"
+#include "ui/clip_panel.h"
 #include "ui/viewer_window.h"
 
 namespace ewa {
@@ -19,6 +20,11 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   if (edits.resetCamera) controller_.reset();
   if (edits.axisView) showAxisView(*edits.axisView, fb);
   if (edits.settings) ++settingsRevision_;
+  // A dragged crop box or plane renders like a moving camera: coarse levels until it stops.
+  const ClipPanelEdits clip =
+      drawClipPanel(settings_.clip, current_.volume->worldBoundsMin(),
+                    current_.volume->worldBoundsMax(), controller_.camera());
+  if (clip.changed) ++settingsRevision_;
   if (const TransferFunction* tf = liveTf_.drawAndApply(lod_, splatClassification(settings_)))
     current_.tf = *tf;
   switchRendererIfAsked();
@@ -44,6 +50,8 @@ void ViewerWindow::saveSettings() {
   saved_.slabThickness = settings_.slabThickness;
   saved_.background = settings_.background;
   saved_.levelOfDetail = levelOfDetail_;
+  saved_.clip = settings_.clip;
+  saved_.clipVolume = current_.path.empty() ? "synthetic:" + current_.name : current_.path;
   std::string problem;
   saved_.lastTransferFunction =
       liveTf_.keep(config_.configDir, saved_.lastTransferFunction, &problem);
@@ -90,12 +98,17 @@ void ViewerWindow::applySessionEdits(const SessionEdits& e, const glm::ivec2& fb
   if (e.openDialog) openDialog();
   if (e.openPath) startLoad(*e.openPath);
   if (e.addBookmark) {
-    bookmarks_.list().push_back({*e.addBookmark, controller_.camera()});
+    bookmarks_.list().push_back({*e.addBookmark, controller_.camera(), settings_.clip});
     saveBookmarks();
   }
   std::vector<CameraBookmark>& marks = bookmarks_.list();
-  if (e.applyBookmark >= 0 && e.applyBookmark < int(marks.size()))
+  if (e.applyBookmark >= 0 && e.applyBookmark < int(marks.size())) {
     controller_.setCamera(marks[size_t(e.applyBookmark)].camera);
+    if (settings_.clip != marks[size_t(e.applyBookmark)].clip) {
+      settings_.clip = marks[size_t(e.applyBookmark)].clip;  // the view as bookmarked
+      ++settingsRevision_;
+    }
+  }
   if (e.deleteBookmark >= 0 && e.deleteBookmark < int(marks.size())) {
     marks.erase(marks.begin() + e.deleteBookmark);
     saveBookmarks();

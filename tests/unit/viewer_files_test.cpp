@@ -159,13 +159,13 @@ TEST_F(ViewerFiles, BookmarksBesideTheVolumeRoundTrip) {
   EXPECT_NE(fb1, fb2);  // same name in two folders: two files
   const std::string p = bookmarksPathFor(path("vol.nrrd"));
   EXPECT_TRUE(loadBookmarks(p).empty());  // no file yet
-  CameraBookmark a{"front", Camera{}};
+  CameraBookmark a{"front", Camera{}, ClipRegion{}};
   a.camera.position = {1, 2, 3};
   a.camera.focalPoint = {4, 5, 6.5};
   a.camera.viewUp = {0, 0, 1};
   a.camera.viewAngleDeg = 22.5;
   a.camera.orthographic = true;
-  CameraBookmark b{"side", Camera{}};
+  CameraBookmark b{"side", Camera{}, ClipRegion{}};
   saveBookmarks(p, {a, b});
   const auto r = loadBookmarks(p);
   ASSERT_EQ(r.size(), 2u);

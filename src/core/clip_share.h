@@ -1,0 +1,44 @@
+// Clipped shares of splat kernels: the part of a kernel's 1D Gaussian along a pixel's ray that
+// lies on the kept side of the clip region. Mirrored line for line in shaders/clip_region.glsl.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/clip_region.h"
+#include "core/volume.h"
+
+namespace ewa {
+
+// Stands for an unbounded depth in the shaders (float): far beyond any scene, and safe to
+// subtract and scale without overflow.
+constexpr double kClipUnbounded = 1e30;
+
+// The rigid map from world space to the volume's own frame (origin + (i,j,k) * spacing, no
+// direction), where the splat and shear-warp renderers work (see cameraInVolumeFrame).
+glm::dmat4 worldToVolumeFrame(const Volume& volume);
+// The region's half-spaces in the volume's own frame.
+std::vector<HalfSpace> halfSpacesInVolumeFrame(const ClipRegion& region, const Volume& volume);
+
+// The depths [near, far] that camera-space half-spaces keep along the ray through `pixel` (the
+// splat shaders' pixel frame: gl_FragCoord, principal point at the image centre). Depth is
+// -z in camera space, the coordinate the footprint's depth Gaussian and the slabs use.
+// Without half-spaces: [-kClipUnbounded, kClipUnbounded]; empty when nothing is kept.
+RayInterval clippedDepths(const std::vector<HalfSpace>& cameraPlanes, const Projection& proj,
+                          const glm::dvec2& pixel);
+
+// The share of a depth Gaussian (mean mu, deviation sigma) between zNear and zFar (an open
+// bound: the kernel's tail, as slabFraction's infinities) and inside `kept`: the slab split
+// and the clip cut in one erf difference, so a kernel straddling a plane gives only its part
+// on the kept side.
+double clippedSlabFraction(double mu, double sigma, double zNear, double zFar, bool openNear,
+                           bool openFar, const RayInterval& kept);
+
+// True when a kernel centred at camera-space `u` lies more than `reach` outside one of the
+// half-spaces: none of it is kept, so it is not drawn.
+bool clipCullsKernel(const std::vector<HalfSpace>& cameraPlanes, const glm::dvec3& u, double reach);
+
+}  // namespace ewa

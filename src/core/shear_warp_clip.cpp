@@ -1,0 +1,41 @@
+// ShearWarpClip: world half-spaces in slice coordinates, and the kept cells of a slice row.
+#include "core/shear_warp_clip.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+
+#include "core/clip_share.h"
+
+namespace ewa {
+
+ShearWarpClip::ShearWarpClip(const ClipRegion& region, const Volume& volume,
+                             const ShearWarpFactorization& view) {
+  const glm::dvec3& s = volume.spacing();
+  const glm::dvec3& o = volume.origin();
+  for (const HalfSpace& h : halfSpacesInVolumeFrame(region, volume)) {
+    // Frame point o + s * ijk: dot(n * s, ijk) + dot(n, o) + offset >= 0.
+    const glm::dvec3 a = h.normal * s;
+    planes_.emplace_back(a[view.axisI], a[view.axisJ], a[view.principal], h.distance(o));
+  }
+}
+
+void ShearWarpClip::keptCells(int k, int j, double fracI, double fracJ, int* first,
+                              int* last) const {
+  const double y = j + fracJ;
+  for (const glm::dvec4& p : planes_) {
+    // p.x * (i + fracI) + c >= 0.
+    const double c = p.y * y + p.z * k + p.w;
+    if (p.x > 0.0) {
+      const double bound = std::ceil(-c / p.x - fracI);
+      if (bound > *first) *first = int(std::min(bound, double(INT_MAX / 2)));
+    } else if (p.x < 0.0) {
+      const double bound = std::floor(-c / p.x - fracI) + 1.0;
+      if (bound < *last) *last = int(std::max(bound, double(INT_MIN / 2)));
+    } else if (c < 0.0) {
+      *last = *first;
+    }
+  }
+}
+
+}  // namespace ewa

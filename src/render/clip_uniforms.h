@@ -1,0 +1,19 @@
+// The crop box and clipping planes as uniforms of the splat programs (shaders/clip_region.glsl).
+#pragma once
+
+#include <glm/mat4x4.hpp>
+
+#include "core/camera.h"
+#include "core/clip_region.h"
+#include "core/volume.h"
+#include "gl/program.h"
+
+namespace ewa {
+
+// Sets uClipPlanes (the region's half-spaces in the camera space of `volumeCamera`, the camera
+// that looks at `volume` in its own frame), uClipCount and uClipRay (pixel rays of `proj`).
+// An inactive region sets uClipCount 0: the shaders then clip nothing.
+void setClipUniforms(gl::Program& program, const ClipRegion& region, const Volume& volume,
+                     const Camera& volumeCamera, const Projection& proj);
+
+}  // namespace ewa
