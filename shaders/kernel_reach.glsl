@@ -7,7 +7,7 @@
 
 struct KernelReach {
   REACH_FLOAT cutoff;
-  REACH_FLOAT maxSpacing;
+  REACH_FLOAT maxSigma;
   REACH_FLOAT minSpacing;
   bool swan;
   bool orthographic;
@@ -24,7 +24,7 @@ REACH_FLOAT reachStretch(KernelReach k, REACH_FLOAT depth) {
 }
 
 REACH_FLOAT worldReach(KernelReach k, REACH_FLOAT depth) {
-  return sqrt(k.cutoff) * (k.maxSpacing * reachStretch(k, depth) + worldPerPixel(k, depth));
+  return sqrt(k.cutoff) * (k.maxSigma * reachStretch(k, depth) + worldPerPixel(k, depth));
 }
 
 REACH_FLOAT depthReach(KernelReach k, REACH_FLOAT depthVariance, REACH_FLOAT depth) {

@@ -7,10 +7,10 @@
 namespace ewa {
 
 KernelReach kernelReach(const Projection& proj, FilterMode filter, double cutoff,
-                        const glm::dvec3& spacing) {
+                        const glm::dvec3& spacing, double kernelWidth) {
   KernelReach k;
   k.cutoff = cutoff;
-  k.maxSpacing = std::max({spacing.x, spacing.y, spacing.z});
+  k.maxSigma = kernelWidth * std::max({spacing.x, spacing.y, spacing.z});
   k.minSpacing = std::min({spacing.x, spacing.y, spacing.z});
   k.swan = filter == FilterMode::Swan;
   k.orthographic = proj.orthographic;
@@ -28,7 +28,7 @@ double reachStretch(const KernelReach& k, double depth) {
 }
 
 double worldReach(const KernelReach& k, double depth) {
-  return std::sqrt(k.cutoff) * (k.maxSpacing * reachStretch(k, depth) + worldPerPixel(k, depth));
+  return std::sqrt(k.cutoff) * (k.maxSigma * reachStretch(k, depth) + worldPerPixel(k, depth));
 }
 
 double depthReach(const KernelReach& k, double depthVariance, double depth) {

@@ -12,7 +12,7 @@ namespace ewa {
 
 struct KernelReach {
   double cutoff = 4.0;      // footprint cutoff r = dx^T Q dx: the ellipsoid r <= cutoff
-  double maxSpacing = 1.0;  // largest standard deviation of a kernel (volume: diag(spacing^2))
+  double maxSigma = 1.0;    // largest standard deviation of a kernel: kernel width * spacing
   double minSpacing = 1.0;  // Swan's s: kernels stretch once a pixel is wider than it
   bool swan = false;
   bool orthographic = false;
@@ -20,10 +20,10 @@ struct KernelReach {
   double pixelsPerUnit = 1.0;  // orthographic: pixels per world unit
 };
 
-// The reach of every kernel of a volume with this spacing under `filter` and `cutoff`, seen
-// through `proj`.
+// The reach of every kernel of a volume with this spacing under `filter`, `cutoff` and
+// `kernelWidth` (kernelSigma), seen through `proj`.
 KernelReach kernelReach(const Projection& proj, FilterMode filter, double cutoff,
-                        const glm::dvec3& spacing);
+                        const glm::dvec3& spacing, double kernelWidth = 1.0);
 
 // World units one pixel spans at camera depth `depth` (along the view axis).
 double worldPerPixel(const KernelReach& k, double depth);

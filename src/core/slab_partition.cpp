@@ -26,7 +26,8 @@ void SlabPartition::build(const SplatSet& splats, const std::vector<PackedAttrib
   const double d0 = glm::dot(row, origin) - view[3][2];
   const double di = row.x * spacing.x, dj = row.y * spacing.y, dk = row.z * spacing.z;
   // Depth variance of a volume kernel: (W V'' W^T)_zz, the same for every voxel.
-  const double volumeVariance = cameraCovariance(extent.rotation, spacing)[2][2];
+  const glm::dvec3 sigma = kernelSigma(spacing, extent.kernelWidth);
+  const double volumeVariance = cameraCovariance(extent.rotation, sigma)[2][2];
   const bool surfaces = attributes.size() == n;
   lo_.resize(n);
   hi_.resize(n);
@@ -39,7 +40,7 @@ void SlabPartition::build(const SplatSet& splats, const std::vector<PackedAttrib
       const UnpackedAttributes a = unpackAttributes(attributes[m]);
       if (a.surface) {
         d += glm::dot(row, a.normal) * a.offset * minSpacing;
-        variance = surfaceCovariance(extent.rotation, spacing, a.normal)[2][2];
+        variance = surfaceCovariance(extent.rotation, sigma, a.normal)[2][2];
       }
     }
     if (!(d > nearCull)) {

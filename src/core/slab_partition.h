@@ -21,11 +21,12 @@ struct Slab {
 };
 
 // What the partition needs to know of the kernels: their reach (kernel_reach.h), and the
-// camera rotation and voxel spacing that give each kernel's depth variance.
+// camera rotation, voxel spacing and kernel width that give each kernel's depth variance.
 struct DepthExtent {
   KernelReach reach;
   glm::dmat3 rotation{1.0};  // W: world to camera
   glm::dvec3 spacing{1.0};
+  double kernelWidth = 1.0;  // kernels' sigma = kernelWidth * spacing (kernelSigma)
 };
 
 class SlabPartition {

@@ -12,18 +12,20 @@ namespace ewa {
 struct RenderTargets {
   int width = 0;
   int height = 0;
-  gl::Texture slab;     // RGBA32F: (sum of colour * optical depth, sum of optical depth)
-  gl::Texture accum;    // RGBA32F: premultiplied colour and opacity, front to back
-  gl::Texture output;   // RGBA8: the final picture over the background
-  gl::Texture stencil;  // DEPTH24_STENCIL8, shared by slab and accumulation: opaque pixels
+  gl::Texture slab;        // RGBA32F: (sum of colour * optical depth, sum of optical depth)
+  gl::Texture slabNormal;  // RGBA16F, post-classification with shading: sum of weight * normal
+  gl::Texture accum;       // RGBA32F: premultiplied colour and opacity, front to back
+  gl::Texture output;      // RGBA8: the final picture over the background
+  gl::Texture stencil;     // DEPTH24_STENCIL8, shared by slab and accumulation: opaque pixels
   gl::Framebuffer slabFbo;
   gl::Framebuffer accumFbo;
   gl::Framebuffer outputFbo;
 
   // (Re)creates the images when the size changes; throws gl::GlError if incomplete.
   void resize(int w, int h);
-  // Bytes the images hold: two RGBA32F, one RGBA8, one depth-stencil (4 bytes) per pixel.
-  size_t bytes() const { return size_t(width) * size_t(height) * (16 + 16 + 4 + 4); }
+  // Bytes the images hold: two RGBA32F, one RGBA16F, one RGBA8, one depth-stencil (4 bytes)
+  // per pixel.
+  size_t bytes() const { return size_t(width) * size_t(height) * (16 + 8 + 16 + 4 + 4); }
 };
 
 }  // namespace ewa

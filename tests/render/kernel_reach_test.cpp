@@ -57,7 +57,7 @@ TEST_F(KernelReachMirror, GlslEqualsCpp) {
             proj.focalPixels = scale * 100.0;
             const KernelReach k = kernelReach(proj, filter, cutoff, spacing);
             program.setFloat("uCutoff", float(k.cutoff));
-            program.setFloat("uMaxSpacing", float(k.maxSpacing));
+            program.setFloat("uMaxSigma", float(k.maxSigma));
             program.setFloat("uMinSpacing", float(k.minSpacing));
             program.setInt("uSwan", k.swan ? 1 : 0);
             program.setInt("uOrthographic", k.orthographic ? 1 : 0);
