@@ -1,8 +1,10 @@
 // Headless rendering: a HeadlessSession's one frame, written as a PNG.
 #include "app/headless.h"
 
+#include <iostream>
 #include <stdexcept>
 
+#include "app/frame_stats.h"
 #include "app/headless_session.h"
 #include "io/atomic_file.h"
 #include "io/png_io.h"
@@ -28,6 +30,10 @@ void renderHeadless(const Scene& scene, const Options& o) {
   HeadlessSession session(o.backend, o.shaderDir);
   writePng(o.output, session.render(scene.volume, scene.transferFunction,
                                     initialCamera(scene.volume, o), o.render, o.width, o.height));
+  if (o.stats)
+    std::cout << frameStatsJson(session.stats(), rendererKindName(o.render.renderer), o.width,
+                                o.height)
+              << std::endl;
 }
 
 }  // namespace ewa

@@ -28,6 +28,8 @@ class HeadlessSession {
   // with `tf` from `camera`, and returns the RGB picture, top row first.
   Image8 render(const Volume& volume, const TransferFunction& tf, const Camera& camera,
                 const RenderSettings& settings, int width, int height);
+  // The statistics of the last render (empty before the first).
+  RenderStats stats() const { return renderer_ ? renderer_->stats() : RenderStats{}; }
 
  private:
   std::unique_ptr<platform::GlContext> context_;

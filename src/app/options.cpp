@@ -10,6 +10,7 @@
 #include "app/clip_options.h"
 #include "app/render_options.h"
 #include "app/version.h"
+#include "core/kernel_lattice.h"
 
 namespace ewa {
 
@@ -47,6 +48,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--record-camera-path", o->recordCameraPath,
                  "Window: write the cameras of the session to this file on exit, for "
                  "ewaview-interact-bench --path");
+  app.add_flag("--stats", o->stats,
+               "With --output: print the frame's statistics as one JSON line (times, splats, "
+               "gpu_bytes, gpu_bytes_per_splat, peak_rss)");
   app.add_flag("--info", o->info,
                "Print dims, spacing, type, value range, direction and notes as JSON and exit");
   app.add_option("--series", o->load.series, "DICOM: open the series with this SeriesInstanceUID");
@@ -75,6 +79,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   addClipOptions(app, clipText);
   app.add_option("--cutoff", o->render.cutoff, "Footprint cutoff r = dx^T Q dx (default 4)")
       ->check(CLI::Range(0.25, 64.0));
+  app.add_option("--kernel-width", o->render.kernelWidth,
+                 "Kernel sigma in voxel spacings, 0.3 to 2 (default 1)")
+      ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
   app.add_option("--slab-thickness", o->render.slabThickness,
                  "Slab thickness in voxels of the smallest spacing, 0.25 and up (default 2)")
       ->check(CLI::Range(0.25, 1000.0));
@@ -118,10 +125,13 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!o->rawDims.empty() && o->rawType.empty()) return usage("--raw-dims needs --raw-type");
   if (!o->rawDims.empty() && o->file.empty()) return usage("--raw-dims needs a FILE");
   if (o->turntable > 0 && o->output.empty()) return usage("--turntable needs --output");
+  if (o->stats && (o->output.empty() || o->turntable > 0))
+    return usage("--stats needs --output (one picture, no --turntable)");
   // "series/" and "series" are one folder (and name one bookmarks file beside it).
   while (o->file.size() > 1 && o->file.back() == '/') o->file.pop_back();
   o->resolutionGiven = !res.empty();
-  for (const char* name : {"--filter", "--render-mode", "--cutoff", "--slab-thickness", "--background"})
+  for (const char* name : {"--filter", "--render-mode", "--cutoff", "--kernel-width",
+                           "--classification", "--slab-thickness", "--background"})
     o->renderOptionsGiven |= app.count(name) > 0;
   if (!res.empty()) {
     o->width = res[0];

@@ -22,6 +22,7 @@ struct Options {
   bool resolutionGiven = false;      // --resolution was given (overrides the saved window size)
   bool renderOptionsGiven = false;   // a render option was given (overrides the saved ones)
   bool info = false;           // print the volume's description as JSON and exit
+  bool stats = false;          // after --output, print the frame's statistics as one JSON line
   int width = 800;
   int height = 600;
   std::optional<glm::dvec3> cameraPosition;

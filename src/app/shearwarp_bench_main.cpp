@@ -4,18 +4,15 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include "app/bench_support.h"
 #include "app/options.h"
 #include "app/scene.h"
+#include "app/vtk_runner.h"
 #include "core/shear_warp.h"
 #include "gl/shader_library.h"
-#include "io/transfer_function_io.h"
 #include "platform/headless_context.h"
 #include "render/splat_renderer.h"
 
@@ -78,41 +75,15 @@ double transparentPercent(const Volume& v, const TransferFunction& tf) {
 // negative when it could not run.
 glm::dvec2 timeVtk(const Volume& v, const TransferFunction& tf, int size,
                    const std::vector<double>& azimuths, const std::string& script) {
-  const std::string dir = std::filesystem::temp_directory_path().string();
-  const std::string raw = dir + "/ewaview_bench_volume.raw",
-                    tfPath = dir + "/ewaview_bench.tf.json";
-  const std::string out = dir + "/ewaview_bench_vtk.txt";
-  std::ofstream(raw, std::ios::binary)
-      .write(reinterpret_cast<const char*>(v.bytes().data()), std::streamsize(v.bytes().size()));
-  saveTransferFunction(tfPath, tf);
   std::string views;
   for (double a : azimuths) views += (views.empty() ? "" : ",") + std::to_string(a);
-  const auto& d = v.dims();
-  const glm::dvec3 s = v.spacing();
-  char args[512];
-  std::snprintf(
-      args, sizeof args,
-      " %s --dims %lld,%lld,%lld --type %s --spacing %g,%g,%g --tf %s --size %d --views %s",
-      raw.c_str(), (long long)d[0], (long long)d[1], (long long)d[2], scalarName(v.type()), s.x,
-      s.y, s.z, tfPath.c_str(), size, views.c_str());
-  const std::string prefix =
-      std::getenv("DISPLAY") ? "" : "xvfb-run -a -s '-screen 0 1024x768x24' ";
-  const std::string cmd = prefix + "/usr/bin/python3 " + script + args + " >" + out + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  std::ifstream in(out);
-  std::string word;
-  double seconds = -1.0, cpuSec = -1.0;
-  while (in >> word)
-    if (word == "vtk" && in >> seconds >> cpuSec) break;
-  if (status != 0 || seconds < 0) {
-    std::ifstream again(out);
-    std::string line;
-    std::getline(again, line);
-    std::fprintf(stderr, "# VTK not timed: %s\n", line.c_str());
+  const VtkTiming t =
+      VtkRunner(v, tf, script).run({"--size", std::to_string(size), "--views", views});
+  if (!t.ok) {
+    std::fprintf(stderr, "# VTK not timed: %s\n", t.error.c_str());
     return glm::dvec2(-1.0);
   }
-  std::filesystem::remove(raw);
-  return glm::dvec2(seconds, cpuSec);
+  return glm::dvec2(t.meanSeconds, t.cpuSeconds);
 }
 
 int run(int argc, char** argv) {
@@ -124,7 +95,7 @@ int run(int argc, char** argv) {
   double step = 2.0;
   bool noVtk = false, noEwa = false, breakdown = false;
   std::vector<std::string> only;
-  std::string script = std::string(EWA_ASSET_DIR) + "/../scripts/vtk_raycast_bench.py";
+  std::string script = VtkRunner::defaultScript();
   app.add_option("--data", data,
                  "Folder with engine/, mrbrain/ and bonsai/ (default ../shared/data)");
   app.add_option("--volumes", only, "Subset of engine, mrbrain, bonsai");

@@ -26,11 +26,15 @@ int lineCount(const std::string& s) {
 }
 
 CliRun runEwaview(const std::string& args, const std::string& prefix, int timeoutSeconds) {
+  return runProgram(EWA_BINARY, args, prefix, timeoutSeconds);
+}
+
+CliRun runProgram(const std::string& binary, const std::string& args, const std::string& prefix,
+                  int timeoutSeconds) {
   const std::string stem = testOutputDir() + "/" + prefix + "_" +
                            ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  const std::string cmd = "timeout " + std::to_string(timeoutSeconds) + " " +
-                          std::string(EWA_BINARY) + " " + args + " >" + stem + ".out 2>" + stem +
-                          ".err </dev/null";
+  const std::string cmd = "timeout " + std::to_string(timeoutSeconds) + " " + binary + " " + args +
+                          " >" + stem + ".out 2>" + stem + ".err </dev/null";
   const int status = std::system(cmd.c_str());
   CliRun r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

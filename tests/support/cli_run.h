@@ -16,6 +16,9 @@ struct CliRun {
 // in files named `prefix_TESTNAME` in the test output folder, since CTest runs tests in parallel.
 CliRun runEwaview(const std::string& args, const std::string& prefix = "cli",
                   int timeoutSeconds = 300);
+// The same for another program of the project (a benchmark) at `binary`.
+CliRun runProgram(const std::string& binary, const std::string& args, const std::string& prefix,
+                  int timeoutSeconds = 300);
 
 // Whole file as a string ("" when it cannot be read).
 std::string readWholeFile(const std::string& path);

@@ -1,0 +1,245 @@
+// ewaview-compare: the same view, transfer function and image size drawn by EWA splatting (full
+// frame and its stages), bare point sprites, shear-warp and VTK's CPU and GPU ray casters, in
+// one run, with the ratios the performance targets are stated in.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/bench_sprites.h"
+#include "app/bench_support.h"
+#include "app/compare_report.h"
+#include "app/frame_stats.h"
+#include "app/options.h"
+#include "app/scene.h"
+#include "app/vtk_runner.h"
+#include "gl/gl_api.h"
+#include "gl/shader_library.h"
+#include "io/png_io.h"
+#include "platform/headless_context.h"
+#include "render/renderer_factory.h"
+#include "render/splat_renderer.h"
+#include "render/sprite_baseline.h"
+
+namespace ewa {
+namespace {
+
+struct Input {
+  std::string name;
+  Options options;  // file or synthetic, and the transfer function
+};
+
+// The shared volumes the targets name, with the transfer functions the presets give them
+// (engine has none: the histogram's, as ewaview opens it).
+std::vector<Input> sharedInputs(const std::string& data, const std::vector<std::string>& only) {
+  const std::string presets = std::string(EWA_ASSET_DIR) + "/presets/";
+  std::vector<Input> all(3);
+  all[0].name = "engine";
+  all[0].options.file = data + "/engine/engine.nhdr";
+  all[1].name = "bonsai";
+  all[1].options.file = data + "/bonsai/bonsai.nhdr";
+  all[1].options.tfFile = presets + "bonsai.tf.json";
+  all[2].name = "cthead";
+  all[2].options.file = data + "/cthead/CThead.nhdr";
+  all[2].options.tfFile = presets + "cthead_skull.tf.json";
+  std::vector<Input> out;
+  for (const Input& in : all)
+    if (std::find(only.begin(), only.end(), in.name) != only.end()) out.push_back(in);
+  return out;
+}
+
+std::string dimsText(const Volume& v) {
+  const auto& d = v.dims();
+  return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
+}
+
+// "marschner-lobb:64" -> "marschner-lobb-64": a volume's name as part of a file name.
+std::string fileName(std::string name) {
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '-';
+  return name;
+}
+
+struct Methods {
+  SplatRenderer& ewa;
+  SpriteBaseline& sprites;
+  Renderer& shearWarp;
+};
+
+// Times EWA, sprites and shear-warp on one view: a warm-up frame each, then `repeats` rounds
+// in which each draws once, so load changes on the machine hit all three alike.
+void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const RenderSettings& rs,
+                       int size, int repeats, CompareRow& row) {
+  m.ewa.render(cam, rs, size, size);  // warm-up: classification and upload, not timed
+  glFinish();
+  m.sprites.setSprites(spriteSizes(m.ewa, scene.volume, cam, rs, size, size));
+  m.sprites.draw(size, size);
+  RenderSettings sw = rs;
+  sw.renderer = RendererKind::ShearWarp;
+  m.shearWarp.render(cam, sw, size, size);
+  std::vector<double> ewa, partition, splat, final, sprites, shearWarp;
+  for (int r = 0; r < repeats; ++r) {
+    auto start = BenchClock::now();
+    m.ewa.render(cam, rs, size, size);
+    glFinish();
+    ewa.push_back(msSince(start));
+    const RenderStats s = m.ewa.stats();
+    partition.push_back(s.sortMs);
+    splat.push_back(s.splatMs);
+    final.push_back(s.compositeMs);
+    sprites.push_back(m.sprites.draw(size, size));
+    start = BenchClock::now();
+    m.shearWarp.render(cam, sw, size, size);
+    glFinish();
+    shearWarp.push_back(msSince(start));
+  }
+  const RenderStats s = m.ewa.stats();
+  row.splats = s.splatsTotal;
+  row.splatsDrawn = s.splatsDrawn;
+  row.gpuBytes = s.gpuBytes;
+  row.gpuBytesPerSplat = gpuBytesPerSplat(s);
+  const TimingSummary e = summarize(ewa);
+  row.ewaMs = e.median;
+  row.ewaMinMs = e.min;
+  row.partitionMs = summarize(partition).median;
+  row.splatMs = summarize(splat).median;
+  row.finalMs = summarize(final).median;
+  row.spritesMs = summarize(sprites).median;
+  row.shearWarpMs = summarize(shearWarp).median;
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{
+      "ewaview-compare: EWA splatting beside bare point sprites, shear-warp and VTK's CPU and "
+      "GPU ray casters on the same views (median ms per frame and ratios)"};
+  std::string data = sharedDataDir(), imagesDir, backend = "osmesa";
+  std::string script = VtkRunner::defaultScript();
+  std::vector<std::string> volumes, synthetic;
+  std::vector<int> sizes = {512, 1024};
+  int repeats = 5;
+  bool csv = false, json = false, noVtk = false, orthographic = false;
+  app.add_option("--data", data,
+                 "Folder with engine/, bonsai/ and cthead/ (default ../shared/data)");
+  app.add_option("--volumes", volumes,
+                 "Subset of engine, bonsai, cthead (default: all three, none with --synthetic)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"engine", "bonsai", "cthead"}));
+  app.add_option("--synthetic", synthetic,
+                 "Also a synthetic volume NAME:N as ewaview --synthetic makes it (repeatable)");
+  app.add_option("--sizes", sizes, "Image sizes (width = height; default 512,1024)")
+      ->delimiter(',')
+      ->check(CLI::Range(16, 4096));
+  app.add_option("--repeats", repeats, "Timed frames per method after a warm-up (default 5)")
+      ->check(CLI::Range(1, 1000));
+  app.add_flag("--csv", csv, "Print CSV instead of the table");
+  app.add_flag("--json", json, "Print one JSON document instead of the table")->excludes("--csv");
+  app.add_option("--images", imagesDir,
+                 "Save each method's picture as DIR/VOLUME_SIZE_METHOD.png, to compare by eye");
+  app.add_flag("--no-vtk", noVtk, "Do not time VTK's ray casters");
+  app.add_option("--vtk-script", script, "Path of vtk_raycast_bench.py");
+  app.add_flag("--orthographic", orthographic, "Parallel projection (default: perspective)");
+  addBackendOption(app, backend);
+  CLI11_PARSE(app, argc, argv);
+  if (volumes.empty() && synthetic.empty()) volumes = {"engine", "bonsai", "cthead"};
+
+  CompareReport report;
+  report.repeats = repeats;
+  for (int i = 0; i < argc; ++i) report.command += (i ? " " : "") + std::string(argv[i]);
+  std::vector<Input> inputs = sharedInputs(data, volumes);
+  for (const std::string& spec : synthetic) {
+    Input in;
+    in.name = spec;
+    in.options.synthetic = spec;
+    inputs.push_back(in);
+  }
+  if (!imagesDir.empty()) std::filesystem::create_directories(imagesDir);
+
+  auto context = platform::createHeadlessContext(platform::parseHeadlessBackend(backend));
+  report.context = context->description();
+  if (!orthographic)
+    report.notes.push_back("shear-warp draws the perspective view as the parallel one");
+  const gl::ShaderLibrary shaders;
+  SplatRenderer ewa(shaders);
+  SpriteBaseline sprites(shaders);
+  const std::unique_ptr<Renderer> shearWarp = createRenderer(RendererKind::ShearWarp, shaders);
+  bool vtkWorks = !noVtk, failed = false;
+  for (Input& in : inputs) {
+    if (!in.options.file.empty() && !std::filesystem::exists(in.options.file)) {
+      const std::string note = in.name + " skipped: " + in.options.file + " not found";
+      std::cerr << "ewaview-compare: " << note << "\n";
+      report.notes.push_back(note);
+      continue;
+    }
+    in.options.orthographic = orthographic;
+    const Scene scene = loadScene(in.options);
+    ewa.setVolume(scene.volume);
+    ewa.setTransferFunction(scene.transferFunction);
+    shearWarp->setVolume(scene.volume);
+    shearWarp->setTransferFunction(scene.transferFunction);
+    std::unique_ptr<VtkRunner> vtk;
+    if (vtkWorks) vtk = std::make_unique<VtkRunner>(scene.volume, scene.transferFunction, script);
+    for (int size : sizes) {
+      in.options.width = in.options.height = size;
+      const Camera cam = initialCamera(scene.volume, in.options);
+      const RenderSettings rs = in.options.render;
+      CompareRow row;
+      row.volume = in.name;
+      row.dims = dimsText(scene.volume);
+      row.size = size;
+      try {
+        timeOpenGlMethods({ewa, sprites, *shearWarp}, scene, cam, rs, size, repeats, row);
+      } catch (const std::exception& e) {
+        // Too big for this GL (the splat buffer's limit): the other volumes still run.
+        const std::string note =
+            in.name + " " + std::to_string(size) + " not measured: " + e.what();
+        std::cerr << "ewaview-compare: " << note << "\n";
+        report.notes.push_back(note);
+        failed = true;
+        break;
+      }
+      const std::string stem =
+          imagesDir + "/" + fileName(in.name) + "_" + std::to_string(size) + "_";
+      if (!imagesDir.empty()) {
+        writePng(stem + "ewa.png", ewa.readImage());
+        writePng(stem + "shearwarp.png", shearWarp->readImage());
+      }
+      for (const char* mapper : {"cpu", "gpu"}) {
+        if (!vtkWorks) break;
+        std::vector<std::string> args = vtkCameraArguments(cam, scene.volume);
+        args.insert(args.end(), {"--size", std::to_string(size), "--repeats",
+                                 std::to_string(repeats), "--mapper", mapper});
+        if (!imagesDir.empty())
+          args.insert(args.end(), {"--image", stem + "vtk-" + mapper + ".png"});
+        const VtkTiming t = vtk->run(args);
+        if (!t.ok) {
+          // No VTK or no display: say so once and time the rest.
+          report.notes.push_back(std::string("VTK not timed: ") + t.error);
+          std::cerr << "ewaview-compare: VTK not timed: " << t.error << "\n";
+          vtkWorks = false;
+          break;
+        }
+        (std::string(mapper) == "cpu" ? row.vtkCpuMs : row.vtkGpuMs) = t.medianSeconds * 1e3;
+      }
+      row.peakRss = peakRssBytes();
+      report.rows.push_back(row);
+      std::cerr << "ewaview-compare: " << in.name << " " << size << ": EWA " << row.ewaMs
+                << " ms\n";
+    }
+  }
+  printReport(std::cout, report,
+              json  ? ReportFormat::Json
+              : csv ? ReportFormat::Csv
+                    : ReportFormat::Table);
+  return 0;
+}
+
+}  // namespace
+}  // namespace ewa
+
+int main(int argc, char** argv) {
+  return ewa::benchmarkMain("ewaview-compare", ewa::run, argc, argv);
+}

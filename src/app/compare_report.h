@@ -1,0 +1,44 @@
+// The comparison benchmark's results: one row per volume and image size, printed as a table,
+// CSV or JSON.
+#pragma once
+
+#include <cstddef>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace ewa {
+
+// Milliseconds are medians over the timed repeats; negative: not measured.
+struct CompareRow {
+  std::string volume;
+  std::string dims;  // "256x256x128"
+  int size = 0;      // width = height
+  size_t splats = 0, splatsDrawn = 0;
+  double ewaMs = -1, ewaMinMs = -1;
+  double partitionMs = -1, splatMs = -1, finalMs = -1;  // EWA's stages (RenderStats)
+  double spritesMs = -1, shearWarpMs = -1, vtkCpuMs = -1, vtkGpuMs = -1;
+  size_t gpuBytes = 0;  // 0: the renderer does not count it
+  double gpuBytesPerSplat = 0;
+  size_t peakRss = 0;  // of the benchmark process after this row
+
+  // EWA's full frame over the other method's frame; negative when either is missing.
+  double ratio(double otherMs) const { return ewaMs > 0 && otherMs > 0 ? ewaMs / otherMs : -1; }
+};
+
+struct CompareReport {
+  std::string context;  // the GL context's description
+  std::string command;  // the command line that made it
+  int repeats = 0;
+  std::vector<std::string> notes;  // "cthead skipped: ...", "VTK not timed: ..."
+  std::vector<CompareRow> rows;
+};
+
+enum class ReportFormat { Table, Csv, Json };
+
+// Table: a header of '#' lines, then aligned columns; CSV: one header line and a line per
+// row; JSON: one document {"context","command","repeats","notes","rows":[{...}]}, with null
+// for what was not measured.
+void printReport(std::ostream& out, const CompareReport& report, ReportFormat format);
+
+}  // namespace ewa

@@ -1,0 +1,138 @@
+// ewaview-compare and ewaview --stats as a user runs them: a tiny case (synthetic volume, small
+// image, one repeat, no VTK) whose output must have the documented structure and numbers that
+// are positive and agree with each other. No timing is judged here.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_run.h"
+#include "image_compare.h"
+#include "io/png_io.h"
+
+namespace ewa::test {
+namespace {
+
+using nlohmann::json;
+
+CliRun compare(const std::string& args) {
+  return runProgram(EWA_COMPARE_BINARY, args, "compare");
+}
+
+const char* kTiny = "--no-vtk --synthetic sphere:24 --sizes 48 --repeats 1";
+
+TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
+  const CliRun r = compare(std::string(kTiny) + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json doc = json::parse(r.out);
+  EXPECT_EQ(doc["repeats"], 1);
+  EXPECT_NE(doc["context"].get<std::string>().find("OpenGL"), std::string::npos) << doc["context"];
+  EXPECT_NE(doc["command"].get<std::string>().find("--synthetic sphere:24"), std::string::npos);
+  ASSERT_EQ(doc["rows"].size(), 1u) << r.out;
+  const json& row = doc["rows"][0];
+  EXPECT_EQ(row["volume"], "sphere:24");
+  EXPECT_EQ(row["dims"], "24x24x24");
+  EXPECT_EQ(row["size"], 48);
+  const double splats = row["splats"];
+  EXPECT_GT(splats, 100.0);
+  EXPECT_LE(row["splats_drawn"].get<double>(), splats);
+  for (const char* key : {"ewa_ms", "ewa_min_ms", "splat_ms", "final_ms", "sprites_ms",
+                          "shearwarp_ms", "ewa_per_sprites", "peak_rss_mib"})
+    EXPECT_GT(row[key].get<double>(), 0.0) << key;
+  EXPECT_GE(row["partition_ms"].get<double>(), 0.0);
+  const double ewa = row["ewa_ms"];
+  // One repeat: the median is the minimum, and the stages lie inside the full frame.
+  EXPECT_DOUBLE_EQ(row["ewa_min_ms"].get<double>(), ewa);
+  EXPECT_LE(row["partition_ms"].get<double>() + row["splat_ms"].get<double>() +
+                row["final_ms"].get<double>(),
+            ewa * 1.001);
+  EXPECT_NEAR(row["ewa_per_sprites"].get<double>(), ewa / row["sprites_ms"].get<double>(),
+              1e-6 * ewa);
+  // --no-vtk: VTK's columns and the ratio to it are null, not zero.
+  EXPECT_TRUE(row["vtk_cpu_ms"].is_null());
+  EXPECT_TRUE(row["vtk_gpu_ms"].is_null());
+  EXPECT_TRUE(row["ewa_per_vtk_cpu"].is_null());
+}
+
+TEST(CompareCli, CsvAndTableHaveOneRowPerVolumeAndSize) {
+  CliRun r = compare("--no-vtk --synthetic sphere:24 --sizes 32,48 --repeats 1 --csv");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(lines, line);) rows.push_back(line);
+  ASSERT_EQ(rows.size(), 3u) << r.out;
+  EXPECT_EQ(rows[0].rfind("volume,dims,size,splats,ewa_ms,", 0), 0u) << rows[0];
+  const auto fields = [](const std::string& s) { return std::count(s.begin(), s.end(), ',') + 1; };
+  EXPECT_EQ(fields(rows[1]), fields(rows[0]));
+  EXPECT_EQ(rows[1].rfind("sphere:24,24x24x24,32,", 0), 0u) << rows[1];
+  EXPECT_EQ(rows[2].rfind("sphere:24,24x24x24,48,", 0), 0u) << rows[2];
+
+  r = compare(kTiny);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("# median of 1 frames"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("ewa/vtk_cpu"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nsphere:24"), std::string::npos) << r.out;
+}
+
+TEST(CompareCli, ImagesAreWrittenForEachMethod) {
+  const std::string dir = testOutputDir() + "/compare_images";
+  std::filesystem::remove_all(dir);
+  const CliRun r = compare(std::string(kTiny) + " --images " + dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* method : {"ewa", "shearwarp"}) {
+    const Image8 image = readPng(dir + "/sphere-24_48_" + method + ".png");
+    EXPECT_EQ(image.width, 48) << method;
+    EXPECT_EQ(image.height, 48) << method;
+    size_t lit = 0;
+    for (size_t i = 0; i < image.pixels.size(); ++i) lit += image.pixels[i] > 20;
+    EXPECT_GT(lit, 100u) << method << ": the sphere must be visible";
+  }
+}
+
+TEST(CompareCli, MissingSharedDataIsSkippedWithANote) {
+  const CliRun r = compare("--no-vtk --data /nonexistent --volumes engine --sizes 32 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json doc = json::parse(r.out);
+  EXPECT_EQ(doc["rows"].size(), 0u);
+  ASSERT_EQ(doc["notes"].size(), 2u) << r.out;  // shear-warp's projection, then the skip
+  EXPECT_NE(doc["notes"][1].get<std::string>().find("engine skipped"), std::string::npos);
+  EXPECT_NE(r.err.find("engine skipped"), std::string::npos) << r.err;
+}
+
+TEST(CompareCli, BadOptionsFailWithOneLine) {
+  for (const char* args : {"--sizes 0", "--volumes teapot", "--repeats 0", "--csv --json"}) {
+    const CliRun r = compare(args);
+    EXPECT_NE(r.code, 0) << args;
+    EXPECT_GE(lineCount(r.err), 1) << args;
+  }
+}
+
+TEST(StatsCli, OneJsonLineWithSplatsTimesAndMemory) {
+  const std::string png = testOutputDir() + "/stats_sphere.png";
+  const CliRun r = runEwaview("--synthetic sphere:24 --resolution 48,48 -o " + png + " --stats");
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(lineCount(r.out), 1) << r.out;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["renderer"], "splat");
+  EXPECT_EQ(j["width"], 48);
+  EXPECT_GT(j["render_ms"].get<double>(), 0.0);
+  EXPECT_GT(j["splats"].get<double>(), 100.0);
+  EXPECT_LE(j["splats_drawn"].get<double>(), j["splats"].get<double>());
+  EXPECT_GT(j["slabs"].get<double>(), 0.0);
+  EXPECT_GE(j["slab_entries"].get<double>(), j["splats_drawn"].get<double>());
+  EXPECT_GT(j["peak_rss"].get<double>(), 1e6);
+  ASSERT_TRUE(j.contains("gpu_bytes"));
+  if (j["gpu_bytes"].get<double>() > 0)
+    EXPECT_NEAR(j["gpu_bytes_per_splat"].get<double>(),
+                j["gpu_bytes"].get<double>() / j["splats"].get<double>(), 1e-6);
+  else
+    EXPECT_TRUE(j["gpu_bytes_per_splat"].is_null());
+  // Without a picture there is no frame to report.
+  EXPECT_EQ(runEwaview("--synthetic sphere:24 --stats").code, 2);
+}
+
+}  // namespace
+}  // namespace ewa::test
