@@ -12,6 +12,7 @@ uniform bool uSplitDepth;   // composite: take only the share between the slab's
 uniform bool uOpenTails;    // the first and last slab of a kernel take its tails
 uniform float uSlabNear;
 uniform float uSlabFar;
+uniform bool uPost;         // post-classification: sum weight * value and weight * normal
 
 flat in vec2 vCenter;
 flat in vec3 vConic;
@@ -22,7 +23,11 @@ flat in vec3 vDepth;
 flat in float vDepthSigma;
 flat in int vOpen;
 
-out vec4 outColor;  // (colour * optical depth, optical depth), blended additively in a slab
+// Blended additively in a slab. pre: (colour * optical depth, optical depth). post: (weight *
+// value, 0, 0, weight) and (weight * normal, 0), the weight being the optical depth a unit
+// extinction would give (world length of the ray the kernel covers).
+layout(location = 0) out vec4 outColor;
+layout(location = 1) out vec4 outNormal;
 
 void main() {
   vec2 dx = gl_FragCoord.xy - vCenter;
@@ -40,8 +45,15 @@ void main() {
     w *= slabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar);
   if (uMode == 2) {
     outColor = vec4(vValue * w, 0.0, 0.0, 0.0);  // blended with GL_MAX
+    outNormal = vec4(0.0);
     return;
   }
   float depth = vAmplitude * w;
+  if (uPost) {
+    outColor = vec4(vValue * depth, 0.0, 0.0, depth);
+    outNormal = vec4(vColor * depth, 0.0);
+    return;
+  }
   outColor = vec4(vColor * depth, depth);
+  outNormal = vec4(0.0);
 }

@@ -1,6 +1,7 @@
 // Per-splat setup shared by the point-sprite and quad vertex shaders.
 #include "ewa_footprint.glsl"
 #include "clip_region.glsl"
+#include "headlight.glsl"
 
 layout(std430, binding = 0) readonly buffer Splats { uvec2 splats[]; };
 layout(std430, binding = 1) readonly buffer Order { uint order[]; };
@@ -11,6 +12,7 @@ uniform mat4 uView;          // world -> camera
 uniform mat3 uCovariance;    // camera-space kernel covariance W V'' W^T
 uniform vec3 uOrigin;
 uniform vec3 uSpacing;
+uniform vec3 uKernelSigma;   // kernel standard deviations per axis: kernel width * spacing
 uniform float uVoxelVolume;  // sx * sy * sz: g = tau * voxel volume
 uniform float uKernelRadius; // world bounding radius of a kernel, for culling
 uniform bool uOrthographic;
@@ -24,17 +26,15 @@ uniform float uNearDepth;
 uniform uint uFirst;         // offset of this draw's slab in order[]
 uniform sampler1D uTransfer; // rgb + extinction tau per world unit
 uniform float uSurfaceTau;   // optical depth of a surface-splat layer along its normal
-uniform bool uShading;
-uniform float uAmbient;
-uniform float uDiffuse;
-uniform float uSpecular;
-uniform float uShininess;
+// Post-classification (composite only): splats carry their value and camera-space normal with
+// unit extinction; the slab pass classifies the kernel-weighted mean per pixel.
+uniform bool uPost;
 
 flat out vec2 vCenter;
 flat out vec3 vConic;
 flat out float vAmplitude;
-flat out vec3 vColor;
-flat out float vValue;       // normalized value, for MIP
+flat out vec3 vColor;       // post: the camera-space normal, for shading per pixel
+flat out float vValue;       // normalized value, for MIP and post-classification
 flat out vec3 vDepth;        // mean depth at the center, depth slope per pixel (x, y)
 flat out float vDepthSigma;
 flat out int vOpen;          // 1: first slab of this splat, 2: last slab (open tails)
@@ -42,13 +42,6 @@ flat out int vOpen;          // 1: first slab of this splat, 2: last slab (open 
 const uint kFirstSlab = 0x80000000u;
 const uint kLastSlab = 0x40000000u;
 const uint kIndexMask = 0x3fffffffu;
-
-// The mirror of headlightShade in src/core/shading.cpp.
-vec3 headlightShade(vec3 rgb, vec3 normal, vec3 toEye) {
-  if (!uShading || !(dot(normal, normal) > 0.0)) return rgb;
-  float ndl = abs(dot(normal, toEye));
-  return rgb * (uAmbient + uDiffuse * ndl) + vec3(uSpecular * pow(ndl, uShininess));
-}
 
 // Fills the flat outputs for splat number `n` of this draw; false when nothing is to be drawn.
 bool setupSplat(uint n, out Footprint fp) {
@@ -64,14 +57,15 @@ bool setupSplat(uint n, out Footprint fp) {
   vec3 normal = vec3(nxy, nzKind.x);
   bool surface = nzKind.y >= 1.0;
   fp.visible = false;
-  if (!surface && !(tf.a > 0.0)) return false;
+  // Post: zero-opacity voxels next to visible ones shape the mean value; they stay.
+  if (!uPost && !surface && !(tf.a > 0.0)) return false;
   vec3 world = uOrigin + vec3(ijk) * uSpacing;
   mat3 rotation = mat3(uView);
   mat3 cov = uCovariance;
-  float mass = tf.a * uVoxelVolume;
+  float mass = (uPost ? 1.0 : tf.a) * uVoxelVolume;
   if (surface) {
     world += normal * ((nzKind.y - 3.0) * uMinSpacing);
-    cov = surfaceCovariance(rotation, uSpacing, normal);
+    cov = surfaceCovariance(rotation, uKernelSigma, normal);
     mass = surfaceSplatMass(uSpacing, normal, uSurfaceTau);
   }
   vec3 u = (uView * vec4(world, 1.0)).xyz;
@@ -92,7 +86,7 @@ bool setupSplat(uint n, out Footprint fp) {
   vConic = fp.conic;
   vAmplitude = mass * fp.peak;
   vec3 toEye = uOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(-u);
-  vColor = headlightShade(tf.rgb, rotation * normal, toEye);
+  vColor = uPost ? rotation * normal : headlightShade(tf.rgb, rotation * normal, toEye);
   vValue = value;
   vDepth = vec3(fp.depth, fp.depthSlope);
   vDepthSigma = fp.depthSigma;

@@ -14,7 +14,8 @@ std::vector<glm::vec3> spriteSizes(const SplatRenderer& r, const Volume& vol, co
   // Splats sit in the volume's own frame, seen by the camera moved as the renderer moves it.
   const Camera local = cameraInVolumeFrame(cam, vol);
   const glm::dmat4 view = local.viewMatrix();
-  const glm::dmat3 cov = cameraCovariance(local.rotation(), vol.spacing());
+  const glm::dmat3 cov =
+      cameraCovariance(local.rotation(), kernelSigma(vol.spacing(), s.kernelWidth));
   const FootprintParams params = footprintParams(s, vol.spacing());
   std::vector<glm::vec3> out;
   for (const PackedSplat& p : r.splats().splats()) {

@@ -10,6 +10,7 @@
 #include "app/clip_options.h"
 #include "app/render_options.h"
 #include "app/version.h"
+#include "core/kernel_lattice.h"
 
 namespace ewa {
 
@@ -78,6 +79,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   addClipOptions(app, clipText);
   app.add_option("--cutoff", o->render.cutoff, "Footprint cutoff r = dx^T Q dx (default 4)")
       ->check(CLI::Range(0.25, 64.0));
+  app.add_option("--kernel-width", o->render.kernelWidth,
+                 "Kernel sigma in voxel spacings, 0.3 to 2 (default 1)")
+      ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
   app.add_option("--slab-thickness", o->render.slabThickness,
                  "Slab thickness in voxels of the smallest spacing, 0.25 and up (default 2)")
       ->check(CLI::Range(0.25, 1000.0));
@@ -126,7 +130,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   // "series/" and "series" are one folder (and name one bookmarks file beside it).
   while (o->file.size() > 1 && o->file.back() == '/') o->file.pop_back();
   o->resolutionGiven = !res.empty();
-  for (const char* name : {"--filter", "--render-mode", "--cutoff", "--slab-thickness", "--background"})
+  for (const char* name : {"--filter", "--render-mode", "--cutoff", "--kernel-width",
+                           "--classification", "--slab-thickness", "--background"})
     o->renderOptionsGiven |= app.count(name) > 0;
   if (!res.empty()) {
     o->width = res[0];

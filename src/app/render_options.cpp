@@ -7,6 +7,10 @@
 namespace ewa {
 
 void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
+  app.add_option("--classification", p.classification,
+                 "Transfer function applied per voxel before splatting (pre, default) or per pixel "
+                 "to the splatted value (post)")
+      ->check(CLI::IsMember({"pre", "post"}));
   app.add_option("--compositing", p.compositing,
                  "Slab order: front-to-back (default) or back-to-front")
       ->check(CLI::IsMember({"front-to-back", "back-to-front"}));
@@ -48,6 +52,7 @@ std::string finishShadingOptions(const RenderOptionText& p, RenderSettings* s) {
   parseCompositeOrder(p.compositing, &s->order);
   parseXRayMap(p.xrayMap, &s->xrayMap);
   parseGradientMode(p.gradient, &s->classification.gradient);
+  parseClassificationMode(p.classification, &s->classification.mode);
   if (p.surfaceValue) {
     if (!std::isfinite(*p.surfaceValue)) return "--surface-threshold: not a finite number";
     s->classification.surface = SurfaceCriterion::Value;
@@ -56,6 +61,10 @@ std::string finishShadingOptions(const RenderOptionText& p, RenderSettings* s) {
     s->classification.surface = SurfaceCriterion::Opacity;
     s->classification.threshold = *p.surfaceOpacity;
   }
+  if (s->classification.mode == ClassificationMode::Post &&
+      s->classification.surface != SurfaceCriterion::None)
+    return "--classification post draws no surface splats: drop --surface-threshold and "
+           "--surface-opacity-threshold";
   return "";
 }
 

@@ -17,11 +17,13 @@ struct RenderOptionText {
   std::string compositing = "front-to-back";
   std::string xrayMap = "exp";
   std::string gradient = "central";
+  std::string classification = "pre";
   std::optional<double> surfaceValue;
   std::optional<double> surfaceOpacity;
 };
 
-// Adds --compositing, --termination, --xray-map, --xray-scale, --shading, --ambient,
+// Adds --classification, --compositing, --termination, --xray-map, --xray-scale, --shading,
+// --ambient,
 // --diffuse, --specular, --shininess, --gradient, --surface-threshold,
 // --surface-opacity-threshold, --surface-min-gradient and --surface-opacity to `app`, writing
 // into `settings` and `text`; both must outlive the parse.

@@ -55,6 +55,10 @@ bool parseFilterMode(const std::string& text, FilterMode* mode) {
   return true;
 }
 
+glm::dvec3 kernelSigma(const glm::dvec3& spacing, double kernelWidth) {
+  return spacing * kernelWidth;
+}
+
 glm::dmat3 cameraCovariance(const glm::dmat3& rotation, const glm::dvec3& spacing) {
   const glm::dmat3 v(glm::dvec3(spacing.x * spacing.x, 0, 0),
                      glm::dvec3(0, spacing.y * spacing.y, 0),

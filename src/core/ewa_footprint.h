@@ -42,7 +42,13 @@ struct Footprint {
   double depthSigma = 0.0;
 };
 
-// Camera-space covariance W V'' W^T of a kernel with V'' = diag(spacing^2).
+// Standard deviations of a volume kernel per axis: sigma = kernelWidth * spacing (the paper's
+// kernel is kernelWidth 1). Voxels stay at their lattice positions and keep their mass
+// tau * sx * sy * sz: a lattice of unit-integral kernels sums to 1 / (sx sy sz) whatever their
+// width, up to the ripple of narrow ones (core/kernel_lattice.h).
+glm::dvec3 kernelSigma(const glm::dvec3& spacing, double kernelWidth);
+
+// Camera-space covariance W V'' W^T of a kernel with V'' = diag(spacing^2) (pass kernelSigma).
 glm::dmat3 cameraCovariance(const glm::dmat3& rotation, const glm::dvec3& spacing);
 
 // Camera-space covariance of a surface splat (EWA paper, section 5): the kernel

@@ -26,8 +26,9 @@ void SlabPartition::build(const SplatSet& splats, const std::vector<PackedAttrib
   const double d0 = glm::dot(row, origin) - view[3][2];
   const double di = row.x * spacing.x, dj = row.y * spacing.y, dk = row.z * spacing.z;
   // Depth variance of a volume kernel: (W V'' W^T)_zz, the same for every voxel.
+  const glm::dvec3 sigma = kernelSigma(spacing, extent.kernelWidth);
   const double volumeRadius =
-      std::sqrt(extent.cutoff * cameraCovariance(extent.rotation, spacing)[2][2]);
+      std::sqrt(extent.cutoff * cameraCovariance(extent.rotation, sigma)[2][2]);
   const bool surfaces = attributes.size() == n;
   lo_.resize(n);
   hi_.resize(n);
@@ -41,7 +42,7 @@ void SlabPartition::build(const SplatSet& splats, const std::vector<PackedAttrib
       if (a.surface) {
         d += glm::dot(row, a.normal) * a.offset * minSpacing;
         radius =
-            std::sqrt(extent.cutoff * surfaceCovariance(extent.rotation, spacing, a.normal)[2][2]);
+            std::sqrt(extent.cutoff * surfaceCovariance(extent.rotation, sigma, a.normal)[2][2]);
       }
     }
     if (!(d > nearCull)) {

@@ -25,6 +25,7 @@ struct DepthExtent {
   double cutoff = 4.0;
   glm::dmat3 rotation{1.0};  // W: world to camera
   glm::dvec3 spacing{1.0};
+  double kernelWidth = 1.0;  // kernels' sigma = kernelWidth * spacing (kernelSigma)
   bool swan = false;
   bool orthographic = false;
   double swanDepth = 1.0;    // perspective: kernels stretch by depth / swanDepth beyond it

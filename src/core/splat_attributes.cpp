@@ -116,12 +116,20 @@ ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf
     }
     return false;
   };
+  const bool post = c.mode == ClassificationMode::Post;
   auto keep = [&](int64_t i, int64_t j, int64_t k, double v) { return onSurface(i, j, k, v); };
-  out.splats = SplatSet::build(
-      volume, [&tf](double v) { return tf.alphaAt(v) > 0.0; }, 1,
-      c.surface == SurfaceCriterion::None ? SplatSet::VoxelPredicate()
-                                          : SplatSet::VoxelPredicate(keep),
-      maxSplats);
+  const auto isVisible = [&tf](double v) { return tf.alphaAt(v) > 0.0; };
+  std::vector<uint8_t> needed;
+  if (post) needed = postClassificationMask(volume, isVisible, c.postMargin);
+  auto inMask = [&](int64_t i, int64_t j, int64_t k, double) {
+    return needed[size_t(volume.index(i, j, k))] != 0;
+  };
+  out.splats =
+      SplatSet::build(volume, isVisible, 1,
+                      post                                  ? SplatSet::VoxelPredicate(inMask)
+                      : c.surface == SurfaceCriterion::None ? SplatSet::VoxelPredicate()
+                                                            : SplatSet::VoxelPredicate(keep),
+                      maxSplats);
   const double minSpacing = std::min({volume.spacing().x, volume.spacing().y, volume.spacing().z});
   out.attributes.reserve(out.splats.size());
   for (const PackedSplat& s : out.splats.splats()) {
@@ -132,7 +140,7 @@ ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf
     // Below this the direction is rounding noise: the splat stays unshaded.
     const bool hasNormal = mag * minSpacing > 1e-6 * width;
     const glm::dvec3 n = hasNormal ? -g / mag : glm::dvec3(0.0);
-    bool surface = hasNormal && onSurface(i, j, k, v);
+    bool surface = !post && hasNormal && onSurface(i, j, k, v);
     if (surface && c.surface == SurfaceCriterion::Opacity)
       surface = mag * minSpacing >= c.minGradient * width;
     // Onto the iso-surface by one Newton step along the gradient (value criterion only).

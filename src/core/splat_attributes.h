@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/post_classification.h"
 #include "core/splat_set.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
@@ -29,9 +30,14 @@ struct Classification {
   SurfaceCriterion surface = SurfaceCriterion::None;
   double threshold = 0.5;
   double minGradient = 0.0;
+  // Post: splats carry values, zero-opacity voxels within postMargin voxels of visible ones
+  // (or of a transfer-function crossing) are kept, and there are no surface splats.
+  ClassificationMode mode = ClassificationMode::Pre;
+  int postMargin = 2;  // set from the kernel's reach (splatClassification in render/renderer.h)
   bool operator==(const Classification& o) const {
     return gradient == o.gradient && surface == o.surface && threshold == o.threshold &&
-           minGradient == o.minGradient;
+           minGradient == o.minGradient && mode == o.mode &&
+           (mode == ClassificationMode::Pre || postMargin == o.postMargin);
   }
   bool operator!=(const Classification& o) const { return !(*this == o); }
 };
@@ -65,7 +71,8 @@ struct ClassifiedSplats {
 };
 
 // The splats of `volume` under `tf` (voxels with opacity > 0, plus surface voxels whatever
-// their opacity), their normals and surface flags.
+// their opacity; post: plus postClassificationMask's margin, no surfaces), their normals and
+// surface flags.
 // Throws SplatLimitError when more than `maxSplats` voxels would be kept.
 ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf,
                                 const Classification& c, size_t maxSplats = SIZE_MAX);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "core/kernel_lattice.h"
 #include "io/atomic_file.h"
 #include "io/clip_region_json.h"
 
@@ -54,6 +55,8 @@ std::string viewerSettingsToJson(const ViewerSettings& s) {
   j["render"] = {{"filter", filterModeName(s.filter)},
                  {"mode", s.renderMode},
                  {"cutoff", s.cutoff},
+                 {"kernel_width", s.kernelWidth},
+                 {"classification", s.classification},
                  {"slab_thickness", s.slabThickness},
                  {"background", {s.background.r, s.background.g, s.background.b}},
                  {"level_of_detail", s.levelOfDetail}};
@@ -91,6 +94,10 @@ ViewerSettings viewerSettingsFromJson(const std::string& text, const std::string
       if (mode == "composite" || mode == "xray" || mode == "mip") s.renderMode = mode;
       const double cutoff = r.value("cutoff", s.cutoff);
       if (std::isfinite(cutoff)) s.cutoff = std::clamp(cutoff, 0.25, 64.0);
+      const double width = r.value("kernel_width", s.kernelWidth);
+      if (std::isfinite(width)) s.kernelWidth = std::clamp(width, kMinKernelWidth, kMaxKernelWidth);
+      const std::string classification = r.value("classification", s.classification);
+      if (classification == "pre" || classification == "post") s.classification = classification;
       const double slab = r.value("slab_thickness", s.slabThickness);
       if (std::isfinite(slab)) s.slabThickness = std::clamp(slab, 0.05, 1000.0);
       if (r.contains("background")) {

@@ -22,7 +22,9 @@ struct ViewerSettings {
   FilterMode filter = FilterMode::Ewa;
   std::string renderMode = "composite";
   double cutoff = 4.0;
-  double slabThickness = 2.0;  // RenderSettings' default
+  double kernelWidth = 1.0;            // RenderSettings' default
+  std::string classification = "pre";  // "pre" or "post"
+  double slabThickness = 2.0;          // RenderSettings' default
   glm::dvec3 background{0.0};
   bool levelOfDetail = true;  // coarser level while moving
   // The crop box and planes of the last session and the volume they were for (its absolute

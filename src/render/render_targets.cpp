@@ -22,12 +22,14 @@ void RenderTargets::resize(int w, int h) {
   }
   *this = RenderTargets();  // free the old images first: the new ones may be large
   slab = gl::Texture::create2D(GL_RGBA32F, w, h);
+  slabNormal = gl::Texture::create2D(GL_RGBA16F, w, h);
   accum = gl::Texture::create2D(GL_RGBA32F, w, h);
   output = gl::Texture::create2D(GL_RGBA8, w, h);
   stencil = gl::Texture::create2D(GL_DEPTH24_STENCIL8, w, h);
-  for (gl::Texture* t : {&slab, &accum, &output}) t->setFilter(GL_NEAREST, GL_NEAREST);
+  for (gl::Texture* t : {&slab, &slabNormal, &accum, &output}) t->setFilter(GL_NEAREST, GL_NEAREST);
   slabFbo = gl::Framebuffer::create();
   slabFbo.attachColor(0, slab);
+  slabFbo.attachColor(1, slabNormal);
   slabFbo.attachDepth(stencil, GL_DEPTH_STENCIL_ATTACHMENT);
   slabFbo.checkComplete();
   accumFbo = gl::Framebuffer::create();

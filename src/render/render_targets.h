@@ -1,4 +1,5 @@
-// RenderTargets: the float slab, accumulation, stencil and 8-bit output images of one viewport size.
+// RenderTargets: the float slab, accumulation, stencil and 8-bit output images of one viewport
+// size.
 #pragma once
 
 #include "gl/framebuffer.h"
@@ -9,10 +10,11 @@ namespace ewa {
 struct RenderTargets {
   int width = 0;
   int height = 0;
-  gl::Texture slab;    // RGBA32F: (sum of colour * optical depth, sum of optical depth)
-  gl::Texture accum;   // RGBA32F: premultiplied colour and opacity, front to back
-  gl::Texture output;  // RGBA8: the final picture over the background
-  gl::Texture stencil; // DEPTH24_STENCIL8, shared by slab and accumulation: opaque pixels
+  gl::Texture slab;        // RGBA32F: (sum of colour * optical depth, sum of optical depth)
+  gl::Texture slabNormal;  // RGBA16F, post-classification with shading: sum of weight * normal
+  gl::Texture accum;       // RGBA32F: premultiplied colour and opacity, front to back
+  gl::Texture output;      // RGBA8: the final picture over the background
+  gl::Texture stencil;     // DEPTH24_STENCIL8, shared by slab and accumulation: opaque pixels
   gl::Framebuffer slabFbo;
   gl::Framebuffer accumFbo;
   gl::Framebuffer outputFbo;

@@ -26,6 +26,12 @@ FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3
   return params;
 }
 
+Classification splatClassification(const RenderSettings& settings) {
+  Classification c = settings.classification;
+  c.postMargin = postClassificationMargin(settings.cutoff, settings.kernelWidth);
+  return c;
+}
+
 bool parseRenderMode(const std::string& text, RenderMode* mode) {
   if (text == "composite")
     *mode = RenderMode::Composite;

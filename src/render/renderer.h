@@ -42,6 +42,9 @@ struct RenderSettings {
   FilterMode filter = FilterMode::Ewa;
   RenderMode mode = RenderMode::Composite;
   double cutoff = 4.0;  // footprint cutoff r = dx^T Q dx
+  // Kernel standard deviation in voxel spacings per axis (kernelSigma), the mass per voxel
+  // unchanged: narrower kernels blur less and cost fewer fragments (as width^2).
+  double kernelWidth = 1.0;
   // In units of the smallest voxel spacing, at least 0.25. 2 by default: kernels split exactly
   // between slabs, so thinner slabs change the picture little (tests) and cost more draws.
   double slabThickness = 2.0;
@@ -62,6 +65,11 @@ struct RenderSettings {
 // The footprint parameters every splat of a volume with this spacing gets under `settings`:
 // Swan's s is the smallest spacing, and voxels closer than it to the eye plane are culled.
 FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3& spacing);
+
+// settings.classification as the splats must be built for these settings: post-classification
+// keeps a margin of as many voxels as a kernel reaches (cutoff and kernel width). Pass this, not
+// settings.classification, wherever splats are built or compared.
+Classification splatClassification(const RenderSettings& settings);
 
 struct RenderStats {
   size_t splatsTotal = 0;  // non-transparent voxels

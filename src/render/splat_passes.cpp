@@ -54,6 +54,7 @@ bool SplatRenderer::allOpaque(const Camera& camera, const Projection& proj,
   const glm::dvec3& sp = volume_->spacing();
   const double maxSpacing = std::max({sp.x, sp.y, sp.z});
   const double minSpacing = std::min({sp.x, sp.y, sp.z});
+  const double maxSigma = maxSpacing * settings.kernelWidth;
   const glm::dvec3 lo = volume_->boundsMin(), hi = volume_->boundsMax();
   const glm::dmat4 view = camera.viewMatrix();
   double farDepth = 0.0;
@@ -61,7 +62,9 @@ bool SplatRenderer::allOpaque(const Camera& camera, const Projection& proj,
     const glm::dvec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
     const double depth = -(view * glm::dvec4(p, 1.0)).z;
     // A box reaching the eye plane would be clipped: not a safe bound for the test.
-    if (!proj.orthographic && depth < 2.0 * maxSpacing * std::sqrt(settings.cutoff)) return false;
+    if (!proj.orthographic &&
+        depth < 2.0 * std::max(maxSpacing, maxSigma) * std::sqrt(settings.cutoff))
+      return false;
     farDepth = std::max(farDepth, depth);
   }
   // Grow the box by what a kernel reaches beyond its center: its cutoff radius (stretched by
@@ -70,7 +73,7 @@ bool SplatRenderer::allOpaque(const Camera& camera, const Projection& proj,
       proj.orthographic ? 1.0 / proj.pixelsPerUnit : farDepth / proj.focalPixels;
   const double stretch =
       settings.filter == FilterMode::Swan ? std::max(1.0, pixelWorld / minSpacing) : 1.0;
-  const double grow = std::sqrt(settings.cutoff) * (maxSpacing * stretch + pixelWorld) + pixelWorld;
+  const double grow = std::sqrt(settings.cutoff) * (maxSigma * stretch + pixelWorld) + pixelWorld;
   boxProgram_.setMat4("uClip", clipMatrix(proj, view, 0.5 * maxSpacing));
   boxProgram_.setVec3("uBoxMin", glm::vec3(lo - grow));
   boxProgram_.setVec3("uBoxMax", glm::vec3(hi + grow));
@@ -91,6 +94,7 @@ void SplatRenderer::setSlabLoopState() {
   const bool terminate =
       settings.order == CompositeOrder::FrontToBack && settings.terminationOpacity < 1.0;
   targets_.slab.bindUnit(1);
+  targets_.slabNormal.bindUnit(3);
   slabProgram_.setInt("uSlab", 1);
   targets_.accum.bindUnit(2);
   markProgram_.setInt("uAccum", 2);
@@ -112,6 +116,8 @@ void SplatRenderer::beginCompositeSlab() {
   const GLfloat zero[4] = {0, 0, 0, 0};
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
   targets_.slabFbo.clearColor(0, zero);
+  if (postClassified(frame_.settings) && frame_.settings.lighting.enabled)
+    targets_.slabFbo.clearColor(1, zero);
 }
 
 void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
@@ -316,9 +322,10 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   targets_.accumFbo.clearColor(0, zero);
   targets_.slabFbo.clearColor(0, zero);
   glClearNamedFramebufferfi(targets_.slabFbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-  if (volume_ && (splatsDirty_ || settings.classification != classification_)) {
+  const Classification classification = splatClassification(settings);
+  if (volume_ && (splatsDirty_ || classification != classification_)) {
     const auto classifyStart = Clock::now();
-    rebuildSplats(settings.classification);
+    rebuildSplats(classification);
     stats_.classifyMs = millisecondsSince(classifyStart);
   }
   auto stageStart = Clock::now();
@@ -336,6 +343,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     extent.cutoff = settings.cutoff;
     extent.rotation = camera.rotation();
     extent.spacing = sp;
+    extent.kernelWidth = settings.kernelWidth;
     extent.swan = settings.filter == FilterMode::Swan;
     extent.orthographic = proj.orthographic;
     extent.swanDepth = proj.focalPixels * params.minSpacing;
@@ -355,6 +363,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
       stats_.quadPass = 2.0 * footprintRadiusBound(proj, settings, nearest) + 0.5 > pointSizeLimit_;
       setCommonUniforms(pointProgram_, camera, proj, settings);
       setCommonUniforms(quadProgram_, camera, proj, settings);
+      setSlabPassUniforms(proj, settings);
       frame_.drawSplats = true;
       const size_t slabCount = partition_.slabs().size();
       frame_.meanEntries = double(order.size()) / double(std::max<size_t>(1, slabCount));

@@ -121,7 +121,7 @@ void SplatRenderer::uploadSplats() {
 double SplatRenderer::footprintRadiusBound(const Projection& proj, const RenderSettings& settings,
                                            double nearestDepth) const {
   const glm::dvec3& sp = volume_->spacing();
-  const double sigma = std::max({sp.x, sp.y, sp.z});
+  const double sigma = std::max({sp.x, sp.y, sp.z}) * settings.kernelWidth;
   const double minSpacing = std::min({sp.x, sp.y, sp.z});
   double ppu = proj.pixelsPerUnit;
   if (!proj.orthographic) {
@@ -140,11 +140,14 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   const FootprintParams params = footprintParams(settings, sp);
   const Lighting& light = settings.lighting;
   p.setMat4("uView", glm::mat4(camera.viewMatrix()));
-  p.setMat3("uCovariance", glm::mat3(cameraCovariance(camera.rotation(), sp)));
+  const glm::dvec3 sigma = kernelSigma(sp, settings.kernelWidth);
+  p.setMat3("uCovariance", glm::mat3(cameraCovariance(camera.rotation(), sigma)));
+  p.setVec3("uKernelSigma", glm::vec3(sigma));
   p.setVec3("uOrigin", glm::vec3(volume_->origin()));
   p.setVec3("uSpacing", glm::vec3(sp));
   p.setFloat("uVoxelVolume", float(sp.x * sp.y * sp.z));
-  p.setFloat("uKernelRadius", float(std::sqrt(settings.cutoff) * std::max({sp.x, sp.y, sp.z})));
+  p.setFloat("uKernelRadius",
+             float(std::sqrt(settings.cutoff) * std::max({sigma.x, sigma.y, sigma.z})));
   p.setInt("uOrthographic", proj.orthographic ? 1 : 0);
   p.setFloat("uFocalPixels", float(proj.focalPixels));
   p.setFloat("uPixelsPerUnit", float(proj.pixelsPerUnit));
@@ -164,6 +167,33 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
   p.setInt("uMode", int(settings.mode));
   setClipUniforms(p, settings.clip, *volume_, camera, proj);
+  p.setInt("uPost", postClassified(settings) ? 1 : 0);
+}
+
+bool SplatRenderer::postClassified(const RenderSettings& settings) {
+  return settings.classification.mode == ClassificationMode::Post &&
+         settings.mode == RenderMode::Composite;
+}
+
+void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSettings& settings) {
+  gl::Program& p = slabProgram_;
+  const Lighting& light = settings.lighting;
+  const bool post = postClassified(settings);
+  p.setInt("uPost", post ? 1 : 0);
+  p.setInt("uTransfer", 0);
+  p.setInt("uSlabNormal", 3);
+  p.setInt("uOrthographic", proj.orthographic ? 1 : 0);
+  p.setFloat("uFocalPixels", float(proj.focalPixels));
+  p.setVec2("uViewport", glm::vec2(proj.width, proj.height));
+  p.setInt("uShading", light.enabled ? 1 : 0);
+  p.setFloat("uAmbient", float(light.ambient));
+  p.setFloat("uDiffuse", float(light.diffuse));
+  p.setFloat("uSpecular", float(light.specular));
+  p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
+  // The normal sums are written only where they are used.
+  const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  const GLenum first[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
+  glNamedFramebufferDrawBuffers(targets_.slabFbo.id(), 2, post && light.enabled ? both : first);
 }
 
 void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails) {

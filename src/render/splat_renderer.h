@@ -83,6 +83,10 @@ class SplatRenderer : public Renderer {
   void setCommonUniforms(gl::Program& program, const Camera& camera, const Projection& proj,
                          const RenderSettings& settings);
   void setSlabUniforms(const Slab& slab, bool split, bool openTails);
+  // Post-classification (composite mode only): splats carry values, the slab pass classifies.
+  static bool postClassified(const RenderSettings& settings);
+  // The slab pass's uniforms and the slab buffer's draw buffers for this frame.
+  void setSlabPassUniforms(const Projection& proj, const RenderSettings& settings);
   void drawSplats(const Slab& slab, bool quads);
   // GL state every step needs again (a window draws other things between steps).
   void bindFrameState();

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "core/kernel_lattice.h"
 #include "ui/render_options_panel.h"
 
 namespace ewa {
@@ -95,6 +96,15 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
   }
 
   changed |= sliderDouble("cutoff", &settings.cutoff, 1.0, 16.0, "%.2f");
+  changed |=
+      sliderDouble("kernel width", &settings.kernelWidth, kMinKernelWidth, kMaxKernelWidth, "%.2f");
+  // Post-classification splats values and classifies per pixel: no surface splats there.
+  bool post = settings.classification.mode == ClassificationMode::Post;
+  if (ImGui::Checkbox("post-classified", &post)) {
+    settings.classification.mode = post ? ClassificationMode::Post : ClassificationMode::Pre;
+    if (post) settings.classification.surface = SurfaceCriterion::None;
+    changed = true;
+  }
   changed |= sliderDouble("slab (voxels)", &settings.slabThickness, 0.25, 8.0, "%.2f",
                           ImGuiSliderFlags_Logarithmic);
 

@@ -44,7 +44,10 @@ bool drawRenderOptions(RenderSettings& s, double valueMin, double valueMax) {
     }
   }
   bool surfaces = s.classification.surface == SurfaceCriterion::Value;
-  if (ImGui::Checkbox("surface splats at value", &surfaces)) {
+  ImGui::BeginDisabled(s.classification.mode == ClassificationMode::Post);
+  const bool toggled = ImGui::Checkbox("surface splats at value", &surfaces);
+  ImGui::EndDisabled();
+  if (toggled) {
     s.classification.surface = surfaces ? SurfaceCriterion::Value : SurfaceCriterion::None;
     if (surfaces &&
         !(s.classification.threshold >= valueMin && s.classification.threshold <= valueMax))

@@ -178,10 +178,10 @@ bool ViewerWindow::refine(const glm::ivec2& fb) {
     // Another classification (gradients, surface splats) is built on the worker first, once;
     // refineDue() waits for it. Should that fail, the start below classifies itself.
     SplatRenderer* full = lod_.fullSplatRenderer();
-    if (full && full->needsSplats(settings_.classification) &&
-        fullBuildFor_ != settings_.classification) {
-      fullBuildFor_ = settings_.classification;
-      liveTf_.buildFullSplats(lod_, settings_.classification);
+    const Classification wanted = splatClassification(settings_);
+    if (full && full->needsSplats(wanted) && fullBuildFor_ != wanted) {
+      fullBuildFor_ = wanted;
+      liveTf_.buildFullSplats(lod_, wanted);
       return false;
     }
     // The slab partition and the uniforms: this frame's work; the slabs follow in the next
@@ -277,8 +277,8 @@ bool ViewerWindow::drawFrame() {
     const int level = levelOfDetail_ ? LodPolicy::kLevelCount - 1 : 0;
     TerminalProgress note("ewaview: building splats for " + current_.name + ",");
     if (levelOfDetail_) {
-      liveTf_.buildFullLevel(lod_, settings_.classification);
-      fullBuildFor_ = settings_.classification;
+      liveTf_.buildFullLevel(lod_, splatClassification(settings_));
+      fullBuildFor_ = splatClassification(settings_);
       // The coarse levels classify now (it draws tiny images: before the picture shown).
       lod_.warmUp(controller_.camera(), settings_);
     }

@@ -25,7 +25,7 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
       drawClipPanel(settings_.clip, current_.volume->worldBoundsMin(),
                     current_.volume->worldBoundsMax(), controller_.camera());
   if (clip.changed) ++settingsRevision_;
-  if (const TransferFunction* tf = liveTf_.drawAndApply(lod_, settings_.classification))
+  if (const TransferFunction* tf = liveTf_.drawAndApply(lod_, splatClassification(settings_)))
     current_.tf = *tf;
   switchRendererIfAsked();
   applySessionEdits(session_.draw(sessionView()), fb, screenshotNow);
@@ -45,6 +45,8 @@ void ViewerWindow::saveSettings() {
   saved_.filter = settings_.filter;
   saved_.renderMode = renderModeName(settings_.mode);
   saved_.cutoff = settings_.cutoff;
+  saved_.kernelWidth = settings_.kernelWidth;
+  saved_.classification = classificationModeName(settings_.classification.mode);
   saved_.slabThickness = settings_.slabThickness;
   saved_.background = settings_.background;
   saved_.levelOfDetail = levelOfDetail_;

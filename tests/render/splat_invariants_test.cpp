@@ -1,7 +1,6 @@
 // The invariants of ../shared/DESIGN.md on the GPU: shader = C++ reference, mass, homogeneous
 // medium, degenerate views.
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render_fixture.h"
@@ -19,15 +18,20 @@ struct SplatCase {
   double angle;
 };
 
+// Kernel widths (sigma in voxel spacings) every invariant is checked at: narrow, the paper's,
+// wide.
+constexpr double kWidths[] = {0.6, 1.0, 1.6};
+
 // One visible voxel in the middle of a 5^3 volume.
 Volume singleVoxel(glm::dvec3 spacing) {
-  return makeVolume(5, 5, 5, spacing, [](int i, int j, int k) { return i == 2 && j == 2 && k == 2; });
+  return makeVolume(5, 5, 5, spacing,
+                    [](int i, int j, int k) { return i == 2 && j == 2 && k == 2; });
 }
 
 TEST_F(SplatInvariants, ShaderFootprintEqualsCppReferenceAndKeepsMass) {
   const int w = 96, h = 80;
   const SplatCase cases[] = {
-      {FilterMode::Ewa, false, {0.3, -0.2, 6.0}, {1, 1, 1}, 30},    // magnified, near the axis
+      {FilterMode::Ewa, false, {0.3, -0.2, 6.0}, {1, 1, 1}, 30},       // magnified, near the axis
       {FilterMode::Ewa, false, {3.0, 2.0, 5.0}, {1.0, 0.5, 2.0}, 40},  // rectilinear, oblique
       {FilterMode::Ewa, false, {0.0, 0.0, 400.0}, {1, 1, 1}, 30},  // minified: the low-pass wins
       {FilterMode::Plain, false, {1.0, 1.0, 8.0}, {1.0, 1.0, 1.0}, 30},
@@ -35,51 +39,57 @@ TEST_F(SplatInvariants, ShaderFootprintEqualsCppReferenceAndKeepsMass) {
       {FilterMode::Ewa, true, {2.0, -3.0, 10.0}, {2.0, 1.0, 1.0}, 20},
       {FilterMode::Plain, true, {0.0, 0.0, 10.0}, {1.0, 1.0, 1.0}, 20},
   };
-  for (const SplatCase& c : cases) {
-    const Volume vol = singleVoxel(c.spacing);
-    const TransferFunction tf = whiteTf(0.5, 1.0);
-    renderer()->setVolume(vol);
-    renderer()->setTransferFunction(tf);
-    Camera cam;
-    cam.focalPoint = vol.worldPosition(2, 2, 2) + glm::dvec3(0.2, -0.1, 0.0);
-    cam.position = cam.focalPoint + c.eye;
-    cam.viewAngleDeg = c.angle;
-    cam.orthographic = c.orthographic;
-    RenderSettings settings;
-    settings.filter = c.filter;
-    settings.mode = RenderMode::XRay;
-    renderer()->render(cam, settings, w, h);
-    const std::vector<float> depth = renderer()->readOpticalDepth();
-    ASSERT_EQ(depth.size(), size_t(w) * h);
+  for (const SplatCase& c : cases)
+    for (double width : kWidths) {
+      const Volume vol = singleVoxel(c.spacing);
+      const TransferFunction tf = whiteTf(0.5, 1.0);
+      renderer()->setVolume(vol);
+      renderer()->setTransferFunction(tf);
+      Camera cam;
+      cam.focalPoint = vol.worldPosition(2, 2, 2) + glm::dvec3(0.2, -0.1, 0.0);
+      cam.position = cam.focalPoint + c.eye;
+      cam.viewAngleDeg = c.angle;
+      cam.orthographic = c.orthographic;
+      RenderSettings settings;
+      settings.filter = c.filter;
+      settings.mode = RenderMode::XRay;
+      settings.kernelWidth = width;
+      renderer()->render(cam, settings, w, h);
+      const std::vector<float> depth = renderer()->readOpticalDepth();
+      ASSERT_EQ(depth.size(), size_t(w) * h);
 
-    // The same splat through the C++ reference.
-    const Projection proj = cam.projection(w, h);
-    const glm::dvec3 u = glm::dvec3(cam.viewMatrix() * glm::dvec4(vol.worldPosition(2, 2, 2), 1.0));
-    FootprintParams params;
-    params.filter = c.filter;
-    params.minSpacing = std::min({c.spacing.x, c.spacing.y, c.spacing.z});
-    const Footprint fp = computeFootprint(u, cameraCovariance(cam.rotation(), c.spacing), proj, params);
-    ASSERT_TRUE(fp.visible);
-    const double g = tf.extinctionAt(200.0) * c.spacing.x * c.spacing.y * c.spacing.z;
-    double sum = 0.0, peak = 0.0, worst = 0.0;
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const double expected = g * footprintWeight(fp, {x + 0.5, y + 0.5}, params.cutoff);
-        const double got = depth[size_t(y) * w + x];
-        ASSERT_TRUE(std::isfinite(got));
-        sum += got;
-        peak = std::max(peak, expected);
-        worst = std::max(worst, std::abs(got - expected));
+      // The same splat through the C++ reference.
+      const Projection proj = cam.projection(w, h);
+      const glm::dvec3 u =
+          glm::dvec3(cam.viewMatrix() * glm::dvec4(vol.worldPosition(2, 2, 2), 1.0));
+      FootprintParams params;
+      params.filter = c.filter;
+      params.minSpacing = std::min({c.spacing.x, c.spacing.y, c.spacing.z});
+      const Footprint fp = computeFootprint(
+          u, cameraCovariance(cam.rotation(), kernelSigma(c.spacing, width)), proj, params);
+      ASSERT_TRUE(fp.visible);
+      const double g = tf.extinctionAt(200.0) * c.spacing.x * c.spacing.y * c.spacing.z;
+      double sum = 0.0, peak = 0.0, worst = 0.0;
+      for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+          const double expected = g * footprintWeight(fp, {x + 0.5, y + 0.5}, params.cutoff);
+          const double got = depth[size_t(y) * w + x];
+          ASSERT_TRUE(std::isfinite(got));
+          sum += got;
+          peak = std::max(peak, expected);
+          worst = std::max(worst, std::abs(got - expected));
+        }
+      }
+      const std::string what = std::string(filterModeName(c.filter)) +
+                               (c.orthographic ? " orthographic" : " perspective") +
+                               ", kernel width " + std::to_string(width);
+      EXPECT_LT(worst, 2e-3 * peak) << what << ": shader differs from the C++ footprint";
+      if (fp.center.x - fp.radius > 0 && fp.center.x + fp.radius < w &&
+          fp.center.y - fp.radius > 0 && fp.center.y + fp.radius < h &&
+          std::sqrt(fp.covariance[0][0]) > 0.7) {
+        EXPECT_NEAR(sum / (g * fp.jacobianDet), 1.0, 0.01) << what << ": image integral != mass";
       }
     }
-    const std::string what = std::string(filterModeName(c.filter)) +
-                             (c.orthographic ? " orthographic" : " perspective");
-    EXPECT_LT(worst, 2e-3 * peak) << what << ": shader differs from the C++ footprint";
-    if (fp.center.x - fp.radius > 0 && fp.center.x + fp.radius < w && fp.center.y - fp.radius > 0 &&
-        fp.center.y + fp.radius < h && std::sqrt(fp.covariance[0][0]) > 0.7) {
-      EXPECT_NEAR(sum / (g * fp.jacobianDet), 1.0, 0.01) << what << ": image integral != mass";
-    }
-  }
 }
 
 TEST_F(SplatInvariants, QuadPathDrawsTheSameFootprintAsPointSprites) {
@@ -108,7 +118,8 @@ TEST_F(SplatInvariants, QuadPathDrawsTheSameFootprintAsPointSprites) {
 
 // Opacity at the image centre of a slab of constant extinction seen head-on.
 double centreOpacity(SplatRenderer& r, const Volume& vol, const TransferFunction& tf,
-                     FilterMode filter, bool ortho) {
+                     FilterMode filter, bool ortho, double kernelWidth,
+                     ClassificationMode classification) {
   r.setVolume(vol);
   r.setTransferFunction(tf);
   Camera cam;
@@ -119,6 +130,8 @@ double centreOpacity(SplatRenderer& r, const Volume& vol, const TransferFunction
   cam.orthographic = ortho;
   RenderSettings settings;
   settings.filter = filter;
+  settings.kernelWidth = kernelWidth;
+  settings.classification.mode = classification;
   r.render(cam, settings, 48, 48);
   const Image8 img = r.readImage();
   double sum = 0.0;
@@ -135,13 +148,18 @@ TEST_F(SplatInvariants, HomogeneousMediumHasOpacityOneMinusExpTauL) {
     const double tau = 1.2 / L;
     const TransferFunction tf = whiteTf(1.0 - std::exp(-tau), 1.0);
     const double expected = 1.0 - std::exp(-tau * L);
-    for (FilterMode f : {FilterMode::Ewa, FilterMode::Swan, FilterMode::Plain}) {
-      for (bool ortho : {false, true}) {
-        const double got = centreOpacity(*renderer(), vol, tf, f, ortho);
-        EXPECT_NEAR(got, expected, 0.03 * expected)
-            << "spacing " << s << ", " << filterModeName(f) << (ortho ? " orthographic" : " perspective");
-      }
-    }
+    // Post-classified, the medium's constant value comes out of every slab's weighted mean
+    // exactly and the weights sum to the ray's length: the same tolerance holds.
+    for (ClassificationMode c : {ClassificationMode::Pre, ClassificationMode::Post})
+      for (FilterMode f : {FilterMode::Ewa, FilterMode::Swan, FilterMode::Plain})
+        for (bool ortho : {false, true})
+          for (double width : kWidths) {
+            const double got = centreOpacity(*renderer(), vol, tf, f, ortho, width, c);
+            EXPECT_NEAR(got, expected, 0.03 * expected)
+                << "spacing " << s << ", " << filterModeName(f)
+                << (ortho ? " orthographic" : " perspective") << ", kernel width " << width << ", "
+                << classificationModeName(c) << "-classified";
+          }
   }
 }
 
@@ -157,7 +175,7 @@ TEST_F(SplatInvariants, DegenerateViewsGiveFinitePictures) {
   renderer()->render(inside, settings, 32, 32);
   Image8 img = renderer()->readImage();
   EXPECT_GT(img.pixels[(16 * 32 + 16) * 3], 0);  // voxels in front are drawn
-  Camera away;  // looking away from the volume: nothing in front
+  Camera away;                                   // looking away from the volume: nothing in front
   away.position = {3.5, 3.5, 20.0};
   away.focalPoint = {3.5, 3.5, 40.0};
   renderer()->render(away, settings, 32, 32);

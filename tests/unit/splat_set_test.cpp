@@ -80,5 +80,26 @@ TEST(SlabPartition, ListsEachSplatInEverySlabItsDepthExtentOverlaps) {
   }
 }
 
+TEST(SlabPartition, KernelReachScalesWithKernelWidth) {
+  const Volume vol = rampVolume(10);
+  const SplatSet set = SplatSet::build(vol, [](double) { return true; });
+  const glm::dmat4 view =
+      glm::lookAt(glm::dvec3(4.5, 4.5, 20), glm::dvec3(4.5, 4.5, 0), glm::dvec3(0, 1, 0));
+  DepthExtent extent;
+  extent.kernelWidth = 0.5;  // sigma half a voxel: kernels reach sqrt(4) * 0.5 = 1 in depth
+  SlabPartition part;
+  part.build(set, {}, vol.origin(), view, 1.0, 0.5, extent);
+  // Depths 11..20, extents [d - 1, d + 1] from 10 to 21: slabs [10, 11), ..., [21, 22), each
+  // kernel listed in the three its closed extent touches.
+  ASSERT_EQ(part.slabs().size(), 12u);
+  EXPECT_NEAR(part.slabs().front().nearDepth, 10.0, 1e-9);
+  EXPECT_EQ(part.order().size(), 3u * 1000u);
+  extent.kernelWidth = 1.5;  // reach 3: [8, 23], seven slabs a kernel
+  part.build(set, {}, vol.origin(), view, 1.0, 0.5, extent);
+  EXPECT_NEAR(part.slabs().front().nearDepth, 8.0, 1e-9);
+  EXPECT_EQ(part.slabs().size(), 16u);
+  EXPECT_EQ(part.order().size(), 7u * 1000u);
+}
+
 }  // namespace
 }  // namespace ewa

@@ -56,6 +56,8 @@ TEST_F(ViewerFiles, SettingsRoundTripAndDefaults) {
   s.filter = FilterMode::Swan;
   s.renderMode = "xray";
   s.cutoff = 9.0;
+  s.kernelWidth = 0.8;
+  s.classification = "post";
   s.slabThickness = 2.5;
   s.background = {0.1, 0.2, 0.3};
   s.levelOfDetail = false;
@@ -68,6 +70,8 @@ TEST_F(ViewerFiles, SettingsRoundTripAndDefaults) {
   EXPECT_EQ(r.filter, FilterMode::Swan);
   EXPECT_EQ(r.renderMode, "xray");
   EXPECT_EQ(r.cutoff, 9.0);
+  EXPECT_EQ(r.kernelWidth, 0.8);
+  EXPECT_EQ(r.classification, "post");
   EXPECT_EQ(r.slabThickness, 2.5);
   EXPECT_EQ(r.background, s.background);
   EXPECT_FALSE(r.levelOfDetail);
@@ -82,6 +86,8 @@ TEST_F(ViewerFiles, SettingsDefaultsAreTheRenderersDefaults) {
   EXPECT_EQ(render.mode, RenderMode::Composite);
   EXPECT_EQ(fresh.renderMode, "composite");
   EXPECT_EQ(fresh.cutoff, render.cutoff);
+  EXPECT_EQ(fresh.kernelWidth, render.kernelWidth);
+  EXPECT_EQ(fresh.classification, classificationModeName(render.classification.mode));
   EXPECT_EQ(fresh.slabThickness, render.slabThickness);
   EXPECT_EQ(fresh.background, render.background);
   const std::string p = path("partial/settings.json");
@@ -95,12 +101,13 @@ TEST_F(ViewerFiles, SettingsDefaultsAreTheRenderersDefaults) {
 
 TEST_F(ViewerFiles, SettingsClampOddValuesAndRejectBadJson) {
   const ViewerSettings s = viewerSettingsFromJson(
-      R"({"window_size":[1,99999],"render":{"cutoff":1000,"mode":"weird","filter":"blurry",
+      R"({"window_size":[1,99999],"render":{"cutoff":1000,"kernel_width":0.01,"mode":"weird","filter":"blurry",
           "background":[2,-1,0.5]},"unknown":1})",
       "s.json");
   EXPECT_EQ(s.windowWidth, 64);
   EXPECT_EQ(s.windowHeight, 16384);
   EXPECT_EQ(s.cutoff, 64.0);
+  EXPECT_EQ(s.kernelWidth, 0.3);
   EXPECT_EQ(s.renderMode, "composite");
   EXPECT_EQ(s.filter, FilterMode::Ewa);
   EXPECT_EQ(s.background, glm::dvec3(1.0, 0.0, 0.5));

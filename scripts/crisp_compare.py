@@ -1,0 +1,263 @@
+#!/usr/bin/python3
+"""Close-ups of shared volumes: ewaview's splatting (each classification and kernel width) beside
+VTK's CPU ray caster with the same data, transfer function and camera.
+
+For each volume and each (classification, kernel width) it prints SSIM on luminance against
+VTK's picture, the sharpness ratio (mean luminance gradient over the pixels where VTK's picture
+has edges, ours over VTK's) and milliseconds per frame (median wall time of render() after a
+first, classifying frame), as one Markdown table; with --out it writes the pictures and a
+montage per volume (VTK, then the variants in the order of the table).
+
+  PYTHONPATH=build/python /usr/bin/python3 scripts/crisp_compare.py --out crisp_out
+
+Needs the ewaview module (build/python), NumPy and python3-vtk9 (VTK renders off screen; run
+under xvfb-run without a display).
+"""
+import argparse
+import os
+import statistics
+import sys
+import time
+
+import subprocess
+import tempfile
+
+import numpy as np
+
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared", "data")
+if not os.path.isdir(DATA):  # a git worktree beside the main checkout
+    DATA = "/work/shared/data"
+SIZE = 384
+
+
+def raw(path, dtype, shape, offset=0):
+    with open(path, "rb") as f:
+        f.seek(offset)
+        a = np.frombuffer(f.read(), dtype=dtype, count=int(np.prod(shape)))
+    return a.reshape(shape).astype(dtype.lstrip("<>=") if dtype[0] in "<>" else dtype)
+
+
+def tooth():
+    path = os.path.join(DATA, "tooth", "tooth.nrrd")
+    with open(path, "rb") as f:
+        head = f.read(4096)
+    return raw(path, "u1", (161, 94, 103), head.index(b"\n\n") + 2)
+
+
+# name: (array [z, y, x], spacing (x, y, z), transfer function, eye direction, distance)
+# Distances give 2 to 3 pixels a voxel at the focal point (30 degrees, 384 pixels).
+def volumes():
+    d = DATA
+    return {
+        "aneurism": lambda: (raw(f"{d}/aneurism/aneurism.raw", "u1", (256, 256, 256)), (1, 1, 1),
+                     {"opacity": [[0, 0], [40, 0], [90, 0.5], [255, 0.9]],
+                      "color": [[0, 0.8, 0.2, 0.1], [120, 1, 0.6, 0.4], [255, 1, 1, 0.9]]},
+                     (0.6, -1.0, 0.5), 250.0),
+        "bonsai": lambda: (raw(f"{d}/bonsai/bonsai.raw", "u1", (256, 256, 256)), (1, 1, 1),
+                   {"opacity": [[0, 0], [55, 0], [65, 0.15], [90, 0.3], [255, 0.9]],
+                    "color": [[0, 0.3, 0.6, 0.2], [45, 0.35, 0.65, 0.25], [90, 0.6, 0.45, 0.25],
+                              [150, 0.85, 0.75, 0.6], [255, 1, 1, 1]]},
+                   (1.0, -0.8, 0.4), 260.0),
+        "engine": lambda: (raw(f"{d}/engine/engine.raw", "u1", (128, 256, 256)), (1, 1, 1),
+                   {"opacity": [[0, 0], [120, 0], [140, 0.04], [160, 0.04], [175, 0],
+                                [185, 0], [200, 0.7], [255, 0.9]],
+                    "color": [[0, 0.5, 0.6, 0.9], [160, 0.6, 0.7, 1.0], [190, 1, 0.7, 0.3],
+                              [255, 1, 1, 0.9]]},
+                   (0.8, -1.0, 0.9), 250.0),
+        "CThead": lambda: (raw(f"{d}/cthead/CThead.raw", ">u2", (113, 256, 256)), (1, 1, 2),
+                   {"opacity": [[0, 0], [1100, 0], [1400, 0.6], [3272, 0.9]],
+                    "color": [[0, 0.9, 0.7, 0.6], [1400, 1, 0.95, 0.85], [3272, 1, 1, 1]]},
+                   (1.0, -0.5, 0.3), 280.0),
+        "tooth": lambda: (tooth(), (1, 1, 1),
+                  {"opacity": [[0, 0], [90, 0], [110, 0.25], [150, 0.25], [190, 0.9],
+                               [255, 0.9]],
+                   "color": [[0, 0.9, 0.8, 0.6], [150, 0.95, 0.85, 0.7], [200, 1, 1, 1],
+                             [255, 1, 1, 1]]},
+                  (1.0, 0.6, 0.4), 230.0),
+    }
+
+
+def camera(array, spacing, direction, distance):
+    nz, ny, nx = array.shape
+    focal = np.array([(nx - 1) * spacing[0], (ny - 1) * spacing[1], (nz - 1) * spacing[2]]) / 2
+    e = np.asarray(direction, float)
+    return focal, focal + distance * e / np.linalg.norm(e), (0.0, 0.0, 1.0)
+
+
+def vtk_render(array, spacing, tf, cam, repeats):
+    # VTK's GL and ewaview's OSMesa do not share a process: this runs in a child (--vtk).
+    try:
+        from vtkmodules.util import numpy_support
+        from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
+        from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer,
+                                                 vtkRenderWindow, vtkVolume, vtkVolumeProperty,
+                                                 vtkWindowToImageFilter)
+        from vtkmodules.vtkRenderingVolume import vtkFixedPointVolumeRayCastMapper
+        import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+        import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401
+    except ImportError as e:
+        print(f"crisp_compare.py: VTK not available ({e})", file=sys.stderr)
+        sys.exit(3)
+    image = vtkImageData()
+    nz, ny, nx = array.shape
+    image.SetDimensions(nx, ny, nz)
+    image.SetSpacing(*spacing)
+    image.SetOrigin(0, 0, 0)
+    flat = np.ascontiguousarray(array).ravel()
+    image.GetPointData().SetScalars(numpy_support.numpy_to_vtk(flat, deep=True))
+    opacity = vtkPiecewiseFunction()
+    for v, a in tf["opacity"]:
+        opacity.AddPoint(v, a)
+    color = vtkColorTransferFunction()
+    for v, r, g, b in tf["color"]:
+        color.AddRGBPoint(v, r, g, b)
+    prop = vtkVolumeProperty()
+    prop.SetScalarOpacity(opacity)
+    prop.SetColor(color)
+    prop.SetScalarOpacityUnitDistance(1.0)
+    prop.SetInterpolationTypeToLinear()
+    prop.ShadeOff()
+    mapper = vtkFixedPointVolumeRayCastMapper()
+    mapper.SetInputData(image)
+    mapper.SetAutoAdjustSampleDistances(0)
+    mapper.SetSampleDistance(0.25 * min(spacing))
+    mapper.SetImageSampleDistance(1.0)
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    ren = vtkRenderer()
+    ren.SetBackground(0, 0, 0)
+    ren.AddVolume(volume)
+    win = vtkRenderWindow()
+    win.SetOffScreenRendering(1)
+    win.AddRenderer(ren)
+    win.SetSize(SIZE, SIZE)
+    focal, position, up = cam
+    c = ren.GetActiveCamera()
+    c.SetFocalPoint(*focal)
+    c.SetPosition(*position)
+    c.SetViewUp(*up)
+    c.SetViewAngle(30.0)
+    ren.ResetCameraClippingRange()
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        win.Render()
+        times.append(time.perf_counter() - start)
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(win)
+    grab.SetInputBufferTypeToRGB()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    out = grab.GetOutput()
+    w, h, _ = out.GetDimensions()
+    rgb = numpy_support.vtk_to_numpy(out.GetPointData().GetScalars()).reshape(h, w, 3)
+    return rgb[::-1].copy(), 1000.0 * statistics.median(times)
+
+
+def luminance(rgb):
+    x = rgb.astype(np.float64) / 255.0
+    return 0.2126 * x[..., 0] + 0.7152 * x[..., 1] + 0.0722 * x[..., 2]
+
+
+def blur(x, sigma=1.5, radius=5):
+    k = np.exp(-0.5 * (np.arange(-radius, radius + 1) / sigma) ** 2)
+    k /= k.sum()
+    p = np.pad(x, radius, mode="reflect")
+    rows = sum(k[i] * p[:, i:i + x.shape[1]] for i in range(2 * radius + 1))
+    return sum(k[i] * rows[i:i + x.shape[0], :] for i in range(2 * radius + 1))
+
+
+def ssim(a, b):
+    """Mean SSIM (Wang et al. 2004: Gaussian window sigma 1.5, K1 0.01, K2 0.03, L 1)."""
+    c1, c2 = 0.01 ** 2, 0.03 ** 2
+    ma, mb = blur(a), blur(b)
+    va, vb = blur(a * a) - ma * ma, blur(b * b) - mb * mb
+    cov = blur(a * b) - ma * mb
+    s = ((2 * ma * mb + c1) * (2 * cov + c2)) / ((ma * ma + mb * mb + c1) * (va + vb + c2))
+    return float(s.mean())
+
+
+def gradient(x):
+    gy, gx = np.gradient(x)
+    return np.hypot(gx, gy)
+
+
+def sharpness(ours, ref):
+    """Mean gradient over the reference's edges (>= 25% of its 99th percentile), ours / ref."""
+    g_ref, g_ours = gradient(ref), gradient(ours)
+    edges = g_ref >= 0.25 * np.percentile(g_ref, 99)
+    return float(g_ours[edges].mean() / g_ref[edges].mean())
+
+
+def vtk_child(name, out, repeats):
+    array, spacing, tf, direction, distance = volumes()[name]()
+    rgb, ms = vtk_render(array, spacing, tf, camera(array, spacing, direction, distance), repeats)
+    np.save(out, rgb)
+    print(f"{ms:.3f}")
+
+
+def vtk_picture(name, repeats):
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "vtk.npy")
+        run = subprocess.run([sys.executable, os.path.abspath(__file__), "--vtk", name, out,
+                              "--repeats", str(repeats)], capture_output=True, text=True)
+        if run.returncode != 0:
+            sys.exit(f"crisp_compare.py: VTK failed on {name}: {run.stderr.strip()}")
+        return np.load(out), float(run.stdout.split()[-1])
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--vtk", nargs=2, metavar=("VOLUME", "NPY"), help=argparse.SUPPRESS)
+    p.add_argument("--out", help="folder for the pictures and montages")
+    p.add_argument("--volumes", default="aneurism,bonsai,engine,CThead,tooth")
+    p.add_argument("--widths", default="1,0.85,0.7")
+    p.add_argument("--classifications", default="pre,post")
+    p.add_argument("--cutoff", type=float, default=4.0)
+    p.add_argument("--repeats", type=int, default=3)
+    a = p.parse_args()
+    if a.vtk:
+        return vtk_child(a.vtk[0], a.vtk[1], a.repeats)
+    import ewaview
+    widths = [float(w) for w in a.widths.split(",")]
+    variants = [(c, w) for c in a.classifications.split(",") for w in widths]
+    if a.out:
+        os.makedirs(a.out, exist_ok=True)
+    print(f"| volume | classification | kernel width | SSIM | sharpness | ms/frame |")
+    print(f"| --- | --- | --- | --- | --- | --- |")
+    all_vols = volumes()
+    for name in a.volumes.split(","):
+        array, spacing, tf, direction, distance = all_vols[name]()
+        cam = camera(array, spacing, direction, distance)
+        ref, vtk_ms = vtk_picture(name, a.repeats)
+        ref_y = luminance(ref)
+        print(f"| {name} | VTK ray caster | | 1 | 1 | {vtk_ms:.0f} |", flush=True)
+        scene = ewaview.Scene(array,
+                              spacing=spacing, resolution=(SIZE, SIZE),
+                              camera_position=tuple(cam[1]), camera_focal_point=tuple(cam[0]),
+                              camera_view_up=cam[2], background=(0, 0, 0), cutoff=a.cutoff)
+        scene.transfer_function = dict(tf, opacity_unit_distance=1.0)
+        pictures = [ref]
+        for classification, width in variants:
+            options = dict(classification=classification, kernel_width=width)
+            img = scene.render(**options)  # classifies
+            times = []
+            for _ in range(a.repeats):
+                start = time.perf_counter()
+                img = scene.render(**options)
+                times.append(time.perf_counter() - start)
+            y = luminance(img)
+            print(f"| {name} | {classification} | {width:g} | {ssim(y, ref_y):.3f} | "
+                  f"{sharpness(y, ref_y):.2f} | {1000 * statistics.median(times):.0f} |",
+                  flush=True)
+            pictures.append(img)
+            if a.out:
+                ewaview.write_png(f"{a.out}/{name}_{classification}_{width:g}.png", img)
+        if a.out:
+            ewaview.write_png(f"{a.out}/{name}_vtk.png", ref)
+            ewaview.write_png(f"{a.out}/{name}_montage.png", np.concatenate(pictures, axis=1))
+
+
+if __name__ == "__main__":
+    main()
