@@ -228,8 +228,10 @@ TEST_F(Soak, TwoThousandFramesLeakNoGlObjectsAndNoMemory) {
         << "resident memory grew by " << rssAtEnd - rssAfterWarmUp << " KiB";
     // The last cycle repeats the one before with the same renderers: the heap in use must end
     // where it started (RSS varies by up to 0.9 MiB here between runs and is no leak measure).
-    // Measured: equal to the KiB. 16 KiB: a leak of 82 bytes a frame fails.
-    EXPECT_LT(heapAtEnd - heapSteadyStart, 16)
+    // Measured alone: equal to the KiB; with other GL tests and builds loading both cores, up to
+    // +34 KiB (llvmpipe's threads free their per-frame allocations later). 64 KiB: a leak of 328
+    // bytes a frame (one small object a frame) still fails; LeakSanitizer checks the rest.
+    EXPECT_LT(heapAtEnd - heapSteadyStart, 64)
         << "the heap in use grew by " << heapAtEnd - heapSteadyStart << " KiB in the last "
         << kCycle << " frames";
   }
