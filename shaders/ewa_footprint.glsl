@@ -18,7 +18,7 @@ struct FootprintParams {
   int filterMode;
   float cutoff;
   float minSpacing;
-  float nearDepth;
+  float cullDepth;
 };
 
 struct Footprint {
@@ -80,7 +80,7 @@ float slabFraction(float mu, float sigma, float zNear, float zFar, bool openNear
 
 bool cullKernel(vec3 u, float radius, Projection proj, FootprintParams params) {
   float depth = -u.z;
-  if (depth <= params.nearDepth) return true;
+  if (depth <= params.cullDepth) return true;
   float hw = proj.size.x * 0.5, hh = proj.size.y * 0.5;
   if (proj.orthographic) {
     float s = proj.pixelsPerUnit;
@@ -95,7 +95,7 @@ Footprint computeFootprint(vec3 u, mat3 covIn, Projection proj, FootprintParams 
   Footprint fp;
   fp.visible = false;
   fp.depth = -u.z;
-  if (!(fp.depth > params.nearDepth)) return fp;
+  if (!(fp.depth > params.cullDepth)) return fp;
   float d = fp.depth;
   float ppu = proj.orthographic ? proj.pixelsPerUnit : proj.focalPixels / d;
   fp.stretch = params.filterMode == kFilterSwan ? max(1.0, 1.0 / (ppu * params.minSpacing)) : 1.0;

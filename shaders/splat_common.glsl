@@ -2,6 +2,7 @@
 #include "ewa_footprint.glsl"
 #include "clip_region.glsl"
 #include "headlight.glsl"
+#include "kernel_reach.glsl"
 
 layout(std430, binding = 0) readonly buffer Splats { uvec2 splats[]; };
 layout(std430, binding = 1) readonly buffer Order { uint order[]; };
@@ -14,7 +15,7 @@ uniform vec3 uOrigin;
 uniform vec3 uSpacing;
 uniform vec3 uKernelSigma;   // kernel standard deviations per axis: kernel width * spacing
 uniform float uVoxelVolume;  // sx * sy * sz: g = tau * voxel volume
-uniform float uKernelRadius; // world bounding radius of a kernel, for culling
+uniform float uMaxSigma;     // a kernel's largest standard deviation (kernel width * spacing)
 uniform bool uOrthographic;
 uniform float uFocalPixels;
 uniform float uPixelsPerUnit;
@@ -22,7 +23,7 @@ uniform vec2 uViewport;
 uniform int uFilter;
 uniform float uCutoff;
 uniform float uMinSpacing;
-uniform float uNearDepth;
+uniform float uCullDepth;    // kernels at or nearer than this camera depth are culled
 uniform uint uFirst;         // offset of this draw's slab in order[]
 uniform sampler1D uTransfer; // rgb + extinction tau per world unit
 uniform float uSurfaceTau;   // optical depth of a surface-splat layer along its normal
@@ -42,6 +43,12 @@ flat out int vOpen;          // 1: first slab of this splat, 2: last slab (open 
 const uint kFirstSlab = 0x80000000u;
 const uint kLastSlab = 0x40000000u;
 const uint kIndexMask = 0x3fffffffu;
+
+// The reach of this frame's kernels (src/core/kernel_reach.h).
+KernelReach kernelReach() {
+  return KernelReach(uCutoff, uMaxSigma, uMinSpacing, uFilter == kFilterSwan, uOrthographic,
+                     uFocalPixels, uPixelsPerUnit);
+}
 
 // Fills the flat outputs for splat number `n` of this draw; false when nothing is to be drawn.
 bool setupSplat(uint n, out Footprint fp) {
@@ -71,11 +78,9 @@ bool setupSplat(uint n, out Footprint fp) {
   vec3 u = (uView * vec4(world, 1.0)).xyz;
   Projection proj = Projection(uOrthographic, uFocalPixels, uPixelsPerUnit, 0.5 * uViewport,
                                uViewport);
-  FootprintParams params = FootprintParams(uFilter, uCutoff, uMinSpacing, uNearDepth);
-  // Cull before forming the Jacobian; Swan's stretch and the low-pass filter widen kernels.
-  float pixelWorld = uOrthographic ? 1.0 / uPixelsPerUnit : max(-u.z, 0.0) / uFocalPixels;
-  float stretch = uFilter == kFilterSwan ? max(1.0, pixelWorld / uMinSpacing) : 1.0;
-  float radius = uKernelRadius * stretch + sqrt(uCutoff) * pixelWorld;
+  FootprintParams params = FootprintParams(uFilter, uCutoff, uMinSpacing, uCullDepth);
+  // Cull before forming the Jacobian.
+  float radius = worldReach(kernelReach(), -u.z);
   if (cullKernel(u, radius, proj, params)) return false;
   // Kernels wholly outside the crop box or a clipping plane; twice the cutoff radius, so the
   // Gaussian tail a culled kernel would have left on the kept side is negligible.

@@ -54,7 +54,7 @@ int run(int argc, char** argv) {
     size_t drawn = 0;
     for (int f = 0; f < frames; ++f) {
       renderer.render(cam, o.render, size, size);
-      ewaMs.push_back(renderer.stats().cpuMs);
+      ewaMs.push_back(renderer.stats().renderMs);
       drawn = std::max(drawn, renderer.stats().splatsDrawn);
       baseline.setSprites(spriteSizes(renderer, scene.volume, cam, o.render, size, size));
       bareMs.push_back(baseline.draw(size, size));

@@ -88,7 +88,7 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
     glFinish();
     ewa.push_back(msSince(start));
     const RenderStats s = m.ewa.stats();
-    partition.push_back(s.sortMs);
+    partition.push_back(s.partitionMs);
     splat.push_back(s.splatMs);
     final.push_back(s.compositeMs);
     sprites.push_back(m.sprites.draw(size, size));

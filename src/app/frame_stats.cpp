@@ -23,9 +23,9 @@ std::string frameStatsJson(const RenderStats& s, const std::string& renderer, in
   j["renderer"] = renderer;
   j["width"] = width;
   j["height"] = height;
-  j["render_ms"] = s.cpuMs;
+  j["render_ms"] = s.renderMs;
   j["classify_ms"] = s.classifyMs;
-  j["partition_ms"] = s.sortMs;
+  j["partition_ms"] = s.partitionMs;
   j["splat_ms"] = s.splatMs;
   j["final_ms"] = s.compositeMs;
   j["splats"] = s.splatsTotal;

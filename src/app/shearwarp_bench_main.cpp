@@ -212,7 +212,7 @@ int run(int argc, char** argv) {
       const int n = std::min<int>(ewaViews, int(views.size()));
       for (int e = 0; e < n; ++e) {
         splat->render(views[size_t(e) * views.size() / n], rs, size, size);
-        sum += splat->stats().cpuMs / 1e3;
+        sum += splat->stats().renderMs / 1e3;
       }
       ewa = sum / n;
       ewaCount = n;

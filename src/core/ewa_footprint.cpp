@@ -100,7 +100,7 @@ double slabFraction(double mu, double sigma, double zNear, double zFar) {
 bool cullKernel(const glm::dvec3& u, double radius, const Projection& proj,
                 const FootprintParams& params) {
   const double depth = -u.z;
-  if (depth <= params.nearDepth) return true;
+  if (depth <= params.cullDepth) return true;
   const double hw = proj.width * 0.5, hh = proj.height * 0.5;
   if (proj.orthographic) {
     const double s = proj.pixelsPerUnit;
@@ -117,7 +117,7 @@ Footprint computeFootprint(const glm::dvec3& u, const glm::dmat3& covIn, const P
                            const FootprintParams& params) {
   Footprint fp;
   fp.depth = -u.z;
-  if (!(fp.depth > params.nearDepth)) return fp;
+  if (!(fp.depth > params.cullDepth)) return fp;
   const double d = fp.depth;
   // Pixels per world unit across the ray at this depth: Swan's sampling rate test.
   const double ppu = proj.orthographic ? proj.pixelsPerUnit : proj.focalPixels / d;

@@ -22,7 +22,7 @@ struct FootprintParams {
   FilterMode filter = FilterMode::Ewa;
   double cutoff = 4.0;      // r = dx^T Q dx is cut off above this
   double minSpacing = 1.0;  // smallest voxel spacing: Swan's s (the highest sampling rate)
-  double nearDepth = 1e-3;  // voxels closer than this to the eye plane are culled
+  double cullDepth = 1e-3;  // voxels at or closer than this to the eye plane are culled
 };
 
 struct Footprint {

@@ -27,8 +27,7 @@ void SlabPartition::build(const SplatSet& splats, const std::vector<PackedAttrib
   const double di = row.x * spacing.x, dj = row.y * spacing.y, dk = row.z * spacing.z;
   // Depth variance of a volume kernel: (W V'' W^T)_zz, the same for every voxel.
   const glm::dvec3 sigma = kernelSigma(spacing, extent.kernelWidth);
-  const double volumeRadius =
-      std::sqrt(extent.cutoff * cameraCovariance(extent.rotation, sigma)[2][2]);
+  const double volumeVariance = cameraCovariance(extent.rotation, sigma)[2][2];
   const bool surfaces = attributes.size() == n;
   lo_.resize(n);
   hi_.resize(n);
@@ -36,13 +35,12 @@ void SlabPartition::build(const SplatSet& splats, const std::vector<PackedAttrib
   nearestCenter_ = INFINITY;
   for (size_t m = 0; m < n; ++m) {
     double d = d0 + SplatSet::i(s[m]) * di + SplatSet::j(s[m]) * dj + SplatSet::k(s[m]) * dk;
-    double radius = volumeRadius;
+    double variance = volumeVariance;
     if (surfaces && (attributes[m].nzKind >> 16) != 0) {
       const UnpackedAttributes a = unpackAttributes(attributes[m]);
       if (a.surface) {
         d += glm::dot(row, a.normal) * a.offset * minSpacing;
-        radius =
-            std::sqrt(extent.cutoff * surfaceCovariance(extent.rotation, sigma, a.normal)[2][2]);
+        variance = surfaceCovariance(extent.rotation, sigma, a.normal)[2][2];
       }
     }
     if (!(d > nearCull)) {
@@ -50,8 +48,7 @@ void SlabPartition::build(const SplatSet& splats, const std::vector<PackedAttrib
       continue;
     }
     nearestCenter_ = std::min(nearestCenter_, d);
-    if (extent.swan)
-      radius *= extent.orthographic ? extent.swanStretch : std::max(1.0, d / extent.swanDepth);
+    const double radius = depthReach(extent.reach, variance, d);
     lo_[m] = float(d - radius);
     hi_[m] = float(d + radius);
     lo = std::min(lo, double(lo_[m]));

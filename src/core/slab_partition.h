@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
+#include "core/kernel_reach.h"
 #include "core/splat_attributes.h"
 #include "core/splat_set.h"
 
@@ -19,17 +20,13 @@ struct Slab {
   uint32_t count = 0;
 };
 
-// How far in camera depth a kernel reaches: sqrt(cutoff * variance of depth), the depth extent
-// of the ellipsoid r <= cutoff; Swan's filter stretches kernels beyond the distance k.
+// What the partition needs to know of the kernels: their reach (kernel_reach.h), and the
+// camera rotation, voxel spacing and kernel width that give each kernel's depth variance.
 struct DepthExtent {
-  double cutoff = 4.0;
+  KernelReach reach;
   glm::dmat3 rotation{1.0};  // W: world to camera
   glm::dvec3 spacing{1.0};
   double kernelWidth = 1.0;  // kernels' sigma = kernelWidth * spacing (kernelSigma)
-  bool swan = false;
-  bool orthographic = false;
-  double swanDepth = 1.0;    // perspective: kernels stretch by depth / swanDepth beyond it
-  double swanStretch = 1.0;  // orthographic: the one stretch of every kernel
 };
 
 class SlabPartition {

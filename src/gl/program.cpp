@@ -191,6 +191,18 @@ void Program::setMat4(const std::string& uniform, const glm::mat4& value) {
   glProgramUniformMatrix4fv(id_, uniformLocation(uniform), 1, GL_FALSE, glm::value_ptr(value));
 }
 
+void Program::setDouble(const std::string& uniform, GLdouble value) {
+  glProgramUniform1d(id_, uniformLocation(uniform), value);
+}
+
+void Program::setDVec3(const std::string& uniform, const glm::dvec3& value) {
+  glProgramUniform3dv(id_, uniformLocation(uniform), 1, glm::value_ptr(value));
+}
+
+void Program::setDMat3(const std::string& uniform, const glm::dmat3& value) {
+  glProgramUniformMatrix3dv(id_, uniformLocation(uniform), 1, GL_FALSE, glm::value_ptr(value));
+}
+
 void Program::release() {
   if (id_ != 0) glDeleteProgram(id_);
   id_ = 0;

@@ -62,6 +62,9 @@ class Program {
   void setIVec3(const std::string& uniform, const glm::ivec3& value);
   void setMat3(const std::string& uniform, const glm::mat3& value);
   void setMat4(const std::string& uniform, const glm::mat4& value);
+  void setDouble(const std::string& uniform, GLdouble value);
+  void setDVec3(const std::string& uniform, const glm::dvec3& value);
+  void setDMat3(const std::string& uniform, const glm::dmat3& value);
 
   GLuint id() const { return id_; }
   // The stage names joined by " + ", as used in error messages.

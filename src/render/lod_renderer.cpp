@@ -4,17 +4,10 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "core/splat_set.h"
 #include "core/volume_downsample.h"
 #include "render/splat_renderer.h"
 
 namespace ewa {
-
-namespace {
-// RGBA32F slab and accumulation images and the RGBA8 output, per pixel (render_targets.h).
-constexpr size_t kTargetBytesPerPixel = 16 + 16 + 4;
-constexpr size_t kTransferTableBytes = 4096 * 16;
-}  // namespace
 
 LodVolumes buildLodVolumes(const Volume& volume) {
   LodVolumes out;
@@ -118,7 +111,6 @@ void LodRenderer::render(int level, const Camera& camera, const RenderSettings& 
   imageHeight_ = std::max(1, height / lod.imageDivisor);
   if (lod.volumeFactor == 1) fullPending_ = false;
   rendererFor(lod.volumeFactor).render(camera, settings, imageWidth_, imageHeight_);
-  sizes_[lod.volumeFactor] = {imageWidth_, imageHeight_};
   lastFactor_ = lod.volumeFactor;
   lastLevel_ = level;
 }
@@ -138,7 +130,6 @@ bool LodRenderer::stepFull(double budgetMs) {
   fullPending_ = false;
   imageWidth_ = fullWidth_;
   imageHeight_ = fullHeight_;
-  sizes_[1] = {imageWidth_, imageHeight_};
   lastFactor_ = 1;
   lastLevel_ = 0;
   return true;
@@ -158,22 +149,7 @@ void LodRenderer::warmUp(const Camera& camera, const RenderSettings& settings) {
 
 size_t LodRenderer::gpuBytes() const {
   size_t bytes = 0;
-  for (const auto& [factor, renderer] : renderers_) {
-    const RenderStats stats = renderer->stats();
-    if (stats.gpuBytes > 0) {
-      bytes += stats.gpuBytes;
-      continue;
-    }
-    // Estimate for renderers that do not count: splat and order buffers, the transfer table,
-    // the images of the last size drawn.
-    size_t splats = stats.splatsTotal;
-    if (const auto* splat = dynamic_cast<const SplatRenderer*>(renderer.get()))
-      splats = splat->splats().size();
-    bytes += splats * (sizeof(PackedSplat) + sizeof(uint32_t)) + kTransferTableBytes;
-    const auto it = sizes_.find(factor);
-    if (it != sizes_.end())
-      bytes += size_t(it->second.first) * size_t(it->second.second) * kTargetBytesPerPixel;
-  }
+  for (const auto& [factor, renderer] : renderers_) bytes += renderer->stats().gpuBytes;
   return bytes;
 }
 

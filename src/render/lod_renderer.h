@@ -79,8 +79,7 @@ class LodRenderer {
   int lastLevel() const { return lastLevel_; }
   // Whether the coarse volume for `factor` is there (1 always is once a volume is set).
   bool hasFactor(int factor) const;
-  // Bytes of GPU buffers and images all levels hold (renderer-reported when they report it,
-  // else estimated from the splat counts and image sizes).
+  // Bytes of GPU buffers and images all levels' renderers allocated (RenderStats::gpuBytes).
   size_t gpuBytes() const;
 
  private:
@@ -92,7 +91,6 @@ class LodRenderer {
   TransferFunction tf_;
   bool hasTf_ = false;
   std::map<int, std::unique_ptr<Renderer>> renderers_;
-  std::map<int, std::pair<int, int>> sizes_;  // image size per factor, for the estimate
   int lastFactor_ = 1;
   int lastLevel_ = 0;
   int imageWidth_ = 0, imageHeight_ = 0;

@@ -2,6 +2,8 @@
 // size.
 #pragma once
 
+#include <cstddef>
+
 #include "gl/framebuffer.h"
 #include "gl/texture.h"
 
@@ -21,6 +23,9 @@ struct RenderTargets {
 
   // (Re)creates the images when the size changes; throws gl::GlError if incomplete.
   void resize(int w, int h);
+  // Bytes the images hold: two RGBA32F, one RGBA16F, one RGBA8, one depth-stencil (4 bytes)
+  // per pixel.
+  size_t bytes() const { return size_t(width) * size_t(height) * (16 + 8 + 16 + 4 + 4); }
 };
 
 }  // namespace ewa

@@ -22,7 +22,7 @@ FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3
   params.filter = settings.filter;
   params.cutoff = settings.cutoff;
   params.minSpacing = std::min({spacing.x, spacing.y, spacing.z});
-  params.nearDepth = params.minSpacing;
+  params.cullDepth = params.minSpacing;
   return params;
 }
 

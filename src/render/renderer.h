@@ -81,16 +81,18 @@ struct RenderStats {
   size_t surfaceSplats = 0;  // splats drawn as flat surface kernels
   size_t slabEntries = 0;    // splats drawn summed over slabs (kernels span several slabs)
   bool quadPass = false;     // some footprints exceeded the point-size limit
-  double cpuMs = 0.0;        // CPU time of the last render() call, GPU work included (it waits)
-  // Time per stage of the last render() call, for the statistics panel; 0 where a renderer
-  // does not measure it (classify: splats from the transfer function, 0 when the set was
-  // kept; sort: slab bucketing and its upload; splat: drawing the kernels and blending each
+  // Wall time of the last frame (render(), or beginFrame and every stepFrame), waits for the
+  // GPU included.
+  double renderMs = 0.0;
+  // Time per stage of the last frame, for the statistics panel; 0 where a renderer does not
+  // measure it (classify: splats from the transfer function, 0 when the set was kept;
+  // partition: the slab partition and its upload; splat: drawing the kernels and blending each
   // slab under the image, which interleave per slab; composite: the final pass to the output).
   double classifyMs = 0.0;
-  double sortMs = 0.0;
+  double partitionMs = 0.0;
   double splatMs = 0.0;
   double compositeMs = 0.0;
-  size_t gpuBytes = 0;  // bytes of GL buffers and textures the renderer holds; 0: not counted
+  size_t gpuBytes = 0;  // bytes of GL buffers and textures the renderer allocated; 0: not counted
 };
 
 class Renderer {

@@ -51,7 +51,8 @@ void ShearWarpRenderer::render(const Camera& camera, const RenderSettings& setti
   // In the panel's stages: its tables are the classification, slices and warp the compositing.
   stats_.classifyMs = s.tableMs;
   stats_.compositeMs = s.compositeMs + s.warpMs;
-  stats_.cpuMs =
+  stats_.gpuBytes = size_t(width) * size_t(height) * 4;  // the RGBA8 texture it allocated
+  stats_.renderMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -7,6 +7,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <limits>
 
+#include "core/kernel_reach.h"
 #include "core/volume_orientation.h"
 #include "gl/gl_error.h"
 #include "render/splat_renderer.h"
@@ -20,8 +21,8 @@ namespace {
 constexpr size_t kCheckEvery = 4;
 
 // World to clip space for the pixel mapping of `proj`: x_pixel = principal + f u.xy / depth
-// (or ppu u.xy), and clip z inside [-w, w] for depths beyond `nearDepth`.
-glm::mat4 clipMatrix(const Projection& proj, const glm::dmat4& view, double nearDepth) {
+// (or ppu u.xy), and clip z inside [-w, w] for depths beyond `nearClip`.
+glm::mat4 clipMatrix(const Projection& proj, const glm::dmat4& view, double nearClip) {
   glm::dmat4 p(0.0);
   const double w = proj.width, h = proj.height;
   const double ox = 2.0 * proj.principal.x / w - 1.0, oy = 2.0 * proj.principal.y / h - 1.0;
@@ -37,7 +38,7 @@ glm::mat4 clipMatrix(const Projection& proj, const glm::dmat4& view, double near
     p[2][0] = -ox;
     p[2][1] = -oy;
     p[2][2] = -1.0;
-    p[3][2] = -2.0 * nearDepth;
+    p[3][2] = -2.0 * nearClip;
     p[2][3] = -1.0;
   }
   return glm::mat4(p * view);
@@ -53,8 +54,8 @@ bool SplatRenderer::allOpaque(const Camera& camera, const Projection& proj,
                               const RenderSettings& settings) {
   const glm::dvec3& sp = volume_->spacing();
   const double maxSpacing = std::max({sp.x, sp.y, sp.z});
-  const double minSpacing = std::min({sp.x, sp.y, sp.z});
-  const double maxSigma = maxSpacing * settings.kernelWidth;
+  const KernelReach reach =
+      kernelReach(proj, settings.filter, settings.cutoff, sp, settings.kernelWidth);
   const glm::dvec3 lo = volume_->boundsMin(), hi = volume_->boundsMax();
   const glm::dmat4 view = camera.viewMatrix();
   double farDepth = 0.0;
@@ -63,17 +64,13 @@ bool SplatRenderer::allOpaque(const Camera& camera, const Projection& proj,
     const double depth = -(view * glm::dvec4(p, 1.0)).z;
     // A box reaching the eye plane would be clipped: not a safe bound for the test.
     if (!proj.orthographic &&
-        depth < 2.0 * std::max(maxSpacing, maxSigma) * std::sqrt(settings.cutoff))
+        depth < 2.0 * std::max(maxSpacing, reach.maxSigma) * std::sqrt(reach.cutoff))
       return false;
     farDepth = std::max(farDepth, depth);
   }
-  // Grow the box by what a kernel reaches beyond its center: its cutoff radius (stretched by
-  // Swan's filter) plus the low-pass filter's, in world units at the farthest corner.
-  const double pixelWorld =
-      proj.orthographic ? 1.0 / proj.pixelsPerUnit : farDepth / proj.focalPixels;
-  const double stretch =
-      settings.filter == FilterMode::Swan ? std::max(1.0, pixelWorld / minSpacing) : 1.0;
-  const double grow = std::sqrt(settings.cutoff) * (maxSigma * stretch + pixelWorld) + pixelWorld;
+  // Grow the box by what a kernel reaches beyond its centre at the farthest corner (reach
+  // grows with depth), plus a pixel for rasterization.
+  const double grow = worldReach(reach, farDepth) + worldPerPixel(reach, farDepth);
   boxProgram_.setMat4("uClip", clipMatrix(proj, view, 0.5 * maxSpacing));
   boxProgram_.setVec3("uBoxMin", glm::vec3(lo - grow));
   boxProgram_.setVec3("uBoxMax", glm::vec3(hi + grow));
@@ -306,8 +303,8 @@ void SplatRenderer::render(const Camera& worldCamera, const RenderSettings& sett
   stepFrame(std::numeric_limits<double>::infinity());
 }
 
-void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& settings,
-                               int width, int height) {
+void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& settings, int width,
+                               int height) {
   // Splats live in the volume's own frame; the camera moves instead (volume_orientation.h).
   const Camera camera = volume_ ? cameraInVolumeFrame(worldCamera, *volume_) : worldCamera;
   const auto start = Clock::now();
@@ -340,17 +337,13 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     const double thickness =
         composite ? std::max(0.25, settings.slabThickness) * params.minSpacing : 1e30;
     DepthExtent extent;
-    extent.cutoff = settings.cutoff;
+    extent.reach = kernelReach(proj, settings.filter, settings.cutoff, sp, settings.kernelWidth);
     extent.rotation = camera.rotation();
     extent.spacing = sp;
     extent.kernelWidth = settings.kernelWidth;
-    extent.swan = settings.filter == FilterMode::Swan;
-    extent.orthographic = proj.orthographic;
-    extent.swanDepth = proj.focalPixels * params.minSpacing;
-    extent.swanStretch = std::max(1.0, 1.0 / (proj.pixelsPerUnit * params.minSpacing));
     stageStart = Clock::now();
     partition_.build(splats, classified_.attributes, volume_->origin(), camera.viewMatrix(),
-                     thickness, params.nearDepth, extent);
+                     thickness, params.cullDepth, extent);
     const auto& order = partition_.order();
     stats_.splatsTotal = splats.size();
     stats_.splatsDrawn = partition_.splatCount();
@@ -360,7 +353,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
       orderBuffer_.setData(GLsizeiptr(order.size() * sizeof(uint32_t)), order.data(),
                            GL_STREAM_DRAW);
       const double nearest = partition_.nearestCenter();
-      stats_.quadPass = 2.0 * footprintRadiusBound(proj, settings, nearest) + 0.5 > pointSizeLimit_;
+      stats_.quadPass = 2.0 * pixelReach(extent.reach, proj, nearest) + 0.5 > pointSizeLimit_;
       setCommonUniforms(pointProgram_, camera, proj, settings);
       setCommonUniforms(quadProgram_, camera, proj, settings);
       setSlabPassUniforms(proj, settings);
@@ -369,11 +362,11 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
       frame_.meanEntries = double(order.size()) / double(std::max<size_t>(1, slabCount));
       frame_.totalWeight = composite ? double(order.size()) + frame_.meanEntries * double(slabCount)
                                      : double(partition_.slabs().front().count);
-      stats_.sortMs = millisecondsSince(stageStart);  // bucketing and the order upload
+      stats_.partitionMs = millisecondsSince(stageStart);  // bucketing and the order upload
     }
   }
   frame_.active = true;
-  stats_.cpuMs = millisecondsSince(start);
+  stats_.renderMs = millisecondsSince(start);
 }
 
 bool SplatRenderer::stepFrame(double budgetMs) {
@@ -391,7 +384,7 @@ bool SplatRenderer::stepFrame(double budgetMs) {
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glUseProgram(0);
       stats_.splatMs += millisecondsSince(start);
-      stats_.cpuMs += millisecondsSince(start);
+      stats_.renderMs += millisecondsSince(start);
       return false;
     }
     // The slab loop's GPU work (splats and the blends between slabs) ends here; waiting for
@@ -401,7 +394,7 @@ bool SplatRenderer::stepFrame(double budgetMs) {
   }
   drawFinalPass();
   frame_.active = false;
-  stats_.cpuMs += millisecondsSince(start);
+  stats_.renderMs += millisecondsSince(start);
   return true;
 }
 

@@ -1,14 +1,13 @@
 // SplatRenderer: classification into splats, per-frame uniforms, splat drawing and read-back.
 #include "render/splat_renderer.h"
 
-#include <algorithm>
-#include <cmath>
-#include <string>
-
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <string>
 
 #include "gl/gl_error.h"
 #include "render/clip_uniforms.h"
@@ -25,7 +24,7 @@ SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
       slabProgram_(shaders.program("fullscreen.vert.glsl", "slab_composite.frag.glsl")),
       markProgram_(shaders.program("fullscreen.vert.glsl", "opacity_mark.frag.glsl")),
       finalProgram_(shaders.program("fullscreen.vert.glsl", "final_composite.frag.glsl")),
-      boxProgram_(shaders.program("bounds_box.vert.glsl", "baseline_point.frag.glsl")),
+      boxProgram_(shaders.program("bounds_box.vert.glsl", "bounds_box.frag.glsl")),
       emptyVao_(gl::VertexArray::create()),
       transferTexture_(gl::Texture::create1D(GL_RGBA32F, kTransferSamples)) {
   GLfloat range[2] = {1.0f, 1.0f};
@@ -46,6 +45,13 @@ SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
 
 SplatRenderer::~SplatRenderer() {
   if (query_) glDeleteQueries(1, &query_);
+}
+
+RenderStats SplatRenderer::stats() const {
+  RenderStats s = stats_;
+  s.gpuBytes = size_t(splatBuffer_.size() + orderBuffer_.size() + attributeBuffer_.size()) +
+               size_t(kTransferSamples) * 4 * sizeof(float) + targets_.bytes();
+  return s;
 }
 
 void SplatRenderer::setPointSizeLimit(float limit) {
@@ -118,22 +124,6 @@ void SplatRenderer::uploadSplats() {
   gl::checkGlError(("splat buffer upload (" + std::to_string(n) + " splats)").c_str());
 }
 
-double SplatRenderer::footprintRadiusBound(const Projection& proj, const RenderSettings& settings,
-                                           double nearestDepth) const {
-  const glm::dvec3& sp = volume_->spacing();
-  const double sigma = std::max({sp.x, sp.y, sp.z}) * settings.kernelWidth;
-  const double minSpacing = std::min({sp.x, sp.y, sp.z});
-  double ppu = proj.pixelsPerUnit;
-  if (!proj.orthographic) {
-    // Off-axis kernels stretch by up to 1 + tan^2 of the half diagonal angle.
-    const double t2 = (proj.width * proj.width + proj.height * proj.height) /
-                      (4.0 * proj.focalPixels * proj.focalPixels);
-    ppu = proj.focalPixels / std::max(nearestDepth, 1e-9) * (1.0 + t2);
-  }
-  const double swan = settings.filter == FilterMode::Swan ? sigma / minSpacing : 0.0;
-  return std::sqrt(settings.cutoff) * (sigma * ppu + 1.0 + swan);
-}
-
 void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, const Projection& proj,
                                       const RenderSettings& settings) {
   const glm::dvec3& sp = volume_->spacing();
@@ -146,8 +136,7 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setVec3("uOrigin", glm::vec3(volume_->origin()));
   p.setVec3("uSpacing", glm::vec3(sp));
   p.setFloat("uVoxelVolume", float(sp.x * sp.y * sp.z));
-  p.setFloat("uKernelRadius",
-             float(std::sqrt(settings.cutoff) * std::max({sigma.x, sigma.y, sigma.z})));
+  p.setFloat("uMaxSigma", float(std::max({sigma.x, sigma.y, sigma.z})));
   p.setInt("uOrthographic", proj.orthographic ? 1 : 0);
   p.setFloat("uFocalPixels", float(proj.focalPixels));
   p.setFloat("uPixelsPerUnit", float(proj.pixelsPerUnit));
@@ -155,7 +144,7 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setInt("uFilter", int(params.filter));
   p.setFloat("uCutoff", float(params.cutoff));
   p.setFloat("uMinSpacing", float(params.minSpacing));
-  p.setFloat("uNearDepth", float(params.nearDepth));
+  p.setFloat("uCullDepth", float(params.cullDepth));
   p.setFloat("uPointSizeLimit", pointSizeLimit_);
   p.setInt("uTransfer", 0);
   p.setFloat("uSurfaceTau",

@@ -42,7 +42,8 @@ class SplatRenderer : public Renderer {
   double frameProgress() const override;
   Image8 readImage() const override;
   unsigned outputTexture() const override { return targets_.output.id(); }
-  RenderStats stats() const override { return stats_; }
+  // The last frame's figures; gpuBytes: the buffers and textures allocated now.
+  RenderStats stats() const override;
 
   // Live transfer-function editing (kept apart from the drawing code): uploads `tf`'s table to
   // the GPU now and keeps the current splats, so the next render shows the new colours and
@@ -105,8 +106,6 @@ class SplatRenderer : public Renderer {
   void drawFinalPass();
   // True when every pixel the volume's bounding box covers is marked opaque.
   bool allOpaque(const Camera& camera, const Projection& proj, const RenderSettings& settings);
-  double footprintRadiusBound(const Projection& proj, const RenderSettings& settings,
-                              double nearestDepth) const;
 
   const Volume* volume_ = nullptr;
   TransferFunction tf_;

@@ -33,7 +33,11 @@ ClipPanelEdits drawClipPanel(ClipRegion& region, const glm::dvec3& lo, const glm
     edits.changed |= changed;
     edits.dragging |= ImGui::IsItemActive();
   };
-  ImGui::SetNextWindowPos(ImVec2(10.0f, 560.0f), ImGuiCond_FirstUseEver);
+  // Out of the way until asked for: a collapsed title bar below the transfer-function editor
+  // (its left edge: tf_editor.cpp), off the middle of the picture.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x - 386.0f, 360.0f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.85f);
   if (!ImGui::Begin("Crop and clip", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();

@@ -195,7 +195,7 @@ void drawRefinementOverlay(double progress) {
 
 void ControlPanel::drawStats(const FrameStats& stats) {
   const RenderStats& r = stats.render;
-  ImGui::Text("render %.1f ms   frame %.1f ms", r.cpuMs, stats.frameMs);
+  ImGui::Text("render %.1f ms   frame %.1f ms", r.renderMs, stats.frameMs);
   if (stats.refineProgress >= 0.0) {
     ImGui::ProgressBar(float(stats.refineProgress), ImVec2(180.0f, 0.0f));
     ImGui::SameLine();
@@ -206,9 +206,9 @@ void ControlPanel::drawStats(const FrameStats& stats) {
     ImGui::Text("refined in %.0f ms over %d frames (worst %.0f ms)", f.wallMs, f.frames,
                 f.worstFrameMs);
   }
-  if (r.classifyMs + r.sortMs + r.splatMs + r.compositeMs > 0.0)
-    ImGui::Text("classify %.1f  sort %.1f  splat %.1f  composite %.1f ms", r.classifyMs, r.sortMs,
-                r.splatMs, r.compositeMs);
+  if (r.classifyMs + r.partitionMs + r.splatMs + r.compositeMs > 0.0)
+    ImGui::Text("classify %.1f  partition %.1f  splat %.1f  composite %.1f ms", r.classifyMs,
+                r.partitionMs, r.splatMs, r.compositeMs);
   if (stats.lodLevel == 0)
     ImGui::Text("image %d x %d, full quality", stats.imageWidth, stats.imageHeight);
   else

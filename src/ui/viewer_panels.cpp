@@ -2,12 +2,14 @@
 // dropped files, bookmarks and the settings saved on exit.
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
 #include "io/atomic_file.h"
 #include "core/camera_views.h"
 #include "ui/clip_panel.h"
+#include "ui/crop_box_handles.h"
 #include "ui/viewer_window.h"
 
 namespace ewa {
@@ -24,7 +26,11 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   const ClipPanelEdits clip =
       drawClipPanel(settings_.clip, current_.volume->worldBoundsMin(),
                     current_.volume->worldBoundsMax(), controller_.camera());
-  if (clip.changed) ++settingsRevision_;
+  const glm::dvec3 extent =
+      current_.volume->worldBoundsMax() - current_.volume->worldBoundsMin();
+  const CropHandleEdits handles = drawCropBoxHandles(
+      settings_.clip, controller_.camera(), 0.01 * std::min({extent.x, extent.y, extent.z}));
+  if (clip.changed || handles.changed) ++settingsRevision_;
   if (const TransferFunction* tf = liveTf_.drawAndApply(lod_, splatClassification(settings_)))
     current_.tf = *tf;
   switchRendererIfAsked();

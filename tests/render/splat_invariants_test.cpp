@@ -219,15 +219,36 @@ TEST_F(SplatInvariants, StageTimesAreMeasuredAndFitInTheFrame) {
   renderer()->render(cam, settings, 48, 48);
   RenderStats first = renderer()->stats();
   EXPECT_GT(first.classifyMs, 0.0);
-  EXPECT_GT(first.sortMs, 0.0);
+  EXPECT_GT(first.partitionMs, 0.0);
   EXPECT_GT(first.splatMs, 0.0);
   EXPECT_GT(first.compositeMs, 0.0);
-  EXPECT_LE(first.classifyMs + first.sortMs + first.splatMs + first.compositeMs,
-            first.cpuMs * 1.0001);
+  EXPECT_LE(first.classifyMs + first.partitionMs + first.splatMs + first.compositeMs,
+            first.renderMs * 1.0001);
   renderer()->render(cam, settings, 48, 48);  // same function: the splats are kept
   const RenderStats second = renderer()->stats();
   EXPECT_EQ(second.classifyMs, 0.0);
   EXPECT_GT(second.splatMs, 0.0);
+}
+
+// RenderStats::gpuBytes counts what the renderer allocated: the splat and attribute buffers
+// (8 bytes a splat each), the transfer table (4096 RGBA32F texels), the frame's images (48
+// bytes a pixel) and the partition's buffers; a larger image adds exactly its pixels.
+TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
+  const Volume cube = makeVolume(12, 12, 12, glm::dvec3(1.0), [](int, int, int) { return true; });
+  renderer()->setVolume(cube);
+  renderer()->setTransferFunction(whiteTf(0.3, 1.0));
+  Camera cam;
+  cam.position = {5.5, 5.5, 40.0};
+  cam.focalPoint = {5.5, 5.5, 5.5};
+  RenderSettings settings;
+  renderer()->render(cam, settings, 48, 48);
+  const RenderStats small = renderer()->stats();
+  ASSERT_EQ(small.splatsTotal, 12u * 12u * 12u);
+  const size_t fixed = small.splatsTotal * 16 + 4096 * 16 + 48 * 48 * 48;
+  EXPECT_GT(small.gpuBytes, fixed);  // plus the order list: at least 4 bytes a splat
+  EXPECT_LT(small.gpuBytes, fixed + small.splatsTotal * 64);
+  renderer()->render(cam, settings, 96, 64);
+  EXPECT_EQ(renderer()->stats().gpuBytes - small.gpuBytes, size_t(96 * 64 - 48 * 48) * 48);
 }
 
 }  // namespace
