@@ -80,7 +80,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--cutoff", o->render.cutoff, "Footprint cutoff r = dx^T Q dx (default 4)")
       ->check(CLI::Range(0.25, 64.0));
   app.add_option("--kernel-width", o->render.kernelWidth,
-                 "Kernel sigma in voxel spacings, 0.3 to 2 (default 0.85)")
+                 "Kernel sigma in voxel spacings, 0.3 to 2 (default 1)")
       ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
   app.add_option("--slab-thickness", o->render.slabThickness,
                  "Slab thickness in voxels of the smallest spacing, 0.25 and up (default 2)")

@@ -22,7 +22,7 @@ struct ViewerSettings {
   FilterMode filter = FilterMode::Ewa;
   std::string renderMode = "composite";
   double cutoff = 4.0;
-  double kernelWidth = 0.85;            // RenderSettings' default
+  double kernelWidth = 1.0;            // RenderSettings' default
   std::string classification = "pre";  // "pre" or "post"
   double slabThickness = 2.0;          // RenderSettings' default
   glm::dvec3 background{0.0};

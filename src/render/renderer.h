@@ -43,10 +43,10 @@ struct RenderSettings {
   RenderMode mode = RenderMode::Composite;
   double cutoff = 4.0;  // footprint cutoff r = dx^T Q dx
   // Kernel standard deviation in voxel spacings per axis (kernelSigma), the mass per voxel
-  // unchanged: narrower kernels blur less and cost fewer fragments (as width^2). 0.85: the
-  // narrowest whose lattice ripple stays under 1% at cutoff 4 (core/kernel_lattice.h), and the
-  // closest to a ray caster of those (README, "Kernel width and post-classification").
-  double kernelWidth = 0.85;
+  // unchanged: narrower kernels blur less and cost fewer fragments (as width^2). 1 (the
+  // paper's) until the filter-quality findings hold at 0.85 (README, "Kernel width and
+  // post-classification").
+  double kernelWidth = 1.0;
   // In units of the smallest voxel spacing, at least 0.25. 2 by default: kernels split exactly
   // between slabs, so thinner slabs change the picture little (tests) and cost more draws.
   double slabThickness = 2.0;
