@@ -8,6 +8,8 @@ layout(std430, binding = 0) readonly buffer Splats { uvec2 splats[]; };
 layout(std430, binding = 1) readonly buffer Order { uint order[]; };
 // packHalf2x16(nx, ny), packHalf2x16(nz, kind): see src/core/splat_attributes.h.
 layout(std430, binding = 2) readonly buffer Attributes { uvec2 attributes[]; };
+// The GPU slab partition's first entry of each slab (src/render/gpu_slab_partition.h).
+layout(std430, binding = 3) readonly buffer SlabFirst { uint slabFirst[]; };
 
 uniform mat4 uView;          // world -> camera
 uniform mat3 uCovariance;    // camera-space kernel covariance W V'' W^T
@@ -25,6 +27,7 @@ uniform float uCutoff;
 uniform float uMinSpacing;
 uniform float uCullDepth;    // kernels at or nearer than this camera depth are culled
 uniform uint uFirst;         // offset of this draw's slab in order[]
+uniform int uSlabIndex;      // >= 0: the slab's offset is slabFirst[uSlabIndex] instead
 uniform sampler1D uTransfer; // rgb + extinction tau per world unit
 uniform float uSurfaceTau;   // optical depth of a surface-splat layer along its normal
 // Post-classification (composite only): splats carry their value and camera-space normal with
@@ -52,7 +55,7 @@ KernelReach kernelReach() {
 
 // Fills the flat outputs for splat number `n` of this draw; false when nothing is to be drawn.
 bool setupSplat(uint n, out Footprint fp) {
-  uint entry = order[uFirst + n];
+  uint entry = order[(uSlabIndex >= 0 ? slabFirst[uSlabIndex] : uFirst) + n];
   uint index = entry & kIndexMask;
   uvec2 s = splats[index];
   uvec3 ijk = uvec3(s.x & 0xffffu, s.x >> 16, s.y & 0xffffu);

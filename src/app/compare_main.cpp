@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -17,6 +18,8 @@
 #include "app/options.h"
 #include "app/scene.h"
 #include "app/vtk_runner.h"
+#include "core/kernel_lattice.h"
+#include "core/post_classification.h"
 #include "gl/gl_api.h"
 #include "gl/shader_library.h"
 #include "io/png_io.h"
@@ -122,6 +125,8 @@ int run(int argc, char** argv) {
   std::vector<int> sizes = {512, 1024};
   int repeats = 5;
   bool csv = false, json = false, noVtk = false, orthographic = false;
+  RenderSettings settings;  // EWA's: the defaults unless --kernel-width or --classification
+  std::string classification = "pre";
   app.add_option("--data", data,
                  "Folder with engine/, bonsai/ and cthead/ (default ../shared/data)");
   app.add_option("--volumes", volumes,
@@ -142,12 +147,23 @@ int run(int argc, char** argv) {
   app.add_flag("--no-vtk", noVtk, "Do not time VTK's ray casters");
   app.add_option("--vtk-script", script, "Path of vtk_raycast_bench.py");
   app.add_flag("--orthographic", orthographic, "Parallel projection (default: perspective)");
+  app.add_option("--kernel-width", settings.kernelWidth,
+                 "EWA kernel sigma in voxel spacings, 0.3 to 2 (default 1)")
+      ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
+  app.add_option("--classification", classification,
+                 "EWA: transfer function per voxel (pre, default) or per pixel (post)")
+      ->check(CLI::IsMember({"pre", "post"}));
   addBackendOption(app, backend);
   CLI11_PARSE(app, argc, argv);
   if (volumes.empty() && synthetic.empty()) volumes = {"engine", "bonsai", "cthead"};
+  parseClassificationMode(classification, &settings.classification.mode);
 
   CompareReport report;
   report.repeats = repeats;
+  char ewaText[96];
+  std::snprintf(ewaText, sizeof ewaText, "kernel width %.2f, %s-classification",
+                settings.kernelWidth, classification.c_str());
+  report.ewaSettings = ewaText;
   for (int i = 0; i < argc; ++i) report.command += (i ? " " : "") + std::string(argv[i]);
   std::vector<Input> inputs = sharedInputs(data, volumes);
   for (const std::string& spec : synthetic) {
@@ -175,6 +191,7 @@ int run(int argc, char** argv) {
       continue;
     }
     in.options.orthographic = orthographic;
+    in.options.render = settings;
     const Scene scene = loadScene(in.options);
     ewa.setVolume(scene.volume);
     ewa.setTransferFunction(scene.transferFunction);
@@ -234,7 +251,7 @@ int run(int argc, char** argv) {
               json  ? ReportFormat::Json
               : csv ? ReportFormat::Csv
                     : ReportFormat::Table);
-  return 0;
+  return failed ? 1 : 0;
 }
 
 }  // namespace

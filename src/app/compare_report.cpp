@@ -42,7 +42,8 @@ const std::vector<Column>& columns() {
 
 void printTable(std::ostream& out, const CompareReport& r) {
   out << "# " << r.context << "\n# " << r.command << "\n# median of " << r.repeats
-      << " frames after a warm-up frame; ms per frame; '-': not measured\n";
+      << " frames after a warm-up frame; ms per frame; '-': not measured\n# EWA: " << r.ewaSettings
+      << "\n";
   for (const std::string& note : r.notes) out << "# " << note << "\n";
   char cell[64];
   std::snprintf(cell, sizeof cell, "%-18s %5s", "volume", "size");
@@ -94,6 +95,7 @@ void printJson(std::ostream& out, const CompareReport& r) {
   doc["context"] = r.context;
   doc["command"] = r.command;
   doc["repeats"] = r.repeats;
+  doc["ewa_settings"] = r.ewaSettings;
   doc["notes"] = r.notes;
   doc["rows"] = nlohmann::ordered_json::array();
   for (const CompareRow& row : r.rows) {

@@ -30,6 +30,7 @@ struct CompareReport {
   std::string context;  // the GL context's description
   std::string command;  // the command line that made it
   int repeats = 0;
+  std::string ewaSettings;         // "kernel width 1.00, pre-classification"
   std::vector<std::string> notes;  // "cthead skipped: ...", "VTK not timed: ..."
   std::vector<CompareRow> rows;
 };
@@ -37,8 +38,8 @@ struct CompareReport {
 enum class ReportFormat { Table, Csv, Json };
 
 // Table: a header of '#' lines, then aligned columns; CSV: one header line and a line per
-// row; JSON: one document {"context","command","repeats","notes","rows":[{...}]}, with null
-// for what was not measured.
+// row; JSON: one document {"context","command","repeats","ewa_settings","notes","rows":[{...}]},
+// with null for what was not measured.
 void printReport(std::ostream& out, const CompareReport& report, ReportFormat format);
 
 }  // namespace ewa

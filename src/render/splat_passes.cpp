@@ -103,10 +103,13 @@ void SplatRenderer::setSlabLoopState() {
   }
 }
 
-const Slab& SplatRenderer::slabInOrder(size_t s) const {
-  const auto& slabs = partition_.slabs();
+size_t SplatRenderer::slabPosition(size_t s) const {
   const bool frontToBack = frame_.settings.order == CompositeOrder::FrontToBack;
-  return slabs[frontToBack ? s : slabs.size() - 1 - s];
+  return frontToBack ? s : frame_.slabs.size() - 1 - s;
+}
+
+const Slab& SplatRenderer::slabInOrder(size_t s) const {
+  return frame_.slabs[slabPosition(s)];
 }
 
 void SplatRenderer::beginCompositeSlab() {
@@ -124,15 +127,16 @@ void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
   // Inside a slab: order-independent sums of each kernel's share of optical depth and light.
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
   glBlendFunc(GL_ONE, GL_ONE);
-  setSlabUniforms(range, true, true);
-  drawSplats(range, stats_.quadPass);
+  const int gpuSlab = frame_.indirect ? int(slabPosition(s)) : -1;  // then a whole slab
+  setSlabUniforms(range, true, true, gpuSlab);
+  drawSplats(range, stats_.quadPass, gpuSlab);
 }
 
 void SplatRenderer::endCompositeSlab(size_t s) {
   const RenderSettings& settings = frame_.settings;
   const bool frontToBack = settings.order == CompositeOrder::FrontToBack;
   const bool terminate = frontToBack && settings.terminationOpacity < 1.0;
-  const size_t n = partition_.slabs().size();
+  const size_t n = frame_.slabs.size();
   // Between slabs: 1 - exp(-depth) composited under (front to back) or over (back to front).
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.accumFbo.id());
   if (frontToBack)
@@ -171,7 +175,7 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
   // picture is the same).
   constexpr size_t kFirstChunk = 2048;  // entries drawn before anything is measured
   constexpr size_t kMinRange = 512;     // the fewest entries a range holds
-  const size_t n = partition_.slabs().size();
+  const size_t n = frame_.slabs.size();
   const bool unlimited = !std::isfinite(budgetMs);
   const auto finished = [&] { return frame_.nextSlab >= n || frame_.terminated; };
   setSlabLoopState();
@@ -247,7 +251,7 @@ bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point sta
   // so the splat list may be drawn in ranges, as many entries per step as the budget allows.
   const RenderSettings& settings = frame_.settings;
   const bool unlimited = !std::isfinite(budgetMs);
-  Slab all = partition_.slabs().front();
+  Slab all = frame_.slabs.front();
   const bool window = depthWindow_ && settings.mode == RenderMode::XRay;
   if (window) {
     all.nearDepth = depthWindow_->first;
@@ -258,6 +262,11 @@ bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point sta
   if (settings.mode == RenderMode::Mip) glBlendEquation(GL_MAX);
   // Entries drawn before anything is measured, and the fewest a step draws (cheap anywhere).
   constexpr size_t kFirstChunk = 4096, kMinChunk = 1024;
+  if (frame_.indirect) {  // the whole single slab, its count on the GPU (budget unlimited)
+    setSlabUniforms(all, window, false, 0);
+    drawSplats(all, stats_.quadPass, 0);
+    frame_.nextEntry = all.count;
+  }
   while (frame_.nextEntry < all.count) {
     size_t count = all.count - frame_.nextEntry;
     if (!unlimited) {
@@ -280,12 +289,15 @@ bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point sta
   }
   glBlendEquation(GL_FUNC_ADD);
   stats_.slabsDrawn = 1;
-  return frame_.nextEntry >= all.count;
+  return frame_.indirect || frame_.nextEntry >= all.count;
 }
 
 void SplatRenderer::bindFrameState() {
   splatBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  orderBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  if (frame_.gpuSlabs)
+    gpuPartition_->bindForDrawing();
+  else
+    orderBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   attributeBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
   transferTexture_.bindUnit(0);
   glBindVertexArray(emptyVao_.id());
@@ -342,36 +354,72 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     extent.spacing = sp;
     extent.kernelWidth = settings.kernelWidth;
     stageStart = Clock::now();
-    partition_.build(splats, classified_.attributes, volume_->origin(), camera.viewMatrix(),
-                     thickness, params.cullDepth, extent);
-    const auto& order = partition_.order();
+    frame_.gpuSlabs = gpuPartition();
+    double nearest = 0.0;
+    if (frame_.gpuSlabs) {
+      if (!gpuPartition_) gpuPartition_ = std::make_unique<GpuSlabPartition>(shaders_);
+      gpuPartition_->build(splatBuffer_, attributeBuffer_, splats.size(),
+                           classified_.attributes.size() == splats.size(), volume_->origin(),
+                           camera.viewMatrix(), thickness, params.cullDepth, extent);
+      frame_.slabs = gpuPartition_->slabs();
+      frame_.indirect = !gpuPartition_->countsKnown();
+      stats_.splatsDrawn = gpuPartition_->splatCount();
+      nearest = gpuPartition_->nearestCenter();
+    } else {
+      partition_.build(splats, classified_.attributes, volume_->origin(), camera.viewMatrix(),
+                       thickness, params.cullDepth, extent);
+      const auto& order = partition_.order();
+      if (!order.empty())
+        orderBuffer_.setData(GLsizeiptr(order.size() * sizeof(uint32_t)), order.data(),
+                             GL_STREAM_DRAW);
+      frame_.slabs = partition_.slabs();
+      stats_.splatsDrawn = partition_.splatCount();
+      nearest = partition_.nearestCenter();
+    }
     stats_.splatsTotal = splats.size();
-    stats_.splatsDrawn = partition_.splatCount();
-    stats_.slabs = partition_.slabs().size();
+    stats_.slabs = frame_.slabs.size();
     stats_.surfaceSplats = classified_.surfaceCount;
-    if (!order.empty()) {
-      orderBuffer_.setData(GLsizeiptr(order.size() * sizeof(uint32_t)), order.data(),
-                           GL_STREAM_DRAW);
-      const double nearest = partition_.nearestCenter();
+    if (!frame_.slabs.empty()) {
       stats_.quadPass = 2.0 * pixelReach(extent.reach, proj, nearest) + 0.5 > pointSizeLimit_;
       setCommonUniforms(pointProgram_, camera, proj, settings);
       setCommonUniforms(quadProgram_, camera, proj, settings);
       setSlabPassUniforms(proj, settings);
       frame_.drawSplats = true;
-      const size_t slabCount = partition_.slabs().size();
-      frame_.meanEntries = double(order.size()) / double(std::max<size_t>(1, slabCount));
-      frame_.totalWeight = composite ? double(order.size()) + frame_.meanEntries * double(slabCount)
-                                     : double(partition_.slabs().front().count);
-      stats_.partitionMs = millisecondsSince(stageStart);  // bucketing and the order upload
+      setFrameWeights();
+      // The partition (its upload or its compute passes and the range read back).
+      stats_.partitionMs = millisecondsSince(stageStart);
     }
   }
   frame_.active = true;
   stats_.renderMs = millisecondsSince(start);
 }
 
+void SplatRenderer::setFrameWeights() {
+  size_t entries = 0;
+  for (const Slab& slab : frame_.slabs) entries += slab.count;
+  const size_t slabCount = frame_.slabs.size();
+  frame_.meanEntries = double(entries) / double(std::max<size_t>(1, slabCount));
+  frame_.totalWeight = frame_.settings.mode == RenderMode::Composite
+                           ? double(entries) + frame_.meanEntries * double(slabCount)
+                           : double(frame_.slabs.empty() ? 0 : frame_.slabs.front().count);
+}
+
+void SplatRenderer::takeGpuCounts() {
+  gpuPartition_->readCounts();
+  frame_.slabs.clear();
+  for (const Slab& slab : gpuPartition_->slabs())
+    if (slab.count > 0) frame_.slabs.push_back(slab);
+  frame_.indirect = false;
+  stats_.slabs = frame_.slabs.size();
+  setFrameWeights();
+}
+
 bool SplatRenderer::stepFrame(double budgetMs) {
   if (!frame_.active) return true;
   const auto start = Clock::now();
+  // Drawing within a budget needs each slab's count: read the GPU's back (a short wait) before
+  // anything is drawn.
+  if (frame_.indirect && std::isfinite(budgetMs) && frame_.nextSlab == 0) takeGpuCounts();
   if (frame_.drawSplats) {
     bindFrameState();
     glEnable(GL_BLEND);
@@ -393,6 +441,19 @@ bool SplatRenderer::stepFrame(double budgetMs) {
     stats_.splatMs += millisecondsSince(start);
   }
   drawFinalPass();
+  if (frame_.indirect) {
+    // Statistics only: the GPU is idle after the final pass, so reading the counts costs
+    // little. Entries drawn: those of the slabs drawn before early termination.
+    gpuPartition_->readCounts();
+    size_t slabs = 0;
+    for (const Slab& slab : gpuPartition_->slabs()) slabs += slab.count > 0;
+    stats_.slabs = slabs;
+    frame_.slabs = gpuPartition_->slabs();
+    const bool composite = frame_.settings.mode == RenderMode::Composite;
+    const size_t drawn = composite ? frame_.nextSlab : frame_.slabs.size();
+    for (size_t s = 0; s < drawn && s < frame_.slabs.size(); ++s)
+      stats_.slabEntries += slabInOrder(s).count;
+  }
   frame_.active = false;
   stats_.renderMs += millisecondsSince(start);
   return true;

@@ -18,8 +18,30 @@ namespace {
 constexpr int kTransferSamples = 4096;
 }  // namespace
 
+const char* partitionModeName(PartitionMode mode) {
+  switch (mode) {
+    case PartitionMode::Auto:
+      return "auto";
+    case PartitionMode::Gpu:
+      return "gpu";
+    case PartitionMode::Cpu:
+      return "cpu";
+  }
+  return "?";
+}
+
+bool parsePartitionMode(const std::string& text, PartitionMode* mode) {
+  for (PartitionMode m : {PartitionMode::Auto, PartitionMode::Gpu, PartitionMode::Cpu})
+    if (text == partitionModeName(m)) {
+      *mode = m;
+      return true;
+    }
+  return false;
+}
+
 SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
-    : pointProgram_(shaders.program("splat_point.vert.glsl", "splat.frag.glsl")),
+    : shaders_(shaders),
+      pointProgram_(shaders.program("splat_point.vert.glsl", "splat.frag.glsl")),
       quadProgram_(shaders.program("splat_quad.vert.glsl", "splat.frag.glsl")),
       slabProgram_(shaders.program("fullscreen.vert.glsl", "slab_composite.frag.glsl")),
       markProgram_(shaders.program("fullscreen.vert.glsl", "opacity_mark.frag.glsl")),
@@ -41,6 +63,15 @@ SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
   glMaxSplats_ = maxSplats_ =
       size_t(std::min(maxStorageBlockBytes_, memory / 2) / sizeof(PackedSplat));
   glCreateQueries(GL_SAMPLES_PASSED, 1, &query_);
+  const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string renderer = name ? name : "";
+  softwareGl_ = renderer.find("llvmpipe") != std::string::npos ||
+                renderer.find("softpipe") != std::string::npos;
+}
+
+bool SplatRenderer::gpuPartition() const {
+  return partitionMode_ == PartitionMode::Gpu ||
+         (partitionMode_ == PartitionMode::Auto && !softwareGl_);
 }
 
 SplatRenderer::~SplatRenderer() {
@@ -50,7 +81,8 @@ SplatRenderer::~SplatRenderer() {
 RenderStats SplatRenderer::stats() const {
   RenderStats s = stats_;
   s.gpuBytes = size_t(splatBuffer_.size() + orderBuffer_.size() + attributeBuffer_.size()) +
-               size_t(kTransferSamples) * 4 * sizeof(float) + targets_.bytes();
+               size_t(kTransferSamples) * 4 * sizeof(float) + targets_.bytes() +
+               (gpuPartition_ ? gpuPartition_->bytes() : 0);
   return s;
 }
 
@@ -185,9 +217,10 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
   glNamedFramebufferDrawBuffers(targets_.slabFbo.id(), 2, post && light.enabled ? both : first);
 }
 
-void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails) {
+void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex) {
   for (gl::Program* p : {&pointProgram_, &quadProgram_}) {
     p->setUInt("uFirst", slab.first);
+    p->setInt("uSlabIndex", slabIndex);
     p->setInt("uSplitDepth", split ? 1 : 0);
     p->setInt("uOpenTails", openTails ? 1 : 0);
     p->setFloat("uSlabNear", float(slab.nearDepth));
@@ -195,7 +228,19 @@ void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails
   }
 }
 
-void SplatRenderer::drawSplats(const Slab& slab, bool quads) {
+void SplatRenderer::drawSplats(const Slab& slab, bool quads, int slabIndex) {
+  if (slabIndex >= 0) {
+    // The counts are on the GPU: its commands draw them (bound by bindFrameState).
+    const auto command = [](size_t offset) { return reinterpret_cast<const void*>(offset); };
+    glUseProgram(pointProgram_.id());
+    glDrawArraysIndirect(GL_POINTS, command(gpuPartition_->pointCommand(size_t(slabIndex))));
+    if (quads) {
+      glUseProgram(quadProgram_.id());
+      glDrawArraysIndirect(GL_TRIANGLE_STRIP,
+                           command(gpuPartition_->quadCommand(size_t(slabIndex))));
+    }
+    return;
+  }
   glUseProgram(pointProgram_.id());
   glDrawArrays(GL_POINTS, 0, GLsizei(slab.count));
   if (quads) {

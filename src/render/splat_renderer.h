@@ -16,10 +16,18 @@
 #include "gl/shader_library.h"
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
+#include "render/gpu_slab_partition.h"
 #include "render/render_targets.h"
 #include "render/renderer.h"
 
 namespace ewa {
+
+// Where the per-frame slab partition is built: GPU compute passes (gpu_slab_partition.h) or the
+// CPU (SlabPartition, plus the order list's upload). Auto: measured faster (README,
+// "Performance"): the CPU on software rasterizers (llvmpipe, softpipe), the GPU elsewhere.
+enum class PartitionMode { Auto = 0, Gpu = 1, Cpu = 2 };
+const char* partitionModeName(PartitionMode mode);
+bool parsePartitionMode(const std::string& text, PartitionMode* mode);
 
 class SplatRenderer : public Renderer {
  public:
@@ -59,6 +67,11 @@ class SplatRenderer : public Renderer {
   bool needsSplats(const Classification& classification) const {
     return volume_ && (splatsDirty_ || classification != classification_);
   }
+  // Chooses where the slab partition is built (Auto by default); takes effect next frame.
+  void setPartition(PartitionMode mode) { partitionMode_ = mode; }
+  // True when frames build the partition on the GPU (Auto resolved for this GL).
+  bool gpuPartition() const;
+
   // The most splats the GL buffers may hold: pass it to a classification made elsewhere.
   size_t maxSplats() const { return maxSplats_; }
 
@@ -83,12 +96,17 @@ class SplatRenderer : public Renderer {
   void uploadSplats();
   void setCommonUniforms(gl::Program& program, const Camera& camera, const Projection& proj,
                          const RenderSettings& settings);
-  void setSlabUniforms(const Slab& slab, bool split, bool openTails);
+  // slabIndex >= 0: the GPU partition's slab (its first entry and draw commands on the GPU).
+  void setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex = -1);
   // Post-classification (composite mode only): splats carry values, the slab pass classifies.
   static bool postClassified(const RenderSettings& settings);
   // The slab pass's uniforms and the slab buffer's draw buffers for this frame.
   void setSlabPassUniforms(const Projection& proj, const RenderSettings& settings);
-  void drawSplats(const Slab& slab, bool quads);
+  void drawSplats(const Slab& slab, bool quads, int slabIndex = -1);
+  // The GPU partition's per-slab counts, read back: its empty slabs dropped, drawn like the
+  // CPU's from then on (for drawing in budgeted steps and for the statistics).
+  void takeGpuCounts();
+  void setFrameWeights();
   // GL state every step needs again (a window draws other things between steps).
   void bindFrameState();
   void setSlabLoopState();
@@ -100,6 +118,8 @@ class SplatRenderer : public Renderer {
   void drawSlabRange(size_t slabIndex, size_t first, size_t count);
   void endCompositeSlab(size_t slabIndex);
   const Slab& slabInOrder(size_t slabIndex) const;
+  // Where slab `slabIndex` of the drawing order sits in frame_.slabs.
+  size_t slabPosition(size_t slabIndex) const;
   // Return true once the frame's splats are all drawn (or early termination ended it).
   bool drawSlabChunks(double budgetMs, Clock::time_point start);
   bool drawWholeVolumeChunks(double budgetMs, Clock::time_point start);
@@ -113,6 +133,10 @@ class SplatRenderer : public Renderer {
   Classification classification_;
   ClassifiedSplats classified_;
   SlabPartition partition_;
+  PartitionMode partitionMode_ = PartitionMode::Auto;
+  bool softwareGl_ = false;                         // GL_RENDERER names a software rasterizer
+  std::unique_ptr<GpuSlabPartition> gpuPartition_;  // made on first use
+  gl::ShaderLibrary shaders_;                       // for the GPU partition, built on first use
   std::optional<std::pair<double, double>> depthWindow_;
 
   gl::Program pointProgram_;
@@ -143,6 +167,9 @@ class SplatRenderer : public Renderer {
     Projection proj;
     RenderSettings settings;
     int width = 0, height = 0;
+    std::vector<Slab> slabs;   // front to back: the CPU partition's, or the GPU's
+    bool gpuSlabs = false;     // slabs come from gpuPartition_
+    bool indirect = false;     // GPU slabs whose counts only the GPU knows (empty ones kept)
     size_t nextSlab = 0;       // composite: the next slab in drawing order
     bool terminated = false;   // early termination ended the slab loop
     size_t nextEntry = 0;      // X-ray and MIP: the next entry of the single slab

@@ -29,6 +29,7 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
   ASSERT_EQ(r.code, 0) << r.err;
   const json doc = json::parse(r.out);
   EXPECT_EQ(doc["repeats"], 1);
+  EXPECT_EQ(doc["ewa_settings"], "kernel width 1.00, pre-classification");
   EXPECT_NE(doc["context"].get<std::string>().find("OpenGL"), std::string::npos) << doc["context"];
   EXPECT_NE(doc["command"].get<std::string>().find("--synthetic sphere:24"), std::string::npos);
   ASSERT_EQ(doc["rows"].size(), 1u) << r.out;
@@ -55,6 +56,16 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
   EXPECT_TRUE(row["vtk_cpu_ms"].is_null());
   EXPECT_TRUE(row["vtk_gpu_ms"].is_null());
   EXPECT_TRUE(row["ewa_per_vtk_cpu"].is_null());
+}
+
+TEST(CompareCli, KernelWidthAndClassificationReachEwa) {
+  const CliRun r =
+      compare(std::string(kTiny) + " --kernel-width 0.55 --classification post --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json doc = json::parse(r.out);
+  EXPECT_EQ(doc["ewa_settings"], "kernel width 0.55, post-classification");
+  ASSERT_EQ(doc["rows"].size(), 1u) << r.out;
+  EXPECT_GT(doc["rows"][0]["ewa_ms"].get<double>(), 0.0);
 }
 
 TEST(CompareCli, CsvAndTableHaveOneRowPerVolumeAndSize) {
@@ -103,7 +114,8 @@ TEST(CompareCli, MissingSharedDataIsSkippedWithANote) {
 }
 
 TEST(CompareCli, BadOptionsFailWithOneLine) {
-  for (const char* args : {"--sizes 0", "--volumes teapot", "--repeats 0", "--csv --json"}) {
+  for (const char* args : {"--sizes 0", "--volumes teapot", "--repeats 0", "--csv --json",
+                           "--kernel-width 5", "--classification sideways"}) {
     const CliRun r = compare(args);
     EXPECT_NE(r.code, 0) << args;
     EXPECT_GE(lineCount(r.err), 1) << args;

@@ -245,8 +245,9 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   const RenderStats small = renderer()->stats();
   ASSERT_EQ(small.splatsTotal, 12u * 12u * 12u);
   const size_t fixed = small.splatsTotal * 16 + 4096 * 16 + 48 * 48 * 48;
-  EXPECT_GT(small.gpuBytes, fixed);  // plus the order list: at least 4 bytes a splat
-  EXPECT_LT(small.gpuBytes, fixed + small.splatsTotal * 64);
+  // Plus the order list (at least 4 bytes an entry) and, for the GPU partition, its scratch
+  // buffers, which keep the capacity earlier frames needed.
+  EXPECT_GE(small.gpuBytes, fixed + small.splatsTotal * 4);
   renderer()->render(cam, settings, 96, 64);
   EXPECT_EQ(renderer()->stats().gpuBytes - small.gpuBytes, size_t(96 * 64 - 48 * 48) * 48);
 }

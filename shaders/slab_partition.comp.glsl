@@ -1,0 +1,184 @@
+// The slab partition on the GPU, the mirror of src/core/slab_partition.cpp in four passes
+// chosen by a define: EXTENT_PASS (each splat's depth extent, the range and counts of all),
+// COUNT_PASS (splats per slab), SCAN_PASS (first entries, cursors and indirect draw commands)
+// and SCATTER_PASS (the order list). Depths are doubles, as in the C++, so both put every
+// kernel in the same slabs.
+#define REACH_FLOAT double
+#include "kernel_reach.glsl"
+
+const uint kFirstSlab = 0x80000000u;
+const uint kLastSlab = 0x40000000u;
+
+layout(std430, binding = 0) readonly buffer Splats { uvec2 splats[]; };
+layout(std430, binding = 1) buffer Order { uint order[]; };
+layout(std430, binding = 2) readonly buffer Attributes { uvec2 attributes[]; };
+layout(std430, binding = 3) buffer SlabFirst { uint slabFirst[]; };
+layout(std430, binding = 4) buffer Extents { vec2 extents[]; };  // float lo, hi; NaN: culled
+// Ordered bits of the smallest lo, largest hi and nearest centre; splats listed; a bound on
+// the entries (each splat's extent in slabs, rounded up, plus one).
+layout(std430, binding = 5) buffer Range { uint rangeLo, rangeHi, rangeNearest, rangeSplats,
+                                           rangeEntries; };
+layout(std430, binding = 6) buffer Cursor { uint cursor[]; };  // counts, then next free entry
+// Per slab a DrawArraysIndirectCommand for the points, then one per slab for the quads.
+layout(std430, binding = 7) writeonly buffer Commands { uint commands[]; };
+
+uniform uint uCount;       // splats
+uniform uint uSlabCount;   // slabs (COUNT, SCAN and SCATTER)
+uniform double uLo;        // front of the first slab
+uniform double uScale;     // slabs per unit of depth
+
+// A float as a uint whose unsigned order is the float's order (for atomicMin / atomicMax).
+uint orderedBits(float f) {
+  uint u = floatBitsToUint(f);
+  return (u & 0x80000000u) != 0u ? ~u : (u | 0x80000000u);
+}
+
+// The splat of this invocation: the per-splat passes run groups of 256 on a 2D grid.
+uint splatIndex() {
+  return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 256u;
+}
+
+uint slabOf(float d) {
+  return min(uSlabCount - 1u, uint(max(0.0lf, (double(d) - uLo) * uScale)));
+}
+
+#if defined(EXTENT_PASS)
+layout(local_size_x = 256) in;
+
+uniform double uD0;          // depth = uD0 + i uDi + j uDj + k uDk
+uniform dvec3 uDijk;
+uniform dvec3 uRow;          // world direction of increasing depth
+uniform double uVolumeVariance;
+uniform dmat3 uRotation;     // world to camera
+uniform dvec3 uSigma;       // kernel standard deviations per axis (kernelSigma)
+uniform double uCullDepth;
+uniform double uThickness;
+uniform bool uSurfaces;      // attributes hold surface splats
+uniform double uCutoff;
+uniform double uMaxSigma;
+uniform double uMinSpacing;  // Swan's s and the surface offset's unit
+uniform bool uSwan;
+uniform bool uOrthographic;
+uniform double uFocalPixels;
+uniform double uPixelsPerUnit;
+
+shared uint groupLo, groupHi, groupNearest, groupSplats, groupEntries;
+
+void main() {
+  if (gl_LocalInvocationIndex == 0u) {
+    groupLo = 0xffffffffu;
+    groupHi = 0u;
+    groupNearest = 0xffffffffu;
+    groupSplats = 0u;
+    groupEntries = 0u;
+  }
+  barrier();
+  uint m = splatIndex();
+  if (m < uCount) {
+    uvec2 s = splats[m];
+    precise double d = uD0 + double(s.x & 0xffffu) * uDijk.x + double(s.x >> 16) * uDijk.y +
+                       double(s.y & 0xffffu) * uDijk.z;
+    double variance = uVolumeVariance;
+    uvec2 at = attributes[m];
+    if (uSurfaces && (at.y >> 16) != 0u) {
+      vec2 xy = unpackHalf2x16(at.x), zk = unpackHalf2x16(at.y);
+      if (zk.y >= 1.0) {
+        dvec3 n = dvec3(xy.x, xy.y, zk.x);
+        precise double shift = dot(uRow, n) * (double(zk.y) - 3.0) * uMinSpacing;
+        d += shift;
+        dmat3 p = dmat3(1.0) - outerProduct(n, n);
+        dmat3 v = dmat3(dvec3(uSigma.x * uSigma.x, 0, 0), dvec3(0, uSigma.y * uSigma.y, 0),
+                        dvec3(0, 0, uSigma.z * uSigma.z));
+        variance = (uRotation * (p * v * p) * transpose(uRotation))[2][2];
+      }
+    }
+    if (!(d > uCullDepth)) {
+      extents[m] = vec2(uintBitsToFloat(0x7fc00000u));
+    } else {
+      KernelReach k = KernelReach(uCutoff, uMaxSigma, uMinSpacing, uSwan, uOrthographic,
+                                  uFocalPixels, uPixelsPerUnit);
+      double radius = depthReach(k, variance, d);
+      vec2 e = vec2(float(d - radius), float(d + radius));
+      extents[m] = e;
+      atomicMin(groupLo, orderedBits(e.x));
+      atomicMax(groupHi, orderedBits(e.y));
+      atomicMin(groupNearest, orderedBits(float(d)));
+      atomicAdd(groupSplats, 1u);
+      atomicAdd(groupEntries, uint(min(double(e.y - e.x) / uThickness, 1e6lf)) + 2u);
+    }
+  }
+  barrier();
+  if (gl_LocalInvocationIndex == 0u && groupSplats > 0u) {
+    atomicMin(rangeLo, groupLo);
+    atomicMax(rangeHi, groupHi);
+    atomicMin(rangeNearest, groupNearest);
+    atomicAdd(rangeSplats, groupSplats);
+    atomicAdd(rangeEntries, groupEntries);
+  }
+}
+
+#elif defined(COUNT_PASS)
+layout(local_size_x = 256) in;
+
+void main() {
+  uint m = splatIndex();
+  if (m >= uCount) return;
+  vec2 e = extents[m];
+  if (isnan(e.x)) return;
+  for (uint b = slabOf(e.x), last = slabOf(e.y); b <= last; ++b) atomicAdd(cursor[b], 1u);
+}
+
+#elif defined(SCAN_PASS)
+// One group: each invocation sums a run of slabs, the runs' sums are scanned in shared memory.
+layout(local_size_x = 1024) in;
+
+shared uint runSum[1024];
+
+void main() {
+  uint t = gl_LocalInvocationIndex;
+  uint per = (uSlabCount + 1023u) / 1024u;
+  uint begin = min(t * per, uSlabCount), end = min(begin + per, uSlabCount);
+  uint sum = 0u;
+  for (uint b = begin; b < end; ++b) sum += cursor[b];
+  runSum[t] = sum;
+  barrier();
+  if (t == 0u) {
+    uint total = 0u;
+    for (uint r = 0u; r < 1024u; ++r) {
+      uint c = runSum[r];
+      runSum[r] = total;
+      total += c;
+    }
+  }
+  barrier();
+  uint first = runSum[t];
+  for (uint b = begin; b < end; ++b) {
+    uint count = cursor[b];
+    slabFirst[b] = first;
+    cursor[b] = first;
+    uint p = 4u * b, q = 4u * (uSlabCount + b);
+    commands[p] = count;  // points: count vertices, one instance
+    commands[p + 1u] = 1u;
+    commands[p + 2u] = 0u;
+    commands[p + 3u] = 0u;
+    commands[q] = 4u;  // quads: a 4-vertex strip per splat instance
+    commands[q + 1u] = count;
+    commands[q + 2u] = 0u;
+    commands[q + 3u] = 0u;
+    first += count;
+  }
+}
+
+#elif defined(SCATTER_PASS)
+layout(local_size_x = 256) in;
+
+void main() {
+  uint m = splatIndex();
+  if (m >= uCount) return;
+  vec2 e = extents[m];
+  if (isnan(e.x)) return;
+  uint b0 = slabOf(e.x), b1 = slabOf(e.y);
+  for (uint b = b0; b <= b1; ++b)
+    order[atomicAdd(cursor[b], 1u)] = m | (b == b0 ? kFirstSlab : 0u) | (b == b1 ? kLastSlab : 0u);
+}
+#endif
