@@ -43,7 +43,9 @@ struct RenderSettings {
   RenderMode mode = RenderMode::Composite;
   double cutoff = 4.0;  // footprint cutoff r = dx^T Q dx
   // Kernel standard deviation in voxel spacings per axis (kernelSigma), the mass per voxel
-  // unchanged: narrower kernels blur less and cost fewer fragments (as width^2).
+  // unchanged: narrower kernels blur less and cost fewer fragments (as width^2). 1 (the
+  // paper's) until the filter-quality findings hold at 0.85 (README, "Kernel width and
+  // post-classification").
   double kernelWidth = 1.0;
   // In units of the smallest voxel spacing, at least 0.25. 2 by default: kernels split exactly
   // between slabs, so thinner slabs change the picture little (tests) and cost more draws.
