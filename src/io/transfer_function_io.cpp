@@ -106,7 +106,7 @@ TransferFunction parseTransferFunctionJson(const std::string& text,
   try {
     return fromJson(doc);
   } catch (const FormatError& e) {
-    throw std::runtime_error(nameForErrors + ": " + e.problem);
+    throw std::runtime_error(nameForErrors + ": " + oneLine(e.problem));  // keys may hold \n
   } catch (const json::exception& e) {
     throw std::runtime_error(nameForErrors + ": " + oneLine(withoutExceptionTag(e.what())));
   }
