@@ -37,13 +37,19 @@ TransferFunction stepTf() {
   return tf;
 }
 
-// The rod seen from the side, 4 pixels a voxel: the columns of the middle row brighter than
-// half the brightest, and the brightest.
-int brightColumns(SplatRenderer& r, ClassificationMode mode, double kernelWidth, int* peak) {
+// The rod seen from the side, along -y with z up.
+Camera sideCamera() {
   Camera cam;
   cam.focalPoint = {16.0, 16.0, 16.0};
   cam.position = {16.0, -40.0, 16.0};
   cam.viewUp = {0.0, 0.0, 1.0};
+  return cam;
+}
+
+// The rod seen from the side, 4 pixels a voxel: the columns of the middle row brighter than
+// half the brightest, and the brightest.
+int brightColumns(SplatRenderer& r, ClassificationMode mode, double kernelWidth, int* peak) {
+  Camera cam = sideCamera();
   cam.orthographic = true;
   cam.viewAngleDeg = 2.0 * std::atan(16.0 / 56.0) * 180.0 / M_PI;  // 32 units across
   RenderSettings settings;
@@ -80,10 +86,7 @@ TEST_F(PostClassification, KeepsTheMarginAndDrawsOnlyVisibleValues) {
   const Volume vol = rod();
   renderer()->setVolume(vol);
   renderer()->setTransferFunction(stepTf());
-  Camera cam;
-  cam.focalPoint = {16.0, 16.0, 16.0};
-  cam.position = {16.0, -40.0, 16.0};
-  cam.viewUp = {0.0, 0.0, 1.0};
+  Camera cam = sideCamera();
   RenderSettings settings;
   renderer()->render(cam, settings, 64, 64);
   EXPECT_EQ(renderer()->stats().splatsTotal, 32u);  // pre: the rod's voxels
@@ -101,10 +104,7 @@ TEST_F(PostClassification, XRayAndMipStayPreClassified) {
   const Volume vol = rod();
   renderer()->setVolume(vol);
   renderer()->setTransferFunction(stepTf());
-  Camera cam;
-  cam.focalPoint = {16.0, 16.0, 16.0};
-  cam.position = {16.0, -40.0, 16.0};
-  cam.viewUp = {0.0, 0.0, 1.0};
+  Camera cam = sideCamera();
   for (RenderMode mode : {RenderMode::XRay, RenderMode::Mip}) {
     RenderSettings settings;
     settings.mode = mode;
