@@ -3,6 +3,7 @@
 #include "clip_region.glsl"
 #include "headlight.glsl"
 #include "kernel_reach.glsl"
+#include "occlusion_test.glsl"
 
 layout(std430, binding = 0) readonly buffer Splats { uvec2 splats[]; };
 layout(std430, binding = 1) readonly buffer Order { uint order[]; };

@@ -103,6 +103,8 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   const RenderStats s = m.ewa.stats();
   row.splats = s.splatsTotal;
   row.splatsDrawn = s.splatsDrawn;
+  row.slabEntries = s.slabEntries;
+  row.entriesCulled = s.entriesCulled;
   row.gpuBytes = s.gpuBytes;
   row.gpuBytesPerSplat = gpuBytesPerSplat(s);
   const TimingSummary e = summarize(ewa);
@@ -126,7 +128,7 @@ int run(int argc, char** argv) {
   int repeats = 5;
   bool csv = false, json = false, noVtk = false, orthographic = false;
   RenderSettings settings;  // EWA's: the defaults unless --kernel-width or --classification
-  std::string classification = "pre";
+  std::string classification = "pre", culling = "on";
   app.add_option("--data", data,
                  "Folder with engine/, bonsai/ and cthead/ (default ../shared/data)");
   app.add_option("--volumes", volumes,
@@ -153,16 +155,20 @@ int run(int argc, char** argv) {
   app.add_option("--classification", classification,
                  "EWA: transfer function per voxel (pre, default) or per pixel (post)")
       ->check(CLI::IsMember({"pre", "post"}));
+  app.add_option("--occlusion-culling", culling, "EWA: occlusion culling on (default) or off")
+      ->check(CLI::IsMember({"on", "off"}));
   addBackendOption(app, backend);
   CLI11_PARSE(app, argc, argv);
   if (volumes.empty() && synthetic.empty()) volumes = {"engine", "bonsai", "cthead"};
   parseClassificationMode(classification, &settings.classification.mode);
+  settings.occlusionCulling = culling == "on";
 
   CompareReport report;
   report.repeats = repeats;
-  char ewaText[96];
-  std::snprintf(ewaText, sizeof ewaText, "kernel width %.2f, %s-classification",
-                settings.kernelWidth, classification.c_str());
+  char ewaText[128];
+  std::snprintf(ewaText, sizeof ewaText,
+                "kernel width %.2f, %s-classification, occlusion culling %s", settings.kernelWidth,
+                classification.c_str(), culling.c_str());
   report.ewaSettings = ewaText;
   for (int i = 0; i < argc; ++i) report.command += (i ? " " : "") + std::string(argv[i]);
   std::vector<Input> inputs = sharedInputs(data, volumes);

@@ -31,6 +31,11 @@ const std::vector<Column>& columns() {
        "%11.2f"},
       {"ewa/sprites", "ewa_per_sprites", [](const CompareRow& r) { return r.ratio(r.spritesMs); },
        "%11.2f"},
+      {"culled_%", "culled_percent",
+       [](const CompareRow& r) {
+         return r.slabEntries > 0 ? 100.0 * double(r.entriesCulled) / double(r.slabEntries) : -1;
+       },
+       "%8.1f"},
       {"gpu_B/splat", "gpu_bytes_per_splat",
        [](const CompareRow& r) { return r.gpuBytesPerSplat > 0 ? r.gpuBytesPerSplat : -1; },
        "%11.1f"},

@@ -15,6 +15,7 @@ struct CompareRow {
   std::string dims;  // "256x256x128"
   int size = 0;      // width = height
   size_t splats = 0, splatsDrawn = 0;
+  size_t slabEntries = 0, entriesCulled = 0;  // EWA's splat draws, and those occlusion culled
   double ewaMs = -1, ewaMinMs = -1;
   double partitionMs = -1, splatMs = -1, finalMs = -1;  // EWA's stages (RenderStats)
   double spritesMs = -1, shearWarpMs = -1, vtkCpuMs = -1, vtkGpuMs = -1;

@@ -55,6 +55,9 @@ struct RenderSettings {
   // Front to back: a pixel stops taking slabs once its opacity reaches this (>= 1: never), and
   // drawing stops once every pixel the volume covers has.
   double terminationOpacity = 0.99;
+  // With early termination: splats whose whole screen rectangle lies over pixels already that
+  // opaque are not drawn (an opacity pyramid rebuilt with the stencil marks); same picture.
+  bool occlusionCulling = true;
   XRayMap xrayMap = XRayMap::Attenuation;
   double xrayScale = 1.0;
   Lighting lighting;              // per splat, every frame: the camera moves the light
@@ -80,6 +83,7 @@ struct RenderStats {
   size_t slabsDrawn = 0;     // before early termination stopped the slab loop
   size_t surfaceSplats = 0;  // splats drawn as flat surface kernels
   size_t slabEntries = 0;    // splats drawn summed over slabs (kernels span several slabs)
+  size_t entriesCulled = 0;  // of slabEntries, those occlusion culling did not rasterize
   bool quadPass = false;     // some footprints exceeded the point-size limit
   // Wall time of the last frame (render(), or beginFrame and every stepFrame), waits for the
   // GPU included.

@@ -19,6 +19,7 @@ namespace {
 // Front to back, the opaque pixels are marked and counted after every this many slabs: often
 // enough to stop soon after the picture is opaque, rarely enough to cost little.
 constexpr size_t kCheckEvery = 4;
+constexpr unsigned kOpaqueUnit = 4;  // texture unit of the occlusion pyramid
 
 // World to clip space for the pixel mapping of `proj`: x_pixel = principal + f u.xy / depth
 // (or ppu u.xy), and clip z inside [-w, w] for depths beyond `nearClip`.
@@ -157,6 +158,12 @@ void SplatRenderer::endCompositeSlab(size_t s) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glStencilFunc(GL_EQUAL, 0, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    if (frame_.occlusion) {
+      // The pyramid of the pixels just marked: later slabs' splats over them are culled.
+      occlusion_.build(targets_.accum, float(settings.terminationOpacity));
+      for (gl::Program* p : {&pointProgram_, &quadProgram_})
+        occlusion_.setUniforms(*p, kOpaqueUnit, true);
+    }
     if (allOpaque(frame_.camera, frame_.proj, settings)) frame_.terminated = true;
   }
 }
@@ -299,6 +306,7 @@ void SplatRenderer::bindFrameState() {
   else
     orderBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   attributeBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  occlusion_.bindForDrawing(kOpaqueUnit);
   transferTexture_.bindUnit(0);
   glBindVertexArray(emptyVao_.id());
   glViewport(0, 0, frame_.width, frame_.height);
@@ -381,6 +389,13 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     stats_.surfaceSplats = classified_.surfaceCount;
     if (!frame_.slabs.empty()) {
       stats_.quadPass = 2.0 * pixelReach(extent.reach, proj, nearest) + 0.5 > pointSizeLimit_;
+      frame_.occlusion = settings.occlusionCulling && composite &&
+                         settings.order == CompositeOrder::FrontToBack &&
+                         settings.terminationOpacity < 1.0;
+      if (frame_.occlusion) {
+        occlusion_.resize(width, height);
+        occlusion_.resetCount();
+      }
       setCommonUniforms(pointProgram_, camera, proj, settings);
       setCommonUniforms(quadProgram_, camera, proj, settings);
       setSlabPassUniforms(proj, settings);
@@ -441,6 +456,7 @@ bool SplatRenderer::stepFrame(double budgetMs) {
     stats_.splatMs += millisecondsSince(start);
   }
   drawFinalPass();
+  if (frame_.occlusion) stats_.entriesCulled = occlusion_.readCount();  // the GPU is idle
   if (frame_.indirect) {
     // Statistics only: the GPU is idle after the final pass, so reading the counts costs
     // little. Entries drawn: those of the slabs drawn before early termination.

@@ -16,6 +16,7 @@ namespace ewa {
 
 namespace {
 constexpr int kTransferSamples = 4096;
+constexpr unsigned kOpaqueUnit = 4;  // texture unit of the occlusion pyramid
 }  // namespace
 
 const char* partitionModeName(PartitionMode mode) {
@@ -47,6 +48,7 @@ SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
       markProgram_(shaders.program("fullscreen.vert.glsl", "opacity_mark.frag.glsl")),
       finalProgram_(shaders.program("fullscreen.vert.glsl", "final_composite.frag.glsl")),
       boxProgram_(shaders.program("bounds_box.vert.glsl", "bounds_box.frag.glsl")),
+      occlusion_(shaders),
       emptyVao_(gl::VertexArray::create()),
       transferTexture_(gl::Texture::create1D(GL_RGBA32F, kTransferSamples)) {
   GLfloat range[2] = {1.0f, 1.0f};
@@ -82,7 +84,7 @@ RenderStats SplatRenderer::stats() const {
   RenderStats s = stats_;
   s.gpuBytes = size_t(splatBuffer_.size() + orderBuffer_.size() + attributeBuffer_.size()) +
                size_t(kTransferSamples) * 4 * sizeof(float) + targets_.bytes() +
-               (gpuPartition_ ? gpuPartition_->bytes() : 0);
+               (gpuPartition_ ? gpuPartition_->bytes() : 0) + occlusion_.bytes();
   return s;
 }
 
@@ -189,6 +191,7 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setInt("uMode", int(settings.mode));
   setClipUniforms(p, settings.clip, *volume_, camera, proj);
   p.setInt("uPost", postClassified(settings) ? 1 : 0);
+  occlusion_.setUniforms(p, kOpaqueUnit, false);  // until the frame's first pyramid
 }
 
 bool SplatRenderer::postClassified(const RenderSettings& settings) {

@@ -17,6 +17,7 @@
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
 #include "render/gpu_slab_partition.h"
+#include "render/occlusion_pyramid.h"
 #include "render/render_targets.h"
 #include "render/renderer.h"
 
@@ -145,6 +146,7 @@ class SplatRenderer : public Renderer {
   gl::Program markProgram_;
   gl::Program finalProgram_;
   gl::Program boxProgram_;
+  OcclusionPyramid occlusion_;
   gl::VertexArray emptyVao_;
   gl::Buffer splatBuffer_;
   gl::Buffer orderBuffer_;
@@ -172,6 +174,7 @@ class SplatRenderer : public Renderer {
     bool indirect = false;     // GPU slabs whose counts only the GPU knows (empty ones kept)
     size_t nextSlab = 0;       // composite: the next slab in drawing order
     bool terminated = false;   // early termination ended the slab loop
+    bool occlusion = false;    // occlusion culling in this frame (front to back, terminating)
     size_t nextEntry = 0;      // X-ray and MIP: the next entry of the single slab
     double meanEntries = 0.0;  // per slab: the weight of a slab's whole-image passes
     double drawnWeight = 0.0, totalWeight = 0.0;  // for frameProgress()

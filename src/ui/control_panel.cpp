@@ -222,6 +222,7 @@ void ControlPanel::drawStats(const FrameStats& stats) {
   ImGui::Text("slabs %zu (drawn %zu)   quad path %s", r.slabs, r.slabsDrawn,
               r.quadPass ? "yes" : "no");
   ImGui::Text("surface splats %zu   splat draws %zu", r.surfaceSplats, r.slabEntries);
+  ImGui::Text("splat draws culled (occluded) %zu", r.entriesCulled);
 }
 
 }  // namespace ewa

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -29,7 +30,7 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
   ASSERT_EQ(r.code, 0) << r.err;
   const json doc = json::parse(r.out);
   EXPECT_EQ(doc["repeats"], 1);
-  EXPECT_EQ(doc["ewa_settings"], "kernel width 1.00, pre-classification");
+  EXPECT_EQ(doc["ewa_settings"], "kernel width 1.00, pre-classification, occlusion culling on");
   EXPECT_NE(doc["context"].get<std::string>().find("OpenGL"), std::string::npos) << doc["context"];
   EXPECT_NE(doc["command"].get<std::string>().find("--synthetic sphere:24"), std::string::npos);
   ASSERT_EQ(doc["rows"].size(), 1u) << r.out;
@@ -60,12 +61,14 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
 
 TEST(CompareCli, KernelWidthAndClassificationReachEwa) {
   const CliRun r =
-      compare(std::string(kTiny) + " --kernel-width 0.55 --classification post --json");
+      compare(std::string(kTiny) +
+              " --kernel-width 0.55 --classification post --occlusion-culling off --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const json doc = json::parse(r.out);
-  EXPECT_EQ(doc["ewa_settings"], "kernel width 0.55, post-classification");
+  EXPECT_EQ(doc["ewa_settings"], "kernel width 0.55, post-classification, occlusion culling off");
   ASSERT_EQ(doc["rows"].size(), 1u) << r.out;
   EXPECT_GT(doc["rows"][0]["ewa_ms"].get<double>(), 0.0);
+  EXPECT_EQ(doc["rows"][0]["culled_percent"].get<double>(), 0.0);
 }
 
 TEST(CompareCli, CsvAndTableHaveOneRowPerVolumeAndSize) {
@@ -144,6 +147,29 @@ TEST(StatsCli, OneJsonLineWithSplatsTimesAndMemory) {
     EXPECT_TRUE(j["gpu_bytes_per_splat"].is_null());
   // Without a picture there is no frame to report.
   EXPECT_EQ(runEwaview("--synthetic sphere:24 --stats").code, 2);
+}
+
+TEST(StatsCli, OcclusionCullingCountsCulledDrawsAndKeepsThePicture) {
+  // An opaque sphere: after its front the splats behind it are culled.
+  const std::string dir = testOutputDir();
+  const std::string tf = dir + "/opaque_sphere.tf.json";
+  std::ofstream(tf) << R"({"opacity": [[0, 0], [0.1, 0.6], [255, 0.6]],
+                           "color": [[0, 1, 1, 1], [255, 1, 0.5, 0.2]]})";
+  const std::string common = "--synthetic sphere:32 --tf " + tf + " --resolution 64,64 --stats";
+  const CliRun on = runEwaview(common + " -o " + dir + "/culled_on.png");
+  const CliRun off = runEwaview(common + " -o " + dir + "/culled_off.png --occlusion-culling off");
+  ASSERT_EQ(on.code, 0) << on.err;
+  ASSERT_EQ(off.code, 0) << off.err;
+  const json a = json::parse(on.out), b = json::parse(off.out);
+  EXPECT_GT(a["entries_culled"].get<double>(), 0.0);
+  EXPECT_LT(a["entries_culled"].get<double>(), a["slab_entries"].get<double>());
+  EXPECT_EQ(b["entries_culled"].get<double>(), 0.0);
+  EXPECT_EQ(a["slab_entries"], b["slab_entries"]);
+  const Image8 imageOn = readPng(dir + "/culled_on.png"),
+               imageOff = readPng(dir + "/culled_off.png");
+  EXPECT_EQ(imageOn.pixels, imageOff.pixels) << "culling changed the picture";
+  EXPECT_EQ(runEwaview("--synthetic sphere:8 --occlusion-culling maybe -o " + dir + "/x.png").code,
+            2);
 }
 
 }  // namespace

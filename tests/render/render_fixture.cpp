@@ -1,6 +1,8 @@
 // Shared set-up for renderer tests: context, shaders, renderer; small volume builders.
 #include "render_fixture.h"
 
+#include <cstdlib>
+
 #include "ci_skip.h"
 
 namespace ewa::test {
@@ -20,7 +22,10 @@ std::string& RenderFixture::skipReason() {
 
 void RenderFixture::SetUpTestSuite() {
   try {
-    context() = platform::createHeadlessContext(platform::HeadlessBackend::OsMesa, 16, 16);
+    // OSMesa (llvmpipe) by default; EWA_TEST_BACKEND=egl runs the suite on a GPU machine.
+    const char* name = std::getenv("EWA_TEST_BACKEND");
+    const auto backend = platform::parseHeadlessBackend(name && *name ? name : "osmesa");
+    context() = platform::createHeadlessContext(backend, 16, 16);
     renderer() = std::make_unique<SplatRenderer>(gl::ShaderLibrary());
   } catch (const std::exception& e) {
     skipReason() = e.what();

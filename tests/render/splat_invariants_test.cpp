@@ -249,7 +249,12 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   // buffers, which keep the capacity earlier frames needed.
   EXPECT_GE(small.gpuBytes, fixed + small.splatsTotal * 4);
   renderer()->render(cam, settings, 96, 64);
-  EXPECT_EQ(renderer()->stats().gpuBytes - small.gpuBytes, size_t(96 * 64 - 48 * 48) * 48);
+  // Occlusion culling's pyramid: one byte per 2x2 pixels, padded to powers of two, and its
+  // levels down to 1x1 (48x48: 32x32 ... 1x1; 96x64: 64x32 ... 1x1).
+  const size_t pyramid48 = 1024 + 256 + 64 + 16 + 4 + 1;
+  const size_t pyramid96x64 = 2048 + 512 + 128 + 32 + 8 + 2 + 1;
+  EXPECT_EQ(renderer()->stats().gpuBytes - small.gpuBytes,
+            size_t(96 * 64 - 48 * 48) * 48 + pyramid96x64 - pyramid48);
 }
 
 }  // namespace

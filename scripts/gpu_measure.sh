@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Runs the render tests and the benchmarks through EGL on a GPU machine from a bundle that
+# scripts/gpu_bundle.sh made (no Debian packages needed there), writing logs to OUT.
+# Usage: scripts/gpu_measure.sh BUNDLE DATA OUT [tests|bench|all]
+#   DATA: a folder with engine/, bonsai/ and cthead/ (as ../shared/data holds them)
+set -uo pipefail
+bundle="$(cd "$1" && pwd)"
+data="$2"
+out="$3"
+mode="${4:-all}"
+mkdir -p "$out"
+export LD_LIBRARY_PATH="$bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+bin="$bundle/bin"
+command -v nvidia-smi >/dev/null && nvidia-smi --query-gpu=name,driver_version --format=csv
+if [ "$mode" = all ] || [ "$mode" = tests ]; then
+  "$bin/ewaview" "$data/engine/engine.nhdr" --backend egl --resolution 1024,1024 \
+    -o "$out/engine_1024.png" --stats
+  # The render suite through EGL (tests that start ewaview itself use OSMesa, stubbed here).
+  EWA_TEST_BACKEND=egl "$bin/ewa_render_tests" >"$out/render_tests.txt" 2>&1
+  grep -E "^\[  (PASSED|FAILED) " "$out/render_tests.txt"
+  "$bin/ewa_unit_tests" >"$out/unit_tests.txt" 2>&1
+  tail -n 3 "$out/unit_tests.txt"
+fi
+if [ "$mode" = all ] || [ "$mode" = bench ]; then
+  "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --repeats 20 | tee "$out/compare.txt"
+  "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --repeats 20 \
+    --occlusion-culling off | tee -a "$out/compare.txt"
+fi
