@@ -53,7 +53,7 @@ uniform dmat3 uRotation;     // world to camera
 uniform dvec3 uSigma;       // kernel standard deviations per axis (kernelSigma)
 uniform double uCullDepth;
 uniform double uThickness;
-uniform bool uSurfaces;      // attributes hold surface splats
+uniform bool uSurfaces;      // attributes are uploaded and hold surface splats
 uniform double uCutoff;
 uniform double uMaxSigma;
 uniform double uMinSpacing;  // Swan's s and the surface offset's unit
@@ -79,8 +79,8 @@ void main() {
     precise double d = uD0 + double(s.x & 0xffffu) * uDijk.x + double(s.x >> 16) * uDijk.y +
                        double(s.y & 0xffffu) * uDijk.z;
     double variance = uVolumeVariance;
-    uvec2 at = attributes[m];
-    if (uSurfaces && (at.y >> 16) != 0u) {
+    uvec2 at = uSurfaces ? attributes[m] : uvec2(0u);  // no surfaces: none uploaded
+    if ((at.y >> 16) != 0u) {
       vec2 xy = unpackHalf2x16(at.x), zk = unpackHalf2x16(at.y);
       if (zk.y >= 1.0) {
         dvec3 n = dvec3(xy.x, xy.y, zk.x);

@@ -34,6 +34,9 @@ uniform float uSurfaceTau;   // optical depth of a surface-splat layer along its
 // Post-classification (composite only): splats carry their value and camera-space normal with
 // unit extinction; the slab pass classifies the kernel-weighted mean per pixel.
 uniform bool uPost;
+// The attributes are uploaded only while a frame uses them (shading or surface splats); else
+// every splat is an unshaded volume splat and the buffer is not read.
+uniform bool uAttributes;
 
 flat out vec2 vCenter;
 flat out vec3 vConic;
@@ -63,7 +66,7 @@ bool setupSplat(uint n, out Footprint fp) {
   float value = float(s.y >> 16) / 65535.0;
   int size = textureSize(uTransfer, 0);
   vec4 tf = texture(uTransfer, (value * float(size - 1) + 0.5) / float(size));
-  uvec2 at = attributes[index];
+  uvec2 at = uAttributes ? attributes[index] : uvec2(0u);
   vec2 nxy = unpackHalf2x16(at.x), nzKind = unpackHalf2x16(at.y);
   vec3 normal = vec3(nxy, nzKind.x);
   bool surface = nzKind.y >= 1.0;

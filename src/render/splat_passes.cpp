@@ -361,13 +361,14 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     extent.rotation = camera.rotation();
     extent.spacing = sp;
     extent.kernelWidth = settings.kernelWidth;
+    syncAttributes(settings);
     stageStart = Clock::now();
     frame_.gpuSlabs = gpuPartition();
     double nearest = 0.0;
     if (frame_.gpuSlabs) {
       if (!gpuPartition_) gpuPartition_ = std::make_unique<GpuSlabPartition>(shaders_);
       gpuPartition_->build(splatBuffer_, attributeBuffer_, splats.size(),
-                           classified_.attributes.size() == splats.size(), volume_->origin(),
+                           attributesUploaded_ && classified_.surfaceCount > 0, volume_->origin(),
                            camera.viewMatrix(), thickness, params.cullDepth, extent);
       frame_.slabs = gpuPartition_->slabs();
       frame_.indirect = !gpuPartition_->countsKnown();

@@ -151,11 +151,25 @@ void SplatRenderer::uploadSplats() {
   const auto& splats = classified_.splats.splats();
   splatBuffer_.setData(GLsizeiptr(n * sizeof(PackedSplat)),
                        splats.empty() ? nullptr : splats.data(), GL_STATIC_DRAW);
-  attributeBuffer_.setData(GLsizeiptr(n * sizeof(PackedAttributes)),
-                           splats.empty() ? nullptr : classified_.attributes.data(),
-                           GL_STATIC_DRAW);
   // GL_OUT_OF_MEMORY here names the buffer instead of surfacing at the end of the frame.
   gl::checkGlError(("splat buffer upload (" + std::to_string(n) + " splats)").c_str());
+  attributesUploaded_ = false;  // the next frame uploads them if it needs them
+}
+
+bool SplatRenderer::syncAttributes(const RenderSettings& settings) {
+  const bool needed = settings.lighting.enabled || classified_.surfaceCount > 0;
+  const size_t n = classified_.splats.size();
+  if (needed && !attributesUploaded_ && classified_.attributes.size() == n && n > 0) {
+    attributeBuffer_.setData(GLsizeiptr(n * sizeof(PackedAttributes)),
+                             classified_.attributes.data(), GL_STATIC_DRAW);
+    gl::checkGlError(("splat attribute upload (" + std::to_string(n) + " splats)").c_str());
+    attributesUploaded_ = true;
+  } else if (!needed && (attributesUploaded_ || !attributeBuffer_)) {
+    // A 16-byte placeholder keeps binding 2 valid; the shaders do not read it.
+    attributeBuffer_.setData(16, nullptr, GL_STATIC_DRAW);
+    attributesUploaded_ = false;
+  }
+  return attributesUploaded_;
 }
 
 void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, const Projection& proj,
@@ -191,6 +205,7 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setInt("uMode", int(settings.mode));
   setClipUniforms(p, settings.clip, *volume_, camera, proj);
   p.setInt("uPost", postClassified(settings) ? 1 : 0);
+  p.setInt("uAttributes", attributesUploaded_ ? 1 : 0);
   occlusion_.setUniforms(p, kOpaqueUnit, false);  // until the frame's first pyramid
 }
 

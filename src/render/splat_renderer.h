@@ -95,6 +95,9 @@ class SplatRenderer : public Renderer {
   void rebuildSplats(const Classification& classification);
   void uploadTransferTexture();
   void uploadSplats();
+  // Uploads the attributes (8 bytes a splat) when a frame under `settings` reads them (shading
+  // or surface splats), else frees them; true when they are on the GPU.
+  bool syncAttributes(const RenderSettings& settings);
   void setCommonUniforms(gl::Program& program, const Camera& camera, const Projection& proj,
                          const RenderSettings& settings);
   // slabIndex >= 0: the GPU partition's slab (its first entry and draw commands on the GPU).
@@ -151,6 +154,7 @@ class SplatRenderer : public Renderer {
   gl::Buffer splatBuffer_;
   gl::Buffer orderBuffer_;
   gl::Buffer attributeBuffer_;
+  bool attributesUploaded_ = false;  // attributeBuffer_ holds classified_.attributes
   gl::Texture transferTexture_;
   RenderTargets targets_;
   size_t glMaxSplats_ = SIZE_MAX;      // splats that fit the GPU's storage block and memory

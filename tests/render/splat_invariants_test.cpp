@@ -244,7 +244,9 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   renderer()->render(cam, settings, 48, 48);
   const RenderStats small = renderer()->stats();
   ASSERT_EQ(small.splatsTotal, 12u * 12u * 12u);
-  const size_t fixed = small.splatsTotal * 16 + 4096 * 16 + 48 * 48 * 48;
+  // The splat records (8 bytes each; the attributes are not uploaded without shading or
+  // surface splats: a 16-byte placeholder), the transfer table and the images.
+  const size_t fixed = small.splatsTotal * 8 + 16 + 4096 * 16 + 48 * 48 * 48;
   // Plus the order list (at least 4 bytes an entry) and, for the GPU partition, its scratch
   // buffers, which keep the capacity earlier frames needed.
   EXPECT_GE(small.gpuBytes, fixed + small.splatsTotal * 4);
@@ -255,6 +257,14 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   const size_t pyramid96x64 = 2048 + 512 + 128 + 32 + 8 + 2 + 1;
   EXPECT_EQ(renderer()->stats().gpuBytes - small.gpuBytes,
             size_t(96 * 64 - 48 * 48) * 48 + pyramid96x64 - pyramid48);
+  // Shading reads the normals: 8 bytes a splat more, in place of the placeholder.
+  const size_t unshaded = renderer()->stats().gpuBytes;
+  settings.lighting.enabled = true;
+  renderer()->render(cam, settings, 96, 64);
+  EXPECT_EQ(renderer()->stats().gpuBytes - unshaded, small.splatsTotal * 8 - 16);
+  settings.lighting.enabled = false;
+  renderer()->render(cam, settings, 96, 64);
+  EXPECT_EQ(renderer()->stats().gpuBytes, unshaded);
 }
 
 }  // namespace
