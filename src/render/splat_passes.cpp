@@ -113,18 +113,50 @@ const Slab& SplatRenderer::slabInOrder(size_t s) const {
   return frame_.slabs[slabPosition(s)];
 }
 
-void SplatRenderer::beginCompositeSlab() {
+void SplatRenderer::computeSlabRects() {
+  frame_.slabRects.clear();
+  frame_.markRect = PixelRect{};
+  if (!volume_ || frame_.settings.mode != RenderMode::Composite) return;
+  const RenderSettings& settings = frame_.settings;
+  const glm::dvec3& sp = volume_->spacing();
+  const FootprintParams params = footprintParams(settings, sp);
+  const KernelReach reach =
+      kernelReach(frame_.proj, settings.filter, settings.cutoff, sp, settings.kernelWidth);
+  // Surface splats sit up to one smallest spacing off their voxel along the normal.
+  const glm::dvec3 margin(params.minSpacing);
+  const glm::dmat4 view = frame_.camera.viewMatrix();
+  for (const Slab& slab : frame_.slabs)
+    frame_.slabRects.push_back(slabPixelRect(
+        view, frame_.proj, reach, volume_->boundsMin() - margin, volume_->boundsMax() + margin,
+        slab.nearDepth, slab.farDepth, params.cullDepth));
+}
+
+void SplatRenderer::scissorToSlab(size_t s) {
+  if (!slabScissor_ || frame_.slabRects.size() != frame_.slabs.size()) return;
+  const PixelRect& r = frame_.slabRects[slabPosition(s)];
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(r.x0, r.y0, std::max(0, r.x1 - r.x0), std::max(0, r.y1 - r.y0));
+}
+
+void SplatRenderer::beginCompositeSlab(size_t s) {
   const GLfloat zero[4] = {0, 0, 0, 0};
+  scissorToSlab(s);
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
   targets_.slabFbo.clearColor(0, zero);
-  if (postClassified(frame_.settings) && frame_.settings.lighting.enabled)
+  if (postClassified(frame_.settings) && frame_.settings.lighting.enabled) {
+    // Over the whole image: on llvmpipe (Mesa 22.3) a scissored clear of this second buffer
+    // left old normal sums inside the rectangle (the slab-rectangle render test caught it).
+    glDisable(GL_SCISSOR_TEST);
     targets_.slabFbo.clearColor(1, zero);
+    scissorToSlab(s);
+  }
 }
 
 void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
   Slab range = slabInOrder(s);
   range.first += uint32_t(first);
   range.count = count;
+  scissorToSlab(s);
   // Inside a slab: order-independent sums of each kernel's share of optical depth and light.
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
   glBlendFunc(GL_ONE, GL_ONE);
@@ -139,6 +171,9 @@ void SplatRenderer::endCompositeSlab(size_t s) {
   const bool terminate = frontToBack && settings.terminationOpacity < 1.0;
   const size_t n = frame_.slabs.size();
   // Between slabs: 1 - exp(-depth) composited under (front to back) or over (back to front).
+  scissorToSlab(s);
+  if (frame_.slabRects.size() == n)
+    frame_.markRect = frame_.markRect.unite(frame_.slabRects[slabPosition(s)]);
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.accumFbo.id());
   if (frontToBack)
     glBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_ONE);
@@ -149,6 +184,13 @@ void SplatRenderer::endCompositeSlab(size_t s) {
   ++stats_.slabsDrawn;
   if (terminate && (s + 1) % kCheckEvery == 0 && s + 1 < n) {
     // Mark pixels that reached the threshold; later splat fragments there fail the stencil.
+    // Only the slabs composited since the last marks changed the image: their rectangles.
+    if (slabScissor_ && frame_.slabRects.size() == n) {
+      const PixelRect& r = frame_.markRect;
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(r.x0, r.y0, std::max(0, r.x1 - r.x0), std::max(0, r.y1 - r.y0));
+    }
+    frame_.markRect = PixelRect{};
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glStencilFunc(GL_ALWAYS, 1, 0xff);
@@ -158,6 +200,7 @@ void SplatRenderer::endCompositeSlab(size_t s) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glStencilFunc(GL_EQUAL, 0, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glDisable(GL_SCISSOR_TEST);  // the bounding-box query below counts the whole image
     if (frame_.occlusion) {
       // The pyramid of the pixels just marked: later slabs' splats over them are culled.
       occlusion_.build(targets_.accum, float(settings.terminationOpacity));
@@ -169,7 +212,7 @@ void SplatRenderer::endCompositeSlab(size_t s) {
 }
 
 void SplatRenderer::drawCompositeSlab(size_t s) {
-  beginCompositeSlab();
+  beginCompositeSlab(s);
   drawSlabRange(s, 0, slabInOrder(s).count);
   endCompositeSlab(s);
 }
@@ -207,7 +250,7 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
         ++frame_.nextSlab;
         continue;
       }
-      if (frame_.nextEntry == 0) beginCompositeSlab();
+      if (frame_.nextEntry == 0) beginCompositeSlab(s);
       const double left = double(count - frame_.nextEntry);
       const double fit =
           measured ? (allowed - expected) / msPerEntry_ : double(kFirstChunk - entries);
@@ -235,6 +278,7 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
     if (millisecondsSince(start) + nextMs > budgetMs) break;
   }
   glDisable(GL_STENCIL_TEST);
+  glDisable(GL_SCISSOR_TEST);
   return finished();
 }
 
@@ -336,6 +380,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   targets_.resize(width, height);
   stats_ = RenderStats{};
   const GLfloat zero[4] = {0, 0, 0, 0};
+  glDisable(GL_SCISSOR_TEST);  // the whole images are cleared
   targets_.accumFbo.clearColor(0, zero);
   targets_.slabFbo.clearColor(0, zero);
   glClearNamedFramebufferfi(targets_.slabFbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
@@ -372,6 +417,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
                            camera.viewMatrix(), thickness, params.cullDepth, extent);
       frame_.slabs = gpuPartition_->slabs();
       frame_.indirect = !gpuPartition_->countsKnown();
+      computeSlabRects();
       stats_.splatsDrawn = gpuPartition_->splatCount();
       nearest = gpuPartition_->nearestCenter();
     } else {
@@ -382,6 +428,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
         orderBuffer_.setData(GLsizeiptr(order.size() * sizeof(uint32_t)), order.data(),
                              GL_STREAM_DRAW);
       frame_.slabs = partition_.slabs();
+      computeSlabRects();
       stats_.splatsDrawn = partition_.splatCount();
       nearest = partition_.nearestCenter();
     }
@@ -426,6 +473,7 @@ void SplatRenderer::takeGpuCounts() {
   for (const Slab& slab : gpuPartition_->slabs())
     if (slab.count > 0) frame_.slabs.push_back(slab);
   frame_.indirect = false;
+  computeSlabRects();
   stats_.slabs = frame_.slabs.size();
   setFrameWeights();
 }

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/slab_partition.h"
+#include "core/slab_rect.h"
 #include "core/splat_attributes.h"
 #include "core/splat_set.h"
 #include "gl/buffer.h"
@@ -90,6 +91,9 @@ class SplatRenderer : public Renderer {
   // Test hook: in X-ray mode, sum only each kernel's share between these camera depths (the
   // share one composite slab gets, without open tails). nullopt: the whole kernel.
   void setDepthWindow(std::optional<std::pair<double, double>> window) { depthWindow_ = window; }
+  // Test hook: limit each slab's clear, splats, composite and mark passes to the rectangle its
+  // kernels can reach (slab_rect.h; on by default), or draw them over the whole image.
+  void setSlabScissor(bool on) { slabScissor_ = on; }
 
  private:
   void rebuildSplats(const Classification& classification);
@@ -118,7 +122,11 @@ class SplatRenderer : public Renderer {
   // (drawSlabRange: entries [first, first + count) of them, into the cleared slab buffer), the
   // blend under (over) the image and, every few slabs, the early-termination check.
   void drawCompositeSlab(size_t slabIndex);
-  void beginCompositeSlab();
+  void beginCompositeSlab(size_t slabIndex);
+  // Each slab's rectangle (frame_.slabRects, in frame_.slabs order) for this frame's slabs.
+  void computeSlabRects();
+  // Scissor to the rectangle of slab `slabIndex` (drawing order), when slab scissors are on.
+  void scissorToSlab(size_t slabIndex);
   void drawSlabRange(size_t slabIndex, size_t first, size_t count);
   void endCompositeSlab(size_t slabIndex);
   const Slab& slabInOrder(size_t slabIndex) const;
@@ -142,6 +150,7 @@ class SplatRenderer : public Renderer {
   std::unique_ptr<GpuSlabPartition> gpuPartition_;  // made on first use
   gl::ShaderLibrary shaders_;                       // for the GPU partition, built on first use
   std::optional<std::pair<double, double>> depthWindow_;
+  bool slabScissor_ = true;
 
   gl::Program pointProgram_;
   gl::Program quadProgram_;
@@ -173,8 +182,10 @@ class SplatRenderer : public Renderer {
     Projection proj;
     RenderSettings settings;
     int width = 0, height = 0;
-    std::vector<Slab> slabs;   // front to back: the CPU partition's, or the GPU's
-    bool gpuSlabs = false;     // slabs come from gpuPartition_
+    std::vector<Slab> slabs;           // front to back: the CPU partition's, or the GPU's
+    std::vector<PixelRect> slabRects;  // per slab: the pixels its kernels can reach
+    PixelRect markRect;                // slabs composited since the last opacity marks
+    bool gpuSlabs = false;             // slabs come from gpuPartition_
     bool indirect = false;     // GPU slabs whose counts only the GPU knows (empty ones kept)
     size_t nextSlab = 0;       // composite: the next slab in drawing order
     bool terminated = false;   // early termination ended the slab loop
