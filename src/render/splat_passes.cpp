@@ -51,8 +51,10 @@ double millisecondsSince(SplatRenderer::Clock::time_point t) {
 
 }  // namespace
 
-bool SplatRenderer::allOpaque(const Camera& camera, const Projection& proj,
-                              const RenderSettings& settings) {
+bool SplatRenderer::issueOpaqueQuery(unsigned query) {
+  const Camera& camera = frame_.camera;
+  const Projection& proj = frame_.proj;
+  const RenderSettings& settings = frame_.settings;
   const glm::dvec3& sp = volume_->spacing();
   const double maxSpacing = std::max({sp.x, sp.y, sp.z});
   const KernelReach reach =
@@ -77,14 +79,36 @@ bool SplatRenderer::allOpaque(const Camera& camera, const Projection& proj,
   boxProgram_.setVec3("uBoxMax", glm::vec3(hi + grow));
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  glBeginQuery(GL_SAMPLES_PASSED, query_);
+  glBeginQuery(GL_SAMPLES_PASSED, query);
   glUseProgram(boxProgram_.id());
   glDrawArrays(GL_TRIANGLES, 0, 36);
   glEndQuery(GL_SAMPLES_PASSED);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  GLuint samples = 1;
-  glGetQueryObjectuiv(query_, GL_QUERY_RESULT, &samples);
-  return samples == 0;
+  return true;
+}
+
+bool SplatRenderer::terminationCheck() {
+  const int current = frame_.nextQuery, previous = current ^ 1;
+  const bool issued = issueOpaqueQuery(queries_[current]);
+  if (!laggedTermination_) {
+    GLuint samples = 1;
+    if (issued) glGetQueryObjectuiv(queries_[current], GL_QUERY_RESULT, &samples);
+    return samples == 0;
+  }
+  bool done = false;
+  if (frame_.queryIssued[previous]) {
+    GLuint available = 0, samples = 1;
+    glGetQueryObjectuiv(queries_[previous], GL_QUERY_RESULT_AVAILABLE, &available);
+    if (available) {
+      glGetQueryObjectuiv(queries_[previous], GL_QUERY_RESULT, &samples);
+      frame_.queryIssued[previous] = false;
+      done = samples == 0;
+    }
+  }
+  frame_.queryIssued[current] = issued;
+  frame_.nextQuery = previous;
+  glFlush();  // so that the query's answer comes while the next slabs are drawn
+  return done;
 }
 
 void SplatRenderer::setSlabLoopState() {
@@ -207,7 +231,7 @@ void SplatRenderer::endCompositeSlab(size_t s) {
       for (gl::Program* p : {&pointProgram_, &quadProgram_})
         occlusion_.setUniforms(*p, kOpaqueUnit, true);
     }
-    if (allOpaque(frame_.camera, frame_.proj, settings)) frame_.terminated = true;
+    if (terminationCheck()) frame_.terminated = true;
   }
 }
 

@@ -64,11 +64,12 @@ SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
   const uint64_t memory = pages > 0 && pageSize > 0 ? uint64_t(pages) * uint64_t(pageSize) : ~0ull;
   glMaxSplats_ = maxSplats_ =
       size_t(std::min(maxStorageBlockBytes_, memory / 2) / sizeof(PackedSplat));
-  glCreateQueries(GL_SAMPLES_PASSED, 1, &query_);
+  glCreateQueries(GL_SAMPLES_PASSED, 2, queries_);
   const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   const std::string renderer = name ? name : "";
   softwareGl_ = renderer.find("llvmpipe") != std::string::npos ||
                 renderer.find("softpipe") != std::string::npos;
+  laggedTermination_ = !softwareGl_;
 }
 
 bool SplatRenderer::gpuPartition() const {
@@ -77,7 +78,7 @@ bool SplatRenderer::gpuPartition() const {
 }
 
 SplatRenderer::~SplatRenderer() {
-  if (query_) glDeleteQueries(1, &query_);
+  if (queries_[0]) glDeleteQueries(2, queries_);
 }
 
 RenderStats SplatRenderer::stats() const {

@@ -94,6 +94,10 @@ class SplatRenderer : public Renderer {
   // Test hook: limit each slab's clear, splats, composite and mark passes to the rectangle its
   // kernels can reach (slab_rect.h; on by default), or draw them over the whole image.
   void setSlabScissor(bool on) { slabScissor_ = on; }
+  // Early termination reads its occlusion query without waiting (lagged by one check; the
+  // default on hardware GL) or waits for it (the default on software rasterizers, where the
+  // wait costs nothing: the CPU draws everything anyway).
+  void setLaggedTermination(bool lagged) { laggedTermination_ = lagged; }
 
  private:
   void rebuildSplats(const Classification& classification);
@@ -136,8 +140,14 @@ class SplatRenderer : public Renderer {
   bool drawSlabChunks(double budgetMs, Clock::time_point start);
   bool drawWholeVolumeChunks(double budgetMs, Clock::time_point start);
   void drawFinalPass();
-  // True when every pixel the volume's bounding box covers is marked opaque.
-  bool allOpaque(const Camera& camera, const Projection& proj, const RenderSettings& settings);
+  // Starts an occlusion query in `query` counting the pixels of the volume's bounding box not
+  // yet marked opaque; false when the box is too near the eye for the test to be safe.
+  bool issueOpaqueQuery(unsigned query);
+  // True when the slab loop may stop: every pixel the bounding box covers is marked opaque.
+  // Blocking: this check's query is waited for. Lagged: the query of the check before, if its
+  // result has come (no wait; the GPU keeps drawing, and stopping up to one check later than
+  // possible only draws slabs the stencil rejects anyway, so the picture is the same).
+  bool terminationCheck();
 
   const Volume* volume_ = nullptr;
   TransferFunction tf_;
@@ -169,7 +179,8 @@ class SplatRenderer : public Renderer {
   size_t glMaxSplats_ = SIZE_MAX;      // splats that fit the GPU's storage block and memory
   size_t maxSplats_ = SIZE_MAX;        // the limit in force (lower in tests)
   uint64_t maxStorageBlockBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
-  unsigned query_ = 0;
+  unsigned queries_[2] = {0, 0};       // early termination's occlusion queries, used in turn
+  bool laggedTermination_ = false;
   float pointSizeLimit_ = 64.0f;
   float glPointSizeLimit_ = 64.0f;
   RenderStats stats_;
@@ -186,12 +197,14 @@ class SplatRenderer : public Renderer {
     std::vector<PixelRect> slabRects;  // per slab: the pixels its kernels can reach
     PixelRect markRect;                // slabs composited since the last opacity marks
     bool gpuSlabs = false;             // slabs come from gpuPartition_
-    bool indirect = false;     // GPU slabs whose counts only the GPU knows (empty ones kept)
-    size_t nextSlab = 0;       // composite: the next slab in drawing order
-    bool terminated = false;   // early termination ended the slab loop
-    bool occlusion = false;    // occlusion culling in this frame (front to back, terminating)
-    size_t nextEntry = 0;      // X-ray and MIP: the next entry of the single slab
-    double meanEntries = 0.0;  // per slab: the weight of a slab's whole-image passes
+    bool indirect = false;    // GPU slabs whose counts only the GPU knows (empty ones kept)
+    size_t nextSlab = 0;      // composite: the next slab in drawing order
+    bool terminated = false;  // early termination ended the slab loop
+    bool occlusion = false;   // occlusion culling in this frame (front to back, terminating)
+    int nextQuery = 0;        // of queries_, the one the next check issues
+    bool queryIssued[2] = {false, false};  // lagged termination: a result not yet read
+    size_t nextEntry = 0;                  // X-ray and MIP: the next entry of the single slab
+    double meanEntries = 0.0;              // per slab: the weight of a slab's whole-image passes
     double drawnWeight = 0.0, totalWeight = 0.0;  // for frameProgress()
   };
   FrameState frame_;

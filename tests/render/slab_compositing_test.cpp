@@ -267,5 +267,32 @@ TEST_F(SlabCompositing, BackToFrontEqualsFrontToBackAndTerminationStopsEarly) {
   EXPECT_LE(worst, 3);
 }
 
+TEST_F(SlabCompositing, LaggedTerminationKeepsThePictureAndStillStops) {
+  // The opaque box above: early termination stops it after a few slabs. Read without waiting
+  // (a GPU's default), the query answers one check late at most: a few more slabs, whose
+  // fragments the stencil rejects, and the same picture.
+  const Volume box = makeVolume(24, 24, 24, glm::dvec3(1.0), [](int, int, int) { return true; });
+  renderer()->setVolume(box);
+  renderer()->setTransferFunction(whiteTf(0.9, 1.0));
+  Camera cam;
+  cam.focalPoint = {11.5, 11.5, 11.5};
+  cam.position = {11.5, 11.5, 60.0};
+  cam.viewAngleDeg = 15.0;
+  RenderSettings opaque;
+  renderer()->setLaggedTermination(false);
+  renderer()->render(cam, opaque, 32, 32);
+  const Image8 waited = renderer()->readImage();
+  const size_t waitedSlabs = renderer()->stats().slabsDrawn, allSlabs = renderer()->stats().slabs;
+  renderer()->setLaggedTermination(true);
+  renderer()->render(cam, opaque, 32, 32);
+  const Image8 lagged = renderer()->readImage();
+  const size_t laggedSlabs = renderer()->stats().slabsDrawn;
+  renderer()->setLaggedTermination(false);
+  EXPECT_LT(waitedSlabs, allSlabs / 2);
+  EXPECT_GT(laggedSlabs, waitedSlabs) << "a lagged answer comes one check later";
+  EXPECT_LE(laggedSlabs, waitedSlabs + 8);
+  EXPECT_EQ(lagged.pixels, waited.pixels);
+}
+
 }  // namespace
 }  // namespace ewa::test
