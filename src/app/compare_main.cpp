@@ -128,7 +128,7 @@ int run(int argc, char** argv) {
   int repeats = 5;
   bool csv = false, json = false, noVtk = false, orthographic = false;
   RenderSettings settings;  // EWA's: the defaults unless --kernel-width or --classification
-  std::string classification = "pre", culling = "on";
+  std::string classification = "pre", culling = "on", slabRects = "on";
   app.add_option("--data", data,
                  "Folder with engine/, bonsai/ and cthead/ (default ../shared/data)");
   app.add_option("--volumes", volumes,
@@ -157,6 +157,10 @@ int run(int argc, char** argv) {
       ->check(CLI::IsMember({"pre", "post"}));
   app.add_option("--occlusion-culling", culling, "EWA: occlusion culling on (default) or off")
       ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--slab-rects", slabRects,
+                 "EWA: each slab's passes cut to the pixels its kernels reach (on, default) or "
+                 "over the whole image (off)")
+      ->check(CLI::IsMember({"on", "off"}));
   addBackendOption(app, backend);
   CLI11_PARSE(app, argc, argv);
   if (volumes.empty() && synthetic.empty()) volumes = {"engine", "bonsai", "cthead"};
@@ -165,10 +169,11 @@ int run(int argc, char** argv) {
 
   CompareReport report;
   report.repeats = repeats;
-  char ewaText[128];
+  char ewaText[160];
   std::snprintf(ewaText, sizeof ewaText,
-                "kernel width %.2f, %s-classification, occlusion culling %s", settings.kernelWidth,
-                classification.c_str(), culling.c_str());
+                "kernel width %.2f, %s-classification, occlusion culling %s%s",
+                settings.kernelWidth, classification.c_str(), culling.c_str(),
+                slabRects == "on" ? "" : ", whole-image slab passes");
   report.ewaSettings = ewaText;
   for (int i = 0; i < argc; ++i) report.command += (i ? " " : "") + std::string(argv[i]);
   std::vector<Input> inputs = sharedInputs(data, volumes);
@@ -186,6 +191,7 @@ int run(int argc, char** argv) {
     report.notes.push_back("shear-warp draws the perspective view as the parallel one");
   const gl::ShaderLibrary shaders;
   SplatRenderer ewa(shaders);
+  ewa.setSlabScissor(slabRects == "on");
   SpriteBaseline sprites(shaders);
   const std::unique_ptr<Renderer> shearWarp = createRenderer(RendererKind::ShearWarp, shaders);
   bool vtkWorks = !noVtk, failed = false;

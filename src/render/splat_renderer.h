@@ -91,7 +91,7 @@ class SplatRenderer : public Renderer {
   // Test hook: in X-ray mode, sum only each kernel's share between these camera depths (the
   // share one composite slab gets, without open tails). nullopt: the whole kernel.
   void setDepthWindow(std::optional<std::pair<double, double>> window) { depthWindow_ = window; }
-  // Test hook: limit each slab's clear, splats, composite and mark passes to the rectangle its
+  // Test hook: limit each slab's splats, composite and mark passes to the rectangle its
   // kernels can reach (slab_rect.h; on by default), or draw them over the whole image.
   void setSlabScissor(bool on) { slabScissor_ = on; }
   // Early termination reads its occlusion query without waiting (lagged by one check; the

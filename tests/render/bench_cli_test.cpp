@@ -60,12 +60,14 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
 }
 
 TEST(CompareCli, KernelWidthAndClassificationReachEwa) {
-  const CliRun r =
-      compare(std::string(kTiny) +
-              " --kernel-width 0.55 --classification post --occlusion-culling off --json");
+  const CliRun r = compare(
+      std::string(kTiny) +
+      " --kernel-width 0.55 --classification post --occlusion-culling off --slab-rects off --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const json doc = json::parse(r.out);
-  EXPECT_EQ(doc["ewa_settings"], "kernel width 0.55, post-classification, occlusion culling off");
+  EXPECT_EQ(doc["ewa_settings"],
+            "kernel width 0.55, post-classification, occlusion culling off, whole-image slab "
+            "passes");
   ASSERT_EQ(doc["rows"].size(), 1u) << r.out;
   EXPECT_GT(doc["rows"][0]["ewa_ms"].get<double>(), 0.0);
   EXPECT_EQ(doc["rows"][0]["culled_percent"].get<double>(), 0.0);
