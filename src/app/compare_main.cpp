@@ -128,7 +128,7 @@ int run(int argc, char** argv) {
   int repeats = 5;
   bool csv = false, json = false, noVtk = false, orthographic = false;
   RenderSettings settings;  // EWA's: the defaults unless --kernel-width or --classification
-  std::string classification = "pre", culling = "on", slabRects = "on";
+  std::string classification = "pre", culling = "auto", slabRects = "on";
   app.add_option("--data", data,
                  "Folder with engine/, bonsai/ and cthead/ (default ../shared/data)");
   app.add_option("--volumes", volumes,
@@ -155,8 +155,9 @@ int run(int argc, char** argv) {
   app.add_option("--classification", classification,
                  "EWA: transfer function per voxel (pre, default) or per pixel (post)")
       ->check(CLI::IsMember({"pre", "post"}));
-  app.add_option("--occlusion-culling", culling, "EWA: occlusion culling on (default) or off")
-      ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--occlusion-culling", culling,
+                 "EWA: occlusion culling auto (default: off on software rasterizers), on or off")
+      ->check(CLI::IsMember({"auto", "on", "off"}));
   app.add_option("--slab-rects", slabRects,
                  "EWA: each slab's passes cut to the pixels its kernels reach (on, default) or "
                  "over the whole image (off)")
@@ -165,16 +166,10 @@ int run(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   if (volumes.empty() && synthetic.empty()) volumes = {"engine", "bonsai", "cthead"};
   parseClassificationMode(classification, &settings.classification.mode);
-  settings.occlusionCulling = culling == "on";
+  parseOcclusionCulling(culling, &settings.occlusionCulling);
 
   CompareReport report;
   report.repeats = repeats;
-  char ewaText[160];
-  std::snprintf(ewaText, sizeof ewaText,
-                "kernel width %.2f, %s-classification, occlusion culling %s%s",
-                settings.kernelWidth, classification.c_str(), culling.c_str(),
-                slabRects == "on" ? "" : ", whole-image slab passes");
-  report.ewaSettings = ewaText;
   for (int i = 0; i < argc; ++i) report.command += (i ? " " : "") + std::string(argv[i]);
   std::vector<Input> inputs = sharedInputs(data, volumes);
   for (const std::string& spec : synthetic) {
@@ -192,6 +187,13 @@ int run(int argc, char** argv) {
   const gl::ShaderLibrary shaders;
   SplatRenderer ewa(shaders);
   ewa.setSlabScissor(slabRects == "on");
+  char ewaText[160];
+  std::snprintf(
+      ewaText, sizeof ewaText, "kernel width %.2f, %s-classification, occlusion culling %s%s%s",
+      settings.kernelWidth, classification.c_str(),
+      ewa.occlusionCulling(settings.occlusionCulling) ? "on" : "off",
+      culling == "auto" ? " (auto)" : "", slabRects == "on" ? "" : ", whole-image slab passes");
+  report.ewaSettings = ewaText;
   SpriteBaseline sprites(shaders);
   const std::unique_ptr<Renderer> shearWarp = createRenderer(RendererKind::ShearWarp, shaders);
   bool vtkWorks = !noVtk, failed = false;

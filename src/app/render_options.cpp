@@ -18,9 +18,10 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
                  "Front to back: stop a pixel at this opacity (default 0.99; 1 never stops)")
       ->check(CLI::Range(0.5, 1.0));
   app.add_option("--occlusion-culling", p.occlusionCulling,
-                 "Front to back with termination: skip splats over pixels already opaque (on, "
-                 "default) or draw them (off); the picture is the same")
-      ->check(CLI::IsMember({"on", "off"}));
+                 "Front to back with termination: skip splats over pixels already opaque (on), "
+                 "draw them (off), or auto (default: on, but off on software rasterizers); the "
+                 "picture is the same")
+      ->check(CLI::IsMember({"auto", "on", "off"}));
   app.add_option("--xray-map", p.xrayMap, "X-ray gray: exp (exp(-sum), default) or sum")
       ->check(CLI::IsMember({"exp", "sum"}));
   app.add_option("--xray-scale", s.xrayScale, "X-ray: optical depth multiplied by this (default 1)")
@@ -54,7 +55,7 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
 
 std::string finishShadingOptions(const RenderOptionText& p, RenderSettings* s) {
   parseCompositeOrder(p.compositing, &s->order);
-  s->occlusionCulling = p.occlusionCulling == "on";
+  parseOcclusionCulling(p.occlusionCulling, &s->occlusionCulling);
   parseXRayMap(p.xrayMap, &s->xrayMap);
   parseGradientMode(p.gradient, &s->classification.gradient);
   parseClassificationMode(p.classification, &s->classification.mode);

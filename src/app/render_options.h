@@ -18,7 +18,7 @@ struct RenderOptionText {
   std::string xrayMap = "exp";
   std::string gradient = "central";
   std::string classification = "pre";
-  std::string occlusionCulling = "on";
+  std::string occlusionCulling = "auto";
   std::optional<double> surfaceValue;
   std::optional<double> surfaceOpacity;
 };

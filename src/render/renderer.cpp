@@ -5,6 +5,27 @@
 
 namespace ewa {
 
+const char* occlusionCullingName(OcclusionCulling mode) {
+  switch (mode) {
+    case OcclusionCulling::Auto:
+      return "auto";
+    case OcclusionCulling::On:
+      return "on";
+    case OcclusionCulling::Off:
+      return "off";
+  }
+  return "?";
+}
+
+bool parseOcclusionCulling(const std::string& text, OcclusionCulling* mode) {
+  for (OcclusionCulling m : {OcclusionCulling::Auto, OcclusionCulling::On, OcclusionCulling::Off})
+    if (text == occlusionCullingName(m)) {
+      *mode = m;
+      return true;
+    }
+  return false;
+}
+
 const char* renderModeName(RenderMode mode) {
   switch (mode) {
     case RenderMode::Composite:

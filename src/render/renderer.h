@@ -34,6 +34,12 @@ const char* xrayMapName(XRayMap map);
 bool parseXRayMap(const std::string& text, XRayMap* map);
 
 enum class RendererKind { Splat = 0, ShearWarp = 1 };
+// Occlusion culling (splats over pixels already opaque are not drawn; the same picture). Auto:
+// on hardware GL, off on software rasterizers, where the vertex shader's extra texel fetches
+// cost more than they save unless most splats are hidden (README, "Performance").
+enum class OcclusionCulling { Auto = 0, On = 1, Off = 2 };
+const char* occlusionCullingName(OcclusionCulling mode);
+bool parseOcclusionCulling(const std::string& text, OcclusionCulling* mode);
 const char* rendererKindName(RendererKind kind);
 bool parseRendererKind(const std::string& text, RendererKind* kind);
 
@@ -57,7 +63,7 @@ struct RenderSettings {
   double terminationOpacity = 0.99;
   // With early termination: splats whose whole screen rectangle lies over pixels already that
   // opaque are not drawn (an opacity pyramid rebuilt with the stencil marks); same picture.
-  bool occlusionCulling = true;
+  OcclusionCulling occlusionCulling = OcclusionCulling::Auto;
   XRayMap xrayMap = XRayMap::Attenuation;
   double xrayScale = 1.0;
   Lighting lighting;              // per splat, every frame: the camera moves the light

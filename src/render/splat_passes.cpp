@@ -459,7 +459,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     stats_.surfaceSplats = classified_.surfaceCount;
     if (!frame_.slabs.empty()) {
       stats_.quadPass = 2.0 * pixelReach(extent.reach, proj, nearest) + 0.5 > pointSizeLimit_;
-      frame_.occlusion = settings.occlusionCulling && composite &&
+      frame_.occlusion = occlusionCulling(settings.occlusionCulling) && composite &&
                          settings.order == CompositeOrder::FrontToBack &&
                          settings.terminationOpacity < 1.0;
       if (frame_.occlusion) {

@@ -73,6 +73,10 @@ class SplatRenderer : public Renderer {
   void setPartition(PartitionMode mode) { partitionMode_ = mode; }
   // True when frames build the partition on the GPU (Auto resolved for this GL).
   bool gpuPartition() const;
+  // True when `mode` culls occluded splats on this GL (Auto: not on software rasterizers).
+  bool occlusionCulling(OcclusionCulling mode) const {
+    return mode == OcclusionCulling::On || (mode == OcclusionCulling::Auto && !softwareGl_);
+  }
 
   // The most splats the GL buffers may hold: pass it to a classification made elsewhere.
   size_t maxSplats() const { return maxSplats_; }

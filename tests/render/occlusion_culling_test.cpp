@@ -1,5 +1,7 @@
 // Occlusion culling: splats over pixels already opaque are skipped, and the picture is the
 // same to the bit, for points and quads, both partitions and drawing in budgeted steps.
+#include <cstdlib>
+
 #include "render_fixture.h"
 
 namespace ewa::test {
@@ -75,9 +77,9 @@ TEST_F(OcclusionCulling, CullsHiddenSplatsAndKeepsThePictureExactly) {
     renderer()->setPointSizeLimit(c.pointLimit);
     renderer()->setPartition(c.partition);
     RenderSettings settings;
-    settings.occlusionCulling = false;
+    settings.occlusionCulling = ewa::OcclusionCulling::Off;
     const Drawn off = draw(*renderer(), settings, c.stepped);
-    settings.occlusionCulling = true;
+    settings.occlusionCulling = ewa::OcclusionCulling::On;
     const Drawn on = draw(*renderer(), settings, c.stepped);
     EXPECT_EQ(off.stats.entriesCulled, 0u);
     EXPECT_EQ(on.stats.slabEntries, off.stats.slabEntries);
@@ -86,9 +88,12 @@ TEST_F(OcclusionCulling, CullsHiddenSplatsAndKeepsThePictureExactly) {
     EXPECT_GT(on.stats.entriesCulled, on.stats.slabEntries / 10);
     EXPECT_LT(on.stats.entriesCulled, on.stats.slabEntries);
     ASSERT_EQ(on.image.pixels.size(), off.image.pixels.size());
+    // To the bit with the CPU partition. The GPU's scatters each slab's entries in an order that
+    // varies between frames (atomics), so its sums may round a level apart in a few pixels.
+    const int allowed = c.partition == PartitionMode::Cpu ? 0 : 1;
     size_t differing = 0;
     for (size_t p = 0; p < on.image.pixels.size(); ++p)
-      differing += on.image.pixels[p] != off.image.pixels[p];
+      differing += std::abs(int(on.image.pixels[p]) - int(off.image.pixels[p])) > allowed;
     EXPECT_EQ(differing, 0u) << "culling changed the picture";
   }
 }
@@ -98,6 +103,10 @@ TEST_F(OcclusionCulling, NothingCulledWithoutEarlyTermination) {
   renderer()->setVolume(vol);
   renderer()->setTransferFunction(wallTf());
   RenderSettings settings;
+  // Auto culls where the renderer says it does (hardware GL), not on software rasterizers.
+  const bool automatic = renderer()->occlusionCulling(ewa::OcclusionCulling::Auto);
+  EXPECT_EQ(draw(*renderer(), settings, false).stats.entriesCulled > 0, automatic);
+  settings.occlusionCulling = ewa::OcclusionCulling::On;
   settings.terminationOpacity = 1.0;  // no pixel is ever marked opaque
   EXPECT_EQ(draw(*renderer(), settings, false).stats.entriesCulled, 0u);
   settings.terminationOpacity = 0.99;

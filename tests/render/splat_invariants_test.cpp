@@ -241,6 +241,7 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   cam.position = {5.5, 5.5, 40.0};
   cam.focalPoint = {5.5, 5.5, 5.5};
   RenderSettings settings;
+  settings.occlusionCulling = OcclusionCulling::On;  // its pyramid is counted too
   renderer()->render(cam, settings, 48, 48);
   const RenderStats small = renderer()->stats();
   ASSERT_EQ(small.splatsTotal, 12u * 12u * 12u);
