@@ -8,13 +8,14 @@ uniform int uOpaqueLevels;
 uniform ivec2 uOpaqueSize;   // texels of level 0
 layout(std430, binding = 4) buffer Culled { uint culledSplats; };
 
+// The level's size from uOpaqueSize, not textureSize(): llvmpipe returned wrong sizes for a
+// level chosen in a vertex shader.
 float opaqueTexel(ivec2 t, int level) {
   ivec2 size = max(uOpaqueSize >> level, ivec2(1));
   if (any(greaterThanEqual(t, size))) return 1.0;
   return texelFetch(uOpaque, t, level).r;
 }
 
-// textureSize() is not used: llvmpipe returned wrong sizes for a level chosen in a vertex shader.
 // True when every pixel that the rectangle [lo, hi] (in pixels, as gl_FragCoord) touches is
 // opaque. Four texel fetches at the level where the rectangle spans at most two texels.
 bool occluded(vec2 lo, vec2 hi) {

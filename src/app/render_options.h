@@ -23,9 +23,9 @@ struct RenderOptionText {
   std::optional<double> surfaceOpacity;
 };
 
-// Adds --classification, --compositing, --termination, --occlusion-culling, --xray-map, --xray-scale, --shading,
-// --ambient,
-// --diffuse, --specular, --shininess, --gradient, --surface-threshold,
+// Adds --classification, --compositing, --termination, --occlusion-culling, --xray-map,
+// --xray-scale, --shading, --ambient, --diffuse, --specular, --shininess, --gradient,
+// --surface-threshold,
 // --surface-opacity-threshold, --surface-min-gradient and --surface-opacity to `app`, writing
 // into `settings` and `text`; both must outlive the parse.
 void addShadingOptions(CLI::App& app, RenderSettings& settings, RenderOptionText& text);

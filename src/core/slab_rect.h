@@ -1,5 +1,5 @@
 // SlabRect: the screen rectangle the kernels of one image-aligned slab can draw into, so the
-// slab's clear, composite and mark passes need not cover the whole image.
+// slab's splat, composite and mark passes need not cover the whole image.
 #pragma once
 
 #include <glm/mat4x4.hpp>

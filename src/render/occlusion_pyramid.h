@@ -30,7 +30,6 @@ class OcclusionPyramid {
   // Zeroes the culled-splat counter; readCount() returns it (waits for the GPU).
   void resetCount();
   size_t readCount() const;
-  int levels() const { return levels_; }
   size_t bytes() const;
 
  private:

@@ -19,7 +19,6 @@ namespace {
 // Front to back, the opaque pixels are marked and counted after every this many slabs: often
 // enough to stop soon after the picture is opaque, rarely enough to cost little.
 constexpr size_t kCheckEvery = 4;
-constexpr unsigned kOpaqueUnit = 4;  // texture unit of the occlusion pyramid
 
 // World to clip space for the pixel mapping of `proj`: x_pixel = principal + f u.xy / depth
 // (or ppu u.xy), and clip z inside [-w, w] for depths beyond `nearClip`.
@@ -157,12 +156,15 @@ void SplatRenderer::computeSlabRects() {
 
 void SplatRenderer::scissorToSlab(size_t s) {
   if (!slabScissor_ || frame_.slabRects.size() != frame_.slabs.size()) return;
-  const PixelRect& r = frame_.slabRects[slabPosition(s)];
+  scissorTo(frame_.slabRects[slabPosition(s)]);
+}
+
+void SplatRenderer::scissorTo(const PixelRect& r) {
   glEnable(GL_SCISSOR_TEST);
   glScissor(r.x0, r.y0, std::max(0, r.x1 - r.x0), std::max(0, r.y1 - r.y0));
 }
 
-void SplatRenderer::beginCompositeSlab(size_t) {
+void SplatRenderer::beginCompositeSlab() {
   // Whole-image clears: llvmpipe clears a whole image by marking its tiles (scissored, it
   // writes every pixel: engine's frames took 6% longer), GPUs have fast clears too, and on
   // llvmpipe (Mesa 22.3) a scissored clear of the second buffer left old normal sums behind.
@@ -207,11 +209,7 @@ void SplatRenderer::endCompositeSlab(size_t s) {
   if (terminate && (s + 1) % kCheckEvery == 0 && s + 1 < n) {
     // Mark pixels that reached the threshold; later splat fragments there fail the stencil.
     // Only the slabs composited since the last marks changed the image: their rectangles.
-    if (slabScissor_ && frame_.slabRects.size() == n) {
-      const PixelRect& r = frame_.markRect;
-      glEnable(GL_SCISSOR_TEST);
-      glScissor(r.x0, r.y0, std::max(0, r.x1 - r.x0), std::max(0, r.y1 - r.y0));
-    }
+    if (slabScissor_ && frame_.slabRects.size() == n) scissorTo(frame_.markRect);
     frame_.markRect = PixelRect{};
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -234,7 +232,7 @@ void SplatRenderer::endCompositeSlab(size_t s) {
 }
 
 void SplatRenderer::drawCompositeSlab(size_t s) {
-  beginCompositeSlab(s);
+  beginCompositeSlab();
   drawSlabRange(s, 0, slabInOrder(s).count);
   endCompositeSlab(s);
 }
@@ -272,7 +270,7 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
         ++frame_.nextSlab;
         continue;
       }
-      if (frame_.nextEntry == 0) beginCompositeSlab(s);
+      if (frame_.nextEntry == 0) beginCompositeSlab();
       const double left = double(count - frame_.nextEntry);
       const double fit =
           measured ? (allowed - expected) / msPerEntry_ : double(kFirstChunk - entries);

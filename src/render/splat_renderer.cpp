@@ -16,7 +16,6 @@ namespace ewa {
 
 namespace {
 constexpr int kTransferSamples = 4096;
-constexpr unsigned kOpaqueUnit = 4;  // texture unit of the occlusion pyramid
 }  // namespace
 
 const char* partitionModeName(PartitionMode mode) {
@@ -157,7 +156,7 @@ void SplatRenderer::uploadSplats() {
   attributesUploaded_ = false;  // the next frame uploads them if it needs them
 }
 
-bool SplatRenderer::syncAttributes(const RenderSettings& settings) {
+void SplatRenderer::syncAttributes(const RenderSettings& settings) {
   const bool needed = settings.lighting.enabled || classified_.surfaceCount > 0;
   const size_t n = classified_.splats.size();
   if (needed && !attributesUploaded_ && classified_.attributes.size() == n && n > 0) {
@@ -170,7 +169,6 @@ bool SplatRenderer::syncAttributes(const RenderSettings& settings) {
     attributeBuffer_.setData(16, nullptr, GL_STATIC_DRAW);
     attributesUploaded_ = false;
   }
-  return attributesUploaded_;
 }
 
 void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, const Projection& proj,

@@ -108,8 +108,8 @@ class SplatRenderer : public Renderer {
   void uploadTransferTexture();
   void uploadSplats();
   // Uploads the attributes (8 bytes a splat) when a frame under `settings` reads them (shading
-  // or surface splats), else frees them; true when they are on the GPU.
-  bool syncAttributes(const RenderSettings& settings);
+  // or surface splats), else frees them; attributesUploaded_ says which.
+  void syncAttributes(const RenderSettings& settings);
   void setCommonUniforms(gl::Program& program, const Camera& camera, const Projection& proj,
                          const RenderSettings& settings);
   // slabIndex >= 0: the GPU partition's slab (its first entry and draw commands on the GPU).
@@ -130,11 +130,13 @@ class SplatRenderer : public Renderer {
   // (drawSlabRange: entries [first, first + count) of them, into the cleared slab buffer), the
   // blend under (over) the image and, every few slabs, the early-termination check.
   void drawCompositeSlab(size_t slabIndex);
-  void beginCompositeSlab(size_t slabIndex);
+  void beginCompositeSlab();
   // Each slab's rectangle (frame_.slabRects, in frame_.slabs order) for this frame's slabs.
   void computeSlabRects();
   // Scissor to the rectangle of slab `slabIndex` (drawing order), when slab scissors are on.
   void scissorToSlab(size_t slabIndex);
+  // Scissor to `rect` (enables the scissor test).
+  static void scissorTo(const PixelRect& rect);
   void drawSlabRange(size_t slabIndex, size_t first, size_t count);
   void endCompositeSlab(size_t slabIndex);
   const Slab& slabInOrder(size_t slabIndex) const;
@@ -173,6 +175,7 @@ class SplatRenderer : public Renderer {
   gl::Program finalProgram_;
   gl::Program boxProgram_;
   OcclusionPyramid occlusion_;
+  static constexpr unsigned kOpaqueUnit = 4;  // texture unit of the occlusion pyramid
   gl::VertexArray emptyVao_;
   gl::Buffer splatBuffer_;
   gl::Buffer orderBuffer_;

@@ -67,6 +67,20 @@ Camera obliqueCamera(const Volume& vol, double azimuth) {
   return cam;
 }
 
+// A 24^3 box, every voxel filled: with whiteTf(0.9, 1) opaque after a few voxels.
+Volume opaqueBox() {
+  return makeVolume(24, 24, 24, glm::dvec3(1.0), [](int, int, int) { return true; });
+}
+
+// The box head-on, its front face covering the whole image.
+Camera boxFrontCamera() {
+  Camera cam;
+  cam.focalPoint = {11.5, 11.5, 11.5};
+  cam.position = {11.5, 11.5, 60.0};
+  cam.viewAngleDeg = 15.0;
+  return cam;
+}
+
 double meanAbsDiff(const Image8& a, const Image8& b, int* worst) {
   double sum = 0.0;
   *worst = 0;
@@ -246,13 +260,10 @@ TEST_F(SlabCompositing, BackToFrontEqualsFrontToBackAndTerminationStopsEarly) {
   EXPECT_LE(worst, 1);
 
   // An opaque box filling the view, head-on: the picture is opaque after a few slabs.
-  const Volume box = makeVolume(24, 24, 24, glm::dvec3(1.0), [](int, int, int) { return true; });
+  const Volume box = opaqueBox();
   renderer()->setVolume(box);
   renderer()->setTransferFunction(whiteTf(0.9, 1.0));
-  Camera cam;
-  cam.focalPoint = {11.5, 11.5, 11.5};
-  cam.position = {11.5, 11.5, 60.0};
-  cam.viewAngleDeg = 15.0;  // the front face covers the whole image
+  const Camera cam = boxFrontCamera();
   RenderSettings opaque;
   opaque.terminationOpacity = 1.0;
   renderer()->render(cam, opaque, 32, 32);
@@ -273,13 +284,10 @@ TEST_F(SlabCompositing, LaggedTerminationKeepsThePictureAndStillStops) {
   // fragments the stencil rejects, and the same picture (to the bit: the CPU partition, whose
   // order of entries does not vary between frames).
   renderer()->setPartition(PartitionMode::Cpu);
-  const Volume box = makeVolume(24, 24, 24, glm::dvec3(1.0), [](int, int, int) { return true; });
+  const Volume box = opaqueBox();
   renderer()->setVolume(box);
   renderer()->setTransferFunction(whiteTf(0.9, 1.0));
-  Camera cam;
-  cam.focalPoint = {11.5, 11.5, 11.5};
-  cam.position = {11.5, 11.5, 60.0};
-  cam.viewAngleDeg = 15.0;
+  const Camera cam = boxFrontCamera();
   RenderSettings opaque;
   renderer()->setLaggedTermination(false);
   renderer()->render(cam, opaque, 32, 32);
