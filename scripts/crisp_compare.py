@@ -213,8 +213,12 @@ def main():
     p.add_argument("--out", help="folder for the pictures and montages")
     p.add_argument("--volumes", default="aneurism,bonsai,engine,CThead,tooth")
     p.add_argument("--widths", default="1,0.85,0.7")
-    p.add_argument("--classifications", default="pre,post")
+    p.add_argument("--classifications", default="pre,post,post-mean",
+                   help="pre, post (pre-integrated between slabs), post-mean (each slab's mean "
+                        "value alone: --slab-preintegration off)")
     p.add_argument("--cutoff", type=float, default=4.0)
+    p.add_argument("--slab-thickness", type=float, default=2.0,
+                   help="slab thickness in voxels (ewaview's default 2)")
     p.add_argument("--repeats", type=int, default=3)
     a = p.parse_args()
     if a.vtk:
@@ -240,7 +244,10 @@ def main():
         scene.transfer_function = dict(tf, opacity_unit_distance=1.0)
         pictures = [ref]
         for classification, width in variants:
-            options = dict(classification=classification, kernel_width=width)
+            options = dict(classification=classification.split("-")[0], kernel_width=width,
+                           slab_thickness=a.slab_thickness)
+            if classification == "post-mean":
+                options["slab_preintegration"] = "off"
             img = scene.render(**options)  # classifies
             times = []
             for _ in range(a.repeats):

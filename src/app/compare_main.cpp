@@ -128,7 +128,7 @@ int run(int argc, char** argv) {
   int repeats = 5;
   bool csv = false, json = false, noVtk = false, orthographic = false;
   RenderSettings settings;  // EWA's: the defaults unless --kernel-width or --classification
-  std::string classification = "pre", culling = "auto", slabRects = "on";
+  std::string classification = "pre", culling = "auto", slabRects = "on", pairs = "on";
   app.add_option("--data", data,
                  "Folder with engine/, bonsai/ and cthead/ (default ../shared/data)");
   app.add_option("--volumes", volumes,
@@ -155,6 +155,10 @@ int run(int argc, char** argv) {
   app.add_option("--classification", classification,
                  "EWA: transfer function per voxel (pre, default) or per pixel (post)")
       ->check(CLI::IsMember({"pre", "post"}));
+  app.add_option("--slab-preintegration", pairs,
+                 "EWA post-classification: slab value pairs through the pre-integration table "
+                 "(on, default) or each slab's value alone (off)")
+      ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--occlusion-culling", culling,
                  "EWA: occlusion culling auto (default: off on software rasterizers), on or off")
       ->check(CLI::IsMember({"auto", "on", "off"}));
@@ -167,6 +171,7 @@ int run(int argc, char** argv) {
   if (volumes.empty() && synthetic.empty()) volumes = {"engine", "bonsai", "cthead"};
   parseClassificationMode(classification, &settings.classification.mode);
   parseOcclusionCulling(culling, &settings.occlusionCulling);
+  settings.slabPreintegration = pairs == "on";
 
   CompareReport report;
   report.repeats = repeats;
@@ -187,10 +192,11 @@ int run(int argc, char** argv) {
   const gl::ShaderLibrary shaders;
   SplatRenderer ewa(shaders);
   ewa.setSlabScissor(slabRects == "on");
-  char ewaText[160];
+  char ewaText[200];
   std::snprintf(
-      ewaText, sizeof ewaText, "kernel width %.2f, %s-classification, occlusion culling %s%s%s",
+      ewaText, sizeof ewaText, "kernel width %.2f, %s-classification%s, occlusion culling %s%s%s",
       settings.kernelWidth, classification.c_str(),
+      classification == "post" && pairs == "off" ? " without slab pre-integration" : "",
       ewa.occlusionCulling(settings.occlusionCulling) ? "on" : "off",
       culling == "auto" ? " (auto)" : "", slabRects == "on" ? "" : ", whole-image slab passes");
   report.ewaSettings = ewaText;

@@ -38,6 +38,7 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
     o.render.kernelWidth = config.saved.kernelWidth;
     if (o.render.classification.surface == ewa::SurfaceCriterion::None)
       ewa::parseClassificationMode(config.saved.classification, &o.render.classification.mode);
+    o.render.slabPreintegration = config.saved.slabPreintegration;
     o.render.slabThickness = config.saved.slabThickness;
     o.render.background = config.saved.background;
   }

@@ -131,7 +131,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   while (o->file.size() > 1 && o->file.back() == '/') o->file.pop_back();
   o->resolutionGiven = !res.empty();
   for (const char* name : {"--filter", "--render-mode", "--cutoff", "--kernel-width",
-                           "--classification", "--slab-thickness", "--background"})
+                           "--classification", "--slab-preintegration", "--slab-thickness",
+                           "--background"})
     o->renderOptionsGiven |= app.count(name) > 0;
   if (!res.empty()) {
     o->width = res[0];

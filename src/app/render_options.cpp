@@ -11,6 +11,11 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
                  "Transfer function applied per voxel before splatting (pre, default) or per pixel "
                  "to the splatted value (post)")
       ->check(CLI::IsMember({"pre", "post"}));
+  app.add_option("--slab-preintegration", p.slabPreintegration,
+                 "Post-classification: classify each pixel's values in two neighbouring slabs as "
+                 "a pair through the pre-integration table (on, default), or each slab's value "
+                 "alone (off)")
+      ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--compositing", p.compositing,
                  "Slab order: front-to-back (default) or back-to-front")
       ->check(CLI::IsMember({"front-to-back", "back-to-front"}));
@@ -59,6 +64,7 @@ std::string finishShadingOptions(const RenderOptionText& p, RenderSettings* s) {
   parseXRayMap(p.xrayMap, &s->xrayMap);
   parseGradientMode(p.gradient, &s->classification.gradient);
   parseClassificationMode(p.classification, &s->classification.mode);
+  s->slabPreintegration = p.slabPreintegration == "on";
   if (p.surfaceValue) {
     if (!std::isfinite(*p.surfaceValue)) return "--surface-threshold: not a finite number";
     s->classification.surface = SurfaceCriterion::Value;

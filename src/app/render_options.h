@@ -18,12 +18,14 @@ struct RenderOptionText {
   std::string xrayMap = "exp";
   std::string gradient = "central";
   std::string classification = "pre";
+  std::string slabPreintegration = "on";
   std::string occlusionCulling = "auto";
   std::optional<double> surfaceValue;
   std::optional<double> surfaceOpacity;
 };
 
-// Adds --classification, --compositing, --termination, --occlusion-culling, --xray-map,
+// Adds --classification, --slab-preintegration, --compositing, --termination, --occlusion-culling,
+// --xray-map,
 // --xray-scale, --shading, --ambient, --diffuse, --specular, --shininess, --gradient,
 // --surface-threshold,
 // --surface-opacity-threshold, --surface-min-gradient and --surface-opacity to `app`, writing

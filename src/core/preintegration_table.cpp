@@ -1,6 +1,7 @@
 // Pre-integration tables: fast sub-bin construction and the fine numerical reference.
 #include "core/preintegration_table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <thread>
@@ -35,6 +36,7 @@ PreintegrationTable PreintegrationTable::build(const TransferFunction& tf, doubl
   table.lo_ = lo;
   table.hi_ = hi;
   table.distance_ = distance;
+  table.substeps_ = substeps;
   table.entries_.assign(size_t(size) * size_t(size), glm::vec4(0.0f));
 
   // Diagonal: constant scalar, closed form.
@@ -58,6 +60,10 @@ PreintegrationTable PreintegrationTable::build(const TransferFunction& tf, doubl
     tau[j] = sum / kSamplesPerSubBin;
     color[j] = sum > 0.0 ? weighted / sum : glm::dvec3(0.0);
   }
+  table.pointTau_.resize(size);
+  for (int i = 0; i < size; ++i) table.pointTau_[i] = tf.extinctionAt(scalarOf(lo, hi, size, i));
+  table.tauPrefix_.assign(size_t(bins) + 1, 0.0);
+  for (int j = 0; j < bins; ++j) table.tauPrefix_[j + 1] = table.tauPrefix_[j] + tau[j];
   // Diagonals are independent; two threads take alternate ones (their cost grows with delta,
   // so alternating keeps the halves even).
   auto diagonals = [&](int first, int stride) {
@@ -96,6 +102,12 @@ PreintegrationTable PreintegrationTable::build(const TransferFunction& tf, doubl
   diagonals(1, 2);
   helper.join();
   return table;
+}
+
+double PreintegrationTable::meanExtinction(int front, int back) const {
+  if (front == back) return pointTau_[size_t(front)];
+  const int a = std::min(front, back) * substeps_, b = std::max(front, back) * substeps_;
+  return (tauPrefix_[size_t(b)] - tauPrefix_[size_t(a)]) / double(b - a);
 }
 
 glm::dvec4 integrateSegment(const TransferFunction& tf, double sFront, double sBack,

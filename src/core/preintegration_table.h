@@ -37,11 +37,17 @@ class PreintegrationTable {
   }
   // Row-major: entries()[front * size + back].
   const std::vector<glm::vec4>& entries() const { return entries_; }
+  // The segment's mean extinction per world unit, int_0^1 tau(s(w)) dw, as the entries take
+  // it (the point value for front == back, the sub-bin means between), in double precision:
+  // alpha = 1 - exp(-d * meanExtinction) for any length d, also where alpha rounds to 1.
+  double meanExtinction(int front, int back) const;
 
  private:
-  int size_ = 0;
+  int size_ = 0, substeps_ = 1;
   double lo_ = 0.0, hi_ = 0.0, distance_ = 1.0;
   std::vector<glm::vec4> entries_;
+  std::vector<double> pointTau_;   // tau at each table index
+  std::vector<double> tauPrefix_;  // sums of the sub-bins' mean tau, from index 0
 };
 
 // Reference: the same integrals for one segment by `steps` midpoint steps along the ray, each

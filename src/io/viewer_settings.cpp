@@ -57,6 +57,7 @@ std::string viewerSettingsToJson(const ViewerSettings& s) {
                  {"cutoff", s.cutoff},
                  {"kernel_width", s.kernelWidth},
                  {"classification", s.classification},
+                 {"slab_preintegration", s.slabPreintegration},
                  {"slab_thickness", s.slabThickness},
                  {"background", {s.background.r, s.background.g, s.background.b}},
                  {"level_of_detail", s.levelOfDetail}};
@@ -98,6 +99,7 @@ ViewerSettings viewerSettingsFromJson(const std::string& text, const std::string
       if (std::isfinite(width)) s.kernelWidth = std::clamp(width, kMinKernelWidth, kMaxKernelWidth);
       const std::string classification = r.value("classification", s.classification);
       if (classification == "pre" || classification == "post") s.classification = classification;
+      s.slabPreintegration = r.value("slab_preintegration", s.slabPreintegration);
       const double slab = r.value("slab_thickness", s.slabThickness);
       if (std::isfinite(slab)) s.slabThickness = std::clamp(slab, 0.05, 1000.0);
       if (r.contains("background")) {

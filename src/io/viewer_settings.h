@@ -24,6 +24,7 @@ struct ViewerSettings {
   double cutoff = 4.0;
   double kernelWidth = 1.0;            // RenderSettings' default
   std::string classification = "pre";  // "pre" or "post"
+  bool slabPreintegration = true;      // RenderSettings' default
   double slabThickness = 2.0;          // RenderSettings' default
   glm::dvec3 background{0.0};
   bool levelOfDetail = true;  // coarser level while moving

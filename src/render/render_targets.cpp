@@ -7,8 +7,23 @@
 
 namespace ewa {
 
-void RenderTargets::resize(int w, int h) {
-  if (w == width && h == height && output) return;
+void RenderTargets::resize(int w, int h, bool paired) {
+  if (!(w == width && h == height && output)) createImages(w, h);
+  if (paired == pairedSlabs()) return;
+  slabOtherFbo = gl::Framebuffer();
+  slabOther = gl::Texture();
+  if (!paired) return;
+  slabOther = gl::Texture::create2D(GL_RGBA32F, w, h);
+  slabOther.setFilter(GL_NEAREST, GL_NEAREST);
+  slabOtherFbo = gl::Framebuffer::create();
+  slabOtherFbo.attachColor(0, slabOther);
+  slabOtherFbo.attachColor(1, slabNormal);
+  slabOtherFbo.attachDepth(stencil, GL_DEPTH_STENCIL_ATTACHMENT);
+  slabOtherFbo.checkComplete();
+  gl::checkGlError("second slab image");
+}
+
+void RenderTargets::createImages(int w, int h) {
   // Say which limit a too-large image breaks, before GL fails with a bare error code.
   GLint maxTexture = 0, maxViewport[2] = {0, 0};
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);

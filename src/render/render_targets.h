@@ -20,12 +20,26 @@ struct RenderTargets {
   gl::Framebuffer slabFbo;
   gl::Framebuffer accumFbo;
   gl::Framebuffer outputFbo;
+  // Pre-integration between slabs: a second slab image, so that consecutive slabs alternate
+  // between the two and the slab pass reads the one before (same normal and stencil images).
+  gl::Texture slabOther;
+  gl::Framebuffer slabOtherFbo;
 
-  // (Re)creates the images when the size changes; throws gl::GlError if incomplete.
-  void resize(int w, int h);
-  // Bytes the images hold: two RGBA32F, one RGBA16F, one RGBA8, one depth-stencil (4 bytes)
-  // per pixel.
-  size_t bytes() const { return size_t(width) * size_t(height) * (16 + 8 + 16 + 4 + 4); }
+  // (Re)creates the images when the size changes, and the second slab image when `pairedSlabs`
+  // asks for it (freed when not); throws gl::GlError if incomplete.
+  void resize(int w, int h, bool pairedSlabs = false);
+  bool pairedSlabs() const { return bool(slabOther); }
+  // Slab image `i` (0 or 1) and its framebuffer; 1 only with paired slabs.
+  const gl::Texture& slabImage(int i) const { return i ? slabOther : slab; }
+  gl::Framebuffer& slabTarget(int i) { return i ? slabOtherFbo : slabFbo; }
+  // Bytes the images hold: two RGBA32F (three with paired slabs), one RGBA16F, one RGBA8, one
+  // depth-stencil (4 bytes) per pixel.
+  size_t bytes() const {
+    return size_t(width) * size_t(height) * (16 + 8 + 16 + 4 + 4 + (pairedSlabs() ? 16 : 0));
+  }
+
+ private:
+  void createImages(int w, int h);
 };
 
 }  // namespace ewa

@@ -68,6 +68,10 @@ struct RenderSettings {
   double xrayScale = 1.0;
   Lighting lighting;              // per splat, every frame: the camera moves the light
   Classification classification;  // gradients and surface voxels: rebuilds the splats
+  // Post-classification only: each pixel's values in two consecutive slabs are classified as a
+  // pair through the pre-integration table (a linear ray segment between them), so thin
+  // transfer-function peaks between slab values are not missed; off: each slab's mean alone.
+  bool slabPreintegration = true;
   double surfaceOpacity = 0.95;   // opacity of the surface-splat layer seen along its normal
   ShearWarpSettings shearWarp;    // read by the shear-warp renderer only
   ClipRegion clip;                // crop box and clipping planes (world space), every renderer

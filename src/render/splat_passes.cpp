@@ -164,16 +164,23 @@ void SplatRenderer::scissorTo(const PixelRect& r) {
   glScissor(r.x0, r.y0, std::max(0, r.x1 - r.x0), std::max(0, r.y1 - r.y0));
 }
 
-void SplatRenderer::beginCompositeSlab() {
+int SplatRenderer::slabImageOf(size_t s) const {
+  return frame_.pairedSlabs ? int(s % 2) : 0;
+}
+
+void SplatRenderer::beginCompositeSlab(size_t s) {
   // Whole-image clears: llvmpipe clears a whole image by marking its tiles (scissored, it
   // writes every pixel: engine's frames took 6% longer), GPUs have fast clears too, and on
   // llvmpipe (Mesa 22.3) a scissored clear of the second buffer left old normal sums behind.
+  // With paired slabs this also empties, outside this slab's rectangle, the image the next
+  // slab reads as its neighbour's.
   const GLfloat zero[4] = {0, 0, 0, 0};
+  gl::Framebuffer& target = targets_.slabTarget(slabImageOf(s));
   glDisable(GL_SCISSOR_TEST);
-  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
-  targets_.slabFbo.clearColor(0, zero);
+  glBindFramebuffer(GL_FRAMEBUFFER, target.id());
+  target.clearColor(0, zero);
   if (postClassified(frame_.settings) && frame_.settings.lighting.enabled)
-    targets_.slabFbo.clearColor(1, zero);
+    target.clearColor(1, zero);
 }
 
 void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
@@ -182,7 +189,7 @@ void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
   range.count = count;
   scissorToSlab(s);
   // Inside a slab: order-independent sums of each kernel's share of optical depth and light.
-  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabTarget(slabImageOf(s)).id());
   glBlendFunc(GL_ONE, GL_ONE);
   const int gpuSlab = frame_.indirect ? int(slabPosition(s)) : -1;  // then a whole slab
   setSlabUniforms(range, true, true, gpuSlab);
@@ -203,6 +210,14 @@ void SplatRenderer::endCompositeSlab(size_t s) {
     glBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_ONE);
   else
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  targets_.slabImage(slabImageOf(s)).bindUnit(1);
+  if (frame_.pairedSlabs) {
+    // The slab drawn before this one, if it is this one's neighbour in depth (empty slabs are
+    // not drawn): each pixel's segment runs between the two slabs' values.
+    targets_.slabImage(slabImageOf(s + 1)).bindUnit(kNeighbourSlabUnit);
+    const bool adjacent = s > 0 && slabsAdjacent(slabInOrder(s - 1), slabInOrder(s));
+    slabProgram_.setInt("uNeighbour", adjacent ? 1 : 0);
+  }
   glUseProgram(slabProgram_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   ++stats_.slabsDrawn;
@@ -231,8 +246,14 @@ void SplatRenderer::endCompositeSlab(size_t s) {
   }
 }
 
+bool SplatRenderer::slabsAdjacent(const Slab& a, const Slab& b) {
+  const double gap =
+      std::min(std::abs(a.farDepth - b.nearDepth), std::abs(b.farDepth - a.nearDepth));
+  return gap <= 1e-6 * std::max(a.farDepth - a.nearDepth, b.farDepth - b.nearDepth);
+}
+
 void SplatRenderer::drawCompositeSlab(size_t s) {
-  beginCompositeSlab();
+  beginCompositeSlab(s);
   drawSlabRange(s, 0, slabInOrder(s).count);
   endCompositeSlab(s);
 }
@@ -270,7 +291,7 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
         ++frame_.nextSlab;
         continue;
       }
-      if (frame_.nextEntry == 0) beginCompositeSlab();
+      if (frame_.nextEntry == 0) beginCompositeSlab(s);
       const double left = double(count - frame_.nextEntry);
       const double fit =
           measured ? (allowed - expected) / msPerEntry_ : double(kFirstChunk - entries);
@@ -372,6 +393,7 @@ void SplatRenderer::bindFrameState() {
   attributeBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
   occlusion_.bindForDrawing(kOpaqueUnit);
   transferTexture_.bindUnit(0);
+  if (frame_.pairedSlabs) pairTable_.bindUnit(kPairTableUnit);
   glBindVertexArray(emptyVao_.id());
   glViewport(0, 0, frame_.width, frame_.height);
   glEnable(GL_PROGRAM_POINT_SIZE);
@@ -397,7 +419,8 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   frame_.settings = settings;
   frame_.width = width;
   frame_.height = height;
-  targets_.resize(width, height);
+  frame_.pairedSlabs = postClassified(settings) && settings.slabPreintegration;
+  targets_.resize(width, height, frame_.pairedSlabs);
   stats_ = RenderStats{};
   const GLfloat zero[4] = {0, 0, 0, 0};
   glDisable(GL_SCISSOR_TEST);  // the whole images are cleared
@@ -409,6 +432,13 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     const auto classifyStart = Clock::now();
     rebuildSplats(classification);
     stats_.classifyMs = millisecondsSince(classifyStart);
+  }
+  if (!frame_.pairedSlabs) pairTable_.release();
+  if (volume_ && frame_.pairedSlabs) {
+    const double thickness = std::max(0.25, settings.slabThickness) *
+                             footprintParams(settings, volume_->spacing()).minSpacing;
+    stats_.classifyMs +=
+        pairTable_.prepare(tf_, volume_->minValue(), volume_->maxValue(), thickness);
   }
   auto stageStart = Clock::now();
   const Projection proj = camera.projection(width, height);

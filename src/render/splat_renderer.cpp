@@ -84,7 +84,8 @@ RenderStats SplatRenderer::stats() const {
   RenderStats s = stats_;
   s.gpuBytes = size_t(splatBuffer_.size() + orderBuffer_.size() + attributeBuffer_.size()) +
                size_t(kTransferSamples) * 4 * sizeof(float) + targets_.bytes() +
-               (gpuPartition_ ? gpuPartition_->bytes() : 0) + occlusion_.bytes();
+               (gpuPartition_ ? gpuPartition_->bytes() : 0) + occlusion_.bytes() +
+               pairTable_.bytes();
   return s;
 }
 
@@ -126,6 +127,7 @@ void SplatRenderer::uploadTransferTexture() {
   const double lo = volume_->minValue(), hi = volume_->maxValue();
   const std::vector<glm::vec4> table = tf_.bake(lo, hi, kTransferSamples);
   transferTexture_.subImage1D(0, 0, kTransferSamples, GL_RGBA, GL_FLOAT, table.data());
+  pairTable_.invalidate();
 }
 
 void SplatRenderer::updateTransferTexture(const TransferFunction& tf) {
@@ -228,10 +230,20 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
   p.setFloat("uDiffuse", float(light.diffuse));
   p.setFloat("uSpecular", float(light.specular));
   p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
+  p.setInt("uPreintegrated", frame_.pairedSlabs ? 1 : 0);
+  // Samplers of different types must not share a unit, used or not.
+  p.setInt("uPairTable", int(kPairTableUnit));
+  p.setInt("uNeighbourSlab", int(kNeighbourSlabUnit));
+  if (frame_.pairedSlabs) {
+    // Front to back the slab drawn before is the segment's front, back to front its back.
+    p.setInt("uNeighbourInFront", settings.order == CompositeOrder::FrontToBack ? 1 : 0);
+  }
   // The normal sums are written only where they are used.
   const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   const GLenum first[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
-  glNamedFramebufferDrawBuffers(targets_.slabFbo.id(), 2, post && light.enabled ? both : first);
+  for (int i = 0; i < (frame_.pairedSlabs ? 2 : 1); ++i)
+    glNamedFramebufferDrawBuffers(targets_.slabTarget(i).id(), 2,
+                                  post && light.enabled ? both : first);
 }
 
 void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex) {

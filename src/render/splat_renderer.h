@@ -21,6 +21,7 @@
 #include "render/occlusion_pyramid.h"
 #include "render/render_targets.h"
 #include "render/renderer.h"
+#include "render/slab_pair_table.h"
 
 namespace ewa {
 
@@ -130,7 +131,12 @@ class SplatRenderer : public Renderer {
   // (drawSlabRange: entries [first, first + count) of them, into the cleared slab buffer), the
   // blend under (over) the image and, every few slabs, the early-termination check.
   void drawCompositeSlab(size_t slabIndex);
-  void beginCompositeSlab();
+  void beginCompositeSlab(size_t slabIndex);
+  // Which slab image (RenderTargets::slabImage) slab `slabIndex` of the drawing order sums
+  // into: alternating with paired slabs, else 0.
+  int slabImageOf(size_t slabIndex) const;
+  // True when one slab ends where the other begins (in either order).
+  static bool slabsAdjacent(const Slab& a, const Slab& b);
   // Each slab's rectangle (frame_.slabRects, in frame_.slabs order) for this frame's slabs.
   void computeSlabRects();
   // Scissor to the rectangle of slab `slabIndex` (drawing order), when slab scissors are on.
@@ -176,6 +182,9 @@ class SplatRenderer : public Renderer {
   gl::Program boxProgram_;
   OcclusionPyramid occlusion_;
   static constexpr unsigned kOpaqueUnit = 4;  // texture unit of the occlusion pyramid
+  SlabPairTable pairTable_;                   // post-classification with pre-integration
+  static constexpr unsigned kPairTableUnit = 5;
+  static constexpr unsigned kNeighbourSlabUnit = 6;  // paired slabs: the slab drawn before
   gl::VertexArray emptyVao_;
   gl::Buffer splatBuffer_;
   gl::Buffer orderBuffer_;
@@ -204,11 +213,12 @@ class SplatRenderer : public Renderer {
     std::vector<PixelRect> slabRects;  // per slab: the pixels its kernels can reach
     PixelRect markRect;                // slabs composited since the last opacity marks
     bool gpuSlabs = false;             // slabs come from gpuPartition_
-    bool indirect = false;    // GPU slabs whose counts only the GPU knows (empty ones kept)
-    size_t nextSlab = 0;      // composite: the next slab in drawing order
-    bool terminated = false;  // early termination ended the slab loop
-    bool occlusion = false;   // occlusion culling in this frame (front to back, terminating)
-    int nextQuery = 0;        // of queries_, the one the next check issues
+    bool indirect = false;     // GPU slabs whose counts only the GPU knows (empty ones kept)
+    size_t nextSlab = 0;       // composite: the next slab in drawing order
+    bool terminated = false;   // early termination ended the slab loop
+    bool occlusion = false;    // occlusion culling in this frame (front to back, terminating)
+    bool pairedSlabs = false;  // post-classified with pre-integration: two slab images
+    int nextQuery = 0;         // of queries_, the one the next check issues
     bool queryIssued[2] = {false, false};  // lagged termination: a result not yet read
     size_t nextEntry = 0;                  // X-ray and MIP: the next entry of the single slab
     double meanEntries = 0.0;              // per slab: the weight of a slab's whole-image passes

@@ -105,6 +105,10 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
     if (post) settings.classification.surface = SurfaceCriterion::None;
     changed = true;
   }
+  ImGui::BeginDisabled(!post);
+  ImGui::SameLine();
+  changed |= ImGui::Checkbox("pre-integrated", &settings.slabPreintegration);
+  ImGui::EndDisabled();
   changed |= sliderDouble("slab (voxels)", &settings.slabThickness, 0.25, 8.0, "%.2f",
                           ImGuiSliderFlags_Logarithmic);
 

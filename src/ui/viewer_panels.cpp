@@ -53,6 +53,7 @@ void ViewerWindow::saveSettings() {
   saved_.cutoff = settings_.cutoff;
   saved_.kernelWidth = settings_.kernelWidth;
   saved_.classification = classificationModeName(settings_.classification.mode);
+  saved_.slabPreintegration = settings_.slabPreintegration;
   saved_.slabThickness = settings_.slabThickness;
   saved_.background = settings_.background;
   saved_.levelOfDetail = levelOfDetail_;

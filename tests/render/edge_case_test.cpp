@@ -68,16 +68,6 @@ class EdgeCases : public RenderFixture {
   }
 };
 
-Volume floatVolume(int n, const std::function<float(int, int, int)>& value) {
-  std::vector<float> v(size_t(n) * n * n);
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) v[i + n * (j + size_t(n) * k)] = value(i, j, k);
-  std::vector<uint8_t> bytes(v.size() * 4);
-  std::memcpy(bytes.data(), v.data(), bytes.size());
-  return Volume({n, n, n}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::Float32, std::move(bytes));
-}
-
 TransferFunction rampTf(double lo, double hi, double alpha) {
   TransferFunction tf;
   tf.opacity = {{lo, 0.0}, {hi, alpha}};

@@ -55,6 +55,15 @@ Volume makeVolume(int nx, int ny, int nz, glm::dvec3 spacing,
   return Volume({nx, ny, nz}, spacing, glm::dvec3(0.0), ScalarType::UInt8, std::move(bytes));
 }
 
+Volume floatVolume(int n, const std::function<float(int, int, int)>& value) {
+  std::vector<uint8_t> bytes(size_t(n) * n * n * 4);
+  float* v = reinterpret_cast<float*>(bytes.data());
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) v[i + n * (j + size_t(n) * k)] = value(i, j, k);
+  return Volume({n, n, n}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::Float32, std::move(bytes));
+}
+
 TransferFunction whiteTf(double alpha, double unit) {
   TransferFunction tf;
   tf.opacity = {{0.0, 0.0}, {1.0, alpha}, {255.0, alpha}};

@@ -26,6 +26,8 @@ class RenderFixture : public ::testing::Test {
 // A volume of n^3 uint8 voxels with value `inside` where pred(i,j,k) holds and 0 elsewhere.
 Volume makeVolume(int nx, int ny, int nz, glm::dvec3 spacing,
                   const std::function<bool(int, int, int)>& pred);
+// An n^3 float32 volume of unit spacing with value(i, j, k) at each voxel.
+Volume floatVolume(int n, const std::function<float(int, int, int)>& value);
 // A transfer function: value 0 transparent; values >= 1 white with opacity `alpha` per unit
 // distance `unit`.
 TransferFunction whiteTf(double alpha, double unit);

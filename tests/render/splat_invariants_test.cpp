@@ -119,7 +119,7 @@ TEST_F(SplatInvariants, QuadPathDrawsTheSameFootprintAsPointSprites) {
 // Opacity at the image centre of a slab of constant extinction seen head-on.
 double centreOpacity(SplatRenderer& r, const Volume& vol, const TransferFunction& tf,
                      FilterMode filter, bool ortho, double kernelWidth,
-                     ClassificationMode classification) {
+                     ClassificationMode classification, bool slabPreintegration = true) {
   r.setVolume(vol);
   r.setTransferFunction(tf);
   Camera cam;
@@ -132,6 +132,7 @@ double centreOpacity(SplatRenderer& r, const Volume& vol, const TransferFunction
   settings.filter = filter;
   settings.kernelWidth = kernelWidth;
   settings.classification.mode = classification;
+  settings.slabPreintegration = slabPreintegration;
   r.render(cam, settings, 48, 48);
   const Image8 img = r.readImage();
   double sum = 0.0;
@@ -149,16 +150,21 @@ TEST_F(SplatInvariants, HomogeneousMediumHasOpacityOneMinusExpTauL) {
     const TransferFunction tf = whiteTf(1.0 - std::exp(-tau), 1.0);
     const double expected = 1.0 - std::exp(-tau * L);
     // Post-classified, the medium's constant value comes out of every slab's weighted mean
-    // exactly and the weights sum to the ray's length: the same tolerance holds.
-    for (ClassificationMode c : {ClassificationMode::Pre, ClassificationMode::Post})
+    // exactly and the weights sum to the ray's length: the same tolerance holds, with slab
+    // pre-integration (constant pairs: the segment lengths sum to the same) and without.
+    const std::pair<ClassificationMode, bool> variants[] = {{ClassificationMode::Pre, true},
+                                                            {ClassificationMode::Post, true},
+                                                            {ClassificationMode::Post, false}};
+    for (auto [c, pairs] : variants)
       for (FilterMode f : {FilterMode::Ewa, FilterMode::Swan, FilterMode::Plain})
         for (bool ortho : {false, true})
           for (double width : kWidths) {
-            const double got = centreOpacity(*renderer(), vol, tf, f, ortho, width, c);
+            const double got = centreOpacity(*renderer(), vol, tf, f, ortho, width, c, pairs);
             EXPECT_NEAR(got, expected, 0.03 * expected)
                 << "spacing " << s << ", " << filterModeName(f)
                 << (ortho ? " orthographic" : " perspective") << ", kernel width " << width << ", "
-                << classificationModeName(c) << "-classified";
+                << classificationModeName(c) << "-classified"
+                << (pairs ? "" : " without slab pre-integration");
           }
   }
 }
@@ -266,6 +272,18 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   settings.lighting.enabled = false;
   renderer()->render(cam, settings, 96, 64);
   EXPECT_EQ(renderer()->stats().gpuBytes, unshaded);
+  // Post-classified with slab pre-integration: a second RGBA32F slab image and the 256x256
+  // RGBA32F table; without it, both are freed.
+  settings.classification.mode = ClassificationMode::Post;
+  settings.slabPreintegration = false;
+  renderer()->render(cam, settings, 96, 64);
+  const size_t single = renderer()->stats().gpuBytes;
+  settings.slabPreintegration = true;
+  renderer()->render(cam, settings, 96, 64);
+  EXPECT_EQ(renderer()->stats().gpuBytes - single, size_t(96 * 64) * 16 + 256 * 256 * 16);
+  settings.slabPreintegration = false;
+  renderer()->render(cam, settings, 96, 64);
+  EXPECT_EQ(renderer()->stats().gpuBytes, single);
 }
 
 }  // namespace

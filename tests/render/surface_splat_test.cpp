@@ -10,15 +10,6 @@ namespace {
 
 class SurfaceSplats : public RenderFixture {};
 
-Volume floatVolume(int n, const std::function<float(int, int, int)>& f) {
-  std::vector<uint8_t> bytes(size_t(n) * n * n * 4);
-  float* v = reinterpret_cast<float*>(bytes.data());
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) v[i + n * (j + size_t(n) * k)] = f(i, j, k);
-  return Volume({n, n, n}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::Float32, std::move(bytes));
-}
-
 // Transparent everywhere: only the surface splats are drawn, white.
 TransferFunction clearTf() {
   TransferFunction tf;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/opacity_correction.h"
+#include "transfer_function_samples.h"
 
 namespace ewa {
 namespace {
@@ -16,15 +17,6 @@ TransferFunction smoothTf() {
   tf.opacity = {{0.0, 0.0}, {40.0, 0.05}, {200.0, 0.6}, {255.0, 0.9}};
   tf.color = {{0.0, {0.2, 0.3, 1.0}}, {128.0, {1.0, 0.5, 0.1}}, {255.0, {1.0, 1.0, 1.0}}};
   tf.opacityUnitDistance = 1.0;
-  return tf;
-}
-
-// Transparent except a thin opaque peak at 100 (two table intervals wide).
-TransferFunction peakTf() {
-  TransferFunction tf;
-  tf.opacity = {{0.0, 0.0}, {99.0, 0.0}, {100.0, 0.95}, {101.0, 0.0}, {255.0, 0.0}};
-  tf.color = {{0.0, {1.0, 1.0, 1.0}}, {100.0, {0.9, 0.2, 0.1}}, {255.0, {0.0, 0.0, 1.0}}};
-  tf.opacityUnitDistance = 0.5;
   return tf;
 }
 
@@ -52,7 +44,7 @@ std::vector<int> everyNth(int n) {
 
 TEST(PreintegrationTable, ReferenceIntegrationHasConverged) {
   // The reference itself: doubling its steps changes no entry by more than 1e-5.
-  for (const TransferFunction& tf : {smoothTf(), peakTf()})
+  for (const TransferFunction& tf : {smoothTf(), test::thinPeakTf()})
     for (double sf : {0.0, 98.5, 150.0})
       for (double sb : {101.5, 30.0, 255.0}) {
         const glm::dvec4 a = integrateSegment(tf, sf, sb, 1.0, kReferenceSteps);
@@ -66,16 +58,17 @@ TEST(PreintegrationTable, EntriesMatchNumericalIntegrationWithin1e3) {
   EXPECT_LT(maxEntryError(smoothTf(), 3.0, everyNth(17)), 1e-3);
   // Around the peak, where the integrand changes fastest.
   const std::vector<int> nearPeak = {0, 1, 60, 97, 98, 99, 100, 101, 102, 103, 150, 254, 255};
-  EXPECT_LT(maxEntryError(peakTf(), 1.0, nearPeak), 1e-3);
-  EXPECT_LT(maxEntryError(peakTf(), 4.0, nearPeak), 1e-3);
+  EXPECT_LT(maxEntryError(test::thinPeakTf(), 1.0, nearPeak), 1e-3);
+  EXPECT_LT(maxEntryError(test::thinPeakTf(), 4.0, nearPeak), 1e-3);
 }
 
 TEST(PreintegrationTable, ThinPeakIsCaughtBetweenDistantValues) {
   // A segment from 0 to 255 crosses the peak: nearly opaque, red, although neither end is.
-  const PreintegrationTable t = PreintegrationTable::build(peakTf(), 0.0, 255.0, 256, 1.0);
+  const PreintegrationTable t =
+      PreintegrationTable::build(test::thinPeakTf(), 0.0, 255.0, 256, 1.0);
   EXPECT_EQ(t.at(0, 0).a, 0.0f);
   EXPECT_EQ(t.at(255, 255).a, 0.0f);
-  const glm::dvec4 exact = integrateSegment(peakTf(), 0.0, 255.0, 1.0, kReferenceSteps);
+  const glm::dvec4 exact = integrateSegment(test::thinPeakTf(), 0.0, 255.0, 1.0, kReferenceSteps);
   EXPECT_GT(exact.a, 0.005);
   EXPECT_NEAR(t.at(0, 255).a, exact.a, 1e-4);
   EXPECT_NEAR(t.at(255, 0).r, exact.r, 1e-4);

@@ -1,0 +1,33 @@
+// SlabPairTable: builds the pre-integration texels and uploads them as a linear 2D texture.
+#include "render/slab_pair_table.h"
+
+#include <chrono>
+
+#include "core/preintegration_table.h"
+#include "core/slab_preintegration.h"
+
+namespace ewa {
+
+double SlabPairTable::prepare(const TransferFunction& tf, double lo, double hi, double distance) {
+  if (valid_ && lo == lo_ && hi == hi_ && distance == distance_) return 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  // A constant volume has lo == hi: any range holds its one value at coordinate 0.
+  const double top = hi > lo ? hi : lo + 1.0;
+  const std::vector<glm::vec4> texels =
+      slabPairTexels(PreintegrationTable::build(tf, lo, top, kSize, distance));
+  if (!texture_) {
+    texture_ = gl::Texture::create2D(GL_RGBA32F, kSize, kSize);
+    texture_.setFilter(GL_LINEAR, GL_LINEAR);
+    texture_.setWrap(GL_CLAMP_TO_EDGE);
+  }
+  // Row f (texture y) holds the front value f, column b (x) the back value.
+  texture_.subImage2D(0, 0, 0, kSize, kSize, GL_RGBA, GL_FLOAT, texels.data());
+  valid_ = true;
+  lo_ = lo;
+  hi_ = hi;
+  distance_ = distance;
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+}  // namespace ewa

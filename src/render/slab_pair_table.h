@@ -1,0 +1,37 @@
+// SlabPairTable: the pre-integration texture of post-classified slabs (slab_preintegration.h),
+// built on the CPU and uploaded when the transfer function or the slab thickness changes.
+#pragma once
+
+#include <cstddef>
+
+#include "core/transfer_function.h"
+#include "gl/texture.h"
+
+namespace ewa {
+
+class SlabPairTable {
+ public:
+  // Entries per axis: the shear-warp renderer's default, 1 MB of RGBA32F.
+  static constexpr int kSize = 256;
+
+  // The transfer function changed: the next prepare() builds the table again.
+  void invalidate() { valid_ = false; }
+  // Frees the texture (frames without pre-integration).
+  void release() {
+    texture_ = gl::Texture();
+    valid_ = false;
+  }
+  // Makes the texture hold the table of `tf` over values [lo, hi] (mapped to texture
+  // coordinates 0..1) for segments `distance` world units long (a slab's thickness), unless it
+  // already does. Returns the milliseconds it took (0 when the table was kept).
+  double prepare(const TransferFunction& tf, double lo, double hi, double distance);
+  void bindUnit(unsigned unit) const { texture_.bindUnit(unit); }
+  size_t bytes() const { return texture_ ? size_t(kSize) * kSize * 16 : 0; }
+
+ private:
+  gl::Texture texture_;
+  bool valid_ = false;
+  double lo_ = 0.0, hi_ = 0.0, distance_ = 0.0;
+};
+
+}  // namespace ewa
