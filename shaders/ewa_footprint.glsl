@@ -78,6 +78,16 @@ float slabFraction(float mu, float sigma, float zNear, float zFar, bool openNear
   return 0.5 * (hi - lo);
 }
 
+// The slab's share split at its middle plane: (front half, back half); they add up to
+// slabFraction's, with one erf more.
+vec2 slabHalves(float mu, float sigma, float zNear, float zFar, bool openNear, bool openFar) {
+  float s = 1.0 / (sqrt(2.0) * sigma);
+  float hi = openFar ? 1.0 : erfApprox((zFar - mu) * s);
+  float mid = erfApprox((0.5 * (zNear + zFar) - mu) * s);
+  float lo = openNear ? -1.0 : erfApprox((zNear - mu) * s);
+  return 0.5 * vec2(mid - lo, hi - mid);
+}
+
 bool cullKernel(vec3 u, float radius, Projection proj, FootprintParams params) {
   float depth = -u.z;
   if (depth <= params.cullDepth) return true;

@@ -1,6 +1,7 @@
 // Turns a slab's sums into premultiplied colour and opacity: pre-classified, its optical depth
-// and light; post-classified, its kernel-weighted mean value classified per pixel, alone or
-// with the neighbouring slab's through the pre-integration table.
+// and light; post-classified, its kernel-weighted mean value classified per pixel, alone or,
+// pre-integrated, as ray segments between the mean values of the slab's halves and the
+// neighbouring slab's.
 #include "headlight.glsl"
 
 uniform sampler2D uSlab;
@@ -11,7 +12,8 @@ uniform bool uOrthographic;
 uniform float uFocalPixels;
 uniform vec2 uViewport;
 // Pre-integration (post only): the table of slab_preintegration.h, x the back value, y the
-// front; rgb colour per unit opacity, a mean extinction per world unit.
+// front; rgb colour per unit opacity, a mean extinction per world unit. The slabs then hold
+// (weight * value, weight) of their front half, then of their back half.
 uniform bool uPreintegrated;
 uniform sampler2D uPairTable;
 uniform sampler2D uNeighbourSlab;  // the sums of the slab drawn before this one
@@ -20,16 +22,63 @@ uniform bool uNeighbourInFront;    // front to back: it lies in front
 
 out vec4 outColor;
 
-// Classifies the ray segment whose value runs from `front` to `back` (normalized): colour per
-// unit opacity and mean extinction, as classifySlabPair (slab_preintegration.cpp) reads them.
-vec4 pairLookup(float front, float back) {
+vec3 shade(vec3 color) {
+  if (!uShading) return color;
+  vec3 normal = texelFetch(uSlabNormal, ivec2(gl_FragCoord.xy), 0).xyz;
+  vec2 ray = (gl_FragCoord.xy - 0.5 * uViewport) / uFocalPixels;
+  vec3 toEye = uOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(vec3(-ray, 1.0));
+  float len = length(normal);
+  return headlightShade(color, len > 0.0 ? normal / len : vec3(0.0), toEye);
+}
+
+// Premultiplied colour and opacity of the ray segment `length` world units long whose value
+// runs from `front` to `back` (normalized), as classifySlabPair (slab_preintegration.cpp).
+vec4 segment(float front, float back, float length) {
   float n = float(textureSize(uPairTable, 0).x);
-  return texture(uPairTable, (vec2(back, front) * (n - 1.0) + 0.5) / n);
+  vec4 t = texture(uPairTable, (vec2(back, front) * (n - 1.0) + 0.5) / n);
+  float alpha = 1.0 - exp(-max(length, 0.0) * t.a);
+  return vec4(shade(t.rgb) * alpha, alpha);
+}
+
+// Mean values of a slab's halves (front, back); a half without weight takes the other's.
+vec2 halfValues(vec4 s) {
+  float front = s.g > 0.0 ? s.r / s.g : s.b / s.a;
+  float back = s.a > 0.0 ? s.b / s.a : front;
+  return clamp(vec2(front, back), 0.0, 1.0);
+}
+
+vec4 preintegrated(vec4 s) {
+  // Segments run between the halves' values: from the neighbour's nearer half to this slab's
+  // front half, over the front half's covered length, then to the back half over the back
+  // half's (back to front: from the front half to the back half, then on to the neighbour).
+  // Over all slabs the lengths add up as without pre-integration, so a constant value gives
+  // the same picture, while a transfer-function peak between two values is integrated
+  // instead of missed.
+  vec2 own = halfValues(s);
+  vec2 other = uNeighbourInFront ? own.xx : own.yy;
+  if (uNeighbour) {
+    vec4 n = texelFetch(uNeighbourSlab, ivec2(gl_FragCoord.xy), 0);
+    if (n.g + n.a > 0.0) other = halfValues(n);
+  }
+  vec4 first, second;
+  if (uNeighbourInFront) {
+    first = segment(other.y, own.x, s.g);
+    second = segment(own.x, own.y, s.a);
+  } else {
+    first = segment(own.x, own.y, s.g);
+    second = segment(own.y, other.x, s.a);
+  }
+  return first + (1.0 - first.a) * second;
 }
 
 void main() {
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 s = texelFetch(uSlab, pixel, 0);
+  vec4 s = texelFetch(uSlab, ivec2(gl_FragCoord.xy), 0);
+  if (uPost && uPreintegrated) {
+    if (!(s.g + s.a > 0.0)) discard;
+    outColor = preintegrated(s);
+    if (!(outColor.a > 0.0)) discard;
+    return;  // blended front to back: (1 - dst.a, 1)
+  }
   float depth = max(s.a, 0.0);
   if (!(depth > 0.0)) discard;
   vec3 color;
@@ -37,30 +86,9 @@ void main() {
     // depth is the weight: the length of the ray through the slab the kernels cover, less where
     // they barely reach (silhouettes keep their share and stay anti-aliased).
     float value = clamp(s.r / depth, 0.0, 1.0);
-    vec4 tf;
-    if (uPreintegrated) {
-      // The segment from the neighbouring slab's value to this one's, as long as this slab's
-      // covered length: over all slabs the lengths add up as without pre-integration, so a
-      // constant value gives the same picture, while a transfer-function peak between two
-      // slab values is integrated instead of missed.
-      float other = value;
-      if (uNeighbour) {
-        vec4 n = texelFetch(uNeighbourSlab, pixel, 0);
-        if (n.a > 0.0) other = clamp(n.r / n.a, 0.0, 1.0);
-      }
-      tf = uNeighbourInFront ? pairLookup(other, value) : pairLookup(value, other);
-    } else {
-      int size = textureSize(uTransfer, 0);
-      tf = texture(uTransfer, (value * float(size - 1) + 0.5) / float(size));
-    }
-    color = tf.rgb;
-    if (uShading) {
-      vec3 normal = texelFetch(uSlabNormal, pixel, 0).xyz;
-      vec2 ray = (gl_FragCoord.xy - 0.5 * uViewport) / uFocalPixels;
-      vec3 toEye = uOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(vec3(-ray, 1.0));
-      float len = length(normal);
-      color = headlightShade(color, len > 0.0 ? normal / len : vec3(0.0), toEye);
-    }
+    int size = textureSize(uTransfer, 0);
+    vec4 tf = texture(uTransfer, (value * float(size - 1) + 0.5) / float(size));
+    color = shade(tf.rgb);
     depth *= tf.a;
     if (!(depth > 0.0)) discard;
   } else {

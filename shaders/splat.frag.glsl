@@ -13,6 +13,7 @@ uniform bool uOpenTails;    // the first and last slab of a kernel take its tail
 uniform float uSlabNear;
 uniform float uSlabFar;
 uniform bool uPost;         // post-classification: sum weight * value and weight * normal
+uniform bool uHalves;       // post, pre-integrated: the sums of the slab's two halves apart
 
 flat in vec2 vCenter;
 flat in vec3 vConic;
@@ -25,7 +26,8 @@ flat in int vOpen;
 
 // Blended additively in a slab. pre: (colour * optical depth, optical depth). post: (weight *
 // value, 0, 0, weight) and (weight * normal, 0), the weight being the optical depth a unit
-// extinction would give (world length of the ray the kernel covers).
+// extinction would give (world length of the ray the kernel covers); with halves (weight *
+// value, weight) of the front half, then of the back half.
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out vec4 outNormal;
 
@@ -37,12 +39,26 @@ void main() {
   float mu = vDepth.x + dot(vDepth.yz, dx);
   bool openNear = !uSplitDepth || (uOpenTails && (vOpen & 1) != 0);
   bool openFar = !uSplitDepth || (uOpenTails && (vOpen & 2) != 0);
-  // Cropped or clipped: the slab's share of the kernel on the kept side, in one erf difference.
-  if (uClipCount > 0)
+  // The slab's share of the kernel (cropped or clipped: on the kept side), in erf differences.
+  vec2 halves = vec2(0.0);  // with uHalves: w of the front and back halves
+  if (uHalves) {
+    float mid = 0.5 * (uSlabNear + uSlabFar);
+    if (uClipCount > 0) {
+      vec2 kept = clippedDepths(gl_FragCoord.xy);
+      halves = vec2(
+          clippedSlabFraction(mu, vDepthSigma, uSlabNear, mid, openNear, false, kept),
+          clippedSlabFraction(mu, vDepthSigma, mid, uSlabFar, false, openFar, kept));
+    } else {
+      halves = slabHalves(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar);
+    }
+    halves *= w;
+    w = halves.x + halves.y;
+  } else if (uClipCount > 0) {
     w *= clippedSlabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar,
                              clippedDepths(gl_FragCoord.xy));
-  else if (uSplitDepth)
+  } else if (uSplitDepth) {
     w *= slabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar);
+  }
   if (uMode == 2) {
     outColor = vec4(vValue * w, 0.0, 0.0, 0.0);  // blended with GL_MAX
     outNormal = vec4(0.0);
@@ -50,7 +66,9 @@ void main() {
   }
   float depth = vAmplitude * w;
   if (uPost) {
-    outColor = vec4(vValue * depth, 0.0, 0.0, depth);
+    vec2 d = vAmplitude * halves;
+    outColor = uHalves ? vec4(vValue * d.x, d.x, vValue * d.y, d.y)
+                       : vec4(vValue * depth, 0.0, 0.0, depth);
     outNormal = vec4(vColor * depth, 0.0);
     return;
   }

@@ -18,9 +18,11 @@ int referenceMargin(const QualityOptions& o) {
   return int(std::ceil(4.0 * o.sigma));
 }
 
-FloatImage renderFloat(SplatRenderer& renderer, const Camera& camera, FilterMode filter, int size) {
+FloatImage renderFloat(SplatRenderer& renderer, const Camera& camera, FilterMode filter, int size,
+                       double kernelWidth) {
   RenderSettings settings;
   settings.filter = filter;
+  settings.kernelWidth = kernelWidth;
   renderer.render(camera, settings, size, size);
   return toFloatImage(renderer.readImage());
 }
@@ -82,8 +84,8 @@ FloatImage rayReference(const Volume& sheet, const TransferFunction& tf, const C
 
 FloatImage renderReference(SplatRenderer& renderer, const Camera& camera, FilterMode filter,
                            const QualityOptions& o) {
-  return lowPassAndCrop(renderFloat(renderer, widened(camera, o), filter, referenceRenderSize(o)),
-                        o);
+  return lowPassAndCrop(
+      renderFloat(renderer, widened(camera, o), filter, referenceRenderSize(o), o.kernelWidth), o);
 }
 
 SceneQuality measureScene(SplatRenderer& renderer, const QualityScene& scene,
@@ -122,7 +124,9 @@ SceneQuality measureScene(SplatRenderer& renderer, const QualityScene& scene,
   for (FilterMode filter : {FilterMode::Ewa, FilterMode::Swan, FilterMode::Plain}) {
     ModeResult m;
     m.name = filterModeName(filter);
-    auto render = [&](const Camera& c) { return renderFloat(renderer, c, filter, o.size); };
+    auto render = [&](const Camera& c) {
+      return renderFloat(renderer, c, filter, o.size, o.kernelWidth);
+    };
     m.image = render(camera);
     fillErrors(&m, q.reference.image, q.regions);
     if (o.frames > 0) m.flicker = flickerOf(render, m.image, camera, o, q.regions.beyondK);

@@ -9,6 +9,7 @@
 #include "app/bench_support.h"
 #include "app/quality_benchmark.h"
 #include "app/quality_report.h"
+#include "core/kernel_lattice.h"
 #include "gl/shader_library.h"
 #include "platform/headless_context.h"
 #include "render/gl_limits.h"
@@ -54,6 +55,9 @@ int run(int argc, char** argv) {
   app.add_option("--sheet-opacity", o.sheetOpacity,
                  "Opacity of one voxel of the sheets, replacing their own 0.98")
       ->check(CLI::Range(0.001, 0.999));
+  app.add_option("--kernel-width", o.kernelWidth,
+                 "Splat kernel sigma in voxel spacings, 0.3 to 2 (default: ewaview's, 1)")
+      ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
   app.add_flag("--no-reference-flicker", noReferenceFlicker,
                "Skip rendering the reference at every move (its own flicker)");
   app.add_flag("--no-splat-reference", noSplatReference,
@@ -96,9 +100,9 @@ int run(int argc, char** argv) {
   std::printf(
       "# %s; %dx%d, reference integrated along %dx%d rays a pixel (%d with margin), Gaussian "
       "sigma %.2f px; "
-      "%d moves of %.3f px; sheet opacity %s\n\n",
+      "%d moves of %.3f px; sheet opacity %s; kernel width %.2f\n\n",
       context->description().c_str(), o.size, o.size, o.supersample, o.supersample, needed, o.sigma,
-      o.frames, o.stepPixels, opacity.c_str());
+      o.frames, o.stepPixels, opacity.c_str(), o.kernelWidth);
   std::vector<SceneQuality> results;
   for (const QualityScene& scene : scenes) {
     const SyntheticVolume volume = makeSyntheticVolume(scene.spec);

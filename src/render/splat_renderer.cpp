@@ -206,6 +206,7 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setInt("uMode", int(settings.mode));
   setClipUniforms(p, settings.clip, *volume_, camera, proj);
   p.setInt("uPost", postClassified(settings) ? 1 : 0);
+  p.setInt("uHalves", frame_.pairedSlabs ? 1 : 0);
   p.setInt("uAttributes", attributesUploaded_ ? 1 : 0);
   occlusion_.setUniforms(p, kOpaqueUnit, false);  // until the frame's first pyramid
 }
