@@ -22,7 +22,7 @@ class SlabPairTable {
     valid_ = false;
   }
   // Makes the texture hold the table of `tf` over values [lo, hi] (mapped to texture
-  // coordinates 0..1) for segments `distance` world units long (a slab's thickness), unless it
+  // coordinates 0..1) for segments `distance` world units long (half a slab), unless it
   // already does. Returns the milliseconds it took (0 when the table was kept).
   double prepare(const TransferFunction& tf, double lo, double hi, double distance);
   void bindUnit(unsigned unit) const { texture_.bindUnit(unit); }

@@ -213,7 +213,7 @@ void SplatRenderer::endCompositeSlab(size_t s) {
   targets_.slabImage(slabImageOf(s)).bindUnit(1);
   if (frame_.pairedSlabs) {
     // The slab drawn before this one, if it is this one's neighbour in depth (empty slabs are
-    // not drawn): each pixel's segment runs between the two slabs' values.
+    // not drawn): a segment runs from its nearer half's value to this slab's.
     targets_.slabImage(slabImageOf(s + 1)).bindUnit(kNeighbourSlabUnit);
     const bool adjacent = s > 0 && slabsAdjacent(slabInOrder(s - 1), slabInOrder(s));
     slabProgram_.setInt("uNeighbour", adjacent ? 1 : 0);
@@ -435,10 +435,12 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   }
   if (!frame_.pairedSlabs) pairTable_.release();
   if (volume_ && frame_.pairedSlabs) {
-    const double thickness = std::max(0.25, settings.slabThickness) *
-                             footprintParams(settings, volume_->spacing()).minSpacing;
+    // Segments run between the values of half slabs: the table's colours (their
+    // self-attenuation) are for that length.
+    const double halfSlab = 0.5 * std::max(0.25, settings.slabThickness) *
+                            footprintParams(settings, volume_->spacing()).minSpacing;
     stats_.classifyMs +=
-        pairTable_.prepare(tf_, volume_->minValue(), volume_->maxValue(), thickness);
+        pairTable_.prepare(tf_, volume_->minValue(), volume_->maxValue(), halfSlab);
   }
   auto stageStart = Clock::now();
   const Projection proj = camera.projection(width, height);
