@@ -1,6 +1,7 @@
 // Orientation: orthonormalizing and un-reflecting directions, and the volume-frame camera.
 #include "core/volume_orientation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <glm/geometric.hpp>
@@ -17,16 +18,30 @@ bool isOrthonormal(const glm::dmat3& d, double tolerance) {
   return true;
 }
 
+namespace {
+
+// `v` divided by its largest component, so that lengths and dot products cannot overflow
+// (a header's 1e247 squared is not a double); zero if it has no finite largest component.
+glm::dvec3 scaledDown(const glm::dvec3& v) {
+  const double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  return std::isfinite(m) && m > 0.0 ? v / m : glm::dvec3(0.0);
+}
+
+}  // namespace
+
 glm::dmat3 orthonormalized(const glm::dmat3& d) {
   const double det = glm::determinant(d);
   if (!std::isfinite(det) || std::fabs(det) < 1e-12) return glm::dmat3(1.0);
-  glm::dvec3 x = glm::normalize(d[0]);
-  glm::dvec3 y = d[1] - glm::dot(d[1], x) * x;
+  const glm::dvec3 a = scaledDown(d[0]), b = scaledDown(d[1]);
+  if (a == glm::dvec3(0.0) || b == glm::dvec3(0.0)) return glm::dmat3(1.0);
+  const glm::dvec3 x = glm::normalize(a);
+  glm::dvec3 y = b - glm::dot(b, x) * x;
   if (glm::length(y) < 1e-9) return glm::dmat3(1.0);
   y = glm::normalize(y);
   glm::dvec3 z = glm::cross(x, y);
   if (det < 0.0) z = -z;
-  return glm::dmat3(x, y, z);
+  const glm::dmat3 r(x, y, z);
+  return isOrthonormal(r, 1e-9) ? r : glm::dmat3(1.0);
 }
 
 namespace {

@@ -64,6 +64,21 @@ TEST(VolumeOrientation, ShearIsOrthonormalizedWithAWarning) {
   EXPECT_EQ(orthonormalized(glm::dmat3(0.0)), glm::dmat3(1.0));
 }
 
+// A header's huge entry (found by fuzzing a MetaImage TransformMatrix) must not overflow the
+// lengths into a non-rotation: squared, 3.8e247 is not a double.
+TEST(VolumeOrientation, HugeEntriesStillGiveARotation) {
+  const glm::dmat3 d(glm::dvec3(1, 7.5e-16, 4.4e-16), glm::dvec3(7.5e-16, -1, 3.8e247),
+                     glm::dvec3(0, 0, -1));
+  const glm::dmat3 r = orthonormalized(d);
+  EXPECT_TRUE(isOrthonormal(r, 1e-12));
+  EXPECT_NEAR(r[0].x, 1.0, 1e-12);             // the first axis is kept
+  EXPECT_NEAR(std::fabs(r[1].z), 1.0, 1e-12);  // the second points where its huge entry does
+  for (double big : {1e200, 1e300, 1.7e308}) {
+    const glm::dmat3 m(glm::dvec3(big, 0, 0), glm::dvec3(0, big, 1), glm::dvec3(0, 0, 1));
+    EXPECT_TRUE(isOrthonormal(orthonormalized(m), 1e-12)) << big;
+  }
+}
+
 TEST(VolumeOrientation, CameraInVolumeFrameUndoesTheRigidMap) {
   Volume v({3, 2, 4}, glm::dvec3(1.0), glm::dvec3(5, 0, 0), ScalarType::UInt8, rampBytes());
   v.setDirection(glm::dmat3(glm::dvec3(0, 1, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1)), true);
