@@ -22,22 +22,33 @@ uniform bool uNeighbourInFront;    // front to back: it lies in front
 
 out vec4 outColor;
 
-vec3 shade(vec3 color) {
-  if (!uShading) return color;
+// This pixel's unit normal (from the slab's summed normals; zero without shading, which
+// headlightShade then skips) and direction to the eye: fetched once, shared by the segments.
+struct Surface {
+  vec3 normal;
+  vec3 toEye;
+};
+
+Surface pixelSurface() {
+  Surface p = Surface(vec3(0.0), vec3(0.0, 0.0, 1.0));
+  if (!uShading) return p;
   vec3 normal = texelFetch(uSlabNormal, ivec2(gl_FragCoord.xy), 0).xyz;
   vec2 ray = (gl_FragCoord.xy - 0.5 * uViewport) / uFocalPixels;
-  vec3 toEye = uOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(vec3(-ray, 1.0));
   float len = length(normal);
-  return headlightShade(color, len > 0.0 ? normal / len : vec3(0.0), toEye);
+  p.normal = len > 0.0 ? normal / len : vec3(0.0);
+  if (!uOrthographic) p.toEye = normalize(vec3(-ray, 1.0));
+  return p;
 }
+
+vec3 shade(vec3 color, Surface p) { return headlightShade(color, p.normal, p.toEye); }
 
 // Premultiplied colour and opacity of the ray segment `length` world units long whose value
 // runs from `front` to `back` (normalized), as classifySlabPair (slab_preintegration.cpp).
-vec4 segment(float front, float back, float length) {
+vec4 segment(float front, float back, float length, Surface p) {
   float n = float(textureSize(uPairTable, 0).x);
   vec4 t = texture(uPairTable, (vec2(back, front) * (n - 1.0) + 0.5) / n);
   float alpha = 1.0 - exp(-max(length, 0.0) * t.a);
-  return vec4(shade(t.rgb) * alpha, alpha);
+  return vec4(shade(t.rgb, p) * alpha, alpha);
 }
 
 // Mean values of a slab's halves (front, back); a half without weight takes the other's.
@@ -60,13 +71,14 @@ vec4 preintegrated(vec4 s) {
     vec4 n = texelFetch(uNeighbourSlab, ivec2(gl_FragCoord.xy), 0);
     if (n.g + n.a > 0.0) other = halfValues(n);
   }
+  Surface p = pixelSurface();
   vec4 first, second;
   if (uNeighbourInFront) {
-    first = segment(other.y, own.x, s.g);
-    second = segment(own.x, own.y, s.a);
+    first = segment(other.y, own.x, s.g, p);
+    second = segment(own.x, own.y, s.a, p);
   } else {
-    first = segment(own.x, own.y, s.g);
-    second = segment(own.y, other.x, s.a);
+    first = segment(own.x, own.y, s.g, p);
+    second = segment(own.y, other.x, s.a, p);
   }
   return first + (1.0 - first.a) * second;
 }
@@ -88,7 +100,7 @@ void main() {
     float value = clamp(s.r / depth, 0.0, 1.0);
     int size = textureSize(uTransfer, 0);
     vec4 tf = texture(uTransfer, (value * float(size - 1) + 0.5) / float(size));
-    color = shade(tf.rgb);
+    color = shade(tf.rgb, pixelSurface());
     depth *= tf.a;
     if (!(depth > 0.0)) discard;
   } else {

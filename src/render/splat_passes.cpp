@@ -114,7 +114,6 @@ void SplatRenderer::setSlabLoopState() {
   const RenderSettings& settings = frame_.settings;
   const bool terminate =
       settings.order == CompositeOrder::FrontToBack && settings.terminationOpacity < 1.0;
-  targets_.slab.bindUnit(1);
   targets_.slabNormal.bindUnit(3);
   slabProgram_.setInt("uSlab", 1);
   targets_.accum.bindUnit(2);
@@ -434,14 +433,6 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     stats_.classifyMs = millisecondsSince(classifyStart);
   }
   if (!frame_.pairedSlabs) pairTable_.release();
-  if (volume_ && frame_.pairedSlabs) {
-    // Segments run between the values of half slabs: the table's colours (their
-    // self-attenuation) are for that length.
-    const double halfSlab = 0.5 * std::max(0.25, settings.slabThickness) *
-                            footprintParams(settings, volume_->spacing()).minSpacing;
-    stats_.classifyMs +=
-        pairTable_.prepare(tf_, volume_->minValue(), volume_->maxValue(), halfSlab);
-  }
   auto stageStart = Clock::now();
   const Projection proj = camera.projection(width, height);
   frame_.proj = proj;
@@ -458,6 +449,11 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     extent.rotation = camera.rotation();
     extent.spacing = sp;
     extent.kernelWidth = settings.kernelWidth;
+    // Segments run between the values of half slabs: the table's colours (their
+    // self-attenuation) are for that length.
+    if (frame_.pairedSlabs)
+      stats_.classifyMs +=
+          pairTable_.prepare(tf_, volume_->minValue(), volume_->maxValue(), 0.5 * thickness);
     syncAttributes(settings);
     stageStart = Clock::now();
     frame_.gpuSlabs = gpuPartition();
