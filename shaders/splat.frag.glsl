@@ -1,5 +1,6 @@
 // Splat fragment: optical depth g * |det J| * windowed Gaussian * the share of the kernel's ray
 // integral inside this slab, and emitted colour, added up; or for MIP the value, maximized.
+#include "splat_variant.glsl"
 #include "ewa_footprint.glsl"
 #include "clip_region.glsl"
 
@@ -7,13 +8,10 @@
 layout(early_fragment_tests) in;
 
 uniform float uCutoff;
-uniform int uMode;          // 0 sum of optical depth and light, 2 MIP
 uniform bool uSplitDepth;   // composite: take only the share between the slab's planes
 uniform bool uOpenTails;    // the first and last slab of a kernel take its tails
 uniform float uSlabNear;
 uniform float uSlabFar;
-uniform bool uPost;         // post-classification: sum weight * value and weight * normal
-uniform bool uHalves;       // post, pre-integrated: the sums of the slab's two halves apart
 
 flat in vec2 vCenter;
 flat in vec3 vConic;
@@ -40,10 +38,10 @@ void main() {
   bool openNear = !uSplitDepth || (uOpenTails && (vOpen & 1) != 0);
   bool openFar = !uSplitDepth || (uOpenTails && (vOpen & 2) != 0);
   // The slab's share of the kernel (cropped or clipped: on the kept side), in erf differences.
-  vec2 halves = vec2(0.0);  // with uHalves: w of the front and back halves
-  if (uHalves) {
+  vec2 halves = vec2(0.0);  // with kHalves: w of the front and back halves
+  if (kHalves) {
     float mid = 0.5 * (uSlabNear + uSlabFar);
-    if (uClipCount > 0) {
+    if (kClip) {
       vec2 kept = clippedDepths(gl_FragCoord.xy);
       halves = vec2(
           clippedSlabFraction(mu, vDepthSigma, uSlabNear, mid, openNear, false, kept),
@@ -53,21 +51,21 @@ void main() {
     }
     halves *= w;
     w = halves.x + halves.y;
-  } else if (uClipCount > 0) {
+  } else if (kClip) {
     w *= clippedSlabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar,
                              clippedDepths(gl_FragCoord.xy));
   } else if (uSplitDepth) {
     w *= slabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar);
   }
-  if (uMode == 2) {
+  if (kMip) {
     outColor = vec4(vValue * w, 0.0, 0.0, 0.0);  // blended with GL_MAX
     outNormal = vec4(0.0);
     return;
   }
   float depth = vAmplitude * w;
-  if (uPost) {
+  if (kPost) {
     vec2 d = vAmplitude * halves;
-    outColor = uHalves ? vec4(vValue * d.x, d.x, vValue * d.y, d.y)
+    outColor = kHalves ? vec4(vValue * d.x, d.x, vValue * d.y, d.y)
                        : vec4(vValue * depth, 0.0, 0.0, depth);
     outNormal = vec4(vColor * depth, 0.0);
     return;

@@ -1,4 +1,5 @@
 // Per-splat setup shared by the point-sprite and quad vertex shaders.
+#include "splat_variant.glsl"
 #include "ewa_footprint.glsl"
 #include "clip_region.glsl"
 #include "headlight.glsl"
@@ -31,9 +32,8 @@ uniform uint uFirst;         // offset of this draw's slab in order[]
 uniform int uSlabIndex;      // >= 0: the slab's offset is slabFirst[uSlabIndex] instead
 uniform sampler1D uTransfer; // rgb + extinction tau per world unit
 uniform float uSurfaceTau;   // optical depth of a surface-splat layer along its normal
-// Post-classification (composite only): splats carry their value and camera-space normal with
-// unit extinction; the slab pass classifies the kernel-weighted mean per pixel.
-uniform bool uPost;
+// Post-classification (kPost, composite only): splats carry their value and camera-space normal
+// with unit extinction; the slab pass classifies the kernel-weighted mean per pixel.
 // The attributes are uploaded only while a frame uses them (shading or surface splats); else
 // every splat is an unshaded volume splat and the buffer is not read.
 uniform bool uAttributes;
@@ -72,11 +72,11 @@ bool setupSplat(uint n, out Footprint fp) {
   bool surface = nzKind.y >= 1.0;
   fp.visible = false;
   // Post: zero-opacity voxels next to visible ones shape the mean value; they stay.
-  if (!uPost && !surface && !(tf.a > 0.0)) return false;
+  if (!kPost && !surface && !(tf.a > 0.0)) return false;
   vec3 world = uOrigin + vec3(ijk) * uSpacing;
   mat3 rotation = mat3(uView);
   mat3 cov = uCovariance;
-  float mass = (uPost ? 1.0 : tf.a) * uVoxelVolume;
+  float mass = (kPost ? 1.0 : tf.a) * uVoxelVolume;
   if (surface) {
     world += normal * ((nzKind.y - 3.0) * uMinSpacing);
     cov = surfaceCovariance(rotation, uKernelSigma, normal);
@@ -98,7 +98,7 @@ bool setupSplat(uint n, out Footprint fp) {
   vConic = fp.conic;
   vAmplitude = mass * fp.peak;
   vec3 toEye = uOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(-u);
-  vColor = uPost ? rotation * normal : headlightShade(tf.rgb, rotation * normal, toEye);
+  vColor = kPost ? rotation * normal : headlightShade(tf.rgb, rotation * normal, toEye);
   vValue = value;
   vDepth = vec3(fp.depth, fp.depthSlope);
   vDepthSigma = fp.depthSigma;

@@ -121,7 +121,7 @@ int run(int argc, char** argv) {
   CLI::App app{
       "ewaview-compare: EWA splatting beside bare point sprites, shear-warp and VTK's CPU and "
       "GPU ray casters on the same views (median ms per frame and ratios)"};
-  std::string data = sharedDataDir(), imagesDir, backend = "osmesa";
+  std::string data = sharedDataDir(), imagesDir, backend = "osmesa", shaderDir;
   std::string script = VtkRunner::defaultScript();
   std::vector<std::string> volumes, synthetic;
   std::vector<int> sizes = {512, 1024};
@@ -166,6 +166,7 @@ int run(int argc, char** argv) {
                  "EWA: each slab's passes cut to the pixels its kernels reach (on, default) or "
                  "over the whole image (off)")
       ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--shader-dir", shaderDir, "Load shaders from this folder (development)");
   addBackendOption(app, backend);
   CLI11_PARSE(app, argc, argv);
   if (volumes.empty() && synthetic.empty()) volumes = {"engine", "bonsai", "cthead"};
@@ -189,7 +190,7 @@ int run(int argc, char** argv) {
   report.context = context->description();
   if (!orthographic)
     report.notes.push_back("shear-warp draws the perspective view as the parallel one");
-  const gl::ShaderLibrary shaders;
+  const gl::ShaderLibrary shaders(shaderDir);
   SplatRenderer ewa(shaders);
   ewa.setSlabScissor(slabRects == "on");
   char ewaText[200];

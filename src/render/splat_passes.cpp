@@ -7,6 +7,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <limits>
 
+#include "core/clip_share.h"
 #include "core/kernel_reach.h"
 #include "core/volume_orientation.h"
 #include "gl/gl_error.h"
@@ -238,7 +239,7 @@ void SplatRenderer::endCompositeSlab(size_t s) {
     if (frame_.occlusion) {
       // The pyramid of the pixels just marked: later slabs' splats over them are culled.
       occlusion_.build(targets_.accum, float(settings.terminationOpacity));
-      for (gl::Program* p : {&pointProgram_, &quadProgram_})
+      for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()})
         occlusion_.setUniforms(*p, kOpaqueUnit, true);
     }
     if (terminationCheck()) frame_.terminated = true;
@@ -492,8 +493,14 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
         occlusion_.resize(width, height);
         occlusion_.resetCount();
       }
-      setCommonUniforms(pointProgram_, camera, proj, settings);
-      setCommonUniforms(quadProgram_, camera, proj, settings);
+      SplatVariant variant;
+      variant.mip = settings.mode == RenderMode::Mip;
+      variant.post = postClassified(settings);
+      variant.halves = frame_.pairedSlabs;
+      variant.clip = !halfSpacesInVolumeFrame(settings.clip, *volume_).empty();
+      splatPrograms_.select(variant);
+      setCommonUniforms(splatPrograms_.point(), camera, proj, settings);
+      setCommonUniforms(splatPrograms_.quad(), camera, proj, settings);
       setSlabPassUniforms(proj, settings);
       frame_.drawSplats = true;
       setFrameWeights();

@@ -41,8 +41,7 @@ bool parsePartitionMode(const std::string& text, PartitionMode* mode) {
 
 SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
     : shaders_(shaders),
-      pointProgram_(shaders.program("splat_point.vert.glsl", "splat.frag.glsl")),
-      quadProgram_(shaders.program("splat_quad.vert.glsl", "splat.frag.glsl")),
+      splatPrograms_(shaders_),
       slabProgram_(shaders.program("fullscreen.vert.glsl", "slab_composite.frag.glsl")),
       markProgram_(shaders.program("fullscreen.vert.glsl", "opacity_mark.frag.glsl")),
       finalProgram_(shaders.program("fullscreen.vert.glsl", "final_composite.frag.glsl")),
@@ -203,10 +202,7 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setFloat("uDiffuse", float(light.diffuse));
   p.setFloat("uSpecular", float(light.specular));
   p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
-  p.setInt("uMode", int(settings.mode));
   setClipUniforms(p, settings.clip, *volume_, camera, proj);
-  p.setInt("uPost", postClassified(settings) ? 1 : 0);
-  p.setInt("uHalves", frame_.pairedSlabs ? 1 : 0);
   p.setInt("uAttributes", attributesUploaded_ ? 1 : 0);
   occlusion_.setUniforms(p, kOpaqueUnit, false);  // until the frame's first pyramid
 }
@@ -248,7 +244,7 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
 }
 
 void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex) {
-  for (gl::Program* p : {&pointProgram_, &quadProgram_}) {
+  for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()}) {
     p->setUInt("uFirst", slab.first);
     p->setInt("uSlabIndex", slabIndex);
     p->setInt("uSplitDepth", split ? 1 : 0);
@@ -262,19 +258,19 @@ void SplatRenderer::drawSplats(const Slab& slab, bool quads, int slabIndex) {
   if (slabIndex >= 0) {
     // The counts are on the GPU: its commands draw them (bound by bindFrameState).
     const auto command = [](size_t offset) { return reinterpret_cast<const void*>(offset); };
-    glUseProgram(pointProgram_.id());
+    glUseProgram(splatPrograms_.point().id());
     glDrawArraysIndirect(GL_POINTS, command(gpuPartition_->pointCommand(size_t(slabIndex))));
     if (quads) {
-      glUseProgram(quadProgram_.id());
+      glUseProgram(splatPrograms_.quad().id());
       glDrawArraysIndirect(GL_TRIANGLE_STRIP,
                            command(gpuPartition_->quadCommand(size_t(slabIndex))));
     }
     return;
   }
-  glUseProgram(pointProgram_.id());
+  glUseProgram(splatPrograms_.point().id());
   glDrawArrays(GL_POINTS, 0, GLsizei(slab.count));
   if (quads) {
-    glUseProgram(quadProgram_.id());
+    glUseProgram(splatPrograms_.quad().id());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(slab.count));
   }
   stats_.slabEntries += slab.count;

@@ -22,6 +22,7 @@
 #include "render/render_targets.h"
 #include "render/renderer.h"
 #include "render/slab_pair_table.h"
+#include "render/splat_programs.h"
 
 namespace ewa {
 
@@ -174,8 +175,7 @@ class SplatRenderer : public Renderer {
   std::optional<std::pair<double, double>> depthWindow_;
   bool slabScissor_ = true;
 
-  gl::Program pointProgram_;
-  gl::Program quadProgram_;
+  SplatPrograms splatPrograms_;  // the point and quad programs of this frame's variant
   gl::Program slabProgram_;
   gl::Program markProgram_;
   gl::Program finalProgram_;
