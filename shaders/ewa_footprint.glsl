@@ -63,10 +63,15 @@ float surfaceSplatMass(vec3 h, vec3 n, float tauSurface) {
 
 float erfApprox(float x) {
   float ax = abs(x);
-  float t = 1.0 / (1.0 + 0.3275911 * ax);
-  float poly =
-      t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
-  float y = 1.0 - poly * exp(-ax * ax);
+  float p = 1.0 + ax * (0.0705230784 +
+                        ax * (0.0422820123 +
+                              ax * (0.0092705272 +
+                                    ax * (0.0001520143 + ax * (0.0002765672 + ax * 0.0000430638)))));
+  p *= p;
+  p *= p;
+  p *= p;
+  p *= p;
+  float y = 1.0 - 1.0 / p;
   return x < 0.0 ? -y : y;
 }
 

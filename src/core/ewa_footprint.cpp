@@ -81,12 +81,18 @@ double surfaceSplatMass(const glm::dvec3& h, const glm::dvec3& n, double tauSurf
 }
 
 double erfApprox(double x) {
+  // 1 - 1 / p(|x|)^16 with p a polynomial of degree 6: no exp, which costs the shader most.
   const double ax = std::abs(x);
-  const double t = 1.0 / (1.0 + 0.3275911 * ax);
-  const double poly =
-      t *
-      (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
-  const double y = 1.0 - poly * std::exp(-ax * ax);
+  double p =
+      1.0 + ax * (0.0705230784 +
+                  ax * (0.0422820123 +
+                        ax * (0.0092705272 +
+                              ax * (0.0001520143 + ax * (0.0002765672 + ax * 0.0000430638)))));
+  p *= p;  // p^2, p^4, p^8, p^16
+  p *= p;
+  p *= p;
+  p *= p;
+  const double y = 1.0 - 1.0 / p;
   return x < 0.0 ? -y : y;
 }
 
