@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <glm/gtc/type_ptr.hpp>
 #include <limits>
 
@@ -414,6 +415,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   // Splats live in the volume's own frame; the camera moves instead (volume_orientation.h).
   const Camera camera = volume_ ? cameraInVolumeFrame(worldCamera, *volume_) : worldCamera;
   const auto start = Clock::now();
+  waitForPartition();  // a cancelled frame's partition may still be running
   frame_ = FrameState{};
   frame_.camera = camera;
   frame_.settings = settings;
@@ -457,8 +459,9 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
           pairTable_.prepare(tf_, volume_->minValue(), volume_->maxValue(), 0.5 * thickness);
     syncAttributes(settings);
     stageStart = Clock::now();
+    frame_.partitionStart = stageStart;
+    frame_.reach = extent.reach;
     frame_.gpuSlabs = gpuPartition();
-    double nearest = 0.0;
     if (frame_.gpuSlabs) {
       if (!gpuPartition_) gpuPartition_ = std::make_unique<GpuSlabPartition>(shaders_);
       gpuPartition_->build(splatBuffer_, attributeBuffer_, splats.size(),
@@ -468,48 +471,70 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
       frame_.indirect = !gpuPartition_->countsKnown();
       computeSlabRects();
       stats_.splatsDrawn = gpuPartition_->splatCount();
-      nearest = gpuPartition_->nearestCenter();
+      prepareSlabs(gpuPartition_->nearestCenter());
     } else {
-      partition_.build(splats, classified_.attributes, volume_->origin(), camera.viewMatrix(),
-                       thickness, params.cullDepth, extent);
-      const auto& order = partition_.order();
-      if (!order.empty())
-        orderBuffer_.setData(GLsizeiptr(order.size() * sizeof(uint32_t)), order.data(),
-                             GL_STREAM_DRAW);
-      frame_.slabs = partition_.slabs();
-      computeSlabRects();
-      stats_.splatsDrawn = partition_.splatCount();
-      nearest = partition_.nearestCenter();
-    }
-    stats_.splatsTotal = splats.size();
-    stats_.slabs = frame_.slabs.size();
-    stats_.surfaceSplats = classified_.surfaceCount;
-    if (!frame_.slabs.empty()) {
-      stats_.quadPass = 2.0 * pixelReach(extent.reach, proj, nearest) + 0.5 > pointSizeLimit_;
-      frame_.occlusion = occlusionCulling(settings.occlusionCulling) && composite &&
-                         settings.order == CompositeOrder::FrontToBack &&
-                         settings.terminationOpacity < 1.0;
-      if (frame_.occlusion) {
-        occlusion_.resize(width, height);
-        occlusion_.resetCount();
-      }
-      SplatVariant variant;
-      variant.mip = settings.mode == RenderMode::Mip;
-      variant.post = postClassified(settings);
-      variant.halves = frame_.pairedSlabs;
-      variant.clip = !halfSpacesInVolumeFrame(settings.clip, *volume_).empty();
-      splatPrograms_.select(variant);
-      setCommonUniforms(splatPrograms_.point(), camera, proj, settings);
-      setCommonUniforms(splatPrograms_.quad(), camera, proj, settings);
-      setSlabPassUniforms(proj, settings);
-      frame_.drawSplats = true;
-      setFrameWeights();
-      // The partition (its upload or its compute passes and the range read back).
-      stats_.partitionMs = millisecondsSince(stageStart);
+      // On a worker thread: a window's refinement step goes on drawing UI frames meanwhile
+      // (stepFrame takes the result); the splats are not changed while it runs.
+      const glm::dvec3 origin = volume_->origin();
+      const glm::dmat4 view = camera.viewMatrix();
+      const double cullDepth = params.cullDepth;
+      frame_.partitionPending = true;
+      pendingPartition_ = std::async(std::launch::async,
+                                     [this, &splats, origin, view, thickness, cullDepth, extent] {
+                                       partition_.build(splats, classified_.attributes, origin,
+                                                        view, thickness, cullDepth, extent);
+                                     });
     }
   }
   frame_.active = true;
   stats_.renderMs = millisecondsSince(start);
+}
+
+void SplatRenderer::takeCpuPartition() {
+  pendingPartition_.get();  // rethrows what the build threw
+  frame_.partitionPending = false;
+  const auto& order = partition_.order();
+  if (!order.empty())
+    orderBuffer_.setData(GLsizeiptr(order.size() * sizeof(uint32_t)), order.data(), GL_STREAM_DRAW);
+  frame_.slabs = partition_.slabs();
+  computeSlabRects();
+  stats_.splatsDrawn = partition_.splatCount();
+  prepareSlabs(partition_.nearestCenter());
+}
+
+void SplatRenderer::waitForPartition() {
+  if (pendingPartition_.valid()) pendingPartition_.wait();
+}
+
+void SplatRenderer::prepareSlabs(double nearest) {
+  const RenderSettings& settings = frame_.settings;
+  const Projection& proj = frame_.proj;
+  stats_.splatsTotal = classified_.splats.size();
+  stats_.slabs = frame_.slabs.size();
+  stats_.surfaceSplats = classified_.surfaceCount;
+  if (frame_.slabs.empty()) return;
+  stats_.quadPass = 2.0 * pixelReach(frame_.reach, proj, nearest) + 0.5 > pointSizeLimit_;
+  frame_.occlusion =
+      occlusionCulling(settings.occlusionCulling) && settings.mode == RenderMode::Composite &&
+      settings.order == CompositeOrder::FrontToBack && settings.terminationOpacity < 1.0;
+  if (frame_.occlusion) {
+    occlusion_.resize(frame_.width, frame_.height);
+    occlusion_.resetCount();
+  }
+  SplatVariant variant;
+  variant.mip = settings.mode == RenderMode::Mip;
+  variant.post = postClassified(settings);
+  variant.halves = frame_.pairedSlabs;
+  variant.clip = !halfSpacesInVolumeFrame(settings.clip, *volume_).empty();
+  splatPrograms_.select(variant);
+  setCommonUniforms(splatPrograms_.point(), frame_.camera, proj, settings);
+  setCommonUniforms(splatPrograms_.quad(), frame_.camera, proj, settings);
+  setSlabPassUniforms(proj, settings);
+  frame_.drawSplats = true;
+  setFrameWeights();
+  // The partition (its upload or its compute passes and the range read back; on the CPU, from
+  // the worker's start).
+  stats_.partitionMs = millisecondsSince(frame_.partitionStart);
 }
 
 void SplatRenderer::setFrameWeights() {
@@ -536,6 +561,18 @@ void SplatRenderer::takeGpuCounts() {
 bool SplatRenderer::stepFrame(double budgetMs) {
   if (!frame_.active) return true;
   const auto start = Clock::now();
+  if (frame_.partitionPending) {
+    // A budgeted step waits for the worker at most its budget; the window keeps its picture
+    // meanwhile. The upload and the first slabs then share what is left of the budget.
+    const auto budget = std::chrono::duration<double, std::milli>(std::min(budgetMs, 1e9));
+    if (std::isfinite(budgetMs) &&
+        pendingPartition_.wait_for(budget) != std::future_status::ready) {
+      stats_.renderMs += millisecondsSince(start);
+      return false;
+    }
+    takeCpuPartition();
+  }
+  const auto drawStart = Clock::now();  // the splat stage's time leaves the partition out
   // Drawing within a budget needs each slab's count: read the GPU's back (a short wait) before
   // anything is drawn.
   if (frame_.indirect && std::isfinite(budgetMs) && frame_.nextSlab == 0) takeGpuCounts();
@@ -550,14 +587,14 @@ bool SplatRenderer::stepFrame(double budgetMs) {
       // The window draws between steps: leave it the default framebuffer, as render() does.
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glUseProgram(0);
-      stats_.splatMs += millisecondsSince(start);
+      stats_.splatMs += millisecondsSince(drawStart);
       stats_.renderMs += millisecondsSince(start);
       return false;
     }
     // The slab loop's GPU work (splats and the blends between slabs) ends here; waiting for
     // it costs little, since the final pass below waits anyway.
     glFinish();
-    stats_.splatMs += millisecondsSince(start);
+    stats_.splatMs += millisecondsSince(drawStart);
   }
   drawFinalPass();
   if (frame_.occlusion) stats_.entriesCulled = occlusion_.readCount();  // the GPU is idle

@@ -76,6 +76,7 @@ bool SplatRenderer::gpuPartition() const {
 }
 
 SplatRenderer::~SplatRenderer() {
+  waitForPartition();
   if (queries_[0]) glDeleteQueries(2, queries_);
 }
 
@@ -135,6 +136,7 @@ void SplatRenderer::updateTransferTexture(const TransferFunction& tf) {
 }
 
 void SplatRenderer::setSplats(ClassifiedSplats splats, const Classification& classification) {
+  waitForPartition();  // the worker reads the splats being replaced
   classified_ = std::move(splats);
   classification_ = classification;
   splatsDirty_ = false;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <future>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -140,6 +141,12 @@ class SplatRenderer : public Renderer {
   static bool slabsAdjacent(const Slab& a, const Slab& b);
   // Each slab's rectangle (frame_.slabRects, in frame_.slabs order) for this frame's slabs.
   void computeSlabRects();
+  // The frame's slabs are known: statistics, the splat programs' variant and uniforms.
+  void prepareSlabs(double nearestCenter);
+  // The CPU partition's result (waits for the worker): order upload, slabs, prepareSlabs.
+  void takeCpuPartition();
+  // Returns once no partition is running on the worker thread.
+  void waitForPartition();
   // Scissor to the rectangle of slab `slabIndex` (drawing order), when slab scissors are on.
   void scissorToSlab(size_t slabIndex);
   // Scissor to `rect` (enables the scissor test).
@@ -209,6 +216,9 @@ class SplatRenderer : public Renderer {
     Projection proj;
     RenderSettings settings;
     int width = 0, height = 0;
+    KernelReach reach;                 // of this frame's kernels, for the quad pass test
+    bool partitionPending = false;     // the CPU partition runs on pendingPartition_
+    Clock::time_point partitionStart;  // for stats_.partitionMs
     std::vector<Slab> slabs;           // front to back: the CPU partition's, or the GPU's
     std::vector<PixelRect> slabRects;  // per slab: the pixels its kernels can reach
     PixelRect markRect;                // slabs composited since the last opacity marks
@@ -225,6 +235,7 @@ class SplatRenderer : public Renderer {
     double drawnWeight = 0.0, totalWeight = 0.0;  // for frameProgress()
   };
   FrameState frame_;
+  std::future<void> pendingPartition_;  // the CPU partition of frame_ on a worker thread
   // Folds a chunk's measured time into the cost model below.
   void updateCostModel(double ms, size_t entries, size_t slabEnds);
   // Measured, kept across frames (0: not yet): ms per splat entry drawn and per slab finished.
