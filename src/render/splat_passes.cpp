@@ -265,8 +265,14 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
   // image). A chunk holds whole slabs while they fit; a slab too costly for the time left is
   // drawn in ranges of entries over several steps (its sums are order-independent, so the
   // picture is the same).
-  constexpr size_t kFirstChunk = 2048;  // entries drawn before anything is measured
-  constexpr size_t kMinRange = 512;     // the fewest entries a range holds
+  // Entries drawn before anything is measured, and the fewest a range holds; both fewer where
+  // the largest footprints are huge (a small volume filling the window: a few of its splats
+  // cost as much as thousands of an ordinary view's).
+  constexpr double kFirstFragments = 2.0e6;
+  const size_t kFirstChunk =
+      size_t(std::clamp(kFirstFragments / frame_.fragmentsPerEntry, 1.0, 2048.0));
+  const size_t kMinRange = std::min<size_t>(512, kFirstChunk);
+  constexpr size_t kFirstSlabEnds = 4;  // slabs finished before anything is measured
   const size_t n = frame_.slabs.size();
   const bool unlimited = !std::isfinite(budgetMs);
   const auto finished = [&] { return frame_.nextSlab >= n || frame_.terminated; };
@@ -282,8 +288,9 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
       const size_t s = frame_.nextSlab;
       const size_t count = slabInOrder(s).count;
       const double wholeMs = msPerEntry_ * double(count) + msPerSlabEnd_;
-      if (frame_.nextEntry == 0 && (unlimited || (measured && expected + wholeMs <= allowed) ||
-                                    (!measured && entries + count <= kFirstChunk))) {
+      if (frame_.nextEntry == 0 &&
+          (unlimited || (measured && expected + wholeMs <= allowed) ||
+           (!measured && entries + count <= kFirstChunk && ends < kFirstSlabEnds))) {
         drawCompositeSlab(s);
         entries += count;
         ++ends;
@@ -513,7 +520,10 @@ void SplatRenderer::prepareSlabs(double nearest) {
   stats_.slabs = frame_.slabs.size();
   stats_.surfaceSplats = classified_.surfaceCount;
   if (frame_.slabs.empty()) return;
-  stats_.quadPass = 2.0 * pixelReach(frame_.reach, proj, nearest) + 0.5 > pointSizeLimit_;
+  const double reachPixels = pixelReach(frame_.reach, proj, nearest);
+  stats_.quadPass = 2.0 * reachPixels + 0.5 > pointSizeLimit_;
+  const double side = std::min(2.0 * reachPixels + 1.0, double(frame_.width + frame_.height));
+  frame_.fragmentsPerEntry = std::max(1.0, side * side);
   frame_.occlusion =
       occlusionCulling(settings.occlusionCulling) && settings.mode == RenderMode::Composite &&
       settings.order == CompositeOrder::FrontToBack && settings.terminationOpacity < 1.0;

@@ -217,6 +217,7 @@ class SplatRenderer : public Renderer {
     RenderSettings settings;
     int width = 0, height = 0;
     KernelReach reach;                 // of this frame's kernels, for the quad pass test
+    double fragmentsPerEntry = 1.0;    // the largest footprint's square, in pixels (budgets)
     bool partitionPending = false;     // the CPU partition runs on pendingPartition_
     Clock::time_point partitionStart;  // for stats_.partitionMs
     std::vector<Slab> slabs;           // front to back: the CPU partition's, or the GPU's
