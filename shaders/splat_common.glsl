@@ -6,10 +6,21 @@
 #include "kernel_reach.glsl"
 #include "occlusion_test.glsl"
 
-layout(std430, binding = 0) readonly buffer Splats { uvec2 splats[]; };
 layout(std430, binding = 1) readonly buffer Order { uint order[]; };
-// packHalf2x16(nx, ny), packHalf2x16(nz, kind): see src/core/splat_attributes.h.
+// The splat records (i | j << 16, k | value << 16) and attributes (packHalf2x16(nx, ny),
+// packHalf2x16(nz, kind): src/core/splat_attributes.h): storage blocks, or texel buffers where
+// the list is larger than a storage block may be (llvmpipe: 128 MiB, 16.8 M splats).
+#if SPLAT_TEXEL_BUFFER
+uniform usamplerBuffer uSplatTexels;
+uniform usamplerBuffer uAttributeTexels;
+uvec2 splatRecord(uint index) { return texelFetch(uSplatTexels, int(index)).xy; }
+uvec2 splatAttributes(uint index) { return texelFetch(uAttributeTexels, int(index)).xy; }
+#else
+layout(std430, binding = 0) readonly buffer Splats { uvec2 splats[]; };
 layout(std430, binding = 2) readonly buffer Attributes { uvec2 attributes[]; };
+uvec2 splatRecord(uint index) { return splats[index]; }
+uvec2 splatAttributes(uint index) { return attributes[index]; }
+#endif
 // The GPU slab partition's first entry of each slab (src/render/gpu_slab_partition.h).
 layout(std430, binding = 3) readonly buffer SlabFirst { uint slabFirst[]; };
 
@@ -28,7 +39,7 @@ uniform int uFilter;
 uniform float uCutoff;
 uniform float uMinSpacing;
 uniform float uCullDepth;    // kernels at or nearer than this camera depth are culled
-uniform uint uFirst;         // offset of this draw's slab in order[]
+uniform uint uFirst;         // offset of this draw's first entry in order[] (as bound)
 uniform int uSlabIndex;      // >= 0: the slab's offset is slabFirst[uSlabIndex] instead
 uniform sampler1D uTransfer; // rgb + extinction tau per world unit
 uniform float uSurfaceTau;   // optical depth of a surface-splat layer along its normal
@@ -61,12 +72,12 @@ KernelReach kernelReach() {
 bool setupSplat(uint n, out Footprint fp) {
   uint entry = order[(uSlabIndex >= 0 ? slabFirst[uSlabIndex] : uFirst) + n];
   uint index = entry & kIndexMask;
-  uvec2 s = splats[index];
+  uvec2 s = splatRecord(index);
   uvec3 ijk = uvec3(s.x & 0xffffu, s.x >> 16, s.y & 0xffffu);
   float value = float(s.y >> 16) / 65535.0;
   int size = textureSize(uTransfer, 0);
   vec4 tf = texture(uTransfer, (value * float(size - 1) + 0.5) / float(size));
-  uvec2 at = uAttributes ? attributes[index] : uvec2(0u);
+  uvec2 at = uAttributes ? splatAttributes(index) : uvec2(0u);
   vec2 nxy = unpackHalf2x16(at.x), nzKind = unpackHalf2x16(at.y);
   vec3 normal = vec3(nxy, nzKind.x);
   bool surface = nzKind.y >= 1.0;

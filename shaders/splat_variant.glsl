@@ -12,6 +12,9 @@
 #ifndef SPLAT_CLIP
 #define SPLAT_CLIP 0
 #endif
+#ifndef SPLAT_TEXEL_BUFFER
+#define SPLAT_TEXEL_BUFFER 0  // splat records in texel buffers (splat_common.glsl)
+#endif
 const bool kMip = SPLAT_MIP != 0;        // maximum intensity: the value, maximized
 const bool kPost = SPLAT_POST != 0;      // post-classification: values and weights summed
 const bool kHalves = SPLAT_HALVES != 0;  // post, pre-integrated: a slab's two halves apart

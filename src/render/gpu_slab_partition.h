@@ -38,6 +38,8 @@ class GpuSlabPartition {
   // The order list (entries as in SlabPartition::order(), slab by slab), read back (tests).
   std::vector<uint32_t> readOrder() const;
 
+  // The order list itself (drawn through windows of it when the counts are read back).
+  const gl::Buffer& orderBuffer() const { return order_; }
   // Binds the order list (binding 1), the first entries (binding 3) and the draw commands
   // (GL_DRAW_INDIRECT_BUFFER) for drawing.
   void bindForDrawing() const;

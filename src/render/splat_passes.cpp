@@ -393,12 +393,20 @@ bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point sta
 }
 
 void SplatRenderer::bindFrameState() {
-  splatBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  if (frame_.gpuSlabs)
-    gpuPartition_->bindForDrawing();
-  else
-    orderBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-  attributeBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  if (frame_.texelBuffers) {
+    // Texel-buffer views of the same buffers (their stores may have been re-specified).
+    if (!splatTexels_) splatTexels_ = gl::Texture::create(GL_TEXTURE_BUFFER);
+    if (!attributeTexels_) attributeTexels_ = gl::Texture::create(GL_TEXTURE_BUFFER);
+    glTextureBuffer(splatTexels_.id(), GL_RG32UI, splatBuffer_.id());
+    glTextureBuffer(attributeTexels_.id(), GL_RG32UI, attributeBuffer_.id());
+    splatTexels_.bindUnit(kSplatTexelUnit);
+    attributeTexels_.bindUnit(kAttributeTexelUnit);
+  } else {
+    splatBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    attributeBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  }
+  // The CPU partition's order list is bound per draw (drawOrderRange).
+  if (frame_.gpuSlabs) gpuPartition_->bindForDrawing();
   occlusion_.bindForDrawing(kOpaqueUnit);
   transferTexture_.bindUnit(0);
   if (frame_.pairedSlabs) pairTable_.bindUnit(kPairTableUnit);
@@ -468,7 +476,9 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     stageStart = Clock::now();
     frame_.partitionStart = stageStart;
     frame_.reach = extent.reach;
-    frame_.gpuSlabs = gpuPartition();
+    // Splats beyond a storage block: the GPU partition cannot read them, the CPU's can.
+    frame_.texelBuffers = texelBuffers();
+    frame_.gpuSlabs = gpuPartition() && !frame_.texelBuffers;
     if (frame_.gpuSlabs) {
       if (!gpuPartition_) gpuPartition_ = std::make_unique<GpuSlabPartition>(shaders_);
       gpuPartition_->build(splatBuffer_, attributeBuffer_, splats.size(),
@@ -536,6 +546,7 @@ void SplatRenderer::prepareSlabs(double nearest) {
   variant.post = postClassified(settings);
   variant.halves = frame_.pairedSlabs;
   variant.clip = !halfSpacesInVolumeFrame(settings.clip, *volume_).empty();
+  variant.texelBuffers = frame_.texelBuffers;
   splatPrograms_.select(variant);
   setCommonUniforms(splatPrograms_.point(), frame_.camera, proj, settings);
   setCommonUniforms(splatPrograms_.quad(), frame_.camera, proj, settings);

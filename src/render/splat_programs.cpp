@@ -4,7 +4,8 @@
 namespace ewa {
 
 unsigned SplatVariant::key() const {
-  return (mip ? 1u : 0u) | (post ? 2u : 0u) | (halves ? 4u : 0u) | (clip ? 8u : 0u);
+  return (mip ? 1u : 0u) | (post ? 2u : 0u) | (halves ? 4u : 0u) | (clip ? 8u : 0u) |
+         (texelBuffers ? 16u : 0u);
 }
 
 std::string SplatVariant::defines() const {
@@ -16,6 +17,7 @@ std::string SplatVariant::defines() const {
   line("SPLAT_POST", post);
   line("SPLAT_HALVES", halves);
   line("SPLAT_CLIP", clip);
+  line("SPLAT_TEXEL_BUFFER", texelBuffers);
   return text;
 }
 

@@ -1,5 +1,6 @@
 // SplatPrograms: the splat point and quad programs, one pair per variant (MIP, post-classified,
-// halves, clipped), compiled on first use so each frame runs only the code its settings need.
+// halves, clipped, texel buffers), compiled on first use so each frame runs only the code its
+// settings need.
 #pragma once
 
 #include <map>
@@ -12,10 +13,11 @@ namespace ewa {
 
 // What a frame's splat fragments compute, fixed at compile time (shaders/splat_variant.glsl).
 struct SplatVariant {
-  bool mip = false;     // maximum intensity projection
-  bool post = false;    // post-classification: values and weights, not colour and opacity
-  bool halves = false;  // post, pre-integrated between slabs: each slab's two halves apart
-  bool clip = false;    // a crop box or clipping planes cut the kernels
+  bool mip = false;           // maximum intensity projection
+  bool post = false;          // post-classification: values and weights, not colour and opacity
+  bool halves = false;        // post, pre-integrated between slabs: each slab's two halves apart
+  bool clip = false;          // a crop box or clipping planes cut the kernels
+  bool texelBuffers = false;  // splat records and attributes read from texel buffers
 
   unsigned key() const;
   // The #define lines shaders/splat_variant.glsl reads.

@@ -58,10 +58,17 @@ SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
   GLint64 block = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
   maxStorageBlockBytes_ = uint64_t(std::max<GLint64>(block, 0));
+  GLint alignment = 256, texels = 0;
+  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &alignment);
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &texels);
+  storageAlignment_ = uint64_t(std::max(alignment, 4));
+  maxTexelBufferTexels_ = uint64_t(std::max(texels, 0));
+  // Beyond a storage block the splats are read from texel buffers (one texel a splat).
+  const uint64_t bufferBytes =
+      std::max(maxStorageBlockBytes_, maxTexelBufferTexels_ * sizeof(PackedSplat));
   const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
   const uint64_t memory = pages > 0 && pageSize > 0 ? uint64_t(pages) * uint64_t(pageSize) : ~0ull;
-  glMaxSplats_ = maxSplats_ =
-      size_t(std::min(maxStorageBlockBytes_, memory / 2) / sizeof(PackedSplat));
+  glMaxSplats_ = maxSplats_ = size_t(std::min(bufferBytes, memory / 2) / sizeof(PackedSplat));
   glCreateQueries(GL_SAMPLES_PASSED, 2, queries_);
   const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   const std::string renderer = name ? name : "";
@@ -78,6 +85,17 @@ bool SplatRenderer::gpuPartition() const {
 SplatRenderer::~SplatRenderer() {
   waitForPartition();
   if (queries_[0]) glDeleteQueries(2, queries_);
+}
+
+uint64_t SplatRenderer::storageBlockBytes() const {
+  // At least a few alignments: the order list's windows must hold entries.
+  return storageBlockLimit_ > 0
+             ? std::max(std::min(storageBlockLimit_, maxStorageBlockBytes_), 8 * storageAlignment_)
+             : maxStorageBlockBytes_;
+}
+
+bool SplatRenderer::texelBuffers() const {
+  return uint64_t(classified_.splats.size()) * sizeof(PackedSplat) > storageBlockBytes();
 }
 
 RenderStats SplatRenderer::stats() const {
@@ -116,9 +134,9 @@ void SplatRenderer::rebuildSplats(const Classification& classification) {
     splatsDirty_ = true;  // nothing drawn until the volume or transfer function changes
     throw gl::GlError("volume: more than " + std::to_string(maxSplats_) +
                       " visible voxels; the splat buffer (8 bytes a voxel) may hold at most " +
-                      std::to_string(maxStorageBlockBytes_) +
-                      " bytes (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) and half the machine's memory: "
-                      "make more of the volume transparent");
+                      std::to_string(maxSplats_ * sizeof(PackedSplat)) +
+                      " bytes (GL_MAX_TEXTURE_BUFFER_SIZE texels, a storage block, half the "
+                      "machine's memory): make more of the volume transparent");
   }
   uploadSplats();
 }
@@ -206,6 +224,8 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
   setClipUniforms(p, settings.clip, *volume_, camera, proj);
   p.setInt("uAttributes", attributesUploaded_ ? 1 : 0);
+  p.setInt("uSplatTexels", int(kSplatTexelUnit));
+  p.setInt("uAttributeTexels", int(kAttributeTexelUnit));
   occlusion_.setUniforms(p, kOpaqueUnit, false);  // until the frame's first pyramid
 }
 
@@ -247,7 +267,6 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
 
 void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex) {
   for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()}) {
-    p->setUInt("uFirst", slab.first);
     p->setInt("uSlabIndex", slabIndex);
     p->setInt("uSplitDepth", split ? 1 : 0);
     p->setInt("uOpenTails", openTails ? 1 : 0);
@@ -269,13 +288,34 @@ void SplatRenderer::drawSplats(const Slab& slab, bool quads, int slabIndex) {
     }
     return;
   }
-  glUseProgram(splatPrograms_.point().id());
-  glDrawArrays(GL_POINTS, 0, GLsizei(slab.count));
-  if (quads) {
-    glUseProgram(splatPrograms_.quad().id());
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(slab.count));
-  }
+  drawOrderRange(GL_POINTS, false, slab.first, slab.count);
+  if (quads) drawOrderRange(GL_TRIANGLE_STRIP, true, slab.first, slab.count);
   stats_.slabEntries += slab.count;
+}
+
+void SplatRenderer::drawOrderRange(GLenum mode, bool instanced, size_t first, size_t count) {
+  gl::Program& program = instanced ? splatPrograms_.quad() : splatPrograms_.point();
+  glUseProgram(program.id());
+  // Bound from the draw's first entry (rounded down to the binding alignment), so a list
+  // larger than a storage block is drawn through windows of it.
+  const uint64_t window = storageBlockBytes() / sizeof(uint32_t) - storageAlignment_;
+  // The GPU partition's list once its counts are read back (budgeted steps), else the CPU's.
+  const gl::Buffer& order = frame_.gpuSlabs ? gpuPartition_->orderBuffer() : orderBuffer_;
+  while (count > 0) {
+    const uint64_t bytes = uint64_t(first) * sizeof(uint32_t);
+    const uint64_t offset = bytes - bytes % storageAlignment_;
+    const uint64_t skip = (bytes - offset) / sizeof(uint32_t);
+    const size_t n = size_t(std::min<uint64_t>(count, window - skip));
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, order.id(), GLintptr(offset),
+                      GLsizeiptr((skip + n) * sizeof(uint32_t)));
+    program.setUInt("uFirst", uint32_t(skip));
+    if (instanced)
+      glDrawArraysInstanced(mode, 0, 4, GLsizei(n));
+    else
+      glDrawArrays(mode, 0, GLsizei(n));
+    first += n;
+    count -= n;
+  }
 }
 
 Image8 SplatRenderer::readImage() const {

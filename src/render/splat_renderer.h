@@ -95,6 +95,11 @@ class SplatRenderer : public Renderer {
   void setPointSizeLimit(float limit);
   // Test hook: fewer splats allowed than the GL limit, to test the error without a huge volume.
   void setMaxSplats(size_t maxSplats) { maxSplats_ = std::min(glMaxSplats_, maxSplats); }
+  // Test hook: a smaller storage block than the GL's, so that small volumes take the paths of
+  // huge ones (splats in texel buffers, the order list bound in windows); 0: the GL's.
+  void setStorageBlockLimit(uint64_t bytes) { storageBlockLimit_ = bytes; }
+  // True when frames read the splats from texel buffers: they exceed a storage block.
+  bool texelBuffers() const;
   // Test hook: in X-ray mode, sum only each kernel's share between these camera depths (the
   // share one composite slab gets, without open tails). nullopt: the whole kernel.
   void setDepthWindow(std::optional<std::pair<double, double>> window) { depthWindow_ = window; }
@@ -202,7 +207,19 @@ class SplatRenderer : public Renderer {
   size_t glMaxSplats_ = SIZE_MAX;      // splats that fit the GPU's storage block and memory
   size_t maxSplats_ = SIZE_MAX;        // the limit in force (lower in tests)
   uint64_t maxStorageBlockBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
-  unsigned queries_[2] = {0, 0};       // early termination's occlusion queries, used in turn
+  uint64_t storageBlockLimit_ = 0;     // test hook: a lower block size (0: the GL's)
+  uint64_t storageAlignment_ = 256;    // GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT
+  uint64_t maxTexelBufferTexels_ = 0;  // GL_MAX_TEXTURE_BUFFER_SIZE
+  gl::Texture splatTexels_;            // texel-buffer views of splatBuffer_ and attributeBuffer_
+  gl::Texture attributeTexels_;
+  static constexpr unsigned kSplatTexelUnit = 7;
+  static constexpr unsigned kAttributeTexelUnit = 8;
+  // The storage block size in force: the GL's, or the test hook's.
+  uint64_t storageBlockBytes() const;
+  // Draws order entries [first, first + count) of the frame's partition, binding the order list
+  // from the first entry in windows a storage block holds.
+  void drawOrderRange(GLenum mode, bool instanced, size_t first, size_t count);
+  unsigned queries_[2] = {0, 0};  // early termination's occlusion queries, used in turn
   bool laggedTermination_ = false;
   float pointSizeLimit_ = 64.0f;
   float glPointSizeLimit_ = 64.0f;
@@ -217,6 +234,7 @@ class SplatRenderer : public Renderer {
     RenderSettings settings;
     int width = 0, height = 0;
     KernelReach reach;                 // of this frame's kernels, for the quad pass test
+    bool texelBuffers = false;         // splats read from texel buffers (texelBuffers())
     double fragmentsPerEntry = 1.0;    // the largest footprint's square, in pixels (budgets)
     bool partitionPending = false;     // the CPU partition runs on pendingPartition_
     Clock::time_point partitionStart;  // for stats_.partitionMs

@@ -14,19 +14,20 @@ class SplatVariants : public RenderFixture {};
 TEST(SplatVariant, EveryCombinationHasItsOwnKeyAndDefines) {
   std::set<unsigned> keys;
   std::set<std::string> defines;
-  for (unsigned bits = 0; bits < 16; ++bits) {
+  for (unsigned bits = 0; bits < 32; ++bits) {
     SplatVariant v;
     v.mip = bits & 1;
     v.post = bits & 2;
     v.halves = bits & 4;
     v.clip = bits & 8;
+    v.texelBuffers = bits & 16;
     keys.insert(v.key());
     defines.insert(v.defines());
     EXPECT_NE(v.defines().find(std::string("#define SPLAT_CLIP ") + (v.clip ? "1" : "0")),
               std::string::npos);
   }
-  EXPECT_EQ(keys.size(), 16u);
-  EXPECT_EQ(defines.size(), 16u);
+  EXPECT_EQ(keys.size(), 32u);
+  EXPECT_EQ(defines.size(), 32u);
 }
 
 RenderSettings variantSettings(int which) {
@@ -89,6 +90,52 @@ TEST_F(SplatVariants, SwitchingVariantsKeepsEveryPicture) {
   // The variants draw different pictures (else this test would hold trivially).
   for (int a = 0; a < 5; ++a)
     for (int b = a + 1; b < 5; ++b) EXPECT_NE(first[a], first[b]) << a << " vs " << b;
+}
+
+// Splat lists larger than a storage block (llvmpipe: 128 MiB, 16.8 M splats) are read from
+// texel buffers and the order list is bound in windows: with a 2 KiB block a small volume takes
+// those paths, and every picture (composite, shaded, X-ray, MIP, post with halves, the quad
+// path) is the same bit for bit.
+TEST_F(SplatVariants, HugeSplatListPathsDrawTheSamePictures) {
+  const Volume vol = floatVolume(20, [](int i, int j, int k) {
+    return float(std::max(0.0, 9.0 - glm::length(glm::dvec3(i, j, k) - glm::dvec3(9.5))));
+  });
+  TransferFunction tf;
+  tf.opacity = {{0.0, 0.0}, {3.0, 0.4}, {9.0, 1.0}};
+  tf.color = {{0.0, glm::dvec3(0.3, 0.5, 1.0)}, {9.0, glm::dvec3(1.0, 0.7, 0.2)}};
+  tf.opacityUnitDistance = 2.0;
+  Camera cam;
+  cam.focalPoint = glm::dvec3(9.5);
+  cam.position = cam.focalPoint + glm::dvec3(-15.0, 20.0, 45.0);
+  std::vector<RenderSettings> settings(6);
+  settings[1].lighting.enabled = true;
+  settings[2].mode = RenderMode::XRay;
+  settings[3].mode = RenderMode::Mip;
+  settings[4].classification.mode = ClassificationMode::Post;
+  settings[5].lighting.enabled = true;  // drawn through the quad path below
+  const gl::ShaderLibrary shaders;
+  SplatRenderer plain(shaders), windowed(shaders);
+  windowed.setStorageBlockLimit(2048);
+  for (SplatRenderer* r : {&plain, &windowed}) {
+    r->setVolume(vol);
+    r->setTransferFunction(tf);
+    r->setPartition(PartitionMode::Cpu);
+  }
+  for (size_t i = 0; i < settings.size(); ++i) {
+    const float points = i == 5 ? 2.0f : 1e9f;
+    plain.setPointSizeLimit(points);
+    windowed.setPointSizeLimit(points);
+    plain.render(cam, settings[i], 48, 40);
+    windowed.render(cam, settings[i], 48, 40);
+    ASSERT_FALSE(plain.texelBuffers());
+    ASSERT_TRUE(windowed.texelBuffers()) << windowed.splats().size() << " splats";
+    // Whole slabs span several windows of the order list (2 KiB: under 512 entries).
+    EXPECT_GT(windowed.stats().slabEntries / std::max<size_t>(1, windowed.stats().slabsDrawn),
+              i == 2 || i == 3 ? 2000u : 600u)
+        << i;
+    EXPECT_EQ(plain.stats().slabEntries, windowed.stats().slabEntries) << i;
+    EXPECT_EQ(plain.readImage().pixels, windowed.readImage().pixels) << "settings " << i;
+  }
 }
 
 }  // namespace
