@@ -508,8 +508,13 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
 }
 
 void SplatRenderer::takeCpuPartition() {
-  pendingPartition_.get();  // rethrows what the build threw
   frame_.partitionPending = false;
+  try {
+    pendingPartition_.get();  // rethrows what the build threw (std::bad_alloc)
+  } catch (...) {
+    frame_.active = false;  // the frame ends here; the next beginFrame starts clean
+    throw;
+  }
   const auto& order = partition_.order();
   if (!order.empty())
     orderBuffer_.setData(GLsizeiptr(order.size() * sizeof(uint32_t)), order.data(), GL_STREAM_DRAW);
