@@ -507,7 +507,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   stats_.renderMs = millisecondsSince(start);
 }
 
-void SplatRenderer::takeCpuPartition() {
+void SplatRenderer::takeCpuPartition(bool budgeted) {
   frame_.partitionPending = false;
   try {
     pendingPartition_.get();  // rethrows what the build threw (std::bad_alloc)
@@ -516,12 +516,29 @@ void SplatRenderer::takeCpuPartition() {
     throw;
   }
   const auto& order = partition_.order();
+  // A list too big to copy within a step's budget (a 512^3 volume's: 0.9 GB) goes up in
+  // pieces over the following steps (uploadOrderPieces); a whole frame copies it at once.
+  frame_.orderUploading = budgeted && order.size() > orderUploadPiece_;
+  frame_.orderUploaded = 0;
   if (!order.empty())
-    orderBuffer_.setData(GLsizeiptr(order.size() * sizeof(uint32_t)), order.data(), GL_STREAM_DRAW);
+    orderBuffer_.setData(GLsizeiptr(order.size() * sizeof(uint32_t)),
+                         frame_.orderUploading ? nullptr : order.data(), GL_STREAM_DRAW);
   frame_.slabs = partition_.slabs();
   computeSlabRects();
   stats_.splatsDrawn = partition_.splatCount();
   prepareSlabs(partition_.nearestCenter());
+}
+
+bool SplatRenderer::uploadOrderPieces(double budgetMs, Clock::time_point start) {
+  const auto& order = partition_.order();
+  do {
+    const size_t n = std::min(orderUploadPiece_, order.size() - frame_.orderUploaded);
+    orderBuffer_.setSubData(GLintptr(frame_.orderUploaded * sizeof(uint32_t)),
+                            GLsizeiptr(n * sizeof(uint32_t)), order.data() + frame_.orderUploaded);
+    frame_.orderUploaded += n;
+  } while (frame_.orderUploaded < order.size() && millisecondsSince(start) < budgetMs);
+  frame_.orderUploading = frame_.orderUploaded < order.size();
+  return !frame_.orderUploading;
 }
 
 void SplatRenderer::waitForPartition() {
@@ -596,7 +613,11 @@ bool SplatRenderer::stepFrame(double budgetMs) {
       stats_.renderMs += millisecondsSince(start);
       return false;
     }
-    takeCpuPartition();
+    takeCpuPartition(std::isfinite(budgetMs));
+  }
+  if (frame_.orderUploading && !uploadOrderPieces(budgetMs, start)) {
+    stats_.renderMs += millisecondsSince(start);
+    return false;  // more of the order list next step
   }
   const auto drawStart = Clock::now();  // the splat stage's time leaves the partition out
   // Drawing within a budget needs each slab's count: read the GPU's back (a short wait) before

@@ -98,6 +98,9 @@ class SplatRenderer : public Renderer {
   // Test hook: a smaller storage block than the GL's, so that small volumes take the paths of
   // huge ones (splats in texel buffers, the order list bound in windows); 0: the GL's.
   void setStorageBlockLimit(uint64_t bytes) { storageBlockLimit_ = bytes; }
+  // Test hook: entries a piece of the order list holds when a budgeted frame uploads it in
+  // pieces (default 4 Mi entries, 16 MiB).
+  void setOrderUploadPiece(size_t entries) { orderUploadPiece_ = std::max<size_t>(1, entries); }
   // True when frames read the splats from texel buffers: they exceed a storage block.
   bool texelBuffers() const;
   // Test hook: in X-ray mode, sum only each kernel's share between these camera depths (the
@@ -148,8 +151,12 @@ class SplatRenderer : public Renderer {
   void computeSlabRects();
   // The frame's slabs are known: statistics, the splat programs' variant and uniforms.
   void prepareSlabs(double nearestCenter);
-  // The CPU partition's result (waits for the worker): order upload, slabs, prepareSlabs.
-  void takeCpuPartition();
+  // The CPU partition's result (waits for the worker): order upload (with `budgeted`, a big
+  // list only allocated, its entries left to uploadOrderPieces), slabs, prepareSlabs.
+  void takeCpuPartition(bool budgeted);
+  // Copies pieces of the order list until it is all up (true) or the budget is spent.
+  bool uploadOrderPieces(double budgetMs, Clock::time_point start);
+  size_t orderUploadPiece_ = size_t(1) << 22;  // entries (16 MiB) a piece
   // Returns once no partition is running on the worker thread.
   void waitForPartition();
   // Scissor to the rectangle of slab `slabIndex` (drawing order), when slab scissors are on.
@@ -237,6 +244,8 @@ class SplatRenderer : public Renderer {
     bool texelBuffers = false;         // splats read from texel buffers (texelBuffers())
     double fragmentsPerEntry = 1.0;    // the largest footprint's square, in pixels (budgets)
     bool partitionPending = false;     // the CPU partition runs on pendingPartition_
+    bool orderUploading = false;       // the CPU order list is going up in pieces
+    size_t orderUploaded = 0;          // entries of it copied so far
     Clock::time_point partitionStart;  // for stats_.partitionMs
     std::vector<Slab> slabs;           // front to back: the CPU partition's, or the GPU's
     std::vector<PixelRect> slabRects;  // per slab: the pixels its kernels can reach
