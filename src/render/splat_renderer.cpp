@@ -168,6 +168,9 @@ void SplatRenderer::uploadSplats() {
     splatsDirty_ = true;
     throw gl::GlError("volume: more than 2^30 visible voxels: not supported by splatting");
   }
+  // The order list's store is kept between frames (takeCpuPartition); a new splat set starts
+  // it afresh, so a small volume after a big one does not hold the big one's store.
+  if (!frame_.active) orderBuffer_ = gl::Buffer{};
   const size_t n = std::max<size_t>(1, classified_.splats.size());
   const auto& splats = classified_.splats.splats();
   splatBuffer_.setData(GLsizeiptr(n * sizeof(PackedSplat)),
