@@ -301,7 +301,8 @@ void SplatRenderer::drawOrderRange(GLenum mode, bool instanced, size_t first, si
   glUseProgram(program.id());
   // Bound from the draw's first entry (rounded down to the binding alignment), so a list
   // larger than a storage block is drawn through windows of it.
-  const uint64_t window = storageBlockBytes() / sizeof(uint32_t) - storageAlignment_;
+  // Entries a binding holds; the rounding skips fewer than an alignment's worth.
+  const uint64_t window = (storageBlockBytes() - storageAlignment_) / sizeof(uint32_t);
   // The GPU partition's list once its counts are read back (budgeted steps), else the CPU's.
   const gl::Buffer& order = frame_.gpuSlabs ? gpuPartition_->orderBuffer() : orderBuffer_;
   while (count > 0) {

@@ -156,7 +156,6 @@ class SplatRenderer : public Renderer {
   void takeCpuPartition(bool budgeted);
   // Copies pieces of the order list until it is all up (true) or the budget is spent.
   bool uploadOrderPieces(double budgetMs, Clock::time_point start);
-  size_t orderUploadPiece_ = size_t(1) << 22;  // entries (16 MiB) a piece
   // Returns once no partition is running on the worker thread.
   void waitForPartition();
   // Scissor to the rectangle of slab `slabIndex` (drawing order), when slab scissors are on.
@@ -211,13 +210,14 @@ class SplatRenderer : public Renderer {
   bool attributesUploaded_ = false;  // attributeBuffer_ holds classified_.attributes
   gl::Texture transferTexture_;
   RenderTargets targets_;
-  size_t glMaxSplats_ = SIZE_MAX;      // splats that fit the GPU's storage block and memory
-  size_t maxSplats_ = SIZE_MAX;        // the limit in force (lower in tests)
-  uint64_t maxStorageBlockBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
-  uint64_t storageBlockLimit_ = 0;     // test hook: a lower block size (0: the GL's)
-  uint64_t storageAlignment_ = 256;    // GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT
-  uint64_t maxTexelBufferTexels_ = 0;  // GL_MAX_TEXTURE_BUFFER_SIZE
-  gl::Texture splatTexels_;            // texel-buffer views of splatBuffer_ and attributeBuffer_
+  size_t glMaxSplats_ = SIZE_MAX;              // splats the GPU's texel buffers and memory hold
+  size_t maxSplats_ = SIZE_MAX;                // the limit in force (lower in tests)
+  uint64_t maxStorageBlockBytes_ = 0;          // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
+  uint64_t storageBlockLimit_ = 0;             // test hook: a lower block size (0: the GL's)
+  size_t orderUploadPiece_ = size_t(1) << 22;  // entries (16 MiB) a piece of the order list
+  uint64_t storageAlignment_ = 256;            // GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT
+  uint64_t maxTexelBufferTexels_ = 0;          // GL_MAX_TEXTURE_BUFFER_SIZE
+  gl::Texture splatTexels_;  // texel-buffer views of splatBuffer_ and attributeBuffer_
   gl::Texture attributeTexels_;
   static constexpr unsigned kSplatTexelUnit = 7;
   static constexpr unsigned kAttributeTexelUnit = 8;
