@@ -127,7 +127,7 @@ int run(int argc, char** argv) {
   std::vector<int> sizes = {512, 1024};
   int repeats = 5;
   bool csv = false, json = false, noVtk = false, orthographic = false;
-  RenderSettings settings;  // EWA's: the defaults unless --kernel-width or --classification
+  RenderSettings settings;  // EWA's: the defaults unless --kernel-width, --cutoff, ...
   std::string classification = "pre", culling = "auto", slabRects = "on", pairs = "on";
   app.add_option("--data", data,
                  "Folder with engine/, bonsai/ and cthead/ (default ../shared/data)");
@@ -152,6 +152,8 @@ int run(int argc, char** argv) {
   app.add_option("--kernel-width", settings.kernelWidth,
                  "EWA kernel sigma in voxel spacings, 0.3 to 2 (default 1)")
       ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
+  app.add_option("--cutoff", settings.cutoff, "EWA footprint cutoff r = dx^T Q dx (default 4)")
+      ->check(CLI::Range(0.25, 64.0));
   app.add_option("--classification", classification,
                  "EWA: transfer function per voxel (pre, default) or per pixel (post)")
       ->check(CLI::IsMember({"pre", "post"}));
@@ -194,12 +196,13 @@ int run(int argc, char** argv) {
   SplatRenderer ewa(shaders);
   ewa.setSlabScissor(slabRects == "on");
   char ewaText[200];
-  std::snprintf(
-      ewaText, sizeof ewaText, "kernel width %.2f, %s-classification%s, occlusion culling %s%s%s",
-      settings.kernelWidth, classification.c_str(),
-      classification == "post" && pairs == "off" ? " without slab pre-integration" : "",
-      ewa.occlusionCulling(settings.occlusionCulling) ? "on" : "off",
-      culling == "auto" ? " (auto)" : "", slabRects == "on" ? "" : ", whole-image slab passes");
+  std::snprintf(ewaText, sizeof ewaText,
+                "kernel width %.2f, cutoff %g, %s-classification%s, occlusion culling %s%s%s",
+                settings.kernelWidth, settings.cutoff, classification.c_str(),
+                classification == "post" && pairs == "off" ? " without slab pre-integration" : "",
+                ewa.occlusionCulling(settings.occlusionCulling) ? "on" : "off",
+                culling == "auto" ? " (auto)" : "",
+                slabRects == "on" ? "" : ", whole-image slab passes");
   report.ewaSettings = ewaText;
   SpriteBaseline sprites(shaders);
   const std::unique_ptr<Renderer> shearWarp = createRenderer(RendererKind::ShearWarp, shaders);

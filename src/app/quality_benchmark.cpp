@@ -19,10 +19,11 @@ int referenceMargin(const QualityOptions& o) {
 }
 
 FloatImage renderFloat(SplatRenderer& renderer, const Camera& camera, FilterMode filter, int size,
-                       double kernelWidth) {
+                       const QualityOptions& o) {
   RenderSettings settings;
   settings.filter = filter;
-  settings.kernelWidth = kernelWidth;
+  settings.kernelWidth = o.kernelWidth;
+  settings.cutoff = o.cutoff;
   renderer.render(camera, settings, size, size);
   return toFloatImage(renderer.readImage());
 }
@@ -85,7 +86,7 @@ FloatImage rayReference(const Volume& sheet, const TransferFunction& tf, const C
 FloatImage renderReference(SplatRenderer& renderer, const Camera& camera, FilterMode filter,
                            const QualityOptions& o) {
   return lowPassAndCrop(
-      renderFloat(renderer, widened(camera, o), filter, referenceRenderSize(o), o.kernelWidth), o);
+      renderFloat(renderer, widened(camera, o), filter, referenceRenderSize(o), o), o);
 }
 
 SceneQuality measureScene(SplatRenderer& renderer, const QualityScene& scene,
@@ -124,9 +125,7 @@ SceneQuality measureScene(SplatRenderer& renderer, const QualityScene& scene,
   for (FilterMode filter : {FilterMode::Ewa, FilterMode::Swan, FilterMode::Plain}) {
     ModeResult m;
     m.name = filterModeName(filter);
-    auto render = [&](const Camera& c) {
-      return renderFloat(renderer, c, filter, o.size, o.kernelWidth);
-    };
+    auto render = [&](const Camera& c) { return renderFloat(renderer, c, filter, o.size, o); };
     m.image = render(camera);
     fillErrors(&m, q.reference.image, q.regions);
     if (o.frames > 0) m.flicker = flickerOf(render, m.image, camera, o, q.regions.beyondK);

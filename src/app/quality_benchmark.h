@@ -23,6 +23,7 @@ struct QualityOptions {
   bool splatReference = true;    // also make the old reference (EWA splats at supersample x)
   double sheetOpacity = -1.0;    // in (0, 1): replaces the sheet's opacity per voxel; else kept
   double kernelWidth = RenderSettings().kernelWidth;  // of the splats (and the splat reference)
+  double cutoff = RenderSettings().cutoff;            // of their footprints
 };
 
 // Metrics of one image against the reference. Errors are over RGB in [0, 1].

@@ -58,6 +58,9 @@ int run(int argc, char** argv) {
   app.add_option("--kernel-width", o.kernelWidth,
                  "Splat kernel sigma in voxel spacings, 0.3 to 2 (default: ewaview's, 1)")
       ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
+  app.add_option("--cutoff", o.cutoff,
+                 "Splat footprint cutoff r = dx^T Q dx (default: ewaview's, 4)")
+      ->check(CLI::Range(0.25, 64.0));
   app.add_flag("--no-reference-flicker", noReferenceFlicker,
                "Skip rendering the reference at every move (its own flicker)");
   app.add_flag("--no-splat-reference", noSplatReference,
@@ -100,9 +103,9 @@ int run(int argc, char** argv) {
   std::printf(
       "# %s; %dx%d, reference integrated along %dx%d rays a pixel (%d with margin), Gaussian "
       "sigma %.2f px; "
-      "%d moves of %.3f px; sheet opacity %s; kernel width %.2f\n\n",
+      "%d moves of %.3f px; sheet opacity %s; kernel width %.2f, cutoff %g\n\n",
       context->description().c_str(), o.size, o.size, o.supersample, o.supersample, needed, o.sigma,
-      o.frames, o.stepPixels, opacity.c_str(), o.kernelWidth);
+      o.frames, o.stepPixels, opacity.c_str(), o.kernelWidth, o.cutoff);
   std::vector<SceneQuality> results;
   for (const QualityScene& scene : scenes) {
     const SyntheticVolume volume = makeSyntheticVolume(scene.spec);

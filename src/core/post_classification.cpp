@@ -2,6 +2,7 @@
 #include "core/post_classification.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace ewa {
@@ -10,10 +11,15 @@ namespace {
 
 constexpr int kTable = 4096;
 
-// Max filter of half width `margin` along one axis of a dims-sized byte grid, in place.
-void dilateAxis(std::vector<uint8_t>& mask, const std::array<int64_t, 3>& d, int axis, int margin) {
+// One pass of a windowed squared-distance transform along `axis` of a dims-sized grid holding
+// squared distances capped at `cap`: each entry becomes min over |s| <= margin of the entry s
+// along the axis plus s^2. Three passes (x, y, z) from seeds 0 and the rest `cap` give the
+// squared Euclidean distance to the nearest seed wherever it is at most margin^2 (every axis
+// offset of such a seed is within the window).
+void distanceAxis(std::vector<uint8_t>& grid, const std::array<int64_t, 3>& d, int axis, int margin,
+                  int cap) {
   const int64_t n = d[axis];
-  if (margin <= 0 || n <= 1) return;
+  if (n <= 1) return;
   const int64_t step = axis == 0 ? 1 : axis == 1 ? d[0] : d[0] * d[1];
   const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
   const int64_t s1 = a1 == 0 ? 1 : a1 == 1 ? d[0] : d[0] * d[1];
@@ -22,17 +28,34 @@ void dilateAxis(std::vector<uint8_t>& mask, const std::array<int64_t, 3>& d, int
   for (int64_t q = 0; q < d[a2]; ++q) {
     for (int64_t p = 0; p < d[a1]; ++p) {
       const int64_t base = p * s1 + q * s2;
-      for (int64_t t = 0; t < n; ++t) line[size_t(t)] = mask[size_t(base + t * step)];
-      // A running count of set voxels in the window [t - margin, t + margin].
-      int64_t count = 0;
-      for (int64_t t = 0; t < std::min<int64_t>(margin, n); ++t) count += line[size_t(t)];
+      bool any = false;
       for (int64_t t = 0; t < n; ++t) {
-        if (t + margin < n) count += line[size_t(t + margin)];
-        if (t - margin - 1 >= 0) count -= line[size_t(t - margin - 1)];
-        mask[size_t(base + t * step)] = count > 0 ? 1 : 0;
+        line[size_t(t)] = grid[size_t(base + t * step)];
+        any = any || line[size_t(t)] < cap;
+      }
+      if (!any) continue;  // nothing within reach on this line
+      for (int64_t t = 0; t < n; ++t) {
+        int best = line[size_t(t)];
+        const int64_t lo = std::max<int64_t>(t - margin, 0),
+                      hi = std::min<int64_t>(t + margin, n - 1);
+        for (int64_t u = lo; u <= hi; ++u)
+          best = std::min(best, line[size_t(u)] + int((u - t) * (u - t)));
+        grid[size_t(base + t * step)] = uint8_t(std::min(best, cap));
       }
     }
   }
+}
+
+// Keeps the voxels within Euclidean distance `margin` (in voxels) of a set one: a ball, as a
+// kernel reaches, not the cube of a per-axis max filter, whose corners reach sqrt(3) times as
+// far and, around thin structures, hold most of the margin.
+void dilateBall(std::vector<uint8_t>& mask, const std::array<int64_t, 3>& d, int margin) {
+  const int m = std::clamp(margin, 0, 15);  // m^2 + 1 fits a byte
+  if (m == 0) return;
+  const int cap = m * m + 1;
+  for (uint8_t& v : mask) v = v ? 0 : uint8_t(cap);
+  for (int axis = 0; axis < 3; ++axis) distanceAxis(mask, d, axis, m, cap);
+  for (uint8_t& v : mask) v = v < cap ? 1 : 0;
 }
 
 }  // namespace
@@ -55,7 +78,7 @@ int postClassificationMargin(double cutoff, double kernelWidth) {
   const double reach = std::sqrt(std::max(cutoff, 0.0)) * std::max(kernelWidth, 0.0);
   // Rounded, not up: the last fraction of a voxel of reach carries little weight (the window
   // goes to zero at the cutoff), and every margin voxel costs as much to draw as a visible one.
-  return std::clamp(int(std::lround(reach)), 1, 16);
+  return std::clamp(int(std::lround(reach)), 1, 15);
 }
 
 std::vector<uint8_t> postClassificationMask(const Volume& volume,
@@ -101,7 +124,7 @@ std::vector<uint8_t> postClassificationMask(const Volume& volume,
           }
         }
       }
-  for (int axis = 0; axis < 3; ++axis) dilateAxis(mask, d, axis, margin);
+  dilateBall(mask, d, margin);
   return mask;
 }
 

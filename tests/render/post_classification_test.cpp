@@ -102,8 +102,9 @@ TEST_F(PostClassification, KeepsTheMarginAndDrawsOnlyVisibleValues) {
   EXPECT_EQ(renderer()->stats().splatsTotal, 32u);  // pre: the rod's voxels
   settings.classification.mode = ClassificationMode::Post;
   renderer()->render(cam, settings, 64, 64);
-  // post: a margin of 2 voxels (cutoff 4, width 1) around the rod: 5 x 5 columns.
-  EXPECT_EQ(renderer()->stats().splatsTotal, 25u * 32u);
+  // post: a margin of 2 voxels (cutoff 4, width 1) around the rod, a disc in cross-section
+  // (the 13 columns within 2 voxel steps; a square would hold 25).
+  EXPECT_EQ(renderer()->stats().splatsTotal, 13u * 32u);
   // The margin's zero-opacity voxels add no opacity where the value stays below the step: the
   // picture's corner stays background.
   const Image8 img = renderer()->readImage();

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstdint>
+
 #include "core/splat_attributes.h"
 
 namespace ewa {
@@ -20,7 +23,8 @@ TEST(PostClassification, MarginFollowsTheKernelsReach) {
   EXPECT_EQ(postClassificationMargin(4.0, 0.7), 1);
   EXPECT_EQ(postClassificationMargin(4.0, 0.5), 1);
   EXPECT_EQ(postClassificationMargin(9.0, 1.5), 5);
-  EXPECT_EQ(postClassificationMargin(4.0, 0.1), 1);  // never none: neighbours always matter
+  EXPECT_EQ(postClassificationMargin(4.0, 0.1), 1);    // never none: neighbours always matter
+  EXPECT_EQ(postClassificationMargin(64.0, 2.0), 15);  // at most 15: the mask's limit
 }
 
 TEST(PostClassification, MaskDilatesVisibleVoxelsByTheMargin) {
@@ -32,6 +36,47 @@ TEST(PostClassification, MaskDilatesVisibleVoxelsByTheMargin) {
   EXPECT_EQ(postClassificationMask(
                 v, [](double) { return false; }, 2),
             none);
+}
+
+// The margin is a ball of the margin's radius in voxel steps (a kernel reaches as far in every
+// direction), not a cube: checked against the brute-force definition on random seeds.
+TEST(PostClassification, MarginIsABallAroundEachVisibleVoxel) {
+  const std::array<int64_t, 3> dims = {13, 11, 9};
+  std::vector<uint8_t> bytes(size_t(dims[0] * dims[1] * dims[2]), 0);
+  uint32_t state = 12345;
+  for (uint8_t& b : bytes) {
+    state = state * 1664525u + 1013904223u;
+    b = (state >> 24) < 3 ? 255 : 0;  // about 1% seeds
+  }
+  bytes[0] = 255;  // a corner seed: the window must stop at the edges
+  const Volume v(dims, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8, bytes);
+  const auto visible = [](double x) { return x > 200.0; };
+  for (int margin : {1, 2, 3}) {
+    const std::vector<uint8_t> mask = postClassificationMask(v, visible, margin);
+    size_t kept = 0;
+    for (int64_t k = 0; k < dims[2]; ++k)
+      for (int64_t j = 0; j < dims[1]; ++j)
+        for (int64_t i = 0; i < dims[0]; ++i) {
+          bool near = false;
+          for (int64_t c = 0; c < dims[2] && !near; ++c)
+            for (int64_t b = 0; b < dims[1] && !near; ++b)
+              for (int64_t a = 0; a < dims[0] && !near; ++a)
+                near = bytes[size_t(v.index(a, b, c))] &&
+                       (a - i) * (a - i) + (b - j) * (b - j) + (c - k) * (c - k) <= margin * margin;
+          ASSERT_EQ(mask[size_t(v.index(i, j, k))], near ? 1 : 0)
+              << "margin " << margin << " at " << i << "," << j << "," << k;
+          kept += near;
+        }
+    EXPECT_GT(kept, 0u);
+  }
+  // One seed, margin 2: 1 + 6 + 12 + 8 (the (1,1,1) diagonals, 1.73 away) + 6 (two steps along
+  // an axis) = 33 voxels; a cube would keep 125.
+  std::vector<uint8_t> one(size_t(dims[0] * dims[1] * dims[2]), 0);
+  one[size_t(v.index(6, 5, 4))] = 255;
+  const Volume single(dims, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8, one);
+  size_t count = 0;
+  for (uint8_t m : postClassificationMask(single, visible, 2)) count += m;
+  EXPECT_EQ(count, 33u);
 }
 
 TEST(PostClassification, MaskFindsPeaksBetweenNeighbouringValues) {
@@ -55,7 +100,7 @@ TEST(PostClassification, ClassifiedSplatsKeepTheMarginAndNoSurfaces) {
   c.mode = ClassificationMode::Post;
   c.postMargin = 1;
   const ClassifiedSplats post = classifySplats(v, tf, c);
-  EXPECT_EQ(post.splats.size(), 27u);
+  EXPECT_EQ(post.splats.size(), 7u);  // the voxel and its six face neighbours: a ball
   EXPECT_EQ(post.surfaceCount, 0u);
   std::string name = classificationModeName(ClassificationMode::Post);
   ClassificationMode parsed = ClassificationMode::Pre;
