@@ -76,9 +76,12 @@ bool parseClassificationMode(const std::string& text, ClassificationMode* mode) 
 
 int postClassificationMargin(double cutoff, double kernelWidth) {
   const double reach = std::sqrt(std::max(cutoff, 0.0)) * std::max(kernelWidth, 0.0);
-  // Rounded, not up: the last fraction of a voxel of reach carries little weight (the window
-  // goes to zero at the cutoff), and every margin voxel costs as much to draw as a visible one.
-  return std::clamp(int(std::lround(reach)), 1, 15);
+  // Rounded down: the fraction of a voxel of reach beyond the whole ones carries little weight
+  // (the window goes to zero at the cutoff), every margin voxel costs as much to draw as a
+  // visible one, and a ray caster's trilinear value never looks further than one voxel. At
+  // width 0.7, cutoff 5 (reach 1.57), 1 rather than 2 brought close-ups nearer VTK's ray caster
+  // (SSIM 0.868 -> 0.892 on aneurism, 0.924 -> 0.939 on bonsai; README, Kernel width).
+  return std::clamp(int(std::floor(reach)), 1, 15);
 }
 
 std::vector<uint8_t> postClassificationMask(const Volume& volume,

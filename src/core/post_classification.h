@@ -20,7 +20,7 @@ const char* classificationModeName(ClassificationMode mode);
 // Parses "pre" or "post"; false for anything else.
 bool parseClassificationMode(const std::string& text, ClassificationMode* mode);
 
-// Voxels a kernel reaches (sqrt(cutoff) * kernel width), rounded, 1 to 15: the margin of
+// Whole voxels a kernel reaches (sqrt(cutoff) * kernel width, rounded down), 1 to 15: the margin of
 // zero-opacity voxels that must stay beside visible ones so that the mean value near a boundary is
 // the reconstructed one, not the mean of the visible voxels alone.
 int postClassificationMargin(double cutoff, double kernelWidth);

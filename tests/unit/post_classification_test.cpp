@@ -19,10 +19,12 @@ Volume line(const std::vector<uint8_t>& values) {
 
 TEST(PostClassification, MarginFollowsTheKernelsReach) {
   EXPECT_EQ(postClassificationMargin(4.0, 1.0), 2);
-  EXPECT_EQ(postClassificationMargin(4.0, 0.85), 2);
+  EXPECT_EQ(postClassificationMargin(4.0, 0.85), 1);  // reach 1.7: whole voxels only
+  EXPECT_EQ(postClassificationMargin(5.0, 0.7), 1);
   EXPECT_EQ(postClassificationMargin(4.0, 0.7), 1);
   EXPECT_EQ(postClassificationMargin(4.0, 0.5), 1);
-  EXPECT_EQ(postClassificationMargin(9.0, 1.5), 5);
+  EXPECT_EQ(postClassificationMargin(9.0, 1.5), 4);
+  EXPECT_EQ(postClassificationMargin(9.0, 1.0), 3);
   EXPECT_EQ(postClassificationMargin(4.0, 0.1), 1);    // never none: neighbours always matter
   EXPECT_EQ(postClassificationMargin(64.0, 2.0), 15);  // at most 15: the mask's limit
 }
