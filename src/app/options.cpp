@@ -1,11 +1,10 @@
 // Command-line parsing with CLI11, following f3d's option names.
 #include "app/options.h"
 
+#include <CLI/CLI.hpp>
 #include <iostream>
 #include <sstream>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "app/clip_options.h"
 #include "app/render_options.h"
@@ -22,12 +21,30 @@ std::optional<glm::dvec3> toVec3(const std::vector<double>& v) {
   return glm::dvec3(v[0], v[1], v[2]);
 }
 
+// --close-up: the close-up setting where the command line did not set the same thing itself.
+std::string applyCloseUp(const CLI::App& app, RenderSettings* settings) {
+  RenderSettings closeUp = *settings;
+  applyCloseUpSettings(&closeUp);
+  if (app.count("--classification") == 0)
+    settings->classification.mode = closeUp.classification.mode;
+  if (app.count("--slab-preintegration") == 0)
+    settings->slabPreintegration = closeUp.slabPreintegration;
+  if (app.count("--kernel-width") == 0) settings->kernelWidth = closeUp.kernelWidth;
+  if (app.count("--cutoff") == 0) settings->cutoff = closeUp.cutoff;
+  if (settings->classification.mode == ClassificationMode::Post &&
+      settings->classification.surface != SurfaceCriterion::None)
+    return "--close-up is post-classified and draws no surface splats: drop "
+           "--surface-threshold and --surface-opacity-threshold";
+  return "";
+}
+
 }  // namespace
 
 ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
-  CLI::App app{"ewaview: a volume viewer built on EWA volume splatting.\n"
-               "Without --output it opens a window; with --output it renders headless and exits.",
-               "ewaview"};
+  CLI::App app{
+      "ewaview: a volume viewer built on EWA volume splatting.\n"
+      "Without --output it opens a window; with --output it renders headless and exits.",
+      "ewaview"};
   app.set_version_flag("--version", std::string("ewaview ") + versionString());
   app.add_option("file", o->file,
                  "Volume file (.nrrd .nhdr .mhd .mha .dat .vti .nii .nii.gz .hdr .img .dcm .tif "
@@ -60,12 +77,17 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       ->check(CLI::Range(0, 1 << 20));
   std::vector<int> res;
   app.add_option("--resolution", res, "Image size W,H (default 800,600)")
-      ->delimiter(',')->expected(2)->check(CLI::Range(1, 16384));
+      ->delimiter(',')
+      ->expected(2)
+      ->check(CLI::Range(1, 16384));
   std::vector<double> pos, focal, up, bg;
   app.add_option("--camera-position", pos, "Camera position X,Y,Z")->delimiter(',')->expected(3);
-  app.add_option("--camera-focal-point", focal, "Camera focal point X,Y,Z")->delimiter(',')->expected(3);
+  app.add_option("--camera-focal-point", focal, "Camera focal point X,Y,Z")
+      ->delimiter(',')
+      ->expected(3);
   app.add_option("--camera-view-up", up, "Camera view-up X,Y,Z")->delimiter(',')->expected(3);
-  app.add_option("--camera-view-angle", o->cameraViewAngle, "Vertical view angle in degrees (default 30)")
+  app.add_option("--camera-view-angle", o->cameraViewAngle,
+                 "Vertical view angle in degrees (default 30)")
       ->check(CLI::Range(0.01, 179.0));
   app.add_flag("--camera-orthographic", o->orthographic, "Orthographic projection");
   std::string filter = "ewa", mode = "composite";
@@ -82,32 +104,45 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--kernel-width", o->render.kernelWidth,
                  "Kernel sigma in voxel spacings, 0.3 to 2 (default 1)")
       ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
+  bool closeUp = false;
+  app.add_flag("--close-up", closeUp,
+               "Close-up setting: --classification post --kernel-width 0.7 --cutoff 5 (nearest "
+               "to a ray caster close up); options given beside it win");
   app.add_option("--slab-thickness", o->render.slabThickness,
                  "Slab thickness in voxels of the smallest spacing, 0.25 and up (default 2)")
       ->check(CLI::Range(0.25, 1000.0));
   std::string rendererName = "splat", lookup = "nearest", correction = "on", buffers = "slice";
-  app.add_option("--renderer", rendererName, "splat (default, GPU EWA splatting) or shearwarp (CPU)")
+  app.add_option("--renderer", rendererName,
+                 "splat (default, GPU EWA splatting) or shearwarp (CPU)")
       ->check(CLI::IsMember({"splat", "shearwarp"}));
   app.add_flag("--preintegrated", o->render.shearWarp.preintegrated,
                "Shear-warp: pre-integrated slabs between slices");
-  app.add_option("--table-lookup", lookup, "Shear-warp pre-integration lookup: nearest (default) or bilinear")
+  app.add_option("--table-lookup", lookup,
+                 "Shear-warp pre-integration lookup: nearest (default) or bilinear")
       ->check(CLI::IsMember({"nearest", "bilinear"}));
   app.add_option("--opacity-correction", correction,
-                 "Shear-warp opacity and colour correction for the view's sample distance: on (default) or off")
+                 "Shear-warp opacity and colour correction for the view's sample distance: on "
+                 "(default) or off")
       ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--buffer-slices", buffers,
-                 "Shear-warp buffer slices: slice (two slice-sized, default) or image (one intermediate-image-sized)")
+                 "Shear-warp buffer slices: slice (two slice-sized, default) or image (one "
+                 "intermediate-image-sized)")
       ->check(CLI::IsMember({"slice", "image"}));
   app.add_option("--tf", o->tfFile, "Transfer function JSON file");
   app.add_option("--background", bg, "Background colour R,G,B in [0,1] (default 0,0,0)")
-      ->delimiter(',')->expected(3)->check(CLI::Range(0.0, 1.0));
+      ->delimiter(',')
+      ->expected(3)
+      ->check(CLI::Range(0.0, 1.0));
   app.add_option("--backend", o->backend, "Headless OpenGL: osmesa (default) or egl")
       ->check(CLI::IsMember({"osmesa", "egl"}));
   app.add_option("--shader-dir", o->shaderDir, "Load shaders from this folder (development)");
   auto* rawDims = app.add_option("--raw-dims", o->rawDims, "Raw input: dims X,Y,Z");
-  app.add_option("--raw-type", o->rawType, "Raw input: uint8, int16, uint16 or float32")->needs(rawDims);
-  app.add_option("--raw-spacing", o->rawSpacing, "Raw input: spacing X,Y,Z (default 1,1,1)")->needs(rawDims);
-  app.add_option("--raw-endian", o->rawEndian, "Raw input: little (default) or big")->needs(rawDims);
+  app.add_option("--raw-type", o->rawType, "Raw input: uint8, int16, uint16 or float32")
+      ->needs(rawDims);
+  app.add_option("--raw-spacing", o->rawSpacing, "Raw input: spacing X,Y,Z (default 1,1,1)")
+      ->needs(rawDims);
+  app.add_option("--raw-endian", o->rawEndian, "Raw input: little (default) or big")
+      ->needs(rawDims);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -121,7 +156,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
     std::cerr << "ewaview: " << message << " (see --help)\n";
     return ParseResult{false, 2};
   };
-  if (!o->file.empty() && !o->synthetic.empty()) return usage("give a FILE or --synthetic, not both");
+  if (!o->file.empty() && !o->synthetic.empty())
+    return usage("give a FILE or --synthetic, not both");
   if (!o->rawDims.empty() && o->rawType.empty()) return usage("--raw-dims needs --raw-type");
   if (!o->rawDims.empty() && o->file.empty()) return usage("--raw-dims needs a FILE");
   if (o->turntable > 0 && o->output.empty()) return usage("--turntable needs --output");
@@ -130,9 +166,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   // "series/" and "series" are one folder (and name one bookmarks file beside it).
   while (o->file.size() > 1 && o->file.back() == '/') o->file.pop_back();
   o->resolutionGiven = !res.empty();
-  for (const char* name : {"--filter", "--render-mode", "--cutoff", "--kernel-width",
-                           "--classification", "--slab-preintegration", "--slab-thickness",
-                           "--background"})
+  for (const char* name :
+       {"--filter", "--render-mode", "--cutoff", "--kernel-width", "--classification",
+        "--slab-preintegration", "--slab-thickness", "--background", "--close-up"})
     o->renderOptionsGiven |= app.count(name) > 0;
   if (!res.empty()) {
     o->width = res[0];
@@ -144,9 +180,13 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!bg.empty()) o->render.background = glm::dvec3(bg[0], bg[1], bg[2]);
   parseFilterMode(filter, &o->render.filter);
   parseRenderMode(mode, &o->render.mode);
-  if (const std::string e = finishShadingOptions(renderText, &o->render); !e.empty()) return usage(e);
+  if (const std::string e = finishShadingOptions(renderText, &o->render); !e.empty())
+    return usage(e);
   if (const std::string e = finishClipOptions(clipText, &o->render.clip); !e.empty())
     return usage(e);
+  if (closeUp) {
+    if (const std::string e = applyCloseUp(app, &o->render); !e.empty()) return usage(e);
+  }
   parseRendererKind(rendererName, &o->render.renderer);
   parseTableLookup(lookup, &o->render.shearWarp.lookup);
   parseBufferSlices(buffers, &o->render.shearWarp.buffers);

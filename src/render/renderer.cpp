@@ -38,6 +38,14 @@ const char* renderModeName(RenderMode mode) {
   return "?";
 }
 
+void applyCloseUpSettings(RenderSettings* settings) {
+  settings->classification.mode = ClassificationMode::Post;
+  settings->classification.surface = SurfaceCriterion::None;
+  settings->slabPreintegration = true;
+  settings->kernelWidth = 0.7;
+  settings->cutoff = 5.0;
+}
+
 FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3& spacing) {
   FootprintParams params;
   params.filter = settings.filter;

@@ -109,6 +109,15 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
   ImGui::SameLine();
   changed |= ImGui::Checkbox("pre-integrated", &settings.slabPreintegration);
   ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("close-up")) {
+    applyCloseUpSettings(&settings);
+    changed = true;
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Post-classified, pre-integrated, kernel width 0.7, cutoff 5: nearest to a "
+        "ray caster close up (ewaview --close-up)");
   changed |= sliderDouble("slab (voxels)", &settings.slabThickness, 0.25, 8.0, "%.2f",
                           ImGuiSliderFlags_Logarithmic);
 

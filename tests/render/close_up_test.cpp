@@ -1,0 +1,92 @@
+// The close-up setting (--close-up, the panel's "close-up" button): what it sets, what it leaves to
+// options given beside it, and that the program draws with it.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "app/options.h"
+#include "cli_run.h"
+#include "image_compare.h"
+#include "io/png_io.h"
+
+namespace ewa::test {
+namespace {
+
+struct Parsed {
+  ParseResult result;
+  Options options;
+};
+
+Parsed parse(std::vector<const char*> args) {
+  args.insert(args.begin(), "ewaview");
+  Parsed p;
+  p.result = parseCommandLine(int(args.size()), args.data(), &p.options);
+  return p;
+}
+
+TEST(CloseUp, SetsPostClassificationAndNarrowKernels) {
+  RenderSettings s;
+  s.classification.surface = SurfaceCriterion::Value;
+  s.slabPreintegration = false;
+  applyCloseUpSettings(&s);
+  EXPECT_EQ(s.classification.mode, ClassificationMode::Post);
+  EXPECT_EQ(s.classification.surface, SurfaceCriterion::None);
+  EXPECT_TRUE(s.slabPreintegration);
+  EXPECT_DOUBLE_EQ(s.kernelWidth, 0.7);
+  EXPECT_DOUBLE_EQ(s.cutoff, 5.0);
+
+  const Parsed p = parse({"--synthetic", "sphere:8", "--close-up"});
+  ASSERT_TRUE(p.result.run);
+  EXPECT_EQ(p.options.render.classification.mode, ClassificationMode::Post);
+  EXPECT_DOUBLE_EQ(p.options.render.kernelWidth, 0.7);
+  EXPECT_DOUBLE_EQ(p.options.render.cutoff, 5.0);
+  EXPECT_TRUE(p.options.renderOptionsGiven);  // overrides the saved settings, as its options do
+  const Parsed plain = parse({"--synthetic", "sphere:8"});
+  EXPECT_EQ(plain.options.render.classification.mode, ClassificationMode::Pre);
+  EXPECT_DOUBLE_EQ(plain.options.render.kernelWidth, 1.0);
+}
+
+TEST(CloseUp, OptionsGivenBesideItWin) {
+  const Parsed p = parse({"--synthetic", "sphere:8", "--kernel-width", "0.6", "--close-up",
+                          "--classification", "pre", "--slab-preintegration", "off"});
+  ASSERT_TRUE(p.result.run);
+  EXPECT_EQ(p.options.render.classification.mode, ClassificationMode::Pre);
+  EXPECT_FALSE(p.options.render.slabPreintegration);
+  EXPECT_DOUBLE_EQ(p.options.render.kernelWidth, 0.6);
+  EXPECT_DOUBLE_EQ(p.options.render.cutoff, 5.0);
+  // Surface splats need pre-classification: with --close-up alone that is a usage error...
+  const Parsed bad = parse({"--synthetic", "sphere:8", "--close-up", "--surface-threshold", "100"});
+  EXPECT_FALSE(bad.result.run);
+  EXPECT_EQ(bad.result.exitCode, 2);
+  // ...and fine once --classification pre is given.
+  EXPECT_TRUE(parse({"--synthetic", "sphere:8", "--close-up", "--surface-threshold", "100",
+                     "--classification", "pre"})
+                  .result.run);
+}
+
+// The program draws the same picture with --close-up as with its four options spelt out, and
+// a different one from the default.
+TEST(CloseUp, ProgramDrawsTheSpeltOutSetting) {
+  const std::string dir = testOutputDir();
+  const std::string scene = "--synthetic marschner-lobb:24 --resolution 48,48 --output ";
+  const std::vector<std::string> flags = {
+      "--close-up", "--classification post --slab-preintegration on --kernel-width 0.7 --cutoff 5",
+      ""};
+  std::vector<Image8> images;
+  for (size_t i = 0; i < flags.size(); ++i) {
+    const std::string png = dir + "/close_up_" + std::to_string(i) + ".png";
+    const CliRun r = runEwaview(scene + png + " " + flags[i], "close_up");
+    ASSERT_EQ(r.code, 0) << flags[i] << ": " << r.err;
+    images.push_back(readPng(png));
+  }
+  ASSERT_EQ(images[0].pixels.size(), images[1].pixels.size());
+  EXPECT_EQ(images[0].pixels, images[1].pixels);
+  size_t differing = 0;
+  for (size_t i = 0; i < images[0].pixels.size(); ++i)
+    differing += images[0].pixels[i] != images[2].pixels[i];
+  EXPECT_GT(differing, images[0].pixels.size() / 20) << "close-up drew the default picture";
+}
+
+}  // namespace
+}  // namespace ewa::test
