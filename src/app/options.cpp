@@ -21,21 +21,18 @@ std::optional<glm::dvec3> toVec3(const std::vector<double>& v) {
   return glm::dvec3(v[0], v[1], v[2]);
 }
 
-// --close-up: the close-up setting where the command line did not set the same thing itself.
-std::string applyCloseUp(const CLI::App& app, RenderSettings* settings) {
-  RenderSettings closeUp = *settings;
+// --close-up: the close-up setting wherever the command line did not set the same thing itself.
+// Before finishShadingOptions, which turns the text options into settings and rejects surface
+// splats with post-classification, however it was asked for.
+void applyCloseUp(const CLI::App& app, RenderOptionText* text, RenderSettings* settings) {
+  RenderSettings closeUp;
   applyCloseUpSettings(&closeUp);
   if (app.count("--classification") == 0)
-    settings->classification.mode = closeUp.classification.mode;
+    text->classification = classificationModeName(closeUp.classification.mode);
   if (app.count("--slab-preintegration") == 0)
-    settings->slabPreintegration = closeUp.slabPreintegration;
+    text->slabPreintegration = closeUp.slabPreintegration ? "on" : "off";
   if (app.count("--kernel-width") == 0) settings->kernelWidth = closeUp.kernelWidth;
   if (app.count("--cutoff") == 0) settings->cutoff = closeUp.cutoff;
-  if (settings->classification.mode == ClassificationMode::Post &&
-      settings->classification.surface != SurfaceCriterion::None)
-    return "--close-up is post-classified and draws no surface splats: drop "
-           "--surface-threshold and --surface-opacity-threshold";
-  return "";
 }
 
 }  // namespace
@@ -180,13 +177,11 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!bg.empty()) o->render.background = glm::dvec3(bg[0], bg[1], bg[2]);
   parseFilterMode(filter, &o->render.filter);
   parseRenderMode(mode, &o->render.mode);
+  if (closeUp) applyCloseUp(app, &renderText, &o->render);
   if (const std::string e = finishShadingOptions(renderText, &o->render); !e.empty())
     return usage(e);
   if (const std::string e = finishClipOptions(clipText, &o->render.clip); !e.empty())
     return usage(e);
-  if (closeUp) {
-    if (const std::string e = applyCloseUp(app, &o->render); !e.empty()) return usage(e);
-  }
   parseRendererKind(rendererName, &o->render.renderer);
   parseTableLookup(lookup, &o->render.shearWarp.lookup);
   parseBufferSlices(buffers, &o->render.shearWarp.buffers);

@@ -75,8 +75,8 @@ std::string finishShadingOptions(const RenderOptionText& p, RenderSettings* s) {
   }
   if (s->classification.mode == ClassificationMode::Post &&
       s->classification.surface != SurfaceCriterion::None)
-    return "--classification post draws no surface splats: drop --surface-threshold and "
-           "--surface-opacity-threshold";
+    return "post-classification (--classification post, --close-up) draws no surface splats: "
+           "drop --surface-threshold and --surface-opacity-threshold";
   return "";
 }
 

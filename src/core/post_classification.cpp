@@ -24,7 +24,7 @@ void distanceAxis(std::vector<uint8_t>& grid, const std::array<int64_t, 3>& d, i
   const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
   const int64_t s1 = a1 == 0 ? 1 : a1 == 1 ? d[0] : d[0] * d[1];
   const int64_t s2 = a2 == 0 ? 1 : a2 == 1 ? d[0] : d[0] * d[1];
-  std::vector<uint8_t> line(size_t(n) + 0);
+  std::vector<uint8_t> line(static_cast<size_t>(n));
   for (int64_t q = 0; q < d[a2]; ++q) {
     for (int64_t p = 0; p < d[a1]; ++p) {
       const int64_t base = p * s1 + q * s2;
