@@ -37,12 +37,12 @@ vec2 clippedDepths(vec2 pixel) {
 // The share of the depth Gaussian between the slab's bounds (open: the kernel's tail) and
 // inside `kept`: the slab split and the clip cut in one erf difference.
 float clippedSlabFraction(float mu, float sigma, float zNear, float zFar, bool openNear,
-                          bool openFar, vec2 kept) {
+                          bool openFar, vec2 kept, vec2 profile) {
   float lo = openNear ? kept.x : max(zNear, kept.x);
   float hi = openFar ? kept.y : min(zFar, kept.y);
   if (!(hi > lo)) return 0.0;
   float s = 1.0 / (sqrt(2.0) * sigma);
-  return 0.5 * (erfApprox((hi - mu) * s) - erfApprox((lo - mu) * s));
+  return 0.5 * profile.y * (profileErf((hi - mu) * s, profile) - profileErf((lo - mu) * s, profile));
 }
 
 // True when a kernel centred at camera-space `u` lies more than `reach` outside a plane.

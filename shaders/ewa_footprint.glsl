@@ -75,22 +75,28 @@ float erfApprox(float x) {
   return x < 0.0 ? -y : y;
 }
 
+// The depth profile (DepthProfile): x the cut in erf's argument, y 1 / erfApprox(x).
+// erf of the profile's cumulative at (z - mu) * s: the argument clamped to the cut.
+float profileErf(float t, vec2 profile) { return erfApprox(clamp(t, -profile.x, profile.x)); }
+
 // Infinite bounds are passed as flags: open tails of the first and last slab of a kernel.
-float slabFraction(float mu, float sigma, float zNear, float zFar, bool openNear, bool openFar) {
+float slabFraction(float mu, float sigma, float zNear, float zFar, bool openNear, bool openFar,
+                   vec2 profile) {
   float s = 1.0 / (sqrt(2.0) * sigma);
-  float hi = openFar ? 1.0 : erfApprox((zFar - mu) * s);
-  float lo = openNear ? -1.0 : erfApprox((zNear - mu) * s);
-  return 0.5 * (hi - lo);
+  float hi = profileErf(openFar ? profile.x : (zFar - mu) * s, profile);
+  float lo = profileErf(openNear ? -profile.x : (zNear - mu) * s, profile);
+  return 0.5 * profile.y * (hi - lo);
 }
 
 // The slab's share split at its middle plane: (front half, back half); they add up to
 // slabFraction's, with one erf more.
-vec2 slabHalves(float mu, float sigma, float zNear, float zFar, bool openNear, bool openFar) {
+vec2 slabHalves(float mu, float sigma, float zNear, float zFar, bool openNear, bool openFar,
+                vec2 profile) {
   float s = 1.0 / (sqrt(2.0) * sigma);
-  float hi = openFar ? 1.0 : erfApprox((zFar - mu) * s);
-  float mid = erfApprox((0.5 * (zNear + zFar) - mu) * s);
-  float lo = openNear ? -1.0 : erfApprox((zNear - mu) * s);
-  return 0.5 * vec2(mid - lo, hi - mid);
+  float hi = profileErf(openFar ? profile.x : (zFar - mu) * s, profile);
+  float mid = profileErf((0.5 * (zNear + zFar) - mu) * s, profile);
+  float lo = profileErf(openNear ? -profile.x : (zNear - mu) * s, profile);
+  return 0.5 * profile.y * vec2(mid - lo, hi - mid);
 }
 
 bool cullKernel(vec3 u, float radius, Projection proj, FootprintParams params) {

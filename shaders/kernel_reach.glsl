@@ -7,6 +7,7 @@
 
 struct KernelReach {
   REACH_FLOAT cutoff;
+  REACH_FLOAT depthCutoff;
   REACH_FLOAT maxSigma;
   REACH_FLOAT minSpacing;
   bool swan;
@@ -28,5 +29,5 @@ REACH_FLOAT worldReach(KernelReach k, REACH_FLOAT depth) {
 }
 
 REACH_FLOAT depthReach(KernelReach k, REACH_FLOAT depthVariance, REACH_FLOAT depth) {
-  return sqrt(k.cutoff * depthVariance) * reachStretch(k, depth);
+  return sqrt(k.depthCutoff * depthVariance) * reachStretch(k, depth);
 }

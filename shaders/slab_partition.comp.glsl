@@ -55,6 +55,7 @@ uniform double uCullDepth;
 uniform double uThickness;
 uniform bool uSurfaces;      // attributes are uploaded and hold surface splats
 uniform double uCutoff;
+uniform double uDepthCutoff;  // KernelReach::depthCutoff
 uniform double uMaxSigma;
 uniform double uMinSpacing;  // Swan's s and the surface offset's unit
 uniform bool uSwan;
@@ -95,7 +96,7 @@ void main() {
     if (!(d > uCullDepth)) {
       extents[m] = vec2(uintBitsToFloat(0x7fc00000u));
     } else {
-      KernelReach k = KernelReach(uCutoff, uMaxSigma, uMinSpacing, uSwan, uOrthographic,
+      KernelReach k = KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uMinSpacing, uSwan, uOrthographic,
                                   uFocalPixels, uPixelsPerUnit);
       double radius = depthReach(k, variance, d);
       vec2 e = vec2(float(d - radius), float(d + radius));

@@ -12,6 +12,7 @@ uniform bool uSplitDepth;   // composite: take only the share between the slab's
 uniform bool uOpenTails;    // the first and last slab of a kernel take its tails
 uniform float uSlabNear;
 uniform float uSlabFar;
+uniform vec2 uDepthProfile;  // the kernels' depth profile (DepthProfile)
 
 flat in vec2 vCenter;
 flat in vec3 vConic;
@@ -44,18 +45,18 @@ void main() {
     if (kClip) {
       vec2 kept = clippedDepths(gl_FragCoord.xy);
       halves = vec2(
-          clippedSlabFraction(mu, vDepthSigma, uSlabNear, mid, openNear, false, kept),
-          clippedSlabFraction(mu, vDepthSigma, mid, uSlabFar, false, openFar, kept));
+          clippedSlabFraction(mu, vDepthSigma, uSlabNear, mid, openNear, false, kept, uDepthProfile),
+          clippedSlabFraction(mu, vDepthSigma, mid, uSlabFar, false, openFar, kept, uDepthProfile));
     } else {
-      halves = slabHalves(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar);
+      halves = slabHalves(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar, uDepthProfile);
     }
     halves *= w;
     w = halves.x + halves.y;
   } else if (kClip) {
     w *= clippedSlabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar,
-                             clippedDepths(gl_FragCoord.xy));
+                             clippedDepths(gl_FragCoord.xy), uDepthProfile);
   } else if (uSplitDepth) {
-    w *= slabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar);
+    w *= slabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar, uDepthProfile);
   }
   if (kMip) {
     outColor = vec4(vValue * w, 0.0, 0.0, 0.0);  // blended with GL_MAX

@@ -37,6 +37,7 @@ uniform float uPixelsPerUnit;
 uniform vec2 uViewport;
 uniform int uFilter;
 uniform float uCutoff;
+uniform float uDepthCutoff;  // KernelReach::depthCutoff: the slabs a kernel is listed in
 uniform float uMinSpacing;
 uniform float uCullDepth;    // kernels at or nearer than this camera depth are culled
 uniform uint uFirst;         // offset of this draw's first entry in order[] (as bound)
@@ -64,7 +65,7 @@ const uint kIndexMask = 0x3fffffffu;
 
 // The reach of this frame's kernels (src/core/kernel_reach.h).
 KernelReach kernelReach() {
-  return KernelReach(uCutoff, uMaxSigma, uMinSpacing, uFilter == kFilterSwan, uOrthographic,
+  return KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uMinSpacing, uFilter == kFilterSwan, uOrthographic,
                      uFocalPixels, uPixelsPerUnit);
 }
 

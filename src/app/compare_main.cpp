@@ -154,6 +154,9 @@ int run(int argc, char** argv) {
       ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
   app.add_option("--cutoff", settings.cutoff, "EWA footprint cutoff r = dx^T Q dx (default 4)")
       ->check(CLI::Range(0.25, 64.0));
+  app.add_option("--depth-cutoff", settings.depthCutoff,
+                 "EWA kernels' depth extent in squared sigmas, or inf (default 1)")
+      ->check(CLI::Range(0.25, double(INFINITY)));
   app.add_option("--classification", classification,
                  "EWA: transfer function per voxel (pre, default) or per pixel (post)")
       ->check(CLI::IsMember({"pre", "post"}));
@@ -197,8 +200,9 @@ int run(int argc, char** argv) {
   ewa.setSlabScissor(slabRects == "on");
   char ewaText[200];
   std::snprintf(ewaText, sizeof ewaText,
-                "kernel width %.2f, cutoff %g, %s-classification%s, occlusion culling %s%s%s",
-                settings.kernelWidth, settings.cutoff, classification.c_str(),
+                "kernel width %.2f, cutoff %g, depth cutoff %g, %s-classification%s, occlusion "
+                "culling %s%s%s",
+                settings.kernelWidth, settings.cutoff, settings.depthCutoff, classification.c_str(),
                 classification == "post" && pairs == "off" ? " without slab pre-integration" : "",
                 ewa.occlusionCulling(settings.occlusionCulling) ? "on" : "off",
                 culling == "auto" ? " (auto)" : "",

@@ -35,6 +35,7 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
     o.render.filter = config.saved.filter;
     ewa::parseRenderMode(config.saved.renderMode, &o.render.mode);
     o.render.cutoff = config.saved.cutoff;
+    o.render.depthCutoff = config.saved.depthCutoff;
     o.render.kernelWidth = config.saved.kernelWidth;
     if (o.render.classification.surface == ewa::SurfaceCriterion::None)
       ewa::parseClassificationMode(config.saved.classification, &o.render.classification.mode);

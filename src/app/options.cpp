@@ -98,6 +98,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   addClipOptions(app, clipText);
   app.add_option("--cutoff", o->render.cutoff, "Footprint cutoff r = dx^T Q dx (default 4)")
       ->check(CLI::Range(0.25, 64.0));
+  app.add_option("--depth-cutoff", o->render.depthCutoff,
+                 "Kernels' depth extent in squared sigmas, 0.25 and up or inf (default 1)")
+      ->check(CLI::Range(0.25, double(INFINITY)));
   app.add_option("--kernel-width", o->render.kernelWidth,
                  "Kernel sigma in voxel spacings, 0.3 to 2 (default 1)")
       ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
@@ -163,9 +166,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   // "series/" and "series" are one folder (and name one bookmarks file beside it).
   while (o->file.size() > 1 && o->file.back() == '/') o->file.pop_back();
   o->resolutionGiven = !res.empty();
-  for (const char* name :
-       {"--filter", "--render-mode", "--cutoff", "--kernel-width", "--classification",
-        "--slab-preintegration", "--slab-thickness", "--background", "--close-up"})
+  for (const char* name : {"--filter", "--render-mode", "--cutoff", "--depth-cutoff",
+                           "--kernel-width", "--classification", "--slab-preintegration",
+                           "--slab-thickness", "--background", "--close-up"})
     o->renderOptionsGiven |= app.count(name) > 0;
   if (!res.empty()) {
     o->width = res[0];

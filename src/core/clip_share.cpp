@@ -52,12 +52,14 @@ RayInterval clippedDepths(const std::vector<HalfSpace>& planes, const Projection
 }
 
 double clippedSlabFraction(double mu, double sigma, double zNear, double zFar, bool openNear,
-                           bool openFar, const RayInterval& kept) {
+                           bool openFar, const RayInterval& kept, const DepthProfile& profile) {
   const double lo = openNear ? kept.near : std::max(zNear, kept.near);
   const double hi = openFar ? kept.far : std::min(zFar, kept.far);
   if (!(hi > lo)) return 0.0;
-  const double s = 1.0 / (std::sqrt(2.0) * sigma);
-  return 0.5 * (erfApprox((hi - mu) * s) - erfApprox((lo - mu) * s));
+  const double s = 1.0 / (std::sqrt(2.0) * sigma), r = profile.erfReach;
+  return 0.5 * profile.scale *
+         (erfApprox(std::clamp((hi - mu) * s, -r, r)) -
+          erfApprox(std::clamp((lo - mu) * s, -r, r)));
 }
 
 bool clipCullsKernel(const std::vector<HalfSpace>& planes, const glm::dvec3& u, double reach) {

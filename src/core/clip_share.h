@@ -9,6 +9,7 @@
 
 #include "core/camera.h"
 #include "core/clip_region.h"
+#include "core/ewa_footprint.h"
 #include "core/volume.h"
 
 namespace ewa {
@@ -35,7 +36,7 @@ RayInterval clippedDepths(const std::vector<HalfSpace>& cameraPlanes, const Proj
 // and the clip cut in one erf difference, so a kernel straddling a plane gives only its part
 // on the kept side.
 double clippedSlabFraction(double mu, double sigma, double zNear, double zFar, bool openNear,
-                           bool openFar, const RayInterval& kept);
+                           bool openFar, const RayInterval& kept, const DepthProfile& profile = {});
 
 // True when a kernel centred at camera-space `u` lies more than `reach` outside one of the
 // half-spaces: none of it is kept, so it is not drawn.

@@ -96,11 +96,21 @@ double erfApprox(double x) {
   return x < 0.0 ? -y : y;
 }
 
-double slabFraction(double mu, double sigma, double zNear, double zFar) {
-  const double s = 1.0 / (std::sqrt(2.0) * sigma);
-  const double hi = std::isinf(zFar) ? (zFar > 0 ? 1.0 : -1.0) : erfApprox((zFar - mu) * s);
-  const double lo = std::isinf(zNear) ? (zNear > 0 ? 1.0 : -1.0) : erfApprox((zNear - mu) * s);
-  return 0.5 * (hi - lo);
+DepthProfile depthProfile(double depthCutoff) {
+  DepthProfile p;
+  if (!(depthCutoff > 0.0) || std::isinf(depthCutoff)) return p;  // uncut
+  p.erfReach = std::sqrt(0.5 * depthCutoff);
+  p.scale = 1.0 / erfApprox(p.erfReach);
+  return p;
+}
+
+double slabFraction(double mu, double sigma, double zNear, double zFar,
+                    const DepthProfile& profile) {
+  const double s = 1.0 / (std::sqrt(2.0) * sigma), r = profile.erfReach;
+  // Infinite bounds clamp to the cut: the open tails.
+  const double hi = erfApprox(std::clamp((zFar - mu) * s, -r, r));
+  const double lo = erfApprox(std::clamp((zNear - mu) * s, -r, r));
+  return 0.5 * profile.scale * (hi - lo);
 }
 
 bool cullKernel(const glm::dvec3& u, double radius, const Projection& proj,

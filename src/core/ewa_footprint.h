@@ -66,9 +66,21 @@ double surfaceSplatMass(const glm::dvec3& spacing, const glm::dvec3& normal, dou
 // frames 1.14x longer on llvmpipe): the GLSL has no erf, and the C++ uses the same formula so
 // the two agree to float rounding.
 double erfApprox(double x);
-// Fraction of a 1D Gaussian (mean mu, standard deviation sigma) between depths zNear and zFar;
-// infinite bounds give the open tails. The per-slab share of a kernel's ray integral.
-double slabFraction(double mu, double sigma, double zNear, double zFar);
+// A kernel's depth profile along a pixel's ray, which splits its ray integral between slabs:
+// the Gaussian cut at sqrt(depthCutoff) standard deviations and scaled back to its whole mass.
+// Cut where the slab partition stops listing the kernel (KernelReach::depthCutoff), a slab the
+// kernel enters or leaves as the view turns holds none of it, so no mass jumps between slabs;
+// uncut (an infinite depthCutoff), the first and last slab listed take the Gaussian's tails.
+struct DepthProfile {
+  double erfReach = 1e30;  // the cut in erf's argument: sqrt(depthCutoff / 2)
+  double scale = 1.0;      // 1 / erfApprox(erfReach): the cut profile keeps the kernel's mass
+};
+DepthProfile depthProfile(double depthCutoff);
+// Fraction of a 1D Gaussian (mean mu, standard deviation sigma), cut as `profile` says, between
+// depths zNear and zFar; infinite bounds give the open tails. The per-slab share of a kernel's
+// ray integral.
+double slabFraction(double mu, double sigma, double zNear, double zFar,
+                    const DepthProfile& profile = {});
 
 // True when a kernel of world bounding radius `radius` centred at camera-space point `u` lies
 // wholly outside the view (or at or behind the eye): tested before the Jacobian is formed.

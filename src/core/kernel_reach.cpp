@@ -7,9 +7,10 @@
 namespace ewa {
 
 KernelReach kernelReach(const Projection& proj, FilterMode filter, double cutoff,
-                        const glm::dvec3& spacing, double kernelWidth) {
+                        const glm::dvec3& spacing, double kernelWidth, double depthCutoff) {
   KernelReach k;
   k.cutoff = cutoff;
+  k.depthCutoff = std::min(cutoff, depthCutoff);
   k.maxSigma = kernelWidth * std::max({spacing.x, spacing.y, spacing.z});
   k.minSpacing = std::min({spacing.x, spacing.y, spacing.z});
   k.swan = filter == FilterMode::Swan;
@@ -32,7 +33,7 @@ double worldReach(const KernelReach& k, double depth) {
 }
 
 double depthReach(const KernelReach& k, double depthVariance, double depth) {
-  return std::sqrt(k.cutoff * depthVariance) * reachStretch(k, depth);
+  return std::sqrt(k.depthCutoff * depthVariance) * reachStretch(k, depth);
 }
 
 double pixelReach(const KernelReach& k, const Projection& proj, double depth) {

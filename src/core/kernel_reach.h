@@ -3,6 +3,7 @@
 // shaders/kernel_reach.glsl mirrors it line for line and a render test holds the two equal.
 #pragma once
 
+#include <cmath>
 #include <glm/vec3.hpp>
 
 #include "core/camera.h"
@@ -12,6 +13,9 @@ namespace ewa {
 
 struct KernelReach {
   double cutoff = 4.0;      // footprint cutoff r = dx^T Q dx: the ellipsoid r <= cutoff
+  // Depth extent in squared standard deviations: the slab partition lists a kernel in the slabs
+  // within sqrt(depthCutoff) sigma of its centre (at most the cutoff; see DepthProfile).
+  double depthCutoff = 4.0;
   double maxSigma = 1.0;    // largest standard deviation of a kernel: kernel width * spacing
   double minSpacing = 1.0;  // Swan's s: kernels stretch once a pixel is wider than it
   bool swan = false;
@@ -21,9 +25,10 @@ struct KernelReach {
 };
 
 // The reach of every kernel of a volume with this spacing under `filter`, `cutoff` and
-// `kernelWidth` (kernelSigma), seen through `proj`.
+// `kernelWidth` (kernelSigma), seen through `proj`; in depth min(cutoff, depthCutoff).
 KernelReach kernelReach(const Projection& proj, FilterMode filter, double cutoff,
-                        const glm::dvec3& spacing, double kernelWidth = 1.0);
+                        const glm::dvec3& spacing, double kernelWidth = 1.0,
+                        double depthCutoff = INFINITY);
 
 // World units one pixel spans at camera depth `depth` (along the view axis).
 double worldPerPixel(const KernelReach& k, double depth);
@@ -33,7 +38,7 @@ double reachStretch(const KernelReach& k, double depth);
 // ellipsoid (stretched by Swan's filter) grown by the low-pass filter's cutoff radius.
 double worldReach(const KernelReach& k, double depth);
 // Half extent in camera depth of a kernel at `depth` whose depth variance (camera-space
-// covariance zz) is `depthVariance`: sqrt(cutoff * variance), stretched by Swan's filter.
+// covariance zz) is `depthVariance`: sqrt(depthCutoff * variance), stretched by Swan's filter.
 double depthReach(const KernelReach& k, double depthVariance, double depth);
 // A bound on the pixel radius of the footprint of a kernel centred at `depth` anywhere in the
 // view of `proj`: off-axis kernels stretch by up to 1 + tan^2 of the half-diagonal angle.

@@ -55,6 +55,7 @@ std::string viewerSettingsToJson(const ViewerSettings& s) {
   j["render"] = {{"filter", filterModeName(s.filter)},
                  {"mode", s.renderMode},
                  {"cutoff", s.cutoff},
+                 {"depth_cutoff", std::isfinite(s.depthCutoff) ? json(s.depthCutoff) : json("inf")},
                  {"kernel_width", s.kernelWidth},
                  {"classification", s.classification},
                  {"slab_preintegration", s.slabPreintegration},
@@ -95,6 +96,13 @@ ViewerSettings viewerSettingsFromJson(const std::string& text, const std::string
       if (mode == "composite" || mode == "xray" || mode == "mip") s.renderMode = mode;
       const double cutoff = r.value("cutoff", s.cutoff);
       if (std::isfinite(cutoff)) s.cutoff = std::clamp(cutoff, 0.25, 64.0);
+      if (r.contains("depth_cutoff")) {  // a number, or "inf" for the uncut profile
+        const json& d = r.at("depth_cutoff");
+        if (d.is_number() && std::isfinite(d.get<double>()))
+          s.depthCutoff = std::clamp(d.get<double>(), 0.25, 64.0);
+        else if (d == "inf")
+          s.depthCutoff = INFINITY;
+      }
       const double width = r.value("kernel_width", s.kernelWidth);
       if (std::isfinite(width)) s.kernelWidth = std::clamp(width, kMinKernelWidth, kMaxKernelWidth);
       const std::string classification = r.value("classification", s.classification);

@@ -22,6 +22,7 @@ struct ViewerSettings {
   FilterMode filter = FilterMode::Ewa;
   std::string renderMode = "composite";
   double cutoff = 4.0;
+  double depthCutoff = 1.0;            // RenderSettings' default; infinite: uncut ("inf")
   double kernelWidth = 1.0;            // RenderSettings' default
   std::string classification = "pre";  // "pre" or "post"
   bool slabPreintegration = true;      // RenderSettings' default

@@ -75,6 +75,7 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
   e.setDouble("uThickness", thickness);
   e.setInt("uSurfaces", surfaces ? 1 : 0);
   e.setDouble("uCutoff", k.cutoff);
+  e.setDouble("uDepthCutoff", k.depthCutoff);
   e.setDouble("uMaxSigma", k.maxSigma);
   e.setDouble("uMinSpacing", std::min({spacing.x, spacing.y, spacing.z}));
   e.setInt("uSwan", k.swan ? 1 : 0);

@@ -55,6 +55,11 @@ FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3
   return params;
 }
 
+DepthProfile depthProfile(const RenderSettings& settings) {
+  if (std::isinf(settings.depthCutoff)) return DepthProfile{};
+  return depthProfile(std::min(settings.cutoff, settings.depthCutoff));
+}
+
 Classification splatClassification(const RenderSettings& settings) {
   Classification c = settings.classification;
   c.postMargin = postClassificationMargin(settings.cutoff, settings.kernelWidth);

@@ -58,8 +58,8 @@ bool SplatRenderer::issueOpaqueQuery(unsigned query) {
   const RenderSettings& settings = frame_.settings;
   const glm::dvec3& sp = volume_->spacing();
   const double maxSpacing = std::max({sp.x, sp.y, sp.z});
-  const KernelReach reach =
-      kernelReach(proj, settings.filter, settings.cutoff, sp, settings.kernelWidth);
+  const KernelReach reach = kernelReach(proj, settings.filter, settings.cutoff, sp,
+                                        settings.kernelWidth, settings.depthCutoff);
   const glm::dvec3 lo = volume_->boundsMin(), hi = volume_->boundsMax();
   const glm::dmat4 view = camera.viewMatrix();
   double farDepth = 0.0;
@@ -144,8 +144,8 @@ void SplatRenderer::computeSlabRects() {
   const RenderSettings& settings = frame_.settings;
   const glm::dvec3& sp = volume_->spacing();
   const FootprintParams params = footprintParams(settings, sp);
-  const KernelReach reach =
-      kernelReach(frame_.proj, settings.filter, settings.cutoff, sp, settings.kernelWidth);
+  const KernelReach reach = kernelReach(frame_.proj, settings.filter, settings.cutoff, sp,
+                                        settings.kernelWidth, settings.depthCutoff);
   // Surface splats sit up to one smallest spacing off their voxel along the normal.
   const glm::dvec3 margin(params.minSpacing);
   const glm::dmat4 view = frame_.camera.viewMatrix();
@@ -438,6 +438,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   frame_.height = height;
   frame_.pairedSlabs = postClassified(settings) && settings.slabPreintegration;
   targets_.resize(width, height, frame_.pairedSlabs);
+  targets_.writeNormals(postClassified(settings) && settings.lighting.enabled);
   stats_ = RenderStats{};
   const GLfloat zero[4] = {0, 0, 0, 0};
   glDisable(GL_SCISSOR_TEST);  // the whole images are cleared
@@ -463,7 +464,8 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     const double thickness =
         composite ? std::max(0.25, settings.slabThickness) * params.minSpacing : 1e30;
     DepthExtent extent;
-    extent.reach = kernelReach(proj, settings.filter, settings.cutoff, sp, settings.kernelWidth);
+    extent.reach = kernelReach(proj, settings.filter, settings.cutoff, sp, settings.kernelWidth,
+                               settings.depthCutoff);
     extent.rotation = camera.rotation();
     extent.spacing = sp;
     extent.kernelWidth = settings.kernelWidth;

@@ -3,6 +3,7 @@
 
 #include <imgui.h>
 
+#include <cmath>
 #include <cstdio>
 #include <utility>
 
@@ -96,6 +97,13 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
   }
 
   changed |= sliderDouble("cutoff", &settings.cutoff, 1.0, 16.0, "%.2f");
+  // The kernels' depth profile: cut at sqrt(depth cutoff) sigma (fewer slabs a kernel), or not.
+  bool cut = std::isfinite(settings.depthCutoff);
+  if (ImGui::Checkbox("cut depth profile", &cut)) {
+    settings.depthCutoff = cut ? RenderSettings().depthCutoff : INFINITY;
+    changed = true;
+  }
+  if (cut) changed |= sliderDouble("depth cutoff", &settings.depthCutoff, 0.25, 16.0, "%.2f");
   changed |=
       sliderDouble("kernel width", &settings.kernelWidth, kMinKernelWidth, kMaxKernelWidth, "%.2f");
   // Post-classification splats values and classifies per pixel: no surface splats there.

@@ -51,6 +51,7 @@ void ViewerWindow::saveSettings() {
   saved_.filter = settings_.filter;
   saved_.renderMode = renderModeName(settings_.mode);
   saved_.cutoff = settings_.cutoff;
+  saved_.depthCutoff = settings_.depthCutoff;
   saved_.kernelWidth = settings_.kernelWidth;
   saved_.classification = classificationModeName(settings_.classification.mode);
   saved_.slabPreintegration = settings_.slabPreintegration;

@@ -34,13 +34,14 @@ struct Case { vec4 pixelMuSigma; vec4 slab; vec4 kernel; };
 layout(std430, binding = 0) readonly buffer Cases { Case cases[]; };
 layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };
 uniform uint uCount;
+uniform vec2 uProfile;  // the depth profile (DepthProfile)
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= uCount) return;
   Case c = cases[i];
   vec2 kept = clippedDepths(c.pixelMuSigma.xy);
   float share = clippedSlabFraction(c.pixelMuSigma.z, c.pixelMuSigma.w, c.slab.x, c.slab.y,
-                                    c.slab.z > 0.5, c.slab.w > 0.5, kept);
+                                    c.slab.z > 0.5, c.slab.w > 0.5, kept, uProfile);
   results[i] = vec4(kept, share, clipCullsKernel(c.kernel.xyz, c.kernel.w) ? 1.0 : 0.0);
 }
 )";
@@ -65,7 +66,11 @@ TEST_F(ClipRender, ShaderClipShareEqualsCpp) {
   region.planes.push_back({glm::dvec3(3, 3, 4), glm::normalize(glm::dvec3(1, -0.5, 2)), true});
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  for (bool ortho : {false, true}) {
+  for (int variant = 0; variant < 4; ++variant) {
+    // Both projections, the depth profile uncut and cut at one sigma.
+    const bool ortho = (variant & 1) != 0;
+    const DepthProfile profile = depthProfile((variant & 2) ? 1.0 : double(INFINITY));
+    program.setVec2("uProfile", glm::vec2(profile.erfReach, profile.scale));
     Camera cam;
     cam.focalPoint = {3, 3, 4};
     cam.position = {14, -6, 20};
@@ -103,10 +108,11 @@ TEST_F(ClipRender, ShaderClipShareEqualsCpp) {
     for (size_t n = 0; n < cases.size(); ++n) {
       const ShaderCase& c = cases[n];
       const RayInterval kept = clippedDepths(planes, proj, glm::dvec2(c.pixelMuSigma));
-      const double share = clippedSlabFraction(c.pixelMuSigma.z, c.pixelMuSigma.w, c.slab.x,
-                                               c.slab.y, c.slab.z > 0.5, c.slab.w > 0.5, kept);
-      const std::string what =
-          (ortho ? "orthographic case " : "perspective case ") + std::to_string(n);
+      const double share =
+          clippedSlabFraction(c.pixelMuSigma.z, c.pixelMuSigma.w, c.slab.x, c.slab.y,
+                              c.slab.z > 0.5, c.slab.w > 0.5, kept, profile);
+      const std::string what = (ortho ? "orthographic case " : "perspective case ") +
+                               std::to_string(n) + ((variant & 2) ? ", cut profile" : "");
       if (!kept.empty()) {
         EXPECT_NEAR(got[n].x, kept.near, 1e-4 * std::max(1.0, std::fabs(kept.near))) << what;
         EXPECT_NEAR(got[n].y, kept.far, 1e-4 * std::max(1.0, std::fabs(kept.far))) << what;
@@ -124,7 +130,8 @@ TEST_F(ClipRender, ShaderClipShareEqualsCpp) {
       clippedShares += share > 0.0 && share < 0.999;
       culled += cull;
     }
-    EXPECT_GT(clippedShares, 20);  // the cases reach the interesting parts
+    // The cases reach the interesting parts (fewer with the cut profile: more whole or none).
+    EXPECT_GT(clippedShares, (variant & 2) ? 12 : 20);
     EXPECT_GT(culled, 10);
     EXPECT_LT(culled, 240);
   }

@@ -50,41 +50,44 @@ TEST_F(KernelReachMirror, GlslEqualsCpp) {
     for (FilterMode filter : {FilterMode::Ewa, FilterMode::Swan, FilterMode::Plain})
       for (glm::dvec3 spacing : {glm::dvec3(1.0), glm::dvec3(0.5, 0.8, 2.0)})
         for (double cutoff : {1.0, 4.0, 9.0})
-          for (double scale : {0.05, 3.0, 700.0}) {  // pixels per unit (ortho) or focal / 100
-            Projection proj;
-            proj.orthographic = orthographic;
-            proj.pixelsPerUnit = scale;
-            proj.focalPixels = scale * 100.0;
-            const KernelReach k = kernelReach(proj, filter, cutoff, spacing);
-            program.setFloat("uCutoff", float(k.cutoff));
-            program.setFloat("uMaxSigma", float(k.maxSigma));
-            program.setFloat("uMinSpacing", float(k.minSpacing));
-            program.setInt("uSwan", k.swan ? 1 : 0);
-            program.setInt("uOrthographic", k.orthographic ? 1 : 0);
-            program.setFloat("uFocalPixels", float(k.focalPixels));
-            program.setFloat("uPixelsPerUnit", float(k.pixelsPerUnit));
-            program.setUInt("uCount", count);
-            in.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-            out.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-            glUseProgram(program.id());
-            glDispatchCompute((count + 63) / 64, 1, 1);
-            glUseProgram(0);
-            glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-            std::vector<glm::vec4> got(count);
-            out.getSubData(0, GLsizeiptr(count * sizeof(glm::vec4)), got.data());
-            for (GLuint i = 0; i < count; ++i) {
-              const double depth = inputs[i].x, variance = inputs[i].y;
-              const double want[4] = {worldPerPixel(k, depth), reachStretch(k, depth),
-                                      worldReach(k, depth), depthReach(k, variance, depth)};
-              for (int c = 0; c < 4; ++c)
-                EXPECT_NEAR(got[i][c], want[c], 1e-5 * std::abs(want[c]) + 1e-7)
-                    << "value " << c << " depth " << depth << " variance " << variance
-                    << (orthographic ? " ortho" : " persp") << " filter " << int(filter)
-                    << " cutoff " << cutoff << " scale " << scale;
-              ++cases;
+          for (double scale : {0.05, 3.0, 700.0})  // pixels per unit (ortho) or focal / 100
+            for (double depthCutoff : {double(INFINITY), 2.25}) {
+              Projection proj;
+              proj.orthographic = orthographic;
+              proj.pixelsPerUnit = scale;
+              proj.focalPixels = scale * 100.0;
+              const KernelReach k = kernelReach(proj, filter, cutoff, spacing, 1.0, depthCutoff);
+              program.setFloat("uCutoff", float(k.cutoff));
+              program.setFloat("uDepthCutoff", float(k.depthCutoff));
+              program.setFloat("uMaxSigma", float(k.maxSigma));
+              program.setFloat("uMinSpacing", float(k.minSpacing));
+              program.setInt("uSwan", k.swan ? 1 : 0);
+              program.setInt("uOrthographic", k.orthographic ? 1 : 0);
+              program.setFloat("uFocalPixels", float(k.focalPixels));
+              program.setFloat("uPixelsPerUnit", float(k.pixelsPerUnit));
+              program.setUInt("uCount", count);
+              in.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+              out.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+              glUseProgram(program.id());
+              glDispatchCompute((count + 63) / 64, 1, 1);
+              glUseProgram(0);
+              glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+              std::vector<glm::vec4> got(count);
+              out.getSubData(0, GLsizeiptr(count * sizeof(glm::vec4)), got.data());
+              for (GLuint i = 0; i < count; ++i) {
+                const double depth = inputs[i].x, variance = inputs[i].y;
+                const double want[4] = {worldPerPixel(k, depth), reachStretch(k, depth),
+                                        worldReach(k, depth), depthReach(k, variance, depth)};
+                for (int c = 0; c < 4; ++c)
+                  EXPECT_NEAR(got[i][c], want[c], 1e-5 * std::abs(want[c]) + 1e-7)
+                      << "value " << c << " depth " << depth << " variance " << variance
+                      << (orthographic ? " ortho" : " persp") << " filter " << int(filter)
+                      << " cutoff " << cutoff << " scale " << scale << " depth cutoff "
+                      << depthCutoff;
+                ++cases;
+              }
             }
-          }
-  EXPECT_EQ(cases, 2u * 3u * 2u * 3u * 3u * inputs.size());
+  EXPECT_EQ(cases, 2u * 3u * 2u * 3u * 3u * 2u * inputs.size());
   gl::checkGlError("KernelReachMirror");
 }
 

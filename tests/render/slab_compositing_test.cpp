@@ -98,7 +98,13 @@ TEST_F(SlabCompositing, ShaderSlabShareEqualsCppErfSplit) {
   const TransferFunction tf = whiteTf(0.5, 1.0);
   renderer()->setVolume(vol);
   renderer()->setTransferFunction(tf);
-  for (bool ortho : {false, true}) {
+  for (int variant = 0; variant < 4; ++variant) {
+    // Both projections; the default depth profile (cut) and the uncut Gaussian.
+    const bool ortho = (variant & 1) != 0;
+    RenderSettings settings;
+    settings.mode = RenderMode::XRay;
+    if (variant & 2) settings.depthCutoff = INFINITY;
+    const DepthProfile profile = depthProfile(settings);
     Camera cam;
     cam.focalPoint = vol.worldPosition(2, 2, 2) + glm::dvec3(0.2, -0.1, 0.0);
     cam.position = cam.focalPoint + glm::dvec3(3.0, 2.0, 5.0);
@@ -114,8 +120,6 @@ TEST_F(SlabCompositing, ShaderSlabShareEqualsCppErfSplit) {
     ASSERT_TRUE(fp.visible);
     ASSERT_GT(glm::length(fp.depthSlope), 0.01);  // the share really varies across the footprint
     const double zNear = fp.depth - 0.3, zFar = fp.depth + 0.5;
-    RenderSettings settings;
-    settings.mode = RenderMode::XRay;
     renderer()->setDepthWindow(std::make_pair(zNear, zFar));
     renderer()->render(cam, settings, w, h);
     renderer()->setDepthWindow(std::nullopt);
@@ -127,13 +131,15 @@ TEST_F(SlabCompositing, ShaderSlabShareEqualsCppErfSplit) {
         const glm::dvec2 pixel(x + 0.5, y + 0.5);
         const double mu = fp.depth + glm::dot(fp.depthSlope, pixel - fp.center);
         const double full = g * footprintWeight(fp, pixel, params.cutoff);
-        const double expected = full * slabFraction(mu, fp.depthSigma, zNear, zFar);
+        const double expected = full * slabFraction(mu, fp.depthSigma, zNear, zFar, profile);
         peak = std::max(peak, full);
         worst = std::max(worst, std::abs(depth[size_t(y) * w + x] - expected));
         got += depth[size_t(y) * w + x];
         whole += full;
       }
-    EXPECT_LT(worst, 2e-3 * peak) << (ortho ? "orthographic" : "perspective");
+    const std::string what = std::string(ortho ? "orthographic" : "perspective") +
+                             (std::isinf(settings.depthCutoff) ? ", uncut" : ", cut");
+    EXPECT_LT(worst, 2e-3 * peak) << what;
     EXPECT_GT(got, 0.2 * whole);  // a real share, neither all nor nothing
     EXPECT_LT(got, 0.8 * whole);
   }

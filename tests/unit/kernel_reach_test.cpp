@@ -30,6 +30,14 @@ TEST(KernelReach, WorkedValues) {
   EXPECT_DOUBLE_EQ(reachStretch(swan, 200.0), 2.0);
   EXPECT_DOUBLE_EQ(worldReach(swan, 200.0), 2.0 * (2.0 * 2.0 + 1.0));
   EXPECT_DOUBLE_EQ(depthReach(swan, 2.25, 200.0), 6.0);
+  // A depth cutoff of 1 lists a kernel one sigma either side: depth reach sqrt(2.25); it never
+  // reaches beyond the footprint's cutoff.
+  const KernelReach cut =
+      kernelReach(proj, FilterMode::Ewa, 4.0, glm::dvec3(0.5, 1.0, 2.0), 1.0, 1.0);
+  EXPECT_DOUBLE_EQ(depthReach(cut, 2.25, 100.0), 1.5);
+  EXPECT_DOUBLE_EQ(worldReach(cut, 100.0), 5.0);  // across the view: unchanged
+  EXPECT_DOUBLE_EQ(kernelReach(proj, FilterMode::Ewa, 4.0, glm::dvec3(1.0), 1.0, 9.0).depthCutoff,
+                   4.0);
 }
 
 }  // namespace

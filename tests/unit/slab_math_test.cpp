@@ -2,10 +2,12 @@
 // per-splat attributes, gradients and surface classification.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
+#include <vector>
 
 #include "core/camera.h"
 #include "core/ewa_footprint.h"
@@ -35,6 +37,65 @@ TEST(SlabMath, SlabSharesOfAKernelSumToOne) {
   EXPECT_NEAR(sum, 1.0, 1e-12);
   // One sigma either side holds 68.27%.
   EXPECT_NEAR(slabFraction(mu, sigma, mu - sigma, mu + sigma), 0.682689, 1e-6);
+}
+
+// Each slab's share of one kernel as the slab partition lists it: slabs of `thickness` from 0,
+// the kernel in every slab its depth reach sqrt(depthCutoff) * sigma overlaps (at most
+// `listCutoff`, the footprint's cutoff), the first and last taking the open tails.
+std::vector<double> listedShares(double mu, double sigma, double thickness, double depthCutoff,
+                                 double listCutoff, int slabs) {
+  const double reach = std::sqrt(std::min(depthCutoff, listCutoff)) * sigma;
+  const int first = int(std::floor((mu - reach) / thickness));
+  const int last = int(std::floor((mu + reach) / thickness));
+  const DepthProfile profile = depthProfile(depthCutoff);
+  std::vector<double> shares(size_t(slabs), 0.0);
+  for (int b = first; b <= last; ++b) {
+    const double zNear = b == first ? -INFINITY : b * thickness;
+    const double zFar = b == last ? INFINITY : (b + 1) * thickness;
+    shares[size_t(b)] = slabFraction(mu, sigma, zNear, zFar, profile);
+  }
+  return shares;
+}
+
+TEST(SlabMath, CutDepthProfileKeepsTheMassInsideItsCut) {
+  const double mu = 3.3, sigma = 0.7;
+  for (double cutoff : {0.5, 1.0, 2.25, 4.0}) {
+    const DepthProfile p = depthProfile(cutoff);
+    const double r = std::sqrt(cutoff) * sigma;
+    EXPECT_NEAR(slabFraction(mu, sigma, mu - r, mu + r, p), 1.0, 1e-12) << cutoff;
+    EXPECT_NEAR(slabFraction(mu, sigma, mu + r, mu + r + 5.0, p), 0.0, 1e-12) << cutoff;
+    EXPECT_NEAR(slabFraction(mu, sigma, -INFINITY, mu - r, p), 0.0, 1e-12) << cutoff;
+    // Inside the cut it is the Gaussian scaled by 1 / erf(sqrt(cutoff / 2)).
+    EXPECT_NEAR(slabFraction(mu, sigma, mu - 0.2, mu + 0.1, p),
+                slabFraction(mu, sigma, mu - 0.2, mu + 0.1) / std::erf(std::sqrt(0.5 * cutoff)),
+                1e-6);
+    double sum = 0.0;
+    for (double share : listedShares(mu, sigma, 0.5, cutoff, 4.0, 20)) sum += share;
+    EXPECT_NEAR(sum, 1.0, 1e-12) << cutoff;
+  }
+  // Uncut: the Gaussian itself, as before the cut existed.
+  const DepthProfile uncut = depthProfile(INFINITY);
+  EXPECT_EQ(slabFraction(mu, sigma, 2.0, 4.0, uncut), slabFraction(mu, sigma, 2.0, 4.0));
+  EXPECT_NEAR(slabFraction(mu, sigma, mu - sigma, mu + sigma, uncut), 0.682689, 1e-6);
+}
+
+// No popping: as a kernel moves in depth its slab shares change continuously when the profile
+// is cut where the partition stops listing it. Uncut, the tail beyond the listed slabs jumps
+// to the next slab when the listing changes (2.3% of the kernel at the cutoff 4).
+TEST(SlabMath, CutDepthProfileMovesNoMassInJumps) {
+  const double sigma = 1.0, thickness = 2.0, step = 1e-4;
+  auto largestJump = [&](double depthCutoff) {
+    double worst = 0.0;
+    std::vector<double> prev = listedShares(5.0, sigma, thickness, depthCutoff, 4.0, 12);
+    for (double mu = 5.0 + step; mu < 9.0; mu += step) {
+      const std::vector<double> now = listedShares(mu, sigma, thickness, depthCutoff, 4.0, 12);
+      for (size_t b = 0; b < now.size(); ++b) worst = std::max(worst, std::abs(now[b] - prev[b]));
+      prev = now;
+    }
+    return worst;
+  };
+  for (double cutoff : {1.0, 2.25, 4.0}) EXPECT_LT(largestJump(cutoff), 1e-3) << cutoff;
+  EXPECT_NEAR(largestJump(INFINITY), 0.5 * std::erfc(std::sqrt(2.0)), 1e-3);
 }
 
 // The footprint's depth Gaussian is the conditional of the 3D kernel along the ray: checked

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -75,6 +76,14 @@ TEST_F(ViewerFiles, SettingsRoundTripAndDefaults) {
   EXPECT_EQ(r.slabThickness, 2.5);
   EXPECT_EQ(r.background, s.background);
   EXPECT_FALSE(r.levelOfDetail);
+  EXPECT_EQ(r.depthCutoff, 1.0);
+  // The uncut depth profile is saved as "inf" (JSON has no infinity) and read back.
+  s.depthCutoff = INFINITY;
+  saveViewerSettings(p, s);
+  EXPECT_TRUE(std::isinf(loadViewerSettings(p).depthCutoff));
+  s.depthCutoff = 2.25;
+  saveViewerSettings(p, s);
+  EXPECT_EQ(loadViewerSettings(p).depthCutoff, 2.25);
 }
 
 // A first run (no settings file) and a settings file without a "render" part must give the
@@ -86,6 +95,7 @@ TEST_F(ViewerFiles, SettingsDefaultsAreTheRenderersDefaults) {
   EXPECT_EQ(render.mode, RenderMode::Composite);
   EXPECT_EQ(fresh.renderMode, "composite");
   EXPECT_EQ(fresh.cutoff, render.cutoff);
+  EXPECT_EQ(fresh.depthCutoff, render.depthCutoff);
   EXPECT_EQ(fresh.kernelWidth, render.kernelWidth);
   EXPECT_EQ(fresh.classification, classificationModeName(render.classification.mode));
   EXPECT_EQ(fresh.slabThickness, render.slabThickness);
@@ -101,12 +111,13 @@ TEST_F(ViewerFiles, SettingsDefaultsAreTheRenderersDefaults) {
 
 TEST_F(ViewerFiles, SettingsClampOddValuesAndRejectBadJson) {
   const ViewerSettings s = viewerSettingsFromJson(
-      R"({"window_size":[1,99999],"render":{"cutoff":1000,"kernel_width":0.01,"mode":"weird","filter":"blurry",
+      R"({"window_size":[1,99999],"render":{"cutoff":1000,"depth_cutoff":0.01,"kernel_width":0.01,"mode":"weird","filter":"blurry",
           "background":[2,-1,0.5]},"unknown":1})",
       "s.json");
   EXPECT_EQ(s.windowWidth, 64);
   EXPECT_EQ(s.windowHeight, 16384);
   EXPECT_EQ(s.cutoff, 64.0);
+  EXPECT_EQ(s.depthCutoff, 0.25);
   EXPECT_EQ(s.kernelWidth, 0.3);
   EXPECT_EQ(s.renderMode, "composite");
   EXPECT_EQ(s.filter, FilterMode::Ewa);
