@@ -217,6 +217,7 @@ def main():
                    help="pre, post (pre-integrated between slabs), post-mean (each slab's mean "
                         "value alone: --slab-preintegration off)")
     p.add_argument("--cutoff", type=float, default=4.0)
+    p.add_argument("--depth-cutoff", help="ewaview's --depth-cutoff (default: ewaview's, 1)")
     p.add_argument("--slab-thickness", type=float, default=2.0,
                    help="slab thickness in voxels (ewaview's default 2)")
     p.add_argument("--repeats", type=int, default=3)
@@ -248,6 +249,8 @@ def main():
                            slab_thickness=a.slab_thickness)
             if classification == "post-mean":
                 options["slab_preintegration"] = "off"
+            if a.depth_cutoff:
+                options["depth_cutoff"] = a.depth_cutoff
             img = scene.render(**options)  # classifies
             times = []
             for _ in range(a.repeats):
