@@ -630,6 +630,9 @@ bool SplatRenderer::stepFrame(double budgetMs) {
   // Drawing within a budget needs each slab's count: read the GPU's back (a short wait) before
   // anything is drawn.
   if (frame_.indirect && std::isfinite(budgetMs) && frame_.nextSlab == 0) takeGpuCounts();
+  // A whole frame drawn in this one step may be timed on the GPU: no wait between its stages.
+  frame_.timed = gpuTimers_ && !std::isfinite(budgetMs) && frame_.drawnWeight == 0.0;
+  if (frame_.timed) glQueryCounter(timers_[0], GL_TIMESTAMP);
   if (frame_.drawSplats) {
     bindFrameState();
     glEnable(GL_BLEND);
@@ -645,11 +648,14 @@ bool SplatRenderer::stepFrame(double budgetMs) {
       stats_.renderMs += millisecondsSince(start);
       return false;
     }
-    // The slab loop's GPU work (splats and the blends between slabs) ends here; waiting for
-    // it costs little, since the final pass below waits anyway.
-    glFinish();
-    stats_.splatMs += millisecondsSince(drawStart);
+    if (!frame_.timed) {
+      // The slab loop's GPU work (splats and the blends between slabs) ends here; waiting for
+      // it costs little, since the final pass below waits anyway.
+      glFinish();
+      stats_.splatMs += millisecondsSince(drawStart);
+    }
   }
+  if (frame_.timed) glQueryCounter(timers_[1], GL_TIMESTAMP);
   drawFinalPass();
   if (frame_.occlusion) stats_.entriesCulled = occlusion_.readCount();  // the GPU is idle
   if (frame_.indirect) {
@@ -695,6 +701,16 @@ void SplatRenderer::drawFinalPass() {
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glUseProgram(0);
+  if (frame_.timed) {
+    // The last timestamp's result waits for the GPU, as glFinish would; the others are there.
+    glQueryCounter(timers_[2], GL_TIMESTAMP);
+    GLuint64 t[3] = {0, 0, 0};
+    for (int i = 2; i >= 0; --i) glGetQueryObjectui64v(timers_[i], GL_QUERY_RESULT, &t[i]);
+    stats_.splatMs += frame_.drawSplats && t[1] > t[0] ? double(t[1] - t[0]) * 1e-6 : 0.0;
+    stats_.compositeMs = t[2] > t[1] ? double(t[2] - t[1]) * 1e-6 : 0.0;
+    gl::checkGlError("SplatRenderer::render");
+    return;
+  }
   glFinish();
   gl::checkGlError("SplatRenderer::render");
   stats_.compositeMs = millisecondsSince(stageStart);

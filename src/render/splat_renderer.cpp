@@ -70,11 +70,13 @@ SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
   const uint64_t memory = pages > 0 && pageSize > 0 ? uint64_t(pages) * uint64_t(pageSize) : ~0ull;
   glMaxSplats_ = maxSplats_ = size_t(std::min(bufferBytes, memory / 2) / sizeof(PackedSplat));
   glCreateQueries(GL_SAMPLES_PASSED, 2, queries_);
+  glCreateQueries(GL_TIMESTAMP, 3, timers_);
   const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   const std::string renderer = name ? name : "";
   softwareGl_ = renderer.find("llvmpipe") != std::string::npos ||
                 renderer.find("softpipe") != std::string::npos;
   laggedTermination_ = !softwareGl_;
+  gpuTimers_ = !softwareGl_;
 }
 
 bool SplatRenderer::gpuPartition() const {
@@ -85,6 +87,7 @@ bool SplatRenderer::gpuPartition() const {
 SplatRenderer::~SplatRenderer() {
   waitForPartition();
   if (queries_[0]) glDeleteQueries(2, queries_);
+  if (timers_[0]) glDeleteQueries(3, timers_);
 }
 
 uint64_t SplatRenderer::storageBlockBytes() const {

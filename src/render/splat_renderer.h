@@ -113,6 +113,12 @@ class SplatRenderer : public Renderer {
   // default on hardware GL) or waits for it (the default on software rasterizers, where the
   // wait costs nothing: the CPU draws everything anyway).
   void setLaggedTermination(bool lagged) { laggedTermination_ = lagged; }
+  // A whole frame's stage times (splats, final pass) from GPU timestamps (glQueryCounter),
+  // without waiting for the splats before the final pass is queued (the default on hardware
+  // GL); or from the CPU's clock around a glFinish after each stage (the default on software
+  // rasterizers, which draw everything when it is waited for anyway). Budgeted steps time
+  // their chunks with glFinish either way: the next chunk is sized from the last one's time.
+  void setGpuTimers(bool on) { gpuTimers_ = on; }
 
  private:
   void rebuildSplats(const Classification& classification);
@@ -228,6 +234,9 @@ class SplatRenderer : public Renderer {
   void drawOrderRange(GLenum mode, bool instanced, size_t first, size_t count);
   unsigned queries_[2] = {0, 0};  // early termination's occlusion queries, used in turn
   bool laggedTermination_ = false;
+  // Timestamps of a whole frame: splat stage begun, splat stage done, final pass done.
+  unsigned timers_[3] = {0, 0, 0};
+  bool gpuTimers_ = false;
   float pointSizeLimit_ = 64.0f;
   float glPointSizeLimit_ = 64.0f;
   RenderStats stats_;
@@ -261,6 +270,7 @@ class SplatRenderer : public Renderer {
     size_t nextEntry = 0;                  // X-ray and MIP: the next entry of the single slab
     double meanEntries = 0.0;              // per slab: the weight of a slab's whole-image passes
     double drawnWeight = 0.0, totalWeight = 0.0;  // for frameProgress()
+    bool timed = false;  // the stage times come from timers_ (setGpuTimers)
   };
   FrameState frame_;
   std::future<void> pendingPartition_;  // the CPU partition of frame_ on a worker thread

@@ -236,6 +236,34 @@ TEST_F(SplatInvariants, StageTimesAreMeasuredAndFitInTheFrame) {
   EXPECT_GT(second.splatMs, 0.0);
 }
 
+// Stage times from GPU timestamps (hardware GL's default; forced here on the software
+// rasterizer): the same picture, stages measured and within the frame, and the CPU's clock
+// path gives the same statistics otherwise.
+TEST_F(SplatInvariants, GpuTimestampsTimeTheStagesWithoutChangingThePicture) {
+  const Volume cube = makeVolume(16, 16, 16, glm::dvec3(1.0), [](int, int, int) { return true; });
+  renderer()->setVolume(cube);
+  renderer()->setTransferFunction(whiteTf(0.3, 1.0));
+  Camera cam;
+  cam.position = {7.5, 7.5, 50.0};
+  cam.focalPoint = {7.5, 7.5, 7.5};
+  RenderSettings settings;
+  renderer()->setPartition(PartitionMode::Cpu);  // the same order of sums both ways
+  Image8 pictures[2];
+  for (int timers = 0; timers < 2; ++timers) {
+    renderer()->setGpuTimers(timers == 1);
+    renderer()->render(cam, settings, 64, 64);
+    renderer()->render(cam, settings, 64, 64);  // classified: the stages alone
+    const RenderStats st = renderer()->stats();
+    const std::string what = timers ? "GPU timestamps" : "CPU clock";
+    EXPECT_GT(st.splatMs, 0.0) << what;
+    EXPECT_GT(st.compositeMs, 0.0) << what;
+    EXPECT_LE(st.partitionMs + st.splatMs + st.compositeMs, st.renderMs * 1.0001) << what;
+    EXPECT_GT(st.slabsDrawn, 2u) << what;
+    pictures[timers] = renderer()->readImage();
+  }
+  EXPECT_EQ(pictures[0].pixels, pictures[1].pixels);
+}
+
 // RenderStats::gpuBytes counts what the renderer allocated: the splat and attribute buffers
 // (8 bytes a splat each), the transfer table (4096 RGBA32F texels), the frame's images (48
 // bytes a pixel) and the partition's buffers; a larger image adds exactly its pixels.
