@@ -21,9 +21,7 @@ Framebuffer::~Framebuffer() {
 }
 
 Framebuffer::Framebuffer(Framebuffer&& other) noexcept
-    : id_(std::exchange(other.id_, 0)),
-      drawBuffers_(std::move(other.drawBuffers_)),
-      activeBuffers_(std::exchange(other.activeBuffers_, 0)) {
+    : id_(std::exchange(other.id_, 0)), drawBuffers_(std::move(other.drawBuffers_)) {
   other.drawBuffers_.clear();
 }
 
@@ -33,7 +31,6 @@ Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
     id_ = std::exchange(other.id_, 0);
     drawBuffers_ = std::move(other.drawBuffers_);
     other.drawBuffers_.clear();
-    activeBuffers_ = std::exchange(other.activeBuffers_, 0);
   }
   return *this;
 }
@@ -46,22 +43,11 @@ void Framebuffer::attachColor(GLuint index, const Texture& texture, GLint level)
     drawBuffers_.push_back(attachment);
     std::sort(drawBuffers_.begin(), drawBuffers_.end());
   }
-  applyDrawBuffers(drawBuffers_.size());
-  glNamedFramebufferReadBuffer(id_, drawBuffers_.front());
-}
-
-void Framebuffer::setDrawBufferCount(size_t count) {
-  count = std::min(count, drawBuffers_.size());
-  if (id_ != 0 && count != activeBuffers_) applyDrawBuffers(count);
-}
-
-void Framebuffer::applyDrawBuffers(size_t count) {
   // glDrawBuffers maps fragment output i to entry i, so leave gaps as GL_NONE.
   std::vector<GLenum> mapping(drawBuffers_.back() - GL_COLOR_ATTACHMENT0 + 1, GL_NONE);
-  for (size_t i = 0; i < count; ++i)
-    mapping[drawBuffers_[i] - GL_COLOR_ATTACHMENT0] = drawBuffers_[i];
+  for (GLenum buffer : drawBuffers_) mapping[buffer - GL_COLOR_ATTACHMENT0] = buffer;
   glNamedFramebufferDrawBuffers(id_, static_cast<GLsizei>(mapping.size()), mapping.data());
-  activeBuffers_ = count;
+  glNamedFramebufferReadBuffer(id_, drawBuffers_.front());
 }
 
 void Framebuffer::attachDepth(const Texture& texture, GLenum attachment, GLint level) {

@@ -1,7 +1,6 @@
 // Framebuffer: a move-only owner of one GL framebuffer object with texture attachments (DSA).
 #pragma once
 
-#include <cstddef>
 #include <vector>
 
 #include "gl/gl_api.h"
@@ -30,10 +29,6 @@ class Framebuffer {
   // Attaches a depth (or depth-stencil) texture: GL_DEPTH_ATTACHMENT and the like.
   void attachDepth(const Texture& texture, GLenum attachment = GL_DEPTH_ATTACHMENT,
                    GLint level = 0);
-  // Fragment outputs land only in the first `count` attached colour indices; the rest are
-  // GL_NONE, so a pass that does not need them does not blend into them (a software
-  // rasterizer blends every draw buffer, even where the output is zero). Attaching resets it.
-  void setDrawBufferCount(size_t count);
 
   // glCheckNamedFramebufferStatus for the draw target.
   GLenum status() const;
@@ -51,11 +46,9 @@ class Framebuffer {
 
  private:
   void release();
-  void applyDrawBuffers(size_t count);
 
   GLuint id_ = 0;
   std::vector<GLenum> drawBuffers_;
-  size_t activeBuffers_ = 0;  // how many of drawBuffers_ receive output
 };
 
 }  // namespace ewa::gl

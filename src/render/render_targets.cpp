@@ -23,11 +23,6 @@ void RenderTargets::resize(int w, int h, bool paired) {
   gl::checkGlError("second slab image");
 }
 
-void RenderTargets::writeNormals(bool on) {
-  for (gl::Framebuffer* fbo : {&slabFbo, &slabOtherFbo})
-    if (*fbo) fbo->setDrawBufferCount(on ? 2 : 1);
-}
-
 void RenderTargets::createImages(int w, int h) {
   // Say which limit a too-large image breaks, before GL fails with a bare error code.
   GLint maxTexture = 0, maxViewport[2] = {0, 0};

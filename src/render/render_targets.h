@@ -29,10 +29,6 @@ struct RenderTargets {
   // asks for it (freed when not); throws gl::GlError if incomplete.
   void resize(int w, int h, bool pairedSlabs = false);
   bool pairedSlabs() const { return bool(slabOther); }
-  // Whether splats write the normal image (post-classification with shading). When not, the
-  // slab framebuffers draw into the slab image alone: llvmpipe blends every draw buffer,
-  // zeros included, and that second RGBA16F blend cost every pre-classified fragment.
-  void writeNormals(bool on);
   // Slab image `i` (0 or 1) and its framebuffer; 1 only with paired slabs.
   const gl::Texture& slabImage(int i) const { return i ? slabOther : slab; }
   gl::Framebuffer& slabTarget(int i) { return i ? slabOtherFbo : slabFbo; }

@@ -438,7 +438,6 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   frame_.height = height;
   frame_.pairedSlabs = postClassified(settings) && settings.slabPreintegration;
   targets_.resize(width, height, frame_.pairedSlabs);
-  targets_.writeNormals(postClassified(settings) && settings.lighting.enabled);
   stats_ = RenderStats{};
   const GLfloat zero[4] = {0, 0, 0, 0};
   glDisable(GL_SCISSOR_TEST);  // the whole images are cleared
