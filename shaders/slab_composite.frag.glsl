@@ -19,6 +19,11 @@ uniform sampler2D uPairTable;
 uniform sampler2D uNeighbourSlab;  // the sums of the slab drawn before this one
 uniform bool uNeighbour;           // that slab is this one's neighbour in depth
 uniform bool uNeighbourInFront;    // front to back: it lies in front
+// Pre-integrated with shading: normals from the gradient of the reconstructed field, by
+// differences of the slab's mean values to the neighbouring pixels and between its halves.
+uniform bool uFieldNormals;
+uniform vec2 uSlabDepths;       // this slab's near and far camera depth
+uniform float uPixelsPerUnit;   // orthographic: pixels per world unit
 
 out vec4 outColor;
 
@@ -29,10 +34,44 @@ struct Surface {
   vec3 toEye;
 };
 
-Surface pixelSurface() {
+// The slab's mean value over both halves at pixel q; false where no kernel reaches it.
+bool slabValue(ivec2 q, out float v) {
+  vec4 s = texelFetch(uSlab, q, 0);
+  float w = s.g + s.a;
+  v = w > 0.0 ? (s.r + s.b) / w : 0.0;
+  return w > 0.0;
+}
+
+// d(value)/d(pixel) along `step`: central where both neighbours have kernels, else one-sided.
+float pixelDerivative(ivec2 q, ivec2 step, float centre) {
+  float ahead, behind;
+  bool hasAhead = slabValue(q + step, ahead), hasBehind = slabValue(q - step, behind);
+  if (hasAhead && hasBehind) return 0.5 * (ahead - behind);
+  if (hasAhead) return ahead - centre;
+  if (hasBehind) return centre - behind;
+  return 0.0;
+}
+
+// The gradient of the reconstructed field in camera space (x right, y up, z towards the eye)
+// per world unit: across the view from the neighbouring pixels at the slab's middle depth,
+// along it from the front half's value to the back half's, half a slab apart.
+vec3 fieldGradient(vec4 s) {
+  ivec2 q = ivec2(gl_FragCoord.xy);
+  float centre = (s.r + s.b) / max(s.g + s.a, 1e-30);
+  float thickness = uSlabDepths.y - uSlabDepths.x;
+  float depth = 0.5 * (uSlabDepths.x + uSlabDepths.y);
+  float pixelsPerUnit = uOrthographic ? uPixelsPerUnit : uFocalPixels / max(depth, 1e-30);
+  bool front = s.g > 0.0, back = s.a > 0.0;
+  float along = front && back ? (s.b / s.a - s.r / s.g) / (0.5 * thickness) : 0.0;
+  return vec3(pixelDerivative(q, ivec2(1, 0), centre) * pixelsPerUnit,
+              pixelDerivative(q, ivec2(0, 1), centre) * pixelsPerUnit, -along);
+}
+
+Surface pixelSurface(vec4 s) {
   Surface p = Surface(vec3(0.0), vec3(0.0, 0.0, 1.0));
   if (!uShading) return p;
-  vec3 normal = texelFetch(uSlabNormal, ivec2(gl_FragCoord.xy), 0).xyz;
+  vec3 normal = uFieldNormals ? fieldGradient(s)
+                              : texelFetch(uSlabNormal, ivec2(gl_FragCoord.xy), 0).xyz;
   vec2 ray = (gl_FragCoord.xy - 0.5 * uViewport) / uFocalPixels;
   float len = length(normal);
   p.normal = len > 0.0 ? normal / len : vec3(0.0);
@@ -71,7 +110,7 @@ vec4 preintegrated(vec4 s) {
     vec4 n = texelFetch(uNeighbourSlab, ivec2(gl_FragCoord.xy), 0);
     if (n.g + n.a > 0.0) other = halfValues(n);
   }
-  Surface p = pixelSurface();
+  Surface p = pixelSurface(s);
   vec4 first, second;
   if (uNeighbourInFront) {
     first = segment(other.y, own.x, s.g, p);
@@ -100,7 +139,7 @@ void main() {
     float value = clamp(s.r / depth, 0.0, 1.0);
     int size = textureSize(uTransfer, 0);
     vec4 tf = texture(uTransfer, (value * float(size - 1) + 0.5) / float(size));
-    color = shade(tf.rgb, pixelSurface());
+    color = shade(tf.rgb, pixelSurface(s));
     depth *= tf.a;
     if (!(depth > 0.0)) discard;
   } else {

@@ -2,6 +2,9 @@
 #include "app/options.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 #include <vector>
@@ -33,6 +36,33 @@ void applyCloseUp(const CLI::App& app, RenderOptionText* text, RenderSettings* s
     text->slabPreintegration = closeUp.slabPreintegration ? "on" : "off";
   if (app.count("--kernel-width") == 0) settings->kernelWidth = closeUp.kernelWidth;
   if (app.count("--cutoff") == 0) settings->cutoff = closeUp.cutoff;
+}
+
+// The option whose value (or one of its comma-separated numbers) is "nan", if any: CLI11's
+// Range checks compare, and NaN passes every comparison, so a NaN cutoff or kernel width
+// would reach the renderer.
+std::string optionWithNan(int argc, const char* const* argv) {
+  for (int i = 1; i < argc; ++i) {
+    std::string name = argv[i], value;
+    if (name.size() < 2 || name[0] != '-') continue;
+    const size_t eq = name.find('=');
+    if (eq != std::string::npos) {
+      value = name.substr(eq + 1);
+      name.resize(eq);
+    } else if (i + 1 < argc) {
+      value = argv[i + 1];
+    }
+    size_t start = 0;
+    while (start <= value.size()) {
+      const size_t end = std::min(value.find(',', start), value.size());
+      const std::string piece = value.substr(start, end - start);
+      char* rest = nullptr;
+      const double number = std::strtod(piece.c_str(), &rest);
+      if (!piece.empty() && rest && *rest == '\0' && std::isnan(number)) return name;
+      start = end + 1;
+    }
+  }
+  return "";
 }
 
 }  // namespace
@@ -143,6 +173,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       ->needs(rawDims);
   app.add_option("--raw-endian", o->rawEndian, "Raw input: little (default) or big")
       ->needs(rawDims);
+  if (const std::string nan = optionWithNan(argc, argv); !nan.empty()) {
+    std::cerr << "ewaview: " << nan << ": not a number (see --help)\n";
+    return {false, 2};
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -16,6 +16,10 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
                  "a pair through the pre-integration table (on, default), or each slab's value "
                  "alone (off)")
       ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--post-normals", p.postNormals,
+                 "Post-classified and pre-integrated, with --shading: normals from the gradient "
+                 "of the reconstructed field (field, default) or the splats' voxel normals (voxel)")
+      ->check(CLI::IsMember({"field", "voxel"}));
   app.add_option("--compositing", p.compositing,
                  "Slab order: front-to-back (default) or back-to-front")
       ->check(CLI::IsMember({"front-to-back", "back-to-front"}));
@@ -65,6 +69,7 @@ std::string finishShadingOptions(const RenderOptionText& p, RenderSettings* s) {
   parseGradientMode(p.gradient, &s->classification.gradient);
   parseClassificationMode(p.classification, &s->classification.mode);
   s->slabPreintegration = p.slabPreintegration == "on";
+  parsePostNormals(p.postNormals, &s->postNormals);
   if (p.surfaceValue) {
     if (!std::isfinite(*p.surfaceValue)) return "--surface-threshold: not a finite number";
     s->classification.surface = SurfaceCriterion::Value;

@@ -19,12 +19,14 @@ struct RenderOptionText {
   std::string gradient = "central";
   std::string classification = "pre";
   std::string slabPreintegration = "on";
+  std::string postNormals = "field";
   std::string occlusionCulling = "auto";
   std::optional<double> surfaceValue;
   std::optional<double> surfaceOpacity;
 };
 
-// Adds --classification, --slab-preintegration, --compositing, --termination, --occlusion-culling,
+// Adds --classification, --slab-preintegration, --post-normals, --compositing, --termination,
+// --occlusion-culling,
 // --xray-map,
 // --xray-scale, --shading, --ambient, --diffuse, --specular, --shininess, --gradient,
 // --surface-threshold,

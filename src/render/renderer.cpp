@@ -26,6 +26,19 @@ bool parseOcclusionCulling(const std::string& text, OcclusionCulling* mode) {
   return false;
 }
 
+const char* postNormalsName(PostNormals normals) {
+  return normals == PostNormals::Field ? "field" : "voxel";
+}
+
+bool parsePostNormals(const std::string& text, PostNormals* normals) {
+  for (PostNormals n : {PostNormals::Field, PostNormals::Voxel})
+    if (text == postNormalsName(n)) {
+      *normals = n;
+      return true;
+    }
+  return false;
+}
+
 const char* renderModeName(RenderMode mode) {
   switch (mode) {
     case RenderMode::Composite:

@@ -34,6 +34,10 @@ bool parseCompositeOrder(const std::string& text, CompositeOrder* order);
 const char* xrayMapName(XRayMap map);
 bool parseXRayMap(const std::string& text, XRayMap* map);
 
+enum class PostNormals { Field = 0, Voxel = 1 };
+const char* postNormalsName(PostNormals normals);
+bool parsePostNormals(const std::string& text, PostNormals* normals);
+
 enum class RendererKind { Splat = 0, ShearWarp = 1 };
 // Occlusion culling (splats over pixels already opaque are not drawn; the same picture). Auto:
 // on hardware GL, off on software rasterizers, where the vertex shader's extra texel fetches
@@ -80,6 +84,11 @@ struct RenderSettings {
   // pair through the pre-integration table (a linear ray segment between them), so thin
   // transfer-function peaks between slab values are not missed; off: each slab's mean alone.
   bool slabPreintegration = true;
+  // Post-classified, pre-integrated and shaded: each pixel's normal is the gradient of the
+  // reconstructed field (screen-space differences of the slab's values, the difference of its
+  // two halves in depth), or the splats' voxel normals summed in a second image (Voxel; also
+  // post without pre-integration, which has no depth difference).
+  PostNormals postNormals = PostNormals::Field;
   double surfaceOpacity = 0.95;  // opacity of the surface-splat layer seen along its normal
   ShearWarpSettings shearWarp;   // read by the shear-warp renderer only
   ClipRegion clip;               // crop box and clipping planes (world space), every renderer

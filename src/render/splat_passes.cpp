@@ -180,8 +180,7 @@ void SplatRenderer::beginCompositeSlab(size_t s) {
   glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, target.id());
   target.clearColor(0, zero);
-  if (postClassified(frame_.settings) && frame_.settings.lighting.enabled)
-    target.clearColor(1, zero);
+  if (voxelNormalSums(frame_.settings)) target.clearColor(1, zero);
 }
 
 void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
@@ -219,6 +218,8 @@ void SplatRenderer::endCompositeSlab(size_t s) {
     const bool adjacent = s > 0 && slabsAdjacent(slabInOrder(s - 1), slabInOrder(s));
     slabProgram_.setInt("uNeighbour", adjacent ? 1 : 0);
   }
+  const Slab& slab = slabInOrder(s);
+  slabProgram_.setVec2("uSlabDepths", glm::vec2(slab.nearDepth, slab.farDepth));
   glUseProgram(slabProgram_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   ++stats_.slabsDrawn;

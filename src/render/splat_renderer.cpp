@@ -184,7 +184,8 @@ void SplatRenderer::uploadSplats() {
 }
 
 void SplatRenderer::syncAttributes(const RenderSettings& settings) {
-  const bool needed = settings.lighting.enabled || classified_.surfaceCount > 0;
+  const bool needed =
+      (settings.lighting.enabled && !fieldNormals(settings)) || classified_.surfaceCount > 0;
   const size_t n = classified_.splats.size();
   if (needed && !attributesUploaded_ && classified_.attributes.size() == n && n > 0) {
     attributeBuffer_.setData(GLsizeiptr(n * sizeof(PackedAttributes)),
@@ -243,6 +244,15 @@ bool SplatRenderer::postClassified(const RenderSettings& settings) {
          settings.mode == RenderMode::Composite;
 }
 
+bool SplatRenderer::fieldNormals(const RenderSettings& settings) {
+  return postClassified(settings) && settings.lighting.enabled && settings.slabPreintegration &&
+         settings.postNormals == PostNormals::Field;
+}
+
+bool SplatRenderer::voxelNormalSums(const RenderSettings& settings) {
+  return postClassified(settings) && settings.lighting.enabled && !fieldNormals(settings);
+}
+
 void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSettings& settings) {
   gl::Program& p = slabProgram_;
   const Lighting& light = settings.lighting;
@@ -259,6 +269,8 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
   p.setFloat("uSpecular", float(light.specular));
   p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
   p.setInt("uPreintegrated", frame_.pairedSlabs ? 1 : 0);
+  p.setInt("uFieldNormals", fieldNormals(settings) ? 1 : 0);
+  p.setFloat("uPixelsPerUnit", float(proj.pixelsPerUnit));
   // Samplers of different types must not share a unit, used or not.
   p.setInt("uPairTable", int(kPairTableUnit));
   p.setInt("uNeighbourSlab", int(kNeighbourSlabUnit));
@@ -271,7 +283,7 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
   const GLenum first[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
   for (int i = 0; i < (frame_.pairedSlabs ? 2 : 1); ++i)
     glNamedFramebufferDrawBuffers(targets_.slabTarget(i).id(), 2,
-                                  post && light.enabled ? both : first);
+                                  voxelNormalSums(settings) ? both : first);
 }
 
 void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex) {

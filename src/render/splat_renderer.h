@@ -133,6 +133,11 @@ class SplatRenderer : public Renderer {
   void setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex = -1);
   // Post-classification (composite mode only): splats carry values, the slab pass classifies.
   static bool postClassified(const RenderSettings& settings);
+  // Post-classified, shaded and pre-integrated with PostNormals::Field: the slab pass takes
+  // each pixel's normal from the field's gradient (no voxel normals read or summed).
+  static bool fieldNormals(const RenderSettings& settings);
+  // Post-classified and shaded from voxel normals: splats sum them into the normal image.
+  static bool voxelNormalSums(const RenderSettings& settings);
   // The slab pass's uniforms and the slab buffer's draw buffers for this frame.
   void setSlabPassUniforms(const Projection& proj, const RenderSettings& settings);
   void drawSplats(const Slab& slab, bool quads, int slabIndex = -1);

@@ -126,6 +126,18 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
     ImGui::SetTooltip(
         "Post-classified, pre-integrated, kernel width 0.7, cutoff 5: nearest to a "
         "ray caster close up (ewaview --close-up)");
+  // Shaded post-classification's normals: the field's gradient (pre-integrated only) or voxels'.
+  ImGui::BeginDisabled(!post || !settings.slabPreintegration);
+  bool field = settings.postNormals == PostNormals::Field;
+  if (ImGui::Checkbox("field normals", &field)) {
+    settings.postNormals = field ? PostNormals::Field : PostNormals::Voxel;
+    changed = true;
+  }
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(
+        "Shaded, post-classified and pre-integrated: normals from the gradient of the "
+        "reconstructed field (off: the voxels' normals; ewaview --post-normals)");
+  ImGui::EndDisabled();
   changed |= sliderDouble("slab (voxels)", &settings.slabThickness, 0.25, 8.0, "%.2f",
                           ImGuiSliderFlags_Logarithmic);
 

@@ -118,17 +118,21 @@ namespace {
 
 TEST(Cli, RenderModeAndShadingOptions) {
   const std::string png = testOutputDir() + "/cli_modes.png";
-  for (const char* args : {"--render-mode mip", "--render-mode xray --xray-map sum",
-                           "--shading --surface-threshold 200 --compositing back-to-front"}) {
+  for (const char* args :
+       {"--render-mode mip", "--render-mode xray --xray-map sum",
+        "--shading --surface-threshold 200 --compositing back-to-front", "--depth-cutoff inf",
+        "--depth-cutoff 2.25", "--classification post --shading --post-normals voxel"}) {
     std::filesystem::remove(png);
     const CliRun r = ewaview(std::string("--synthetic sphere:16 --resolution 24,24 ") + args +
                              " --output " + png);
     EXPECT_EQ(r.code, 0) << args << ": " << r.err;
     EXPECT_TRUE(std::filesystem::exists(png)) << args;
   }
-  for (const char* bad : {"--render-mode maximum", "--surface-threshold nan", "--termination 2",
-                          "--surface-threshold 1 --surface-opacity-threshold 0.5",
-                          "--surface-min-gradient 0.1", "--xray-map log"}) {
+  for (const char* bad :
+       {"--render-mode maximum", "--surface-threshold nan", "--termination 2",
+        "--surface-threshold 1 --surface-opacity-threshold 0.5", "--surface-min-gradient 0.1",
+        "--xray-map log", "--depth-cutoff 0", "--depth-cutoff nan", "--post-normals bent",
+        "--cutoff nan", "--kernel-width=nan", "--camera-position 1,nan,2"}) {
     const CliRun r = ewaview(std::string("--synthetic sphere:16 -o x.png ") + bad);
     EXPECT_EQ(r.code, 2) << bad;
     EXPECT_EQ(lineCount(r.err), 1) << bad << ": " << r.err;

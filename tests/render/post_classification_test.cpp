@@ -133,3 +133,71 @@ TEST_F(PostClassification, XRayAndMipStayPreClassified) {
 
 }  // namespace
 }  // namespace ewa::test
+
+namespace ewa::test {
+namespace {
+
+// An opaque ball, post-classified, pre-integrated and shaded with a head light (no specular),
+// seen head-on in parallel projection: across its middle row the brightness falls off as
+// Lambert's law says, ambient + diffuse * sqrt(1 - (x / R)^2), whether the normals are the
+// field's gradient or the splats' voxel normals. A gradient missing its depth part would leave
+// the centre at the ambient term; one whose screen part were in pixels instead of world units
+// would keep the rim too bright.
+TEST_F(PostClassification, ShadedBallFollowsLambertWithEitherNormals) {
+  const Volume ball = floatVolume(40, [](int i, int j, int k) {
+    const double r =
+        std::sqrt((i - 19.5) * (i - 19.5) + (j - 19.5) * (j - 19.5) + (k - 19.5) * (k - 19.5));
+    return float(1.0 / (1.0 + std::exp(2.0 * (r - 14.0))));  // 1 inside, 0 outside
+  });
+  TransferFunction tf;
+  tf.opacity = {{0.0, 0.0}, {0.4, 0.0}, {0.6, 1.0}, {1.0, 1.0}};
+  tf.color = {{0.0, glm::dvec3(1.0)}, {1.0, glm::dvec3(1.0)}};
+  renderer()->setVolume(ball);
+  renderer()->setTransferFunction(tf);
+  Camera cam;
+  cam.focalPoint = {19.5, 19.5, 19.5};
+  cam.position = {19.5, 19.5, 120.0};
+  cam.orthographic = true;
+  cam.viewAngleDeg = 2.0 * std::atan(20.0 / 100.5) * 180.0 / M_PI;  // 40 units across
+  RenderSettings settings;
+  settings.classification.mode = ClassificationMode::Post;
+  settings.lighting.enabled = true;
+  settings.lighting.ambient = 0.3;
+  settings.lighting.diffuse = 0.7;
+  settings.lighting.specular = 0.0;
+  size_t bytes[2] = {0, 0};
+  for (PostNormals normals : {PostNormals::Field, PostNormals::Voxel}) {
+    settings.postNormals = normals;
+    const int size = 160;
+    renderer()->render(cam, settings, size, size);
+    bytes[int(normals)] = renderer()->stats().gpuBytes;
+    const Image8 img = renderer()->readImage();
+    const uint8_t* row = &img.pixels[size_t(size / 2) * size * 3];
+    int left = size, right = -1;
+    for (int x = 0; x < size; ++x)
+      if (row[x * 3] > 40) left = std::min(left, x), right = std::max(right, x);
+    ASSERT_LT(left, right);
+    const double centre = 0.5 * (left + right), radius = 0.5 * (right - left);
+    EXPECT_NEAR(radius, 14.0 * size / 40.0, 4.0);  // 14 units
+    const double peak = row[int(centre) * 3];
+    EXPECT_GT(peak, 200.0);  // white, lit head-on
+    double sum = 0.0;
+    int points = 0;
+    for (double f : {0.0, 0.2, 0.4, 0.6, 0.8}) {
+      const int x = int(std::lround(centre + f * radius));
+      const double want = (0.3 + 0.7 * std::sqrt(1.0 - f * f)) / (0.3 + 0.7);
+      const double got = row[x * 3] / peak;
+      EXPECT_NEAR(got, want, 0.12) << postNormalsName(normals) << " at " << f << " R";
+      sum += (got - want) * (got - want);
+      ++points;
+    }
+    EXPECT_LT(std::sqrt(sum / points), 0.07) << postNormalsName(normals);
+  }
+  // Field normals read no voxel normals: the attributes (8 bytes a splat) stay off the GPU
+  // (a 16-byte placeholder keeps their binding).
+  EXPECT_EQ(bytes[int(PostNormals::Voxel)] + 16,
+            bytes[int(PostNormals::Field)] + 8 * renderer()->splats().splats().size());
+}
+
+}  // namespace
+}  // namespace ewa::test
