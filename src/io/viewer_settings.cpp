@@ -59,6 +59,7 @@ std::string viewerSettingsToJson(const ViewerSettings& s) {
                  {"kernel_width", s.kernelWidth},
                  {"classification", s.classification},
                  {"slab_preintegration", s.slabPreintegration},
+                 {"post_normals", s.postNormals},
                  {"slab_thickness", s.slabThickness},
                  {"background", {s.background.r, s.background.g, s.background.b}},
                  {"level_of_detail", s.levelOfDetail}};
@@ -108,6 +109,8 @@ ViewerSettings viewerSettingsFromJson(const std::string& text, const std::string
       const std::string classification = r.value("classification", s.classification);
       if (classification == "pre" || classification == "post") s.classification = classification;
       s.slabPreintegration = r.value("slab_preintegration", s.slabPreintegration);
+      const std::string normals = r.value("post_normals", s.postNormals);
+      if (normals == "field" || normals == "voxel") s.postNormals = normals;
       const double slab = r.value("slab_thickness", s.slabThickness);
       if (std::isfinite(slab)) s.slabThickness = std::clamp(slab, 0.05, 1000.0);
       if (r.contains("background")) {

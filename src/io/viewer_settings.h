@@ -26,6 +26,7 @@ struct ViewerSettings {
   double kernelWidth = 1.0;            // RenderSettings' default
   std::string classification = "pre";  // "pre" or "post"
   bool slabPreintegration = true;      // RenderSettings' default
+  std::string postNormals = "field";   // "field" or "voxel"
   double slabThickness = 2.0;          // RenderSettings' default
   glm::dvec3 background{0.0};
   bool levelOfDetail = true;  // coarser level while moving

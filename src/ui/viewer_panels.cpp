@@ -55,6 +55,7 @@ void ViewerWindow::saveSettings() {
   saved_.kernelWidth = settings_.kernelWidth;
   saved_.classification = classificationModeName(settings_.classification.mode);
   saved_.slabPreintegration = settings_.slabPreintegration;
+  saved_.postNormals = postNormalsName(settings_.postNormals);
   saved_.slabThickness = settings_.slabThickness;
   saved_.background = settings_.background;
   saved_.levelOfDetail = levelOfDetail_;
