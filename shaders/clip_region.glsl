@@ -42,7 +42,8 @@ float clippedSlabFraction(float mu, float sigma, float zNear, float zFar, bool o
   float hi = openFar ? kept.y : min(zFar, kept.y);
   if (!(hi > lo)) return 0.0;
   float s = 1.0 / (sqrt(2.0) * sigma);
-  return 0.5 * profile.y * (profileErf((hi - mu) * s, profile) - profileErf((lo - mu) * s, profile));
+  return 0.5 * profile.y *
+         (profileErf((hi - mu) * s, profile) - profileErf((lo - mu) * s, profile));
 }
 
 // True when a kernel centred at camera-space `u` lies more than `reach` outside a plane.

@@ -96,8 +96,8 @@ void main() {
     if (!(d > uCullDepth)) {
       extents[m] = vec2(uintBitsToFloat(0x7fc00000u));
     } else {
-      KernelReach k = KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uMinSpacing, uSwan, uOrthographic,
-                                  uFocalPixels, uPixelsPerUnit);
+      KernelReach k = KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uMinSpacing, uSwan,
+                                  uOrthographic, uFocalPixels, uPixelsPerUnit);
       double radius = depthReach(k, variance, d);
       vec2 e = vec2(float(d - radius), float(d + radius));
       extents[m] = e;

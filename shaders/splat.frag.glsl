@@ -44,9 +44,10 @@ void main() {
     float mid = 0.5 * (uSlabNear + uSlabFar);
     if (kClip) {
       vec2 kept = clippedDepths(gl_FragCoord.xy);
-      halves = vec2(
-          clippedSlabFraction(mu, vDepthSigma, uSlabNear, mid, openNear, false, kept, uDepthProfile),
-          clippedSlabFraction(mu, vDepthSigma, mid, uSlabFar, false, openFar, kept, uDepthProfile));
+      halves = vec2(clippedSlabFraction(mu, vDepthSigma, uSlabNear, mid, openNear, false, kept,
+                                        uDepthProfile),
+                    clippedSlabFraction(mu, vDepthSigma, mid, uSlabFar, false, openFar, kept,
+                                        uDepthProfile));
     } else {
       halves = slabHalves(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar, uDepthProfile);
     }

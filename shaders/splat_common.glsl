@@ -65,8 +65,8 @@ const uint kIndexMask = 0x3fffffffu;
 
 // The reach of this frame's kernels (src/core/kernel_reach.h).
 KernelReach kernelReach() {
-  return KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uMinSpacing, uFilter == kFilterSwan, uOrthographic,
-                     uFocalPixels, uPixelsPerUnit);
+  return KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uMinSpacing, uFilter == kFilterSwan,
+                     uOrthographic, uFocalPixels, uPixelsPerUnit);
 }
 
 // Fills the flat outputs for splat number `n` of this draw; false when nothing is to be drawn.

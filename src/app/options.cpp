@@ -174,7 +174,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--raw-endian", o->rawEndian, "Raw input: little (default) or big")
       ->needs(rawDims);
   if (const std::string nan = optionWithNan(argc, argv); !nan.empty()) {
-    std::cerr << "ewaview: " << nan << ": not a number (see --help)\n";
+    std::cerr << "ewaview: " << nan << ": not a finite number (see --help)\n";
     return {false, 2};
   }
   try {
