@@ -8,9 +8,15 @@
 #include <exception>
 #include <iostream>
 
+#include "app/options.h"
+
 namespace ewa {
 
 int benchmarkMain(const char* program, int (*run)(int, char**), int argc, char** argv) {
+  if (const std::string nan = optionWithNan(argc, argv); !nan.empty()) {
+    std::cerr << program << ": " << nan << ": not a finite number (see --help)\n";
+    return 2;
+  }
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

@@ -38,9 +38,8 @@ void applyCloseUp(const CLI::App& app, RenderOptionText* text, RenderSettings* s
   if (app.count("--cutoff") == 0) settings->cutoff = closeUp.cutoff;
 }
 
-// The option whose value (or one of its comma-separated numbers) is "nan", if any: CLI11's
-// Range checks compare, and NaN passes every comparison, so a NaN cutoff or kernel width
-// would reach the renderer.
+}  // namespace
+
 std::string optionWithNan(int argc, const char* const* argv) {
   for (int i = 1; i < argc; ++i) {
     std::string name = argv[i], value;
@@ -64,8 +63,6 @@ std::string optionWithNan(int argc, const char* const* argv) {
   }
   return "";
 }
-
-}  // namespace
 
 ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   CLI::App app{

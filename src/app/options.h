@@ -48,4 +48,9 @@ struct ParseResult {
 
 ParseResult parseCommandLine(int argc, const char* const* argv, Options* options);
 
+// The option whose value (or one of its comma-separated numbers) reads as NaN, if any, else "":
+// CLI11's Range checks compare, and NaN passes every comparison, so a NaN cutoff or kernel
+// width would reach the renderer. ewaview and the benchmark programs refuse it before parsing.
+std::string optionWithNan(int argc, const char* const* argv);
+
 }  // namespace ewa

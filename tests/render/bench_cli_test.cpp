@@ -130,6 +130,13 @@ TEST(CompareCli, BadOptionsFailWithOneLine) {
     EXPECT_NE(r.code, 0) << args;
     EXPECT_GE(lineCount(r.err), 1) << args;
   }
+  // NaN passes CLI11's ranges: the benchmarks' shared main refuses it first, in one line.
+  for (const char* args : {"--kernel-width nan", "--cutoff=nan", "--depth-cutoff NaN"}) {
+    const CliRun r = compare(args);
+    EXPECT_EQ(r.code, 2) << args;
+    EXPECT_EQ(lineCount(r.err), 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find("not a finite number"), std::string::npos) << r.err;
+  }
 }
 
 TEST(StatsCli, OneJsonLineWithSplatsTimesAndMemory) {
