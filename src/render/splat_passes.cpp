@@ -55,11 +55,9 @@ double millisecondsSince(SplatRenderer::Clock::time_point t) {
 bool SplatRenderer::issueOpaqueQuery(unsigned query) {
   const Camera& camera = frame_.camera;
   const Projection& proj = frame_.proj;
-  const RenderSettings& settings = frame_.settings;
   const glm::dvec3& sp = volume_->spacing();
   const double maxSpacing = std::max({sp.x, sp.y, sp.z});
-  const KernelReach reach = kernelReach(proj, settings.filter, settings.cutoff, sp,
-                                        settings.kernelWidth, settings.depthCutoff);
+  const KernelReach& reach = frame_.reach;
   const glm::dvec3 lo = volume_->boundsMin(), hi = volume_->boundsMax();
   const glm::dmat4 view = camera.viewMatrix();
   double farDepth = 0.0;
@@ -144,8 +142,7 @@ void SplatRenderer::computeSlabRects() {
   const RenderSettings& settings = frame_.settings;
   const glm::dvec3& sp = volume_->spacing();
   const FootprintParams params = footprintParams(settings, sp);
-  const KernelReach reach = kernelReach(frame_.proj, settings.filter, settings.cutoff, sp,
-                                        settings.kernelWidth, settings.depthCutoff);
+  const KernelReach& reach = frame_.reach;
   // Surface splats sit up to one smallest spacing off their voxel along the normal.
   const glm::dvec3 margin(params.minSpacing);
   const glm::dmat4 view = frame_.camera.viewMatrix();

@@ -218,7 +218,7 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setVec2("uViewport", glm::vec2(proj.width, proj.height));
   p.setInt("uFilter", int(params.filter));
   p.setFloat("uCutoff", float(params.cutoff));
-  p.setFloat("uDepthCutoff", float(std::min(settings.cutoff, settings.depthCutoff)));
+  p.setFloat("uDepthCutoff", float(frame_.reach.depthCutoff));  // the partition's reach
   const DepthProfile profile = depthProfile(settings);
   p.setVec2("uDepthProfile", glm::vec2(profile.erfReach, profile.scale));
   p.setFloat("uMinSpacing", float(params.minSpacing));
