@@ -254,8 +254,8 @@ class SplatRenderer : public Renderer {
     Projection proj;
     RenderSettings settings;
     int width = 0, height = 0;
-    KernelReach
-        reach;  // of this frame's kernels: partition, slab rectangles, termination box, quads
+    // Of this frame's kernels: the partition, slab rectangles, termination box and quad test.
+    KernelReach reach;
     bool texelBuffers = false;         // splats read from texel buffers (texelBuffers())
     double fragmentsPerEntry = 1.0;    // the largest footprint's square, in pixels (budgets)
     bool partitionPending = false;     // the CPU partition runs on pendingPartition_
