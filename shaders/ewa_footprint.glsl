@@ -17,7 +17,7 @@ struct Projection {
 struct FootprintParams {
   int filterMode;
   float cutoff;
-  float minSpacing;
+  float swanSpacing;  // Swan's s: kernel width * smallest spacing
   float cullDepth;
 };
 
@@ -119,7 +119,7 @@ Footprint computeFootprint(vec3 u, mat3 covIn, Projection proj, FootprintParams 
   if (!(fp.depth > params.cullDepth)) return fp;
   float d = fp.depth;
   float ppu = proj.orthographic ? proj.pixelsPerUnit : proj.focalPixels / d;
-  fp.stretch = params.filterMode == kFilterSwan ? max(1.0, 1.0 / (ppu * params.minSpacing)) : 1.0;
+  fp.stretch = params.filterMode == kFilterSwan ? max(1.0, 1.0 / (ppu * params.swanSpacing)) : 1.0;
   mat3 cov = covIn * (fp.stretch * fp.stretch);
   vec3 j0, j1;
   if (proj.orthographic) {

@@ -9,7 +9,7 @@ struct KernelReach {
   REACH_FLOAT cutoff;
   REACH_FLOAT depthCutoff;
   REACH_FLOAT maxSigma;
-  REACH_FLOAT minSpacing;
+  REACH_FLOAT swanSpacing;
   bool swan;
   bool orthographic;
   REACH_FLOAT focalPixels;
@@ -21,7 +21,7 @@ REACH_FLOAT worldPerPixel(KernelReach k, REACH_FLOAT depth) {
 }
 
 REACH_FLOAT reachStretch(KernelReach k, REACH_FLOAT depth) {
-  return k.swan ? max(1.0, worldPerPixel(k, depth) / k.minSpacing) : 1.0;
+  return k.swan ? max(1.0, worldPerPixel(k, depth) / k.swanSpacing) : 1.0;
 }
 
 REACH_FLOAT worldReach(KernelReach k, REACH_FLOAT depth) {

@@ -57,7 +57,8 @@ uniform bool uSurfaces;      // attributes are uploaded and hold surface splats
 uniform double uCutoff;
 uniform double uDepthCutoff;  // KernelReach::depthCutoff
 uniform double uMaxSigma;
-uniform double uMinSpacing;  // Swan's s and the surface offset's unit
+uniform double uMinSpacing;  // the surface offset's unit
+uniform double uSwanSpacing;  // Swan's s: kernel width * smallest spacing
 uniform bool uSwan;
 uniform bool uOrthographic;
 uniform double uFocalPixels;
@@ -96,7 +97,7 @@ void main() {
     if (!(d > uCullDepth)) {
       extents[m] = vec2(uintBitsToFloat(0x7fc00000u));
     } else {
-      KernelReach k = KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uMinSpacing, uSwan,
+      KernelReach k = KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uSwanSpacing, uSwan,
                                   uOrthographic, uFocalPixels, uPixelsPerUnit);
       double radius = depthReach(k, variance, d);
       vec2 e = vec2(float(d - radius), float(d + radius));

@@ -38,7 +38,8 @@ uniform vec2 uViewport;
 uniform int uFilter;
 uniform float uCutoff;
 uniform float uDepthCutoff;  // KernelReach::depthCutoff: the slabs a kernel is listed in
-uniform float uMinSpacing;
+uniform float uMinSpacing;   // the surface offset's unit
+uniform float uSwanSpacing;  // Swan's s: kernel width * smallest spacing
 uniform float uCullDepth;    // kernels at or nearer than this camera depth are culled
 uniform uint uFirst;         // offset of this draw's first entry in order[] (as bound)
 uniform int uSlabIndex;      // >= 0: the slab's offset is slabFirst[uSlabIndex] instead
@@ -65,7 +66,7 @@ const uint kIndexMask = 0x3fffffffu;
 
 // The reach of this frame's kernels (src/core/kernel_reach.h).
 KernelReach kernelReach() {
-  return KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uMinSpacing, uFilter == kFilterSwan,
+  return KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uSwanSpacing, uFilter == kFilterSwan,
                      uOrthographic, uFocalPixels, uPixelsPerUnit);
 }
 
@@ -97,7 +98,7 @@ bool setupSplat(uint n, out Footprint fp) {
   vec3 u = (uView * vec4(world, 1.0)).xyz;
   Projection proj = Projection(uOrthographic, uFocalPixels, uPixelsPerUnit, 0.5 * uViewport,
                                uViewport);
-  FootprintParams params = FootprintParams(uFilter, uCutoff, uMinSpacing, uCullDepth);
+  FootprintParams params = FootprintParams(uFilter, uCutoff, uSwanSpacing, uCullDepth);
   // Cull before forming the Jacobian.
   float radius = worldReach(kernelReach(), -u.z);
   if (cullKernel(u, radius, proj, params)) return false;

@@ -79,8 +79,9 @@ FloatImage lowPassAndCrop(const FloatImage& fine, const QualityOptions& o) {
 FloatImage rayReference(const Volume& sheet, const TransferFunction& tf, const Camera& camera,
                         const QualityOptions& o) {
   const int fine = referenceRenderSize(o);
-  return lowPassAndCrop(
-      sheetRayImage(sheet, tf, widened(camera, o), fine, fine, RenderSettings().background), o);
+  return lowPassAndCrop(sheetRayImage(sheet, tf, widened(camera, o), fine, fine,
+                                      RenderSettings().background, o.kernelWidth),
+                        o);
 }
 
 FloatImage renderReference(SplatRenderer& renderer, const Camera& camera, FilterMode filter,

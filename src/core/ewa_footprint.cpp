@@ -138,7 +138,7 @@ Footprint computeFootprint(const glm::dvec3& u, const glm::dmat3& covIn, const P
   // Pixels per world unit across the ray at this depth: Swan's sampling rate test.
   const double ppu = proj.orthographic ? proj.pixelsPerUnit : proj.focalPixels / d;
   fp.stretch =
-      params.filter == FilterMode::Swan ? std::max(1.0, 1.0 / (ppu * params.minSpacing)) : 1.0;
+      params.filter == FilterMode::Swan ? std::max(1.0, 1.0 / (ppu * params.swanSpacing)) : 1.0;
   const glm::dmat3 cov = covIn * (fp.stretch * fp.stretch);
 
   // First two rows of the Jacobian J of camera space -> (pixel x, pixel y, distance along ray).

@@ -21,7 +21,11 @@ bool parseFilterMode(const std::string& text, FilterMode* mode);
 struct FootprintParams {
   FilterMode filter = FilterMode::Ewa;
   double cutoff = 4.0;      // r = dx^T Q dx is cut off above this
-  double minSpacing = 1.0;  // smallest voxel spacing: Swan's s (the highest sampling rate)
+  double minSpacing = 1.0;  // smallest voxel spacing (the near cull and slab units)
+  // Swan's s: the smallest kernel standard deviation, kernel width x smallest spacing. Kernels
+  // stretch once a pixel is wider than it, so a narrower kernel is stretched to the same screen
+  // size a wider one is (at width 1 the voxel spacing, Swan's rule).
+  double swanSpacing = 1.0;
   double cullDepth = 1e-3;  // voxels at or closer than this to the eye plane are culled
 };
 

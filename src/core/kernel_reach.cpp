@@ -12,7 +12,7 @@ KernelReach kernelReach(const Projection& proj, FilterMode filter, double cutoff
   k.cutoff = cutoff;
   k.depthCutoff = std::min(cutoff, depthCutoff);
   k.maxSigma = kernelWidth * std::max({spacing.x, spacing.y, spacing.z});
-  k.minSpacing = std::min({spacing.x, spacing.y, spacing.z});
+  k.swanSpacing = kernelWidth * std::min({spacing.x, spacing.y, spacing.z});
   k.swan = filter == FilterMode::Swan;
   k.orthographic = proj.orthographic;
   k.focalPixels = proj.focalPixels;
@@ -25,7 +25,7 @@ double worldPerPixel(const KernelReach& k, double depth) {
 }
 
 double reachStretch(const KernelReach& k, double depth) {
-  return k.swan ? std::max(1.0, worldPerPixel(k, depth) / k.minSpacing) : 1.0;
+  return k.swan ? std::max(1.0, worldPerPixel(k, depth) / k.swanSpacing) : 1.0;
 }
 
 double worldReach(const KernelReach& k, double depth) {

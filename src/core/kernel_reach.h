@@ -17,7 +17,7 @@ struct KernelReach {
   // within sqrt(depthCutoff) sigma of its centre (at most the cutoff; see DepthProfile).
   double depthCutoff = 4.0;
   double maxSigma = 1.0;    // largest standard deviation of a kernel: kernel width * spacing
-  double minSpacing = 1.0;  // Swan's s: kernels stretch once a pixel is wider than it
+  double swanSpacing = 1.0;  // Swan's s (FootprintParams::swanSpacing): kernel width * spacing
   bool swan = false;
   bool orthographic = false;
   double focalPixels = 1.0;    // perspective: pixels per world unit at depth 1

@@ -24,6 +24,7 @@ struct KernelOnRay {
 
 struct SheetKernels {
   const Volume& sheet;
+  glm::dvec3 sigma;         // the kernels' standard deviations per axis (kernel width x spacing)
   std::vector<double> tau;  // extinction per voxel
   std::vector<glm::dvec3> color;
 };
@@ -35,7 +36,7 @@ void kernelsOnRay(const SheetKernels& k, const glm::dvec3& o, const glm::dvec3& 
                   std::vector<KernelOnRay>& out) {
   out.clear();
   const Volume& v = k.sheet;
-  const glm::dvec3 s = v.spacing(), inv2 = 1.0 / (s * s);
+  const glm::dvec3 s = k.sigma, inv2 = 1.0 / (s * s);
   const glm::dvec3 lo = v.boundsMin() - kReach * s, hi = v.boundsMax() + kReach * s;
   // Clip the ray to the volume's box widened by the reach.
   double t0 = 0.0, t1 = 1e300;
@@ -52,11 +53,12 @@ void kernelsOnRay(const SheetKernels& k, const glm::dvec3& o, const glm::dvec3& 
   if (!(t0 < t1)) return;
   const double a = glm::dot(d * d, inv2);
   const double lineNorm = std::sqrt(2.0 * kPi / a) / (std::pow(2.0 * kPi, 1.5) * s.x * s.y * s.z);
-  const double mass = s.x * s.y * s.z;
+  const glm::dvec3 spacing = v.spacing();
+  const double mass = spacing.x * spacing.y * spacing.z;  // a voxel's, whatever its kernel's width
   const int64_t nx = v.dims()[0], ny = v.dims()[1];
   const glm::dvec3 org = v.origin();
-  auto column = [&](double x) { return (x - org.x) / s.x; };
-  auto row = [&](double y) { return (y - org.y) / s.y; };
+  auto column = [&](double x) { return (x - org.x) / spacing.x; };
+  auto row = [&](double y) { return (y - org.y) / spacing.y; };
   const double xa = o.x + t0 * d.x, xb = o.x + t1 * d.x;
   const int64_t i0 =
       std::max<int64_t>(0, int64_t(std::floor(column(std::min(xa, xb) - kReach * s.x))));
@@ -65,7 +67,7 @@ void kernelsOnRay(const SheetKernels& k, const glm::dvec3& o, const glm::dvec3& 
   for (int64_t i = i0; i <= i1; ++i) {
     // The part of the clipped ray within reach of column i in x.
     double u0 = t0, u1 = t1;
-    const double x = org.x + double(i) * s.x;
+    const double x = org.x + double(i) * spacing.x;
     if (std::abs(d.x) > 1e-300) {
       double ta = (x - kReach * s.x - o.x) / d.x, tb = (x + kReach * s.x - o.x) / d.x;
       if (ta > tb) std::swap(ta, tb);
@@ -149,12 +151,15 @@ glm::dvec3 integrateRay(const std::vector<KernelOnRay>& kernels, double sigma,
 }  // namespace
 
 FloatImage sheetRayImage(const Volume& sheet, const TransferFunction& tf, const Camera& camera,
-                         int width, int height, const glm::dvec3& background, int threads) {
+                         int width, int height, const glm::dvec3& background, double kernelWidth,
+                         int threads) {
   if (sheet.dims()[2] != 1)
     throw std::invalid_argument("sheetRayImage: the volume must be one voxel thick along z");
   if (camera.orthographic)
     throw std::invalid_argument("sheetRayImage: the camera must be perspective");
-  SheetKernels kernels{sheet, {}, {}};
+  if (!(kernelWidth > 0.0) || !std::isfinite(kernelWidth))
+    throw std::invalid_argument("sheetRayImage: the kernel width must be positive");
+  SheetKernels kernels{sheet, kernelWidth * sheet.spacing(), {}, {}};
   const size_t n = size_t(sheet.dims()[0] * sheet.dims()[1]);
   kernels.tau.resize(n);
   kernels.color.resize(n);
@@ -165,7 +170,7 @@ FloatImage sheetRayImage(const Volume& sheet, const TransferFunction& tf, const 
   }
   const Projection proj = camera.projection(width, height);
   const glm::dmat3 toWorld = glm::transpose(camera.rotation());
-  const glm::dvec3 inv2 = 1.0 / (sheet.spacing() * sheet.spacing());
+  const glm::dvec3 inv2 = 1.0 / (kernels.sigma * kernels.sigma);
   FloatImage image(width, height, 3);
   if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
   auto work = [&](int first) {

@@ -78,6 +78,7 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
   e.setDouble("uDepthCutoff", k.depthCutoff);
   e.setDouble("uMaxSigma", k.maxSigma);
   e.setDouble("uMinSpacing", std::min({spacing.x, spacing.y, spacing.z}));
+  e.setDouble("uSwanSpacing", k.swanSpacing);
   e.setInt("uSwan", k.swan ? 1 : 0);
   e.setInt("uOrthographic", k.orthographic ? 1 : 0);
   e.setDouble("uFocalPixels", k.focalPixels);

@@ -65,6 +65,7 @@ FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3
   params.cutoff = settings.cutoff;
   params.minSpacing = std::min({spacing.x, spacing.y, spacing.z});
   params.cullDepth = params.minSpacing;
+  params.swanSpacing = settings.kernelWidth * params.minSpacing;
   return params;
 }
 

@@ -222,6 +222,7 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   const DepthProfile profile = depthProfile(settings);
   p.setVec2("uDepthProfile", glm::vec2(profile.erfReach, profile.scale));
   p.setFloat("uMinSpacing", float(params.minSpacing));
+  p.setFloat("uSwanSpacing", float(params.swanSpacing));
   p.setFloat("uCullDepth", float(params.cullDepth));
   p.setFloat("uPointSizeLimit", pointSizeLimit_);
   p.setInt("uTransfer", 0);

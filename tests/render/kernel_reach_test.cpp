@@ -56,11 +56,11 @@ TEST_F(KernelReachMirror, GlslEqualsCpp) {
               proj.orthographic = orthographic;
               proj.pixelsPerUnit = scale;
               proj.focalPixels = scale * 100.0;
-              const KernelReach k = kernelReach(proj, filter, cutoff, spacing, 1.0, depthCutoff);
+              const KernelReach k = kernelReach(proj, filter, cutoff, spacing, 0.7, depthCutoff);
               program.setFloat("uCutoff", float(k.cutoff));
               program.setFloat("uDepthCutoff", float(k.depthCutoff));
               program.setFloat("uMaxSigma", float(k.maxSigma));
-              program.setFloat("uMinSpacing", float(k.minSpacing));
+              program.setFloat("uSwanSpacing", float(k.swanSpacing));
               program.setInt("uSwan", k.swan ? 1 : 0);
               program.setInt("uOrthographic", k.orthographic ? 1 : 0);
               program.setFloat("uFocalPixels", float(k.focalPixels));

@@ -62,9 +62,7 @@ TEST_F(SplatInvariants, ShaderFootprintEqualsCppReferenceAndKeepsMass) {
       const Projection proj = cam.projection(w, h);
       const glm::dvec3 u =
           glm::dvec3(cam.viewMatrix() * glm::dvec4(vol.worldPosition(2, 2, 2), 1.0));
-      FootprintParams params;
-      params.filter = c.filter;
-      params.minSpacing = std::min({c.spacing.x, c.spacing.y, c.spacing.z});
+      const FootprintParams params = footprintParams(settings, c.spacing);
       const Footprint fp = computeFootprint(
           u, cameraCovariance(cam.rotation(), kernelSigma(c.spacing, width)), proj, params);
       ASSERT_TRUE(fp.visible);

@@ -10,7 +10,7 @@ layout(std430, binding = 1) writeonly buffer Outputs { vec4 outputs[]; };
 uniform float uCutoff;
 uniform float uDepthCutoff;
 uniform float uMaxSigma;
-uniform float uMinSpacing;
+uniform float uSwanSpacing;
 uniform bool uSwan;
 uniform bool uOrthographic;
 uniform float uFocalPixels;
@@ -20,7 +20,7 @@ uniform uint uCount;
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= uCount) return;
-  KernelReach k = KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uMinSpacing, uSwan, uOrthographic,
+  KernelReach k = KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uSwanSpacing, uSwan, uOrthographic,
                               uFocalPixels, uPixelsPerUnit);
   float depth = inputs[i].x, variance = inputs[i].y;
   outputs[i] = vec4(worldPerPixel(k, depth), reachStretch(k, depth), worldReach(k, depth),

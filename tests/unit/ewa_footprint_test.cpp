@@ -319,8 +319,8 @@ TEST(EwaFootprint, SwanStretchesBeyondK) {
   const Projection p = perspective(512, 512, 30.0);
   FootprintParams swan;
   swan.filter = FilterMode::Swan;
-  swan.minSpacing = 1.0;
-  const double k = swan.minSpacing * p.focalPixels;  // k = s D / p
+  swan.swanSpacing = 1.0;
+  const double k = swan.swanSpacing * p.focalPixels;  // k = s D / p
   const glm::dmat3 cov = cameraCovariance(glm::dmat3(1.0), glm::dvec3(1.0));
   const Footprint near = computeFootprint({0, 0, -0.5 * k}, cov, p, swan);
   const Footprint atK = computeFootprint({0, 0, -k}, cov, p, swan);
@@ -330,6 +330,14 @@ TEST(EwaFootprint, SwanStretchesBeyondK) {
   // Beyond k the footprint keeps the size it has at k, its energy scaled by (k/d)^2.
   EXPECT_NEAR(far.covariance[0][0], atK.covariance[0][0], 1e-9);
   EXPECT_NEAR(far.peak / atK.peak, 1.0 / 16.0, 1e-9);
+  // Kernels half as wide (s = 0.5 * spacing) stretch from half the distance on, to the same
+  // screen size: twice the stretch.
+  FootprintParams narrow = swan;
+  narrow.swanSpacing = 0.5;
+  const glm::dmat3 half = cameraCovariance(glm::dmat3(1.0), glm::dvec3(0.5));
+  const Footprint farNarrow = computeFootprint({0, 0, -4.0 * k}, half, p, narrow);
+  EXPECT_NEAR(farNarrow.stretch, 8.0, 1e-9);
+  EXPECT_NEAR(farNarrow.covariance[0][0], far.covariance[0][0], 1e-9);
 }
 
 TEST(EwaFootprint, WindowIntegralMatchesQuadrature) {

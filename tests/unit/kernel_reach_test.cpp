@@ -15,10 +15,12 @@ TEST(KernelReach, WorkedValues) {
   proj.height = 400;
   const KernelReach ewa = kernelReach(proj, FilterMode::Ewa, 4.0, glm::dvec3(0.5, 1.0, 2.0));
   EXPECT_DOUBLE_EQ(ewa.maxSigma, 2.0);
-  EXPECT_DOUBLE_EQ(ewa.minSpacing, 0.5);
+  EXPECT_DOUBLE_EQ(ewa.swanSpacing, 0.5);
   // Narrower kernels reach less: sigma = kernel width * spacing.
   EXPECT_DOUBLE_EQ(
       kernelReach(proj, FilterMode::Ewa, 4.0, glm::dvec3(0.5, 1.0, 2.0), 0.55).maxSigma, 1.1);
+  EXPECT_DOUBLE_EQ(
+      kernelReach(proj, FilterMode::Ewa, 4.0, glm::dvec3(0.5, 1.0, 2.0), 0.55).swanSpacing, 0.275);
   // At depth 100 a pixel spans 0.5: reach 2 * (2 * 1 + 0.5) = 5; depth reach 2 * sqrt(2.25).
   EXPECT_DOUBLE_EQ(worldReach(ewa, 100.0), 5.0);
   EXPECT_DOUBLE_EQ(depthReach(ewa, 2.25, 100.0), 3.0);
