@@ -128,7 +128,8 @@ int run(int argc, char** argv) {
   int repeats = 5;
   bool csv = false, json = false, noVtk = false, orthographic = false;
   RenderSettings settings;  // EWA's: the defaults unless --kernel-width, --cutoff, ...
-  std::string classification = "pre", culling = "auto", slabRects = "on", pairs = "on";
+  std::string classification = classificationModeName(settings.classification.mode),
+              culling = "auto", slabRects = "on", pairs = "on";
   app.add_option("--data", data,
                  "Folder with engine/, bonsai/ and cthead/ (default ../shared/data)");
   app.add_option("--volumes", volumes,
@@ -150,15 +151,15 @@ int run(int argc, char** argv) {
   app.add_option("--vtk-script", script, "Path of vtk_raycast_bench.py");
   app.add_flag("--orthographic", orthographic, "Parallel projection (default: perspective)");
   app.add_option("--kernel-width", settings.kernelWidth,
-                 "EWA kernel sigma in voxel spacings, 0.3 to 2 (default 1)")
+                 "EWA kernel sigma in voxel spacings, 0.3 to 2 (default 0.7)")
       ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
-  app.add_option("--cutoff", settings.cutoff, "EWA footprint cutoff r = dx^T Q dx (default 4)")
+  app.add_option("--cutoff", settings.cutoff, "EWA footprint cutoff r = dx^T Q dx (default 5)")
       ->check(CLI::Range(0.25, 64.0));
   app.add_option("--depth-cutoff", settings.depthCutoff,
                  "EWA kernels' depth extent in squared sigmas, or inf (default 1)")
       ->check(CLI::Range(0.25, double(INFINITY)));
   app.add_option("--classification", classification,
-                 "EWA: transfer function per voxel (pre, default) or per pixel (post)")
+                 "EWA: transfer function per pixel (post, default) or per voxel (pre)")
       ->check(CLI::IsMember({"pre", "post"}));
   app.add_option("--slab-preintegration", pairs,
                  "EWA post-classification: slab value pairs through the pre-integration table "

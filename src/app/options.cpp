@@ -123,18 +123,18 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   addShadingOptions(app, o->render, renderText);
   ClipOptionText clipText;
   addClipOptions(app, clipText);
-  app.add_option("--cutoff", o->render.cutoff, "Footprint cutoff r = dx^T Q dx (default 4)")
+  app.add_option("--cutoff", o->render.cutoff, "Footprint cutoff r = dx^T Q dx (default 5)")
       ->check(CLI::Range(0.25, 64.0));
   app.add_option("--depth-cutoff", o->render.depthCutoff,
                  "Kernels' depth extent in squared sigmas, 0.25 and up or inf (default 1)")
       ->check(CLI::Range(0.25, double(INFINITY)));
   app.add_option("--kernel-width", o->render.kernelWidth,
-                 "Kernel sigma in voxel spacings, 0.3 to 2 (default 1)")
+                 "Kernel sigma in voxel spacings, 0.3 to 2 (default 0.7)")
       ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
   bool closeUp = false;
   app.add_flag("--close-up", closeUp,
-               "Close-up setting: --classification post --kernel-width 0.7 --cutoff 5 (nearest "
-               "to a ray caster close up); options given beside it win");
+               "Close-up setting, today the defaults: --classification post --slab-preintegration "
+               "on --kernel-width 0.7 --cutoff 5; options given beside it win");
   app.add_option("--slab-thickness", o->render.slabThickness,
                  "Slab thickness in voxels of the smallest spacing, 0.25 and up (default 2)")
       ->check(CLI::Range(0.25, 1000.0));

@@ -56,10 +56,10 @@ int run(int argc, char** argv) {
                  "Opacity of one voxel of the sheets, replacing their own 0.98")
       ->check(CLI::Range(0.001, 0.999));
   app.add_option("--kernel-width", o.kernelWidth,
-                 "Splat kernel sigma in voxel spacings, 0.3 to 2 (default: ewaview's, 1)")
+                 "Splat kernel sigma in voxel spacings, 0.3 to 2 (default: ewaview's, 0.7)")
       ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
   app.add_option("--cutoff", o.cutoff,
-                 "Splat footprint cutoff r = dx^T Q dx (default: ewaview's, 4)")
+                 "Splat footprint cutoff r = dx^T Q dx (default: ewaview's, 5)")
       ->check(CLI::Range(0.25, 64.0));
   app.add_flag("--no-reference-flicker", noReferenceFlicker,
                "Skip rendering the reference at every move (its own flicker)");

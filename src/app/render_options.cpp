@@ -8,8 +8,8 @@ namespace ewa {
 
 void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
   app.add_option("--classification", p.classification,
-                 "Transfer function applied per voxel before splatting (pre, default) or per pixel "
-                 "to the splatted value (post)")
+                 "Transfer function applied per pixel to the splatted value (post, default) or "
+                 "per voxel before splatting (pre; the default with surface splats)")
       ->check(CLI::IsMember({"pre", "post"}));
   app.add_option("--slab-preintegration", p.slabPreintegration,
                  "Post-classification: classify each pixel's values in two neighbouring slabs as "
@@ -78,6 +78,9 @@ std::string finishShadingOptions(const RenderOptionText& p, RenderSettings* s) {
     s->classification.surface = SurfaceCriterion::Opacity;
     s->classification.threshold = *p.surfaceOpacity;
   }
+  // Surface splats need pre-classification: asking for them without a classification picks it.
+  if (p.classification.empty() && s->classification.surface != SurfaceCriterion::None)
+    s->classification.mode = ClassificationMode::Pre;
   if (s->classification.mode == ClassificationMode::Post &&
       s->classification.surface != SurfaceCriterion::None)
     return "post-classification (--classification post, --close-up) draws no surface splats: "

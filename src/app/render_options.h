@@ -17,7 +17,7 @@ struct RenderOptionText {
   std::string compositing = "front-to-back";
   std::string xrayMap = "exp";
   std::string gradient = "central";
-  std::string classification = "pre";
+  std::string classification;  // empty: post, or pre with surface splats
   std::string slabPreintegration = "on";
   std::string postNormals = "field";
   std::string occlusionCulling = "auto";

@@ -13,7 +13,10 @@ std::vector<glm::vec4> slabPairTexels(const PreintegrationTable& table) {
     for (int b = 0; b < n; ++b) {
       const glm::vec4& e = table.at(f, b);
       const glm::vec3 colour = e.a > 0.0f ? glm::vec3(e) / e.a : glm::vec3(0.0f);
-      texels[size_t(f) * n + b] = glm::vec4(colour, float(table.meanExtinction(f, b)));
+      // Capped as the 1D table is (TransferFunction::bake): an extinction beyond float's range
+      // (a tiny opacity unit distance) turned the shader's opacity into NaN, drawn black.
+      const double tau = std::min(table.meanExtinction(f, b), kMaxBakedExtinction);
+      texels[size_t(f) * n + b] = glm::vec4(colour, float(tau));
     }
   return texels;
 }

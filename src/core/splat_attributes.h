@@ -42,6 +42,13 @@ struct Classification {
   bool operator!=(const Classification& o) const { return !(*this == o); }
 };
 
+// The viewer's default: post-classified (the fields above at their defaults otherwise).
+inline Classification postClassification() {
+  Classification c;
+  c.mode = ClassificationMode::Post;
+  return c;
+}
+
 // 8 bytes a splat, beside its PackedSplat: packHalf2x16(nx, ny), packHalf2x16(nz, kind).
 // n is the unit outward normal -grad/|grad| in world space (0 where the gradient vanishes:
 // unshaded). kind 0: a volume splat; kind in [2, 4]: a surface splat whose center moves by

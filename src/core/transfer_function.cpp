@@ -12,8 +12,6 @@ namespace {
 
 // Opaque points stay finite: -ln(1e-6) is about 13.8 per unit distance.
 constexpr double kMaxAlpha = 1.0 - 1e-6;
-// The largest extinction bake() writes: finite in float with room for sums over many splats.
-constexpr double kMaxBakedExtinction = 1e20;
 
 // Piecewise-linear lookup in a sorted point list; `get` reads a point's payload.
 template <typename Point, typename Get>

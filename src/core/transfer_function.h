@@ -10,6 +10,10 @@
 
 namespace ewa {
 
+// The largest extinction a GPU table holds (bake(), the slab pair table): finite in float with
+// room for sums over many splats.
+inline constexpr double kMaxBakedExtinction = 1e20;
+
 struct OpacityPoint {
   double value;
   double alpha;  // opacity of a layer opacityUnitDistance thick, in [0, 1]

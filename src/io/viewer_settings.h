@@ -21,10 +21,10 @@ struct ViewerSettings {
   // Render settings (kept here as plain values: this file is read before any GL exists).
   FilterMode filter = FilterMode::Ewa;
   std::string renderMode = "composite";
-  double cutoff = 4.0;
+  double cutoff = 5.0;                 // RenderSettings' default
   double depthCutoff = 1.0;            // RenderSettings' default; infinite: uncut ("inf")
-  double kernelWidth = 1.0;            // RenderSettings' default
-  std::string classification = "pre";  // "pre" or "post"
+  double kernelWidth = 0.7;            // RenderSettings' default
+  std::string classification = "post";  // "pre" or "post"
   bool slabPreintegration = true;      // RenderSettings' default
   std::string postNormals = "field";   // "field" or "voxel"
   double slabThickness = 2.0;          // RenderSettings' default

@@ -54,9 +54,10 @@ const char* renderModeName(RenderMode mode) {
 void applyCloseUpSettings(RenderSettings* settings) {
   settings->classification.mode = ClassificationMode::Post;
   settings->classification.surface = SurfaceCriterion::None;
+  const RenderSettings defaults;
   settings->slabPreintegration = true;
-  settings->kernelWidth = 0.7;
-  settings->cutoff = 5.0;
+  settings->kernelWidth = defaults.kernelWidth;
+  settings->cutoff = defaults.cutoff;
 }
 
 FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3& spacing) {

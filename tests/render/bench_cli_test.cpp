@@ -33,7 +33,7 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
   // llvmpipe: Auto leaves occlusion culling off.
   EXPECT_EQ(
       doc["ewa_settings"],
-      "kernel width 1.00, cutoff 4, depth cutoff 1, pre-classification, occlusion culling off "
+      "kernel width 0.70, cutoff 5, depth cutoff 1, post-classification, occlusion culling off "
       "(auto)");
   EXPECT_NE(doc["context"].get<std::string>().find("OpenGL"), std::string::npos) << doc["context"];
   EXPECT_NE(doc["command"].get<std::string>().find("--synthetic sphere:24"), std::string::npos);
@@ -169,7 +169,9 @@ TEST(StatsCli, OcclusionCullingCountsCulledDrawsAndKeepsThePicture) {
   const std::string tf = dir + "/opaque_sphere.tf.json";
   std::ofstream(tf) << R"({"opacity": [[0, 0], [0.1, 0.6], [255, 0.6]],
                            "color": [[0, 1, 1, 1], [255, 1, 0.5, 0.2]]})";
-  const std::string common = "--synthetic sphere:32 --tf " + tf + " --resolution 64,64 --stats";
+  // Pre-classified: post-classified frames are not culled (checked at the end).
+  const std::string common =
+      "--synthetic sphere:32 --tf " + tf + " --resolution 64,64 --stats --classification pre";
   // Auto (the default) leaves culling off on llvmpipe, where the tests run.
   const CliRun automatic = runEwaview(common + " -o " + dir + "/culled_auto.png");
   ASSERT_EQ(automatic.code, 0) << automatic.err;
@@ -186,6 +188,11 @@ TEST(StatsCli, OcclusionCullingCountsCulledDrawsAndKeepsThePicture) {
   const Image8 imageOn = readPng(dir + "/culled_on.png"),
                imageOff = readPng(dir + "/culled_off.png");
   EXPECT_EQ(imageOn.pixels, imageOff.pixels) << "culling changed the picture";
+  const CliRun post = runEwaview("--synthetic sphere:32 --tf " + tf +
+                                 " --resolution 64,64 --stats --occlusion-culling on -o " + dir +
+                                 "/culled_post.png");
+  ASSERT_EQ(post.code, 0) << post.err;
+  EXPECT_EQ(json::parse(post.out)["entries_culled"].get<double>(), 0.0);
   EXPECT_EQ(runEwaview("--synthetic sphere:8 --occlusion-culling maybe -o " + dir + "/x.png").code,
             2);
 }

@@ -1,5 +1,5 @@
-// The close-up setting (--close-up, the panel's "close-up" button): what it sets, what it leaves to
-// options given beside it, and that the program draws with it.
+// The close-up setting (--close-up, the panel's "close-up" button), today the defaults: what it
+// sets, what it leaves to options given beside it, and that the program draws with it.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -27,6 +27,9 @@ Parsed parse(std::vector<const char*> args) {
 
 TEST(CloseUp, SetsPostClassificationAndNarrowKernels) {
   RenderSettings s;
+  s.classification.mode = ClassificationMode::Pre;
+  s.kernelWidth = 1.0;
+  s.cutoff = 4.0;
   s.classification.surface = SurfaceCriterion::Value;
   s.slabPreintegration = false;
   applyCloseUpSettings(&s);
@@ -42,9 +45,21 @@ TEST(CloseUp, SetsPostClassificationAndNarrowKernels) {
   EXPECT_DOUBLE_EQ(p.options.render.kernelWidth, 0.7);
   EXPECT_DOUBLE_EQ(p.options.render.cutoff, 5.0);
   EXPECT_TRUE(p.options.renderOptionsGiven);  // overrides the saved settings, as its options do
+  // The defaults are the close-up setting...
   const Parsed plain = parse({"--synthetic", "sphere:8"});
-  EXPECT_EQ(plain.options.render.classification.mode, ClassificationMode::Pre);
-  EXPECT_DOUBLE_EQ(plain.options.render.kernelWidth, 1.0);
+  EXPECT_EQ(plain.options.render.classification.mode, ClassificationMode::Post);
+  EXPECT_TRUE(plain.options.render.slabPreintegration);
+  EXPECT_DOUBLE_EQ(plain.options.render.kernelWidth, 0.7);
+  EXPECT_DOUBLE_EQ(plain.options.render.cutoff, 5.0);
+  // ...except with surface splats, which need pre-classification: asked for without a
+  // classification they pick it, asked for with post they are a usage error.
+  const Parsed surfaces = parse({"--synthetic", "sphere:8", "--surface-threshold", "100"});
+  ASSERT_TRUE(surfaces.result.run);
+  EXPECT_EQ(surfaces.options.render.classification.mode, ClassificationMode::Pre);
+  const Parsed both =
+      parse({"--synthetic", "sphere:8", "--surface-threshold", "100", "--classification", "post"});
+  EXPECT_FALSE(both.result.run);
+  EXPECT_EQ(both.result.exitCode, 2);
 }
 
 TEST(CloseUp, OptionsGivenBesideItWin) {
@@ -65,14 +80,14 @@ TEST(CloseUp, OptionsGivenBesideItWin) {
                   .result.run);
 }
 
-// The program draws the same picture with --close-up as with its four options spelt out, and
-// a different one from the default.
+// The program draws the same picture with --close-up as with its four options spelt out and as
+// the defaults, and a different one from the paper's setting (pre, width 1, cutoff 4).
 TEST(CloseUp, ProgramDrawsTheSpeltOutSetting) {
   const std::string dir = testOutputDir();
   const std::string scene = "--synthetic marschner-lobb:24 --resolution 48,48 --output ";
   const std::vector<std::string> flags = {
       "--close-up", "--classification post --slab-preintegration on --kernel-width 0.7 --cutoff 5",
-      ""};
+      "", "--classification pre --kernel-width 1 --cutoff 4"};
   std::vector<Image8> images;
   for (size_t i = 0; i < flags.size(); ++i) {
     const std::string png = dir + "/close_up_" + std::to_string(i) + ".png";
@@ -82,10 +97,11 @@ TEST(CloseUp, ProgramDrawsTheSpeltOutSetting) {
   }
   ASSERT_EQ(images[0].pixels.size(), images[1].pixels.size());
   EXPECT_EQ(images[0].pixels, images[1].pixels);
+  EXPECT_EQ(images[0].pixels, images[2].pixels);
   size_t differing = 0;
   for (size_t i = 0; i < images[0].pixels.size(); ++i)
-    differing += images[0].pixels[i] != images[2].pixels[i];
-  EXPECT_GT(differing, images[0].pixels.size() / 20) << "close-up drew the default picture";
+    differing += images[0].pixels[i] != images[3].pixels[i];
+  EXPECT_GT(differing, images[0].pixels.size() / 20) << "close-up drew the paper's picture";
 }
 
 }  // namespace

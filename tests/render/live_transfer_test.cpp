@@ -40,7 +40,7 @@ TEST_F(LiveTransfer, NewTableShowsAtOnceAndWorkerSetMatchesFullRebuild) {
   const Volume vol = twoHalves();
   Camera cam;
   cam.frame(vol.boundsMin(), vol.boundsMax(), {0, 0, 1}, {0, 1, 0}, 1.0);
-  const RenderSettings settings;
+  const RenderSettings settings = paperSettings();
   const int size = 48;
   renderer()->setVolume(vol);
   renderer()->setTransferFunction(halves(0.0, 0.3));  // left half transparent: not uploaded

@@ -108,7 +108,7 @@ TEST_F(LodRendererTest, LevelsShrinkImageAndSplatsButKeepThePicture) {
   lod.setTransferFunction(*s.transferFunction);
   Camera cam;
   cam.frame(s.volume.boundsMin(), s.volume.boundsMax(), {0.3, 0.4, 1.0}, {0, 1, 0}, 1.0);
-  const RenderSettings settings;
+  const RenderSettings settings = paperSettings();
 
   // Level 0 is the plain renderer's picture.
   renderer()->setVolume(s.volume);

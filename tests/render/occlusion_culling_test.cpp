@@ -76,7 +76,7 @@ TEST_F(OcclusionCulling, CullsHiddenSplatsAndKeepsThePictureExactly) {
     SCOPED_TRACE(c.name);
     renderer()->setPointSizeLimit(c.pointLimit);
     renderer()->setPartition(c.partition);
-    RenderSettings settings;
+    RenderSettings settings = paperSettings();
     settings.occlusionCulling = ewa::OcclusionCulling::Off;
     const Drawn off = draw(*renderer(), settings, c.stepped);
     settings.occlusionCulling = ewa::OcclusionCulling::On;
@@ -102,7 +102,7 @@ TEST_F(OcclusionCulling, NothingCulledWithoutEarlyTermination) {
   const Volume vol = wallAndHaze();
   renderer()->setVolume(vol);
   renderer()->setTransferFunction(wallTf());
-  RenderSettings settings;
+  RenderSettings settings = paperSettings();
   // Auto culls where the renderer says it does (hardware GL), not on software rasterizers.
   const bool automatic = renderer()->occlusionCulling(ewa::OcclusionCulling::Auto);
   EXPECT_EQ(draw(*renderer(), settings, false).stats.entriesCulled > 0, automatic);

@@ -97,7 +97,7 @@ TEST_F(PostClassification, KeepsTheMarginAndDrawsOnlyVisibleValues) {
   renderer()->setVolume(vol);
   renderer()->setTransferFunction(stepTf());
   Camera cam = sideCamera();
-  RenderSettings settings;
+  RenderSettings settings = paperSettings();
   renderer()->render(cam, settings, 64, 64);
   EXPECT_EQ(renderer()->stats().splatsTotal, 32u);  // pre: the rod's voxels
   settings.classification.mode = ClassificationMode::Post;

@@ -72,4 +72,12 @@ TransferFunction whiteTf(double alpha, double unit) {
   return tf;
 }
 
+RenderSettings paperSettings() {
+  RenderSettings s;
+  s.classification.mode = ClassificationMode::Pre;
+  s.kernelWidth = 1.0;
+  s.cutoff = 4.0;
+  return s;
+}
+
 }  // namespace ewa::test

@@ -101,7 +101,7 @@ TEST_F(SlabCompositing, ShaderSlabShareEqualsCppErfSplit) {
   for (int variant = 0; variant < 4; ++variant) {
     // Both projections; the default depth profile (cut) and the uncut Gaussian.
     const bool ortho = (variant & 1) != 0;
-    RenderSettings settings;
+    RenderSettings settings = paperSettings();
     settings.mode = RenderMode::XRay;
     if (variant & 2) settings.depthCutoff = INFINITY;
     const DepthProfile profile = depthProfile(settings);
@@ -152,7 +152,7 @@ TEST_F(SlabCompositing, XRayImageSumEqualsIntegratedOpticalDepth) {
   renderer()->setTransferFunction(tf);
   Camera cam = obliqueCamera(vol, 20.0);
   cam.orthographic = true;
-  RenderSettings settings;
+  RenderSettings settings = paperSettings();
   settings.mode = RenderMode::XRay;
   const int size = 64;
   renderer()->render(cam, settings, size, size);
@@ -198,7 +198,7 @@ TEST_F(SlabCompositing, SamePictureForSlabThicknessesHalfOneAndTwoVoxels) {
         Case{1.6, ClassificationMode::Pre, 1.0, 8}, Case{0.6, ClassificationMode::Post, 2.0, 16},
         Case{1.0, ClassificationMode::Post, 2.0, 16}}) {
     const double width = c.width;
-    RenderSettings settings;
+    RenderSettings settings = paperSettings();
     settings.kernelWidth = width;
     settings.classification.mode = c.mode;
     Image8 images[3];
@@ -230,7 +230,7 @@ TEST_F(SlabCompositing, SmallRotationsMakeSmallChanges) {
   const Volume vol = plates();
   renderer()->setVolume(vol);
   renderer()->setTransferFunction(platesTf());
-  RenderSettings settings;
+  RenderSettings settings = paperSettings();
   settings.slabThickness = 2.0;  // thick slabs: where popping would show most
   Image8 prev;
   double lo = INFINITY, hi = 0.0;
@@ -254,7 +254,7 @@ TEST_F(SlabCompositing, BackToFrontEqualsFrontToBackAndTerminationStopsEarly) {
   const Volume vol = blob(24, 4.0);
   renderer()->setVolume(vol);
   renderer()->setTransferFunction(blobTf());
-  RenderSettings settings;
+  RenderSettings settings = paperSettings();
   settings.terminationOpacity = 1.0;
   renderer()->render(obliqueCamera(vol, 10.0), settings, 64, 64);
   const Image8 ftb = renderer()->readImage();

@@ -162,7 +162,7 @@ TEST_F(Soak, TwoThousandFramesLeakNoGlObjectsAndNoMemory) {
     }
     // The quad path (every footprint above a 2-pixel point size) in alternate stretches.
     own->setPointSizeLimit(p % 100 < 50 ? 2.0f : 1e9f);
-    RenderSettings s;
+    RenderSettings s = paperSettings();
     s.filter = filters[p % 3];
     s.mode = p % 4 == 1 ? RenderMode::XRay : p % 4 == 2 ? RenderMode::Mip : RenderMode::Composite;
     s.xrayMap = p % 8 == 1 ? XRayMap::Sum : XRayMap::Attenuation;
@@ -170,6 +170,9 @@ TEST_F(Soak, TwoThousandFramesLeakNoGlObjectsAndNoMemory) {
     s.order = p % 6 == 0 ? CompositeOrder::BackToFront : CompositeOrder::FrontToBack;
     // Surface splats in alternate stretches of 25 frames (the splat set is rebuilt each time).
     if ((p / 25) % 2 == 1) s.classification.surface = SurfaceCriterion::Value;
+    // Post-classified (the viewer's default) in every fifth frame without surface splats.
+    else if (p % 5 == 4)
+      s.classification.mode = ClassificationMode::Post;
     s.cutoff = 2.0 + p % 4;
     s.slabThickness = 0.5 + (p % 3);
     Camera cam;

@@ -272,7 +272,7 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   Camera cam;
   cam.position = {5.5, 5.5, 40.0};
   cam.focalPoint = {5.5, 5.5, 5.5};
-  RenderSettings settings;
+  RenderSettings settings = paperSettings();         // pre-classified: the records counted below
   settings.occlusionCulling = OcclusionCulling::On;  // its pyramid is counted too
   renderer()->render(cam, settings, 48, 48);
   const RenderStats small = renderer()->stats();

@@ -31,7 +31,7 @@ TEST(SplatVariant, EveryCombinationHasItsOwnKeyAndDefines) {
 }
 
 RenderSettings variantSettings(int which) {
-  RenderSettings s;
+  RenderSettings s = paperSettings();
   switch (which) {
     case 1:
       s.mode = RenderMode::Mip;

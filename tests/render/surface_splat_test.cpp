@@ -18,7 +18,7 @@ TransferFunction clearTf() {
 }
 
 RenderSettings surfaceSettings(double threshold) {
-  RenderSettings s;
+  RenderSettings s = paperSettings();
   s.classification.surface = SurfaceCriterion::Value;
   s.classification.threshold = threshold;
   s.surfaceOpacity = 0.999;
