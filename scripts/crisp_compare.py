@@ -218,6 +218,9 @@ def main():
                         "value alone: --slab-preintegration off)")
     p.add_argument("--cutoff", type=float, default=4.0)
     p.add_argument("--depth-cutoff", help="ewaview's --depth-cutoff (default: ewaview's, 1)")
+    p.add_argument("--prefilters", default=None,
+                   help="post: ewaview's --prefilter values to compare, comma-separated "
+                        "(default: ewaview's, 0.05)")
     p.add_argument("--slab-thickness", type=float, default=2.0,
                    help="slab thickness in voxels (ewaview's default 2)")
     p.add_argument("--repeats", type=int, default=3)
@@ -226,31 +229,38 @@ def main():
         return vtk_child(a.vtk[0], a.vtk[1], a.repeats)
     import ewaview
     widths = [float(w) for w in a.widths.split(",")]
-    variants = [(c, w) for c in a.classifications.split(",") for w in widths]
+    prefilters = [None] if a.prefilters is None else [float(b) for b in a.prefilters.split(",")]
+    variants = [(c, w, b) for c in a.classifications.split(",") for w in widths
+                for b in (prefilters if c.startswith("post") else [None])]
     if a.out:
         os.makedirs(a.out, exist_ok=True)
-    print(f"| volume | classification | kernel width | SSIM | sharpness | ms/frame |")
-    print(f"| --- | --- | --- | --- | --- | --- |")
+    print(f"| volume | classification | kernel width | prefilter | SSIM | sharpness | ms/frame |")
+    print(f"| --- | --- | --- | --- | --- | --- | --- |")
     all_vols = volumes()
     for name in a.volumes.split(","):
         array, spacing, tf, direction, distance = all_vols[name]()
         cam = camera(array, spacing, direction, distance)
         ref, vtk_ms = vtk_picture(name, a.repeats)
         ref_y = luminance(ref)
-        print(f"| {name} | VTK ray caster | | 1 | 1 | {vtk_ms:.0f} |", flush=True)
+        print(f"| {name} | VTK ray caster | | | 1 | 1 | {vtk_ms:.0f} |", flush=True)
         scene = ewaview.Scene(array,
                               spacing=spacing, resolution=(SIZE, SIZE),
                               camera_position=tuple(cam[1]), camera_focal_point=tuple(cam[0]),
                               camera_view_up=cam[2], background=(0, 0, 0), cutoff=a.cutoff)
         scene.transfer_function = dict(tf, opacity_unit_distance=1.0)
         pictures = [ref]
-        for classification, width in variants:
+        for classification, width, prefilter in variants:
             options = dict(classification=classification.split("-")[0], kernel_width=width,
                            slab_thickness=a.slab_thickness)
             if classification == "post-mean":
                 options["slab_preintegration"] = "off"
             if a.depth_cutoff:
                 options["depth_cutoff"] = a.depth_cutoff
+            if prefilter is not None:
+                options["prefilter"] = prefilter
+            shown = "" if not classification.startswith("post") else (
+                "default" if prefilter is None else f"{prefilter:g}")
+            tag = f"{classification}_{width:g}" + ("" if prefilter is None else f"_p{prefilter:g}")
             img = scene.render(**options)  # classifies
             times = []
             for _ in range(a.repeats):
@@ -258,12 +268,12 @@ def main():
                 img = scene.render(**options)
                 times.append(time.perf_counter() - start)
             y = luminance(img)
-            print(f"| {name} | {classification} | {width:g} | {ssim(y, ref_y):.3f} | "
+            print(f"| {name} | {classification} | {width:g} | {shown} | {ssim(y, ref_y):.3f} | "
                   f"{sharpness(y, ref_y):.2f} | {1000 * statistics.median(times):.0f} |",
                   flush=True)
             pictures.append(img)
             if a.out:
-                ewaview.write_png(f"{a.out}/{name}_{classification}_{width:g}.png", img)
+                ewaview.write_png(f"{a.out}/{name}_{tag}.png", img)
         if a.out:
             ewaview.write_png(f"{a.out}/{name}_vtk.png", ref)
             ewaview.write_png(f"{a.out}/{name}_montage.png", np.concatenate(pictures, axis=1))

@@ -165,6 +165,9 @@ int run(int argc, char** argv) {
                  "EWA post-classification: slab value pairs through the pre-integration table "
                  "(on, default) or each slab's value alone (off)")
       ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--prefilter", settings.classification.prefilter,
+                 "EWA post-classification: value prefilter strength (default 0.05)")
+      ->check(CLI::Range(0.0, kMaxPrefilter));
   app.add_option("--occlusion-culling", culling,
                  "EWA: occlusion culling auto (default: off on software rasterizers), on or off")
       ->check(CLI::IsMember({"auto", "on", "off"}));
@@ -199,12 +202,15 @@ int run(int argc, char** argv) {
   const gl::ShaderLibrary shaders(shaderDir);
   SplatRenderer ewa(shaders);
   ewa.setSlabScissor(slabRects == "on");
-  char ewaText[200];
+  char ewaText[240], prefilterText[40];
+  std::snprintf(prefilterText, sizeof prefilterText, ", prefilter %g",
+                settings.classification.prefilter);
   std::snprintf(ewaText, sizeof ewaText,
-                "kernel width %.2f, cutoff %g, depth cutoff %g, %s-classification%s, occlusion "
-                "culling %s%s%s",
+                "kernel width %.2f, cutoff %g, depth cutoff %g, %s-classification%s%s, "
+                "occlusion culling %s%s%s",
                 settings.kernelWidth, settings.cutoff, settings.depthCutoff, classification.c_str(),
                 classification == "post" && pairs == "off" ? " without slab pre-integration" : "",
+                classification == "post" ? prefilterText : "",
                 ewa.occlusionCulling(settings.occlusionCulling) ? "on" : "off",
                 culling == "auto" ? " (auto)" : "",
                 slabRects == "on" ? "" : ", whole-image slab passes");

@@ -199,7 +199,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   o->resolutionGiven = !res.empty();
   for (const char* name : {"--filter", "--render-mode", "--cutoff", "--depth-cutoff",
                            "--kernel-width", "--classification", "--slab-preintegration",
-                           "--slab-thickness", "--background", "--close-up"})
+                           "--prefilter", "--slab-thickness", "--background", "--close-up"})
     o->renderOptionsGiven |= app.count(name) > 0;
   if (!res.empty()) {
     o->width = res[0];

@@ -16,6 +16,11 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
                  "a pair through the pre-integration table (on, default), or each slab's value "
                  "alone (off)")
       ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--prefilter", s.classification.prefilter,
+                 "Post-classification: sharpen each splat's value by B times its discrete "
+                 "Laplacian, so the kernels come nearer interpolating the voxels (default 0.05; 0: "
+                 "the data's values)")
+      ->check(CLI::Range(0.0, kMaxPrefilter));
   app.add_option("--post-normals", p.postNormals,
                  "Post-classified and pre-integrated, with --shading: normals from the gradient "
                  "of the reconstructed field (field, default) or the splats' voxel normals (voxel)")

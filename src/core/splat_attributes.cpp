@@ -130,6 +130,8 @@ ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf
                       : c.surface == SurfaceCriterion::None ? SplatSet::VoxelPredicate()
                                                             : SplatSet::VoxelPredicate(keep),
                       maxSplats);
+  // Voxels are kept by their own values (above); only what the splats carry is sharpened.
+  if (post) prefilterSplatValues(volume, c.prefilter, &out.splats);
   const double minSpacing = std::min({volume.spacing().x, volume.spacing().y, volume.spacing().z});
   out.attributes.reserve(out.splats.size());
   for (const PackedSplat& s : out.splats.splats()) {

@@ -10,6 +10,7 @@
 #include "core/post_classification.h"
 #include "core/splat_set.h"
 #include "core/transfer_function.h"
+#include "core/value_prefilter.h"
 #include "core/volume.h"
 
 namespace ewa {
@@ -34,10 +35,14 @@ struct Classification {
   // (or of a transfer-function crossing) are kept, and there are no surface splats.
   ClassificationMode mode = ClassificationMode::Pre;
   int postMargin = 2;  // set from the kernel's reach (splatClassification in render/renderer.h)
+  // Post: the splats' values are prefiltered with this strength (prefilteredValue), so the
+  // reconstruction comes nearer interpolating the voxels; 0 keeps the data's values.
+  double prefilter = kDefaultPrefilter;
   bool operator==(const Classification& o) const {
     return gradient == o.gradient && surface == o.surface && threshold == o.threshold &&
            minGradient == o.minGradient && mode == o.mode &&
-           (mode == ClassificationMode::Pre || postMargin == o.postMargin);
+           (mode == ClassificationMode::Pre ||
+            (postMargin == o.postMargin && prefilter == o.prefilter));
   }
   bool operator!=(const Classification& o) const { return !(*this == o); }
 };

@@ -38,12 +38,16 @@ SplatSet SplatSet::build(const Volume& volume, const std::function<bool(double)>
         if (set.splats_.size() >= maxSplats)
           throw SplatLimitError("more than " + std::to_string(maxSplats) +
                                 " voxels are visible, the most that fit");
-        const auto q = static_cast<uint32_t>(std::lround(x * (kValueLevels - 1)));
-        set.splats_.push_back({uint32_t(i) | uint32_t(j) << 16, uint32_t(k) | q << 16});
+        set.splats_.push_back({uint32_t(i) | uint32_t(j) << 16, uint32_t(k) | quantize(x) << 16});
       }
     }
   }
   return set;
+}
+
+void SplatSet::setNormalizedValue(size_t n, double x) {
+  PackedSplat& s = splats_.at(n);
+  s.kValue = (s.kValue & 0xffffu) | quantize(std::clamp(x, 0.0, 1.0)) << 16;
 }
 
 }  // namespace ewa

@@ -1,8 +1,9 @@
 // SplatSet: the voxels a transfer function leaves visible, packed for the GPU.
 #pragma once
 
-#include <cstdint>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <vector>
@@ -19,8 +20,8 @@ class SplatLimitError : public std::length_error {
 
 // 8 bytes a splat: voxel indices and the value quantized over the volume's range.
 struct PackedSplat {
-  uint32_t ij;       // i | j << 16
-  uint32_t kValue;   // k | quantized value << 16 (0..65535 over [minValue, maxValue])
+  uint32_t ij;      // i | j << 16
+  uint32_t kValue;  // k | quantized value << 16 (0..65535 over [minValue, maxValue])
 };
 
 class SplatSet {
@@ -46,11 +47,16 @@ class SplatSet {
   static float normalizedValue(const PackedSplat& s) {
     return float(s.kValue >> 16) / float(kValueLevels - 1);
   }
+  // Stores `x` in [0, 1] (clamped) as splat n's value, quantized as build() does.
+  void setNormalizedValue(size_t n, double x);
   static uint32_t i(const PackedSplat& s) { return s.ij & 0xffffu; }
   static uint32_t j(const PackedSplat& s) { return s.ij >> 16; }
   static uint32_t k(const PackedSplat& s) { return s.kValue & 0xffffu; }
 
  private:
+  static uint32_t quantize(double x) {  // x in [0, 1]
+    return static_cast<uint32_t>(std::lround(x * (kValueLevels - 1)));
+  }
   std::vector<PackedSplat> splats_;
   int stride_ = 1;
 };

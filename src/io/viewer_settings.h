@@ -7,6 +7,7 @@
 
 #include "core/clip_region.h"
 #include "core/ewa_footprint.h"
+#include "core/value_prefilter.h"
 
 namespace ewa {
 
@@ -21,13 +22,14 @@ struct ViewerSettings {
   // Render settings (kept here as plain values: this file is read before any GL exists).
   FilterMode filter = FilterMode::Ewa;
   std::string renderMode = "composite";
-  double cutoff = 5.0;                 // RenderSettings' default
-  double depthCutoff = 1.0;            // RenderSettings' default; infinite: uncut ("inf")
-  double kernelWidth = 0.7;            // RenderSettings' default
-  std::string classification = "post";  // "pre" or "post"
-  bool slabPreintegration = true;      // RenderSettings' default
-  std::string postNormals = "field";   // "field" or "voxel"
-  double slabThickness = 2.0;          // RenderSettings' default
+  double cutoff = 5.0;                   // RenderSettings' default
+  double depthCutoff = 1.0;              // RenderSettings' default; infinite: uncut ("inf")
+  double kernelWidth = 0.7;              // RenderSettings' default
+  std::string classification = "post";   // "pre" or "post"
+  bool slabPreintegration = true;        // RenderSettings' default
+  double prefilter = kDefaultPrefilter;  // post-classification's value prefilter
+  std::string postNormals = "field";     // "field" or "voxel"
+  double slabThickness = 2.0;            // RenderSettings' default
   glm::dvec3 background{0.0};
   bool levelOfDetail = true;  // coarser level while moving
   // The crop box and planes of the last session and the volume they were for (its absolute

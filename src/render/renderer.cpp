@@ -56,6 +56,7 @@ void applyCloseUpSettings(RenderSettings* settings) {
   settings->classification.surface = SurfaceCriterion::None;
   const RenderSettings defaults;
   settings->slabPreintegration = true;
+  settings->classification.prefilter = defaults.classification.prefilter;
   settings->kernelWidth = defaults.kernelWidth;
   settings->cutoff = defaults.cutoff;
 }
@@ -78,6 +79,9 @@ DepthProfile depthProfile(const RenderSettings& settings) {
 Classification splatClassification(const RenderSettings& settings) {
   Classification c = settings.classification;
   c.postMargin = postClassificationMargin(settings.cutoff, settings.kernelWidth);
+  // X-ray and MIP classify each splat (pre) whatever the classification: their values stay the
+  // data's.
+  if (settings.mode != RenderMode::Composite) c.prefilter = 0.0;
   return c;
 }
 

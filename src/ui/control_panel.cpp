@@ -124,8 +124,16 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
-        "Post-classified, pre-integrated, kernel width 0.7, cutoff 5: nearest to a "
-        "ray caster close up (ewaview --close-up)");
+        "Post-classified, pre-integrated, kernel width 0.7, cutoff 5, prefilter 0.05: nearest "
+        "to a ray caster close up (ewaview --close-up)");
+  ImGui::BeginDisabled(!post);
+  changed |=
+      sliderDouble("prefilter", &settings.classification.prefilter, 0.0, kMaxPrefilter, "%.3f");
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(
+        "Post-classified: each splat's value sharpened by this times its discrete Laplacian, "
+        "nearer interpolating the voxels (0: the data's values; ewaview --prefilter)");
+  ImGui::EndDisabled();
   // Shaded post-classification's normals: the field's gradient (pre-integrated only) or voxels'.
   ImGui::BeginDisabled(!post || !settings.slabPreintegration);
   bool field = settings.postNormals == PostNormals::Field;

@@ -55,6 +55,7 @@ void ViewerWindow::saveSettings() {
   saved_.kernelWidth = settings_.kernelWidth;
   saved_.classification = classificationModeName(settings_.classification.mode);
   saved_.slabPreintegration = settings_.slabPreintegration;
+  saved_.prefilter = settings_.classification.prefilter;
   saved_.postNormals = postNormalsName(settings_.postNormals);
   saved_.slabThickness = settings_.slabThickness;
   saved_.background = settings_.background;

@@ -32,8 +32,10 @@ TEST(CloseUp, SetsPostClassificationAndNarrowKernels) {
   s.cutoff = 4.0;
   s.classification.surface = SurfaceCriterion::Value;
   s.slabPreintegration = false;
+  s.classification.prefilter = 0.0;
   applyCloseUpSettings(&s);
   EXPECT_EQ(s.classification.mode, ClassificationMode::Post);
+  EXPECT_DOUBLE_EQ(s.classification.prefilter, kDefaultPrefilter);
   EXPECT_EQ(s.classification.surface, SurfaceCriterion::None);
   EXPECT_TRUE(s.slabPreintegration);
   EXPECT_DOUBLE_EQ(s.kernelWidth, 0.7);
@@ -51,6 +53,7 @@ TEST(CloseUp, SetsPostClassificationAndNarrowKernels) {
   EXPECT_TRUE(plain.options.render.slabPreintegration);
   EXPECT_DOUBLE_EQ(plain.options.render.kernelWidth, 0.7);
   EXPECT_DOUBLE_EQ(plain.options.render.cutoff, 5.0);
+  EXPECT_DOUBLE_EQ(plain.options.render.classification.prefilter, 0.05);
   // ...except with surface splats, which need pre-classification: asked for without a
   // classification they pick it, asked for with post they are a usage error.
   const Parsed surfaces = parse({"--synthetic", "sphere:8", "--surface-threshold", "100"});
@@ -60,6 +63,18 @@ TEST(CloseUp, SetsPostClassificationAndNarrowKernels) {
       parse({"--synthetic", "sphere:8", "--surface-threshold", "100", "--classification", "post"});
   EXPECT_FALSE(both.result.run);
   EXPECT_EQ(both.result.exitCode, 2);
+}
+
+TEST(CloseUp, PrefilterOptionTakesItsRangeOnly) {
+  const Parsed p = parse({"--synthetic", "sphere:8", "--prefilter", "0.1", "--close-up"});
+  ASSERT_TRUE(p.result.run);
+  EXPECT_DOUBLE_EQ(p.options.render.classification.prefilter, 0.1);
+  EXPECT_TRUE(parse({"--synthetic", "sphere:8", "--prefilter", "0"}).result.run);
+  for (const char* bad : {"-0.01", "0.3", "nan", "x"}) {
+    const Parsed q = parse({"--synthetic", "sphere:8", "--prefilter", bad});
+    EXPECT_FALSE(q.result.run) << bad;
+    EXPECT_EQ(q.result.exitCode, 2) << bad;
+  }
 }
 
 TEST(CloseUp, OptionsGivenBesideItWin) {

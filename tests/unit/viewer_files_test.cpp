@@ -60,6 +60,7 @@ TEST_F(ViewerFiles, SettingsRoundTripAndDefaults) {
   s.kernelWidth = 0.8;
   s.classification = "post";
   s.slabThickness = 2.5;
+  s.prefilter = 0.125;
   s.background = {0.1, 0.2, 0.3};
   s.levelOfDetail = false;
   saveViewerSettings(p, s);
@@ -74,6 +75,7 @@ TEST_F(ViewerFiles, SettingsRoundTripAndDefaults) {
   EXPECT_EQ(r.kernelWidth, 0.8);
   EXPECT_EQ(r.classification, "post");
   EXPECT_EQ(r.slabThickness, 2.5);
+  EXPECT_EQ(r.prefilter, 0.125);
   EXPECT_EQ(r.background, s.background);
   EXPECT_FALSE(r.levelOfDetail);
   EXPECT_EQ(r.depthCutoff, 1.0);
@@ -105,6 +107,7 @@ TEST_F(ViewerFiles, SettingsDefaultsAreTheRenderersDefaults) {
   EXPECT_EQ(fresh.kernelWidth, render.kernelWidth);
   EXPECT_EQ(fresh.classification, classificationModeName(render.classification.mode));
   EXPECT_EQ(fresh.slabThickness, render.slabThickness);
+  EXPECT_EQ(fresh.prefilter, render.classification.prefilter);
   EXPECT_EQ(fresh.background, render.background);
   const std::string p = path("partial/settings.json");
   std::filesystem::create_directories(std::filesystem::path(p).parent_path());
@@ -118,13 +121,14 @@ TEST_F(ViewerFiles, SettingsDefaultsAreTheRenderersDefaults) {
 TEST_F(ViewerFiles, SettingsClampOddValuesAndRejectBadJson) {
   const ViewerSettings s = viewerSettingsFromJson(
       R"({"window_size":[1,99999],"render":{"cutoff":1000,"depth_cutoff":0.01,"kernel_width":0.01,"mode":"weird","filter":"blurry",
-          "background":[2,-1,0.5]},"unknown":1})",
+          "background":[2,-1,0.5],"prefilter":7},"unknown":1})",
       "s.json");
   EXPECT_EQ(s.windowWidth, 64);
   EXPECT_EQ(s.windowHeight, 16384);
   EXPECT_EQ(s.cutoff, 64.0);
   EXPECT_EQ(s.depthCutoff, 0.25);
   EXPECT_EQ(s.kernelWidth, 0.3);
+  EXPECT_EQ(s.prefilter, kMaxPrefilter);
   EXPECT_EQ(s.renderMode, "composite");
   EXPECT_EQ(s.filter, FilterMode::Ewa);
   EXPECT_EQ(s.background, glm::dvec3(1.0, 0.0, 0.5));
