@@ -190,18 +190,20 @@ def sharpness(ours, ref):
     return float(g_ours[edges].mean() / g_ref[edges].mean())
 
 
-def vtk_child(name, out, repeats):
+def vtk_child(name, out, repeats, scale):
     array, spacing, tf, direction, distance = volumes()[name]()
-    rgb, ms = vtk_render(array, spacing, tf, camera(array, spacing, direction, distance), repeats)
+    rgb, ms = vtk_render(array, spacing, tf, camera(array, spacing, direction, distance * scale),
+                         repeats)
     np.save(out, rgb)
     print(f"{ms:.3f}")
 
 
-def vtk_picture(name, repeats):
+def vtk_picture(name, repeats, scale):
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "vtk.npy")
         run = subprocess.run([sys.executable, os.path.abspath(__file__), "--vtk", name, out,
-                              "--repeats", str(repeats)], capture_output=True, text=True)
+                              "--repeats", str(repeats), "--distance-scale", str(scale)],
+                             capture_output=True, text=True)
         if run.returncode != 0:
             sys.exit(f"crisp_compare.py: VTK failed on {name}: {run.stderr.strip()}")
         return np.load(out), float(run.stdout.split()[-1])
@@ -224,9 +226,12 @@ def main():
     p.add_argument("--slab-thickness", type=float, default=2.0,
                    help="slab thickness in voxels (ewaview's default 2)")
     p.add_argument("--repeats", type=int, default=3)
+    p.add_argument("--distance-scale", type=float, default=1.0,
+                   help="camera distance times this (1: the close-ups, 2 to 3 pixels a voxel; "
+                        "3: about one pixel a voxel)")
     a = p.parse_args()
     if a.vtk:
-        return vtk_child(a.vtk[0], a.vtk[1], a.repeats)
+        return vtk_child(a.vtk[0], a.vtk[1], a.repeats, a.distance_scale)
     import ewaview
     widths = [float(w) for w in a.widths.split(",")]
     prefilters = [None] if a.prefilters is None else [float(b) for b in a.prefilters.split(",")]
@@ -239,8 +244,8 @@ def main():
     all_vols = volumes()
     for name in a.volumes.split(","):
         array, spacing, tf, direction, distance = all_vols[name]()
-        cam = camera(array, spacing, direction, distance)
-        ref, vtk_ms = vtk_picture(name, a.repeats)
+        cam = camera(array, spacing, direction, distance * a.distance_scale)
+        ref, vtk_ms = vtk_picture(name, a.repeats, a.distance_scale)
         ref_y = luminance(ref)
         print(f"| {name} | VTK ray caster | | | 1 | 1 | {vtk_ms:.0f} |", flush=True)
         scene = ewaview.Scene(array,
