@@ -74,6 +74,12 @@ def volumes():
                    "color": [[0, 0.9, 0.8, 0.6], [150, 0.95, 0.85, 0.7], [200, 1, 1, 1],
                              [255, 1, 1, 1]]},
                   (1.0, 0.6, 0.4), 230.0),
+        # Not in the default list (measured later): a uint16 MR volume whose transfer function
+        # rises within a narrow part of its wide value range (1026 to 5119).
+        "mrbrain": lambda: (raw(f"{d}/mrbrain/MRbrain.raw", ">u2", (109, 256, 256)), (1, 1, 2),
+                    {"opacity": [[0, 0], [1075, 0], [1137, 0.3], [1932, 0.8], [2989, 0.9]],
+                     "color": [[0, 0.8, 0.4, 0.3], [1137, 1, 0.8, 0.6], [2989, 1, 1, 1]]},
+                    (0.9, -1.0, 0.6), 240.0),
     }
 
 

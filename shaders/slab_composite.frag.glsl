@@ -16,6 +16,7 @@ uniform vec2 uViewport;
 // (weight * value, weight) of their front half, then of their back half.
 uniform bool uPreintegrated;
 uniform sampler2D uPairTable;
+uniform sampler2D uPairPrefix;  // extinction integrated over the values, n x 1 (opacity)
 uniform sampler2D uNeighbourSlab;  // the sums of the slab drawn before this one
 uniform bool uNeighbour;           // that slab is this one's neighbour in depth
 uniform bool uNeighbourInFront;    // front to back: it lies in front
@@ -83,10 +84,25 @@ vec3 shade(vec3 color, Surface p) { return headlightShade(color, p.normal, p.toE
 
 // Premultiplied colour and opacity of the ray segment `length` world units long whose value
 // runs from `front` to `back` (normalized), as classifySlabPair (slab_preintegration.cpp).
+float prefixAt(float x) {
+  float n = float(textureSize(uPairPrefix, 0).x);
+  return texture(uPairPrefix, vec2((clamp(x, 0.0, 1.0) * (n - 1.0) + 0.5) / n, 0.5)).r;
+}
+
+// Mean extinction of the segment, as segmentExtinction: from the prefix over at least one
+// sample's width about the middle.
+float segmentExtinction(float front, float back) {
+  float n = float(textureSize(uPairPrefix, 0).x);
+  float mid = 0.5 * (front + back);
+  float halfWidth = 0.5 * max(abs(back - front), 1.0 / (n - 1.0));
+  float a = clamp(mid - halfWidth, 0.0, 1.0), b = clamp(mid + halfWidth, 0.0, 1.0);
+  return b > a ? max(0.0, (prefixAt(b) - prefixAt(a)) / (b - a)) : 0.0;
+}
+
 vec4 segment(float front, float back, float length, Surface p) {
   float n = float(textureSize(uPairTable, 0).x);
   vec4 t = texture(uPairTable, (vec2(back, front) * (n - 1.0) + 0.5) / n);
-  float alpha = 1.0 - exp(-max(length, 0.0) * t.a);
+  float alpha = 1.0 - exp(-max(length, 0.0) * segmentExtinction(front, back));
   return vec4(shade(t.rgb, p) * alpha, alpha);
 }
 

@@ -19,17 +19,24 @@ class SlabPairTable {
   // Frees the texture (frames without pre-integration).
   void release() {
     texture_ = gl::Texture();
+    prefix_ = gl::Texture();
     valid_ = false;
   }
   // Makes the texture hold the table of `tf` over values [lo, hi] (mapped to texture
   // coordinates 0..1) for segments `distance` world units long (half a slab), unless it
   // already does. Returns the milliseconds it took (0 when the table was kept).
   double prepare(const TransferFunction& tf, double lo, double hi, double distance);
-  void bindUnit(unsigned unit) const { texture_.bindUnit(unit); }
-  size_t bytes() const { return texture_ ? size_t(kSize) * kSize * 16 : 0; }
+  // The pair table at `unit`, the extinction prefix (kExtinctionPrefixSize x 1, R32F) at
+  // `prefixUnit`.
+  void bindUnits(unsigned unit, unsigned prefixUnit) const {
+    texture_.bindUnit(unit);
+    prefix_.bindUnit(prefixUnit);
+  }
+  size_t bytes() const;
 
  private:
   gl::Texture texture_;
+  gl::Texture prefix_;
   bool valid_ = false;
   double lo_ = 0.0, hi_ = 0.0, distance_ = 0.0;
 };

@@ -407,7 +407,7 @@ void SplatRenderer::bindFrameState() {
   if (frame_.gpuSlabs) gpuPartition_->bindForDrawing();
   occlusion_.bindForDrawing(kOpaqueUnit);
   transferTexture_.bindUnit(0);
-  if (frame_.pairedSlabs) pairTable_.bindUnit(kPairTableUnit);
+  if (frame_.pairedSlabs) pairTable_.bindUnits(kPairTableUnit, kPairPrefixUnit);
   glBindVertexArray(emptyVao_.id());
   glViewport(0, 0, frame_.width, frame_.height);
   glEnable(GL_PROGRAM_POINT_SIZE);

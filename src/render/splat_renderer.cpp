@@ -274,6 +274,7 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
   p.setFloat("uPixelsPerUnit", float(proj.pixelsPerUnit));
   // Samplers of different types must not share a unit, used or not.
   p.setInt("uPairTable", int(kPairTableUnit));
+  p.setInt("uPairPrefix", int(kPairPrefixUnit));
   p.setInt("uNeighbourSlab", int(kNeighbourSlabUnit));
   if (frame_.pairedSlabs) {
     // Front to back the slab drawn before is the segment's front, back to front its back.

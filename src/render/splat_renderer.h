@@ -214,6 +214,7 @@ class SplatRenderer : public Renderer {
   SlabPairTable pairTable_;                   // post-classification with pre-integration
   static constexpr unsigned kPairTableUnit = 5;
   static constexpr unsigned kNeighbourSlabUnit = 6;  // paired slabs: the slab drawn before
+  static constexpr unsigned kPairPrefixUnit = 9;     // paired slabs: the extinction prefix
   gl::VertexArray emptyVao_;
   gl::Buffer splatBuffer_;
   gl::Buffer orderBuffer_;
