@@ -145,7 +145,7 @@ TEST_F(Soak, TwoThousandFramesLeakNoGlObjectsAndNoMemory) {
   // renderers, so Mesa has compiled every shader variant they need, and any growth there is a
   // per-frame leak.
   const int kCycle = 200, kSteadyStart = kFrames - kCycle;
-  for (int frame = 0; frame < kFrames; ++frame) {
+  const auto drawFrame = [&](int frame) {
     const int p = frame % kCycle;
     if (frame % 400 == 399 && frame + 1 < kFrames) {  // new renderers
       own = std::make_unique<SplatRenderer>(shaders);
@@ -204,7 +204,8 @@ TEST_F(Soak, TwoThousandFramesLeakNoGlObjectsAndNoMemory) {
       afterWarmUp = countGlObjects();
       rssAfterWarmUp = residentKiB();
     }
-  }
+  };
+  for (int frame = 0; frame < kFrames; ++frame) drawFrame(frame);
   std::printf(
       "soak: composite %d, xray %d, mip %d, shaded %d, back to front %d, with surface "
       "splats %d, quad path %d, >= 40 slabs %d (most %zu), shear-warp %d frames\n",
@@ -243,9 +244,20 @@ TEST_F(Soak, TwoThousandFramesLeakNoGlObjectsAndNoMemory) {
     // GL tests and builds loading both cores, up to +34 KiB, and once +89 before heapInUseKiB
     // waited for llvmpipe's threads (glFinish). 64 KiB: a leak of 328
     // bytes a frame (one small object a frame) still fails; LeakSanitizer checks the rest.
-    EXPECT_LT(heapAtEnd - heapSteadyStart, 64)
-        << "the heap in use grew by " << heapAtEnd - heapSteadyStart << " KiB in the last "
-        << kCycle << " frames";
+    // Under load the allocator's noise once read +70 KiB (a CI run beside other work); it
+    // comes and goes, while a leak grows again in every repeat of the cycle: above the bound,
+    // the last cycle is drawn once more and the smaller growth counts.
+    long growth = heapAtEnd - heapSteadyStart;
+    if (growth >= 64) {
+      const long before = heapInUseKiB();
+      for (int frame = kSteadyStart; frame < kFrames; ++frame) drawFrame(frame);
+      const long again = heapInUseKiB() - before;
+      std::cout << "soak: the heap grew by " << growth
+                << " KiB; repeating the last cycle: " << again << " KiB\n";
+      growth = std::min(growth, again);
+    }
+    EXPECT_LT(growth, 64) << "the heap in use grew by " << growth << " KiB in the last " << kCycle
+                          << " frames (and in a repeat of them)";
   }
   // Dropping the renderers frees their objects: fewer programs than before.
   own.reset();
