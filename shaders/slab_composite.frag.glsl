@@ -82,10 +82,8 @@ Surface pixelSurface(vec4 s) {
 
 vec3 shade(vec3 color, Surface p) { return headlightShade(color, p.normal, p.toEye); }
 
-// Premultiplied colour and opacity of the ray segment `length` world units long whose value
-// runs from `front` to `back` (normalized), as classifySlabPair (slab_preintegration.cpp).
-float prefixAt(float x) {
-  float n = float(textureSize(uPairPrefix, 0).x);
+// The extinction prefix (n samples) read linearly at normalized value x.
+float prefixAt(float x, float n) {
   return texture(uPairPrefix, vec2((clamp(x, 0.0, 1.0) * (n - 1.0) + 0.5) / n, 0.5)).r;
 }
 
@@ -96,9 +94,11 @@ float segmentExtinction(float front, float back) {
   float mid = 0.5 * (front + back);
   float halfWidth = 0.5 * max(abs(back - front), 1.0 / (n - 1.0));
   float a = clamp(mid - halfWidth, 0.0, 1.0), b = clamp(mid + halfWidth, 0.0, 1.0);
-  return b > a ? max(0.0, (prefixAt(b) - prefixAt(a)) / (b - a)) : 0.0;
+  return b > a ? max(0.0, (prefixAt(b, n) - prefixAt(a, n)) / (b - a)) : 0.0;
 }
 
+// Premultiplied colour and opacity of the ray segment `length` world units long whose value
+// runs from `front` to `back` (normalized), as classifySlabPair (slab_preintegration.cpp).
 vec4 segment(float front, float back, float length, Surface p) {
   float n = float(textureSize(uPairTable, 0).x);
   vec4 t = texture(uPairTable, (vec2(back, front) * (n - 1.0) + 0.5) / n);

@@ -25,9 +25,9 @@ struct RenderOptionText {
   std::optional<double> surfaceOpacity;
 };
 
-// Adds --classification, --slab-preintegration, --prefilter, --post-normals, --compositing, --termination,
-// --occlusion-culling, --xray-map, --xray-scale, --shading, --ambient, --diffuse, --specular,
-// --shininess, --gradient, --surface-threshold, --surface-opacity-threshold,
+// Adds --classification, --slab-preintegration, --prefilter, --post-normals, --compositing,
+// --termination, --occlusion-culling, --xray-map, --xray-scale, --shading, --ambient, --diffuse,
+// --specular, --shininess, --gradient, --surface-threshold, --surface-opacity-threshold,
 // --surface-min-gradient and --surface-opacity to `app`, writing into `settings` and `text`;
 // both must outlive the parse.
 void addShadingOptions(CLI::App& app, RenderSettings& settings, RenderOptionText& text);

@@ -6,6 +6,19 @@
 
 namespace ewa {
 
+namespace {
+
+// GL_LINEAR at coordinate (v (n - 1) + 0.5) / n: texel position v (n - 1), between the texels
+// i0 and i1 on either side (clamped to the edge), t of the way to i1.
+void linearTexels(double v, int n, int* i0, int* i1, double* t) {
+  const double x = std::clamp(v, 0.0, 1.0) * double(n - 1);
+  *i0 = std::min(int(std::floor(x)), n - 1);
+  *i1 = std::min(*i0 + 1, n - 1);
+  *t = x - double(*i0);
+}
+
+}  // namespace
+
 std::vector<glm::vec4> slabPairTexels(const PreintegrationTable& table,
                                       const TransferFunction& tf) {
   const int n = table.size();
@@ -27,9 +40,9 @@ std::vector<float> extinctionPrefix(const TransferFunction& tf, double lo, doubl
   constexpr int kSub = 8;  // midpoint samples between two entries
   std::vector<float> prefix(size_t(std::max(n, 2)), 0.0f);
   const int m = int(prefix.size());
+  const double step = 1.0 / double(m - 1);
   double sum = 0.0;
   for (int i = 1; i < m; ++i) {
-    const double step = 1.0 / double(m - 1);
     for (int q = 0; q < kSub; ++q) {
       const double x = (i - 1 + (q + 0.5) / kSub) * step;
       sum += std::min(tf.extinctionAt(lo + (hi - lo) * x), kMaxPrefixExtinction) * step / kSub;
@@ -41,10 +54,10 @@ std::vector<float> extinctionPrefix(const TransferFunction& tf, double lo, doubl
 
 double segmentExtinction(const std::vector<float>& prefix, double front, double back) {
   const int n = int(prefix.size());
-  const auto at = [&](double x) {  // GL_LINEAR at coordinate (x (n - 1) + 0.5) / n
-    const double p = std::clamp(x, 0.0, 1.0) * double(n - 1);
-    const int i0 = std::min(int(std::floor(p)), n - 1), i1 = std::min(i0 + 1, n - 1);
-    const double t = p - double(i0);
+  const auto at = [&](double x) {
+    int i0, i1;
+    double t;
+    linearTexels(x, n, &i0, &i1, &t);
     return (1.0 - t) * double(prefix[size_t(i0)]) + t * double(prefix[size_t(i1)]);
   };
   const double mid = 0.5 * (front + back);
@@ -56,18 +69,10 @@ double segmentExtinction(const std::vector<float>& prefix, double front, double 
 glm::dvec4 classifySlabPair(const std::vector<glm::vec4>& texels, int size,
                             const std::vector<float>& prefix, double front, double back,
                             double length) {
-  // GL_LINEAR at coordinate (v (n - 1) + 0.5) / n: texel position v (n - 1), between the
-  // texels on either side (clamped to the edge).
-  const auto split = [size](double v, int* i0, int* i1, double* t) {
-    const double x = std::clamp(v, 0.0, 1.0) * double(size - 1);
-    *i0 = std::min(int(std::floor(x)), size - 1);
-    *i1 = std::min(*i0 + 1, size - 1);
-    *t = x - double(*i0);
-  };
   int f0, f1, b0, b1;
   double tf, tb;
-  split(front, &f0, &f1, &tf);
-  split(back, &b0, &b1, &tb);
+  linearTexels(front, size, &f0, &f1, &tf);
+  linearTexels(back, size, &b0, &b1, &tb);
   const auto at = [&](int f, int b) { return glm::dvec4(texels[size_t(f) * size + b]); };
   const glm::dvec4 e = (1.0 - tf) * ((1.0 - tb) * at(f0, b0) + tb * at(f0, b1)) +
                        tf * ((1.0 - tb) * at(f1, b0) + tb * at(f1, b1));
