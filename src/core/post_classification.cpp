@@ -11,37 +11,61 @@ namespace {
 
 constexpr int kTable = 4096;
 
-// One pass of a windowed squared-distance transform along `axis` of a dims-sized grid holding
-// squared distances capped at `cap`: each entry becomes min over |s| <= margin of the entry s
-// along the axis plus s^2. Three passes (x, y, z) from seeds 0 and the rest `cap` give the
-// squared Euclidean distance to the nearest seed wherever it is at most margin^2 (every axis
-// offset of such a seed is within the window).
-void distanceAxis(std::vector<uint8_t>& grid, const std::array<int64_t, 3>& d, int axis, int margin,
-                  int cap) {
-  const int64_t n = d[axis];
+// One pass of a windowed squared-distance transform along an axis of a grid holding squared
+// distances capped at `cap`: each entry becomes min over |s| <= margin of the entry s along the
+// axis plus s^2. Three passes (x, y, z) from seeds 0 and the rest `cap` give the squared
+// Euclidean distance to the nearest seed wherever it is at most margin^2 (every axis offset of
+// such a seed is within the window).
+//
+// Along x the lines are contiguous. Along y and z the pass runs over whole contiguous rows
+// (x-rows, or xy-planes for z), row t taking the minimum over rows t - margin ... t + margin, so
+// memory is read in order: gathering a z-line one byte a plane apart missed the cache at every
+// voxel. Rows before t are overwritten by then; their values before the pass are kept in `past`.
+void distanceX(std::vector<uint8_t>& grid, const std::array<int64_t, 3>& d, int margin, int cap) {
+  const int64_t n = d[0];
   if (n <= 1) return;
-  const int64_t step = axis == 0 ? 1 : axis == 1 ? d[0] : d[0] * d[1];
-  const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-  const int64_t s1 = a1 == 0 ? 1 : a1 == 1 ? d[0] : d[0] * d[1];
-  const int64_t s2 = a2 == 0 ? 1 : a2 == 1 ? d[0] : d[0] * d[1];
   std::vector<uint8_t> line(static_cast<size_t>(n));
-  for (int64_t q = 0; q < d[a2]; ++q) {
-    for (int64_t p = 0; p < d[a1]; ++p) {
-      const int64_t base = p * s1 + q * s2;
-      bool any = false;
-      for (int64_t t = 0; t < n; ++t) {
-        line[size_t(t)] = grid[size_t(base + t * step)];
-        any = any || line[size_t(t)] < cap;
+  for (int64_t base = 0; base < int64_t(grid.size()); base += n) {
+    uint8_t* row = grid.data() + base;
+    if (std::all_of(row, row + n, [cap](uint8_t v) { return v >= cap; })) continue;
+    std::copy(row, row + n, line.begin());
+    for (int64_t t = 0; t < n; ++t) {
+      int best = line[size_t(t)];
+      const int64_t lo = std::max<int64_t>(t - margin, 0),
+                    hi = std::min<int64_t>(t + margin, n - 1);
+      for (int64_t u = lo; u <= hi; ++u)
+        best = std::min(best, line[size_t(u)] + int((u - t) * (u - t)));
+      row[t] = uint8_t(std::min(best, cap));
+    }
+  }
+}
+
+// `rows` rows of `length` bytes, `count` of them along the axis, repeated `outer` times.
+void distanceRows(std::vector<uint8_t>& grid, int64_t length, int64_t count, int64_t outer,
+                  int margin, int cap) {
+  if (count <= 1) return;
+  const size_t len = size_t(length);
+  std::vector<uint8_t> past(size_t(margin) * len), original(len);
+  std::vector<int> best(len);
+  for (int64_t o = 0; o < outer; ++o) {
+    uint8_t* block = grid.data() + size_t(o * count) * len;
+    for (int64_t t = 0; t < count; ++t) {
+      uint8_t* row = block + size_t(t) * len;
+      std::copy(row, row + len, original.begin());
+      for (size_t x = 0; x < len; ++x) best[x] = row[x];
+      for (int s = 1; s <= margin; ++s) {
+        const int add = s * s;
+        if (t - s >= 0) {  // before the pass: kept in past, slot (t - s) % margin
+          const uint8_t* before = past.data() + size_t((t - s) % margin) * len;
+          for (size_t x = 0; x < len; ++x) best[x] = std::min(best[x], before[x] + add);
+        }
+        if (t + s < count) {
+          const uint8_t* after = block + size_t(t + s) * len;
+          for (size_t x = 0; x < len; ++x) best[x] = std::min(best[x], after[x] + add);
+        }
       }
-      if (!any) continue;  // nothing within reach on this line
-      for (int64_t t = 0; t < n; ++t) {
-        int best = line[size_t(t)];
-        const int64_t lo = std::max<int64_t>(t - margin, 0),
-                      hi = std::min<int64_t>(t + margin, n - 1);
-        for (int64_t u = lo; u <= hi; ++u)
-          best = std::min(best, line[size_t(u)] + int((u - t) * (u - t)));
-        grid[size_t(base + t * step)] = uint8_t(std::min(best, cap));
-      }
+      for (size_t x = 0; x < len; ++x) row[x] = uint8_t(std::min(best[x], cap));
+      std::copy(original.begin(), original.end(), past.begin() + size_t(t % margin) * len);
     }
   }
 }
@@ -54,8 +78,33 @@ void dilateBall(std::vector<uint8_t>& mask, const std::array<int64_t, 3>& d, int
   if (m == 0) return;
   const int cap = m * m + 1;
   for (uint8_t& v : mask) v = v ? 0 : uint8_t(cap);
-  for (int axis = 0; axis < 3; ++axis) distanceAxis(mask, d, axis, m, cap);
+  distanceX(mask, d, m, cap);
+  distanceRows(mask, d[0], d[1], d[2], m, cap);
+  distanceRows(mask, d[0] * d[1], d[2], 1, m, cap);
   for (uint8_t& v : mask) v = v < cap ? 1 : 0;
+}
+
+// A value's place in the 4096-entry table: the entries below and above it (equal on an entry);
+// floor kTable marks a NaN or infinite value.
+struct TablePosition {
+  uint16_t floor = kTable;
+  uint16_t ceil = kTable;
+  bool finite() const { return floor < kTable; }
+};
+
+// The table positions of slice k (x fastest), into `at`.
+void slicePositions(const Volume& volume, int64_t k, double lo, double width,
+                    std::vector<TablePosition>* at) {
+  const int64_t first = volume.index(0, 0, k);
+  for (size_t n = 0; n < at->size(); ++n) {
+    const double v = volume.valueAt(first + int64_t(n));
+    TablePosition& p = (*at)[n];
+    p = TablePosition();
+    if (!std::isfinite(v)) continue;
+    const double x = std::clamp((v - lo) / width, 0.0, 1.0) * (kTable - 1);
+    p.floor = uint16_t(std::floor(x));
+    p.ceil = uint16_t(std::ceil(x));
+  }
 }
 
 }  // namespace
@@ -98,35 +147,43 @@ std::vector<uint8_t> postClassificationMask(const Volume& volume,
   for (int t = 0; t < kTable; ++t)
     before[t + 1] = before[t] + (isVisible(lo + width * t / (kTable - 1)) ? 1 : 0);
   if (before[kTable] == 0) return mask;
-  auto position = [&](double v) { return std::clamp((v - lo) / width, 0.0, 1.0) * (kTable - 1); };
-  auto anyVisible = [&](double a, double b) {
-    if (a > b) std::swap(a, b);
-    const int ta = int(std::floor(position(a))), tb = int(std::ceil(position(b)));
-    return before[tb + 1] - before[ta] > 0;
+  // Each voxel's table position as its floor and ceiling entries, computed once per voxel (for
+  // this slice and the next, the neighbours' along z): the interval between two values reaches
+  // from the lower floor to the higher ceiling (floor and ceiling are monotonic), so the tests
+  // below are integer work only.
+  const size_t sliceSize = size_t(d[0] * d[1]);
+  std::vector<TablePosition> here(sliceSize), next(sliceSize);
+  slicePositions(volume, 0, lo, width, &next);
+  auto anyVisible = [&](TablePosition a, TablePosition b) {
+    return before[std::max(a.ceil, b.ceil) + 1] - before[std::min(a.floor, b.floor)] > 0;
   };
   const int64_t strides[3] = {1, d[0], d[0] * d[1]};
-  for (int64_t k = 0; k < d[2]; ++k)
+  for (int64_t k = 0; k < d[2]; ++k) {
+    here.swap(next);
+    if (k + 1 < d[2]) slicePositions(volume, k + 1, lo, width, &next);
     for (int64_t j = 0; j < d[1]; ++j)
       for (int64_t i = 0; i < d[0]; ++i) {
+        const int64_t m = i + d[0] * j;  // in the slice
         const int64_t n = volume.index(i, j, k);
-        const double v = volume.valueAt(n);
-        if (!std::isfinite(v)) continue;
+        const TablePosition v = here[size_t(m)];
+        if (!v.finite()) continue;
         if (anyVisible(v, v)) {
           mask[size_t(n)] = 1;
           continue;
         }
         // A crossing between two invisible values marks both (a visible end is a seed itself,
         // and the margin covers its neighbours).
-        const int64_t at[3] = {i, j, k};
+        const int64_t ijk[3] = {i, j, k};
         for (int axis = 0; axis < 3; ++axis) {
-          if (at[axis] + 1 >= d[axis]) continue;
-          const double w = volume.valueAt(n + strides[axis]);
-          if (std::isfinite(w) && !anyVisible(w, w) && anyVisible(v, w)) {
+          if (ijk[axis] + 1 >= d[axis]) continue;
+          const TablePosition w = axis == 2 ? next[size_t(m)] : here[size_t(m + strides[axis])];
+          if (w.finite() && !anyVisible(w, w) && anyVisible(v, w)) {
             mask[size_t(n)] = 1;
             mask[size_t(n + strides[axis])] = 1;
           }
         }
       }
+  }
   dilateBall(mask, d, margin);
   return mask;
 }

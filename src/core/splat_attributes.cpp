@@ -5,6 +5,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/packing.hpp>
+#include <thread>
 
 namespace ewa {
 
@@ -133,25 +134,41 @@ ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf
   // Voxels are kept by their own values (above); only what the splats carry is sharpened.
   if (post) prefilterSplatValues(volume, c.prefilter, &out.splats);
   const double minSpacing = std::min({volume.spacing().x, volume.spacing().y, volume.spacing().z});
-  out.attributes.reserve(out.splats.size());
-  for (const PackedSplat& s : out.splats.splats()) {
-    const int64_t i = SplatSet::i(s), j = SplatSet::j(s), k = SplatSet::k(s);
-    const double v = volume.value(i, j, k);
-    const glm::dvec3 g = volumeGradient(volume, i, j, k, c.gradient);
-    const double mag = glm::length(g);
-    // Below this the direction is rounding noise: the splat stays unshaded.
-    const bool hasNormal = mag * minSpacing > 1e-6 * width;
-    const glm::dvec3 n = hasNormal ? -g / mag : glm::dvec3(0.0);
-    bool surface = !post && hasNormal && onSurface(i, j, k, v);
-    if (surface && c.surface == SurfaceCriterion::Opacity)
-      surface = mag * minSpacing >= c.minGradient * width;
-    // Onto the iso-surface by one Newton step along the gradient (value criterion only).
-    const double offset = surface && c.surface == SurfaceCriterion::Value
-                              ? (v - c.threshold) / (mag * minSpacing)
-                              : 0.0;
-    out.surfaceCount += surface ? 1 : 0;
-    out.attributes.push_back(packAttributes(n, surface, offset));
-  }
+  const std::vector<PackedSplat>& splats = out.splats.splats();
+  out.attributes.resize(splats.size());
+  // Each splat's normal and kind depend on its own neighbourhood only: the splats are split
+  // between the machine's cores (the gradients are most of classification's time after the mask).
+  auto attributes = [&](size_t first, size_t last, size_t* surfaces) {
+    for (size_t n = first; n < last; ++n) {
+      const PackedSplat& s = splats[n];
+      const int64_t i = SplatSet::i(s), j = SplatSet::j(s), k = SplatSet::k(s);
+      const double v = volume.value(i, j, k);
+      const glm::dvec3 g = volumeGradient(volume, i, j, k, c.gradient);
+      const double mag = glm::length(g);
+      // Below this the direction is rounding noise: the splat stays unshaded.
+      const bool hasNormal = mag * minSpacing > 1e-6 * width;
+      const glm::dvec3 nrm = hasNormal ? -g / mag : glm::dvec3(0.0);
+      bool surface = !post && hasNormal && onSurface(i, j, k, v);
+      if (surface && c.surface == SurfaceCriterion::Opacity)
+        surface = mag * minSpacing >= c.minGradient * width;
+      // Onto the iso-surface by one Newton step along the gradient (value criterion only).
+      const double offset = surface && c.surface == SurfaceCriterion::Value
+                                ? (v - c.threshold) / (mag * minSpacing)
+                                : 0.0;
+      *surfaces += surface ? 1 : 0;
+      out.attributes[n] = packAttributes(nrm, surface, offset);
+    }
+  };
+  const size_t threads =
+      splats.size() < 65536 ? 1 : std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 16);
+  std::vector<size_t> surfaces(threads, 0);
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < threads; ++t)
+    pool.emplace_back(attributes, splats.size() * t / threads, splats.size() * (t + 1) / threads,
+                      &surfaces[t]);
+  attributes(0, splats.size() / threads, &surfaces[0]);
+  for (std::thread& th : pool) th.join();
+  for (size_t count : surfaces) out.surfaceCount += count;
   return out;
 }
 

@@ -11,16 +11,6 @@
 
 namespace ewa {
 
-size_t scalarSize(ScalarType type) {
-  switch (type) {
-    case ScalarType::UInt8: return 1;
-    case ScalarType::Int16:
-    case ScalarType::UInt16: return 2;
-    case ScalarType::Float32: return 4;
-  }
-  return 1;
-}
-
 const char* scalarName(ScalarType type) {
   switch (type) {
     case ScalarType::UInt8: return "uint8";
@@ -45,17 +35,6 @@ Volume::Volume(std::array<int64_t, 3> dims, glm::dvec3 spacing, glm::dvec3 origi
   if (bytes_.size() / scalarSize(type_) != count || bytes_.size() % scalarSize(type_) != 0)
     throw std::invalid_argument("volume data size does not match its dimensions");
   computeStatistics();
-}
-
-double Volume::valueAt(int64_t n) const {
-  const uint8_t* p = bytes_.data() + static_cast<size_t>(n) * scalarSize(type_);
-  switch (type_) {
-    case ScalarType::UInt8: return *p;
-    case ScalarType::Int16: { int16_t v; std::memcpy(&v, p, 2); return v; }
-    case ScalarType::UInt16: { uint16_t v; std::memcpy(&v, p, 2); return v; }
-    case ScalarType::Float32: { float v; std::memcpy(&v, p, 4); return v; }
-  }
-  return 0.0;
 }
 
 void Volume::setDirection(const glm::dmat3& direction, bool patientFrame) {

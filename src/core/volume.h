@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -14,8 +15,21 @@ namespace ewa {
 
 enum class ScalarType { UInt8, Int16, UInt16, Float32 };
 
-// Bytes per value of each scalar type.
-size_t scalarSize(ScalarType type);
+// Bytes per value of each scalar type. Inline (as valueAt is): classification calls them for
+// every voxel and its neighbours, and out of line the calls cost more than the reads.
+inline size_t scalarSize(ScalarType type) {
+  switch (type) {
+    case ScalarType::UInt8:
+      return 1;
+    case ScalarType::Int16:
+    case ScalarType::UInt16:
+      return 2;
+    case ScalarType::Float32:
+      return 4;
+  }
+  return 1;
+}
+
 // "uint8", "int16", "uint16", "float32".
 const char* scalarName(ScalarType type);
 
@@ -50,10 +64,30 @@ class Volume {
 
   // Value of voxel (i,j,k) converted to double; NaN stays NaN.
   double value(int64_t i, int64_t j, int64_t k) const { return valueAt(index(i, j, k)); }
-  double valueAt(int64_t linearIndex) const;
-  int64_t index(int64_t i, int64_t j, int64_t k) const {
-    return i + dims_[0] * (j + dims_[1] * k);
+  double valueAt(int64_t linearIndex) const {
+    const uint8_t* p = bytes_.data() + static_cast<size_t>(linearIndex) * scalarSize(type_);
+    switch (type_) {
+      case ScalarType::UInt8:
+        return *p;
+      case ScalarType::Int16: {
+        int16_t v;
+        std::memcpy(&v, p, 2);
+        return v;
+      }
+      case ScalarType::UInt16: {
+        uint16_t v;
+        std::memcpy(&v, p, 2);
+        return v;
+      }
+      case ScalarType::Float32: {
+        float v;
+        std::memcpy(&v, p, 4);
+        return v;
+      }
+    }
+    return 0.0;
   }
+  int64_t index(int64_t i, int64_t j, int64_t k) const { return i + dims_[0] * (j + dims_[1] * k); }
 
   // Finite value range over all voxels (NaN and infinities are skipped); {0,0} if none.
   double minValue() const { return range_[0]; }

@@ -53,7 +53,7 @@ TEST(PostClassification, MarginIsABallAroundEachVisibleVoxel) {
   bytes[0] = 255;  // a corner seed: the window must stop at the edges
   const Volume v(dims, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8, bytes);
   const auto visible = [](double x) { return x > 200.0; };
-  for (int margin : {1, 2, 3}) {
+  for (int margin : {1, 2, 3, 6}) {  // 6: a window wider than the grid along z
     const std::vector<uint8_t> mask = postClassificationMask(v, visible, margin);
     size_t kept = 0;
     for (int64_t k = 0; k < dims[2]; ++k)
