@@ -4,25 +4,44 @@
 // neighbouring slab's.
 #include "headlight.glsl"
 
-uniform sampler2D uSlab;
-uniform sampler2D uSlabNormal;  // post with shading: the sum of weight * camera-space normal
-uniform sampler1D uTransfer;    // rgb + extinction tau per world unit
-uniform bool uPost;
-uniform bool uOrthographic;
-uniform float uFocalPixels;
-uniform vec2 uViewport;
+// The variant, fixed when the program is compiled (src/render/slab_pass_programs.h).
+#ifndef SLAB_POST
+#define SLAB_POST 0
+#endif
+#ifndef SLAB_PREINTEGRATED
+#define SLAB_PREINTEGRATED 0
+#endif
+#ifndef SLAB_SHADING
+#define SLAB_SHADING 0
+#endif
+#ifndef SLAB_FIELD_NORMALS
+#define SLAB_FIELD_NORMALS 0
+#endif
+#ifndef SLAB_NEIGHBOUR_IN_FRONT
+#define SLAB_NEIGHBOUR_IN_FRONT 0
+#endif
+const bool kPost = SLAB_POST != 0;
 // Pre-integration (post only): the table of slab_preintegration.h, x the back value, y the
 // front; rgb colour per unit opacity, a mean extinction per world unit. The slabs then hold
 // (weight * value, weight) of their front half, then of their back half.
-uniform bool uPreintegrated;
+const bool kPreintegrated = SLAB_PREINTEGRATED != 0;
+const bool kShading = SLAB_SHADING != 0;
+// Pre-integrated with shading: normals from the gradient of the reconstructed field, by
+// differences of the slab's mean values to the neighbouring pixels and between its halves.
+const bool kFieldNormals = SLAB_FIELD_NORMALS != 0;
+// Front to back: the slab drawn before this one lies in front.
+const bool kNeighbourInFront = SLAB_NEIGHBOUR_IN_FRONT != 0;
+
+uniform sampler2D uSlab;
+uniform sampler2D uSlabNormal;  // post with shading: the sum of weight * camera-space normal
+uniform sampler1D uTransfer;    // rgb + extinction tau per world unit
+uniform bool uOrthographic;
+uniform float uFocalPixels;
+uniform vec2 uViewport;
 uniform sampler2D uPairTable;
 uniform sampler2D uPairPrefix;  // extinction integrated over the values, n x 1 (opacity)
 uniform sampler2D uNeighbourSlab;  // the sums of the slab drawn before this one
 uniform bool uNeighbour;           // that slab is this one's neighbour in depth
-uniform bool uNeighbourInFront;    // front to back: it lies in front
-// Pre-integrated with shading: normals from the gradient of the reconstructed field, by
-// differences of the slab's mean values to the neighbouring pixels and between its halves.
-uniform bool uFieldNormals;
 uniform vec2 uSlabDepths;       // this slab's near and far camera depth
 uniform float uPixelsPerUnit;   // orthographic: pixels per world unit
 
@@ -70,8 +89,8 @@ vec3 fieldGradient(vec4 s) {
 
 Surface pixelSurface(vec4 s) {
   Surface p = Surface(vec3(0.0), vec3(0.0, 0.0, 1.0));
-  if (!uShading) return p;
-  vec3 normal = uFieldNormals ? fieldGradient(s)
+  if (!kShading) return p;
+  vec3 normal = kFieldNormals ? fieldGradient(s)
                               : texelFetch(uSlabNormal, ivec2(gl_FragCoord.xy), 0).xyz;
   vec2 ray = (gl_FragCoord.xy - 0.5 * uViewport) / uFocalPixels;
   float len = length(normal);
@@ -80,7 +99,9 @@ Surface pixelSurface(vec4 s) {
   return p;
 }
 
-vec3 shade(vec3 color, Surface p) { return headlightShade(color, p.normal, p.toEye); }
+vec3 shade(vec3 color, Surface p) {
+  return kShading ? headlightShade(color, p.normal, p.toEye) : color;
+}
 
 // The extinction prefix (n samples) read linearly at normalized value x.
 float prefixAt(float x, float n) {
@@ -121,14 +142,14 @@ vec4 preintegrated(vec4 s) {
   // the same picture, while a transfer-function peak between two values is integrated
   // instead of missed.
   vec2 own = halfValues(s);
-  vec2 other = uNeighbourInFront ? own.xx : own.yy;
+  vec2 other = kNeighbourInFront ? own.xx : own.yy;
   if (uNeighbour) {
     vec4 n = texelFetch(uNeighbourSlab, ivec2(gl_FragCoord.xy), 0);
     if (n.g + n.a > 0.0) other = halfValues(n);
   }
   Surface p = pixelSurface(s);
   vec4 first, second;
-  if (uNeighbourInFront) {
+  if (kNeighbourInFront) {
     first = segment(other.y, own.x, s.g, p);
     second = segment(own.x, own.y, s.a, p);
   } else {
@@ -140,7 +161,7 @@ vec4 preintegrated(vec4 s) {
 
 void main() {
   vec4 s = texelFetch(uSlab, ivec2(gl_FragCoord.xy), 0);
-  if (uPost && uPreintegrated) {
+  if (kPost && kPreintegrated) {
     if (!(s.g + s.a > 0.0)) discard;
     outColor = preintegrated(s);
     if (!(outColor.a > 0.0)) discard;
@@ -149,7 +170,7 @@ void main() {
   float depth = max(s.a, 0.0);
   if (!(depth > 0.0)) discard;
   vec3 color;
-  if (uPost) {
+  if (kPost) {
     // depth is the weight: the length of the ray through the slab the kernels cover, less where
     // they barely reach (silhouettes keep their share and stay anti-aliased).
     float value = clamp(s.r / depth, 0.0, 1.0);

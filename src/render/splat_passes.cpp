@@ -115,7 +115,7 @@ void SplatRenderer::setSlabLoopState() {
   const bool terminate =
       settings.order == CompositeOrder::FrontToBack && settings.terminationOpacity < 1.0;
   targets_.slabNormal.bindUnit(3);
-  slabProgram_.setInt("uSlab", 1);
+  slabPrograms_.current().setInt("uSlab", 1);
   targets_.accum.bindUnit(2);
   markProgram_.setInt("uAccum", 2);
   markProgram_.setFloat("uThreshold", float(settings.terminationOpacity));
@@ -213,11 +213,11 @@ void SplatRenderer::endCompositeSlab(size_t s) {
     // not drawn): a segment runs from its nearer half's value to this slab's.
     targets_.slabImage(slabImageOf(s + 1)).bindUnit(kNeighbourSlabUnit);
     const bool adjacent = s > 0 && slabsAdjacent(slabInOrder(s - 1), slabInOrder(s));
-    slabProgram_.setInt("uNeighbour", adjacent ? 1 : 0);
+    slabPrograms_.current().setInt("uNeighbour", adjacent ? 1 : 0);
   }
   const Slab& slab = slabInOrder(s);
-  slabProgram_.setVec2("uSlabDepths", glm::vec2(slab.nearDepth, slab.farDepth));
-  glUseProgram(slabProgram_.id());
+  slabPrograms_.current().setVec2("uSlabDepths", glm::vec2(slab.nearDepth, slab.farDepth));
+  glUseProgram(slabPrograms_.current().id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   ++stats_.slabsDrawn;
   if (terminate && (s + 1) % kCheckEvery == 0 && s + 1 < n) {

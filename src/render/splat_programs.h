@@ -3,10 +3,10 @@
 // settings need.
 #pragma once
 
-#include <map>
 #include <string>
 
 #include "gl/program.h"
+#include "gl/program_variants.h"
 #include "gl/shader_library.h"
 
 namespace ewa {
@@ -19,9 +19,10 @@ struct SplatVariant {
   bool clip = false;          // a crop box or clipping planes cut the kernels
   bool texelBuffers = false;  // splat records and attributes read from texel buffers
 
-  unsigned key() const;
+  gl::VariantFlags flags() const;
+  unsigned key() const { return gl::variantKey(flags()); }
   // The #define lines shaders/splat_variant.glsl reads.
-  std::string defines() const;
+  std::string defines() const { return gl::variantDefines(flags()); }
 };
 
 class SplatPrograms {
@@ -34,7 +35,7 @@ class SplatPrograms {
   gl::Program& point() { return current_->point; }
   gl::Program& quad() { return current_->quad; }
   // Variants compiled so far (tests).
-  size_t compiled() const { return programs_.size(); }
+  size_t compiled() const { return programs_.compiled(); }
 
  private:
   struct Pair {
@@ -42,7 +43,7 @@ class SplatPrograms {
     gl::Program quad;
   };
   const gl::ShaderLibrary& shaders_;
-  std::map<unsigned, Pair> programs_;  // map nodes stay put: current_ points into it
+  gl::ProgramVariants<Pair> programs_;
   Pair* current_ = nullptr;
 };
 

@@ -42,7 +42,7 @@ bool parsePartitionMode(const std::string& text, PartitionMode* mode) {
 SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
     : shaders_(shaders),
       splatPrograms_(shaders_),
-      slabProgram_(shaders.program("fullscreen.vert.glsl", "slab_composite.frag.glsl")),
+      slabPrograms_(shaders_),
       markProgram_(shaders.program("fullscreen.vert.glsl", "opacity_mark.frag.glsl")),
       finalProgram_(shaders.program("fullscreen.vert.glsl", "final_composite.frag.glsl")),
       boxProgram_(shaders.program("bounds_box.vert.glsl", "bounds_box.frag.glsl")),
@@ -255,10 +255,16 @@ bool SplatRenderer::voxelNormalSums(const RenderSettings& settings) {
 }
 
 void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSettings& settings) {
-  gl::Program& p = slabProgram_;
   const Lighting& light = settings.lighting;
-  const bool post = postClassified(settings);
-  p.setInt("uPost", post ? 1 : 0);
+  SlabPassVariant variant;
+  variant.post = postClassified(settings);
+  variant.preintegrated = frame_.pairedSlabs;
+  variant.shading = variant.post && light.enabled;  // pre-classified slabs carry their light
+  variant.fieldNormals = fieldNormals(settings);
+  // Front to back the slab drawn before is the segment's front, back to front its back.
+  variant.neighbourInFront = frame_.pairedSlabs && settings.order == CompositeOrder::FrontToBack;
+  slabPrograms_.select(variant);
+  gl::Program& p = slabPrograms_.current();
   p.setInt("uTransfer", 0);
   p.setInt("uSlabNormal", 3);
   p.setInt("uOrthographic", proj.orthographic ? 1 : 0);
@@ -269,17 +275,11 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
   p.setFloat("uDiffuse", float(light.diffuse));
   p.setFloat("uSpecular", float(light.specular));
   p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
-  p.setInt("uPreintegrated", frame_.pairedSlabs ? 1 : 0);
-  p.setInt("uFieldNormals", fieldNormals(settings) ? 1 : 0);
   p.setFloat("uPixelsPerUnit", float(proj.pixelsPerUnit));
   // Samplers of different types must not share a unit, used or not.
   p.setInt("uPairTable", int(kPairTableUnit));
   p.setInt("uPairPrefix", int(kPairPrefixUnit));
   p.setInt("uNeighbourSlab", int(kNeighbourSlabUnit));
-  if (frame_.pairedSlabs) {
-    // Front to back the slab drawn before is the segment's front, back to front its back.
-    p.setInt("uNeighbourInFront", settings.order == CompositeOrder::FrontToBack ? 1 : 0);
-  }
   // The normal sums are written only where they are used.
   const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   const GLenum first[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};

@@ -23,6 +23,7 @@
 #include "render/render_targets.h"
 #include "render/renderer.h"
 #include "render/slab_pair_table.h"
+#include "render/slab_pass_programs.h"
 #include "render/splat_programs.h"
 
 namespace ewa {
@@ -205,7 +206,7 @@ class SplatRenderer : public Renderer {
   bool slabScissor_ = true;
 
   SplatPrograms splatPrograms_;  // the point and quad programs of this frame's variant
-  gl::Program slabProgram_;
+  SlabPassPrograms slabPrograms_;  // the slab pass of this frame's variant
   gl::Program markProgram_;
   gl::Program finalProgram_;
   gl::Program boxProgram_;
