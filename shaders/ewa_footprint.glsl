@@ -19,6 +19,7 @@ struct FootprintParams {
   float cutoff;
   float swanSpacing;  // Swan's s: kernel width * smallest spacing
   float cullDepth;
+  float lowPass;  // the low-pass filter's variance in pixels^2 of the image drawn into
 };
 
 struct Footprint {
@@ -137,8 +138,8 @@ Footprint computeFootprint(vec3 u, mat3 covIn, Projection proj, FootprintParams 
   vec3 c0 = cov * j0, c1 = cov * j1;
   float a = dot(j0, c0), b = dot(j0, c1), c = dot(j1, c1);
   if (params.filterMode == kFilterEwa) {
-    a += 1.0;
-    c += 1.0;
+    a += params.lowPass;
+    c += params.lowPass;
   }
   float det = max(a * c - b * b, kMinDet);
   fp.covariance = vec3(a, b, c);

@@ -20,6 +20,9 @@
 #ifndef SLAB_NEIGHBOUR_IN_FRONT
 #define SLAB_NEIGHBOUR_IN_FRONT 0
 #endif
+#ifndef SLAB_SCALED
+#define SLAB_SCALED 0
+#endif
 const bool kPost = SLAB_POST != 0;
 // Pre-integration (post only): the table of slab_preintegration.h, x the back value, y the
 // front; rgb colour per unit opacity, a mean extinction per world unit. The slabs then hold
@@ -31,6 +34,8 @@ const bool kShading = SLAB_SHADING != 0;
 const bool kFieldNormals = SLAB_FIELD_NORMALS != 0;
 // Front to back: the slab drawn before this one lies in front.
 const bool kNeighbourInFront = SLAB_NEIGHBOUR_IN_FRONT != 0;
+// This slab's image or its neighbour's is coarser than the picture (uSlabScale, uNeighbourScale).
+const bool kScaled = SLAB_SCALED != 0;
 
 uniform sampler2D uSlab;
 uniform sampler2D uSlabNormal;  // post with shading: the sum of weight * camera-space normal
@@ -44,6 +49,10 @@ uniform sampler2D uNeighbourSlab;  // the sums of the slab drawn before this one
 uniform bool uNeighbour;           // that slab is this one's neighbour in depth
 uniform vec2 uSlabDepths;       // this slab's near and far camera depth
 uniform float uPixelsPerUnit;   // orthographic: pixels per world unit
+// Slab images may be coarser than the picture (src/core/slab_image_scale.h): pixels a texel a
+// side of this slab's image and of the neighbour's; 1: the picture's own pixels.
+uniform int uSlabScale;
+uniform int uNeighbourScale;
 
 out vec4 outColor;
 
@@ -54,21 +63,34 @@ struct Surface {
   vec3 toEye;
 };
 
+// A slab image's sums at pixel q: its texel, or on a coarser image the bilinear mean of the
+// four texels about the pixel's centre (the sums are band-limited far below its texels); that
+// image has a border of one texel (scaledCoordinate in src/core/slab_image_scale.h).
+vec4 slabSums(sampler2D image, ivec2 q, int scale) {
+  if (!kScaled || scale == 1) return texelFetch(image, q, 0);
+  vec2 texel = (vec2(q) + 0.5) / float(scale) + 1.0;
+  return texture(image, texel / vec2(textureSize(image, 0)));
+}
+
 // The slab's mean value over both halves at pixel q; false where no kernel reaches it.
 bool slabValue(ivec2 q, out float v) {
-  vec4 s = texelFetch(uSlab, q, 0);
+  vec4 s = slabSums(uSlab, q, uSlabScale);
   float w = s.g + s.a;
   v = w > 0.0 ? (s.r + s.b) / w : 0.0;
   return w > 0.0;
 }
 
-// d(value)/d(pixel) along `step`: central where both neighbours have kernels, else one-sided.
-float pixelDerivative(ivec2 q, ivec2 step, float centre) {
-  float ahead, behind;
+// d(value)/d(pixel) along the unit step `dir`: central where both neighbours have kernels,
+// else one-sided. On a coarser image the neighbours are a texel apart, so the derivative is the
+// bilinear mean of the texels' central differences.
+float pixelDerivative(ivec2 q, ivec2 dir, float centre) {
+  int scale = kScaled ? uSlabScale : 1;
+  ivec2 step = dir * scale;
+  float ahead, behind, span = float(scale);
   bool hasAhead = slabValue(q + step, ahead), hasBehind = slabValue(q - step, behind);
-  if (hasAhead && hasBehind) return 0.5 * (ahead - behind);
-  if (hasAhead) return ahead - centre;
-  if (hasBehind) return centre - behind;
+  if (hasAhead && hasBehind) return 0.5 * (ahead - behind) / span;
+  if (hasAhead) return (ahead - centre) / span;
+  if (hasBehind) return (centre - behind) / span;
   return 0.0;
 }
 
@@ -91,7 +113,7 @@ Surface pixelSurface(vec4 s) {
   Surface p = Surface(vec3(0.0), vec3(0.0, 0.0, 1.0));
   if (!kShading) return p;
   vec3 normal = kFieldNormals ? fieldGradient(s)
-                              : texelFetch(uSlabNormal, ivec2(gl_FragCoord.xy), 0).xyz;
+                              : slabSums(uSlabNormal, ivec2(gl_FragCoord.xy), uSlabScale).xyz;
   vec2 ray = (gl_FragCoord.xy - 0.5 * uViewport) / uFocalPixels;
   float len = length(normal);
   p.normal = len > 0.0 ? normal / len : vec3(0.0);
@@ -144,7 +166,7 @@ vec4 preintegrated(vec4 s) {
   vec2 own = halfValues(s);
   vec2 other = kNeighbourInFront ? own.xx : own.yy;
   if (uNeighbour) {
-    vec4 n = texelFetch(uNeighbourSlab, ivec2(gl_FragCoord.xy), 0);
+    vec4 n = slabSums(uNeighbourSlab, ivec2(gl_FragCoord.xy), uNeighbourScale);
     if (n.g + n.a > 0.0) other = halfValues(n);
   }
   Surface p = pixelSurface(s);
@@ -160,7 +182,7 @@ vec4 preintegrated(vec4 s) {
 }
 
 void main() {
-  vec4 s = texelFetch(uSlab, ivec2(gl_FragCoord.xy), 0);
+  vec4 s = slabSums(uSlab, ivec2(gl_FragCoord.xy), uSlabScale);
   if (kPost && kPreintegrated) {
     if (!(s.g + s.a > 0.0)) discard;
     outColor = preintegrated(s);

@@ -34,7 +34,10 @@ uniform float uMaxSigma;     // a kernel's largest standard deviation (kernel wi
 uniform bool uOrthographic;
 uniform float uFocalPixels;
 uniform float uPixelsPerUnit;
-uniform vec2 uViewport;
+uniform vec2 uViewport;      // the image drawn into, in pixels (a slab image may be coarser)
+uniform vec2 uPrincipal;     // the view axis in that image
+uniform vec4 uViewportRect;  // the GL viewport drawn with: origin, size (a guard band wider)
+uniform float uLowPass;      // FootprintParams::lowPass
 uniform int uFilter;
 uniform float uCutoff;
 uniform float uDepthCutoff;  // KernelReach::depthCutoff: the slabs a kernel is listed in
@@ -96,9 +99,8 @@ bool setupSplat(uint n, out Footprint fp) {
     mass = surfaceSplatMass(uSpacing, normal, uSurfaceTau);
   }
   vec3 u = (uView * vec4(world, 1.0)).xyz;
-  Projection proj = Projection(uOrthographic, uFocalPixels, uPixelsPerUnit, 0.5 * uViewport,
-                               uViewport);
-  FootprintParams params = FootprintParams(uFilter, uCutoff, uSwanSpacing, uCullDepth);
+  Projection proj = Projection(uOrthographic, uFocalPixels, uPixelsPerUnit, uPrincipal, uViewport);
+  FootprintParams params = FootprintParams(uFilter, uCutoff, uSwanSpacing, uCullDepth, uLowPass);
   // Cull before forming the Jacobian.
   float radius = worldReach(kernelReach(), -u.z);
   if (cullKernel(u, radius, proj, params)) return false;
@@ -119,4 +121,6 @@ bool setupSplat(uint n, out Footprint fp) {
   return true;
 }
 
-vec4 pixelToClip(vec2 pixel) { return vec4(pixel / uViewport * 2.0 - 1.0, 0.0, 1.0); }
+vec4 pixelToClip(vec2 pixel) {
+  return vec4((pixel - uViewportRect.xy) / uViewportRect.zw * 2.0 - 1.0, 0.0, 1.0);
+}

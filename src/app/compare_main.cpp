@@ -129,7 +129,7 @@ int run(int argc, char** argv) {
   bool csv = false, json = false, noVtk = false, orthographic = false;
   RenderSettings settings;  // EWA's: the defaults unless --kernel-width, --cutoff, ...
   std::string classification = classificationModeName(settings.classification.mode),
-              culling = "auto", slabRects = "on", pairs = "on";
+              culling = "auto", slabRects = "on", pairs = "on", slabResolution = "auto";
   app.add_option("--data", data,
                  "Folder with engine/, bonsai/ and cthead/ (default ../shared/data)");
   app.add_option("--volumes", volumes,
@@ -175,6 +175,10 @@ int run(int argc, char** argv) {
                  "EWA: each slab's passes cut to the pixels its kernels reach (on, default) or "
                  "over the whole image (off)")
       ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--slab-resolution", slabResolution,
+                 "EWA: slabs splatted into images as coarse as their kernels allow (auto, "
+                 "default) or at full resolution (full)")
+      ->check(CLI::IsMember({"auto", "full"}));
   app.add_option("--shader-dir", shaderDir, "Load shaders from this folder (development)");
   addBackendOption(app, backend);
   CLI11_PARSE(app, argc, argv);
@@ -182,6 +186,7 @@ int run(int argc, char** argv) {
   parseClassificationMode(classification, &settings.classification.mode);
   parseOcclusionCulling(culling, &settings.occlusionCulling);
   settings.slabPreintegration = pairs == "on";
+  settings.coarseSlabs = slabResolution == "auto";
 
   CompareReport report;
   report.repeats = repeats;
@@ -207,13 +212,14 @@ int run(int argc, char** argv) {
                 settings.classification.prefilter);
   std::snprintf(ewaText, sizeof ewaText,
                 "kernel width %.2f, cutoff %g, depth cutoff %g, %s-classification%s%s, "
-                "occlusion culling %s%s%s",
+                "occlusion culling %s%s%s%s",
                 settings.kernelWidth, settings.cutoff, settings.depthCutoff, classification.c_str(),
                 classification == "post" && pairs == "off" ? " without slab pre-integration" : "",
                 classification == "post" ? prefilterText : "",
                 ewa.occlusionCulling(settings.occlusionCulling) ? "on" : "off",
                 culling == "auto" ? " (auto)" : "",
-                slabRects == "on" ? "" : ", whole-image slab passes");
+                slabRects == "on" ? "" : ", whole-image slab passes",
+                slabResolution == "auto" ? "" : ", full-resolution slabs");
   report.ewaSettings = ewaText;
   SpriteBaseline sprites(shaders);
   const std::unique_ptr<Renderer> shearWarp = createRenderer(RendererKind::ShearWarp, shaders);

@@ -43,6 +43,7 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
     o.render.classification.prefilter = config.saved.prefilter;
     ewa::parsePostNormals(config.saved.postNormals, &o.render.postNormals);
     o.render.slabThickness = config.saved.slabThickness;
+    o.render.coarseSlabs = config.saved.coarseSlabs;
     o.render.background = config.saved.background;
   }
   // The last session's crop box and planes, when it showed this volume and none are given.

@@ -36,6 +36,12 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
                  "draw them (off), or auto (default: on, but off on software rasterizers); the "
                  "picture is the same")
       ->check(CLI::IsMember({"auto", "on", "off"}));
+  app.add_option("--slab-resolution", p.slabResolution,
+                 "Composite: splat each slab into an image as coarse as its kernels allow (auto, "
+                 "default: 2 or 4 pixels a texel where every footprint stays 2 texels wide, "
+                 "read back bilinearly; not with shaded post-classification) or at the "
+                 "picture's resolution (full)")
+      ->check(CLI::IsMember({"auto", "full"}));
   app.add_option("--xray-map", p.xrayMap, "X-ray gray: exp (exp(-sum), default) or sum")
       ->check(CLI::IsMember({"exp", "sum"}));
   app.add_option("--xray-scale", s.xrayScale, "X-ray: optical depth multiplied by this (default 1)")
@@ -74,6 +80,7 @@ std::string finishShadingOptions(const RenderOptionText& p, RenderSettings* s) {
   parseGradientMode(p.gradient, &s->classification.gradient);
   parseClassificationMode(p.classification, &s->classification.mode);
   s->slabPreintegration = p.slabPreintegration == "on";
+  s->coarseSlabs = p.slabResolution == "auto";
   parsePostNormals(p.postNormals, &s->postNormals);
   if (p.surfaceValue) {
     if (!std::isfinite(*p.surfaceValue)) return "--surface-threshold: not a finite number";

@@ -21,12 +21,13 @@ struct RenderOptionText {
   std::string slabPreintegration = "on";
   std::string postNormals = "field";
   std::string occlusionCulling = "auto";
+  std::string slabResolution = "auto";
   std::optional<double> surfaceValue;
   std::optional<double> surfaceOpacity;
 };
 
 // Adds --classification, --slab-preintegration, --prefilter, --post-normals, --compositing,
-// --termination, --occlusion-culling, --xray-map, --xray-scale, --shading, --ambient, --diffuse,
+// --termination, --occlusion-culling, --slab-resolution, --xray-map, --xray-scale, --shading, --ambient, --diffuse,
 // --specular, --shininess, --gradient, --surface-threshold, --surface-opacity-threshold,
 // --surface-min-gradient and --surface-opacity to `app`, writing into `settings` and `text`;
 // both must outlive the parse.

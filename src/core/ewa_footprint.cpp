@@ -160,8 +160,8 @@ Footprint computeFootprint(const glm::dvec3& u, const glm::dmat3& covIn, const P
   const glm::dvec3 c0 = cov * j0, c1 = cov * j1;
   double a = glm::dot(j0, c0), b = glm::dot(j0, c1), c = glm::dot(j1, c1);
   if (params.filter == FilterMode::Ewa) {
-    a += 1.0;  // the one-pixel Gaussian low-pass filter
-    c += 1.0;
+    a += params.lowPass;  // the one-pixel Gaussian low-pass filter
+    c += params.lowPass;
   }
   const double det = std::max(a * c - b * b, kMinDet);
   fp.covariance = glm::dmat2(a, b, b, c);

@@ -27,6 +27,9 @@ struct FootprintParams {
   // size a wider one is (at width 1 the voxel spacing, Swan's rule).
   double swanSpacing = 1.0;
   double cullDepth = 1e-3;  // voxels at or closer than this to the eye plane are culled
+  // EWA's low-pass filter: its variance in pixels^2 of the image drawn into. One output pixel;
+  // 1/s^2 on a slab image s times coarser (slab_image_scale.h), the same filter in the picture.
+  double lowPass = 1.0;
 };
 
 struct Footprint {

@@ -62,6 +62,7 @@ std::string viewerSettingsToJson(const ViewerSettings& s) {
                  {"prefilter", s.prefilter},
                  {"post_normals", s.postNormals},
                  {"slab_thickness", s.slabThickness},
+                 {"slab_resolution", s.coarseSlabs ? "auto" : "full"},
                  {"background", {s.background.r, s.background.g, s.background.b}},
                  {"level_of_detail", s.levelOfDetail}};
   if (!s.clipVolume.empty()) {
@@ -116,6 +117,9 @@ ViewerSettings viewerSettingsFromJson(const std::string& text, const std::string
       if (normals == "field" || normals == "voxel") s.postNormals = normals;
       const double slab = r.value("slab_thickness", s.slabThickness);
       if (std::isfinite(slab)) s.slabThickness = std::clamp(slab, 0.05, 1000.0);
+      const std::string resolution =
+          r.value("slab_resolution", std::string(s.coarseSlabs ? "auto" : "full"));
+      if (resolution == "auto" || resolution == "full") s.coarseSlabs = resolution == "auto";
       if (r.contains("background")) {
         const auto bg = r.at("background").get<std::vector<double>>();
         if (bg.size() == 3)

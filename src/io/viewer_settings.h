@@ -30,6 +30,7 @@ struct ViewerSettings {
   double prefilter = kDefaultPrefilter;  // post-classification's value prefilter
   std::string postNormals = "field";     // "field" or "voxel"
   double slabThickness = 2.0;            // RenderSettings' default
+  bool coarseSlabs = true;               // RenderSettings' default (--slab-resolution auto)
   glm::dvec3 background{0.0};
   bool levelOfDetail = true;  // coarser level while moving
   // The crop box and planes of the last session and the volume they were for (its absolute

@@ -14,7 +14,7 @@ void RenderTargets::resize(int w, int h, bool paired) {
   slabOther = gl::Texture();
   if (!paired) return;
   slabOther = gl::Texture::create2D(GL_RGBA32F, w, h);
-  slabOther.setFilter(GL_NEAREST, GL_NEAREST);
+  slabOther.setFilter(GL_LINEAR, GL_LINEAR);  // coarser slab images are read bilinearly
   slabOtherFbo = gl::Framebuffer::create();
   slabOtherFbo.attachColor(0, slabOther);
   slabOtherFbo.attachColor(1, slabNormal);
@@ -41,7 +41,9 @@ void RenderTargets::createImages(int w, int h) {
   accum = gl::Texture::create2D(GL_RGBA32F, w, h);
   output = gl::Texture::create2D(GL_RGBA8, w, h);
   stencil = gl::Texture::create2D(GL_DEPTH24_STENCIL8, w, h);
-  for (gl::Texture* t : {&slab, &slabNormal, &accum, &output}) t->setFilter(GL_NEAREST, GL_NEAREST);
+  // Coarser slab images (slab_image_scale.h) are read bilinearly; full ones by texelFetch.
+  for (gl::Texture* t : {&slab, &slabNormal}) t->setFilter(GL_LINEAR, GL_LINEAR);
+  for (gl::Texture* t : {&accum, &output}) t->setFilter(GL_NEAREST, GL_NEAREST);
   slabFbo = gl::Framebuffer::create();
   slabFbo.attachColor(0, slab);
   slabFbo.attachColor(1, slabNormal);

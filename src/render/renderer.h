@@ -92,6 +92,12 @@ struct RenderSettings {
   // two halves in depth), or the splats' voxel normals summed in a second image (Voxel; also
   // post without pre-integration, which has no depth difference).
   PostNormals postNormals = PostNormals::Field;
+  // Composite: each slab is splatted into an image as coarse as its kernels allow (up to 4
+  // pixels a texel a side where every footprint is at least 2 texels wide, so near the eye in
+  // magnified views; slab_image_scale.h) and read back bilinearly, classified per pixel; the
+  // picture stays within a level or two (README, "Slab image scale"). False: every slab at the
+  // picture's resolution.
+  bool coarseSlabs = true;
   double surfaceOpacity = 0.95;  // opacity of the surface-splat layer seen along its normal
   ShearWarpSettings shearWarp;   // read by the shear-warp renderer only
   ClipRegion clip;               // crop box and clipping planes (world space), every renderer
@@ -121,6 +127,7 @@ struct RenderStats {
   size_t splatsDrawn = 0;  // in front of the eye, sent to the GPU this frame
   size_t slabs = 0;
   size_t slabsDrawn = 0;     // before early termination stopped the slab loop
+  size_t slabsCoarse = 0;    // of slabsDrawn, those splatted into a coarser image
   size_t surfaceSplats = 0;  // splats drawn as flat surface kernels
   size_t slabEntries = 0;    // splats drawn summed over slabs (kernels span several slabs)
   size_t entriesCulled = 0;  // of slabEntries, those occlusion culling did not rasterize

@@ -8,7 +8,8 @@ gl::VariantFlags SlabPassVariant::flags() const {
           {"SLAB_PREINTEGRATED", preintegrated},
           {"SLAB_SHADING", shading},
           {"SLAB_FIELD_NORMALS", fieldNormals},
-          {"SLAB_NEIGHBOUR_IN_FRONT", neighbourInFront}};
+          {"SLAB_NEIGHBOUR_IN_FRONT", neighbourInFront},
+          {"SLAB_SCALED", scaled}};
 }
 
 SlabPassPrograms::SlabPassPrograms(const gl::ShaderLibrary& shaders) : shaders_(shaders) {

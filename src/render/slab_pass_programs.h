@@ -19,6 +19,7 @@ struct SlabPassVariant {
   bool shading = false;           // post, shaded with the head light
   bool fieldNormals = false;      // shaded, pre-integrated: normals from the field's gradient
   bool neighbourInFront = false;  // pre-integrated front to back: the slab drawn before is nearer
+  bool scaled = false;            // the slab's or its neighbour's image is coarser (bilinear)
 
   gl::VariantFlags flags() const;
   unsigned key() const { return gl::variantKey(flags()); }

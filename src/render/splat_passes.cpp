@@ -110,12 +110,15 @@ bool SplatRenderer::terminationCheck() {
   return done;
 }
 
+bool SplatRenderer::terminates() const {
+  const RenderSettings& settings = frame_.settings;
+  return settings.order == CompositeOrder::FrontToBack && settings.terminationOpacity < 1.0;
+}
+
 void SplatRenderer::setSlabLoopState() {
   const RenderSettings& settings = frame_.settings;
-  const bool terminate =
-      settings.order == CompositeOrder::FrontToBack && settings.terminationOpacity < 1.0;
+  const bool terminate = terminates();
   targets_.slabNormal.bindUnit(3);
-  slabPrograms_.current().setInt("uSlab", 1);
   targets_.accum.bindUnit(2);
   markProgram_.setInt("uAccum", 2);
   markProgram_.setFloat("uThreshold", float(settings.terminationOpacity));
@@ -137,6 +140,7 @@ const Slab& SplatRenderer::slabInOrder(size_t s) const {
 
 void SplatRenderer::computeSlabRects() {
   frame_.slabRects.clear();
+  frame_.slabScales.clear();
   frame_.markRect = PixelRect{};
   if (!volume_ || frame_.settings.mode != RenderMode::Composite) return;
   const RenderSettings& settings = frame_.settings;
@@ -150,11 +154,42 @@ void SplatRenderer::computeSlabRects() {
     frame_.slabRects.push_back(slabPixelRect(
         view, frame_.proj, reach, volume_->boundsMin() - margin, volume_->boundsMax() + margin,
         slab.nearDepth, slab.farDepth, params.cullDepth));
+  // Coarser slab images where every kernel a slab lists is wide enough on screen. Never with
+  // surface splats (flat: a footprint as thin as the low-pass filter seen edge on), nor for
+  // shaded post-classification (its normals are derivatives of the slab's values, which the
+  // bilinear read-back bends: up to 70 levels on engine's plates against a few unshaded), nor
+  // for tiny pictures (a coarser image and its border must fit in the slab image).
+  const bool coarse = settings.coarseSlabs && classified_.surfaceCount == 0 &&
+                      !(postClassified(settings) && settings.lighting.enabled) &&
+                      std::min(frame_.width, frame_.height) >= 16;
+  double boxFar = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    const glm::dvec3 lo = volume_->boundsMin(), hi = volume_->boundsMax();
+    const glm::dvec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+    boxFar = std::max(boxFar, -(view * glm::dvec4(p, 1.0)).z);
+  }
+  const double minSigma = settings.kernelWidth * params.minSpacing;
+  for (const Slab& slab : frame_.slabs) {
+    // A kernel listed in the slab lies at most its depth reach behind the far plane.
+    const double reachFar = depthReach(reach, reach.maxSigma * reach.maxSigma, slab.farDepth);
+    const double farthest = std::min(slab.farDepth + reachFar, boxFar);
+    frame_.slabScales.push_back(coarse ? slabImageScale(reach, minSigma, farthest) : 1);
+  }
 }
 
-void SplatRenderer::scissorToSlab(size_t s) {
+int SplatRenderer::slabScale(size_t s) const {
+  const size_t i = slabPosition(s);
+  return i < frame_.slabScales.size() ? frame_.slabScales[i] : 1;
+}
+
+gl::Program& SplatRenderer::slabPassProgram(size_t s) {
+  const bool scaled = slabScale(s) > 1 || (frame_.pairedSlabs && s > 0 && slabScale(s - 1) > 1);
+  return *slabPass_[scaled && slabPass_[1] ? 1 : 0];
+}
+
+void SplatRenderer::scissorToSlab(size_t s, int scale) {
   if (!slabScissor_ || frame_.slabRects.size() != frame_.slabs.size()) return;
-  scissorTo(frame_.slabRects[slabPosition(s)]);
+  scissorTo(scaledRect(frame_.slabRects[slabPosition(s)], scale));
 }
 
 void SplatRenderer::scissorTo(const PixelRect& r) {
@@ -184,13 +219,23 @@ void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
   Slab range = slabInOrder(s);
   range.first += uint32_t(first);
   range.count = count;
-  scissorToSlab(s);
+  const int scale = slabScale(s);
+  scissorToSlab(s, scale);
   // Inside a slab: order-independent sums of each kernel's share of optical depth and light.
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabTarget(slabImageOf(s)).id());
   glBlendFunc(GL_ONE, GL_ONE);
   const int gpuSlab = frame_.indirect ? int(slabPosition(s)) : -1;  // then a whole slab
   setSlabUniforms(range, true, true, gpuSlab);
+  setSplatScale(scale);
+  if (scale == 1) {
+    drawSplats(range, stats_.quadPass, gpuSlab);
+    return;
+  }
+  // Into the image's lower left corner. The stencil marks the picture's pixels: coarser images
+  // draw every texel (near slabs, where little is opaque yet).
+  glDisable(GL_STENCIL_TEST);
   drawSplats(range, stats_.quadPass, gpuSlab);
+  if (terminates()) glEnable(GL_STENCIL_TEST);
 }
 
 void SplatRenderer::endCompositeSlab(size_t s) {
@@ -208,18 +253,22 @@ void SplatRenderer::endCompositeSlab(size_t s) {
   else
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   targets_.slabImage(slabImageOf(s)).bindUnit(1);
+  gl::Program& pass = slabPassProgram(s);
+  pass.setInt("uSlabScale", slabScale(s));
   if (frame_.pairedSlabs) {
     // The slab drawn before this one, if it is this one's neighbour in depth (empty slabs are
     // not drawn): a segment runs from its nearer half's value to this slab's.
     targets_.slabImage(slabImageOf(s + 1)).bindUnit(kNeighbourSlabUnit);
     const bool adjacent = s > 0 && slabsAdjacent(slabInOrder(s - 1), slabInOrder(s));
-    slabPrograms_.current().setInt("uNeighbour", adjacent ? 1 : 0);
+    pass.setInt("uNeighbour", adjacent ? 1 : 0);
+    pass.setInt("uNeighbourScale", s > 0 ? slabScale(s - 1) : 1);
   }
   const Slab& slab = slabInOrder(s);
-  slabPrograms_.current().setVec2("uSlabDepths", glm::vec2(slab.nearDepth, slab.farDepth));
-  glUseProgram(slabPrograms_.current().id());
+  pass.setVec2("uSlabDepths", glm::vec2(slab.nearDepth, slab.farDepth));
+  glUseProgram(pass.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   ++stats_.slabsDrawn;
+  if (slabScale(s) > 1) ++stats_.slabsCoarse;
   if (terminate && (s + 1) % kCheckEvery == 0 && s + 1 < n) {
     // Mark pixels that reached the threshold; later splat fragments there fail the stencil.
     // Only the slabs composited since the last marks changed the image: their rectangles.
@@ -238,8 +287,9 @@ void SplatRenderer::endCompositeSlab(size_t s) {
     if (frame_.occlusion) {
       // The pyramid of the pixels just marked: later slabs' splats over them are culled.
       occlusion_.build(targets_.accum, float(settings.terminationOpacity));
+      frame_.pyramidBuilt = true;
       for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()})
-        occlusion_.setUniforms(*p, kOpaqueUnit, true);
+        occlusion_.setUniforms(*p, kOpaqueUnit, frame_.splatScale == 1);
     }
     if (terminationCheck()) frame_.terminated = true;
   }
@@ -604,6 +654,7 @@ void SplatRenderer::takeGpuCounts() {
     if (slab.count > 0) frame_.slabs.push_back(slab);
   frame_.indirect = false;
   computeSlabRects();
+  setSlabPassUniforms(frame_.proj, frame_.settings);  // the scales may ask for the coarser pass
   stats_.slabs = frame_.slabs.size();
   setFrameWeights();
 }

@@ -51,6 +51,9 @@ SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
       transferTexture_(gl::Texture::create1D(GL_RGBA32F, kTransferSamples)) {
   GLfloat range[2] = {1.0f, 1.0f};
   glGetFloatv(GL_POINT_SIZE_RANGE, range);
+  GLint viewportDims[2] = {16384, 16384};
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewportDims);
+  maxViewport_ = std::min(viewportDims[0], viewportDims[1]);
   glPointSizeLimit_ = pointSizeLimit_ = std::max(1.0f, range[1]);
   transferTexture_.setFilter(GL_LINEAR, GL_LINEAR);
   transferTexture_.setWrap(GL_CLAMP_TO_EDGE);
@@ -213,9 +216,7 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setFloat("uVoxelVolume", float(sp.x * sp.y * sp.z));
   p.setFloat("uMaxSigma", float(std::max({sigma.x, sigma.y, sigma.z})));
   p.setInt("uOrthographic", proj.orthographic ? 1 : 0);
-  p.setFloat("uFocalPixels", float(proj.focalPixels));
-  p.setFloat("uPixelsPerUnit", float(proj.pixelsPerUnit));
-  p.setVec2("uViewport", glm::vec2(proj.width, proj.height));
+  setProjectionUniforms(p, proj, params.lowPass);
   p.setInt("uFilter", int(params.filter));
   p.setFloat("uCutoff", float(params.cutoff));
   p.setFloat("uDepthCutoff", float(frame_.reach.depthCutoff));  // the partition's reach
@@ -233,11 +234,39 @@ void SplatRenderer::setCommonUniforms(gl::Program& p, const Camera& camera, cons
   p.setFloat("uDiffuse", float(light.diffuse));
   p.setFloat("uSpecular", float(light.specular));
   p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
-  setClipUniforms(p, settings.clip, *volume_, camera, proj);
+  setClipUniforms(p, settings.clip, *volume_, camera, proj);  // planes; rays again per scale
   p.setInt("uAttributes", attributesUploaded_ ? 1 : 0);
   p.setInt("uSplatTexels", int(kSplatTexelUnit));
   p.setInt("uAttributeTexels", int(kAttributeTexelUnit));
   occlusion_.setUniforms(p, kOpaqueUnit, false);  // until the frame's first pyramid
+}
+
+void SplatRenderer::setProjectionUniforms(gl::Program& p, const Projection& proj,
+                                          double lowPass) const {
+  p.setFloat("uFocalPixels", float(proj.focalPixels));
+  p.setFloat("uPixelsPerUnit", float(proj.pixelsPerUnit));
+  p.setVec2("uViewport", glm::vec2(proj.width, proj.height));
+  p.setVec2("uPrincipal", glm::vec2(proj.principal));
+  // The GL viewport the splats are drawn with (drawSplats): the image and a guard band.
+  const float guard = float(guardBand(proj));
+  p.setVec4("uViewportRect", glm::vec4(-guard, -guard, float(proj.width) + 2.0f * guard,
+                                       float(proj.height) + 2.0f * guard));
+  p.setFloat("uLowPass", float(lowPass));
+}
+
+void SplatRenderer::setSplatScale(int scale) {
+  if (scale == frame_.splatScale) return;
+  frame_.splatScale = scale;
+  const Projection proj = scaledProjection(frame_.proj, scale);
+  // The footprints are the picture's, low-pass filter included, sampled on coarser texels.
+  const double lowPass = 1.0 / (double(scale) * double(scale));
+  for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()}) {
+    setProjectionUniforms(*p, proj, lowPass);
+    // The clip rays of the coarser image's pixels.
+    setClipUniforms(*p, frame_.settings.clip, *volume_, frame_.camera, proj);
+    // The opacity pyramid is the picture's pixels: coarser images are not culled.
+    occlusion_.setUniforms(*p, kOpaqueUnit, frame_.pyramidBuilt && scale == 1);
+  }
 }
 
 bool SplatRenderer::postClassified(const RenderSettings& settings) {
@@ -256,30 +285,40 @@ bool SplatRenderer::voxelNormalSums(const RenderSettings& settings) {
 
 void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSettings& settings) {
   const Lighting& light = settings.lighting;
-  SlabPassVariant variant;
-  variant.post = postClassified(settings);
-  variant.preintegrated = frame_.pairedSlabs;
-  variant.shading = variant.post && light.enabled;  // pre-classified slabs carry their light
-  variant.fieldNormals = fieldNormals(settings);
-  // Front to back the slab drawn before is the segment's front, back to front its back.
-  variant.neighbourInFront = frame_.pairedSlabs && settings.order == CompositeOrder::FrontToBack;
-  slabPrograms_.select(variant);
-  gl::Program& p = slabPrograms_.current();
-  p.setInt("uTransfer", 0);
-  p.setInt("uSlabNormal", 3);
-  p.setInt("uOrthographic", proj.orthographic ? 1 : 0);
-  p.setFloat("uFocalPixels", float(proj.focalPixels));
-  p.setVec2("uViewport", glm::vec2(proj.width, proj.height));
-  p.setInt("uShading", light.enabled ? 1 : 0);
-  p.setFloat("uAmbient", float(light.ambient));
-  p.setFloat("uDiffuse", float(light.diffuse));
-  p.setFloat("uSpecular", float(light.specular));
-  p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
-  p.setFloat("uPixelsPerUnit", float(proj.pixelsPerUnit));
-  // Samplers of different types must not share a unit, used or not.
-  p.setInt("uPairTable", int(kPairTableUnit));
-  p.setInt("uPairPrefix", int(kPairPrefixUnit));
-  p.setInt("uNeighbourSlab", int(kNeighbourSlabUnit));
+  const bool coarser = std::any_of(frame_.slabScales.begin(), frame_.slabScales.end(),
+                                   [](int scale) { return scale > 1; });
+  slabPass_[1] = nullptr;
+  for (int scaled = coarser ? 1 : 0; scaled >= 0; --scaled) {
+    SlabPassVariant variant;
+    variant.post = postClassified(settings);
+    variant.preintegrated = frame_.pairedSlabs;
+    variant.shading = variant.post && light.enabled;  // pre-classified slabs carry their light
+    variant.fieldNormals = fieldNormals(settings);
+    // Front to back the slab drawn before is the segment's front, back to front its back.
+    variant.neighbourInFront = frame_.pairedSlabs && settings.order == CompositeOrder::FrontToBack;
+    variant.scaled = scaled == 1;
+    slabPrograms_.select(variant);
+    gl::Program& p = slabPrograms_.current();
+    slabPass_[scaled] = &p;
+    p.setInt("uTransfer", 0);
+    p.setInt("uSlabNormal", 3);
+    p.setInt("uOrthographic", proj.orthographic ? 1 : 0);
+    p.setFloat("uFocalPixels", float(proj.focalPixels));
+    p.setVec2("uViewport", glm::vec2(proj.width, proj.height));
+    p.setInt("uShading", light.enabled ? 1 : 0);
+    p.setFloat("uAmbient", float(light.ambient));
+    p.setFloat("uDiffuse", float(light.diffuse));
+    p.setFloat("uSpecular", float(light.specular));
+    p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
+    p.setFloat("uPixelsPerUnit", float(proj.pixelsPerUnit));
+    // Samplers of different types must not share a unit, used or not.
+    p.setInt("uPairTable", int(kPairTableUnit));
+    p.setInt("uPairPrefix", int(kPairPrefixUnit));
+    p.setInt("uNeighbourSlab", int(kNeighbourSlabUnit));
+    p.setInt("uSlab", 1);
+    p.setInt("uSlabScale", 1);
+    p.setInt("uNeighbourScale", 1);
+  }
   // The normal sums are written only where they are used.
   const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   const GLenum first[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
@@ -298,7 +337,23 @@ void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails
   }
 }
 
+int SplatRenderer::guardBand(const Projection& image) const {
+  const int room = (maxViewport_ - std::max(image.width, image.height)) / 2;
+  return std::clamp(int(std::ceil(0.5 * pointSizeLimit_)) + 2, 0, std::max(room, 0));
+}
+
 void SplatRenderer::drawSplats(const Slab& slab, bool quads, int slabIndex) {
+  // GL drops a point whose centre lies outside the viewport, with the part of its footprint
+  // inside: a viewport wider than the image by the largest point's radius keeps them (the
+  // image itself clips the fragments). Without it magnified pictures had a ragged dark frame.
+  const Projection image = scaledProjection(frame_.proj, frame_.splatScale);
+  const int guard = guardBand(image);
+  glViewport(-guard, -guard, image.width + 2 * guard, image.height + 2 * guard);
+  drawSplatPrimitives(slab, quads, slabIndex);
+  glViewport(0, 0, frame_.width, frame_.height);
+}
+
+void SplatRenderer::drawSplatPrimitives(const Slab& slab, bool quads, int slabIndex) {
   if (slabIndex >= 0) {
     // The counts are on the GPU: its commands draw them (bound by bindFrameState).
     const auto command = [](size_t offset) { return reinterpret_cast<const void*>(offset); };

@@ -9,6 +9,7 @@
 #include <optional>
 #include <utility>
 
+#include "core/slab_image_scale.h"
 #include "core/slab_partition.h"
 #include "core/slab_rect.h"
 #include "core/splat_attributes.h"
@@ -130,6 +131,12 @@ class SplatRenderer : public Renderer {
   void syncAttributes(const RenderSettings& settings);
   void setCommonUniforms(gl::Program& program, const Camera& camera, const Projection& proj,
                          const RenderSettings& settings);
+  // The image the splats are drawn into: focal length, pixels per unit, size, principal point
+  // and EWA's low-pass variance in its pixels.
+  void setProjectionUniforms(gl::Program& program, const Projection& proj, double lowPass) const;
+  // Pixels the splat viewport reaches beyond `image` on every side (drawSplats): the largest
+  // point's radius, less where GL_MAX_VIEWPORT_DIMS leaves no room.
+  int guardBand(const Projection& image) const;
   // slabIndex >= 0: the GPU partition's slab (its first entry and draw commands on the GPU).
   void setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex = -1);
   // Post-classification (composite mode only): splats carry values, the slab pass classifies.
@@ -141,7 +148,9 @@ class SplatRenderer : public Renderer {
   static bool voxelNormalSums(const RenderSettings& settings);
   // The slab pass's uniforms and the slab buffer's draw buffers for this frame.
   void setSlabPassUniforms(const Projection& proj, const RenderSettings& settings);
+  // Draws the slab's splats into the bound image at frame_.splatScale, through the guard band.
   void drawSplats(const Slab& slab, bool quads, int slabIndex = -1);
+  void drawSplatPrimitives(const Slab& slab, bool quads, int slabIndex);
   // The GPU partition's per-slab counts, read back: its empty slabs dropped, drawn like the
   // CPU's from then on (for drawing in budgeted steps and for the statistics).
   void takeGpuCounts();
@@ -149,6 +158,8 @@ class SplatRenderer : public Renderer {
   // GL state every step needs again (a window draws other things between steps).
   void bindFrameState();
   void setSlabLoopState();
+  // Front to back with a termination opacity below 1: the stencil marks opaque pixels.
+  bool terminates() const;
   // One slab of the front-to-back or back-to-front loop (index in drawing order): its splats
   // (drawSlabRange: entries [first, first + count) of them, into the cleared slab buffer), the
   // blend under (over) the image and, every few slabs, the early-termination check.
@@ -159,8 +170,17 @@ class SplatRenderer : public Renderer {
   int slabImageOf(size_t slabIndex) const;
   // True when one slab ends where the other begins (in either order).
   static bool slabsAdjacent(const Slab& a, const Slab& b);
-  // Each slab's rectangle (frame_.slabRects, in frame_.slabs order) for this frame's slabs.
+  // Each slab's rectangle and image scale (frame_.slabRects, frame_.slabScales, in
+  // frame_.slabs order) for this frame's slabs.
   void computeSlabRects();
+  // The image scale of slab `slabIndex` of the drawing order (1 without computeSlabRects).
+  int slabScale(size_t slabIndex) const;
+  // Sets the splat programs' projection, low-pass filter, clip rays and occlusion culling for
+  // an image `scale` times coarser than the picture (1: the picture), and the viewport.
+  void setSplatScale(int scale);
+  // The slab pass program for slab `slabIndex` of the drawing order: the variant that reads
+  // coarser images where it or its neighbour has one.
+  gl::Program& slabPassProgram(size_t slabIndex);
   // The frame's slabs are known: statistics, the splat programs' variant and uniforms.
   void prepareSlabs(double nearestCenter);
   // The CPU partition's result (waits for the worker): order upload (with `budgeted`, a big
@@ -171,7 +191,7 @@ class SplatRenderer : public Renderer {
   // Returns once no partition is running on the worker thread.
   void waitForPartition();
   // Scissor to the rectangle of slab `slabIndex` (drawing order), when slab scissors are on.
-  void scissorToSlab(size_t slabIndex);
+  void scissorToSlab(size_t slabIndex, int scale = 1);
   // Scissor to `rect` (enables the scissor test).
   static void scissorTo(const PixelRect& rect);
   void drawSlabRange(size_t slabIndex, size_t first, size_t count);
@@ -205,8 +225,9 @@ class SplatRenderer : public Renderer {
   std::optional<std::pair<double, double>> depthWindow_;
   bool slabScissor_ = true;
 
-  SplatPrograms splatPrograms_;  // the point and quad programs of this frame's variant
-  SlabPassPrograms slabPrograms_;  // the slab pass of this frame's variant
+  SplatPrograms splatPrograms_;    // the point and quad programs of this frame's variant
+  SlabPassPrograms slabPrograms_;  // the slab pass of this frame's variants
+  gl::Program* slabPass_[2] = {nullptr, nullptr};  // this frame's: full-resolution, coarser
   gl::Program markProgram_;
   gl::Program finalProgram_;
   gl::Program boxProgram_;
@@ -246,6 +267,7 @@ class SplatRenderer : public Renderer {
   bool gpuTimers_ = false;
   float pointSizeLimit_ = 64.0f;
   float glPointSizeLimit_ = 64.0f;
+  int maxViewport_ = 16384;  // GL_MAX_VIEWPORT_DIMS, the smaller
   RenderStats stats_;
 
   // The frame under way, from beginFrame to the step that draws the final pass.
@@ -266,6 +288,9 @@ class SplatRenderer : public Renderer {
     Clock::time_point partitionStart;  // for stats_.partitionMs
     std::vector<Slab> slabs;           // front to back: the CPU partition's, or the GPU's
     std::vector<PixelRect> slabRects;  // per slab: the pixels its kernels can reach
+    std::vector<int> slabScales;       // per slab: its image's scale (slab_image_scale.h)
+    int splatScale = 1;                // the scale the splat programs are set up for
+    bool pyramidBuilt = false;         // occlusion culling: a pyramid of this frame is bound
     PixelRect markRect;                // slabs composited since the last opacity marks
     bool gpuSlabs = false;             // slabs come from gpuPartition_
     bool indirect = false;     // GPU slabs whose counts only the GPU knows (empty ones kept)

@@ -148,6 +148,12 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
   ImGui::EndDisabled();
   changed |= sliderDouble("slab (voxels)", &settings.slabThickness, 0.25, 8.0, "%.2f",
                           ImGuiSliderFlags_Logarithmic);
+  changed |= ImGui::Checkbox("coarse slabs", &settings.coarseSlabs);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Slabs whose kernels are all at least 4 pixels wide are splatted into images 2 or 4 "
+        "times coarser and read back bilinearly: faster close up, within a few levels "
+        "(ewaview --slab-resolution auto; off: full)");
 
   for (RenderMode mode : kModes) {
     if (mode != kModes[0]) ImGui::SameLine();

@@ -58,6 +58,7 @@ void ViewerWindow::saveSettings() {
   saved_.prefilter = settings_.classification.prefilter;
   saved_.postNormals = postNormalsName(settings_.postNormals);
   saved_.slabThickness = settings_.slabThickness;
+  saved_.coarseSlabs = settings_.coarseSlabs;
   saved_.background = settings_.background;
   saved_.levelOfDetail = levelOfDetail_;
   saved_.clip = settings_.clip;

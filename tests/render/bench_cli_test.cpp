@@ -67,12 +67,12 @@ TEST(CompareCli, KernelWidthCutoffsAndClassificationReachEwa) {
       compare(std::string(kTiny) +
               " --kernel-width 0.55 --cutoff 5 --depth-cutoff 2.25 "
               "--classification post --prefilter 0.1 --occlusion-culling off --slab-rects off "
-              "--json");
+              "--slab-resolution full --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const json doc = json::parse(r.out);
   EXPECT_EQ(doc["ewa_settings"],
             "kernel width 0.55, cutoff 5, depth cutoff 2.25, post-classification, prefilter 0.1, "
-            "occlusion culling off, whole-image slab passes");
+            "occlusion culling off, whole-image slab passes, full-resolution slabs");
   ASSERT_EQ(doc["rows"].size(), 1u) << r.out;
   EXPECT_GT(doc["rows"][0]["ewa_ms"].get<double>(), 0.0);
   EXPECT_EQ(doc["rows"][0]["culled_percent"].get<double>(), 0.0);

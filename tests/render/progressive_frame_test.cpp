@@ -92,7 +92,8 @@ TEST_P(ProgressiveModes, TinyBudgetStepsGiveRendersPicture) {
   const Volume& volume = terminate ? cube : s.volume;
   SplatRenderer& r = *renderer();
   r.setVolume(volume);
-  r.setTransferFunction(terminate ? whiteTf(0.9, 1.0) : *s.transferFunction);
+  // Opacity 0.4 a voxel: opaque after some ten slabs, so termination comes after a few checks.
+  r.setTransferFunction(terminate ? whiteTf(0.4, 1.0) : *s.transferFunction);
   RenderSettings settings;
   settings.slabThickness = 1.0;  // many slabs: many steps
   if (mode == "back-to-front") settings.order = CompositeOrder::BackToFront;

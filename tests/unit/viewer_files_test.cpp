@@ -83,6 +83,10 @@ TEST_F(ViewerFiles, SettingsRoundTripAndDefaults) {
   s.postNormals = "voxel";
   saveViewerSettings(p, s);
   EXPECT_EQ(loadViewerSettings(p).postNormals, "voxel");
+  EXPECT_TRUE(r.coarseSlabs);
+  s.coarseSlabs = false;  // saved as "slab_resolution": "full"
+  saveViewerSettings(p, s);
+  EXPECT_FALSE(loadViewerSettings(p).coarseSlabs);
   // The uncut depth profile is saved as "inf" (JSON has no infinity) and read back.
   s.depthCutoff = INFINITY;
   saveViewerSettings(p, s);
@@ -107,6 +111,7 @@ TEST_F(ViewerFiles, SettingsDefaultsAreTheRenderersDefaults) {
   EXPECT_EQ(fresh.kernelWidth, render.kernelWidth);
   EXPECT_EQ(fresh.classification, classificationModeName(render.classification.mode));
   EXPECT_EQ(fresh.slabThickness, render.slabThickness);
+  EXPECT_EQ(fresh.coarseSlabs, render.coarseSlabs);
   EXPECT_EQ(fresh.prefilter, render.classification.prefilter);
   EXPECT_EQ(fresh.background, render.background);
   const std::string p = path("partial/settings.json");

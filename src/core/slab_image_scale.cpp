@@ -1,0 +1,47 @@
+// SlabImageScale: the coarsest slab image a slab's kernels allow (see slab_image_scale.h).
+#include "core/slab_image_scale.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ewa {
+
+double minFootprintSigma(const KernelReach& reach, double minSigma, double depth) {
+  if (reach.orthographic) return minSigma * reach.pixelsPerUnit;
+  return depth > 0.0 ? minSigma * reach.focalPixels / depth : INFINITY;
+}
+
+int slabImageScale(const KernelReach& reach, double minSigma, double farthestCenter) {
+  const double sigma = minFootprintSigma(reach, minSigma, farthestCenter);
+  int scale = 1;
+  while (scale < kMaxSlabImageScale && sigma >= kMinSigmaTexels * double(2 * scale)) scale *= 2;
+  return scale;
+}
+
+Projection scaledProjection(const Projection& proj, int scale) {
+  if (scale <= 1) return proj;
+  const double s = double(scale);
+  Projection p = proj;
+  p.focalPixels = proj.focalPixels / s;
+  p.pixelsPerUnit = proj.pixelsPerUnit / s;
+  p.principal = proj.principal / s + 1.0;
+  p.width = (proj.width + scale - 1) / scale + 2;
+  p.height = (proj.height + scale - 1) / scale + 2;
+  return p;
+}
+
+double scaledCoordinate(double pixel, int scale) {
+  return scale <= 1 ? pixel : pixel / double(scale) + 1.0;
+}
+
+PixelRect scaledRect(const PixelRect& rect, int scale) {
+  if (rect.empty() || scale <= 1) return rect;
+  // Pixel centres x0 + 0.5 .. x1 - 0.5 read texels from floor(coordinate - 0.5) to one beyond.
+  const auto lo = [&](int v) { return int(std::floor(scaledCoordinate(v + 0.5, scale) - 0.5)); };
+  const auto hi = [&](int v) {
+    return int(std::floor(scaledCoordinate(v - 0.5, scale) - 0.5)) + 2;
+  };
+  return {lo(rect.x0), lo(rect.y0), hi(rect.x1), hi(rect.y1)};
+}
+
+}  // namespace ewa
