@@ -231,6 +231,8 @@ def main():
                         "(default: ewaview's, 0.05)")
     p.add_argument("--slab-thickness", type=float, default=2.0,
                    help="slab thickness in voxels (ewaview's default 2)")
+    p.add_argument("--slab-resolution", choices=["auto", "full"],
+                   help="ewaview's --slab-resolution (default: ewaview's, auto)")
     p.add_argument("--repeats", type=int, default=3)
     p.add_argument("--distance-scale", type=float, default=1.0,
                    help="camera distance times this (1: the close-ups, 2 to 3 pixels a voxel; "
@@ -267,6 +269,8 @@ def main():
                 options["slab_preintegration"] = "off"
             if a.depth_cutoff:
                 options["depth_cutoff"] = a.depth_cutoff
+            if a.slab_resolution:
+                options["slab_resolution"] = a.slab_resolution
             if prefilter is not None:
                 options["prefilter"] = prefilter
             shown = "" if not classification.startswith("post") else (

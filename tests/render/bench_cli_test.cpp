@@ -197,5 +197,26 @@ TEST(StatsCli, OcclusionCullingCountsCulledDrawsAndKeepsThePicture) {
             2);
 }
 
+// A magnified sphere: its near slabs go to coarser images (slabs_coarse), --slab-resolution
+// full keeps them all at the picture's resolution, a bad value is a usage error.
+TEST(StatsCli, SlabResolutionReportsCoarseSlabs) {
+  const std::string dir = testOutputDir();
+  const std::string common =
+      "--synthetic sphere:16 --resolution 160,160 --camera-position 8,-8,30 "
+      "--camera-focal-point 7.5,7.5,7.5 --stats";
+  const CliRun autoRun = runEwaview(common + " -o " + dir + "/slab_auto.png");
+  const CliRun fullRun =
+      runEwaview(common + " --slab-resolution full -o " + dir + "/slab_full.png");
+  ASSERT_EQ(autoRun.code, 0) << autoRun.err;
+  ASSERT_EQ(fullRun.code, 0) << fullRun.err;
+  const json a = json::parse(autoRun.out), f = json::parse(fullRun.out);
+  EXPECT_GT(a["slabs_coarse"].get<double>(), 0.0);
+  EXPECT_EQ(f["slabs_coarse"].get<double>(), 0.0);
+  EXPECT_EQ(a["slab_entries"], f["slab_entries"]);
+  const CliRun bad = runEwaview("--synthetic sphere:8 --slab-resolution half -o " + dir + "/x.png");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--slab-resolution"), std::string::npos) << bad.err;
+}
+
 }  // namespace
 }  // namespace ewa::test
