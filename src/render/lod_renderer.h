@@ -62,6 +62,11 @@ class LodRenderer {
   // Makes the full-resolution renderer now (it compiles its shaders), so a broken shader
   // fails here, before a window loop starts, instead of on the first frame.
   void prepareFullLevel() { rendererFor(1); }
+  // The same, made ready for full-quality frames of width x height under `settings`
+  // (Renderer::prepare), so that the first refinement step does not stall on it.
+  void prepareFullLevel(const RenderSettings& settings, int width, int height) {
+    rendererFor(1).prepare(settings, width, height);
+  }
 
   // Makes every coarse level's renderer and classifies its splats by drawing a tiny image, so
   // the first moving frame does not pay for it. Leaves last() as it was.

@@ -152,6 +152,10 @@ class Renderer {
   // The volume must outlive the renderer or the next setVolume call.
   virtual void setVolume(const Volume& volume) = 0;
   virtual void setTransferFunction(const TransferFunction& tf) = 0;
+  // Makes ready what frames of width x height under `settings` will need (shader variants,
+  // images, tables), so that their first frame, or a window's first refinement step, does not
+  // stall on it. Optional.
+  virtual void prepare(const RenderSettings& /*settings*/, int /*width*/, int /*height*/) {}
   // Renders into the renderer's own output image of width x height pixels.
   virtual void render(const Camera& camera, const RenderSettings& settings, int width,
                       int height) = 0;

@@ -620,13 +620,7 @@ void SplatRenderer::prepareSlabs(double nearest) {
     occlusion_.resize(frame_.width, frame_.height);
     occlusion_.resetCount();
   }
-  SplatVariant variant;
-  variant.mip = settings.mode == RenderMode::Mip;
-  variant.post = postClassified(settings);
-  variant.halves = frame_.pairedSlabs;
-  variant.clip = !halfSpacesInVolumeFrame(settings.clip, *volume_).empty();
-  variant.texelBuffers = frame_.texelBuffers;
-  splatPrograms_.select(variant);
+  splatPrograms_.select(splatVariant(settings, frame_.texelBuffers));
   setCommonUniforms(splatPrograms_.point(), frame_.camera, proj, settings);
   setCommonUniforms(splatPrograms_.quad(), frame_.camera, proj, settings);
   setSlabPassUniforms(proj, settings);

@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <string>
 
+#include "core/clip_share.h"
 #include "gl/gl_error.h"
 #include "render/clip_uniforms.h"
 
@@ -283,21 +284,50 @@ bool SplatRenderer::voxelNormalSums(const RenderSettings& settings) {
   return postClassified(settings) && settings.lighting.enabled && !fieldNormals(settings);
 }
 
+SplatVariant SplatRenderer::splatVariant(const RenderSettings& settings, bool texelBuffers) const {
+  SplatVariant variant;
+  variant.mip = settings.mode == RenderMode::Mip;
+  variant.post = postClassified(settings);
+  variant.halves = variant.post && settings.slabPreintegration;
+  variant.clip = volume_ && !halfSpacesInVolumeFrame(settings.clip, *volume_).empty();
+  variant.texelBuffers = texelBuffers;
+  return variant;
+}
+
+SlabPassVariant SplatRenderer::slabPassVariant(const RenderSettings& settings, bool scaled) const {
+  SlabPassVariant variant;
+  variant.post = postClassified(settings);
+  variant.preintegrated = variant.post && settings.slabPreintegration;
+  variant.shading = variant.post && settings.lighting.enabled;  // pre-classified: in the sums
+  variant.fieldNormals = fieldNormals(settings);
+  // Front to back the slab drawn before is the segment's front, back to front its back.
+  variant.neighbourInFront = variant.preintegrated && settings.order == CompositeOrder::FrontToBack;
+  variant.scaled = scaled;
+  return variant;
+}
+
+void SplatRenderer::prepare(const RenderSettings& settings, int width, int height) {
+  if (width > 0 && height > 0)
+    targets_.resize(width, height, postClassified(settings) && settings.slabPreintegration);
+  splatPrograms_.select(splatVariant(settings, false));
+  if (settings.mode != RenderMode::Composite) return;
+  slabPrograms_.select(slabPassVariant(settings, false));
+  if (settings.coarseSlabs) slabPrograms_.select(slabPassVariant(settings, true));
+  // The pre-integration tables (40-160 ms on llvmpipe's machine): as beginFrame builds them.
+  if (volume_ && postClassified(settings) && settings.slabPreintegration) {
+    const double thickness = std::max(0.25, settings.slabThickness) *
+                             footprintParams(settings, volume_->spacing()).minSpacing;
+    pairTable_.prepare(tf_, volume_->minValue(), volume_->maxValue(), 0.5 * thickness);
+  }
+}
+
 void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSettings& settings) {
   const Lighting& light = settings.lighting;
   const bool coarser = std::any_of(frame_.slabScales.begin(), frame_.slabScales.end(),
                                    [](int scale) { return scale > 1; });
   slabPass_[1] = nullptr;
   for (int scaled = coarser ? 1 : 0; scaled >= 0; --scaled) {
-    SlabPassVariant variant;
-    variant.post = postClassified(settings);
-    variant.preintegrated = frame_.pairedSlabs;
-    variant.shading = variant.post && light.enabled;  // pre-classified slabs carry their light
-    variant.fieldNormals = fieldNormals(settings);
-    // Front to back the slab drawn before is the segment's front, back to front its back.
-    variant.neighbourInFront = frame_.pairedSlabs && settings.order == CompositeOrder::FrontToBack;
-    variant.scaled = scaled == 1;
-    slabPrograms_.select(variant);
+    slabPrograms_.select(slabPassVariant(settings, scaled == 1));
     gl::Program& p = slabPrograms_.current();
     slabPass_[scaled] = &p;
     p.setInt("uTransfer", 0);

@@ -79,7 +79,10 @@ ViewerWindow::ViewerWindow(platform::GlfwWindowContext& window, LoadedVolume ini
   hasNvx_ = gl::queryGpuMemory().has_value();
   if (initial.coarse.levels.empty()) initial.coarse = buildLodVolumes(*initial.volume);
   adopt(std::move(initial), /*newCamera=*/false);
-  lod_.prepareFullLevel();  // shader failures throw here: one line, exit 1
+  // Shader failures throw here: one line, exit 1. The window's first full-quality frame then
+  // finds its programs, images and tables made (they held its first refinement step 190 ms).
+  const glm::ivec2 fb = window_.framebufferSize();
+  lod_.prepareFullLevel(settings_, fb.x, fb.y);
 }
 
 void ViewerWindow::run() {

@@ -141,6 +141,36 @@ TEST_F(SplatVariants, SwitchingVariantsKeepsEveryPicture) {
       EXPECT_NE(first[a], first[b]) << a << " vs " << b;
 }
 
+// prepare() compiles what a frame under its settings needs: the frame after it compiles nothing
+// more, and draws what a renderer that was not prepared draws.
+TEST_F(SplatVariants, PreparedRendererCompilesNothingInItsFirstFrame) {
+  const Volume vol = floatVolume(16, [](int i, int j, int k) {
+    return float(std::max(0.0, 7.0 - glm::length(glm::dvec3(i, j, k) - glm::dvec3(7.5))));
+  });
+  TransferFunction tf;
+  tf.opacity = {{0.0, 0.0}, {3.0, 0.4}, {7.0, 0.9}};
+  tf.color = {{0.0, glm::dvec3(0.3, 0.5, 1.0)}, {7.0, glm::dvec3(1.0, 0.7, 0.2)}};
+  Camera cam;
+  cam.focalPoint = glm::dvec3(7.5);
+  cam.position = cam.focalPoint + glm::dvec3(6.0, -8.0, 16.0);  // near: coarse slabs too
+  for (int which : {0, 2, 5, 7}) {
+    const RenderSettings settings = variantSettings(which);
+    const gl::ShaderLibrary shaders;
+    SplatRenderer prepared(shaders), plain(shaders);
+    for (SplatRenderer* r : {&prepared, &plain}) {
+      r->setVolume(vol);
+      r->setTransferFunction(tf);
+      r->setPartition(PartitionMode::Cpu);
+    }
+    prepared.prepare(settings, 96, 96);
+    const size_t compiled = prepared.programsCompiled();
+    prepared.render(cam, settings, 96, 96);
+    EXPECT_EQ(prepared.programsCompiled(), compiled) << "variant " << which;
+    plain.render(cam, settings, 96, 96);
+    EXPECT_EQ(prepared.readImage().pixels, plain.readImage().pixels) << "variant " << which;
+  }
+}
+
 // Splat lists larger than a storage block (llvmpipe: 128 MiB, 16.8 M splats) are read from
 // texel buffers and the order list is bound in windows: with a 2 KiB block a small volume takes
 // those paths, and every picture (composite, shaded, X-ray, MIP, post with halves, the quad
