@@ -13,6 +13,17 @@ PixelRect PixelRect::unite(const PixelRect& o) const {
   return {std::min(x0, o.x0), std::min(y0, o.y0), std::max(x1, o.x1), std::max(y1, o.y1)};
 }
 
+DepthRange boxDepthRange(const glm::dmat4& view, const glm::dvec3& lo, const glm::dvec3& hi) {
+  DepthRange range{INFINITY, -INFINITY};
+  for (int c = 0; c < 8; ++c) {
+    const glm::dvec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+    const double depth = -(view * glm::dvec4(p, 1.0)).z;
+    range.nearest = std::min(range.nearest, depth);
+    range.farthest = std::max(range.farthest, depth);
+  }
+  return range;
+}
+
 PixelRect slabPixelRect(const glm::dmat4& view, const Projection& proj, const KernelReach& reach,
                         const glm::dvec3& centersMin, const glm::dvec3& centersMax,
                         double nearDepth, double farDepth, double cullDepth) {

@@ -19,6 +19,13 @@ struct PixelRect {
   PixelRect unite(const PixelRect& o) const;
 };
 
+// The nearest and farthest camera depth of the corners of the box [lo, hi] (`view` maps its
+// frame to camera space, which looks down -z).
+struct DepthRange {
+  double nearest = 0.0, farthest = 0.0;
+};
+DepthRange boxDepthRange(const glm::dmat4& view, const glm::dvec3& lo, const glm::dvec3& hi);
+
 // A rectangle holding every pixel a kernel listed in the slab [nearDepth, farDepth] can draw,
 // for kernels centred in the box [centersMin, centersMax] (in the frame `view` maps to camera
 // space) and nearer than `cullDepth` culled: the centres a slab lists lie within a kernel's

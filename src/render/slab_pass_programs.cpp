@@ -16,8 +16,8 @@ SlabPassPrograms::SlabPassPrograms(const gl::ShaderLibrary& shaders) : shaders_(
   select(SlabPassVariant{});
 }
 
-void SlabPassPrograms::select(const SlabPassVariant& variant) {
-  current_ = &programs_.select(variant.flags(), [&](const std::string& defines) {
+gl::Program& SlabPassPrograms::select(const SlabPassVariant& variant) {
+  return programs_.select(variant.flags(), [&](const std::string& defines) {
     return shaders_.program("fullscreen.vert.glsl", "slab_composite.frag.glsl", defines);
   });
 }

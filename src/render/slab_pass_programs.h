@@ -32,16 +32,15 @@ class SlabPassPrograms {
   // Compiles the default variant at once, so a broken shader fails here, not in a frame.
   explicit SlabPassPrograms(const gl::ShaderLibrary& shaders);
 
-  // Makes `variant` the current one, compiling it the first time (throws GlError on failure).
-  void select(const SlabPassVariant& variant);
-  gl::Program& current() { return *current_; }
+  // The program of `variant`, compiled the first time (throws GlError on failure); the
+  // reference stays valid while this object lives.
+  gl::Program& select(const SlabPassVariant& variant);
   // Variants compiled so far (tests).
   size_t compiled() const { return programs_.compiled(); }
 
  private:
   const gl::ShaderLibrary& shaders_;
   gl::ProgramVariants<gl::Program> programs_;
-  gl::Program* current_ = nullptr;
 };
 
 }  // namespace ewa

@@ -60,16 +60,12 @@ bool SplatRenderer::issueOpaqueQuery(unsigned query) {
   const KernelReach& reach = frame_.reach;
   const glm::dvec3 lo = volume_->boundsMin(), hi = volume_->boundsMax();
   const glm::dmat4 view = camera.viewMatrix();
-  double farDepth = 0.0;
-  for (int c = 0; c < 8; ++c) {
-    const glm::dvec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
-    const double depth = -(view * glm::dvec4(p, 1.0)).z;
-    // A box reaching the eye plane would be clipped: not a safe bound for the test.
-    if (!proj.orthographic &&
-        depth < 2.0 * std::max(maxSpacing, reach.maxSigma) * std::sqrt(reach.cutoff))
-      return false;
-    farDepth = std::max(farDepth, depth);
-  }
+  const DepthRange box = boxDepthRange(view, lo, hi);
+  // A box reaching the eye plane would be clipped: not a safe bound for the test.
+  if (!proj.orthographic &&
+      box.nearest < 2.0 * std::max(maxSpacing, reach.maxSigma) * std::sqrt(reach.cutoff))
+    return false;
+  const double farDepth = std::max(0.0, box.farthest);
   // Grow the box by what a kernel reaches beyond its centre at the farthest corner (reach
   // grows with depth), plus a pixel for rasterization.
   const double grow = worldReach(reach, farDepth) + worldPerPixel(reach, farDepth);
@@ -162,12 +158,8 @@ void SplatRenderer::computeSlabRects() {
   const bool coarse = settings.coarseSlabs && classified_.surfaceCount == 0 &&
                       !(postClassified(settings) && settings.lighting.enabled) &&
                       std::min(frame_.width, frame_.height) >= 16;
-  double boxFar = 0.0;
-  for (int c = 0; c < 8; ++c) {
-    const glm::dvec3 lo = volume_->boundsMin(), hi = volume_->boundsMax();
-    const glm::dvec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
-    boxFar = std::max(boxFar, -(view * glm::dvec4(p, 1.0)).z);
-  }
+  const double boxFar =
+      std::max(0.0, boxDepthRange(view, volume_->boundsMin(), volume_->boundsMax()).farthest);
   const double minSigma = settings.kernelWidth * params.minSpacing;
   for (const Slab& slab : frame_.slabs) {
     // A kernel listed in the slab lies at most its depth reach behind the far plane.
@@ -484,7 +476,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   frame_.settings = settings;
   frame_.width = width;
   frame_.height = height;
-  frame_.pairedSlabs = postClassified(settings) && settings.slabPreintegration;
+  frame_.pairedSlabs = pairedSlabs(settings);
   targets_.resize(width, height, frame_.pairedSlabs);
   stats_ = RenderStats{};
   const GLfloat zero[4] = {0, 0, 0, 0};
@@ -508,19 +500,14 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     const FootprintParams params = footprintParams(settings, sp);
     const bool composite = settings.mode == RenderMode::Composite;
     // X-ray and MIP take every splat at once: a single slab of unbounded thickness.
-    const double thickness =
-        composite ? std::max(0.25, settings.slabThickness) * params.minSpacing : 1e30;
+    const double thickness = composite ? slabThickness(settings, sp) : 1e30;
     DepthExtent extent;
     extent.reach = kernelReach(proj, settings.filter, settings.cutoff, sp, settings.kernelWidth,
                                settings.depthCutoff);
     extent.rotation = camera.rotation();
     extent.spacing = sp;
     extent.kernelWidth = settings.kernelWidth;
-    // Segments run between the values of half slabs: the table's colours (their
-    // self-attenuation) are for that length.
-    if (frame_.pairedSlabs)
-      stats_.classifyMs +=
-          pairTable_.prepare(tf_, volume_->minValue(), volume_->maxValue(), 0.5 * thickness);
+    if (frame_.pairedSlabs) stats_.classifyMs += preparePairTable(settings);
     syncAttributes(settings);
     stageStart = Clock::now();
     frame_.partitionStart = stageStart;

@@ -276,7 +276,7 @@ bool SplatRenderer::postClassified(const RenderSettings& settings) {
 }
 
 bool SplatRenderer::fieldNormals(const RenderSettings& settings) {
-  return postClassified(settings) && settings.lighting.enabled && settings.slabPreintegration &&
+  return pairedSlabs(settings) && settings.lighting.enabled &&
          settings.postNormals == PostNormals::Field;
 }
 
@@ -288,7 +288,7 @@ SplatVariant SplatRenderer::splatVariant(const RenderSettings& settings, bool te
   SplatVariant variant;
   variant.mip = settings.mode == RenderMode::Mip;
   variant.post = postClassified(settings);
-  variant.halves = variant.post && settings.slabPreintegration;
+  variant.halves = pairedSlabs(settings);
   variant.clip = volume_ && !halfSpacesInVolumeFrame(settings.clip, *volume_).empty();
   variant.texelBuffers = texelBuffers;
   return variant;
@@ -297,7 +297,7 @@ SplatVariant SplatRenderer::splatVariant(const RenderSettings& settings, bool te
 SlabPassVariant SplatRenderer::slabPassVariant(const RenderSettings& settings, bool scaled) const {
   SlabPassVariant variant;
   variant.post = postClassified(settings);
-  variant.preintegrated = variant.post && settings.slabPreintegration;
+  variant.preintegrated = pairedSlabs(settings);
   variant.shading = variant.post && settings.lighting.enabled;  // pre-classified: in the sums
   variant.fieldNormals = fieldNormals(settings);
   // Front to back the slab drawn before is the segment's front, back to front its back.
@@ -307,18 +307,27 @@ SlabPassVariant SplatRenderer::slabPassVariant(const RenderSettings& settings, b
 }
 
 void SplatRenderer::prepare(const RenderSettings& settings, int width, int height) {
-  if (width > 0 && height > 0)
-    targets_.resize(width, height, postClassified(settings) && settings.slabPreintegration);
+  if (width > 0 && height > 0) targets_.resize(width, height, pairedSlabs(settings));
   splatPrograms_.select(splatVariant(settings, false));
   if (settings.mode != RenderMode::Composite) return;
   slabPrograms_.select(slabPassVariant(settings, false));
   if (settings.coarseSlabs) slabPrograms_.select(slabPassVariant(settings, true));
-  // The pre-integration tables (40-160 ms on llvmpipe's machine): as beginFrame builds them.
-  if (volume_ && postClassified(settings) && settings.slabPreintegration) {
-    const double thickness = std::max(0.25, settings.slabThickness) *
-                             footprintParams(settings, volume_->spacing()).minSpacing;
-    pairTable_.prepare(tf_, volume_->minValue(), volume_->maxValue(), 0.5 * thickness);
-  }
+  if (volume_ && pairedSlabs(settings)) preparePairTable(settings);
+}
+
+bool SplatRenderer::pairedSlabs(const RenderSettings& settings) {
+  return postClassified(settings) && settings.slabPreintegration;
+}
+
+double SplatRenderer::slabThickness(const RenderSettings& settings, const glm::dvec3& spacing) {
+  return std::max(0.25, settings.slabThickness) * footprintParams(settings, spacing).minSpacing;
+}
+
+double SplatRenderer::preparePairTable(const RenderSettings& settings) {
+  // Segments run between the values of half slabs: the table's colours (their
+  // self-attenuation) are for that length.
+  const double thickness = slabThickness(settings, volume_->spacing());
+  return pairTable_.prepare(tf_, volume_->minValue(), volume_->maxValue(), 0.5 * thickness);
 }
 
 void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSettings& settings) {
@@ -327,8 +336,7 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
                                    [](int scale) { return scale > 1; });
   slabPass_[1] = nullptr;
   for (int scaled = coarser ? 1 : 0; scaled >= 0; --scaled) {
-    slabPrograms_.select(slabPassVariant(settings, scaled == 1));
-    gl::Program& p = slabPrograms_.current();
+    gl::Program& p = slabPrograms_.select(slabPassVariant(settings, scaled == 1));
     slabPass_[scaled] = &p;
     p.setInt("uTransfer", 0);
     p.setInt("uSlabNormal", 3);

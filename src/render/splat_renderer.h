@@ -151,6 +151,13 @@ class SplatRenderer : public Renderer {
   // Post-classified, shaded and pre-integrated with PostNormals::Field: the slab pass takes
   // each pixel's normal from the field's gradient (no voxel normals read or summed).
   static bool fieldNormals(const RenderSettings& settings);
+  // Post-classified and pre-integrated between slabs: two slab images, drawn in turn.
+  static bool pairedSlabs(const RenderSettings& settings);
+  // The slabs' thickness in world units for a volume of this spacing.
+  static double slabThickness(const RenderSettings& settings, const glm::dvec3& spacing);
+  // Builds the pre-integration tables for `settings` unless they are up to date; returns the
+  // milliseconds it took (0 when nothing was built).
+  double preparePairTable(const RenderSettings& settings);
   // Post-classified and shaded from voxel normals: splats sum them into the normal image.
   static bool voxelNormalSums(const RenderSettings& settings);
   // The splat programs' variant for `settings` (clip: the volume is cut; texel buffers: the
