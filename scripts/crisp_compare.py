@@ -231,6 +231,8 @@ def main():
                         "(default: ewaview's, 0.05)")
     p.add_argument("--slab-thickness", type=float, default=2.0,
                    help="slab thickness in voxels (ewaview's default 2)")
+    p.add_argument("--slab-samples", type=int, choices=[2, 4],
+                   help="ewaview's --slab-samples (default: ewaview's, 4)")
     p.add_argument("--slab-resolution", choices=["auto", "full"],
                    help="ewaview's --slab-resolution (default: ewaview's, auto)")
     p.add_argument("--repeats", type=int, default=3)
@@ -271,6 +273,8 @@ def main():
                 options["depth_cutoff"] = a.depth_cutoff
             if a.slab_resolution:
                 options["slab_resolution"] = a.slab_resolution
+            if a.slab_samples and classification == "post":
+                options["slab_samples"] = a.slab_samples
             if prefilter is not None:
                 options["prefilter"] = prefilter
             shown = "" if not classification.startswith("post") else (

@@ -23,6 +23,9 @@
 #ifndef SLAB_SCALED
 #define SLAB_SCALED 0
 #endif
+#ifndef SLAB_QUARTERS
+#define SLAB_QUARTERS 0
+#endif
 const bool kPost = SLAB_POST != 0;
 // Pre-integration (post only): the table of slab_preintegration.h, x the back value, y the
 // front; rgb colour per unit opacity, a mean extinction per world unit. The slabs then hold
@@ -36,6 +39,10 @@ const bool kFieldNormals = SLAB_FIELD_NORMALS != 0;
 const bool kNeighbourInFront = SLAB_NEIGHBOUR_IN_FRONT != 0;
 // This slab's image or its neighbour's is coarser than the picture (uSlabScale, uNeighbourScale).
 const bool kScaled = SLAB_SCALED != 0;
+// Pre-integrated in quarters: the slab image holds (weight * value, weight) of the first two
+// quarters of the slab's depth, uSlabBack those of the last two; segments run between four
+// values a slab.
+const bool kQuarters = SLAB_QUARTERS != 0 && kPreintegrated;
 
 uniform sampler2D uSlab;
 uniform sampler2D uSlabNormal;  // post with shading: the sum of weight * camera-space normal
@@ -46,6 +53,8 @@ uniform vec2 uViewport;
 uniform sampler2D uPairTable;
 uniform sampler2D uPairPrefix;  // extinction integrated over the values, n x 1 (opacity)
 uniform sampler2D uNeighbourSlab;  // the sums of the slab drawn before this one
+uniform sampler2D uSlabBack;       // kQuarters: this slab's last two quarters
+uniform sampler2D uNeighbourBack;  // kQuarters: the neighbour's
 uniform bool uNeighbour;           // that slab is this one's neighbour in depth
 uniform vec2 uSlabDepths;       // this slab's near and far camera depth
 uniform float uPixelsPerUnit;   // orthographic: pixels per world unit
@@ -75,6 +84,7 @@ vec4 slabSums(sampler2D image, ivec2 q, int scale) {
 // The slab's mean value over both halves at pixel q; false where no kernel reaches it.
 bool slabValue(ivec2 q, out float v) {
   vec4 s = slabSums(uSlab, q, uSlabScale);
+  if (kQuarters) s += slabSums(uSlabBack, q, uSlabScale);
   float w = s.g + s.a;
   v = w > 0.0 ? (s.r + s.b) / w : 0.0;
   return w > 0.0;
@@ -96,7 +106,8 @@ float pixelDerivative(ivec2 q, ivec2 dir, float centre) {
 
 // The gradient of the reconstructed field in camera space (x right, y up, z towards the eye)
 // per world unit: across the view from the neighbouring pixels at the slab's middle depth,
-// along it from the front half's value to the back half's, half a slab apart.
+// along it from the front half's value to the back half's, half a slab apart. `s`: the sums
+// of the halves (in quarters, each half's two quarters added).
 vec3 fieldGradient(vec4 s) {
   ivec2 q = ivec2(gl_FragCoord.xy);
   float centre = (s.r + s.b) / max(s.g + s.a, 1e-30);
@@ -156,6 +167,55 @@ vec2 halfValues(vec4 s) {
   return clamp(vec2(front, back), 0.0, 1.0);
 }
 
+// The sums of the halves from those of the quarters (front image, back image).
+vec4 halfSums(vec4 front, vec4 back) {
+  return vec4(front.r + front.b, front.g + front.a, back.r + back.b, back.g + back.a);
+}
+
+// Mean values of a slab's quarters, front to back; a quarter without weight takes the slab's
+// mean (it ends or starts only segments of no length).
+vec4 quarterValues(vec4 front, vec4 back) {
+  vec4 sums = vec4(front.r, front.b, back.r, back.b);
+  vec4 weights = vec4(front.g, front.a, back.g, back.a);
+  float mean = dot(sums, vec4(1.0)) / max(dot(weights, vec4(1.0)), 1e-30);
+  vec4 v = vec4(mean);
+  for (int i = 0; i < 4; ++i)
+    if (weights[i] > 0.0) v[i] = sums[i] / weights[i];
+  return clamp(v, 0.0, 1.0);
+}
+
+// As preintegrated, with four values a slab: from the neighbour's nearer quarter to this
+// slab's first, then between its quarters over each one's covered length (back to front: on
+// from its last quarter to the neighbour's).
+vec4 preintegratedQuarters(vec4 front, vec4 back) {
+  vec4 own = quarterValues(front, back);
+  vec4 lengths = vec4(front.g, front.a, back.g, back.a);
+  float other = kNeighbourInFront ? own.x : own.w;
+  if (uNeighbour) {
+    ivec2 q = ivec2(gl_FragCoord.xy);
+    vec4 nf = slabSums(uNeighbourSlab, q, uNeighbourScale);
+    vec4 nb = slabSums(uNeighbourBack, q, uNeighbourScale);
+    if (nf.g + nf.a + nb.g + nb.a > 0.0) {
+      vec4 n = quarterValues(nf, nb);
+      other = kNeighbourInFront ? n.w : n.x;
+    }
+  }
+  Surface p = pixelSurface(halfSums(front, back));
+  // The five values in depth order; segment i runs from value i to value i + 1.
+  float v[5];
+  if (kNeighbourInFront) {
+    v[0] = other; v[1] = own.x; v[2] = own.y; v[3] = own.z; v[4] = own.w;
+  } else {
+    v[0] = own.x; v[1] = own.y; v[2] = own.z; v[3] = own.w; v[4] = other;
+  }
+  vec4 sum = vec4(0.0);
+  for (int i = 0; i < 4; ++i) {
+    vec4 c = segment(v[i], v[i + 1], lengths[i], p);
+    sum += (1.0 - sum.a) * c;
+  }
+  return sum;
+}
+
 vec4 preintegrated(vec4 s) {
   // Segments run between the halves' values: from the neighbour's nearer half to this slab's
   // front half, over the front half's covered length, then to the back half over the back
@@ -183,6 +243,13 @@ vec4 preintegrated(vec4 s) {
 
 void main() {
   vec4 s = slabSums(uSlab, ivec2(gl_FragCoord.xy), uSlabScale);
+  if (kQuarters) {
+    vec4 back = slabSums(uSlabBack, ivec2(gl_FragCoord.xy), uSlabScale);
+    if (!(s.g + s.a + back.g + back.a > 0.0)) discard;
+    outColor = preintegratedQuarters(s, back);
+    if (!(outColor.a > 0.0)) discard;
+    return;  // blended front to back: (1 - dst.a, 1)
+  }
   if (kPost && kPreintegrated) {
     if (!(s.g + s.a > 0.0)) discard;
     outColor = preintegrated(s);

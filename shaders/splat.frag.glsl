@@ -26,9 +26,25 @@ flat in int vOpen;
 // Blended additively in a slab. pre: (colour * optical depth, optical depth). post: (weight *
 // value, 0, 0, weight) and (weight * normal, 0), the weight being the optical depth a unit
 // extinction would give (world length of the ray the kernel covers); with halves (weight *
-// value, weight) of the front half, then of the back half.
+// value, weight) of the front half, then of the back half; in quarters those of the first two
+// quarters, and of the last two in the third image.
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out vec4 outNormal;
+layout(location = 2) out vec4 outBack;
+
+// The shares of the slab's quarters (front to back), cropped or clipped: on the kept side.
+vec4 quarterShares(float mu, bool openNear, bool openFar) {
+  if (!kClip) return slabQuarters(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar,
+                                  uDepthProfile);
+  vec2 kept = clippedDepths(gl_FragCoord.xy);
+  float q = 0.25 * (uSlabFar - uSlabNear);
+  float z1 = uSlabNear + q, z2 = 0.5 * (uSlabNear + uSlabFar), z3 = uSlabFar - q;
+  return vec4(
+      clippedSlabFraction(mu, vDepthSigma, uSlabNear, z1, openNear, false, kept, uDepthProfile),
+      clippedSlabFraction(mu, vDepthSigma, z1, z2, false, false, kept, uDepthProfile),
+      clippedSlabFraction(mu, vDepthSigma, z2, z3, false, false, kept, uDepthProfile),
+      clippedSlabFraction(mu, vDepthSigma, z3, uSlabFar, false, openFar, kept, uDepthProfile));
+}
 
 void main() {
   vec2 dx = gl_FragCoord.xy - vCenter;
@@ -39,26 +55,31 @@ void main() {
   bool openNear = !uSplitDepth || (uOpenTails && (vOpen & 1) != 0);
   bool openFar = !uSplitDepth || (uOpenTails && (vOpen & 2) != 0);
   // The slab's share of the kernel (cropped or clipped: on the kept side), in erf differences.
-  vec2 halves = vec2(0.0);  // with kHalves: w of the front and back halves
-  if (kHalves) {
+  vec4 parts = vec4(0.0);  // with kHalves: w of the front and back halves (kQuarters: quarters)
+  if (kQuarters) {
+    parts = w * quarterShares(mu, openNear, openFar);
+    w = parts.x + parts.y + parts.z + parts.w;
+  } else if (kHalves) {
     float mid = 0.5 * (uSlabNear + uSlabFar);
     if (kClip) {
       vec2 kept = clippedDepths(gl_FragCoord.xy);
-      halves = vec2(clippedSlabFraction(mu, vDepthSigma, uSlabNear, mid, openNear, false, kept,
-                                        uDepthProfile),
-                    clippedSlabFraction(mu, vDepthSigma, mid, uSlabFar, false, openFar, kept,
-                                        uDepthProfile));
+      parts.xy = vec2(clippedSlabFraction(mu, vDepthSigma, uSlabNear, mid, openNear, false, kept,
+                                          uDepthProfile),
+                      clippedSlabFraction(mu, vDepthSigma, mid, uSlabFar, false, openFar, kept,
+                                          uDepthProfile));
     } else {
-      halves = slabHalves(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar, uDepthProfile);
+      parts.xy =
+          slabHalves(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar, uDepthProfile);
     }
-    halves *= w;
-    w = halves.x + halves.y;
+    parts.xy *= w;
+    w = parts.x + parts.y;
   } else if (kClip) {
     w *= clippedSlabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar,
                              clippedDepths(gl_FragCoord.xy), uDepthProfile);
   } else if (uSplitDepth) {
     w *= slabFraction(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar, uDepthProfile);
   }
+  outBack = vec4(0.0);
   if (kMip) {
     outColor = vec4(vValue * w, 0.0, 0.0, 0.0);  // blended with GL_MAX
     outNormal = vec4(0.0);
@@ -66,9 +87,10 @@ void main() {
   }
   float depth = vAmplitude * w;
   if (kPost) {
-    vec2 d = vAmplitude * halves;
+    vec4 d = vAmplitude * parts;
     outColor = kHalves ? vec4(vValue * d.x, d.x, vValue * d.y, d.y)
                        : vec4(vValue * depth, 0.0, 0.0, depth);
+    if (kQuarters) outBack = vec4(vValue * d.z, d.z, vValue * d.w, d.w);
     outNormal = vec4(vColor * depth, 0.0);
     return;
   }

@@ -9,6 +9,9 @@
 #ifndef SPLAT_HALVES
 #define SPLAT_HALVES 0
 #endif
+#ifndef SPLAT_QUARTERS
+#define SPLAT_QUARTERS 0
+#endif
 #ifndef SPLAT_CLIP
 #define SPLAT_CLIP 0
 #endif
@@ -18,4 +21,6 @@
 const bool kMip = SPLAT_MIP != 0;        // maximum intensity: the value, maximized
 const bool kPost = SPLAT_POST != 0;      // post-classification: values and weights summed
 const bool kHalves = SPLAT_HALVES != 0;  // post, pre-integrated: a slab's two halves apart
+// with halves: each half split again, four depth samples a slab (two images)
+const bool kQuarters = SPLAT_QUARTERS != 0 && kHalves;
 const bool kClip = SPLAT_CLIP != 0;      // a crop box or clipping planes are in force

@@ -165,6 +165,9 @@ int run(int argc, char** argv) {
                  "EWA post-classification: slab value pairs through the pre-integration table "
                  "(on, default) or each slab's value alone (off)")
       ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--slab-samples", settings.slabSamples,
+                 "EWA post-classification, pre-integrated: depth samples a slab, 4 (default) or 2")
+      ->check(CLI::IsMember({2, 4}));
   app.add_option("--prefilter", settings.classification.prefilter,
                  "EWA post-classification: value prefilter strength (default 0.05)")
       ->check(CLI::Range(0.0, kMaxPrefilter));
@@ -207,9 +210,11 @@ int run(int argc, char** argv) {
   const gl::ShaderLibrary shaders(shaderDir);
   SplatRenderer ewa(shaders);
   ewa.setSlabScissor(slabRects == "on");
-  char ewaText[240], prefilterText[40];
-  std::snprintf(prefilterText, sizeof prefilterText, ", prefilter %g",
-                settings.classification.prefilter);
+  char ewaText[280], prefilterText[64];
+  std::snprintf(
+      prefilterText, sizeof prefilterText, ", prefilter %g%s", settings.classification.prefilter,
+      pairs == "on" ? (settings.slabSamples >= 4 ? ", 4 samples a slab" : ", 2 samples a slab")
+                    : "");
   std::snprintf(ewaText, sizeof ewaText,
                 "kernel width %.2f, cutoff %g, depth cutoff %g, %s-classification%s%s, "
                 "occlusion culling %s%s%s%s",

@@ -40,6 +40,7 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
     if (o.render.classification.surface == ewa::SurfaceCriterion::None)
       ewa::parseClassificationMode(config.saved.classification, &o.render.classification.mode);
     o.render.slabPreintegration = config.saved.slabPreintegration;
+    o.render.slabSamples = config.saved.slabSamples;
     o.render.classification.prefilter = config.saved.prefilter;
     ewa::parsePostNormals(config.saved.postNormals, &o.render.postNormals);
     o.render.slabThickness = config.saved.slabThickness;

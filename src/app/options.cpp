@@ -34,6 +34,7 @@ void applyCloseUp(const CLI::App& app, RenderOptionText* text, RenderSettings* s
     text->classification = classificationModeName(closeUp.classification.mode);
   if (app.count("--slab-preintegration") == 0)
     text->slabPreintegration = closeUp.slabPreintegration ? "on" : "off";
+  if (app.count("--slab-samples") == 0) settings->slabSamples = closeUp.slabSamples;
   if (app.count("--kernel-width") == 0) settings->kernelWidth = closeUp.kernelWidth;
   if (app.count("--cutoff") == 0) settings->cutoff = closeUp.cutoff;
 }
@@ -197,9 +198,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   // "series/" and "series" are one folder (and name one bookmarks file beside it).
   while (o->file.size() > 1 && o->file.back() == '/') o->file.pop_back();
   o->resolutionGiven = !res.empty();
-  for (const char* name : {"--filter", "--render-mode", "--cutoff", "--depth-cutoff",
-                           "--kernel-width", "--classification", "--slab-preintegration",
-                           "--prefilter", "--slab-thickness", "--background", "--close-up"})
+  for (const char* name :
+       {"--filter", "--render-mode", "--cutoff", "--depth-cutoff", "--kernel-width",
+        "--classification", "--slab-preintegration", "--slab-samples", "--prefilter",
+        "--slab-thickness", "--background", "--close-up"})
     o->renderOptionsGiven |= app.count(name) > 0;
   if (!res.empty()) {
     o->width = res[0];

@@ -16,6 +16,10 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
                  "a pair through the pre-integration table (on, default), or each slab's value "
                  "alone (off)")
       ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--slab-samples", s.slabSamples,
+                 "Post-classified and pre-integrated: each slab's values at 4 depths (its "
+                 "quarters, default) or 2 (its halves; cheaper, softer in depth)")
+      ->check(CLI::IsMember({2, 4}));
   app.add_option("--prefilter", s.classification.prefilter,
                  "Post-classification: sharpen each splat's value by B times its discrete "
                  "Laplacian, so the kernels come nearer interpolating the voxels (default 0.05; 0: "

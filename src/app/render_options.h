@@ -26,7 +26,7 @@ struct RenderOptionText {
   std::optional<double> surfaceOpacity;
 };
 
-// Adds --classification, --slab-preintegration, --prefilter, --post-normals, --compositing,
+// Adds --classification, --slab-preintegration, --slab-samples, --prefilter, --post-normals, --compositing,
 // --termination, --occlusion-culling, --slab-resolution, --xray-map, --xray-scale, --shading, --ambient, --diffuse,
 // --specular, --shininess, --gradient, --surface-threshold, --surface-opacity-threshold,
 // --surface-min-gradient and --surface-opacity to `app`, writing into `settings` and `text`;

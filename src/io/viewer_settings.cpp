@@ -59,6 +59,7 @@ std::string viewerSettingsToJson(const ViewerSettings& s) {
                  {"kernel_width", s.kernelWidth},
                  {"classification", s.classification},
                  {"slab_preintegration", s.slabPreintegration},
+                 {"slab_samples", s.slabSamples},
                  {"prefilter", s.prefilter},
                  {"post_normals", s.postNormals},
                  {"slab_thickness", s.slabThickness},
@@ -111,6 +112,8 @@ ViewerSettings viewerSettingsFromJson(const std::string& text, const std::string
       const std::string classification = r.value("classification", s.classification);
       if (classification == "pre" || classification == "post") s.classification = classification;
       s.slabPreintegration = r.value("slab_preintegration", s.slabPreintegration);
+      const int samples = r.value("slab_samples", s.slabSamples);
+      if (samples == 2 || samples == 4) s.slabSamples = samples;
       const double prefilter = r.value("prefilter", s.prefilter);
       if (std::isfinite(prefilter)) s.prefilter = std::clamp(prefilter, 0.0, kMaxPrefilter);
       const std::string normals = r.value("post_normals", s.postNormals);

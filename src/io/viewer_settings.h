@@ -27,6 +27,7 @@ struct ViewerSettings {
   double kernelWidth = 0.7;              // RenderSettings' default
   std::string classification = "post";   // "pre" or "post"
   bool slabPreintegration = true;        // RenderSettings' default
+  int slabSamples = 4;                   // RenderSettings' default: 2 or 4
   double prefilter = kDefaultPrefilter;  // post-classification's value prefilter
   std::string postNormals = "field";     // "field" or "voxel"
   double slabThickness = 2.0;            // RenderSettings' default

@@ -7,20 +7,43 @@
 
 namespace ewa {
 
-void RenderTargets::resize(int w, int h, bool paired) {
-  if (!(w == width && h == height && output)) createImages(w, h);
-  if (paired == pairedSlabs()) return;
+namespace {
+
+gl::Texture slabImageTexture(int w, int h) {
+  gl::Texture t = gl::Texture::create2D(GL_RGBA32F, w, h);
+  t.setFilter(GL_LINEAR, GL_LINEAR);  // coarser slab images are read bilinearly
+  return t;
+}
+
+}  // namespace
+
+void RenderTargets::resize(int w, int h, bool paired, bool quarter) {
+  quarter = quarter && paired;
+  const bool fresh = !(w == width && h == height && output);
+  if (fresh) createImages(w, h);
+  if (!fresh && paired == pairedSlabs() && quarter == quarters()) return;
   slabOtherFbo = gl::Framebuffer();
   slabOther = gl::Texture();
-  if (!paired) return;
-  slabOther = gl::Texture::create2D(GL_RGBA32F, w, h);
-  slabOther.setFilter(GL_LINEAR, GL_LINEAR);  // coarser slab images are read bilinearly
-  slabOtherFbo = gl::Framebuffer::create();
-  slabOtherFbo.attachColor(0, slabOther);
-  slabOtherFbo.attachColor(1, slabNormal);
-  slabOtherFbo.attachDepth(stencil, GL_DEPTH_STENCIL_ATTACHMENT);
-  slabOtherFbo.checkComplete();
-  gl::checkGlError("second slab image");
+  slabBack = gl::Texture();
+  slabOtherBack = gl::Texture();
+  if (paired) slabOther = slabImageTexture(w, h);
+  if (quarter) {
+    slabBack = slabImageTexture(w, h);
+    slabOtherBack = slabImageTexture(w, h);
+  }
+  slabFbo = slabFramebuffer(slab, slabBack);
+  if (paired) slabOtherFbo = slabFramebuffer(slabOther, slabOtherBack);
+  gl::checkGlError("slab images");
+}
+
+gl::Framebuffer RenderTargets::slabFramebuffer(const gl::Texture& image, const gl::Texture& back) {
+  gl::Framebuffer fbo = gl::Framebuffer::create();
+  fbo.attachColor(0, image);
+  fbo.attachColor(1, slabNormal);
+  if (back) fbo.attachColor(2, back);
+  fbo.attachDepth(stencil, GL_DEPTH_STENCIL_ATTACHMENT);
+  fbo.checkComplete();
+  return fbo;
 }
 
 void RenderTargets::createImages(int w, int h) {
@@ -36,19 +59,14 @@ void RenderTargets::createImages(int w, int h) {
                       std::to_string(maxViewport[0]) + "x" + std::to_string(maxViewport[1]) + ")");
   }
   *this = RenderTargets();  // free the old images first: the new ones may be large
-  slab = gl::Texture::create2D(GL_RGBA32F, w, h);
+  slab = slabImageTexture(w, h);
   slabNormal = gl::Texture::create2D(GL_RGBA16F, w, h);
   accum = gl::Texture::create2D(GL_RGBA32F, w, h);
   output = gl::Texture::create2D(GL_RGBA8, w, h);
   stencil = gl::Texture::create2D(GL_DEPTH24_STENCIL8, w, h);
   // Coarser slab images (slab_image_scale.h) are read bilinearly; full ones by texelFetch.
-  for (gl::Texture* t : {&slab, &slabNormal}) t->setFilter(GL_LINEAR, GL_LINEAR);
+  slabNormal.setFilter(GL_LINEAR, GL_LINEAR);
   for (gl::Texture* t : {&accum, &output}) t->setFilter(GL_NEAREST, GL_NEAREST);
-  slabFbo = gl::Framebuffer::create();
-  slabFbo.attachColor(0, slab);
-  slabFbo.attachColor(1, slabNormal);
-  slabFbo.attachDepth(stencil, GL_DEPTH_STENCIL_ATTACHMENT);
-  slabFbo.checkComplete();
   accumFbo = gl::Framebuffer::create();
   accumFbo.attachColor(0, accum);
   accumFbo.attachDepth(stencil, GL_DEPTH_STENCIL_ATTACHMENT);

@@ -24,22 +24,34 @@ struct RenderTargets {
   // between the two and the slab pass reads the one before (same normal and stencil images).
   gl::Texture slabOther;
   gl::Framebuffer slabOtherFbo;
+  // Paired slabs in quarters: each slab image's back half, (weight * value, weight) of its
+  // third and fourth quarters (RGBA32F, colour attachment 2); the image itself then holds the
+  // first and second quarters.
+  gl::Texture slabBack;
+  gl::Texture slabOtherBack;
 
-  // (Re)creates the images when the size changes, and the second slab image when `pairedSlabs`
-  // asks for it (freed when not); throws gl::GlError if incomplete.
-  void resize(int w, int h, bool pairedSlabs = false);
+  // (Re)creates the images when the size changes, the second slab image when `pairedSlabs`
+  // asks for it and the back halves when `quarters` does (freed when not); throws gl::GlError
+  // if incomplete.
+  void resize(int w, int h, bool pairedSlabs = false, bool quarters = false);
   bool pairedSlabs() const { return bool(slabOther); }
-  // Slab image `i` (0 or 1) and its framebuffer; 1 only with paired slabs.
+  bool quarters() const { return bool(slabBack); }
+  // Slab image `i` (0 or 1), its back half and its framebuffer; 1 only with paired slabs.
   const gl::Texture& slabImage(int i) const { return i ? slabOther : slab; }
+  const gl::Texture& slabBackImage(int i) const { return i ? slabOtherBack : slabBack; }
   gl::Framebuffer& slabTarget(int i) { return i ? slabOtherFbo : slabFbo; }
-  // Bytes the images hold: two RGBA32F (three with paired slabs), one RGBA16F, one RGBA8, one
-  // depth-stencil (4 bytes) per pixel.
+  // Bytes the images hold: two RGBA32F (three with paired slabs, five in quarters), one
+  // RGBA16F, one RGBA8, one depth-stencil (4 bytes) per pixel.
   size_t bytes() const {
-    return size_t(width) * size_t(height) * (16 + 8 + 16 + 4 + 4 + (pairedSlabs() ? 16 : 0));
+    return size_t(width) * size_t(height) *
+           (16 + 8 + 16 + 4 + 4 + (pairedSlabs() ? 16 : 0) + (quarters() ? 32 : 0));
   }
 
  private:
   void createImages(int w, int h);
+  // The framebuffer of one slab image: the image, the normal sums, its back half if any, the
+  // stencil.
+  gl::Framebuffer slabFramebuffer(const gl::Texture& image, const gl::Texture& back);
 };
 
 }  // namespace ewa

@@ -56,6 +56,7 @@ void applyCloseUpSettings(RenderSettings* settings) {
   settings->classification.surface = SurfaceCriterion::None;
   const RenderSettings defaults;
   settings->slabPreintegration = true;
+  settings->slabSamples = defaults.slabSamples;
   settings->classification.prefilter = defaults.classification.prefilter;
   settings->kernelWidth = defaults.kernelWidth;
   settings->cutoff = defaults.cutoff;

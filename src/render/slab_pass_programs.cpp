@@ -9,7 +9,8 @@ gl::VariantFlags SlabPassVariant::flags() const {
           {"SLAB_SHADING", shading},
           {"SLAB_FIELD_NORMALS", fieldNormals},
           {"SLAB_NEIGHBOUR_IN_FRONT", neighbourInFront},
-          {"SLAB_SCALED", scaled}};
+          {"SLAB_SCALED", scaled},
+          {"SLAB_QUARTERS", quarters}};
 }
 
 SlabPassPrograms::SlabPassPrograms(const gl::ShaderLibrary& shaders) : shaders_(shaders) {

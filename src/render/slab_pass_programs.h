@@ -20,6 +20,7 @@ struct SlabPassVariant {
   bool fieldNormals = false;      // shaded, pre-integrated: normals from the field's gradient
   bool neighbourInFront = false;  // pre-integrated front to back: the slab drawn before is nearer
   bool scaled = false;            // the slab's or its neighbour's image is coarser (bilinear)
+  bool quarters = false;          // pre-integrated with four values a slab (two images a slab)
 
   gl::VariantFlags flags() const;
   unsigned key() const { return gl::variantKey(flags()); }

@@ -205,6 +205,7 @@ void SplatRenderer::beginCompositeSlab(size_t s) {
   glBindFramebuffer(GL_FRAMEBUFFER, target.id());
   target.clearColor(0, zero);
   if (voxelNormalSums(frame_.settings)) target.clearColor(1, zero);
+  if (frame_.quarters) target.clearColor(2, zero);
 }
 
 void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
@@ -245,12 +246,14 @@ void SplatRenderer::endCompositeSlab(size_t s) {
   else
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   targets_.slabImage(slabImageOf(s)).bindUnit(1);
+  if (frame_.quarters) targets_.slabBackImage(slabImageOf(s)).bindUnit(kSlabBackUnit);
   gl::Program& pass = slabPassProgram(s);
   pass.setInt("uSlabScale", slabScale(s));
   if (frame_.pairedSlabs) {
     // The slab drawn before this one, if it is this one's neighbour in depth (empty slabs are
     // not drawn): a segment runs from its nearer half's value to this slab's.
     targets_.slabImage(slabImageOf(s + 1)).bindUnit(kNeighbourSlabUnit);
+    if (frame_.quarters) targets_.slabBackImage(slabImageOf(s + 1)).bindUnit(kNeighbourBackUnit);
     const bool adjacent = s > 0 && slabsAdjacent(slabInOrder(s - 1), slabInOrder(s));
     pass.setInt("uNeighbour", adjacent ? 1 : 0);
     pass.setInt("uNeighbourScale", s > 0 ? slabScale(s - 1) : 1);
@@ -477,12 +480,14 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   frame_.width = width;
   frame_.height = height;
   frame_.pairedSlabs = pairedSlabs(settings);
-  targets_.resize(width, height, frame_.pairedSlabs);
+  frame_.quarters = quarterSlabs(settings);
+  targets_.resize(width, height, frame_.pairedSlabs, frame_.quarters);
   stats_ = RenderStats{};
   const GLfloat zero[4] = {0, 0, 0, 0};
   glDisable(GL_SCISSOR_TEST);  // the whole images are cleared
   targets_.accumFbo.clearColor(0, zero);
   targets_.slabFbo.clearColor(0, zero);
+  if (frame_.quarters) targets_.slabFbo.clearColor(2, zero);
   glClearNamedFramebufferfi(targets_.slabFbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
   const Classification classification = splatClassification(settings);
   if (volume_ && (splatsDirty_ || classification != classification_)) {

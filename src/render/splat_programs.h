@@ -16,6 +16,7 @@ struct SplatVariant {
   bool mip = false;           // maximum intensity projection
   bool post = false;          // post-classification: values and weights, not colour and opacity
   bool halves = false;        // post, pre-integrated between slabs: each slab's two halves apart
+  bool quarters = false;      // halves, each split again: four depth samples a slab
   bool clip = false;          // a crop box or clipping planes cut the kernels
   bool texelBuffers = false;  // splat records and attributes read from texel buffers
 

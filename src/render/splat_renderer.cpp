@@ -289,6 +289,7 @@ SplatVariant SplatRenderer::splatVariant(const RenderSettings& settings, bool te
   variant.mip = settings.mode == RenderMode::Mip;
   variant.post = postClassified(settings);
   variant.halves = pairedSlabs(settings);
+  variant.quarters = quarterSlabs(settings);
   variant.clip = volume_ && !halfSpacesInVolumeFrame(settings.clip, *volume_).empty();
   variant.texelBuffers = texelBuffers;
   return variant;
@@ -303,11 +304,13 @@ SlabPassVariant SplatRenderer::slabPassVariant(const RenderSettings& settings, b
   // Front to back the slab drawn before is the segment's front, back to front its back.
   variant.neighbourInFront = variant.preintegrated && settings.order == CompositeOrder::FrontToBack;
   variant.scaled = scaled;
+  variant.quarters = quarterSlabs(settings);
   return variant;
 }
 
 void SplatRenderer::prepare(const RenderSettings& settings, int width, int height) {
-  if (width > 0 && height > 0) targets_.resize(width, height, pairedSlabs(settings));
+  if (width > 0 && height > 0)
+    targets_.resize(width, height, pairedSlabs(settings), quarterSlabs(settings));
   splatPrograms_.select(splatVariant(settings, false));
   if (settings.mode != RenderMode::Composite) return;
   slabPrograms_.select(slabPassVariant(settings, false));
@@ -319,15 +322,20 @@ bool SplatRenderer::pairedSlabs(const RenderSettings& settings) {
   return postClassified(settings) && settings.slabPreintegration;
 }
 
+bool SplatRenderer::quarterSlabs(const RenderSettings& settings) {
+  return pairedSlabs(settings) && settings.slabSamples >= 4;
+}
+
 double SplatRenderer::slabThickness(const RenderSettings& settings, const glm::dvec3& spacing) {
   return std::max(0.25, settings.slabThickness) * footprintParams(settings, spacing).minSpacing;
 }
 
 double SplatRenderer::preparePairTable(const RenderSettings& settings) {
-  // Segments run between the values of half slabs: the table's colours (their
+  // Segments run between the values of half (quarter) slabs: the table's colours (their
   // self-attenuation) are for that length.
   const double thickness = slabThickness(settings, volume_->spacing());
-  return pairTable_.prepare(tf_, volume_->minValue(), volume_->maxValue(), 0.5 * thickness);
+  const double samples = quarterSlabs(settings) ? 4.0 : 2.0;
+  return pairTable_.prepare(tf_, volume_->minValue(), volume_->maxValue(), thickness / samples);
 }
 
 void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSettings& settings) {
@@ -353,16 +361,19 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
     p.setInt("uPairTable", int(kPairTableUnit));
     p.setInt("uPairPrefix", int(kPairPrefixUnit));
     p.setInt("uNeighbourSlab", int(kNeighbourSlabUnit));
+    p.setInt("uSlabBack", int(kSlabBackUnit));
+    p.setInt("uNeighbourBack", int(kNeighbourBackUnit));
     p.setInt("uSlab", 1);
     p.setInt("uSlabScale", 1);
     p.setInt("uNeighbourScale", 1);
   }
-  // The normal sums are written only where they are used.
-  const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  const GLenum first[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
+  // The normal sums and back halves are written only where they are used.
+  const GLenum none = GL_NONE;
+  const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0,
+                             voxelNormalSums(settings) ? GLenum(GL_COLOR_ATTACHMENT1) : none,
+                             frame_.quarters ? GLenum(GL_COLOR_ATTACHMENT2) : none};
   for (int i = 0; i < (frame_.pairedSlabs ? 2 : 1); ++i)
-    glNamedFramebufferDrawBuffers(targets_.slabTarget(i).id(), 2,
-                                  voxelNormalSums(settings) ? both : first);
+    glNamedFramebufferDrawBuffers(targets_.slabTarget(i).id(), frame_.quarters ? 3 : 2, buffers);
 }
 
 void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex) {

@@ -153,6 +153,9 @@ class SplatRenderer : public Renderer {
   static bool fieldNormals(const RenderSettings& settings);
   // Post-classified and pre-integrated between slabs: two slab images, drawn in turn.
   static bool pairedSlabs(const RenderSettings& settings);
+  // Paired slabs with four depth samples a slab (RenderSettings::slabSamples): a second image
+  // a slab for its back half.
+  static bool quarterSlabs(const RenderSettings& settings);
   // The slabs' thickness in world units for a volume of this spacing.
   static double slabThickness(const RenderSettings& settings, const glm::dvec3& spacing);
   // Builds the pre-integration tables for `settings` unless they are up to date; returns the
@@ -253,8 +256,10 @@ class SplatRenderer : public Renderer {
   static constexpr unsigned kOpaqueUnit = 4;  // texture unit of the occlusion pyramid
   SlabPairTable pairTable_;                   // post-classification with pre-integration
   static constexpr unsigned kPairTableUnit = 5;
-  static constexpr unsigned kNeighbourSlabUnit = 6;  // paired slabs: the slab drawn before
-  static constexpr unsigned kPairPrefixUnit = 9;     // paired slabs: the extinction prefix
+  static constexpr unsigned kNeighbourSlabUnit = 6;   // paired slabs: the slab drawn before
+  static constexpr unsigned kPairPrefixUnit = 9;      // paired slabs: the extinction prefix
+  static constexpr unsigned kSlabBackUnit = 10;       // quarters: the slab's back half
+  static constexpr unsigned kNeighbourBackUnit = 11;  // quarters: the neighbour's back half
   gl::VertexArray emptyVao_;
   gl::Buffer splatBuffer_;
   gl::Buffer orderBuffer_;
@@ -316,6 +321,7 @@ class SplatRenderer : public Renderer {
     bool terminated = false;   // early termination ended the slab loop
     bool occlusion = false;    // occlusion culling in this frame (front to back, terminating)
     bool pairedSlabs = false;  // post-classified with pre-integration: two slab images
+    bool quarters = false;     // paired, four depth samples a slab: two images a slab
     int nextQuery = 0;         // of queries_, the one the next check issues
     bool queryIssued[2] = {false, false};  // lagged termination: a result not yet read
     size_t nextEntry = 0;                  // X-ray and MIP: the next entry of the single slab

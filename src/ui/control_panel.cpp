@@ -117,6 +117,18 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
   ImGui::SameLine();
   changed |= ImGui::Checkbox("pre-integrated", &settings.slabPreintegration);
   ImGui::EndDisabled();
+  // Depth samples a slab: its quarters (nearer a ray caster close up) or its halves (cheaper).
+  ImGui::BeginDisabled(!post || !settings.slabPreintegration);
+  bool quarters = settings.slabSamples >= 4;
+  if (ImGui::Checkbox("4 samples a slab", &quarters)) {
+    settings.slabSamples = quarters ? 4 : 2;
+    changed = true;
+  }
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(
+        "Post-classified, pre-integrated: each slab's value at 4 depths (its quarters) or 2 "
+        "(its halves: cheaper, softer in depth; ewaview --slab-samples)");
+  ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::Button("close-up")) {
     applyCloseUpSettings(&settings);

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <iostream>
 
-#include "io/atomic_file.h"
 #include "core/camera_views.h"
+#include "io/atomic_file.h"
 #include "ui/clip_panel.h"
 #include "ui/crop_box_handles.h"
 #include "ui/viewer_window.h"
@@ -26,8 +26,7 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   const ClipPanelEdits clip =
       drawClipPanel(settings_.clip, current_.volume->worldBoundsMin(),
                     current_.volume->worldBoundsMax(), controller_.camera());
-  const glm::dvec3 extent =
-      current_.volume->worldBoundsMax() - current_.volume->worldBoundsMin();
+  const glm::dvec3 extent = current_.volume->worldBoundsMax() - current_.volume->worldBoundsMin();
   const CropHandleEdits handles = drawCropBoxHandles(
       settings_.clip, controller_.camera(), 0.01 * std::min({extent.x, extent.y, extent.z}));
   if (clip.changed || handles.changed) ++settingsRevision_;
@@ -55,6 +54,7 @@ void ViewerWindow::saveSettings() {
   saved_.kernelWidth = settings_.kernelWidth;
   saved_.classification = classificationModeName(settings_.classification.mode);
   saved_.slabPreintegration = settings_.slabPreintegration;
+  saved_.slabSamples = settings_.slabSamples;
   saved_.prefilter = settings_.classification.prefilter;
   saved_.postNormals = postNormalsName(settings_.postNormals);
   saved_.slabThickness = settings_.slabThickness;
@@ -98,10 +98,9 @@ void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
 
 void ViewerWindow::showAxisView(AxisView v, const glm::ivec2& fb) {
   const Volume& volume = *current_.volume;
-  controller_.setCamera(cameraForAxisView(controller_.camera(), v, volume.worldBoundsMin(),
-                                          volume.worldBoundsMax(),
-                                          fb.y > 0 ? double(fb.x) / fb.y : 1.0,
-                                          volume.patientFrame()));
+  controller_.setCamera(
+      cameraForAxisView(controller_.camera(), v, volume.worldBoundsMin(), volume.worldBoundsMax(),
+                        fb.y > 0 ? double(fb.x) / fb.y : 1.0, volume.patientFrame()));
 }
 
 void ViewerWindow::applySessionEdits(const SessionEdits& e, const glm::ivec2& fb,

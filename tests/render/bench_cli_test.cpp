@@ -33,7 +33,7 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
   // llvmpipe: Auto leaves occlusion culling off.
   EXPECT_EQ(doc["ewa_settings"],
             "kernel width 0.70, cutoff 5, depth cutoff 1, post-classification, prefilter 0.05, "
-            "occlusion culling off (auto)");
+            "4 samples a slab, occlusion culling off (auto)");
   EXPECT_NE(doc["context"].get<std::string>().find("OpenGL"), std::string::npos) << doc["context"];
   EXPECT_NE(doc["command"].get<std::string>().find("--synthetic sphere:24"), std::string::npos);
   ASSERT_EQ(doc["rows"].size(), 1u) << r.out;
@@ -66,13 +66,14 @@ TEST(CompareCli, KernelWidthCutoffsAndClassificationReachEwa) {
   const CliRun r =
       compare(std::string(kTiny) +
               " --kernel-width 0.55 --cutoff 5 --depth-cutoff 2.25 "
-              "--classification post --prefilter 0.1 --occlusion-culling off --slab-rects off "
-              "--slab-resolution full --json");
+              "--classification post --prefilter 0.1 --slab-samples 2 --occlusion-culling off "
+              "--slab-rects off --slab-resolution full --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const json doc = json::parse(r.out);
   EXPECT_EQ(doc["ewa_settings"],
             "kernel width 0.55, cutoff 5, depth cutoff 2.25, post-classification, prefilter 0.1, "
-            "occlusion culling off, whole-image slab passes, full-resolution slabs");
+            "2 samples a slab, occlusion culling off, whole-image slab passes, "
+            "full-resolution slabs");
   ASSERT_EQ(doc["rows"].size(), 1u) << r.out;
   EXPECT_GT(doc["rows"][0]["ewa_ms"].get<double>(), 0.0);
   EXPECT_EQ(doc["rows"][0]["culled_percent"].get<double>(), 0.0);

@@ -234,9 +234,11 @@ TEST_F(Soak, TwoThousandFramesLeakNoGlObjectsAndNoMemory) {
     // llvmpipe, measured after frames 399, 799, 1199 and 1599: +5.0, +2.4, +1.2, -0.9 MiB; 7.3
     // to 9.9 MiB over the run). The CPU slab partition's worker thread allocates from a malloc
     // arena of its own, which the partitions of later renderers reuse but fragment: 12.8 MiB
-    // over the run with it, 9.9 with the partition built on the calling thread. The whole
-    // run's resident memory gets a budget of 16 MiB; the heap check below is the leak test.
-    EXPECT_LT(rssAtEnd - rssAfterWarmUp, 16 * 1024)
+    // over the run with it, 9.9 with the partition built on the calling thread. With the
+    // quarter-sample variants (two programs more a renderer): 11.6 MiB alone, 16.5 once under
+    // the parallel test run. The whole run's resident memory gets a budget of 24 MiB; the
+    // heap check below is the leak test.
+    EXPECT_LT(rssAtEnd - rssAfterWarmUp, 24 * 1024)
         << "resident memory grew by " << rssAtEnd - rssAfterWarmUp << " KiB";
     // The last cycle repeats the one before with the same renderers: the heap in use must end
     // where it started (RSS varies by up to 0.9 MiB here between runs and is no leak measure).

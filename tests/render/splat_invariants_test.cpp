@@ -299,15 +299,21 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   renderer()->render(cam, settings, 96, 64);
   EXPECT_EQ(renderer()->stats().gpuBytes, unshaded);
   // Post-classified with slab pre-integration: a second RGBA32F slab image, the 256x256
-  // RGBA32F table and the 4096-entry R32F extinction prefix; without it, all are freed.
+  // RGBA32F table and the 4096-entry R32F extinction prefix; in quarters (the default) two
+  // RGBA32F back halves more; without it, all are freed.
   settings.classification.mode = ClassificationMode::Post;
   settings.slabPreintegration = false;
   renderer()->render(cam, settings, 96, 64);
   const size_t single = renderer()->stats().gpuBytes;
   settings.slabPreintegration = true;
+  settings.slabSamples = 2;
   renderer()->render(cam, settings, 96, 64);
   EXPECT_EQ(renderer()->stats().gpuBytes - single,
             size_t(96 * 64) * 16 + 256 * 256 * 16 + 4096 * 4);
+  settings.slabSamples = 4;
+  renderer()->render(cam, settings, 96, 64);
+  EXPECT_EQ(renderer()->stats().gpuBytes - single,
+            size_t(96 * 64) * 16 * 3 + 256 * 256 * 16 + 4096 * 4);
   settings.slabPreintegration = false;
   renderer()->render(cam, settings, 96, 64);
   EXPECT_EQ(renderer()->stats().gpuBytes, single);
