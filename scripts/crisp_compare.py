@@ -231,6 +231,8 @@ def main():
                         "(default: ewaview's, 0.05)")
     p.add_argument("--slab-thickness", type=float, default=2.0,
                    help="slab thickness in voxels (ewaview's default 2)")
+    p.add_argument("--low-pass", type=float,
+                   help="ewaview's --low-pass: the EWA screen filter's variance (default: ewaview's)")
     p.add_argument("--slab-samples", type=int, choices=[2, 4],
                    help="ewaview's --slab-samples (default: ewaview's, 4)")
     p.add_argument("--slab-resolution", choices=["auto", "full"],
@@ -273,6 +275,8 @@ def main():
                 options["depth_cutoff"] = a.depth_cutoff
             if a.slab_resolution:
                 options["slab_resolution"] = a.slab_resolution
+            if a.low_pass:
+                options["low_pass"] = a.low_pass
             if a.slab_samples and classification == "post":
                 options["slab_samples"] = a.slab_samples
             if prefilter is not None:

@@ -123,6 +123,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   RenderOptionText renderText;
   addShadingOptions(app, o->render, renderText);
   ClipOptionText clipText;
+  std::string lowPassText = "auto";
   addClipOptions(app, clipText);
   app.add_option("--cutoff", o->render.cutoff, "Footprint cutoff r = dx^T Q dx (default 5)")
       ->check(CLI::Range(0.25, 64.0));
@@ -132,6 +133,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--kernel-width", o->render.kernelWidth,
                  "Kernel sigma in voxel spacings, 0.3 to 2 (default 0.7)")
       ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
+  app.add_option("--low-pass", lowPassText,
+                 "EWA's screen low-pass filter: its variance in pixels^2, 0.1 to 1, or auto "
+                 "(default: 1 pre-classified, as the paper; 0.5 post-classified)");
   bool closeUp = false;
   app.add_flag("--close-up", closeUp,
                "Close-up setting, today the defaults: --classification post --slab-preintegration "
@@ -200,7 +204,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   o->resolutionGiven = !res.empty();
   for (const char* name :
        {"--filter", "--render-mode", "--cutoff", "--depth-cutoff", "--kernel-width",
-        "--classification", "--slab-preintegration", "--slab-samples", "--prefilter",
+        "--classification", "--slab-preintegration", "--slab-samples", "--low-pass", "--prefilter",
         "--slab-thickness", "--background", "--close-up"})
     o->renderOptionsGiven |= app.count(name) > 0;
   if (!res.empty()) {
@@ -218,6 +222,13 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
     return usage(e);
   if (const std::string e = finishClipOptions(clipText, &o->render.clip); !e.empty())
     return usage(e);
+  if (lowPassText != "auto") {
+    char* end = nullptr;
+    const double v = std::strtod(lowPassText.c_str(), &end);
+    if (end == lowPassText.c_str() || *end != '\0' || !(v >= 0.1 && v <= 1.0))
+      return usage("--low-pass: " + lowPassText + " is not auto or a variance from 0.1 to 1");
+    o->render.lowPass = v;
+  }
   parseRendererKind(rendererName, &o->render.renderer);
   parseTableLookup(lookup, &o->render.shearWarp.lookup);
   parseBufferSlices(buffers, &o->render.shearWarp.buffers);

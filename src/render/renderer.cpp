@@ -69,7 +69,15 @@ FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3
   params.minSpacing = std::min({spacing.x, spacing.y, spacing.z});
   params.cullDepth = params.minSpacing;
   params.swanSpacing = settings.kernelWidth * params.minSpacing;
+  params.lowPass = lowPassVariance(settings);
   return params;
+}
+
+double lowPassVariance(const RenderSettings& settings) {
+  if (settings.lowPass > 0.0) return std::min(settings.lowPass, 1.0);
+  const bool post = settings.classification.mode == ClassificationMode::Post &&
+                    settings.mode == RenderMode::Composite;
+  return post ? kPostClassifiedLowPass : 1.0;
 }
 
 DepthProfile depthProfile(const RenderSettings& settings) {

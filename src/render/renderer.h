@@ -59,6 +59,13 @@ struct RenderSettings {
   // unchanged: narrower kernels blur less and cost fewer fragments (as width^2). 0.7: nearer a
   // ray caster close up, cheaper, and the filter-quality findings hold (the paper's is 1).
   double kernelWidth = 0.7;
+  // EWA's screen-space low-pass filter: its variance in pixels^2, at most 1 (the paper's); 0:
+  // automatic (lowPassVariance): 1 pre-classified, where it band-limits the picture's colours
+  // as the paper does, and 0.5 post-classified, where it smooths the splatted field before the
+  // transfer function (which no filter on the field band-limits): the narrowest variance whose
+  // lattice of one-pixel footprints keeps its ripple under 1%, as the kernel width is chosen
+  // (README, "Low-pass filter").
+  double lowPass = 0.0;
   // Kernels' depth extent in squared standard deviations (at most the cutoff): each kernel's
   // depth profile is cut there (DepthProfile) and it is listed only in the slabs it reaches.
   // Infinite: uncut, listed to the cutoff, the first and last slab taking the tails. 1 (one
@@ -118,6 +125,9 @@ void applyCloseUpSettings(RenderSettings* settings);
 // The footprint parameters every splat of a volume with this spacing gets under `settings`:
 // Swan's s is the smallest spacing, and voxels closer than it to the eye plane are culled.
 FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3& spacing);
+
+// The low-pass filter's variance in pixels^2 under `settings` (RenderSettings::lowPass).
+double lowPassVariance(const RenderSettings& settings);
 
 // The kernels' depth profile under `settings`: cut at min(cutoff, depthCutoff), or uncut.
 DepthProfile depthProfile(const RenderSettings& settings);

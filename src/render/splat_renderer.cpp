@@ -260,7 +260,7 @@ void SplatRenderer::setSplatScale(int scale) {
   frame_.splatScale = scale;
   const Projection proj = scaledProjection(frame_.proj, scale);
   // The footprints are the picture's, low-pass filter included, sampled on coarser texels.
-  const double lowPass = 1.0 / (double(scale) * double(scale));
+  const double lowPass = lowPassVariance(frame_.settings) / (double(scale) * double(scale));
   for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()}) {
     setProjectionUniforms(*p, proj, lowPass);
     // The clip rays of the coarser image's pixels.

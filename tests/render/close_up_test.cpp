@@ -77,6 +77,37 @@ TEST(CloseUp, PrefilterOptionTakesItsRangeOnly) {
   }
 }
 
+TEST(CloseUp, LowPassAndSlabSamplesOptions) {
+  // Automatic: the paper's unit variance pre-classified, 0.5 post-classified (and 1 again in
+  // X-ray and MIP, which are always pre-classified); a variance given is taken in any mode.
+  const Parsed plain = parse({"--synthetic", "sphere:8"});
+  ASSERT_TRUE(plain.result.run);
+  EXPECT_EQ(plain.options.render.slabSamples, 4);
+  RenderSettings s = plain.options.render;
+  EXPECT_DOUBLE_EQ(lowPassVariance(s), kPostClassifiedLowPass);
+  s.mode = RenderMode::Mip;
+  EXPECT_DOUBLE_EQ(lowPassVariance(s), 1.0);
+  const Parsed pre = parse({"--synthetic", "sphere:8", "--classification", "pre"});
+  EXPECT_DOUBLE_EQ(lowPassVariance(pre.options.render), 1.0);
+  const Parsed given = parse({"--synthetic", "sphere:8", "--low-pass", "0.7", "--slab-samples",
+                              "2", "--classification", "pre"});
+  ASSERT_TRUE(given.result.run);
+  EXPECT_DOUBLE_EQ(lowPassVariance(given.options.render), 0.7);
+  EXPECT_EQ(given.options.render.slabSamples, 2);
+  EXPECT_TRUE(given.options.renderOptionsGiven);
+  EXPECT_TRUE(parse({"--synthetic", "sphere:8", "--low-pass", "auto"}).result.run);
+  for (const char* bad : {"0.05", "1.5", "nan", "x", "0.5x"}) {
+    const Parsed q = parse({"--synthetic", "sphere:8", "--low-pass", bad});
+    EXPECT_FALSE(q.result.run) << bad;
+    EXPECT_EQ(q.result.exitCode, 2) << bad;
+  }
+  for (const char* bad : {"3", "1", "x"}) {
+    const Parsed q = parse({"--synthetic", "sphere:8", "--slab-samples", bad});
+    EXPECT_FALSE(q.result.run) << bad;
+    EXPECT_EQ(q.result.exitCode, 2) << bad;
+  }
+}
+
 TEST(CloseUp, OptionsGivenBesideItWin) {
   const Parsed p = parse({"--synthetic", "sphere:8", "--kernel-width", "0.6", "--close-up",
                           "--classification", "pre", "--slab-preintegration", "off"});
