@@ -100,18 +100,22 @@ vec2 slabHalves(float mu, float sigma, float zNear, float zFar, bool openNear, b
   return 0.5 * profile.y * vec2(mid - lo, hi - mid);
 }
 
-// The slab's share in four quarters, front to back; they add up to slabFraction's, with three
-// erf more.
+// The slab's share in four quarters, front to back, inside the depths `kept` (unbounded: the
+// whole share); they add up to slabFraction's, with three erf more. Each quarter's bounds are
+// clamped to `kept`, so a cut costs no erf more.
 vec4 slabQuarters(float mu, float sigma, float zNear, float zFar, bool openNear, bool openFar,
-                  vec2 profile) {
+                  vec2 kept, vec2 profile) {
   float s = 1.0 / (sqrt(2.0) * sigma);
   float q = 0.25 * (zFar - zNear);
-  float e0 = profileErf(openNear ? -profile.x : (zNear - mu) * s, profile);
-  float e1 = profileErf((zNear + q - mu) * s, profile);
-  float e2 = profileErf((0.5 * (zNear + zFar) - mu) * s, profile);
-  float e3 = profileErf((zFar - q - mu) * s, profile);
-  float e4 = profileErf(openFar ? profile.x : (zFar - mu) * s, profile);
-  return 0.5 * profile.y * vec4(e1 - e0, e2 - e1, e3 - e2, e4 - e3);
+  vec4 lo = vec4(openNear ? -1e30 : zNear, zNear + q, 0.5 * (zNear + zFar), zFar - q);
+  float hi = openFar ? 1e30 : zFar;
+  kept.y = max(kept.x, kept.y);  // nothing kept: every bound at one depth, every share 0
+  lo = (clamp(lo, kept.x, kept.y) - mu) * s;
+  hi = (clamp(hi, kept.x, kept.y) - mu) * s;
+  float e0 = profileErf(lo.x, profile), e1 = profileErf(lo.y, profile);
+  float e2 = profileErf(lo.z, profile), e3 = profileErf(lo.w, profile);
+  float e4 = profileErf(hi, profile);
+  return 0.5 * profile.y * max(vec4(e1 - e0, e2 - e1, e3 - e2, e4 - e3), 0.0);
 }
 
 bool cullKernel(vec3 u, float radius, Projection proj, FootprintParams params) {

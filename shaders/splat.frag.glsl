@@ -34,16 +34,9 @@ layout(location = 2) out vec4 outBack;
 
 // The shares of the slab's quarters (front to back), cropped or clipped: on the kept side.
 vec4 quarterShares(float mu, bool openNear, bool openFar) {
-  if (!kClip) return slabQuarters(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar,
-                                  uDepthProfile);
-  vec2 kept = clippedDepths(gl_FragCoord.xy);
-  float q = 0.25 * (uSlabFar - uSlabNear);
-  float z1 = uSlabNear + q, z2 = 0.5 * (uSlabNear + uSlabFar), z3 = uSlabFar - q;
-  return vec4(
-      clippedSlabFraction(mu, vDepthSigma, uSlabNear, z1, openNear, false, kept, uDepthProfile),
-      clippedSlabFraction(mu, vDepthSigma, z1, z2, false, false, kept, uDepthProfile),
-      clippedSlabFraction(mu, vDepthSigma, z2, z3, false, false, kept, uDepthProfile),
-      clippedSlabFraction(mu, vDepthSigma, z3, uSlabFar, false, openFar, kept, uDepthProfile));
+  vec2 kept = kClip ? clippedDepths(gl_FragCoord.xy) : vec2(-kClipUnbounded, kClipUnbounded);
+  return slabQuarters(mu, vDepthSigma, uSlabNear, uSlabFar, openNear, openFar, kept,
+                      uDepthProfile);
 }
 
 void main() {
