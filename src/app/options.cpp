@@ -135,7 +135,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
   app.add_option("--low-pass", lowPassText,
                  "EWA's screen low-pass filter: its variance in pixels^2, 0.1 to 1, or auto "
-                 "(default: 1 pre-classified, as the paper; 0.5 post-classified)");
+                 "(default: 1 pre-classified, as the paper; 0.5 post-classified)")
+      ->check(CLI::IsMember({"auto"}) | CLI::Range(0.1, 1.0));
   bool closeUp = false;
   app.add_flag("--close-up", closeUp,
                "Close-up setting, today the defaults: --classification post --slab-preintegration "
@@ -222,13 +223,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
     return usage(e);
   if (const std::string e = finishClipOptions(clipText, &o->render.clip); !e.empty())
     return usage(e);
-  if (lowPassText != "auto") {
-    char* end = nullptr;
-    const double v = std::strtod(lowPassText.c_str(), &end);
-    if (end == lowPassText.c_str() || *end != '\0' || !(v >= 0.1 && v <= 1.0))
-      return usage("--low-pass: " + lowPassText + " is not auto or a variance from 0.1 to 1");
-    o->render.lowPass = v;
-  }
+  if (lowPassText != "auto") o->render.lowPass = std::stod(lowPassText);  // checked above
   parseRendererKind(rendererName, &o->render.renderer);
   parseTableLookup(lookup, &o->render.shearWarp.lookup);
   parseBufferSlices(buffers, &o->render.shearWarp.buffers);

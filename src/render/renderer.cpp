@@ -73,11 +73,14 @@ FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3
   return params;
 }
 
+bool postClassified(const RenderSettings& settings) {
+  return settings.classification.mode == ClassificationMode::Post &&
+         settings.mode == RenderMode::Composite;
+}
+
 double lowPassVariance(const RenderSettings& settings) {
   if (settings.lowPass > 0.0) return std::min(settings.lowPass, 1.0);
-  const bool post = settings.classification.mode == ClassificationMode::Post &&
-                    settings.mode == RenderMode::Composite;
-  return post ? kPostClassifiedLowPass : 1.0;
+  return postClassified(settings) ? kPostClassifiedLowPass : 1.0;
 }
 
 DepthProfile depthProfile(const RenderSettings& settings) {

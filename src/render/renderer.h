@@ -126,6 +126,10 @@ void applyCloseUpSettings(RenderSettings* settings);
 // Swan's s is the smallest spacing, and voxels closer than it to the eye plane are culled.
 FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3& spacing);
 
+// Post-classified splatting: the transfer function applied per pixel (composite mode only;
+// X-ray and MIP stay pre-classified).
+bool postClassified(const RenderSettings& settings);
+
 // The low-pass filter's variance in pixels^2 under `settings` (RenderSettings::lowPass).
 double lowPassVariance(const RenderSettings& settings);
 

@@ -271,8 +271,7 @@ void SplatRenderer::setSplatScale(int scale) {
 }
 
 bool SplatRenderer::postClassified(const RenderSettings& settings) {
-  return settings.classification.mode == ClassificationMode::Post &&
-         settings.mode == RenderMode::Composite;
+  return ewa::postClassified(settings);
 }
 
 bool SplatRenderer::fieldNormals(const RenderSettings& settings) {
