@@ -8,6 +8,7 @@
 #include <exception>
 #include <iostream>
 
+#include "app/heap_tuning.h"
 #include "app/options.h"
 
 namespace ewa {
@@ -17,6 +18,7 @@ int benchmarkMain(const char* program, int (*run)(int, char**), int argc, char**
     std::cerr << program << ": " << nan << ": not a finite number (see --help)\n";
     return 2;
   }
+  keepFreedHeapForReuse();  // as ewaview itself runs
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/headless.h"
+#include "app/heap_tuning.h"
 #include "app/one_line.h"
 #include "app/options.h"
 #include "app/scene.h"
@@ -96,6 +97,7 @@ int main(int argc, char** argv) {
   ewa::Options options;
   const ewa::ParseResult parsed = ewa::parseCommandLine(argc, argv, &options);
   if (!parsed.run) return parsed.exitCode;
+  ewa::keepFreedHeapForReuse();
   try {
     ewa::Scene scene = ewa::loadScene(options);
     if (options.info) {

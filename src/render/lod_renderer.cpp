@@ -35,6 +35,7 @@ LodRenderer::LodRenderer(Factory factory) : factory_(std::move(factory)) {}
 void LodRenderer::setVolume(const Volume& volume, LodVolumes coarse) {
   volume_ = &volume;
   coarse_ = std::move(coarse);
+  drawn_.clear();
   for (auto& [factor, renderer] : renderers_) {
     if (factor == 1) {
       renderer->setVolume(volume);
@@ -111,6 +112,7 @@ void LodRenderer::render(int level, const Camera& camera, const RenderSettings& 
   imageHeight_ = std::max(1, height / lod.imageDivisor);
   if (lod.volumeFactor == 1) fullPending_ = false;
   rendererFor(lod.volumeFactor).render(camera, settings, imageWidth_, imageHeight_);
+  drawn_.insert(lod.volumeFactor);
   lastFactor_ = lod.volumeFactor;
   lastLevel_ = level;
 }
@@ -141,10 +143,20 @@ double LodRenderer::fullProgress() const {
   return it == renderers_.end() ? 0.0 : it->second->frameProgress();
 }
 
-void LodRenderer::warmUp(const Camera& camera, const RenderSettings& settings) {
+bool LodRenderer::warmUpNext(const Camera& camera, const RenderSettings& settings) {
   constexpr int kWarmUpSize = 8;
-  for (const auto& level : coarse_.levels)
+  for (const auto& level : coarse_.levels) {
+    if (!drawn_.insert(level.first).second) continue;
     rendererFor(level.first).render(camera, settings, kWarmUpSize, kWarmUpSize);
+    return true;
+  }
+  return false;
+}
+
+bool LodRenderer::warmUpPending() const {
+  for (const auto& level : coarse_.levels)
+    if (drawn_.count(level.first) == 0) return true;
+  return false;
 }
 
 size_t LodRenderer::gpuBytes() const {

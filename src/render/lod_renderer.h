@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <vector>
 
 #include "core/lod_policy.h"
@@ -68,9 +69,13 @@ class LodRenderer {
     rendererFor(1).prepare(settings, width, height);
   }
 
-  // Makes every coarse level's renderer and classifies its splats by drawing a tiny image, so
-  // the first moving frame does not pay for it. Leaves last() as it was.
-  void warmUp(const Camera& camera, const RenderSettings& settings);
+  // Makes the next coarse level's renderer not drawn since the volume was set and classifies its
+  // splats by drawing a tiny image, so the first moving frame there does not pay for it (shaders
+  // and classification: 50-220 ms each on llvmpipe for the default volume). false when every
+  // level had been drawn. Leaves last() as it was.
+  bool warmUpNext(const Camera& camera, const RenderSettings& settings);
+  // Whether a coarse level has not been drawn since the volume was set.
+  bool warmUpPending() const;
 
   // The renderer and image of the last render() (render() must have run).
   const Renderer& last() const { return *renderers_.at(lastFactor_); }
@@ -96,6 +101,7 @@ class LodRenderer {
   TransferFunction tf_;
   bool hasTf_ = false;
   std::map<int, std::unique_ptr<Renderer>> renderers_;
+  std::set<int> drawn_;  // volume factors drawn (or warmed up) since setVolume
   int lastFactor_ = 1;
   int lastLevel_ = 0;
   int imageWidth_ = 0, imageHeight_ = 0;

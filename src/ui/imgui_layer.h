@@ -24,6 +24,8 @@ class ImGuiLayer {
   void beginFrame();
   // Ends the frame and draws the widgets over the current framebuffer (GL state is restored).
   void render();
+  // Ends the frame without drawing it (a frame that is not presented).
+  void endFrame();
 
   // Whether ImGui used the mouse / keyboard in the last frame (the cursor is over a window, a
   // widget is being dragged, a text field has focus): the camera must then leave them alone.

@@ -47,6 +47,10 @@ bool ProgressiveRefinement::step(LodRenderer& lod) {
   return true;
 }
 
+bool ProgressiveRefinement::presentsStep(bool activity) const {
+  return !active_ || activity || millisecondsSince(lastPresent_) >= kPresentIntervalMs;
+}
+
 void ProgressiveRefinement::reportFrame(double ms) {
   if (!active_ && !finishedThisFrame_) return;
   current_.worstFrameMs = std::max(current_.worstFrameMs, ms);

@@ -89,7 +89,9 @@ void ViewerWindow::run() {
   int quietFrames = 0;
   while (!window_.shouldClose()) {
     const bool refining = refinement_.active();
-    const double wait = quietFrames < kFramesAfterActivity || refining ? 0.0 : waitSeconds();
+    const bool warmUp = warmUpDue();
+    const double wait =
+        quietFrames < kFramesAfterActivity || refining || warmUp ? 0.0 : waitSeconds();
     if (wait > 0.0)
       glfwWaitEventsTimeout(wait);
     else
@@ -98,10 +100,10 @@ void ViewerWindow::run() {
     // `|`, not `||`: both must run (take the flag and swap in a finished splat set).
     const bool active = input_.takeActivity() | takeBuiltSplats();
     const bool due = busy() || refineDue() || refinement_.active() || fullSplatsArrived_ ||
-                     !messages_.current(now()).empty();
+                     warmUp || !messages_.current(now()).empty();
     if (!active && !due && quietFrames >= kFramesAfterActivity) continue;
 
-    const bool rendered = drawFrame();
+    const bool rendered = drawFrame(active);
     const double ms = millisecondsSince(start);
     frameStats_.frameMs = ms;
     refinement_.reportFrame(ms);
@@ -117,6 +119,13 @@ double ViewerWindow::now() const {
 
 bool ViewerWindow::busy() const {
   return loadJob_.running() || turntable_.total > 0 || buildPending_ || liveTf_.building();
+}
+
+// Coarse levels not drawn yet are warmed up after full quality, not before: the first picture
+// and its refinement come first.
+bool ViewerWindow::warmUpDue() const {
+  return levelOfDetail_ && hasImage_ && lod_.lastLevel() == 0 && !refinement_.active() && !busy() &&
+         lod_.warmUpPending();
 }
 
 // A coarse image is shown and the quiet time before full quality has passed.
@@ -254,7 +263,7 @@ void ViewerWindow::logFrame(double ms) {
                  r.wallMs, r.frames, r.workMs, r.worstFrameMs);
 }
 
-bool ViewerWindow::drawFrame() {
+bool ViewerWindow::drawFrame(bool activity) {
   input_.updateViewportSize();
   const glm::ivec2 fb = window_.framebufferSize();
   if (fb.x <= 0 || fb.y <= 0) return false;  // minimised
@@ -282,8 +291,7 @@ bool ViewerWindow::drawFrame() {
     if (levelOfDetail_) {
       liveTf_.buildFullLevel(lod_, splatClassification(settings_));
       fullBuildFor_ = splatClassification(settings_);
-      // The coarse levels classify now (it draws tiny images: before the picture shown).
-      lod_.warmUp(controller_.camera(), settings_);
+      // The other coarse levels classify once full quality is on screen (warmUpDue).
     }
     const double ms = renderLevel(level, controller_.camera(), fb);
     if (levelOfDetail_) {
@@ -311,6 +319,9 @@ bool ViewerWindow::drawFrame() {
     rendered = true;
   } else if (refinement_.active() || refineDue() || fullSplatsArrived_) {
     rendered = refine(fb);
+  } else if (warmUpDue()) {
+    // Nothing else to do: one coarse level drawn tiny, so moving there later does not stall.
+    lod_.warmUpNext(controller_.camera(), settings_);
   }
   fullSplatsArrived_ = false;
   if (printLayout_ && rendered) {  // for the scripted window test: which level is on screen
@@ -319,9 +330,14 @@ bool ViewerWindow::drawFrame() {
   }
   if (screenshotNow) screenshot(fb);
 
-  presenter_.present(lod_.outputTexture(), lod_.imageWidth(), lod_.imageHeight(), fb.x, fb.y);
-  imgui_.render();
-  window_.swapBuffers();
+  if (!rendered && !screenshotNow && !refinement_.presentsStep(activity)) {
+    imgui_.endFrame();  // the screen keeps the last presented frame
+  } else {
+    presenter_.present(lod_.outputTexture(), lod_.imageWidth(), lod_.imageHeight(), fb.x, fb.y);
+    imgui_.render();
+    window_.swapBuffers();
+    refinement_.notePresented();
+  }
   // ImGui decides what it captures while building the frame; the next events obey that.
   input_.setUiCapture(imgui_.wantsMouse(), imgui_.wantsKeyboard());
   return rendered;

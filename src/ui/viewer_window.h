@@ -59,8 +59,10 @@ class ViewerWindow {
   double now() const;
   bool busy() const;
   bool refineDue() const;
+  bool warmUpDue() const;
   double waitSeconds() const;
-  bool drawFrame();
+  // `activity`: input or new splats this frame (a frame that only refines may skip presenting).
+  bool drawFrame(bool activity);
   // Renders one level of detail now, whole; returns the milliseconds it took.
   double renderLevel(int level, const Camera& camera, const glm::ivec2& fb);
   // Records a new picture on screen (rendered or refined) for the staleness checks and panel.

@@ -101,13 +101,10 @@ Image8 expectedCoarse(const Image8& full, double pixelsPerVoxel, const LodLevel&
 }
 
 TEST_F(LodRendererTest, LevelsShrinkImageAndSplatsButKeepThePicture) {
-  const SyntheticVolume s = makeSyntheticVolume("sphere:32");
-  const gl::ShaderLibrary shaders;
-  LodRenderer lod([&shaders] { return std::make_unique<SplatRenderer>(shaders); });
-  lod.setVolume(s.volume, buildLodVolumes(s.volume));
-  lod.setTransferFunction(*s.transferFunction);
-  Camera cam;
-  cam.frame(s.volume.boundsMin(), s.volume.boundsMax(), {0.3, 0.4, 1.0}, {0, 1, 0}, 1.0);
+  LodScene scene("sphere:32");
+  const SyntheticVolume& s = scene.synthetic;
+  LodRenderer& lod = scene.lod;
+  const Camera& cam = scene.camera;
   const RenderSettings settings = paperSettings();
 
   // Level 0 is the plain renderer's picture.
@@ -161,6 +158,47 @@ TEST_F(LodRendererTest, LevelsShrinkImageAndSplatsButKeepThePicture) {
     writePng(testOutputDir() + "/lod_level" + std::to_string(level) + ".png", coarse);
   }
   EXPECT_GT(lod.gpuBytes(), fullSplats * 8);
+}
+
+// Warming up makes each coarse level not drawn yet (one per call), classifying its splats, and
+// leaves the picture shown alone; a level drawn already is skipped, a new volume starts over.
+TEST_F(LodRendererTest, WarmUpClassifiesEachUndrawnLevelOnceAndKeepsThePicture) {
+  LodScene scene("marschner-lobb:32");
+  const SyntheticVolume& s = scene.synthetic;
+  LodRenderer& lod = scene.lod;
+  const Camera& cam = scene.camera;
+  const RenderSettings settings;
+  const int last = LodPolicy::kLevelCount - 1;
+  lod.render(last, cam, settings, 64, 64);
+  EXPECT_GT(lod.last().stats().classifyMs, 0.0);  // a first draw classifies
+  const unsigned shown = lod.outputTexture();
+  const Image8 picture = lod.last().readImage();
+  std::vector<int> coarseFactors;
+  for (int level = 1; level < LodPolicy::kLevelCount; ++level) {
+    const int f = LodPolicy::level(level).volumeFactor;
+    if (f > 1 && std::find(coarseFactors.begin(), coarseFactors.end(), f) == coarseFactors.end())
+      coarseFactors.push_back(f);
+  }
+  ASSERT_GE(coarseFactors.size(), 2u);
+  int warmed = 0;
+  EXPECT_TRUE(lod.warmUpPending());
+  while (lod.warmUpNext(cam, settings)) {
+    ++warmed;
+    EXPECT_EQ(lod.outputTexture(), shown);
+    EXPECT_EQ(lod.lastLevel(), last);
+    EXPECT_EQ(lod.imageWidth(), 64 / LodPolicy::level(last).imageDivisor);
+  }
+  // Every coarse volume factor but the one of the level drawn.
+  EXPECT_EQ(warmed, int(coarseFactors.size()) - 1);
+  EXPECT_FALSE(lod.warmUpPending());
+  EXPECT_EQ(lod.last().readImage().pixels, picture.pixels);
+  // Classified already: moving to any level now classifies nothing.
+  for (int level = 1; level < LodPolicy::kLevelCount; ++level) {
+    lod.render(level, cam, settings, 64, 64);
+    EXPECT_EQ(lod.last().stats().classifyMs, 0.0) << level;
+  }
+  lod.setVolume(s.volume, buildLodVolumes(s.volume));
+  EXPECT_TRUE(lod.warmUpPending());
 }
 
 }  // namespace

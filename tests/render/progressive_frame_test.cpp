@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
+#include <thread>
 
 #include "core/synthetic_volume.h"
 #include "gl/shader_library.h"
@@ -208,13 +210,9 @@ TEST_F(ProgressiveFrame, AbandonedFrameLeavesNoTrace) {
 
 // LodRenderer's full level stepped: the coarse picture stays last() until the frame is done.
 TEST_F(ProgressiveFrame, LodRendererKeepsCoarseLevelUntilFullFrameIsDone) {
-  const SyntheticVolume s = makeSyntheticVolume("marschner-lobb:32");
-  const gl::ShaderLibrary shaders;
-  LodRenderer lod([&shaders] { return std::make_unique<SplatRenderer>(shaders); });
-  lod.setVolume(s.volume, buildLodVolumes(s.volume));
-  lod.setTransferFunction(*s.transferFunction);
-  Camera cam;
-  cam.frame(s.volume.boundsMin(), s.volume.boundsMax(), {0.3, 0.4, 1.0}, {0, 1, 0}, 1.0);
+  LodScene scene("marschner-lobb:32");
+  LodRenderer& lod = scene.lod;
+  const Camera& cam = scene.camera;
   RenderSettings settings;
   settings.slabThickness = 1.0;
   lod.render(0, cam, settings, 64, 64);
@@ -242,13 +240,9 @@ TEST_F(ProgressiveFrame, LodRendererKeepsCoarseLevelUntilFullFrameIsDone) {
 // The window's scheduler: the budget is what the UI frame target leaves beside the rest of the
 // frame, between 4 ms and the most it was given; a finished refinement reports its steps.
 TEST_F(ProgressiveFrame, RefinementBudgetAdaptsAndReportsItsFrames) {
-  const SyntheticVolume s = makeSyntheticVolume("marschner-lobb:32");
-  const gl::ShaderLibrary shaders;
-  LodRenderer lod([&shaders] { return std::make_unique<SplatRenderer>(shaders); });
-  lod.setVolume(s.volume, buildLodVolumes(s.volume));
-  lod.setTransferFunction(*s.transferFunction);
-  Camera cam;
-  cam.frame(s.volume.boundsMin(), s.volume.boundsMax(), {0.3, 0.4, 1.0}, {0, 1, 0}, 1.0);
+  LodScene scene("marschner-lobb:32");
+  LodRenderer& lod = scene.lod;
+  const Camera& cam = scene.camera;
   RenderSettings settings;
   settings.slabThickness = 1.0;
   lod.render(0, cam, settings, 64, 64);
@@ -290,6 +284,31 @@ TEST_F(ProgressiveFrame, RefinementBudgetAdaptsAndReportsItsFrames) {
   EXPECT_GT(tiny.last().worstFrameMs, 0.0);
   EXPECT_EQ(lod.lastLevel(), 0);
   EXPECT_LE(maxDifference(lod.last().readImage(), full), 1);
+}
+
+// Frames that only step the refinement present the unchanged coarse picture again only after
+// activity or once kPresentIntervalMs has passed since the last present; idle, always.
+TEST_F(ProgressiveFrame, RefiningFramesPresentOnActivityOrAfterTheInterval) {
+  LodScene scene("marschner-lobb:32");
+  LodRenderer& lod = scene.lod;
+  const Camera& cam = scene.camera;
+  RenderSettings settings;
+  lod.render(4, cam, settings, 64, 64);
+
+  ProgressiveRefinement refinement(kTinyBudgetMs, 50.0);
+  EXPECT_TRUE(refinement.presentsStep(false));  // nothing refining
+  refinement.start(lod, cam, settings, {64, 64});
+  refinement.notePresented();
+  EXPECT_FALSE(refinement.presentsStep(false));
+  EXPECT_TRUE(refinement.presentsStep(true));
+  std::this_thread::sleep_for(
+      std::chrono::duration<double, std::milli>(ProgressiveRefinement::kPresentIntervalMs));
+  EXPECT_TRUE(refinement.presentsStep(false));
+  refinement.notePresented();
+  EXPECT_FALSE(refinement.presentsStep(false));
+  while (!refinement.step(lod)) {
+  }
+  EXPECT_TRUE(refinement.presentsStep(false));  // the finished picture
 }
 
 }  // namespace

@@ -80,4 +80,13 @@ RenderSettings paperSettings() {
   return s;
 }
 
+LodScene::LodScene(const std::string& name)
+    : synthetic(makeSyntheticVolume(name)),
+      lod([this] { return std::make_unique<SplatRenderer>(shaders); }) {
+  lod.setVolume(synthetic.volume, buildLodVolumes(synthetic.volume));
+  lod.setTransferFunction(*synthetic.transferFunction);
+  camera.frame(synthetic.volume.boundsMin(), synthetic.volume.boundsMax(), {0.3, 0.4, 1.0},
+               {0, 1, 0}, 1.0);
+}
+
 }  // namespace ewa::test

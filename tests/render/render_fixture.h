@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include "gl/shader_library.h"
+#include "core/synthetic_volume.h"
 #include "platform/headless_context.h"
+#include "render/lod_renderer.h"
 #include "render/splat_renderer.h"
 
 namespace ewa::test {
@@ -35,5 +37,15 @@ TransferFunction whiteTf(double alpha, double unit);
 // pre-classified, kernels as wide as the spacing, cutoff 4. For tests of the mechanisms it
 // states (surface splats, the filters, C++ references of one splat, culling, LOD, slab counts).
 RenderSettings paperSettings();
+
+// A LodRenderer of splat renderers on a synthetic volume (its coarse volumes and transfer
+// function set) and a camera framing it, for the level-of-detail and refinement tests.
+struct LodScene {
+  explicit LodScene(const std::string& synthetic);
+  SyntheticVolume synthetic;
+  gl::ShaderLibrary shaders;
+  LodRenderer lod;
+  Camera camera;
+};
 
 }  // namespace ewa::test
