@@ -145,9 +145,10 @@ double LodRenderer::fullProgress() const {
 
 bool LodRenderer::warmUpNext(const Camera& camera, const RenderSettings& settings) {
   constexpr int kWarmUpSize = 8;
-  for (const auto& level : coarse_.levels) {
-    if (!drawn_.insert(level.first).second) continue;
-    rendererFor(level.first).render(camera, settings, kWarmUpSize, kWarmUpSize);
+  // Coarsest first: the cheapest, and the first moving level after a slow full frame.
+  for (auto level = coarse_.levels.rbegin(); level != coarse_.levels.rend(); ++level) {
+    if (!drawn_.insert(level->first).second) continue;
+    rendererFor(level->first).render(camera, settings, kWarmUpSize, kWarmUpSize);
     return true;
   }
   return false;

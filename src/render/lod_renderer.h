@@ -69,10 +69,10 @@ class LodRenderer {
     rendererFor(1).prepare(settings, width, height);
   }
 
-  // Makes the next coarse level's renderer not drawn since the volume was set and classifies its
+  // Makes the coarsest level's renderer not drawn since the volume was set and classifies its
   // splats by drawing a tiny image, so the first moving frame there does not pay for it (shaders
-  // and classification: 50-220 ms each on llvmpipe for the default volume). false when every
-  // level had been drawn. Leaves last() as it was.
+  // and classification: 50-220 ms each on llvmpipe for the default volume, 1.1 s for bonsai's
+  // half-size volume). false when every level had been drawn. Leaves last() as it was.
   bool warmUpNext(const Camera& camera, const RenderSettings& settings);
   // Whether a coarse level has not been drawn since the volume was set.
   bool warmUpPending() const;

@@ -121,11 +121,13 @@ bool ViewerWindow::busy() const {
   return loadJob_.running() || turntable_.total > 0 || buildPending_ || liveTf_.building();
 }
 
-// Coarse levels not drawn yet are warmed up after full quality, not before: the first picture
-// and its refinement come first.
+// Coarse levels not drawn yet are warmed up after the first picture, one a frame, while the
+// worker builds the full level's splats (beside this thread) or once full quality is shown:
+// never in the way of the first picture or of a refinement.
 bool ViewerWindow::warmUpDue() const {
-  return levelOfDetail_ && hasImage_ && lod_.lastLevel() == 0 && !refinement_.active() && !busy() &&
-         lod_.warmUpPending();
+  if (!levelOfDetail_ || !hasImage_ || refinement_.active() || !lod_.warmUpPending()) return false;
+  if (loadJob_.running() || turntable_.total > 0 || buildPending_) return false;
+  return liveTf_.building() || (lod_.lastLevel() == 0 && !busy());
 }
 
 // A coarse image is shown and the quiet time before full quality has passed.
