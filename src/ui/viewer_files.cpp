@@ -109,6 +109,7 @@ bool ViewerWindow::takeBuiltSplats() {
     error(problem + " (the window keeps running)");
   else
     fullSplatsArrived_ = hasImage_ && (lod_.lastLevel() == 0 || refinement_.active());
+  splatsUploaded_ = problem.empty();
   return true;
 }
 
