@@ -129,8 +129,8 @@ class ViewerWindow {
   bool frameLog_ = false;     // EWAVIEW_FRAME_LOG=1: every frame's time on stderr
   bool fullSplatsArrived_ = false;
   bool splatsUploaded_ = false;  // this frame took a worker's splat set (uploading it)
-  bool calibrate_ = false;                      // the next full frame picks the first moving level
-  bool refineFailed_ = false;                   // retried after the next change, not every frame
+  bool calibrate_ = false;       // the next full frame picks the first moving level
+  bool refineFailed_ = false;    // retried after the next change, not every frame
   std::optional<Classification> fullBuildFor_;  // the last full splat set asked of the worker
   int reportedRefinement_ = 0;                  // RefinementReport::index last shown and logged
   uint64_t renderedTf_ = 0;
