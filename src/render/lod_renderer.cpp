@@ -36,6 +36,7 @@ void LodRenderer::setVolume(const Volume& volume, LodVolumes coarse) {
   volume_ = &volume;
   coarse_ = std::move(coarse);
   drawn_.clear();
+  ++revision_;
   for (auto& [factor, renderer] : renderers_) {
     if (factor == 1) {
       renderer->setVolume(volume);
@@ -51,12 +52,14 @@ void LodRenderer::setVolume(const Volume& volume, LodVolumes coarse) {
 void LodRenderer::setTransferFunction(const TransferFunction& tf) {
   tf_ = tf;
   hasTf_ = true;
+  ++revision_;
   for (auto& entry : renderers_) entry.second->setTransferFunction(tf);
 }
 
 SplatRenderer* LodRenderer::editTransferFunction(const TransferFunction& tf) {
   tf_ = tf;
   hasTf_ = true;
+  ++revision_;
   SplatRenderer* live = nullptr;
   for (auto& [factor, renderer] : renderers_) {
     auto* splat = factor == 1 ? dynamic_cast<SplatRenderer*>(renderer.get()) : nullptr;
@@ -145,9 +148,43 @@ double LodRenderer::fullProgress() const {
 
 bool LodRenderer::warmUpNext(const Camera& camera, const RenderSettings& settings) {
   constexpr int kWarmUpSize = 8;
+  if (warming_) {
+    std::optional<BuiltSplats> built;
+    try {
+      built = warming_->builder.poll();
+      if (!built) return true;  // still classifying
+    } catch (const std::exception&) {
+      // Too many splats: the level's first draw says so, as without a warm-up.
+    }
+    const int factor = warming_->factor;
+    const bool current = warming_->revision == revision_;
+    warming_.reset();
+    if (!current) return true;  // another volume or transfer function since
+    auto* splat = dynamic_cast<SplatRenderer*>(&rendererFor(factor));
+    if (built && splat && splat->needsSplats(built->classification)) {
+      // Uploaded, and the programs, images and tables made: a tiny draw would also run every
+      // splat through the vertex stage (0.3 s or more for bonsai's half-size volume).
+      splat->updateTransferTexture(tf_);
+      splat->setSplats(std::move(built->splats), built->classification);
+      splat->prepare(settings, kWarmUpSize, kWarmUpSize);
+    } else {
+      rendererFor(factor).render(camera, settings, kWarmUpSize, kWarmUpSize);
+    }
+    return true;
+  }
   // Coarsest first: the cheapest, and the first moving level after a slow full frame.
   for (auto level = coarse_.levels.rbegin(); level != coarse_.levels.rend(); ++level) {
     if (!drawn_.insert(level->first).second) continue;
+    auto* splat = dynamic_cast<SplatRenderer*>(&rendererFor(level->first));
+    const Classification wanted = splatClassification(settings);
+    if (splat && hasTf_ && splat->needsSplats(wanted)) {
+      warming_ = std::make_unique<WarmUpBuild>();
+      warming_->factor = level->first;
+      warming_->revision = revision_;
+      warming_->volume = level->second;
+      warming_->builder.request(*warming_->volume, tf_, wanted, splat->maxSplats());
+      return true;
+    }
     rendererFor(level->first).render(camera, settings, kWarmUpSize, kWarmUpSize);
     return true;
   }
@@ -155,6 +192,7 @@ bool LodRenderer::warmUpNext(const Camera& camera, const RenderSettings& setting
 }
 
 bool LodRenderer::warmUpPending() const {
+  if (warming_) return true;
   for (const auto& level : coarse_.levels)
     if (drawn_.count(level.first) == 0) return true;
   return false;

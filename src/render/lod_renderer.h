@@ -8,6 +8,7 @@
 #include <set>
 #include <vector>
 
+#include "core/async_splat_builder.h"
 #include "core/lod_policy.h"
 #include "core/splat_attributes.h"
 #include "render/renderer.h"
@@ -69,12 +70,13 @@ class LodRenderer {
     rendererFor(1).prepare(settings, width, height);
   }
 
-  // Makes the coarsest level's renderer not drawn since the volume was set and classifies its
-  // splats by drawing a tiny image, so the first moving frame there does not pay for it (shaders
-  // and classification: 50-220 ms each on llvmpipe for the default volume, 1.1 s for bonsai's
-  // half-size volume). false when every level had been drawn. Leaves last() as it was.
+  // One step of readying the coarsest level not drawn since the volume was set, so the first
+  // moving frame there does not pay for it: its splats are classified on a worker thread (1 s
+  // on llvmpipe's machine for bonsai's half-size volume), then a later call uploads them and
+  // draws a tiny image, which makes its shaders (50-150 ms). Calls while the worker classifies
+  // return at once. false when every level had been drawn. Leaves last() as it was.
   bool warmUpNext(const Camera& camera, const RenderSettings& settings);
-  // Whether a coarse level has not been drawn since the volume was set.
+  // Whether a coarse level has not been drawn since the volume was set, or is being warmed up.
   bool warmUpPending() const;
 
   // The renderer and image of the last render() (render() must have run).
@@ -101,7 +103,18 @@ class LodRenderer {
   TransferFunction tf_;
   bool hasTf_ = false;
   std::map<int, std::unique_ptr<Renderer>> renderers_;
-  std::set<int> drawn_;  // volume factors drawn (or warmed up) since setVolume
+  std::set<int> drawn_;  // volume factors drawn (or being warmed up) since setVolume
+  // A coarse level's splats being classified on a worker, with the volume it reads, kept until
+  // the build is taken, even past a setVolume (the build is then dropped). The builder, declared
+  // after the volume, is destroyed first: it waits for the build.
+  struct WarmUpBuild {
+    int factor = 0;
+    uint64_t revision = 0;  // revision_ when asked for
+    std::shared_ptr<const Volume> volume;
+    AsyncSplatBuilder builder;
+  };
+  std::unique_ptr<WarmUpBuild> warming_;
+  uint64_t revision_ = 0;  // counts volume and transfer-function changes (a build goes stale)
   int lastFactor_ = 1;
   int lastLevel_ = 0;
   int imageWidth_ = 0, imageHeight_ = 0;

@@ -160,8 +160,10 @@ TEST_F(LodRendererTest, LevelsShrinkImageAndSplatsButKeepThePicture) {
   EXPECT_GT(lod.gpuBytes(), fullSplats * 8);
 }
 
-// Warming up makes each coarse level not drawn yet (one per call), classifying its splats, and
-// leaves the picture shown alone; a level drawn already is skipped, a new volume starts over.
+// Warming up classifies each coarse level not drawn yet on a worker (steps return at once
+// meanwhile), then uploads its splats and draws a tiny image, leaving the picture shown alone;
+// a level drawn already is skipped, a new volume starts over, and a build made stale by a new
+// transfer function is dropped.
 TEST_F(LodRendererTest, WarmUpClassifiesEachUndrawnLevelOnceAndKeepsThePicture) {
   LodScene scene("marschner-lobb:32");
   const SyntheticVolume& s = scene.synthetic;
@@ -180,25 +182,61 @@ TEST_F(LodRendererTest, WarmUpClassifiesEachUndrawnLevelOnceAndKeepsThePicture) 
       coarseFactors.push_back(f);
   }
   ASSERT_GE(coarseFactors.size(), 2u);
-  int warmed = 0;
+  int steps = 0;
   EXPECT_TRUE(lod.warmUpPending());
   while (lod.warmUpNext(cam, settings)) {
-    ++warmed;
+    ASSERT_LT(++steps, 1000000);
     EXPECT_EQ(lod.outputTexture(), shown);
     EXPECT_EQ(lod.lastLevel(), last);
     EXPECT_EQ(lod.imageWidth(), 64 / LodPolicy::level(last).imageDivisor);
   }
-  // Every coarse volume factor but the one of the level drawn.
-  EXPECT_EQ(warmed, int(coarseFactors.size()) - 1);
+  // Every coarse volume factor but the one of the level drawn: asked for, then taken.
+  EXPECT_GE(steps, 2 * (int(coarseFactors.size()) - 1));
   EXPECT_FALSE(lod.warmUpPending());
   EXPECT_EQ(lod.last().readImage().pixels, picture.pixels);
-  // Classified already: moving to any level now classifies nothing.
+  // Classified already, by the worker: moving to any level now classifies nothing, and draws
+  // what classifying there would have drawn.
+  std::vector<Image8> warmed;
   for (int level = 1; level < LodPolicy::kLevelCount; ++level) {
     lod.render(level, cam, settings, 64, 64);
     EXPECT_EQ(lod.last().stats().classifyMs, 0.0) << level;
+    warmed.push_back(lod.last().readImage());
   }
+  LodScene cold("marschner-lobb:32");
+  for (int level = 1; level < LodPolicy::kLevelCount; ++level) {
+    cold.lod.render(level, cold.camera, settings, 64, 64);
+    // Levels share a volume factor's renderer: the first of each classifies.
+    if (LodPolicy::level(level).volumeFactor != LodPolicy::level(level - 1).volumeFactor)
+      EXPECT_GT(cold.lod.last().stats().classifyMs, 0.0) << level;
+    EXPECT_EQ(cold.lod.last().readImage().pixels, warmed[size_t(level - 1)].pixels) << level;
+  }
+
+  // A new volume starts over; a transfer function changed while the worker classifies makes
+  // its build stale: dropped, and the level classifies on its first draw as without a warm-up.
   lod.setVolume(s.volume, buildLodVolumes(s.volume));
   EXPECT_TRUE(lod.warmUpPending());
+  lod.render(last, cam, settings, 64, 64);
+  ASSERT_TRUE(lod.warmUpNext(cam, settings));  // asks the worker for the next level
+  TransferFunction other = *s.transferFunction;
+  other.opacityUnitDistance *= 2.0;
+  lod.setTransferFunction(other);
+  while (lod.warmUpPending() && lod.warmUpNext(cam, settings)) {
+  }
+  // The dropped level is the coarsest not drawn; the levels warmed after the change are ready.
+  const int drawnFactor = LodPolicy::level(last).volumeFactor;
+  int dropped = 0;
+  for (int f : coarseFactors)
+    if (f != drawnFactor) dropped = std::max(dropped, f);
+  for (int level = 1; level < LodPolicy::kLevelCount; ++level) {
+    const int f = LodPolicy::level(level).volumeFactor;
+    if (f == 1 || f == drawnFactor) continue;
+    lod.render(level, cam, settings, 64, 64);
+    if (f == dropped)
+      EXPECT_GT(lod.last().stats().classifyMs, 0.0) << level;
+    else
+      EXPECT_EQ(lod.last().stats().classifyMs, 0.0) << level;
+    dropped = f == dropped ? 0 : dropped;  // classified now
+  }
 }
 
 }  // namespace
