@@ -79,6 +79,9 @@ ViewerWindow::ViewerWindow(platform::GlfwWindowContext& window, LoadedVolume ini
   hasNvx_ = gl::queryGpuMemory().has_value();
   if (initial.coarse.levels.empty()) initial.coarse = buildLodVolumes(*initial.volume);
   adopt(std::move(initial), /*newCamera=*/false);
+  // The worker classifies the full level while this thread makes the renderers ready and draws
+  // the first picture.
+  if (levelOfDetail_) requestFullLevel();
   // Shader failures throw here: one line, exit 1. The window's first full-quality frame then
   // finds its programs, images and tables made (they held its first refinement step 190 ms).
   const glm::ivec2 fb = window_.framebufferSize();
@@ -119,6 +122,12 @@ double ViewerWindow::now() const {
 
 bool ViewerWindow::busy() const {
   return loadJob_.running() || turntable_.total > 0 || buildPending_ || liveTf_.building();
+}
+
+void ViewerWindow::requestFullLevel() {
+  fullBuildFor_ = splatClassification(settings_);
+  liveTf_.buildFullLevel(lod_, *fullBuildFor_);
+  fullLevelAsked_ = true;
 }
 
 // Coarse levels not drawn yet are warmed up after the first picture, one a frame, while the
@@ -291,8 +300,8 @@ bool ViewerWindow::drawFrame(bool activity) {
     const int level = levelOfDetail_ ? LodPolicy::kLevelCount - 1 : 0;
     TerminalProgress note("ewaview: building splats for " + current_.name + ",");
     if (levelOfDetail_) {
-      liveTf_.buildFullLevel(lod_, splatClassification(settings_));
-      fullBuildFor_ = splatClassification(settings_);
+      if (!fullLevelAsked_) requestFullLevel();
+      fullLevelAsked_ = false;
       // The other coarse levels classify once full quality is on screen (warmUpDue).
     }
     const double ms = renderLevel(level, controller_.camera(), fb);

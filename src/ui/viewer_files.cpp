@@ -51,6 +51,7 @@ void ViewerWindow::adopt(LoadedVolume loaded, bool newCamera) {
   const std::string problem = bookmarks_.open(current_.path, current_.name, config_.configDir);
   if (!problem.empty()) error(problem);
   hasImage_ = false;
+  fullLevelAsked_ = false;
   buildPending_ = true;  // one frame says so before the first (slow) render classifies
 }
 
@@ -97,6 +98,7 @@ void ViewerWindow::switchRendererIfAsked() {
   policy_.resetMeasurements();
   refinement_.cancel();
   hasImage_ = false;
+  fullLevelAsked_ = false;
 }
 
 // Swaps in a splat set the worker finished; true when one arrived. Full quality on screen, or

@@ -60,6 +60,8 @@ class ViewerWindow {
   bool busy() const;
   bool refineDue() const;
   bool warmUpDue() const;
+  // Asks the worker for the full level's splats of the volume on screen.
+  void requestFullLevel();
   double waitSeconds() const;
   // `activity`: input or new splats this frame (a frame that only refines may skip presenting).
   bool drawFrame(bool activity);
@@ -128,6 +130,7 @@ class ViewerWindow {
   bool printLayout_ = false;  // EWAVIEW_PRINT_LAYOUT=1: layout and frame lines on stdout
   bool frameLog_ = false;     // EWAVIEW_FRAME_LOG=1: every frame's time on stderr
   bool fullSplatsArrived_ = false;
+  bool fullLevelAsked_ = false;  // the full level's build was asked for before the first picture
   bool splatsUploaded_ = false;  // this frame took a worker's splat set (uploading it)
   bool calibrate_ = false;       // the next full frame picks the first moving level
   bool refineFailed_ = false;    // retried after the next change, not every frame
