@@ -159,23 +159,23 @@ bool LodRenderer::warmUpNext(const Camera& camera, const RenderSettings& setting
     const int factor = warming_->factor;
     const bool current = warming_->revision == revision_;
     warming_.reset();
-    if (!current) return true;  // another volume or transfer function since
-    auto* splat = dynamic_cast<SplatRenderer*>(&rendererFor(factor));
-    if (built && splat && splat->needsSplats(built->classification)) {
-      // Uploaded, and the programs, images and tables made: a tiny draw would also run every
-      // splat through the vertex stage (0.3 s or more for bonsai's half-size volume).
-      splat->updateTransferTexture(tf_);
-      splat->setSplats(std::move(built->splats), built->classification);
-      splat->prepare(settings, kWarmUpSize, kWarmUpSize);
-    } else {
-      rendererFor(factor).render(camera, settings, kWarmUpSize, kWarmUpSize);
-    }
+    // Dropped: another volume or transfer function since, or no set.
+    if (!current || !built) return true;
+    // Only a splat renderer asks for a build; a draw of the level meanwhile classified it.
+    auto& splat = dynamic_cast<SplatRenderer&>(rendererFor(factor));
+    if (!splat.needsSplats(built->classification)) return true;
+    // Uploaded, and the programs, images and tables made: a tiny draw would also run every
+    // splat through the vertex stage (0.3 s or more for bonsai's half-size volume).
+    splat.updateTransferTexture(tf_);
+    splat.setSplats(std::move(built->splats), built->classification);
+    splat.prepare(settings, kWarmUpSize, kWarmUpSize);
     return true;
   }
   // Coarsest first: the cheapest, and the first moving level after a slow full frame.
   for (auto level = coarse_.levels.rbegin(); level != coarse_.levels.rend(); ++level) {
     if (!drawn_.insert(level->first).second) continue;
-    auto* splat = dynamic_cast<SplatRenderer*>(&rendererFor(level->first));
+    Renderer& renderer = rendererFor(level->first);
+    auto* splat = dynamic_cast<SplatRenderer*>(&renderer);
     const Classification wanted = splatClassification(settings);
     if (splat && hasTf_ && splat->needsSplats(wanted)) {
       warming_ = std::make_unique<WarmUpBuild>();
@@ -185,7 +185,7 @@ bool LodRenderer::warmUpNext(const Camera& camera, const RenderSettings& setting
       warming_->builder.request(*warming_->volume, tf_, wanted, splat->maxSplats());
       return true;
     }
-    rendererFor(level->first).render(camera, settings, kWarmUpSize, kWarmUpSize);
+    renderer.render(camera, settings, kWarmUpSize, kWarmUpSize);  // other renderers: drawn
     return true;
   }
   return false;

@@ -73,8 +73,10 @@ class LodRenderer {
   // One step of readying the coarsest level not drawn since the volume was set, so the first
   // moving frame there does not pay for it: its splats are classified on a worker thread (1 s
   // on llvmpipe's machine for bonsai's half-size volume), then a later call uploads them and
-  // draws a tiny image, which makes its shaders (50-150 ms). Calls while the worker classifies
-  // return at once. false when every level had been drawn. Leaves last() as it was.
+  // makes the level's programs, images and tables (Renderer::prepare; 70-85 ms for bonsai's).
+  // Calls while the worker classifies return at once; a renderer other than the splat renderer
+  // draws a tiny image instead. false when every level had been drawn. Leaves last() as it was;
+  // may throw as a draw of the level would.
   bool warmUpNext(const Camera& camera, const RenderSettings& settings);
   // Whether a coarse level has not been drawn since the volume was set, or is being warmed up.
   bool warmUpPending() const;

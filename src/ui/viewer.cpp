@@ -136,7 +136,7 @@ void ViewerWindow::requestFullLevel() {
 bool ViewerWindow::warmUpDue() const {
   if (!levelOfDetail_ || !hasImage_ || refinement_.active() || !lod_.warmUpPending()) return false;
   if (loadJob_.running() || turntable_.total > 0 || buildPending_) return false;
-  return liveTf_.building() || (lod_.lastLevel() == 0 && !busy());
+  return liveTf_.building() || lod_.lastLevel() == 0;  // the rest of busy() is ruled out above
 }
 
 // A coarse image is shown and the quiet time before full quality has passed.
@@ -302,7 +302,7 @@ bool ViewerWindow::drawFrame(bool activity) {
     if (levelOfDetail_) {
       if (!fullLevelAsked_) requestFullLevel();
       fullLevelAsked_ = false;
-      // The other coarse levels classify once full quality is on screen (warmUpDue).
+      // The other coarse levels are readied after this picture (warmUpDue).
     }
     const double ms = renderLevel(level, controller_.camera(), fb);
     if (levelOfDetail_) {
@@ -334,8 +334,12 @@ bool ViewerWindow::drawFrame(bool activity) {
   } else if (refinement_.active() || refineDue() || fullSplatsArrived_) {
     rendered = refine(fb);
   } else if (warmUpDue()) {
-    // Nothing else to do: one coarse level drawn tiny, so moving there later does not stall.
-    lod_.warmUpNext(controller_.camera(), settings_);
+    // Nothing else to do: one step of readying a coarse level, so moving there later does not
+    // stall. Best effort: a level that fails says so when it is drawn.
+    try {
+      lod_.warmUpNext(controller_.camera(), settings_);
+    } catch (const std::exception&) {
+    }
   }
   if (!splatsUploaded_) fullSplatsArrived_ = false;
   splatsUploaded_ = false;

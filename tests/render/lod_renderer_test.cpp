@@ -161,7 +161,7 @@ TEST_F(LodRendererTest, LevelsShrinkImageAndSplatsButKeepThePicture) {
 }
 
 // Warming up classifies each coarse level not drawn yet on a worker (steps return at once
-// meanwhile), then uploads its splats and draws a tiny image, leaving the picture shown alone;
+// meanwhile), then uploads its splats and makes its programs, leaving the picture shown alone;
 // a level drawn already is skipped, a new volume starts over, and a build made stale by a new
 // transfer function is dropped.
 TEST_F(LodRendererTest, WarmUpClassifiesEachUndrawnLevelOnceAndKeepsThePicture) {
