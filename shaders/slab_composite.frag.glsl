@@ -3,6 +3,7 @@
 // pre-integrated, as ray segments between the mean values of the slab's halves and the
 // neighbouring slab's.
 #include "headlight.glsl"
+#include "covered_length.glsl"
 
 // The variant, fixed when the program is compiled (src/render/slab_pass_programs.h).
 #ifndef SLAB_POST
@@ -184,12 +185,32 @@ vec4 quarterValues(vec4 front, vec4 back) {
   return clamp(v, 0.0, 1.0);
 }
 
+// The covered lengths of the slab's quarters (front to back) from their weights.
+vec4 quarterLengths(vec4 weights) {
+  vec2 box = boxDepths(indexRay(gl_FragCoord.xy));
+  float stretch = rayStretch(gl_FragCoord.xy);
+  float z0 = uSlabDepths.x, q = 0.25 * (uSlabDepths.y - uSlabDepths.x);
+  return vec4(coveredLength(z0, z0 + q, box, stretch, weights.x),
+              coveredLength(z0 + q, z0 + 2.0 * q, box, stretch, weights.y),
+              coveredLength(z0 + 2.0 * q, uSlabDepths.y - q, box, stretch, weights.z),
+              coveredLength(uSlabDepths.y - q, uSlabDepths.y, box, stretch, weights.w));
+}
+
+// The covered lengths of the slab's halves (front, back) from their weights.
+vec2 halfLengths(vec2 weights) {
+  vec2 box = boxDepths(indexRay(gl_FragCoord.xy));
+  float stretch = rayStretch(gl_FragCoord.xy);
+  float mid = 0.5 * (uSlabDepths.x + uSlabDepths.y);
+  return vec2(coveredLength(uSlabDepths.x, mid, box, stretch, weights.x),
+              coveredLength(mid, uSlabDepths.y, box, stretch, weights.y));
+}
+
 // As preintegrated, with four values a slab: from the neighbour's nearer quarter to this
 // slab's first, then between its quarters over each one's covered length (back to front: on
 // from its last quarter to the neighbour's).
 vec4 preintegratedQuarters(vec4 front, vec4 back) {
   vec4 own = quarterValues(front, back);
-  vec4 lengths = vec4(front.g, front.a, back.g, back.a);
+  vec4 lengths = quarterLengths(vec4(front.g, front.a, back.g, back.a));
   float other = kNeighbourInFront ? own.x : own.w;
   if (uNeighbour) {
     ivec2 q = ivec2(gl_FragCoord.xy);
@@ -230,13 +251,14 @@ vec4 preintegrated(vec4 s) {
     if (n.g + n.a > 0.0) other = halfValues(n);
   }
   Surface p = pixelSurface(s);
+  vec2 lengths = halfLengths(s.ga);
   vec4 first, second;
   if (kNeighbourInFront) {
-    first = segment(other.y, own.x, s.g, p);
-    second = segment(own.x, own.y, s.a, p);
+    first = segment(other.y, own.x, lengths.x, p);
+    second = segment(own.x, own.y, lengths.y, p);
   } else {
-    first = segment(own.x, own.y, s.g, p);
-    second = segment(own.y, other.x, s.a, p);
+    first = segment(own.x, own.y, lengths.x, p);
+    second = segment(own.y, other.x, lengths.y, p);
   }
   return first + (1.0 - first.a) * second;
 }
@@ -261,8 +283,11 @@ void main() {
   vec3 color;
   if (kPost) {
     // depth is the weight: the length of the ray through the slab the kernels cover, less where
-    // they barely reach (silhouettes keep their share and stay anti-aliased).
+    // they barely reach (silhouettes keep their share and stay anti-aliased), ended at the
+    // data's box.
     float value = clamp(s.r / depth, 0.0, 1.0);
+    depth = coveredLength(uSlabDepths.x, uSlabDepths.y, boxDepths(indexRay(gl_FragCoord.xy)),
+                          rayStretch(gl_FragCoord.xy), depth);
     int size = textureSize(uTransfer, 0);
     vec4 tf = texture(uTransfer, (value * float(size - 1) + 0.5) / float(size));
     color = shade(tf.rgb, pixelSurface(s));

@@ -16,4 +16,10 @@ namespace ewa {
 void setClipUniforms(gl::Program& program, const ClipRegion& region, const Volume& volume,
                      const Camera& volumeCamera, const Projection& proj);
 
+// Sets the uniforms of shaders/covered_length.glsl: the rays of `proj`'s pixels, the camera
+// space of `volumeCamera` to voxel index coordinates and the data's box
+// (core/covered_length.h).
+void setDataBoxUniforms(gl::Program& program, const Volume& volume, const Camera& volumeCamera,
+                        const Projection& proj);
+
 }  // namespace ewa

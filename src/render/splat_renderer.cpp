@@ -356,6 +356,8 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
     p.setFloat("uSpecular", float(light.specular));
     p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
     p.setFloat("uPixelsPerUnit", float(proj.pixelsPerUnit));
+    // Post-classified: the covered lengths end at the data's box.
+    setDataBoxUniforms(p, *volume_, frame_.camera, proj);
     // Samplers of different types must not share a unit, used or not.
     p.setInt("uPairTable", int(kPairTableUnit));
     p.setInt("uPairPrefix", int(kPairPrefixUnit));

@@ -1,9 +1,13 @@
 // Shared set-up for renderer tests: context, shaders, renderer; small volume builders.
 #include "render_fixture.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include "ci_skip.h"
+#include "gl/buffer.h"
+#include "gl/gl_error.h"
 
 namespace ewa::test {
 
@@ -87,6 +91,32 @@ LodScene::LodScene(const std::string& name)
   lod.setTransferFunction(*synthetic.transferFunction);
   camera.frame(synthetic.volume.boundsMin(), synthetic.volume.boundsMax(), {0.3, 0.4, 1.0},
                {0, 1, 0}, 1.0);
+}
+
+std::vector<glm::vec4> dispatchCases(gl::Program& program, const void* cases, size_t caseBytes,
+                                     size_t count) {
+  gl::Buffer in = gl::Buffer::create(GLsizeiptr(count * caseBytes), cases);
+  gl::Buffer out = gl::Buffer::create(GLsizeiptr(count * sizeof(glm::vec4)));
+  in.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  out.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  program.setUInt("uCount", GLuint(count));
+  glUseProgram(program.id());
+  glDispatchCompute(GLuint(count + 63) / 64, 1, 1);
+  glUseProgram(0);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<glm::vec4> got(count);
+  out.getSubData(0, GLsizeiptr(got.size() * sizeof(glm::vec4)), got.data());
+  gl::checkGlError("dispatchCases");
+  return got;
+}
+
+void expectSameInterval(const glm::vec2& got, const RayInterval& want, const std::string& what) {
+  if (want.empty()) {
+    EXPECT_GT(got.x, got.y) << what;
+    return;
+  }
+  EXPECT_NEAR(got.x, want.near, 1e-4 * std::max(1.0, std::fabs(want.near))) << what;
+  EXPECT_NEAR(got.y, want.far, 1e-4 * std::max(1.0, std::fabs(want.far))) << what;
 }
 
 }  // namespace ewa::test

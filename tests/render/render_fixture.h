@@ -3,10 +3,13 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
+#include <glm/vec4.hpp>
 #include <gtest/gtest.h>
 
 #include "gl/shader_library.h"
+#include "core/clip_region.h"
 #include "core/synthetic_volume.h"
 #include "platform/headless_context.h"
 #include "render/lod_renderer.h"
@@ -37,6 +40,15 @@ TransferFunction whiteTf(double alpha, double unit);
 // pre-classified, kernels as wide as the spacing, cutoff 4. For tests of the mechanisms it
 // states (surface splats, the filters, C++ references of one splat, culling, LOD, slab counts).
 RenderSettings paperSettings();
+
+// Runs `program` (local size 64, uniform uCount) over `count` cases of `caseBytes` each at
+// `cases` (storage buffer 0) and returns its one vec4 per case (storage buffer 1): for tests
+// that hold a shader snippet equal to its C++ mirror.
+std::vector<glm::vec4> dispatchCases(gl::Program& program, const void* cases, size_t caseBytes,
+                                     size_t count);
+// Expects a shader's depth interval (near, far) to equal `want` to float precision, or both
+// to be empty.
+void expectSameInterval(const glm::vec2& got, const RayInterval& want, const std::string& what);
 
 // A LodRenderer of splat renderers on a synthetic volume (its coarse volumes and transfer
 // function set) and a camera framing it, for the level-of-detail and refinement tests.

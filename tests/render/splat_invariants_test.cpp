@@ -143,13 +143,15 @@ TEST_F(SplatInvariants, HomogeneousMediumHasOpacityOneMinusExpTauL) {
   for (double s : {0.5, 1.0, 2.0}) {
     const int n = 24, nz = 6;
     const Volume vol = makeVolume(n, n, nz, glm::dvec3(s), [](int, int, int) { return true; });
-    const double L = nz * s;  // the lattice of unit-mass kernels integrates to nz * s
-    const double tau = 1.2 / L;
+    // Pre-classified, the lattice of unit-mass kernels integrates to nz * s. Post-classified,
+    // the field ends at the outermost voxel centres, as a ray caster's does: (nz - 1) * s.
+    const double preL = nz * s, postL = (nz - 1) * s;
+    const double tau = 1.2 / preL;
     const TransferFunction tf = whiteTf(1.0 - std::exp(-tau), 1.0);
-    const double expected = 1.0 - std::exp(-tau * L);
     // Post-classified, the medium's constant value comes out of every slab's weighted mean
-    // exactly and the weights sum to the ray's length: the same tolerance holds, with slab
-    // pre-integration (constant pairs: the segment lengths sum to the same) and without.
+    // exactly and the covered lengths sum to the ray's length in the box: the same tolerance
+    // holds, with slab pre-integration (constant pairs: the segment lengths sum to the same)
+    // and without.
     const std::pair<ClassificationMode, bool> variants[] = {{ClassificationMode::Pre, true},
                                                             {ClassificationMode::Post, true},
                                                             {ClassificationMode::Post, false}};
@@ -157,6 +159,8 @@ TEST_F(SplatInvariants, HomogeneousMediumHasOpacityOneMinusExpTauL) {
       for (FilterMode f : {FilterMode::Ewa, FilterMode::Swan, FilterMode::Plain})
         for (bool ortho : {false, true})
           for (double width : kWidths) {
+            const double L = c == ClassificationMode::Pre ? preL : postL;
+            const double expected = 1.0 - std::exp(-tau * L);
             const double got = centreOpacity(*renderer(), vol, tf, f, ortho, width, c, pairs);
             EXPECT_NEAR(got, expected, 0.03 * expected)
                 << "spacing " << s << ", " << filterModeName(f)

@@ -1,0 +1,50 @@
+// Post-classified slabs' covered length: the kernels' summed weight along a pixel's ray, ended at
+// the data's box. Mirrored line for line by shaders/covered_length.glsl.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/clip_region.h"
+
+namespace ewa {
+
+class Camera;
+struct Projection;
+class Volume;
+
+// The data's box in voxel index coordinates, where a ray caster's field ends: between the
+// outermost voxel centres (an axis one voxel thick: that voxel's extent, +-0.5).
+struct DataBox {
+  glm::dvec3 low{0.0};
+  glm::dvec3 high{0.0};
+};
+
+DataBox dataBox(const Volume& volume);
+
+// The camera space of `volumeCamera` (a camera in the volume's frame) to voxel index coordinates.
+glm::dmat4 cameraToIndex(const Volume& volume, const Camera& volumeCamera);
+
+// The ray through `pixel` of `proj` in index coordinates: the point at depth z is
+// origin + z * direction.
+struct IndexRay {
+  glm::dvec3 origin{0.0};
+  glm::dvec3 direction{0.0};
+};
+IndexRay indexRay(const glm::dmat4& cameraToIndex, const Projection& proj, const glm::dvec2& pixel);
+
+// World length per unit of depth along the ray through `pixel`.
+double rayStretch(const Projection& proj, const glm::dvec2& pixel);
+
+// The depths of the ray x + z * y (index coordinates) inside the box; empty if near > far.
+RayInterval boxDepths(const glm::dvec3& origin, const glm::dvec3& direction, const DataBox& box);
+
+// The covered length of the ray between depths `a` and `b`, given the kernels' summed weight
+// `weight` there (their covered length, which the clip region has cut already) and the depths
+// `inBox` (boxDepths) inside the data's box: the weight inside, none outside, and where a face
+// cuts the stretch at most the length inside (`stretch`: world length a unit of depth), so
+// the kernels' tails beyond the face add nothing.
+double coveredLength(double a, double b, const RayInterval& inBox, double stretch, double weight);
+
+}  // namespace ewa
