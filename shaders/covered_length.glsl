@@ -9,7 +9,6 @@ uniform vec3 uBoxLow;
 uniform vec3 uBoxHigh;
 // Pixel rays: (1 orthographic / 0 perspective, 1 / (ppu or focal pixels), principal point).
 uniform vec4 uBoxRay;
-const float kBoxUnbounded = 1e30;
 
 // The ray through `pixel` in index coordinates: the point at depth z is x + z * y.
 mat2x3 indexRay(vec2 pixel) {
@@ -20,19 +19,14 @@ mat2x3 indexRay(vec2 pixel) {
   return mat2x3((uCameraToIndex * vec4(origin, 1.0)).xyz, mat3(uCameraToIndex) * direction);
 }
 
-// The depths [near, far] of `ray` (indexRay) inside the data's box; empty if near > far.
+// The depths [near, far] of `ray` (indexRay) inside the data's box; empty if near > far. A ray
+// parallel to a face gets infinite slab bounds (of one sign: outside it).
 vec2 boxDepths(mat2x3 ray) {
-  vec2 kept = vec2(-kBoxUnbounded, kBoxUnbounded);
-  for (int axis = 0; axis < 3; ++axis) {
-    float o = ray[0][axis], d = ray[1][axis];
-    if (abs(d) > 1e-12) {
-      float t0 = (uBoxLow[axis] - o) / d, t1 = (uBoxHigh[axis] - o) / d;
-      kept = vec2(max(kept.x, min(t0, t1)), min(kept.y, max(t0, t1)));
-    } else if (o < uBoxLow[axis] || o > uBoxHigh[axis]) {
-      kept.y = -kBoxUnbounded;
-    }
-  }
-  return kept;
+  vec3 d = ray[1];
+  vec3 inv = 1.0 / mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
+  vec3 t0 = (uBoxLow - ray[0]) * inv, t1 = (uBoxHigh - ray[0]) * inv;
+  vec3 lo = min(t0, t1), hi = max(t0, t1);
+  return vec2(max(max(lo.x, lo.y), lo.z), min(min(hi.x, hi.y), hi.z));
 }
 
 // World length per unit of depth along the ray through `pixel`.
@@ -49,7 +43,7 @@ float rayStretch(vec2 pixel) {
 // the kernels' tails beyond the face add nothing.
 float coveredLength(float a, float b, vec2 box, float stretch, float weight) {
   float near = max(a, box.x), far = min(b, box.y);
-  if (!(far > near)) return 0.0;
-  if (near > a || far < b) return min(weight, (far - near) * stretch);
-  return weight;
+  float inside = max(far - near, 0.0) * stretch;
+  // Uncut: far - near is b - a, and the weight is kept as it is.
+  return (near > a || far < b) ? min(weight, inside) : weight;
 }

@@ -45,25 +45,23 @@ double rayStretch(const Projection& proj, const glm::dvec2& pixel) {
 }
 
 RayInterval boxDepths(const glm::dvec3& origin, const glm::dvec3& direction, const DataBox& box) {
-  RayInterval kept{-1e30, 1e30};
+  RayInterval kept{-1e300, 1e300};
   for (int axis = 0; axis < 3; ++axis) {
-    const double o = origin[axis], d = direction[axis];
-    if (std::abs(d) > 1e-12) {
-      const double t0 = (box.low[axis] - o) / d, t1 = (box.high[axis] - o) / d;
-      kept.near = std::max(kept.near, std::min(t0, t1));
-      kept.far = std::min(kept.far, std::max(t0, t1));
-    } else if (o < box.low[axis] || o > box.high[axis]) {
-      kept.far = -1e30;
-    }
+    const double d = direction[axis];
+    const double inv = 1.0 / (std::abs(d) < 1e-30 ? 1e-30 : d);
+    const double t0 = (box.low[axis] - origin[axis]) * inv;
+    const double t1 = (box.high[axis] - origin[axis]) * inv;
+    kept.near = std::max(kept.near, std::min(t0, t1));
+    kept.far = std::min(kept.far, std::max(t0, t1));
   }
   return kept;
 }
 
 double coveredLength(double a, double b, const RayInterval& inBox, double stretch, double weight) {
   const double nearDepth = std::max(a, inBox.near), farDepth = std::min(b, inBox.far);
-  if (!(farDepth > nearDepth)) return 0.0;
-  if (nearDepth > a || farDepth < b) return std::min(weight, (farDepth - nearDepth) * stretch);
-  return weight;
+  const double inside = std::max(farDepth - nearDepth, 0.0) * stretch;
+  // Uncut: farDepth - nearDepth is b - a, and the weight is kept as it is.
+  return (nearDepth > a || farDepth < b) ? std::min(weight, inside) : weight;
 }
 
 }  // namespace ewa
