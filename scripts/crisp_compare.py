@@ -83,10 +83,18 @@ def volumes():
     }
 
 
-def camera(array, spacing, direction, distance):
+def camera(array, spacing, direction, distance, azimuth=0.0, elevation=0.0):
     nz, ny, nx = array.shape
     focal = np.array([(nx - 1) * spacing[0], (ny - 1) * spacing[1], (nz - 1) * spacing[2]]) / 2
     e = np.asarray(direction, float)
+    e = e / np.linalg.norm(e)
+    # Turned about the up axis (z) by `azimuth` degrees, then raised by `elevation` degrees
+    # (clamped short of the pole).
+    a = np.radians(azimuth)
+    e = np.array([e[0] * np.cos(a) - e[1] * np.sin(a), e[0] * np.sin(a) + e[1] * np.cos(a), e[2]])
+    lift = np.clip(np.arcsin(np.clip(e[2], -1, 1)) + np.radians(elevation), -1.4, 1.4)
+    flat = np.hypot(e[0], e[1])
+    e = np.array([e[0] / flat * np.cos(lift), e[1] / flat * np.cos(lift), np.sin(lift)])
     return focal, focal + distance * e / np.linalg.norm(e), (0.0, 0.0, 1.0)
 
 
@@ -196,19 +204,21 @@ def sharpness(ours, ref):
     return float(g_ours[edges].mean() / g_ref[edges].mean())
 
 
-def vtk_child(name, out, repeats, scale):
+def vtk_child(name, out, repeats, scale, azimuth, elevation):
     array, spacing, tf, direction, distance = volumes()[name]()
-    rgb, ms = vtk_render(array, spacing, tf, camera(array, spacing, direction, distance * scale),
+    rgb, ms = vtk_render(array, spacing, tf,
+                         camera(array, spacing, direction, distance * scale, azimuth, elevation),
                          repeats)
     np.save(out, rgb)
     print(f"{ms:.3f}")
 
 
-def vtk_picture(name, repeats, scale):
+def vtk_picture(name, repeats, scale, azimuth, elevation):
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "vtk.npy")
         run = subprocess.run([sys.executable, os.path.abspath(__file__), "--vtk", name, out,
-                              "--repeats", str(repeats), "--distance-scale", str(scale)],
+                              "--repeats", str(repeats), "--distance-scale", str(scale),
+                              "--azimuth", str(azimuth), "--elevation", str(elevation)],
                              capture_output=True, text=True)
         if run.returncode != 0:
             sys.exit(f"crisp_compare.py: VTK failed on {name}: {run.stderr.strip()}")
@@ -241,9 +251,15 @@ def main():
     p.add_argument("--distance-scale", type=float, default=1.0,
                    help="camera distance times this (1: the close-ups, 2 to 3 pixels a voxel; "
                         "3: about one pixel a voxel)")
+    p.add_argument("--azimuth", type=float, default=0.0,
+                   help="turn each view's eye about the up axis by this many degrees (views "
+                        "not in the list)")
+    p.add_argument("--elevation", type=float, default=0.0,
+                   help="raise each view's eye by this many degrees")
     a = p.parse_args()
     if a.vtk:
-        return vtk_child(a.vtk[0], a.vtk[1], a.repeats, a.distance_scale)
+        return vtk_child(a.vtk[0], a.vtk[1], a.repeats, a.distance_scale, a.azimuth,
+                         a.elevation)
     import ewaview
     widths = [float(w) for w in a.widths.split(",")]
     prefilters = [None] if a.prefilters is None else [float(b) for b in a.prefilters.split(",")]
@@ -256,8 +272,9 @@ def main():
     all_vols = volumes()
     for name in a.volumes.split(","):
         array, spacing, tf, direction, distance = all_vols[name]()
-        cam = camera(array, spacing, direction, distance * a.distance_scale)
-        ref, vtk_ms = vtk_picture(name, a.repeats, a.distance_scale)
+        cam = camera(array, spacing, direction, distance * a.distance_scale, a.azimuth,
+                     a.elevation)
+        ref, vtk_ms = vtk_picture(name, a.repeats, a.distance_scale, a.azimuth, a.elevation)
         ref_y = luminance(ref)
         print(f"| {name} | VTK ray caster | | | 1 | 1 | {vtk_ms:.0f} |", flush=True)
         scene = ewaview.Scene(array,
