@@ -11,13 +11,8 @@
 namespace ewa {
 
 DataBox dataBox(const Volume& volume) {
-  DataBox box;
-  for (int axis = 0; axis < 3; ++axis) {
-    const double top = double(std::max<int64_t>(volume.dims()[axis], 1) - 1);
-    box.low[axis] = top > 0.0 ? 0.0 : -0.5;
-    box.high[axis] = top > 0.0 ? top : 0.5;
-  }
-  return box;
+  const std::array<glm::dvec3, 2> box = volume.indexDataBox();
+  return {box[0], box[1]};
 }
 
 glm::dmat4 cameraToIndex(const Volume& volume, const Camera& volumeCamera) {

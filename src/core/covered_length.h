@@ -15,7 +15,8 @@ struct Projection;
 class Volume;
 
 // The data's box in voxel index coordinates, where a ray caster's field ends: between the
-// outermost voxel centres (an axis one voxel thick: that voxel's extent, +-0.5).
+// outermost voxel centres (an axis one voxel thick: that voxel's extent, +-0.5), a coarser
+// level of detail's source's (Volume::indexDataBox).
 struct DataBox {
   glm::dvec3 low{0.0};
   glm::dvec3 high{0.0};
