@@ -1,23 +1,22 @@
 // Crop box and clipping planes in the splat shaders: a line-for-line mirror of
 // src/core/clip_share.cpp. Needs erfApprox from ewa_footprint.glsl.
 #include "ewa_footprint.glsl"
+#include "pixel_ray.glsl"
 
 const int kMaxClipPlanes = 12;     // ClipRegion::kMaxHalfSpaces
 const float kClipUnbounded = 1e30;
 
 uniform vec4 uClipPlanes[kMaxClipPlanes];  // camera space: dot(xyz, x) + w >= 0 is kept
 uniform int uClipCount;                    // 0: nothing clipped, every share is 1
-// Pixel rays: (1 orthographic / 0 perspective, 1 / (ppu or focal pixels), principal point).
-uniform vec4 uClipRay;
 
 // The depths [near, far] the planes keep along the ray through `pixel`; empty if near > far.
 vec2 clippedDepths(vec2 pixel) {
   vec2 kept = vec2(-kClipUnbounded, kClipUnbounded);
-  vec2 q = (pixel - uClipRay.zw) * uClipRay.y;
+  vec2 q = rayOffset(pixel);
   for (int i = 0; i < uClipCount; ++i) {
     vec4 h = uClipPlanes[i];
     float a, b;
-    if (uClipRay.x > 0.5) {
+    if (orthographicRays()) {
       a = -h.z;
       b = h.x * q.x + h.y * q.y + h.w;
     } else {

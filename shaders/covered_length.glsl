@@ -1,19 +1,18 @@
 // Post-classified slabs: how long a stretch of a pixel's ray the field covers, from the kernels'
 // summed weight, ended at the data's box as a ray caster's field ends there. A line-for-line
 // mirror of src/core/covered_length.cpp.
+#include "pixel_ray.glsl"
 
 uniform mat4 uCameraToIndex;  // camera space to voxel index coordinates (affine)
 // The data's box in index coordinates: between the outermost voxel centres (an axis one voxel
 // thick: that voxel's extent, +-0.5).
 uniform vec3 uBoxLow;
 uniform vec3 uBoxHigh;
-// Pixel rays: (1 orthographic / 0 perspective, 1 / (ppu or focal pixels), principal point).
-uniform vec4 uBoxRay;
 
 // The ray through `pixel` in index coordinates: the point at depth z is x + z * y.
 mat2x3 indexRay(vec2 pixel) {
-  vec2 q = (pixel - uBoxRay.zw) * uBoxRay.y;
-  bool orthographic = uBoxRay.x > 0.5;
+  vec2 q = rayOffset(pixel);
+  bool orthographic = orthographicRays();
   vec3 origin = orthographic ? vec3(q, 0.0) : vec3(0.0);
   vec3 direction = orthographic ? vec3(0.0, 0.0, -1.0) : vec3(q, -1.0);
   return mat2x3((uCameraToIndex * vec4(origin, 1.0)).xyz, mat3(uCameraToIndex) * direction);
@@ -31,8 +30,8 @@ vec2 boxDepths(mat2x3 ray) {
 
 // World length per unit of depth along the ray through `pixel`.
 float rayStretch(vec2 pixel) {
-  if (uBoxRay.x > 0.5) return 1.0;
-  vec2 q = (pixel - uBoxRay.zw) * uBoxRay.y;
+  if (orthographicRays()) return 1.0;
+  vec2 q = rayOffset(pixel);
   return sqrt(1.0 + dot(q, q));
 }
 

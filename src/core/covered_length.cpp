@@ -6,14 +6,8 @@
 #include <glm/matrix.hpp>
 
 #include "core/camera.h"
-#include "core/volume.h"
 
 namespace ewa {
-
-DataBox dataBox(const Volume& volume) {
-  const std::array<glm::dvec3, 2> box = volume.indexDataBox();
-  return {box[0], box[1]};
-}
 
 glm::dmat4 cameraToIndex(const Volume& volume, const Camera& volumeCamera) {
   glm::dmat4 toIndex(1.0);  // the volume's frame to index coordinates

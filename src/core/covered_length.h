@@ -7,22 +7,12 @@
 #include <glm/vec3.hpp>
 
 #include "core/clip_region.h"
+#include "core/volume.h"
 
 namespace ewa {
 
 class Camera;
 struct Projection;
-class Volume;
-
-// The data's box in voxel index coordinates, where a ray caster's field ends: between the
-// outermost voxel centres (an axis one voxel thick: that voxel's extent, +-0.5), a coarser
-// level of detail's source's (Volume::indexDataBox).
-struct DataBox {
-  glm::dvec3 low{0.0};
-  glm::dvec3 high{0.0};
-};
-
-DataBox dataBox(const Volume& volume);
 
 // The camera space of `volumeCamera` (a camera in the volume's frame) to voxel index coordinates.
 glm::dmat4 cameraToIndex(const Volume& volume, const Camera& volumeCamera);
@@ -38,7 +28,8 @@ IndexRay indexRay(const glm::dmat4& cameraToIndex, const Projection& proj, const
 // World length per unit of depth along the ray through `pixel`.
 double rayStretch(const Projection& proj, const glm::dvec2& pixel);
 
-// The depths of the ray x + z * y (index coordinates) inside the box; empty if near > far.
+// The depths of the ray x + z * y (index coordinates) inside `box` (the data's box,
+// Volume::indexDataBox); empty if near > far.
 RayInterval boxDepths(const glm::dvec3& origin, const glm::dvec3& direction, const DataBox& box);
 
 // The covered length of the ray between depths `a` and `b`, given the kernels' summed weight

@@ -58,22 +58,18 @@ glm::dvec3 Volume::boundsMax() const {
   return framePosition(double(dims_[0] - 1), double(dims_[1] - 1), double(dims_[2] - 1));
 }
 
-std::array<glm::dvec3, 2> Volume::indexDataBox() const {
-  if (dataBoxSet_) return {dataLow_, dataHigh_};
-  std::array<glm::dvec3, 2> box;
+DataBox Volume::indexDataBox() const {
+  if (dataBox_) return *dataBox_;
+  DataBox box;
   for (int axis = 0; axis < 3; ++axis) {
     const double top = double(std::max<int64_t>(dims_[axis], 1) - 1);
-    box[0][axis] = top > 0.0 ? 0.0 : -0.5;
-    box[1][axis] = top > 0.0 ? top : 0.5;
+    box.low[axis] = top > 0.0 ? 0.0 : -0.5;
+    box.high[axis] = top > 0.0 ? top : 0.5;
   }
   return box;
 }
 
-void Volume::setIndexDataBox(const glm::dvec3& low, const glm::dvec3& high) {
-  dataBoxSet_ = true;
-  dataLow_ = low;
-  dataHigh_ = high;
-}
+void Volume::setIndexDataBox(const DataBox& box) { dataBox_ = box; }
 
 namespace {
 

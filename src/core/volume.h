@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,12 @@ inline size_t scalarSize(ScalarType type) {
 
 // "uint8", "int16", "uint16", "float32".
 const char* scalarName(ScalarType type);
+
+// A box in voxel index coordinates (low and high corners).
+struct DataBox {
+  glm::dvec3 low{0.0};
+  glm::dvec3 high{0.0};
+};
 
 class Volume {
  public:
@@ -104,11 +111,11 @@ class Volume {
   // Axis-aligned bounds through the voxel centers in the volume's own frame.
   glm::dvec3 boundsMin() const { return origin_; }
   glm::dvec3 boundsMax() const;
-  // Where the data's field ends, in voxel index coordinates (low, high): by default between the
-  // outermost voxel centres (an axis one voxel thick: that voxel's extent, +-0.5), where a ray
-  // caster's field ends; a coarser level of detail keeps its source's (downsampleVolume).
-  std::array<glm::dvec3, 2> indexDataBox() const;
-  void setIndexDataBox(const glm::dvec3& low, const glm::dvec3& high);
+  // Where the data's field ends, in voxel index coordinates: by default between the outermost
+  // voxel centres (an axis one voxel thick: that voxel's extent, +-0.5), where a ray caster's
+  // field ends; a coarser level of detail keeps its source's (downsampleVolume).
+  DataBox indexDataBox() const;
+  void setIndexDataBox(const DataBox& box);
   // Axis-aligned world bounds of the eight corner voxel centers (for framing the camera).
   glm::dvec3 worldBoundsMin() const;
   glm::dvec3 worldBoundsMax() const;
@@ -126,9 +133,7 @@ class Volume {
   std::vector<uint8_t> bytes_;
   std::array<double, 2> range_{0.0, 0.0};
   std::vector<uint64_t> histogram_;
-  bool dataBoxSet_ = false;  // else indexDataBox is the default
-  glm::dvec3 dataLow_{0.0};
-  glm::dvec3 dataHigh_{0.0};
+  std::optional<DataBox> dataBox_;  // else indexDataBox is the default
 };
 
 }  // namespace ewa

@@ -53,9 +53,9 @@ Volume downsampleVolume(const Volume& v, int factor) {
   Volume coarse(out, v.spacing() * scale, origin, ScalarType::Float32, std::move(bytes));
   coarse.setDirection(v.direction(), v.patientFrame());
   // The source's data box, in the coarse indices (fine index i is coarse (i - (f - 1) / 2) / f).
-  const std::array<glm::dvec3, 2> box = v.indexDataBox();
-  coarse.setIndexDataBox((box[0] - 0.5 * (scale - 1.0)) / scale,
-                         (box[1] - 0.5 * (scale - 1.0)) / scale);
+  const DataBox box = v.indexDataBox();
+  coarse.setIndexDataBox(
+      {(box.low - 0.5 * (scale - 1.0)) / scale, (box.high - 0.5 * (scale - 1.0)) / scale});
   return coarse;
 }
 

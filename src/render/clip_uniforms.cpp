@@ -11,11 +11,12 @@ namespace ewa {
 
 namespace {
 
-// (1 orthographic / 0 perspective, 1 / (ppu or focal pixels), principal point).
-glm::vec4 pixelRays(const Projection& proj) {
+// shaders/pixel_ray.glsl's uPixelRay: (1 orthographic / 0 perspective, 1 / (ppu or focal
+// pixels), principal point).
+void setPixelRays(gl::Program& p, const Projection& proj) {
   const double scale = proj.orthographic ? 1.0 / proj.pixelsPerUnit : 1.0 / proj.focalPixels;
-  return glm::vec4(proj.orthographic ? 1.0f : 0.0f, float(scale), float(proj.principal.x),
-                   float(proj.principal.y));
+  p.setVec4("uPixelRay", glm::vec4(proj.orthographic ? 1.0f : 0.0f, float(scale),
+                                   float(proj.principal.x), float(proj.principal.y)));
 }
 
 }  // namespace
@@ -33,16 +34,16 @@ void setClipUniforms(gl::Program& p, const ClipRegion& region, const Volume& vol
     ++count;
   }
   p.setInt("uClipCount", count);
-  p.setVec4("uClipRay", pixelRays(proj));
+  setPixelRays(p, proj);
 }
 
 void setDataBoxUniforms(gl::Program& p, const Volume& volume, const Camera& volumeCamera,
                         const Projection& proj) {
   p.setMat4("uCameraToIndex", glm::mat4(cameraToIndex(volume, volumeCamera)));
-  const DataBox box = dataBox(volume);
+  const DataBox box = volume.indexDataBox();
   p.setVec3("uBoxLow", glm::vec3(box.low));
   p.setVec3("uBoxHigh", glm::vec3(box.high));
-  p.setVec4("uBoxRay", pixelRays(proj));
+  setPixelRays(p, proj);
 }
 
 }  // namespace ewa

@@ -11,14 +11,14 @@
 namespace ewa {
 
 // Sets uClipPlanes (the region's half-spaces in the camera space of `volumeCamera`, the camera
-// that looks at `volume` in its own frame), uClipCount and uClipRay (pixel rays of `proj`).
+// that looks at `volume` in its own frame), uClipCount and uPixelRay (pixel rays of `proj`).
 // An inactive region sets uClipCount 0: the shaders then clip nothing.
 void setClipUniforms(gl::Program& program, const ClipRegion& region, const Volume& volume,
                      const Camera& volumeCamera, const Projection& proj);
 
 // Sets the uniforms of shaders/covered_length.glsl: the rays of `proj`'s pixels, the camera
 // space of `volumeCamera` to voxel index coordinates and the data's box
-// (core/covered_length.h).
+// (Volume::indexDataBox).
 void setDataBoxUniforms(gl::Program& program, const Volume& volume, const Camera& volumeCamera,
                         const Projection& proj);
 

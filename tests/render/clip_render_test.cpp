@@ -49,7 +49,7 @@ TEST_F(ClipRender, ShaderClipShareEqualsCpp) {
   const std::filesystem::path dir = std::filesystem::path(EWA_TEST_OUT) / "clip_mirror";
   std::filesystem::create_directories(dir);
   const gl::ShaderLibrary embedded;
-  for (const char* name : {"ewa_footprint.glsl", "clip_region.glsl"})
+  for (const char* name : {"ewa_footprint.glsl", "pixel_ray.glsl", "clip_region.glsl"})
     std::ofstream(dir / name) << embedded.source(name);
   std::ofstream(dir / "clip_mirror.comp.glsl") << kMirrorShader;
   gl::Program program = gl::ShaderLibrary(dir.string()).computeProgram("clip_mirror.comp.glsl");

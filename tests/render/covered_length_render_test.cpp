@@ -44,7 +44,8 @@ TEST_F(CoveredLengthRender, ShaderCoveredLengthEqualsCpp) {
   const std::filesystem::path dir = std::filesystem::path(EWA_TEST_OUT) / "covered_mirror";
   std::filesystem::create_directories(dir);
   const gl::ShaderLibrary embedded;
-  std::ofstream(dir / "covered_length.glsl") << embedded.source("covered_length.glsl");
+  for (const char* name : {"pixel_ray.glsl", "covered_length.glsl"})
+    std::ofstream(dir / name) << embedded.source(name);
   std::ofstream(dir / "covered_mirror.comp.glsl") << kMirrorShader;
   gl::Program program = gl::ShaderLibrary(dir.string()).computeProgram("covered_mirror.comp.glsl");
 
@@ -71,7 +72,7 @@ TEST_F(CoveredLengthRender, ShaderCoveredLengthEqualsCpp) {
     const std::vector<glm::vec4> got =
         dispatchCases(program, cases.data(), sizeof(ShaderCase), cases.size());
     const glm::dmat4 toIndex = cameraToIndex(v, local);
-    const DataBox box = dataBox(v);
+    const DataBox box = v.indexDataBox();
     int inside = 0, cut = 0, outside = 0;
     for (size_t n = 0; n < cases.size(); ++n) {
       const ShaderCase& c = cases[n];

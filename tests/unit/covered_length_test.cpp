@@ -19,7 +19,7 @@ Volume volumeOf(std::array<int64_t, 3> dims, glm::dvec3 spacing, glm::dvec3 orig
 }
 
 TEST(CoveredLength, DataBoxEndsAtTheOutermostVoxelCentres) {
-  const DataBox box = dataBox(volumeOf({5, 1, 3}, glm::dvec3(1.0), glm::dvec3(0.0)));
+  const DataBox box = volumeOf({5, 1, 3}, glm::dvec3(1.0), glm::dvec3(0.0)).indexDataBox();
   EXPECT_EQ(box.low, glm::dvec3(0.0, -0.5, 0.0));  // one voxel thick: that voxel's extent
   EXPECT_EQ(box.high, glm::dvec3(4.0, 0.5, 2.0));
 }
@@ -39,13 +39,13 @@ TEST(CoveredLength, PixelRaysInIndexCoordinatesCrossTheBoxWhereTheyShould) {
     EXPECT_NEAR(centre.y, 10.0, 1e-9);
     EXPECT_NEAR(centre.z, 20.0, 1e-9);
     // The box's z faces at world z -4 and 16: depths 50 and 30.
-    const RayInterval in = boxDepths(ray.origin, ray.direction, dataBox(v));
+    const RayInterval in = boxDepths(ray.origin, ray.direction, v.indexDataBox());
     EXPECT_NEAR(in.near, 30.0, 1e-9);
     EXPECT_NEAR(in.far, 50.0, 1e-9);
     EXPECT_DOUBLE_EQ(rayStretch(proj, proj.principal), 1.0);
     // A pixel far off the image misses the box (20 world units wide).
     const IndexRay off = indexRay(cameraToIndex(v, cam), proj, glm::dvec2(-200.0, -200.0));
-    EXPECT_TRUE(boxDepths(off.origin, off.direction, dataBox(v)).empty());
+    EXPECT_TRUE(boxDepths(off.origin, off.direction, v.indexDataBox()).empty());
   }
 }
 

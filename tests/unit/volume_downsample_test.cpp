@@ -67,22 +67,22 @@ TEST(Downsample, CoarseLevelsKeepTheSourcesDataBox) {
   Volume fine = makeVolume({10, 7, 1}, {1.0, 2.0, 0.5}, [](auto, auto, auto) { return 1; });
   fine.setDirection(glm::dmat3(glm::dvec3(0, 1, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1)),
                     false);
-  const auto fineBox = fine.indexDataBox();
-  EXPECT_EQ(fineBox[0], glm::dvec3(0.0, 0.0, -0.5));  // the flat axis: the voxel's extent
-  EXPECT_EQ(fineBox[1], glm::dvec3(9.0, 6.0, 0.5));
+  const DataBox fineBox = fine.indexDataBox();
+  EXPECT_EQ(fineBox.low, glm::dvec3(0.0, 0.0, -0.5));  // the flat axis: the voxel's extent
+  EXPECT_EQ(fineBox.high, glm::dvec3(9.0, 6.0, 0.5));
   const Volume quarter = downsampleVolume(fine, 4);
   const Volume chained = downsampleVolume(downsampleVolume(fine, 2), 2);
   for (const Volume* coarse : {&quarter, &chained}) {
-    const auto box = coarse->indexDataBox();
-    for (int corner = 0; corner < 2; ++corner) {
-      const glm::dvec3 want =
-          fine.worldPosition(fineBox[corner].x, fineBox[corner].y, fineBox[corner].z);
-      const glm::dvec3 got = coarse->worldPosition(box[corner].x, box[corner].y, box[corner].z);
-      for (int a = 0; a < 3; ++a) EXPECT_NEAR(got[a], want[a], 1e-12) << corner << " " << a;
+    const DataBox box = coarse->indexDataBox();
+    for (bool high : {false, true}) {
+      const glm::dvec3 f = high ? fineBox.high : fineBox.low, c = high ? box.high : box.low;
+      const glm::dvec3 want = fine.worldPosition(f.x, f.y, f.z);
+      const glm::dvec3 got = coarse->worldPosition(c.x, c.y, c.z);
+      for (int a = 0; a < 3; ++a) EXPECT_NEAR(got[a], want[a], 1e-12) << high << " " << a;
     }
   }
   // Beyond the coarse voxel-centre box: 1.5 fine voxels (0.375 coarse ones) in x.
-  EXPECT_NEAR(quarter.indexDataBox()[0].x, -0.375, 1e-12);
+  EXPECT_NEAR(quarter.indexDataBox().low.x, -0.375, 1e-12);
 }
 
 TEST(Downsample, OddDimsAverageTheVoxelsThatRemain) {
