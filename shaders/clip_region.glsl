@@ -1,5 +1,5 @@
 // Crop box and clipping planes in the splat shaders: a line-for-line mirror of
-// src/core/clip_share.cpp. Needs erfApprox from ewa_footprint.glsl.
+// src/core/clip_share.cpp. Needs profileErf from ewa_footprint.glsl.
 #include "ewa_footprint.glsl"
 #include "pixel_ray.glsl"
 

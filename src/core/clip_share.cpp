@@ -56,10 +56,9 @@ double clippedSlabFraction(double mu, double sigma, double zNear, double zFar, b
   const double lo = openNear ? kept.near : std::max(zNear, kept.near);
   const double hi = openFar ? kept.far : std::min(zFar, kept.far);
   if (!(hi > lo)) return 0.0;
-  const double s = 1.0 / (std::sqrt(2.0) * sigma), r = profile.erfReach;
+  const double s = 1.0 / (std::sqrt(2.0) * sigma);
   return 0.5 * profile.scale *
-         (erfApprox(std::clamp((hi - mu) * s, -r, r)) -
-          erfApprox(std::clamp((lo - mu) * s, -r, r)));
+         (profileErf((hi - mu) * s, profile) - profileErf((lo - mu) * s, profile));
 }
 
 bool clipCullsKernel(const std::vector<HalfSpace>& planes, const glm::dvec3& u, double reach) {

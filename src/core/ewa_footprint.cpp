@@ -96,21 +96,31 @@ double erfApprox(double x) {
   return x < 0.0 ? -y : y;
 }
 
+double erfSeries(double x) {
+  const double x2 = x * x;
+  return x * (1.12837876 +
+              x2 * (-0.37611182 + x2 * (0.11269018 + x2 * (-0.02624959 + x2 * 0.00407206))));
+}
+
+double profileErf(double t, const DepthProfile& profile) {
+  const double r = profile.erfReach, x = std::clamp(t, -r, r);
+  return r <= kErfSeriesReach ? erfSeries(x) : erfApprox(x);
+}
+
 DepthProfile depthProfile(double depthCutoff) {
   DepthProfile p;
   if (!(depthCutoff > 0.0) || std::isinf(depthCutoff)) return p;  // uncut
   p.erfReach = std::sqrt(0.5 * depthCutoff);
-  p.scale = 1.0 / erfApprox(p.erfReach);
+  p.scale = 1.0 / profileErf(p.erfReach, p);
   return p;
 }
 
 double slabFraction(double mu, double sigma, double zNear, double zFar,
                     const DepthProfile& profile) {
-  const double s = 1.0 / (std::sqrt(2.0) * sigma), r = profile.erfReach;
+  const double s = 1.0 / (std::sqrt(2.0) * sigma);
   // Infinite bounds clamp to the cut: the open tails.
-  const double hi = erfApprox(std::clamp((zFar - mu) * s, -r, r));
-  const double lo = erfApprox(std::clamp((zNear - mu) * s, -r, r));
-  return 0.5 * profile.scale * (hi - lo);
+  return 0.5 * profile.scale *
+         (profileErf((zFar - mu) * s, profile) - profileErf((zNear - mu) * s, profile));
 }
 
 bool cullKernel(const glm::dvec3& u, double radius, const Projection& proj,

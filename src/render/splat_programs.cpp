@@ -4,8 +4,13 @@
 namespace ewa {
 
 gl::VariantFlags SplatVariant::flags() const {
-  return {{"SPLAT_MIP", mip},           {"SPLAT_POST", post}, {"SPLAT_HALVES", halves},
-          {"SPLAT_QUARTERS", quarters}, {"SPLAT_CLIP", clip}, {"SPLAT_TEXEL_BUFFER", texelBuffers}};
+  return {{"SPLAT_MIP", mip},
+          {"SPLAT_POST", post},
+          {"SPLAT_HALVES", halves},
+          {"SPLAT_QUARTERS", quarters},
+          {"SPLAT_CLIP", clip},
+          {"SPLAT_TEXEL_BUFFER", texelBuffers},
+          {"SPLAT_ERF_SERIES", erfSeries}};
 }
 
 SplatPrograms::SplatPrograms(const gl::ShaderLibrary& shaders) : shaders_(shaders) {

@@ -19,6 +19,7 @@ struct SplatVariant {
   bool quarters = false;      // halves, each split again: four depth samples a slab
   bool clip = false;          // a crop box or clipping planes cut the kernels
   bool texelBuffers = false;  // splat records and attributes read from texel buffers
+  bool erfSeries = false;     // the depth profile is cut within erfSeries' reach (profileErf)
 
   gl::VariantFlags flags() const;
   unsigned key() const { return gl::variantKey(flags()); }

@@ -52,7 +52,11 @@ TEST_F(ClipRender, ShaderClipShareEqualsCpp) {
   for (const char* name : {"ewa_footprint.glsl", "pixel_ray.glsl", "clip_region.glsl"})
     std::ofstream(dir / name) << embedded.source(name);
   std::ofstream(dir / "clip_mirror.comp.glsl") << kMirrorShader;
-  gl::Program program = gl::ShaderLibrary(dir.string()).computeProgram("clip_mirror.comp.glsl");
+  // The cut profile takes erfSeries, as the splat variant does (SplatVariant::erfSeries).
+  const gl::ShaderLibrary library(dir.string());
+  gl::Program approx = library.computeProgram("clip_mirror.comp.glsl");
+  gl::Program series =
+      library.computeProgram("clip_mirror.comp.glsl", "#define SPLAT_ERF_SERIES 1\n");
 
   Volume v = makeVolume(8, 8, 8, glm::dvec3(1.0, 0.8, 1.5), [](int, int, int) { return true; });
   v.setDirection(glm::dmat3(glm::rotate(glm::dmat4(1.0), 0.5, glm::normalize(glm::dvec3(1, 2, 0)))),
@@ -68,6 +72,7 @@ TEST_F(ClipRender, ShaderClipShareEqualsCpp) {
     // Both projections, the depth profile uncut and cut at one sigma.
     const bool ortho = (variant & 1) != 0;
     const DepthProfile profile = depthProfile((variant & 2) ? 1.0 : double(INFINITY));
+    gl::Program& program = (variant & 2) ? series : approx;
     program.setVec2("uProfile", glm::vec2(profile.erfReach, profile.scale));
     Camera cam;
     cam.focalPoint = {3, 3, 4};

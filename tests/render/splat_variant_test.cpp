@@ -35,12 +35,13 @@ void expectEveryCombinationDistinct(unsigned switches, Set set) {
 }
 
 TEST(SplatVariant, EveryCombinationHasItsOwnKeyAndDefines) {
-  expectEveryCombinationDistinct<SplatVariant>(5, [](SplatVariant& v, unsigned bits) {
+  expectEveryCombinationDistinct<SplatVariant>(6, [](SplatVariant& v, unsigned bits) {
     v.mip = bits & 1;
     v.post = bits & 2;
     v.halves = bits & 4;
     v.clip = bits & 8;
     v.texelBuffers = bits & 16;
+    v.erfSeries = bits & 32;
   });
 }
 

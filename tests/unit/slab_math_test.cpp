@@ -30,6 +30,23 @@ TEST(SlabMath, ErfApproximationIsWithinItsBound) {
   EXPECT_EQ(erfApprox(-1e30), -1.0);
 }
 
+TEST(SlabMath, ErfSeriesIsWithinItsBoundInsideItsReach) {
+  double worst = 0.0;
+  for (double x = -kErfSeriesReach; x <= kErfSeriesReach; x += 1e-4) {
+    EXPECT_NEAR(erfSeries(x), std::erf(x), 5e-8) << x;
+    EXPECT_EQ(erfSeries(-x), -erfSeries(x));  // odd: shares either side of a kernel agree
+    worst = std::max(worst, std::abs(erfSeries(x) - std::erf(x)));
+  }
+  EXPECT_GT(worst, 1e-9);  // the polynomial, not std::erf, is what is tested
+  // Beyond its reach the series leaves erf quickly: profileErf takes erfApprox there.
+  EXPECT_GT(std::abs(erfSeries(2.0) - std::erf(2.0)), 1e-3);
+  const DepthProfile wide = depthProfile(4.0), narrow = depthProfile(1.0);
+  EXPECT_EQ(profileErf(0.3, wide), erfApprox(0.3));
+  EXPECT_EQ(profileErf(0.3, narrow), erfSeries(0.3));
+  EXPECT_EQ(profileErf(5.0, narrow), erfSeries(narrow.erfReach));  // clamped to the cut
+  EXPECT_DOUBLE_EQ(profileErf(narrow.erfReach, narrow) * narrow.scale, 1.0);
+}
+
 TEST(SlabMath, SlabSharesOfAKernelSumToOne) {
   const double mu = 3.3, sigma = 0.7;
   double sum = slabFraction(mu, sigma, -INFINITY, 1.0) + slabFraction(mu, sigma, 5.0, INFINITY);
