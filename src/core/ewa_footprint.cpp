@@ -102,9 +102,13 @@ double erfSeries(double x) {
               x2 * (-0.37611182 + x2 * (0.11269018 + x2 * (-0.02624959 + x2 * 0.00407206))));
 }
 
+bool usesErfSeries(const DepthProfile& profile) {
+  return profile.erfReach <= kErfSeriesReach;
+}
+
 double profileErf(double t, const DepthProfile& profile) {
-  const double r = profile.erfReach, x = std::clamp(t, -r, r);
-  return r <= kErfSeriesReach ? erfSeries(x) : erfApprox(x);
+  const double x = std::clamp(t, -profile.erfReach, profile.erfReach);
+  return usesErfSeries(profile) ? erfSeries(x) : erfApprox(x);
 }
 
 DepthProfile depthProfile(double depthCutoff) {

@@ -94,6 +94,9 @@ constexpr double kErfSeriesReach = 0.75;
 // minimax, |error| < 5e-8 there): five multiply-adds and no division, where erfApprox takes
 // ten and a division. The slab split's erf was most of the splat shader's arithmetic.
 double erfSeries(double x);
+// True where the profile's cut lies within kErfSeriesReach: profileErf takes erfSeries, and the
+// splat shaders are compiled with SPLAT_ERF_SERIES.
+bool usesErfSeries(const DepthProfile& profile);
 // erf of `t` clamped to the profile's cut: the profile's cumulative, unscaled.
 double profileErf(double t, const DepthProfile& profile);
 // Fraction of a 1D Gaussian (mean mu, standard deviation sigma), cut as `profile` says, between

@@ -291,7 +291,7 @@ SplatVariant SplatRenderer::splatVariant(const RenderSettings& settings, bool te
   variant.quarters = quarterSlabs(settings);
   variant.clip = volume_ && !halfSpacesInVolumeFrame(settings.clip, *volume_).empty();
   variant.texelBuffers = texelBuffers;
-  variant.erfSeries = depthProfile(settings).erfReach <= kErfSeriesReach;
+  variant.erfSeries = usesErfSeries(depthProfile(settings));
   return variant;
 }
 

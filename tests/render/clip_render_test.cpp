@@ -72,7 +72,7 @@ TEST_F(ClipRender, ShaderClipShareEqualsCpp) {
     // Both projections, the depth profile uncut and cut at one sigma.
     const bool ortho = (variant & 1) != 0;
     const DepthProfile profile = depthProfile((variant & 2) ? 1.0 : double(INFINITY));
-    gl::Program& program = (variant & 2) ? series : approx;
+    gl::Program& program = usesErfSeries(profile) ? series : approx;
     program.setVec2("uProfile", glm::vec2(profile.erfReach, profile.scale));
     Camera cam;
     cam.focalPoint = {3, 3, 4};

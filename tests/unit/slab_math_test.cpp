@@ -41,6 +41,8 @@ TEST(SlabMath, ErfSeriesIsWithinItsBoundInsideItsReach) {
   // Beyond its reach the series leaves erf quickly: profileErf takes erfApprox there.
   EXPECT_GT(std::abs(erfSeries(2.0) - std::erf(2.0)), 1e-3);
   const DepthProfile wide = depthProfile(4.0), narrow = depthProfile(1.0);
+  EXPECT_FALSE(usesErfSeries(wide));
+  EXPECT_TRUE(usesErfSeries(narrow));
   EXPECT_EQ(profileErf(0.3, wide), erfApprox(0.3));
   EXPECT_EQ(profileErf(0.3, narrow), erfSeries(0.3));
   EXPECT_EQ(profileErf(5.0, narrow), erfSeries(narrow.erfReach));  // clamped to the cut
