@@ -17,15 +17,21 @@ gl::Texture slabImageTexture(int w, int h) {
 
 }  // namespace
 
-void RenderTargets::resize(int w, int h, bool paired, bool quarter) {
+void RenderTargets::resize(int w, int h, bool paired, bool quarter, bool normals) {
   quarter = quarter && paired;
   const bool fresh = !(w == width && h == height && output);
   if (fresh) createImages(w, h);
-  if (!fresh && paired == pairedSlabs() && quarter == quarters()) return;
+  if (!fresh && paired == pairedSlabs() && quarter == quarters() && normals == normalSums())
+    return;
   slabOtherFbo = gl::Framebuffer();
   slabOther = gl::Texture();
   slabBack = gl::Texture();
   slabOtherBack = gl::Texture();
+  slabNormal = gl::Texture();
+  if (normals) {
+    slabNormal = gl::Texture::create2D(GL_RGBA16F, w, h);
+    slabNormal.setFilter(GL_LINEAR, GL_LINEAR);  // coarser slab images are read bilinearly
+  }
   if (paired) slabOther = slabImageTexture(w, h);
   if (quarter) {
     slabBack = slabImageTexture(w, h);
@@ -39,7 +45,7 @@ void RenderTargets::resize(int w, int h, bool paired, bool quarter) {
 gl::Framebuffer RenderTargets::slabFramebuffer(const gl::Texture& image, const gl::Texture& back) {
   gl::Framebuffer fbo = gl::Framebuffer::create();
   fbo.attachColor(0, image);
-  fbo.attachColor(1, slabNormal);
+  if (slabNormal) fbo.attachColor(1, slabNormal);
   if (back) fbo.attachColor(2, back);
   fbo.attachDepth(stencil, GL_DEPTH_STENCIL_ATTACHMENT);
   fbo.checkComplete();
@@ -60,12 +66,9 @@ void RenderTargets::createImages(int w, int h) {
   }
   *this = RenderTargets();  // free the old images first: the new ones may be large
   slab = slabImageTexture(w, h);
-  slabNormal = gl::Texture::create2D(GL_RGBA16F, w, h);
   accum = gl::Texture::create2D(GL_RGBA32F, w, h);
   output = gl::Texture::create2D(GL_RGBA8, w, h);
   stencil = gl::Texture::create2D(GL_DEPTH24_STENCIL8, w, h);
-  // Coarser slab images (slab_image_scale.h) are read bilinearly; full ones by texelFetch.
-  slabNormal.setFilter(GL_LINEAR, GL_LINEAR);
   for (gl::Texture* t : {&accum, &output}) t->setFilter(GL_NEAREST, GL_NEAREST);
   accumFbo = gl::Framebuffer::create();
   accumFbo.attachColor(0, accum);

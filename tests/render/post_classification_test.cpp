@@ -282,9 +282,9 @@ TEST_F(PostClassification, ShadedBallFollowsLambertWithEitherNormals) {
   settings.lighting.diffuse = 0.7;
   settings.lighting.specular = 0.0;
   size_t bytes[2] = {0, 0};
+  const int size = 160;
   for (PostNormals normals : {PostNormals::Field, PostNormals::Voxel}) {
     settings.postNormals = normals;
-    const int size = 160;
     renderer()->render(cam, settings, size, size);
     bytes[int(normals)] = renderer()->stats().gpuBytes;
     const Image8 img = renderer()->readImage();
@@ -310,9 +310,11 @@ TEST_F(PostClassification, ShadedBallFollowsLambertWithEitherNormals) {
     EXPECT_LT(std::sqrt(sum / points), 0.07) << postNormalsName(normals);
   }
   // Field normals read no voxel normals: the attributes (8 bytes a splat) stay off the GPU
-  // (a 16-byte placeholder keeps their binding).
+  // (a 16-byte placeholder keeps their binding), and so does the RGBA16F image of their sums
+  // (8 bytes a pixel).
   EXPECT_EQ(bytes[int(PostNormals::Voxel)] + 16,
-            bytes[int(PostNormals::Field)] + 8 * renderer()->splats().splats().size());
+            bytes[int(PostNormals::Field)] + 8 * renderer()->splats().splats().size() +
+                size_t(size) * size * 8);
 }
 
 }  // namespace
