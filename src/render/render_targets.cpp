@@ -21,8 +21,7 @@ void RenderTargets::resize(int w, int h, bool paired, bool quarter, bool normals
   quarter = quarter && paired;
   const bool fresh = !(w == width && h == height && output);
   if (fresh) createImages(w, h);
-  if (!fresh && paired == pairedSlabs() && quarter == quarters() && normals == normalSums())
-    return;
+  if (!fresh && paired == pairedSlabs() && quarter == quarters() && normals == normalSums()) return;
   slabOtherFbo = gl::Framebuffer();
   slabOther = gl::Texture();
   slabBack = gl::Texture();

@@ -12,14 +12,14 @@ namespace ewa {
 struct RenderTargets {
   int width = 0;
   int height = 0;
-  gl::Texture slab;        // RGBA32F: (sum of colour * optical depth, sum of optical depth)
+  gl::Texture slab;  // RGBA32F: (sum of colour * optical depth, sum of optical depth)
   // RGBA16F, post-classified with voxel normals: sum of weight * normal (colour attachment 1 of
   // the slab framebuffers). Absent otherwise, 8 bytes a pixel less (the splat draws left it out
   // of their draw buffers already).
   gl::Texture slabNormal;
-  gl::Texture accum;       // RGBA32F: premultiplied colour and opacity, front to back
-  gl::Texture output;      // RGBA8: the final picture over the background
-  gl::Texture stencil;     // DEPTH24_STENCIL8, shared by slab and accumulation: opaque pixels
+  gl::Texture accum;    // RGBA32F: premultiplied colour and opacity, front to back
+  gl::Texture output;   // RGBA8: the final picture over the background
+  gl::Texture stencil;  // DEPTH24_STENCIL8, shared by slab and accumulation: opaque pixels
   gl::Framebuffer slabFbo;
   gl::Framebuffer accumFbo;
   gl::Framebuffer outputFbo;

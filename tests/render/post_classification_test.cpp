@@ -312,9 +312,9 @@ TEST_F(PostClassification, ShadedBallFollowsLambertWithEitherNormals) {
   // Field normals read no voxel normals: the attributes (8 bytes a splat) stay off the GPU
   // (a 16-byte placeholder keeps their binding), and so does the RGBA16F image of their sums
   // (8 bytes a pixel).
-  EXPECT_EQ(bytes[int(PostNormals::Voxel)] + 16,
-            bytes[int(PostNormals::Field)] + 8 * renderer()->splats().splats().size() +
-                size_t(size) * size * 8);
+  EXPECT_EQ(bytes[int(PostNormals::Voxel)] + 16, bytes[int(PostNormals::Field)] +
+                                                     8 * renderer()->splats().splats().size() +
+                                                     size_t(size) * size * 8);
 }
 
 }  // namespace
