@@ -45,6 +45,9 @@ const bool kScaled = SLAB_SCALED != 0;
 // values a slab.
 const bool kQuarters = SLAB_QUARTERS != 0 && kPreintegrated;
 
+// Pixels no splat of this slab reached fail the depth test before the shader runs.
+layout(early_fragment_tests) in;
+
 uniform sampler2D uSlab;
 uniform sampler2D uSlabNormal;  // post with shading: the sum of weight * camera-space normal
 uniform sampler1D uTransfer;    // rgb + extinction tau per world unit

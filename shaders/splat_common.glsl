@@ -43,6 +43,7 @@ uniform float uCutoff;
 uniform float uDepthCutoff;  // KernelReach::depthCutoff: the slabs a kernel is listed in
 uniform float uMinSpacing;   // the surface offset's unit
 uniform float uSwanSpacing;  // Swan's s: kernel width * smallest spacing
+uniform float uSlabMark;     // clip-space z: the slab's mark in the depth buffer
 uniform float uCullDepth;    // kernels at or nearer than this camera depth are culled
 uniform uint uFirst;         // offset of this draw's first entry in order[] (as bound)
 uniform int uSlabIndex;      // >= 0: the slab's offset is slabFirst[uSlabIndex] instead
@@ -122,5 +123,5 @@ bool setupSplat(uint n, out Footprint fp) {
 }
 
 vec4 pixelToClip(vec2 pixel) {
-  return vec4((pixel - uViewportRect.xy) / uViewportRect.zw * 2.0 - 1.0, 0.0, 1.0);
+  return vec4((pixel - uViewportRect.xy) / uViewportRect.zw * 2.0 - 1.0, uSlabMark, 1.0);
 }

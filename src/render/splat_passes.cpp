@@ -189,6 +189,14 @@ void SplatRenderer::scissorTo(const PixelRect& r) {
   glScissor(r.x0, r.y0, std::max(0, r.x1 - r.x0), std::max(0, r.y1 - r.y0));
 }
 
+float SplatRenderer::slabMarkStep() const {
+  return float(2.0 / double(frame_.slabs.size() + 2));
+}
+
+float SplatRenderer::slabMark(size_t s) const {
+  return float(-1.0 + double(s + 1) * slabMarkStep());
+}
+
 int SplatRenderer::slabImageOf(size_t s) const {
   return frame_.pairedSlabs ? int(s % 2) : 0;
 }
@@ -221,7 +229,15 @@ void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
   setSlabUniforms(range, true, true, gpuSlab);
   setSplatScale(scale);
   if (scale == 1) {
+    // Each splat fragment leaves the slab's mark in the depth buffer (written before the
+    // shader, so a footprint's whole point or quad is marked), for its slab pass.
+    for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()})
+      p->setFloat("uSlabMark", slabMark(s));
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
     drawSplats(range, stats_.quadPass, gpuSlab);
+    glDisable(GL_DEPTH_TEST);
     return;
   }
   // Into the image's lower left corner. The stencil marks the picture's pixels: coarser images
@@ -260,8 +276,23 @@ void SplatRenderer::endCompositeSlab(size_t s) {
   }
   const Slab& slab = slabInOrder(s);
   pass.setVec2("uSlabDepths", glm::vec2(slab.nearDepth, slab.farDepth));
+  // A full-resolution slab's pass runs only where its splats left their mark: llvmpipe runs a
+  // shader's every line under a mask (discard saves nothing), but skips blocks that fail an
+  // early depth test. The pass lies half a mark below its slab's: earlier slabs' marks and the
+  // cleared 0 lie below it and fail GL_LEQUAL, without an exact equality of depths.
+  const bool marked = slabScale(s) == 1;
+  if (marked) {
+    pass.setFloat("uSlabMark", slabMark(s) - 0.5f * slabMarkStep());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+  }
   glUseProgram(pass.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (marked) {
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);  // clears respect the mask
+  }
   ++stats_.slabsDrawn;
   if (slabScale(s) > 1) ++stats_.slabsCoarse;
   if (terminate && (s + 1) % kCheckEvery == 0 && s + 1 < n) {
@@ -488,7 +519,9 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   targets_.accumFbo.clearColor(0, zero);
   targets_.slabFbo.clearColor(0, zero);
   if (frame_.quarters) targets_.slabFbo.clearColor(2, zero);
-  glClearNamedFramebufferfi(targets_.slabFbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  // Depth 0: below every slab's mark (slabMark).
+  glDepthMask(GL_TRUE);
+  glClearNamedFramebufferfi(targets_.slabFbo.id(), GL_DEPTH_STENCIL, 0, 0.0f, 0);
   const Classification classification = splatClassification(settings);
   if (volume_ && (splatsDirty_ || classification != classification_)) {
     const auto classifyStart = Clock::now();

@@ -189,6 +189,10 @@ class SplatRenderer : public Renderer {
   // Which slab image (RenderTargets::slabImage) slab `slabIndex` of the drawing order sums
   // into: alternating with paired slabs, else 0.
   int slabImageOf(size_t slabIndex) const;
+  // Clip-space z of the mark slab `slabIndex` (in drawing order) leaves in the depth buffer
+  // where its splats reach, rising from slab to slab by slabMarkStep (endCompositeSlab).
+  float slabMark(size_t slabIndex) const;
+  float slabMarkStep() const;
   // True when one slab ends where the other begins (in either order).
   static bool slabsAdjacent(const Slab& a, const Slab& b);
   // Each slab's rectangle and image scale (frame_.slabRects, frame_.slabScales, in
