@@ -14,8 +14,9 @@ struct RenderTargets {
   int height = 0;
   gl::Texture slab;  // RGBA32F: (sum of colour * optical depth, sum of optical depth)
   // RGBA16F, post-classified with voxel normals: sum of weight * normal (colour attachment 1 of
-  // the slab framebuffers). Absent otherwise, 8 bytes a pixel less (the splat draws left it out
-  // of their draw buffers already).
+  // the slab framebuffers). Absent otherwise: a slab framebuffer's draw buffers are its
+  // attachments (gl::Framebuffer::attachColor), so the splats write it and the back halves only
+  // where they are used.
   gl::Texture slabNormal;
   gl::Texture accum;    // RGBA32F: premultiplied colour and opacity, front to back
   gl::Texture output;   // RGBA8: the final picture over the background

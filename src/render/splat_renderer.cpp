@@ -370,13 +370,6 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
     p.setInt("uSlabScale", 1);
     p.setInt("uNeighbourScale", 1);
   }
-  // The normal sums and back halves are written only where they are used.
-  const GLenum none = GL_NONE;
-  const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0,
-                             voxelNormalSums(settings) ? GLenum(GL_COLOR_ATTACHMENT1) : none,
-                             frame_.quarters ? GLenum(GL_COLOR_ATTACHMENT2) : none};
-  for (int i = 0; i < (frame_.pairedSlabs ? 2 : 1); ++i)
-    glNamedFramebufferDrawBuffers(targets_.slabTarget(i).id(), frame_.quarters ? 3 : 2, buffers);
 }
 
 void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex) {
