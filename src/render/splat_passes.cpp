@@ -590,18 +590,13 @@ void SplatRenderer::takeCpuPartition(bool budgeted) {
     throw;
   }
   const auto& order = partition_.order();
-  const GLsizeiptr bytes = GLsizeiptr(order.size() * sizeof(uint32_t));
-  // The store is kept while it is big enough: allocating one costs far more than copying into
-  // it (2.7 s on llvmpipe for a 512^3 volume's 0.9 GB list, the copy 0.3 s). The first one is
-  // exact; a list that outgrows it gets an eighth to spare, so the next views' lists fit.
-  if (bytes > orderBuffer_.size())
-    orderBuffer_.setData(orderBuffer_.size() == 0 ? bytes : bytes + bytes / 8, nullptr,
-                         GL_STREAM_DRAW);
-  // A list too big to copy within a step's budget goes up in pieces over the following steps
+  // The store's pages are kept while big enough (OrderPages). A list too big to copy within a
+  // step's budget goes up page by page over the following steps, each made as it is reached
   // (uploadOrderPieces); a whole frame copies it at once.
   frame_.orderUploading = budgeted && order.size() > orderUploadPiece_;
   frame_.orderUploaded = 0;
-  if (!frame_.orderUploading && bytes > 0) orderBuffer_.setSubData(0, bytes, order.data());
+  if (!frame_.orderUploading && !order.empty())
+    orderPages_.upload(order.data(), 0, order.size(), order.size());
   frame_.slabs = partition_.slabs();
   computeSlabRects();
   stats_.splatsDrawn = partition_.splatCount();
@@ -612,8 +607,7 @@ bool SplatRenderer::uploadOrderPieces(double budgetMs, Clock::time_point start) 
   const auto& order = partition_.order();
   do {
     const size_t n = std::min(orderUploadPiece_, order.size() - frame_.orderUploaded);
-    orderBuffer_.setSubData(GLintptr(frame_.orderUploaded * sizeof(uint32_t)),
-                            GLsizeiptr(n * sizeof(uint32_t)), order.data() + frame_.orderUploaded);
+    orderPages_.upload(order.data() + frame_.orderUploaded, frame_.orderUploaded, n, order.size());
     frame_.orderUploaded += n;
   } while (frame_.orderUploaded < order.size() && millisecondsSince(start) < budgetMs);
   frame_.orderUploading = frame_.orderUploaded < order.size();

@@ -107,7 +107,7 @@ bool SplatRenderer::texelBuffers() const {
 
 RenderStats SplatRenderer::stats() const {
   RenderStats s = stats_;
-  s.gpuBytes = size_t(splatBuffer_.size() + orderBuffer_.size() + attributeBuffer_.size()) +
+  s.gpuBytes = size_t(splatBuffer_.size() + attributeBuffer_.size()) + orderPages_.bytes() +
                size_t(kTransferSamples) * 4 * sizeof(float) + targets_.bytes() +
                (gpuPartition_ ? gpuPartition_->bytes() : 0) + occlusion_.bytes() +
                pairTable_.bytes();
@@ -177,7 +177,7 @@ void SplatRenderer::uploadSplats() {
   }
   // The order list's store is kept between frames (takeCpuPartition); a new splat set starts
   // it afresh, so a small volume after a big one does not hold the big one's store.
-  if (!frame_.active) orderBuffer_ = gl::Buffer{};
+  if (!frame_.active) orderPages_.clear();
   const size_t n = std::max<size_t>(1, classified_.splats.size());
   const auto& splats = classified_.splats.splats();
   splatBuffer_.setData(GLsizeiptr(n * sizeof(PackedSplat)),
@@ -420,16 +420,20 @@ void SplatRenderer::drawOrderRange(GLenum mode, bool instanced, size_t first, si
   gl::Program& program = instanced ? splatPrograms_.quad() : splatPrograms_.point();
   glUseProgram(program.id());
   // Bound from the draw's first entry (rounded down to the binding alignment), so a list
-  // larger than a storage block is drawn through windows of it.
+  // larger than a storage block is drawn through windows of it, and the CPU's list, held in
+  // pages, a page at most a draw.
   // Entries a binding holds; the rounding skips fewer than an alignment's worth.
   const uint64_t window = (storageBlockBytes() - storageAlignment_) / sizeof(uint32_t);
   // The GPU partition's list once its counts are read back (budgeted steps), else the CPU's.
-  const gl::Buffer& order = frame_.gpuSlabs ? gpuPartition_->orderBuffer() : orderBuffer_;
+  const bool gpuList = frame_.gpuSlabs;
+  const uint64_t pageEntries = gpuList ? UINT64_MAX : orderPages_.pageEntries();
   while (count > 0) {
-    const uint64_t bytes = uint64_t(first) * sizeof(uint32_t);
+    const gl::Buffer& order = gpuList ? gpuPartition_->orderBuffer() : orderPages_.page(first);
+    const uint64_t inPage = gpuList ? first : first % pageEntries;
+    const uint64_t bytes = inPage * sizeof(uint32_t);
     const uint64_t offset = bytes - bytes % storageAlignment_;
     const uint64_t skip = (bytes - offset) / sizeof(uint32_t);
-    const size_t n = size_t(std::min<uint64_t>(count, window - skip));
+    const size_t n = size_t(std::min<uint64_t>({count, window - skip, pageEntries - inPage}));
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, order.id(), GLintptr(offset),
                       GLsizeiptr((skip + n) * sizeof(uint32_t)));
     program.setUInt("uFirst", uint32_t(skip));

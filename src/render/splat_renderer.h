@@ -21,6 +21,7 @@
 #include "gl/vertex_array.h"
 #include "render/gpu_slab_partition.h"
 #include "render/occlusion_pyramid.h"
+#include "render/order_pages.h"
 #include "render/render_targets.h"
 #include "render/renderer.h"
 #include "render/slab_pair_table.h"
@@ -108,8 +109,14 @@ class SplatRenderer : public Renderer {
   // huge ones (splats in texel buffers, the order list bound in windows); 0: the GL's.
   void setStorageBlockLimit(uint64_t bytes) { storageBlockLimit_ = bytes; }
   // Test hook: entries a piece of the order list holds when a budgeted frame uploads it in
-  // pieces (default 4 Mi entries, 16 MiB).
-  void setOrderUploadPiece(size_t entries) { orderUploadPiece_ = std::max<size_t>(1, entries); }
+  // pieces, and a page of its GPU store (default OrderPages::kDefaultPageEntries); a new size
+  // drops the pages.
+  void setOrderUploadPiece(size_t entries) {
+    orderUploadPiece_ = std::max<size_t>(1, entries);
+    orderPages_.setPageEntries(orderUploadPiece_);
+  }
+  // Test hook: pages of the CPU partition's order list allocated now.
+  size_t orderPageCount() const { return orderPages_.pageCount(); }
   // True when frames read the splats from texel buffers: they exceed a storage block.
   bool texelBuffers() const;
   // Test hook: in X-ray mode, sum only each kernel's share between these camera depths (the
@@ -266,26 +273,26 @@ class SplatRenderer : public Renderer {
   static constexpr unsigned kNeighbourBackUnit = 11;  // quarters: the neighbour's back half
   gl::VertexArray emptyVao_;
   gl::Buffer splatBuffer_;
-  gl::Buffer orderBuffer_;
+  OrderPages orderPages_;  // the CPU partition's order list (the GPU's keeps its own)
   gl::Buffer attributeBuffer_;
   bool attributesUploaded_ = false;  // attributeBuffer_ holds classified_.attributes
   gl::Texture transferTexture_;
   RenderTargets targets_;
-  size_t glMaxSplats_ = SIZE_MAX;              // splats the GPU's texel buffers and memory hold
-  size_t maxSplats_ = SIZE_MAX;                // the limit in force (lower in tests)
-  uint64_t maxStorageBlockBytes_ = 0;          // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
-  uint64_t storageBlockLimit_ = 0;             // test hook: a lower block size (0: the GL's)
-  size_t orderUploadPiece_ = size_t(1) << 22;  // entries (16 MiB) a piece of the order list
-  uint64_t storageAlignment_ = 256;            // GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT
-  uint64_t maxTexelBufferTexels_ = 0;          // GL_MAX_TEXTURE_BUFFER_SIZE
-  gl::Texture splatTexels_;  // texel-buffer views of splatBuffer_ and attributeBuffer_
+  size_t glMaxSplats_ = SIZE_MAX;      // splats the GPU's texel buffers and memory hold
+  size_t maxSplats_ = SIZE_MAX;        // the limit in force (lower in tests)
+  uint64_t maxStorageBlockBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
+  uint64_t storageBlockLimit_ = 0;     // test hook: a lower block size (0: the GL's)
+  size_t orderUploadPiece_ = OrderPages::kDefaultPageEntries;  // a piece and page of the list
+  uint64_t storageAlignment_ = 256;    // GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT
+  uint64_t maxTexelBufferTexels_ = 0;  // GL_MAX_TEXTURE_BUFFER_SIZE
+  gl::Texture splatTexels_;            // texel-buffer views of splatBuffer_ and attributeBuffer_
   gl::Texture attributeTexels_;
   static constexpr unsigned kSplatTexelUnit = 7;
   static constexpr unsigned kAttributeTexelUnit = 8;
   // The storage block size in force: the GL's, or the test hook's.
   uint64_t storageBlockBytes() const;
   // Draws order entries [first, first + count) of the frame's partition, binding the order list
-  // from the first entry in windows a storage block holds.
+  // from the first entry in windows a storage block holds, within one page of the CPU's list.
   void drawOrderRange(GLenum mode, bool instanced, size_t first, size_t count);
   unsigned queries_[2] = {0, 0};  // early termination's occlusion queries, used in turn
   bool laggedTermination_ = false;

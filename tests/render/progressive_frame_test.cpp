@@ -125,13 +125,17 @@ TEST_P(ProgressiveModes, TinyBudgetStepsGiveRendersPicture) {
     ASSERT_GT(maxDifference(before, whole), 20) << "the two views must differ";
 
     r.render(a, settings, kSize, kSize);
-    // The CPU partition's order list goes up in pieces of 700 entries, one a step (a 512^3
-    // volume's in 16 MiB pieces); render() above copied it whole.
+    // The CPU partition's order list goes up in pieces of 700 entries, one a step, each into a
+    // page of its own (a 512^3 volume's in 4 MiB pieces); render() above copied it whole.
+    // Draws then end at page boundaries as well as at storage-block windows.
     r.setOrderUploadPiece(700);
     const Stepped stepped = stepToEnd(r, b, settings, kSize, before);
-    r.setOrderUploadPiece(size_t(1) << 22);
-    if (partition == PartitionMode::Cpu)
+    const size_t pages = r.orderPageCount();
+    r.setOrderUploadPiece(OrderPages::kDefaultPageEntries);
+    if (partition == PartitionMode::Cpu) {
       EXPECT_GE(size_t(stepped.setupSteps), wholeStats.slabEntries / 700 - 1) << mode;
+      EXPECT_GE(pages, (wholeStats.slabEntries + 699) / 700) << mode;
+    }
     writePng(testOutputDir() + "/progressive_" + mode + "_" + partitionModeName(partition) + ".png",
              stepped.image);
     EXPECT_LE(maxDifference(stepped.image, whole), 1) << mode;
