@@ -11,34 +11,65 @@ void OrderPages::setPageEntries(size_t entries) {
   entries = std::max<size_t>(1, entries);
   if (entries == pageEntries_) return;
   pageEntries_ = entries;
-  pages_.clear();
+  clear();
 }
 
-void OrderPages::upload(const uint32_t* entries, size_t first, size_t count, size_t total) {
-  constexpr size_t kEntry = sizeof(uint32_t);
-  while (count > 0) {
-    const size_t p = first / pageEntries_;
-    const size_t inPage = first % pageEntries_;
-    const size_t n = std::min(count, pageEntries_ - inPage);
-    // What the list needs of this page: all of it, or the list's tail.
-    const size_t needed = std::min(pageEntries_, total - p * pageEntries_);
-    if (pages_.size() <= p) pages_.resize(p + 1);
-    gl::Buffer& page = pages_[p];
-    if (size_t(page.size()) < needed * kEntry) {
-      const size_t entriesMade =
-          page ? std::min(pageEntries_, needed + needed / 8) : needed;  // exact the first time
-      page.setData(GLsizeiptr(entriesMade * kEntry), nullptr, GL_STREAM_DRAW);
-    }
-    page.setSubData(GLintptr(inPage * kEntry), GLsizeiptr(n * kEntry), entries);
-    entries += n;
-    first += n;
-    count -= n;
+void OrderPages::clear() {
+  buffers_.clear();
+  starts_.clear();
+}
+
+void OrderPages::layout(const std::vector<size_t>& breaks, size_t total) {
+  starts_.assign(1, 0);
+  if (total == 0) {
+    starts_.clear();
+    return;
   }
+  // Greedy: a page takes whole ranges while they fit; one too long for a page is cut.
+  size_t end = 0;  // the current page ends here so far
+  auto close = [&](size_t at) {
+    if (at > starts_.back()) starts_.push_back(at);
+  };
+  std::vector<size_t> cuts(breaks.begin(), breaks.end());
+  cuts.push_back(total);
+  for (size_t cut : cuts) {
+    cut = std::min(cut, total);
+    if (cut <= end) continue;
+    if (cut - starts_.back() > pageEntries_) {
+      close(end);  // this range does not fit beside the page's ranges
+      while (cut - starts_.back() > pageEntries_) close(starts_.back() + pageEntries_);
+    }
+    end = cut;
+  }
+  close(total);
+}
+
+void OrderPages::uploadPage(size_t i, const uint32_t* list) {
+  constexpr size_t kEntry = sizeof(uint32_t);
+  const size_t first = starts_[i], count = starts_[i + 1] - starts_[i];
+  if (buffers_.size() <= i) buffers_.resize(i + 1);
+  gl::Buffer& buffer = buffers_[i];
+  if (size_t(buffer.size()) < count * kEntry) {
+    const size_t made = buffer ? std::min(pageEntries_, count + count / 8) : count;
+    buffer.setData(GLsizeiptr(made * kEntry), nullptr, GL_STREAM_DRAW);
+  }
+  buffer.setSubData(0, GLsizeiptr(count * kEntry), list + first);
+}
+
+void OrderPages::uploadAll(const uint32_t* list) {
+  for (size_t i = 0; i < pages(); ++i) uploadPage(i, list);
+}
+
+OrderPages::Span OrderPages::span(size_t entry) const {
+  // The last page whose first position is at or before `entry`.
+  const auto next = std::upper_bound(starts_.begin(), starts_.end() - 1, entry);
+  const size_t i = size_t(next - starts_.begin()) - 1;
+  return {&buffers_[i], starts_[i], starts_[i + 1] - starts_[i]};
 }
 
 size_t OrderPages::bytes() const {
   size_t sum = 0;
-  for (const gl::Buffer& page : pages_) sum += size_t(page.size());
+  for (const gl::Buffer& buffer : buffers_) sum += size_t(buffer.size());
   return sum;
 }
 

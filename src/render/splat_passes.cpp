@@ -590,13 +590,16 @@ void SplatRenderer::takeCpuPartition(bool budgeted) {
     throw;
   }
   const auto& order = partition_.order();
-  // The store's pages are kept while big enough (OrderPages). A list too big to copy within a
-  // step's budget goes up page by page over the following steps, each made as it is reached
-  // (uploadOrderPieces); a whole frame copies it at once.
-  frame_.orderUploading = budgeted && order.size() > orderUploadPiece_;
+  // The store's pages end where slabs do and are kept while big enough (OrderPages). A list of
+  // more than one page goes up a page at a time over the following steps, each made as it is
+  // reached (uploadOrderPieces); a whole frame copies it at once.
+  std::vector<size_t> breaks;
+  for (const Slab& slab : partition_.slabs()) breaks.push_back(slab.first);
+  std::sort(breaks.begin(), breaks.end());
+  orderPages_.layout(breaks, order.size());
+  frame_.orderUploading = budgeted && orderPages_.pages() > 1;
   frame_.orderUploaded = 0;
-  if (!frame_.orderUploading && !order.empty())
-    orderPages_.upload(order.data(), 0, order.size(), order.size());
+  if (!frame_.orderUploading) orderPages_.uploadAll(order.data());
   frame_.slabs = partition_.slabs();
   computeSlabRects();
   stats_.splatsDrawn = partition_.splatCount();
@@ -604,13 +607,11 @@ void SplatRenderer::takeCpuPartition(bool budgeted) {
 }
 
 bool SplatRenderer::uploadOrderPieces(double budgetMs, Clock::time_point start) {
-  const auto& order = partition_.order();
+  const uint32_t* order = partition_.order().data();
   do {
-    const size_t n = std::min(orderUploadPiece_, order.size() - frame_.orderUploaded);
-    orderPages_.upload(order.data() + frame_.orderUploaded, frame_.orderUploaded, n, order.size());
-    frame_.orderUploaded += n;
-  } while (frame_.orderUploaded < order.size() && millisecondsSince(start) < budgetMs);
-  frame_.orderUploading = frame_.orderUploaded < order.size();
+    orderPages_.uploadPage(frame_.orderUploaded++, order);
+  } while (frame_.orderUploaded < orderPages_.pages() && millisecondsSince(start) < budgetMs);
+  frame_.orderUploading = frame_.orderUploaded < orderPages_.pages();
   return !frame_.orderUploading;
 }
 

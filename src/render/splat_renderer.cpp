@@ -426,15 +426,16 @@ void SplatRenderer::drawOrderRange(GLenum mode, bool instanced, size_t first, si
   const uint64_t window = (storageBlockBytes() - storageAlignment_) / sizeof(uint32_t);
   // The GPU partition's list once its counts are read back (budgeted steps), else the CPU's.
   const bool gpuList = frame_.gpuSlabs;
-  const uint64_t pageEntries = gpuList ? UINT64_MAX : orderPages_.pageEntries();
   while (count > 0) {
-    const gl::Buffer& order = gpuList ? gpuPartition_->orderBuffer() : orderPages_.page(first);
-    const uint64_t inPage = gpuList ? first : first % pageEntries;
+    const OrderPages::Span page = gpuList
+                                      ? OrderPages::Span{&gpuPartition_->orderBuffer(), 0, SIZE_MAX}
+                                      : orderPages_.span(first);
+    const uint64_t inPage = first - page.first;
     const uint64_t bytes = inPage * sizeof(uint32_t);
     const uint64_t offset = bytes - bytes % storageAlignment_;
     const uint64_t skip = (bytes - offset) / sizeof(uint32_t);
-    const size_t n = size_t(std::min<uint64_t>({count, window - skip, pageEntries - inPage}));
-    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, order.id(), GLintptr(offset),
+    const size_t n = size_t(std::min<uint64_t>({count, window - skip, page.count - inPage}));
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, page.buffer->id(), GLintptr(offset),
                       GLsizeiptr((skip + n) * sizeof(uint32_t)));
     program.setUInt("uFirst", uint32_t(skip));
     if (instanced)

@@ -108,15 +108,12 @@ class SplatRenderer : public Renderer {
   // Test hook: a smaller storage block than the GL's, so that small volumes take the paths of
   // huge ones (splats in texel buffers, the order list bound in windows); 0: the GL's.
   void setStorageBlockLimit(uint64_t bytes) { storageBlockLimit_ = bytes; }
-  // Test hook: entries a piece of the order list holds when a budgeted frame uploads it in
-  // pieces, and a page of its GPU store (default OrderPages::kDefaultPageEntries); a new size
-  // drops the pages.
-  void setOrderUploadPiece(size_t entries) {
-    orderUploadPiece_ = std::max<size_t>(1, entries);
-    orderPages_.setPageEntries(orderUploadPiece_);
-  }
-  // Test hook: pages of the CPU partition's order list allocated now.
-  size_t orderPageCount() const { return orderPages_.pageCount(); }
+  // Test hook: the most entries a page of the CPU partition's order list holds (default
+  // OrderPages::kDefaultPageEntries); a budgeted frame uploads the list a page at a time. A new
+  // size drops the pages.
+  void setOrderUploadPiece(size_t entries) { orderPages_.setPageEntries(entries); }
+  // Test hook: pages of the CPU partition's order list in the last frame's layout.
+  size_t orderPageCount() const { return orderPages_.pages(); }
   // True when frames read the splats from texel buffers: they exceed a storage block.
   bool texelBuffers() const;
   // Test hook: in X-ray mode, sum only each kernel's share between these camera depths (the
@@ -282,7 +279,6 @@ class SplatRenderer : public Renderer {
   size_t maxSplats_ = SIZE_MAX;        // the limit in force (lower in tests)
   uint64_t maxStorageBlockBytes_ = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
   uint64_t storageBlockLimit_ = 0;     // test hook: a lower block size (0: the GL's)
-  size_t orderUploadPiece_ = OrderPages::kDefaultPageEntries;  // a piece and page of the list
   uint64_t storageAlignment_ = 256;    // GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT
   uint64_t maxTexelBufferTexels_ = 0;  // GL_MAX_TEXTURE_BUFFER_SIZE
   gl::Texture splatTexels_;            // texel-buffer views of splatBuffer_ and attributeBuffer_
@@ -318,7 +314,7 @@ class SplatRenderer : public Renderer {
     double fragmentsPerEntry = 1.0;    // the largest footprint's square, in pixels (budgets)
     bool partitionPending = false;     // the CPU partition runs on pendingPartition_
     bool orderUploading = false;       // the CPU order list is going up in pieces
-    size_t orderUploaded = 0;          // entries of it copied so far
+    size_t orderUploaded = 0;          // pages of it copied so far
     Clock::time_point partitionStart;  // for stats_.partitionMs
     std::vector<Slab> slabs;           // front to back: the CPU partition's, or the GPU's
     std::vector<PixelRect> slabRects;  // per slab: the pixels its kernels can reach
