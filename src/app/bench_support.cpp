@@ -18,7 +18,8 @@ int benchmarkMain(const char* program, int (*run)(int, char**), int argc, char**
     std::cerr << program << ": " << nan << ": not a finite number (see --help)\n";
     return 2;
   }
-  keepFreedHeapForReuse();  // as ewaview itself runs
+  askForHugePages(argv);  // as ewaview itself runs
+  keepFreedHeapForReuse();
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

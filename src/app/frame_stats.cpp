@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/heap_tuning.h"
+
 namespace ewa {
 
 size_t peakRssBytes() {
@@ -38,6 +40,7 @@ std::string frameStatsJson(const RenderStats& s, const std::string& renderer, in
   const double perSplat = gpuBytesPerSplat(s);
   j["gpu_bytes_per_splat"] = perSplat > 0.0 ? nlohmann::ordered_json(perSplat) : nullptr;
   j["peak_rss"] = peakRssBytes();
+  j["huge_pages"] = hugePagesInUse();
   return j.dump();
 }
 

@@ -97,6 +97,7 @@ int main(int argc, char** argv) {
   ewa::Options options;
   const ewa::ParseResult parsed = ewa::parseCommandLine(argc, argv, &options);
   if (!parsed.run) return parsed.exitCode;
+  ewa::askForHugePages(argv);  // returns here only without it; else main runs again
   ewa::keepFreedHeapForReuse();
   try {
     ewa::Scene scene = ewa::loadScene(options);

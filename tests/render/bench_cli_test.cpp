@@ -164,6 +164,36 @@ TEST(StatsCli, OneJsonLineWithSplatsTimesAndMemory) {
   EXPECT_EQ(runEwaview("--synthetic sphere:24 --stats").code, 2);
 }
 
+// The kernel's transparent-huge-page mode, as /sys shows it ("[madvise]" etc.; empty if none).
+std::string hugePageModeLine() {
+  std::ifstream file("/sys/kernel/mm/transparent_hugepage/enabled");
+  std::string line;
+  std::getline(file, line);
+  return line;
+}
+
+TEST(StatsCli, RunsWithHugePagesWhereTheKernelGivesThemOnRequest) {
+  const std::string mode = hugePageModeLine();
+  if (mode.find("[madvise]") == std::string::npos)
+    GTEST_SKIP() << "transparent huge pages are not in madvise mode here: " << mode;
+  const std::string png = testOutputDir() + "/stats_huge.png";
+  const std::string args = "--synthetic sphere:16 --resolution 32,32 -o " + png + " --stats";
+  // ewaview runs itself again with glibc.malloc.hugetlb=1 (askForHugePages) ...
+  const CliRun asked = runProgram("env -u GLIBC_TUNABLES " EWA_BINARY, args, "huge");
+  ASSERT_EQ(asked.code, 0) << asked.err;
+  EXPECT_TRUE(json::parse(asked.out)["huge_pages"].get<bool>()) << asked.out;
+  // ... beside other tunables the user set ...
+  const CliRun beside =
+      runProgram("env GLIBC_TUNABLES=glibc.malloc.tcache_count=7 " EWA_BINARY, args, "beside");
+  ASSERT_EQ(beside.code, 0) << beside.err;
+  EXPECT_TRUE(json::parse(beside.out)["huge_pages"].get<bool>()) << beside.out;
+  // ... and leaves the user's own choice alone.
+  const CliRun off =
+      runProgram("env GLIBC_TUNABLES=glibc.malloc.hugetlb=0 " EWA_BINARY, args, "off");
+  ASSERT_EQ(off.code, 0) << off.err;
+  EXPECT_FALSE(json::parse(off.out)["huge_pages"].get<bool>()) << off.out;
+}
+
 TEST(StatsCli, OcclusionCullingCountsCulledDrawsAndKeepsThePicture) {
   // An opaque sphere: after its front the splats behind it are culled.
   const std::string dir = testOutputDir();
