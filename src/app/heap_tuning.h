@@ -18,9 +18,10 @@ bool keepFreedHeapForReuse();
 // for them. llvmpipe zero-fills every buffer it makes, and on this project's machine a 4 KiB
 // page fault costs so much that a 512^3 volume's 0.58 GB splat list took 2.7 s to upload (one
 // frozen window frame); with huge pages 0.8 s, and its headless picture 47 s instead of 63 s
-// (README, "A 512^3 volume"). Leaves things as they are where GLIBC_TUNABLES already names
-// malloc.hugetlb (the user's choice: glibc.malloc.hugetlb=0 turns it off), off Linux and glibc,
-// or when the kernel's mode is "always" or "never". Returns only if it did not run again.
+// (README, "Huge pages" under "What the default costs"). Leaves things as they are where
+// GLIBC_TUNABLES already names malloc.hugetlb (the user's choice: glibc.malloc.hugetlb=0 turns it
+// off), off Linux and glibc, or when the kernel's mode is "always" or "never". Returns only if it
+// did not run again.
 void askForHugePages(char** argv);
 // Whether this process's large allocations get transparent huge pages: glibc asks for them
 // (GLIBC_TUNABLES has glibc.malloc.hugetlb=1) or the kernel gives them unasked ("always").

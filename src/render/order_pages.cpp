@@ -20,27 +20,25 @@ void OrderPages::clear() {
 }
 
 void OrderPages::layout(const std::vector<size_t>& breaks, size_t total) {
-  starts_.assign(1, 0);
-  if (total == 0) {
-    starts_.clear();
-    return;
-  }
+  starts_.clear();
+  if (total == 0) return;
+  starts_.push_back(0);
   // Greedy: a page takes whole ranges while they fit; one too long for a page is cut.
   size_t end = 0;  // the current page ends here so far
   auto close = [&](size_t at) {
     if (at > starts_.back()) starts_.push_back(at);
   };
-  std::vector<size_t> cuts(breaks.begin(), breaks.end());
-  cuts.push_back(total);
-  for (size_t cut : cuts) {
+  auto reach = [&](size_t cut) {
     cut = std::min(cut, total);
-    if (cut <= end) continue;
+    if (cut <= end) return;
     if (cut - starts_.back() > pageEntries_) {
       close(end);  // this range does not fit beside the page's ranges
       while (cut - starts_.back() > pageEntries_) close(starts_.back() + pageEntries_);
     }
     end = cut;
-  }
+  };
+  for (size_t cut : breaks) reach(cut);
+  reach(total);
   close(total);
 }
 

@@ -593,9 +593,8 @@ void SplatRenderer::takeCpuPartition(bool budgeted) {
   // The store's pages end where slabs do and are kept while big enough (OrderPages). A list of
   // more than one page goes up a page at a time over the following steps, each made as it is
   // reached (uploadOrderPieces); a whole frame copies it at once.
-  std::vector<size_t> breaks;
+  std::vector<size_t> breaks;  // in order: the partition lays its slabs out front to back
   for (const Slab& slab : partition_.slabs()) breaks.push_back(slab.first);
-  std::sort(breaks.begin(), breaks.end());
   orderPages_.layout(breaks, order.size());
   frame_.orderUploading = budgeted && orderPages_.pages() > 1;
   frame_.orderUploaded = 0;
