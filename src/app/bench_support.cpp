@@ -10,6 +10,7 @@
 
 #include "app/heap_tuning.h"
 #include "app/options.h"
+#include "platform/headless_context.h"
 
 namespace ewa {
 
@@ -49,7 +50,8 @@ TimingSummary summarize(std::vector<double> values) {
 }
 
 void addBackendOption(CLI::App& app, std::string& backend) {
-  app.add_option("--backend", backend, "osmesa (default) or egl")
+  backend = platform::defaultHeadlessBackend();
+  app.add_option("--backend", backend, "osmesa (default; EWAVIEW_BACKEND names another) or egl")
       ->check(CLI::IsMember({"osmesa", "egl"}));
 }
 

@@ -13,6 +13,7 @@
 #include "app/render_options.h"
 #include "app/version.h"
 #include "core/kernel_lattice.h"
+#include "platform/headless_context.h"
 
 namespace ewa {
 
@@ -166,7 +167,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       ->delimiter(',')
       ->expected(3)
       ->check(CLI::Range(0.0, 1.0));
-  app.add_option("--backend", o->backend, "Headless OpenGL: osmesa (default) or egl")
+  app.add_option("--backend", o->backend,
+                 "Headless OpenGL: osmesa (default; EWAVIEW_BACKEND names another) or egl")
       ->check(CLI::IsMember({"osmesa", "egl"}));
   app.add_option("--shader-dir", o->shaderDir, "Load shaders from this folder (development)");
   auto* rawDims = app.add_option("--raw-dims", o->rawDims, "Raw input: dims X,Y,Z");
@@ -193,6 +195,13 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
     std::cerr << "ewaview: " << message << " (see --help)\n";
     return ParseResult{false, 2};
   };
+  if (app.count("--backend") == 0) {
+    try {
+      o->backend = platform::defaultHeadlessBackend();
+    } catch (const std::invalid_argument& e) {
+      return usage(e.what());
+    }
+  }
   if (!o->file.empty() && !o->synthetic.empty())
     return usage("give a FILE or --synthetic, not both");
   if (!o->rawDims.empty() && o->rawType.empty()) return usage("--raw-dims needs --raw-type");

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "platform/egl_context.h"
@@ -31,6 +32,17 @@ HeadlessBackend parseHeadlessBackend(const std::string& name) {
 
 const char* headlessBackendName(HeadlessBackend backend) {
   return backend == HeadlessBackend::OsMesa ? "osmesa" : "egl";
+}
+
+std::string defaultHeadlessBackend() {
+  const char* value = std::getenv("EWAVIEW_BACKEND");
+  if (!value || !*value) return "osmesa";
+  try {
+    return headlessBackendName(parseHeadlessBackend(value));
+  } catch (const std::invalid_argument&) {
+    throw std::invalid_argument("EWAVIEW_BACKEND=\"" + std::string(value) +
+                                "\": expected osmesa or egl");
+  }
 }
 
 }  // namespace ewa::platform

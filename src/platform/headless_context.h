@@ -20,5 +20,8 @@ std::unique_ptr<GlContext> createHeadlessContext(HeadlessBackend backend, int wi
 HeadlessBackend parseHeadlessBackend(const std::string& name);
 // "osmesa" or "egl".
 const char* headlessBackendName(HeadlessBackend backend);
+// The backend programs use when none is named: EWAVIEW_BACKEND's ("osmesa" or "egl", say on a
+// GPU server), else "osmesa". Throws std::invalid_argument naming the variable for another value.
+std::string defaultHeadlessBackend();
 
 }  // namespace ewa::platform

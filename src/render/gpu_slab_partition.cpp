@@ -37,7 +37,9 @@ GpuSlabPartition::GpuSlabPartition(const gl::ShaderLibrary& shaders)
 void GpuSlabPartition::reserve(gl::Buffer& buffer, size_t bytes) {
   bytes = std::max<size_t>(bytes, 16);
   if (buffer && size_t(buffer.size()) >= bytes) return;
-  buffer.setData(GLsizeiptr(bytes + bytes / 2), nullptr, GL_DYNAMIC_DRAW);
+  // Exactly what is asked the first time (a 512^3 volume's per-splat buffers are gigabytes);
+  // half again when it grows, so that it settles as the view turns.
+  buffer.setData(GLsizeiptr(buffer ? bytes + bytes / 2 : bytes), nullptr, GL_DYNAMIC_DRAW);
   gl::checkGlError("slab partition buffers");  // GL_OUT_OF_MEMORY names the buffers
 }
 

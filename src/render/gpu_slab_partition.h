@@ -50,7 +50,7 @@ class GpuSlabPartition {
   size_t bytes() const;
 
  private:
-  // Grows `buffer` to at least `bytes` (by half again, so it settles).
+  // Makes `buffer` hold at least `bytes`: exactly at first, half again more when it grows.
   static void reserve(gl::Buffer& buffer, size_t bytes);
   void dispatch(gl::Program& program, size_t invocations, size_t groupSize);
 

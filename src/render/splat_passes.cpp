@@ -84,6 +84,7 @@ bool SplatRenderer::issueOpaqueQuery(unsigned query) {
 
 bool SplatRenderer::terminationCheck() {
   const int current = frame_.nextQuery, previous = current ^ 1;
+  endConditionalSlabs();  // the check's own query counts unconditionally
   const bool issued = issueOpaqueQuery(queries_[current]);
   if (!laggedTermination_) {
     GLuint samples = 1;
@@ -100,10 +101,24 @@ bool SplatRenderer::terminationCheck() {
       done = samples == 0;
     }
   }
+  if (frame_.queryIssued[previous] && !done) {
+    // The CPU has no answer yet: until the next check the GPU draws only if the last check
+    // counted an unmarked pixel. The GPU waits for that answer, a check's slabs back and so
+    // all but certainly there, and never the CPU; the stencil rejects what would be hidden
+    // anyway, so the picture is the same as without.
+    glBeginConditionalRender(queries_[previous], GL_QUERY_WAIT);
+    frame_.conditional = true;
+  }
   frame_.queryIssued[current] = issued;
   frame_.nextQuery = previous;
   glFlush();  // so that the query's answer comes while the next slabs are drawn
   return done;
+}
+
+void SplatRenderer::endConditionalSlabs() {
+  if (!frame_.conditional) return;
+  glEndConditionalRender();
+  frame_.conditional = false;
 }
 
 bool SplatRenderer::terminates() const {
@@ -400,6 +415,7 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
     const double nextMs = msPerEntry_ * double(kMinRange) + msPerSlabEnd_;
     if (millisecondsSince(start) + nextMs > budgetMs) break;
   }
+  endConditionalSlabs();  // the window draws between steps, the final pass after the last
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_SCISSOR_TEST);
   return finished();

@@ -124,8 +124,11 @@ class SplatRenderer : public Renderer {
   void setSlabScissor(bool on) { slabScissor_ = on; }
   // Early termination reads its occlusion query without waiting (lagged by one check; the
   // default on hardware GL) or waits for it (the default on software rasterizers, where the
-  // wait costs nothing: the CPU draws everything anyway).
+  // wait costs nothing: the CPU draws everything anyway). Lagged, while the CPU has no answer
+  // the slabs after a check are drawn under conditional rendering on the check before: a GPU,
+  // which runs behind the CPU, skips them once that check found nothing left to draw.
   void setLaggedTermination(bool lagged) { laggedTermination_ = lagged; }
+  bool laggedTermination() const { return laggedTermination_; }
   // A whole frame's stage times (splats, final pass) from GPU timestamps (glQueryCounter),
   // without waiting for the splats before the final pass is queued (the default on hardware
   // GL); or from the CPU's clock around a glFinish after each stage (the default on software
@@ -240,6 +243,8 @@ class SplatRenderer : public Renderer {
   // result has come (no wait; the GPU keeps drawing, and stopping up to one check later than
   // possible only draws slabs the stencil rejects anyway, so the picture is the same).
   bool terminationCheck();
+  // Ends the conditional rendering a lagged termination check began, if any.
+  void endConditionalSlabs();
 
   const Volume* volume_ = nullptr;
   TransferFunction tf_;
@@ -331,6 +336,7 @@ class SplatRenderer : public Renderer {
     bool quarters = false;     // paired, four depth samples a slab: two images a slab
     int nextQuery = 0;         // of queries_, the one the next check issues
     bool queryIssued[2] = {false, false};  // lagged termination: a result not yet read
+    bool conditional = false;              // lagged termination: conditional rendering begun
     size_t nextEntry = 0;                  // X-ray and MIP: the next entry of the single slab
     double meanEntries = 0.0;              // per slab: the weight of a slab's whole-image passes
     double drawnWeight = 0.0, totalWeight = 0.0;  // for frameProgress()

@@ -110,6 +110,23 @@ TEST(Cli, HeadlessOutputOnBothBackendsAndTheDefaultAsset) {
   EXPECT_EQ(r.code, 0) << r.err;
 }
 
+// EWAVIEW_BACKEND names the backend when --backend does not (a GPU server's egl, say).
+TEST(Cli, EnvironmentNamesTheBackendWhenTheCommandLineDoesNot) {
+  const std::string png = testOutputDir() + "/cli_env_backend.png";
+  const std::string args = "--synthetic sphere:8 --resolution 16,16 --output " + png;
+  std::filesystem::remove(png);
+  CliRun r = runProgram("env EWAVIEW_BACKEND=vulkan " EWA_BINARY, args, "env_bad");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("EWAVIEW_BACKEND=\"vulkan\""), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(png));
+  // The command line wins; a valid value in any case is taken.
+  r = runProgram("env EWAVIEW_BACKEND=vulkan " EWA_BINARY, args + " --backend osmesa", "env_cli");
+  EXPECT_EQ(r.code, 0) << r.err;
+  r = runProgram("env EWAVIEW_BACKEND=OSMesa " EWA_BINARY, args, "env_good");
+  EXPECT_EQ(r.code, 0) << r.err;
+}
+
 }  // namespace
 }  // namespace ewa::test
 

@@ -23,14 +23,21 @@ std::string& RenderFixture::skipReason() {
   static std::string s;
   return s;
 }
+bool& RenderFixture::defaultLaggedTermination() {
+  static bool lagged = false;
+  return lagged;
+}
 
 void RenderFixture::SetUpTestSuite() {
   try {
-    // OSMesa (llvmpipe) by default; EWA_TEST_BACKEND=egl runs the suite on a GPU machine.
+    // OSMesa (llvmpipe) by default; EWA_TEST_BACKEND=egl (or EWAVIEW_BACKEND=egl, which the
+    // programs the CLI tests start follow too) runs the suite on a GPU machine.
     const char* name = std::getenv("EWA_TEST_BACKEND");
-    const auto backend = platform::parseHeadlessBackend(name && *name ? name : "osmesa");
+    const auto backend = platform::parseHeadlessBackend(
+        name && *name ? std::string(name) : platform::defaultHeadlessBackend());
     context() = platform::createHeadlessContext(backend, 16, 16);
     renderer() = std::make_unique<SplatRenderer>(gl::ShaderLibrary());
+    defaultLaggedTermination() = renderer()->laggedTermination();
   } catch (const std::exception& e) {
     skipReason() = e.what();
   }
@@ -45,6 +52,7 @@ void RenderFixture::SetUp() {
   if (!renderer()) EWA_SKIP_UNLESS_CI() << "no OpenGL 4.5 context: " << skipReason();
   context()->makeCurrent();
   renderer()->setPointSizeLimit(1e9f);
+  renderer()->setLaggedTermination(defaultLaggedTermination());  // the context's default
   // The GPU partition, which Auto leaves unused on llvmpipe: the renderer tests hold it (the
   // command-line tests draw with Auto's choice).
   renderer()->setPartition(PartitionMode::Gpu);

@@ -1,16 +1,16 @@
 // Shared set-up for renderer tests: one OSMesa context and splat renderer per test suite.
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <glm/vec4.hpp>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include <glm/vec4.hpp>
-#include <gtest/gtest.h>
-
-#include "gl/shader_library.h"
 #include "core/clip_region.h"
 #include "core/synthetic_volume.h"
+#include "gl/shader_library.h"
 #include "platform/headless_context.h"
 #include "render/lod_renderer.h"
 #include "render/splat_renderer.h"
@@ -26,6 +26,7 @@ class RenderFixture : public ::testing::Test {
   static std::unique_ptr<platform::GlContext>& context();
   static std::unique_ptr<SplatRenderer>& renderer();
   static std::string& skipReason();
+  static bool& defaultLaggedTermination();  // the renderer's own, which tests may change
 };
 
 // A volume of n^3 uint8 voxels with value `inside` where pred(i,j,k) holds and 0 elsewhere.

@@ -128,6 +128,7 @@ TEST_F(SplatVariants, SwitchingVariantsKeepsEveryPicture) {
       first[which] = img.pixels;
       const gl::ShaderLibrary shaders;
       SplatRenderer fresh(shaders);
+      fresh.setPartition(PartitionMode::Cpu);
       fresh.setVolume(vol);
       fresh.setTransferFunction(tf);
       fresh.render(cam, variantSettings(which), size, size);
