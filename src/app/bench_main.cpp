@@ -68,7 +68,7 @@ int run(int argc, char** argv) {
       partitionMs.push_back(renderer.stats().partitionMs);
       drawn = std::max(drawn, renderer.stats().splatsDrawn);
       baseline.setSprites(spriteSizes(renderer, scene.volume, cam, o.render, size, size));
-      bareMs.push_back(baseline.draw(size, size));
+      bareMs.push_back(baseline.draw(size, size, halfFloatSlabs(o.render)));
       cam.orbit(step, 0.0);
     }
     const TimingSummary e = summarize(ewaMs), p = summarize(partitionMs), b = summarize(bareMs);

@@ -80,7 +80,7 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   m.ewa.render(cam, rs, size, size);  // warm-up: classification and upload, not timed
   glFinish();
   m.sprites.setSprites(spriteSizes(m.ewa, scene.volume, cam, rs, size, size));
-  m.sprites.draw(size, size);
+  m.sprites.draw(size, size, halfFloatSlabs(rs));
   RenderSettings sw = rs;
   sw.renderer = RendererKind::ShearWarp;
   m.shearWarp.render(cam, sw, size, size);
@@ -94,7 +94,7 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
     partition.push_back(s.partitionMs);
     splat.push_back(s.splatMs);
     final.push_back(s.compositeMs);
-    sprites.push_back(m.sprites.draw(size, size));
+    sprites.push_back(m.sprites.draw(size, size, halfFloatSlabs(rs)));
     start = BenchClock::now();
     m.shearWarp.render(cam, sw, size, size);
     glFinish();
@@ -129,7 +129,8 @@ int run(int argc, char** argv) {
   bool csv = false, json = false, noVtk = false, orthographic = false;
   RenderSettings settings;  // EWA's: the defaults unless --kernel-width, --cutoff, ...
   std::string classification = classificationModeName(settings.classification.mode),
-              culling = "auto", slabRects = "on", pairs = "on", slabResolution = "auto";
+              culling = "auto", slabRects = "on", pairs = "on", slabResolution = "auto",
+              slabPrecision = "auto";
   app.add_option("--data", data,
                  "Folder with engine/, bonsai/ and cthead/ (default ../shared/data)");
   app.add_option("--volumes", volumes,
@@ -182,6 +183,10 @@ int run(int argc, char** argv) {
                  "EWA: slabs splatted into images as coarse as their kernels allow (auto, "
                  "default) or at full resolution (full)")
       ->check(CLI::IsMember({"auto", "full"}));
+  app.add_option("--slab-precision", slabPrecision,
+                 "EWA: slab images of half floats (half) or floats (float); auto (default): "
+                 "half for kernel widths up to 1. The bare sprites draw into the same")
+      ->check(CLI::IsMember({"auto", "half", "float"}));
   app.add_option("--shader-dir", shaderDir, "Load shaders from this folder (development)");
   addBackendOption(app, backend);
   CLI11_PARSE(app, argc, argv);
@@ -190,6 +195,7 @@ int run(int argc, char** argv) {
   parseOcclusionCulling(culling, &settings.occlusionCulling);
   settings.slabPreintegration = pairs == "on";
   settings.coarseSlabs = slabResolution == "auto";
+  parseSlabPrecision(slabPrecision, &settings.slabPrecision);
 
   CompareReport report;
   report.repeats = repeats;
@@ -217,10 +223,11 @@ int run(int argc, char** argv) {
                     : "");
   std::snprintf(ewaText, sizeof ewaText,
                 "kernel width %.2f, cutoff %g, depth cutoff %g, %s-classification%s%s, "
-                "occlusion culling %s%s%s%s",
+                "%s slab images, occlusion culling %s%s%s%s",
                 settings.kernelWidth, settings.cutoff, settings.depthCutoff, classification.c_str(),
                 classification == "post" && pairs == "off" ? " without slab pre-integration" : "",
                 classification == "post" ? prefilterText : "",
+                halfFloatSlabs(settings) ? "half-float" : "float",
                 ewa.occlusionCulling(settings.occlusionCulling) ? "on" : "off",
                 culling == "auto" ? " (auto)" : "",
                 slabRects == "on" ? "" : ", whole-image slab passes",

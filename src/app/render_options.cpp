@@ -46,6 +46,11 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
                  "read back bilinearly; not with shaded post-classification) or at the "
                  "picture's resolution (full)")
       ->check(CLI::IsMember({"auto", "full"}));
+  app.add_option("--slab-precision", p.slabPrecision,
+                 "Composite: slab images of half floats (half: within a few levels of float, "
+                 "about twice as fast on a GPU) or floats (float); auto (default): half for "
+                 "kernel widths up to 1")
+      ->check(CLI::IsMember({"auto", "half", "float"}));
   app.add_option("--xray-map", p.xrayMap, "X-ray gray: exp (exp(-sum), default) or sum")
       ->check(CLI::IsMember({"exp", "sum"}));
   app.add_option("--xray-scale", s.xrayScale, "X-ray: optical depth multiplied by this (default 1)")
@@ -85,6 +90,7 @@ std::string finishShadingOptions(const RenderOptionText& p, RenderSettings* s) {
   parseClassificationMode(p.classification, &s->classification.mode);
   s->slabPreintegration = p.slabPreintegration == "on";
   s->coarseSlabs = p.slabResolution == "auto";
+  parseSlabPrecision(p.slabPrecision, &s->slabPrecision);
   parsePostNormals(p.postNormals, &s->postNormals);
   if (p.surfaceValue) {
     if (!std::isfinite(*p.surfaceValue)) return "--surface-threshold: not a finite number";

@@ -22,12 +22,15 @@ struct RenderOptionText {
   std::string postNormals = "field";
   std::string occlusionCulling = "auto";
   std::string slabResolution = "auto";
+  std::string slabPrecision = "auto";
   std::optional<double> surfaceValue;
   std::optional<double> surfaceOpacity;
 };
 
-// Adds --classification, --slab-preintegration, --slab-samples, --prefilter, --post-normals, --compositing,
-// --termination, --occlusion-culling, --slab-resolution, --xray-map, --xray-scale, --shading, --ambient, --diffuse,
+// Adds --classification, --slab-preintegration, --slab-samples, --prefilter, --post-normals,
+// --compositing,
+// --termination, --occlusion-culling, --slab-resolution, --xray-map, --xray-scale, --shading,
+// --ambient, --diffuse,
 // --specular, --shininess, --gradient, --surface-threshold, --surface-opacity-threshold,
 // --surface-min-gradient and --surface-opacity to `app`, writing into `settings` and `text`;
 // both must outlive the parse.

@@ -9,18 +9,20 @@ namespace ewa {
 
 namespace {
 
-gl::Texture slabImageTexture(int w, int h) {
-  gl::Texture t = gl::Texture::create2D(GL_RGBA32F, w, h);
+// Half floats where asked: a slab's sums are small (weights of the kernels one slab holds and
+// normalized values), and blending half the bytes is what costs on a GPU.
+gl::Texture slabImageTexture(int w, int h, bool half) {
+  gl::Texture t = gl::Texture::create2D(half ? GL_RGBA16F : GL_RGBA32F, w, h);
   t.setFilter(GL_LINEAR, GL_LINEAR);  // coarser slab images are read bilinearly
   return t;
 }
 
 }  // namespace
 
-void RenderTargets::resize(int w, int h, bool paired, bool quarter, bool normals) {
+void RenderTargets::resize(int w, int h, bool paired, bool quarter, bool normals, bool half) {
   quarter = quarter && paired;
-  const bool fresh = !(w == width && h == height && output);
-  if (fresh) createImages(w, h);
+  const bool fresh = !(w == width && h == height && output && half == halfSlabs_);
+  if (fresh) createImages(w, h, half);
   if (!fresh && paired == pairedSlabs() && quarter == quarters() && normals == normalSums()) return;
   slabOtherFbo = gl::Framebuffer();
   slabOther = gl::Texture();
@@ -31,10 +33,10 @@ void RenderTargets::resize(int w, int h, bool paired, bool quarter, bool normals
     slabNormal = gl::Texture::create2D(GL_RGBA16F, w, h);
     slabNormal.setFilter(GL_LINEAR, GL_LINEAR);  // coarser slab images are read bilinearly
   }
-  if (paired) slabOther = slabImageTexture(w, h);
+  if (paired) slabOther = slabImageTexture(w, h, half);
   if (quarter) {
-    slabBack = slabImageTexture(w, h);
-    slabOtherBack = slabImageTexture(w, h);
+    slabBack = slabImageTexture(w, h, half);
+    slabOtherBack = slabImageTexture(w, h, half);
   }
   slabFbo = slabFramebuffer(slab, slabBack);
   if (paired) slabOtherFbo = slabFramebuffer(slabOther, slabOtherBack);
@@ -51,7 +53,7 @@ gl::Framebuffer RenderTargets::slabFramebuffer(const gl::Texture& image, const g
   return fbo;
 }
 
-void RenderTargets::createImages(int w, int h) {
+void RenderTargets::createImages(int w, int h, bool half) {
   // Say which limit a too-large image breaks, before GL fails with a bare error code.
   GLint maxTexture = 0, maxViewport[2] = {0, 0};
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
@@ -64,7 +66,8 @@ void RenderTargets::createImages(int w, int h) {
                       std::to_string(maxViewport[0]) + "x" + std::to_string(maxViewport[1]) + ")");
   }
   *this = RenderTargets();  // free the old images first: the new ones may be large
-  slab = slabImageTexture(w, h);
+  halfSlabs_ = half;
+  slab = slabImageTexture(w, h, half);
   accum = gl::Texture::create2D(GL_RGBA32F, w, h);
   output = gl::Texture::create2D(GL_RGBA8, w, h);
   stencil = gl::Texture::create2D(GL_DEPTH24_STENCIL8, w, h);

@@ -1,5 +1,4 @@
-// RenderTargets: the float slab, accumulation, stencil and 8-bit output images of one viewport
-// size.
+// RenderTargets: the slab, accumulation, stencil and 8-bit output images of one viewport size.
 #pragma once
 
 #include <cstddef>
@@ -12,7 +11,8 @@ namespace ewa {
 struct RenderTargets {
   int width = 0;
   int height = 0;
-  gl::Texture slab;  // RGBA32F: (sum of colour * optical depth, sum of optical depth)
+  // RGBA16F or RGBA32F (halfSlabs()): (sum of colour * optical depth, sum of optical depth)
+  gl::Texture slab;
   // RGBA16F, post-classified with voxel normals: sum of weight * normal (colour attachment 1 of
   // the slab framebuffers). Absent otherwise: a slab framebuffer's draw buffers are its
   // attachments (gl::Framebuffer::attachColor), so the splats write it and the back halves only
@@ -29,16 +29,18 @@ struct RenderTargets {
   gl::Texture slabOther;
   gl::Framebuffer slabOtherFbo;
   // Paired slabs in quarters: each slab image's back half, (weight * value, weight) of its
-  // third and fourth quarters (RGBA32F, colour attachment 2); the image itself then holds the
+  // third and fourth quarters (as `slab`, colour attachment 2); the image itself then holds the
   // first and second quarters.
   gl::Texture slabBack;
   gl::Texture slabOtherBack;
 
   // (Re)creates the images when the size changes, the second slab image when `pairedSlabs`
   // asks for it, the back halves when `quarters` does and the normal sums when `normalSums`
-  // does (freed when not); throws gl::GlError if incomplete.
+  // does (freed when not); the slab images are half floats when `halfSlabs` says so (all made
+  // again when it changes). Throws gl::GlError if incomplete.
   void resize(int w, int h, bool pairedSlabs = false, bool quarters = false,
-              bool normalSums = false);
+              bool normalSums = false, bool halfSlabs = false);
+  bool halfSlabs() const { return halfSlabs_; }
   bool pairedSlabs() const { return bool(slabOther); }
   bool quarters() const { return bool(slabBack); }
   bool normalSums() const { return bool(slabNormal); }
@@ -46,19 +48,23 @@ struct RenderTargets {
   const gl::Texture& slabImage(int i) const { return i ? slabOther : slab; }
   const gl::Texture& slabBackImage(int i) const { return i ? slabOtherBack : slabBack; }
   gl::Framebuffer& slabTarget(int i) { return i ? slabOtherFbo : slabFbo; }
-  // Bytes the images hold: two RGBA32F (three with paired slabs, five in quarters), one
-  // RGBA8, one depth-stencil (4 bytes) per pixel, and the RGBA16F normal sums if any.
+  // Bytes the images hold: one slab image (two with paired slabs, four in quarters; 8 or 16
+  // bytes a pixel each), the RGBA32F accumulation, one RGBA8, one depth-stencil (4 bytes) per
+  // pixel, and the RGBA16F normal sums if any.
   size_t bytes() const {
+    const size_t slabImage = halfSlabs_ ? 8 : 16;
     return size_t(width) * size_t(height) *
-           (16 + 16 + 4 + 4 + (normalSums() ? 8 : 0) + (pairedSlabs() ? 16 : 0) +
-            (quarters() ? 32 : 0));
+           (slabImage + 16 + 4 + 4 + (normalSums() ? 8 : 0) + (pairedSlabs() ? slabImage : 0) +
+            (quarters() ? 2 * slabImage : 0));
   }
 
  private:
-  void createImages(int w, int h);
+  void createImages(int w, int h, bool halfSlabs);
   // The framebuffer of one slab image: the image, the normal sums and its back half if any,
   // the stencil.
   gl::Framebuffer slabFramebuffer(const gl::Texture& image, const gl::Texture& back);
+
+  bool halfSlabs_ = false;
 };
 
 }  // namespace ewa

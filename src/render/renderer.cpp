@@ -26,6 +26,33 @@ bool parseOcclusionCulling(const std::string& text, OcclusionCulling* mode) {
   return false;
 }
 
+const char* slabPrecisionName(SlabPrecision precision) {
+  switch (precision) {
+    case SlabPrecision::Auto:
+      return "auto";
+    case SlabPrecision::Half:
+      return "half";
+    case SlabPrecision::Float:
+      return "float";
+  }
+  return "?";
+}
+
+bool parseSlabPrecision(const std::string& text, SlabPrecision* precision) {
+  for (SlabPrecision p : {SlabPrecision::Auto, SlabPrecision::Half, SlabPrecision::Float})
+    if (text == slabPrecisionName(p)) {
+      *precision = p;
+      return true;
+    }
+  return false;
+}
+
+bool halfFloatSlabs(const RenderSettings& settings) {
+  if (settings.mode != RenderMode::Composite) return false;
+  if (settings.slabPrecision == SlabPrecision::Auto) return settings.kernelWidth <= 1.0;
+  return settings.slabPrecision == SlabPrecision::Half;
+}
+
 const char* postNormalsName(PostNormals normals) {
   return normals == PostNormals::Field ? "field" : "voxel";
 }

@@ -528,7 +528,8 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   frame_.height = height;
   frame_.pairedSlabs = pairedSlabs(settings);
   frame_.quarters = quarterSlabs(settings);
-  targets_.resize(width, height, frame_.pairedSlabs, frame_.quarters, voxelNormalSums(settings));
+  targets_.resize(width, height, frame_.pairedSlabs, frame_.quarters, voxelNormalSums(settings),
+                  halfFloatSlabs(settings));
   stats_ = RenderStats{};
   const GLfloat zero[4] = {0, 0, 0, 0};
   glDisable(GL_SCISSOR_TEST);  // the whole images are cleared

@@ -311,7 +311,7 @@ SlabPassVariant SplatRenderer::slabPassVariant(const RenderSettings& settings, b
 void SplatRenderer::prepare(const RenderSettings& settings, int width, int height) {
   if (width > 0 && height > 0)
     targets_.resize(width, height, pairedSlabs(settings), quarterSlabs(settings),
-                    voxelNormalSums(settings));
+                    voxelNormalSums(settings), halfFloatSlabs(settings));
   splatPrograms_.select(splatVariant(settings, false));
   if (settings.mode != RenderMode::Composite) return;
   slabPrograms_.select(slabPassVariant(settings, false));

@@ -17,9 +17,10 @@ void SpriteBaseline::setSprites(const std::vector<glm::vec3>& sprites) {
   vao_.setVertexBuffer(0, buffer_, 0, sizeof(glm::vec3));
 }
 
-double SpriteBaseline::draw(int width, int height) {
-  if (target_.width() != width || target_.height() != height) {
-    target_ = gl::Texture::create2D(GL_RGBA32F, width, height);
+double SpriteBaseline::draw(int width, int height, bool halfFloat) {
+  if (target_.width() != width || target_.height() != height || halfFloat_ != halfFloat) {
+    halfFloat_ = halfFloat;
+    target_ = gl::Texture::create2D(halfFloat ? GL_RGBA16F : GL_RGBA32F, width, height);
     fbo_ = gl::Framebuffer::create();
     fbo_.attachColor(0, target_);
     fbo_.checkComplete();
@@ -40,7 +41,8 @@ double SpriteBaseline::draw(int width, int height) {
   glDisable(GL_BLEND);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glFinish();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
 }
 
 }  // namespace ewa

@@ -34,10 +34,11 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
   const std::string context = doc["context"].get<std::string>();
   const bool software = context.find("llvmpipe") != std::string::npos ||
                         context.find("softpipe") != std::string::npos;
-  EXPECT_EQ(doc["ewa_settings"],
-            std::string("kernel width 0.70, cutoff 5, depth cutoff 1, post-classification, "
-                        "prefilter 0.05, 4 samples a slab, occlusion culling ") +
-                (software ? "off" : "on") + " (auto)")
+  EXPECT_EQ(
+      doc["ewa_settings"],
+      std::string("kernel width 0.70, cutoff 5, depth cutoff 1, post-classification, "
+                  "prefilter 0.05, 4 samples a slab, half-float slab images, occlusion culling ") +
+          (software ? "off" : "on") + " (auto)")
       << context;
   EXPECT_NE(doc["context"].get<std::string>().find("OpenGL"), std::string::npos) << doc["context"];
   EXPECT_NE(doc["command"].get<std::string>().find("--synthetic sphere:24"), std::string::npos);
@@ -77,7 +78,7 @@ TEST(CompareCli, KernelWidthCutoffsAndClassificationReachEwa) {
   const json doc = json::parse(r.out);
   EXPECT_EQ(doc["ewa_settings"],
             "kernel width 0.55, cutoff 5, depth cutoff 2.25, post-classification, prefilter 0.1, "
-            "2 samples a slab, occlusion culling off, whole-image slab passes, "
+            "2 samples a slab, half-float slab images, occlusion culling off, whole-image slab passes, "
             "full-resolution slabs");
   ASSERT_EQ(doc["rows"].size(), 1u) << r.out;
   EXPECT_GT(doc["rows"][0]["ewa_ms"].get<double>(), 0.0);
