@@ -138,6 +138,17 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
     ImGui::SetTooltip(
         "Post-classified, pre-integrated, kernel width 0.7, cutoff 5, prefilter 0.05: nearest "
         "to a ray caster close up (ewaview --close-up)");
+  int precision = int(settings.slabPrecision);
+  const char* precisions[] = {"auto", "half", "float"};
+  ImGui::SetNextItemWidth(90.0f);
+  if (ImGui::Combo("slab floats", &precision, precisions, 3)) {
+    settings.slabPrecision = SlabPrecision(precision);
+    changed = true;
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Slab images of half floats (about twice as fast on a GPU, within a few levels) or "
+        "floats; auto: half for kernel widths up to 1 (ewaview --slab-precision)");
   ImGui::BeginDisabled(!post);
   changed |=
       sliderDouble("prefilter", &settings.classification.prefilter, 0.0, kMaxPrefilter, "%.3f");
