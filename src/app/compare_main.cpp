@@ -185,7 +185,8 @@ int run(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "full"}));
   app.add_option("--slab-precision", slabPrecision,
                  "EWA: slab images of half floats (half) or floats (float); auto (default): "
-                 "half for kernel widths up to 1. The bare sprites draw into the same")
+                 "half for kernel widths up to 1 unless shaded and post-classified. The bare "
+                 "sprites draw into the same")
       ->check(CLI::IsMember({"auto", "half", "float"}));
   app.add_option("--shader-dir", shaderDir, "Load shaders from this folder (development)");
   addBackendOption(app, backend);

@@ -49,7 +49,7 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
   app.add_option("--slab-precision", p.slabPrecision,
                  "Composite: slab images of half floats (half: within a few levels of float, "
                  "about twice as fast on a GPU) or floats (float); auto (default): half for "
-                 "kernel widths up to 1")
+                 "kernel widths up to 1 unless shaded and post-classified")
       ->check(CLI::IsMember({"auto", "half", "float"}));
   app.add_option("--xray-map", p.xrayMap, "X-ray gray: exp (exp(-sum), default) or sum")
       ->check(CLI::IsMember({"exp", "sum"}));

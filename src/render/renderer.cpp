@@ -49,7 +49,8 @@ bool parseSlabPrecision(const std::string& text, SlabPrecision* precision) {
 
 bool halfFloatSlabs(const RenderSettings& settings) {
   if (settings.mode != RenderMode::Composite) return false;
-  if (settings.slabPrecision == SlabPrecision::Auto) return settings.kernelWidth <= 1.0;
+  if (settings.slabPrecision == SlabPrecision::Auto)
+    return settings.kernelWidth <= 1.0 && !(postClassified(settings) && settings.lighting.enabled);
   return settings.slabPrecision == SlabPrecision::Half;
 }
 

@@ -109,7 +109,9 @@ struct RenderSettings {
   // Composite: slab images of half floats (RGBA16F) or floats. Auto: half floats for kernels
   // at most one spacing wide (the default's 0.7), floats for wider ones, which overlap so many
   // kernels in a pixel of one slab that the smallest contributions round away (a homogeneous
-  // medium's opacity 1-4% low at width 1.6). Within a few levels of the floats' pictures
+  // medium's opacity 1-4% low at width 1.6), and floats for shaded post-classification, whose
+  // normals are differences of the slabs' values (half floats' rounding in them moved shaded
+  // pixels by up to 7 levels). Otherwise within a few levels of the floats' pictures
   // (README, "Slab image precision"), while blending half the bytes made frames 2.2-2.6x as
   // fast on a GPU. X-ray and MIP, whose one image sums or takes the maximum over the whole
   // volume, always use floats.

@@ -148,7 +148,8 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "Slab images of half floats (about twice as fast on a GPU, within a few levels) or "
-        "floats; auto: half for kernel widths up to 1 (ewaview --slab-precision)");
+        "floats; auto: half for kernel widths up to 1 unless shaded and post-classified "
+        "(ewaview --slab-precision)");
   ImGui::BeginDisabled(!post);
   changed |=
       sliderDouble("prefilter", &settings.classification.prefilter, 0.0, kMaxPrefilter, "%.3f");

@@ -315,8 +315,7 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   settings.slabPreintegration = true;
   settings.slabSamples = 2;
   renderer()->render(cam, settings, 96, 64);
-  EXPECT_EQ(renderer()->stats().gpuBytes - single,
-            size_t(96 * 64) * 8 + 256 * 256 * 16 + 4096 * 4);
+  EXPECT_EQ(renderer()->stats().gpuBytes - single, size_t(96 * 64) * 8 + 256 * 256 * 16 + 4096 * 4);
   settings.slabSamples = 4;
   renderer()->render(cam, settings, 96, 64);
   EXPECT_EQ(renderer()->stats().gpuBytes - single,
@@ -329,6 +328,44 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   settings.slabPreintegration = false;
   renderer()->render(cam, settings, 96, 64);
   EXPECT_EQ(renderer()->stats().gpuBytes, single);
+}
+
+}  // namespace
+}  // namespace ewa::test
+
+namespace ewa::test {
+namespace {
+
+// Auto takes half-float slab images only where they keep the pictures (README, "Slab image
+// precision"): narrow kernels, not shaded post-classification (normals from value
+// differences), never X-ray or MIP; half and float are taken as asked in the composite mode.
+TEST(SlabPrecision, AutoTakesHalfFloatsOnlyWhereTheyHold) {
+  RenderSettings s;  // post-classified, kernel width 0.7, unshaded
+  EXPECT_TRUE(halfFloatSlabs(s));
+  s.kernelWidth = 1.0;
+  EXPECT_TRUE(halfFloatSlabs(s));
+  s.kernelWidth = 1.6;
+  EXPECT_FALSE(halfFloatSlabs(s));
+  s.slabPrecision = SlabPrecision::Half;
+  EXPECT_TRUE(halfFloatSlabs(s));
+  s = RenderSettings{};
+  s.lighting.enabled = true;
+  EXPECT_FALSE(halfFloatSlabs(s));
+  s.classification.mode = ClassificationMode::Pre;  // shaded per splat: the sums hold colours
+  EXPECT_TRUE(halfFloatSlabs(s));
+  s.slabPrecision = SlabPrecision::Float;
+  EXPECT_FALSE(halfFloatSlabs(s));
+  s = RenderSettings{};
+  s.slabPrecision = SlabPrecision::Half;
+  for (RenderMode m : {RenderMode::XRay, RenderMode::Mip}) {
+    s.mode = m;
+    EXPECT_FALSE(halfFloatSlabs(s));
+  }
+  SlabPrecision p = SlabPrecision::Auto;
+  EXPECT_TRUE(parseSlabPrecision("float", &p));
+  EXPECT_EQ(p, SlabPrecision::Float);
+  EXPECT_FALSE(parseSlabPrecision("double", &p));
+  EXPECT_STREQ(slabPrecisionName(SlabPrecision::Half), "half");
 }
 
 }  // namespace
