@@ -78,8 +78,8 @@ TEST(CompareCli, KernelWidthCutoffsAndClassificationReachEwa) {
   const json doc = json::parse(r.out);
   EXPECT_EQ(doc["ewa_settings"],
             "kernel width 0.55, cutoff 5, depth cutoff 2.25, post-classification, prefilter 0.1, "
-            "2 samples a slab, half-float slab images, occlusion culling off, whole-image slab passes, "
-            "full-resolution slabs");
+            "2 samples a slab, half-float slab images, occlusion culling off, "
+            "whole-image slab passes, full-resolution slabs");
   ASSERT_EQ(doc["rows"].size(), 1u) << r.out;
   EXPECT_GT(doc["rows"][0]["ewa_ms"].get<double>(), 0.0);
   EXPECT_EQ(doc["rows"][0]["culled_percent"].get<double>(), 0.0);

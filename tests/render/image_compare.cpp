@@ -35,6 +35,16 @@ std::string testOutputDir() {
   return dir;
 }
 
+int maxDifference(const Image8& a, const Image8& b) {
+  EXPECT_EQ(a.width, b.width);
+  EXPECT_EQ(a.height, b.height);
+  if (a.pixels.size() != b.pixels.size()) return 255;
+  int worst = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i)
+    worst = std::max(worst, std::abs(int(a.pixels[i]) - int(b.pixels[i])));
+  return worst;
+}
+
 Rgb8 backgroundRgb8(double r, double g, double b) {
   auto q = [](double v) { return uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
   return {q(r), q(g), q(b)};

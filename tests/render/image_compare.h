@@ -26,6 +26,10 @@ struct ImageDifference {
 ImageDifference compareCovered(const Image8& a, const Image8& b, const Rgb8& background,
                                int pixelTolerance);
 
+// The largest absolute difference of one channel between two pictures of one size, 0..255
+// (255, and a failed expectation, when their sizes differ).
+int maxDifference(const Image8& a, const Image8& b);
+
 // Reads tests/reference/<name>.png; throws std::runtime_error when absent or unreadable.
 Image8 readReference(const std::string& name);
 

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <glm/geometric.hpp>
 
 #include "core/synthetic_volume.h"
@@ -214,13 +213,7 @@ TEST_F(LodRendererTest, WarmUpClassifiesEachUndrawnLevelOnceAndKeepsThePicture) 
       EXPECT_GT(cold.lod.last().stats().classifyMs, 0.0) << level;
     // Within a level: the GPU partition (Auto's choice on hardware GL) orders a slab's entries
     // differently from frame to frame, and the sums' rounding with them.
-    const Image8 coldImage = cold.lod.last().readImage();
-    const Image8& warmImage = warmed[size_t(level - 1)];
-    ASSERT_EQ(coldImage.pixels.size(), warmImage.pixels.size());
-    int worst = 0;
-    for (size_t i = 0; i < coldImage.pixels.size(); ++i)
-      worst = std::max(worst, std::abs(int(coldImage.pixels[i]) - int(warmImage.pixels[i])));
-    EXPECT_LE(worst, 1) << level;
+    EXPECT_LE(maxDifference(cold.lod.last().readImage(), warmed[size_t(level - 1)]), 1) << level;
   }
 
   // A new volume starts over; a transfer function changed while the worker classifies makes

@@ -24,16 +24,6 @@ class ProgressiveFrame : public RenderFixture {};
 // entries; X-ray and MIP: the smallest range of their one slab).
 constexpr double kTinyBudgetMs = 1e-6;
 
-int maxDifference(const Image8& a, const Image8& b) {
-  EXPECT_EQ(a.width, b.width);
-  EXPECT_EQ(a.height, b.height);
-  if (a.pixels.size() != b.pixels.size()) return 255;
-  int worst = 0;
-  for (size_t i = 0; i < a.pixels.size(); ++i)
-    worst = std::max(worst, std::abs(int(a.pixels[i]) - int(b.pixels[i])));
-  return worst;
-}
-
 double meanValue(const Image8& a) {
   double sum = 0.0;
   for (uint8_t v : a.pixels) sum += v;

@@ -330,12 +330,6 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   EXPECT_EQ(renderer()->stats().gpuBytes, single);
 }
 
-}  // namespace
-}  // namespace ewa::test
-
-namespace ewa::test {
-namespace {
-
 // Auto takes half-float slab images only where they keep the pictures (README, "Slab image
 // precision"): narrow kernels, not shaded post-classification (normals from value
 // differences), never X-ray or MIP; half and float are taken as asked in the composite mode.
