@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/named_values.h"
+
 namespace ewa {
 
 namespace {
@@ -31,28 +33,17 @@ double windowedGaussian(double r, double cutoff) {
   return std::exp(-0.5 * r) * t * t;
 }
 
+namespace {
+constexpr NamedValue<FilterMode> kFilterModeNames[] = {
+    {FilterMode::Ewa, "ewa"}, {FilterMode::Plain, "plain"}, {FilterMode::Swan, "swan"}};
+}  // namespace
+
 const char* filterModeName(FilterMode mode) {
-  switch (mode) {
-    case FilterMode::Ewa:
-      return "ewa";
-    case FilterMode::Plain:
-      return "plain";
-    case FilterMode::Swan:
-      return "swan";
-  }
-  return "?";
+  return nameIn(kFilterModeNames, mode);
 }
 
 bool parseFilterMode(const std::string& text, FilterMode* mode) {
-  if (text == "ewa")
-    *mode = FilterMode::Ewa;
-  else if (text == "plain")
-    *mode = FilterMode::Plain;
-  else if (text == "swan")
-    *mode = FilterMode::Swan;
-  else
-    return false;
-  return true;
+  return parseIn(kFilterModeNames, text, mode);
 }
 
 glm::dvec3 kernelSigma(const glm::dvec3& spacing, double kernelWidth) {

@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 
+#include "core/named_values.h"
+
 namespace ewa {
 
 namespace {
@@ -107,20 +109,16 @@ void slicePositions(const Volume& volume, int64_t k, double lo, double width,
   }
 }
 
+constexpr NamedValue<ClassificationMode> kClassificationModeNames[] = {
+    {ClassificationMode::Pre, "pre"}, {ClassificationMode::Post, "post"}};
 }  // namespace
 
 const char* classificationModeName(ClassificationMode mode) {
-  return mode == ClassificationMode::Post ? "post" : "pre";
+  return nameIn(kClassificationModeNames, mode);
 }
 
 bool parseClassificationMode(const std::string& text, ClassificationMode* mode) {
-  if (text == "pre")
-    *mode = ClassificationMode::Pre;
-  else if (text == "post")
-    *mode = ClassificationMode::Post;
-  else
-    return false;
-  return true;
+  return parseIn(kClassificationModeNames, text, mode);
 }
 
 int postClassificationMargin(double cutoff, double kernelWidth) {

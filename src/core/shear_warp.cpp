@@ -5,6 +5,7 @@
 #include <chrono>
 #include <thread>
 
+#include "core/named_values.h"
 #include "core/opacity_correction.h"
 #include "core/volume_orientation.h"
 
@@ -17,34 +18,29 @@ double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+constexpr NamedValue<TableLookup> kTableLookupNames[] = {{TableLookup::Nearest, "nearest"},
+                                                         {TableLookup::Bilinear, "bilinear"}};
 }  // namespace
 
 const char* tableLookupName(TableLookup lookup) {
-  return lookup == TableLookup::Bilinear ? "bilinear" : "nearest";
+  return nameIn(kTableLookupNames, lookup);
 }
 
 bool parseTableLookup(const std::string& text, TableLookup* lookup) {
-  if (text == "nearest")
-    *lookup = TableLookup::Nearest;
-  else if (text == "bilinear")
-    *lookup = TableLookup::Bilinear;
-  else
-    return false;
-  return true;
+  return parseIn(kTableLookupNames, text, lookup);
 }
 
+namespace {
+constexpr NamedValue<BufferSlices> kBufferSlicesNames[] = {{BufferSlices::Slice, "slice"},
+                                                           {BufferSlices::Image, "image"}};
+}  // namespace
+
 const char* bufferSlicesName(BufferSlices buffers) {
-  return buffers == BufferSlices::Image ? "image" : "slice";
+  return nameIn(kBufferSlicesNames, buffers);
 }
 
 bool parseBufferSlices(const std::string& text, BufferSlices* buffers) {
-  if (text == "slice")
-    *buffers = BufferSlices::Slice;
-  else if (text == "image")
-    *buffers = BufferSlices::Image;
-  else
-    return false;
-  return true;
+  return parseIn(kBufferSlicesNames, text, buffers);
 }
 
 int shearWarpThreads(const ShearWarpSettings& settings) {
@@ -154,7 +150,8 @@ void ShearWarp::render(const Camera& camera, const ShearWarpSettings& settings, 
   prepare(size);
   // Shear-warp works in voxel space: the volume's own frame under the rigidly moved camera.
   const ShearWarpFactorization view =
-      factorizeView(cameraInVolumeFrame(camera, *volume_), volume_->dims(), volume_->spacing(), volume_->origin(), width, height);
+      factorizeView(cameraInVolumeFrame(camera, *volume_), volume_->dims(), volume_->spacing(),
+                    volume_->origin(), width, height);
   stats_.principal = view.principal;
   stats_.sampleRatio = view.sampleRatio;
   stats_.perspectiveAsParallel = view.perspectiveAsParallel;

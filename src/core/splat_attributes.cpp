@@ -7,6 +7,8 @@
 #include <glm/packing.hpp>
 #include <thread>
 
+#include "core/named_values.h"
+
 namespace ewa {
 
 namespace {
@@ -37,20 +39,16 @@ double difference(const Volume& v, int64_t i, int64_t j, int64_t k, int axis) {
   return (vh - vl) / (double(hi - lo) * v.spacing()[axis]);
 }
 
+constexpr NamedValue<GradientMode> kGradientModeNames[] = {{GradientMode::Central, "central"},
+                                                           {GradientMode::Smooth, "smooth"}};
 }  // namespace
 
 const char* gradientModeName(GradientMode mode) {
-  return mode == GradientMode::Smooth ? "smooth" : "central";
+  return nameIn(kGradientModeNames, mode);
 }
 
 bool parseGradientMode(const std::string& text, GradientMode* mode) {
-  if (text == "central")
-    *mode = GradientMode::Central;
-  else if (text == "smooth")
-    *mode = GradientMode::Smooth;
-  else
-    return false;
-  return true;
+  return parseIn(kGradientModeNames, text, mode);
 }
 
 PackedAttributes packAttributes(const glm::dvec3& n, bool surface, double offset) {

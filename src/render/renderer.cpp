@@ -3,48 +3,83 @@
 
 #include <algorithm>
 
+#include "core/named_values.h"
+
 namespace ewa {
 
+namespace {
+
+// Each enum's names (named_values.h): the first name of a value is the one printed.
+constexpr NamedValue<OcclusionCulling> kOcclusionCulling[] = {
+    {OcclusionCulling::Auto, "auto"}, {OcclusionCulling::On, "on"}, {OcclusionCulling::Off, "off"}};
+constexpr NamedValue<SlabPrecision> kSlabPrecision[] = {
+    {SlabPrecision::Auto, "auto"}, {SlabPrecision::Half, "half"}, {SlabPrecision::Float, "float"}};
+constexpr NamedValue<PostNormals> kPostNormals[] = {{PostNormals::Field, "field"},
+                                                    {PostNormals::Voxel, "voxel"}};
+constexpr NamedValue<RenderMode> kRenderMode[] = {
+    {RenderMode::Composite, "composite"}, {RenderMode::XRay, "xray"}, {RenderMode::Mip, "mip"}};
+constexpr NamedValue<CompositeOrder> kCompositeOrder[] = {
+    {CompositeOrder::FrontToBack, "front-to-back"}, {CompositeOrder::BackToFront, "back-to-front"}};
+constexpr NamedValue<XRayMap> kXRayMap[] = {{XRayMap::Attenuation, "exp"}, {XRayMap::Sum, "sum"}};
+constexpr NamedValue<RendererKind> kRendererKind[] = {{RendererKind::Splat, "splat"},
+                                                      {RendererKind::ShearWarp, "shearwarp"}};
+
+}  // namespace
+
 const char* occlusionCullingName(OcclusionCulling mode) {
-  switch (mode) {
-    case OcclusionCulling::Auto:
-      return "auto";
-    case OcclusionCulling::On:
-      return "on";
-    case OcclusionCulling::Off:
-      return "off";
-  }
-  return "?";
+  return nameIn(kOcclusionCulling, mode);
 }
 
 bool parseOcclusionCulling(const std::string& text, OcclusionCulling* mode) {
-  for (OcclusionCulling m : {OcclusionCulling::Auto, OcclusionCulling::On, OcclusionCulling::Off})
-    if (text == occlusionCullingName(m)) {
-      *mode = m;
-      return true;
-    }
-  return false;
+  return parseIn(kOcclusionCulling, text, mode);
 }
 
 const char* slabPrecisionName(SlabPrecision precision) {
-  switch (precision) {
-    case SlabPrecision::Auto:
-      return "auto";
-    case SlabPrecision::Half:
-      return "half";
-    case SlabPrecision::Float:
-      return "float";
-  }
-  return "?";
+  return nameIn(kSlabPrecision, precision);
 }
 
 bool parseSlabPrecision(const std::string& text, SlabPrecision* precision) {
-  for (SlabPrecision p : {SlabPrecision::Auto, SlabPrecision::Half, SlabPrecision::Float})
-    if (text == slabPrecisionName(p)) {
-      *precision = p;
-      return true;
-    }
-  return false;
+  return parseIn(kSlabPrecision, text, precision);
+}
+
+const char* postNormalsName(PostNormals normals) {
+  return nameIn(kPostNormals, normals);
+}
+
+bool parsePostNormals(const std::string& text, PostNormals* normals) {
+  return parseIn(kPostNormals, text, normals);
+}
+
+const char* renderModeName(RenderMode mode) {
+  return nameIn(kRenderMode, mode);
+}
+
+bool parseRenderMode(const std::string& text, RenderMode* mode) {
+  return parseIn(kRenderMode, text, mode);
+}
+
+const char* compositeOrderName(CompositeOrder order) {
+  return nameIn(kCompositeOrder, order);
+}
+
+bool parseCompositeOrder(const std::string& text, CompositeOrder* order) {
+  return parseIn(kCompositeOrder, text, order);
+}
+
+const char* xrayMapName(XRayMap map) {
+  return nameIn(kXRayMap, map);
+}
+
+bool parseXRayMap(const std::string& text, XRayMap* map) {
+  return parseIn(kXRayMap, text, map);
+}
+
+const char* rendererKindName(RendererKind kind) {
+  return nameIn(kRendererKind, kind);
+}
+
+bool parseRendererKind(const std::string& text, RendererKind* kind) {
+  return parseIn(kRendererKind, text, kind);
 }
 
 bool halfFloatSlabs(const RenderSettings& settings) {
@@ -52,31 +87,6 @@ bool halfFloatSlabs(const RenderSettings& settings) {
   if (settings.slabPrecision == SlabPrecision::Auto)
     return settings.kernelWidth <= 1.0 && !(postClassified(settings) && settings.lighting.enabled);
   return settings.slabPrecision == SlabPrecision::Half;
-}
-
-const char* postNormalsName(PostNormals normals) {
-  return normals == PostNormals::Field ? "field" : "voxel";
-}
-
-bool parsePostNormals(const std::string& text, PostNormals* normals) {
-  for (PostNormals n : {PostNormals::Field, PostNormals::Voxel})
-    if (text == postNormalsName(n)) {
-      *normals = n;
-      return true;
-    }
-  return false;
-}
-
-const char* renderModeName(RenderMode mode) {
-  switch (mode) {
-    case RenderMode::Composite:
-      return "composite";
-    case RenderMode::XRay:
-      return "xray";
-    case RenderMode::Mip:
-      return "mip";
-  }
-  return "?";
 }
 
 void applyCloseUpSettings(RenderSettings* settings) {
@@ -125,50 +135,6 @@ Classification splatClassification(const RenderSettings& settings) {
   return c;
 }
 
-bool parseRenderMode(const std::string& text, RenderMode* mode) {
-  if (text == "composite")
-    *mode = RenderMode::Composite;
-  else if (text == "xray")
-    *mode = RenderMode::XRay;
-  else if (text == "mip")
-    *mode = RenderMode::Mip;
-  else
-    return false;
-  return true;
-}
-
-const char* compositeOrderName(CompositeOrder order) {
-  return order == CompositeOrder::BackToFront ? "back-to-front" : "front-to-back";
-}
-
-bool parseCompositeOrder(const std::string& text, CompositeOrder* order) {
-  if (text == "front-to-back")
-    *order = CompositeOrder::FrontToBack;
-  else if (text == "back-to-front")
-    *order = CompositeOrder::BackToFront;
-  else
-    return false;
-  return true;
-}
-
-const char* xrayMapName(XRayMap map) {
-  return map == XRayMap::Sum ? "sum" : "exp";
-}
-
-bool parseXRayMap(const std::string& text, XRayMap* map) {
-  if (text == "exp")
-    *map = XRayMap::Attenuation;
-  else if (text == "sum")
-    *map = XRayMap::Sum;
-  else
-    return false;
-  return true;
-}
-
-const char* rendererKindName(RendererKind kind) {
-  return kind == RendererKind::ShearWarp ? "shearwarp" : "splat";
-}
-
 void Renderer::beginFrame(const Camera& camera, const RenderSettings& settings, int width,
                           int height) {
   pending_ = PendingFrame{camera, settings, width, height};
@@ -184,16 +150,6 @@ bool Renderer::stepFrame(double /*budgetMs*/) {
 
 double Renderer::frameProgress() const {
   return pending_ ? 0.0 : 1.0;
-}
-
-bool parseRendererKind(const std::string& text, RendererKind* kind) {
-  if (text == "splat")
-    *kind = RendererKind::Splat;
-  else if (text == "shearwarp")
-    *kind = RendererKind::ShearWarp;
-  else
-    return false;
-  return true;
 }
 
 }  // namespace ewa

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/clip_share.h"
+#include "core/named_values.h"
 #include "gl/gl_error.h"
 #include "render/clip_uniforms.h"
 
@@ -17,27 +18,16 @@ namespace ewa {
 
 namespace {
 constexpr int kTransferSamples = 4096;
+constexpr NamedValue<PartitionMode> kPartitionModeNames[] = {
+    {PartitionMode::Auto, "auto"}, {PartitionMode::Gpu, "gpu"}, {PartitionMode::Cpu, "cpu"}};
 }  // namespace
 
 const char* partitionModeName(PartitionMode mode) {
-  switch (mode) {
-    case PartitionMode::Auto:
-      return "auto";
-    case PartitionMode::Gpu:
-      return "gpu";
-    case PartitionMode::Cpu:
-      return "cpu";
-  }
-  return "?";
+  return nameIn(kPartitionModeNames, mode);
 }
 
 bool parsePartitionMode(const std::string& text, PartitionMode* mode) {
-  for (PartitionMode m : {PartitionMode::Auto, PartitionMode::Gpu, PartitionMode::Cpu})
-    if (text == partitionModeName(m)) {
-      *mode = m;
-      return true;
-    }
-  return false;
+  return parseIn(kPartitionModeNames, text, mode);
 }
 
 SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
