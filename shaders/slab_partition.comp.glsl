@@ -1,8 +1,9 @@
 // The slab partition on the GPU, the mirror of src/core/slab_partition.cpp in four passes
-// chosen by a define: EXTENT_PASS (each splat's depth extent, the range and counts of all),
-// COUNT_PASS (splats per slab), SCAN_PASS (first entries, cursors and indirect draw commands)
-// and SCATTER_PASS (the order list). Depths are doubles, as in the C++, so both put every
-// kernel in the same slabs.
+// chosen by a define: EXTENT_PASS (the range and counts of all splats' depth extents),
+// COUNT_PASS (splats per slab), SCAN_PASS (first entries, cursors, indirect draw commands and
+// the number of entries) and SCATTER_PASS (the order list). Each per-splat pass forms the
+// splat's depth extent again from its record (splatExtent) rather than keep 8 bytes a splat
+// between passes. Depths are doubles, as in the C++, so both put every kernel in the same slabs.
 #define REACH_FLOAT double
 #include "kernel_reach.glsl"
 
@@ -13,9 +14,8 @@ layout(std430, binding = 0) readonly buffer Splats { uvec2 splats[]; };
 layout(std430, binding = 1) buffer Order { uint order[]; };
 layout(std430, binding = 2) readonly buffer Attributes { uvec2 attributes[]; };
 layout(std430, binding = 3) buffer SlabFirst { uint slabFirst[]; };
-layout(std430, binding = 4) buffer Extents { vec2 extents[]; };  // float lo, hi; NaN: culled
-// Ordered bits of the smallest lo, largest hi and nearest centre; splats listed; a bound on
-// the entries (each splat's extent in slabs, rounded up, plus one).
+// Ordered bits of the smallest lo, largest hi and nearest centre; splats listed; the entries
+// of the order list (written by the scan pass).
 layout(std430, binding = 5) buffer Range { uint rangeLo, rangeHi, rangeNearest, rangeSplats,
                                            rangeEntries; };
 layout(std430, binding = 6) buffer Cursor { uint cursor[]; };  // counts, then next free entry
@@ -42,7 +42,7 @@ uint slabOf(float d) {
   return min(uSlabCount - 1u, uint(max(0.0lf, (double(d) - uLo) * uScale)));
 }
 
-#if defined(EXTENT_PASS)
+#if !defined(SCAN_PASS)
 layout(local_size_x = 256) in;
 
 uniform double uD0;          // depth = uD0 + i uDi + j uDj + k uDk
@@ -52,7 +52,6 @@ uniform double uVolumeVariance;
 uniform dmat3 uRotation;     // world to camera
 uniform dvec3 uSigma;       // kernel standard deviations per axis (kernelSigma)
 uniform double uCullDepth;
-uniform double uThickness;
 uniform bool uSurfaces;      // attributes are uploaded and hold surface splats
 uniform double uCutoff;
 uniform double uDepthCutoff;  // KernelReach::depthCutoff
@@ -64,7 +63,39 @@ uniform bool uOrthographic;
 uniform double uFocalPixels;
 uniform double uPixelsPerUnit;
 
-shared uint groupLo, groupHi, groupNearest, groupSplats, groupEntries;
+// Splat m's depth extent (float near and far depth) and centre depth into e and centre; false
+// where it is culled (its centre at or nearer than the near cull). The same code in every pass,
+// so they all place a splat alike.
+bool splatExtent(uint m, out vec2 e, out double centre) {
+  uvec2 s = splats[m];
+  precise double d = uD0 + double(s.x & 0xffffu) * uDijk.x + double(s.x >> 16) * uDijk.y +
+                     double(s.y & 0xffffu) * uDijk.z;
+  double variance = uVolumeVariance;
+  uvec2 at = uSurfaces ? attributes[m] : uvec2(0u);  // no surfaces: none uploaded
+  if ((at.y >> 16) != 0u) {
+    vec2 xy = unpackHalf2x16(at.x), zk = unpackHalf2x16(at.y);
+    if (zk.y >= 1.0) {
+      dvec3 n = dvec3(xy.x, xy.y, zk.x);
+      precise double shift = dot(uRow, n) * (double(zk.y) - 3.0) * uMinSpacing;
+      d += shift;
+      dmat3 p = dmat3(1.0) - outerProduct(n, n);
+      dmat3 v = dmat3(dvec3(uSigma.x * uSigma.x, 0, 0), dvec3(0, uSigma.y * uSigma.y, 0),
+                      dvec3(0, 0, uSigma.z * uSigma.z));
+      variance = (uRotation * (p * v * p) * transpose(uRotation))[2][2];
+    }
+  }
+  centre = d;
+  if (!(d > uCullDepth)) return false;
+  KernelReach k = KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uSwanSpacing, uSwan,
+                              uOrthographic, uFocalPixels, uPixelsPerUnit);
+  precise double radius = depthReach(k, variance, d);
+  e = vec2(float(d - radius), float(d + radius));
+  return true;
+}
+#endif
+
+#if defined(EXTENT_PASS)
+shared uint groupLo, groupHi, groupNearest, groupSplats;
 
 void main() {
   if (gl_LocalInvocationIndex == 0u) {
@@ -72,42 +103,16 @@ void main() {
     groupHi = 0u;
     groupNearest = 0xffffffffu;
     groupSplats = 0u;
-    groupEntries = 0u;
   }
   barrier();
   uint m = splatIndex();
-  if (m < uCount) {
-    uvec2 s = splats[m];
-    precise double d = uD0 + double(s.x & 0xffffu) * uDijk.x + double(s.x >> 16) * uDijk.y +
-                       double(s.y & 0xffffu) * uDijk.z;
-    double variance = uVolumeVariance;
-    uvec2 at = uSurfaces ? attributes[m] : uvec2(0u);  // no surfaces: none uploaded
-    if ((at.y >> 16) != 0u) {
-      vec2 xy = unpackHalf2x16(at.x), zk = unpackHalf2x16(at.y);
-      if (zk.y >= 1.0) {
-        dvec3 n = dvec3(xy.x, xy.y, zk.x);
-        precise double shift = dot(uRow, n) * (double(zk.y) - 3.0) * uMinSpacing;
-        d += shift;
-        dmat3 p = dmat3(1.0) - outerProduct(n, n);
-        dmat3 v = dmat3(dvec3(uSigma.x * uSigma.x, 0, 0), dvec3(0, uSigma.y * uSigma.y, 0),
-                        dvec3(0, 0, uSigma.z * uSigma.z));
-        variance = (uRotation * (p * v * p) * transpose(uRotation))[2][2];
-      }
-    }
-    if (!(d > uCullDepth)) {
-      extents[m] = vec2(uintBitsToFloat(0x7fc00000u));
-    } else {
-      KernelReach k = KernelReach(uCutoff, uDepthCutoff, uMaxSigma, uSwanSpacing, uSwan,
-                                  uOrthographic, uFocalPixels, uPixelsPerUnit);
-      double radius = depthReach(k, variance, d);
-      vec2 e = vec2(float(d - radius), float(d + radius));
-      extents[m] = e;
-      atomicMin(groupLo, orderedBits(e.x));
-      atomicMax(groupHi, orderedBits(e.y));
-      atomicMin(groupNearest, orderedBits(float(d)));
-      atomicAdd(groupSplats, 1u);
-      atomicAdd(groupEntries, uint(min(double(e.y - e.x) / uThickness, 1e6lf)) + 2u);
-    }
+  vec2 e;
+  double d;
+  if (m < uCount && splatExtent(m, e, d)) {
+    atomicMin(groupLo, orderedBits(e.x));
+    atomicMax(groupHi, orderedBits(e.y));
+    atomicMin(groupNearest, orderedBits(float(d)));
+    atomicAdd(groupSplats, 1u);
   }
   barrier();
   if (gl_LocalInvocationIndex == 0u && groupSplats > 0u) {
@@ -115,18 +120,15 @@ void main() {
     atomicMax(rangeHi, groupHi);
     atomicMin(rangeNearest, groupNearest);
     atomicAdd(rangeSplats, groupSplats);
-    atomicAdd(rangeEntries, groupEntries);
   }
 }
 
 #elif defined(COUNT_PASS)
-layout(local_size_x = 256) in;
-
 void main() {
   uint m = splatIndex();
-  if (m >= uCount) return;
-  vec2 e = extents[m];
-  if (isnan(e.x)) return;
+  vec2 e;
+  double d;
+  if (m >= uCount || !splatExtent(m, e, d)) return;
   for (uint b = slabOf(e.x), last = slabOf(e.y); b <= last; ++b) atomicAdd(cursor[b], 1u);
 }
 
@@ -151,6 +153,7 @@ void main() {
       runSum[r] = total;
       total += c;
     }
+    rangeEntries = total;  // the order list's size, read back before the scatter
   }
   barrier();
   uint first = runSum[t];
@@ -172,15 +175,18 @@ void main() {
 }
 
 #elif defined(SCATTER_PASS)
-layout(local_size_x = 256) in;
-
 void main() {
   uint m = splatIndex();
-  if (m >= uCount) return;
-  vec2 e = extents[m];
-  if (isnan(e.x)) return;
+  vec2 e;
+  double d;
+  if (m >= uCount || !splatExtent(m, e, d)) return;
   uint b0 = slabOf(e.x), b1 = slabOf(e.y);
-  for (uint b = b0; b <= b1; ++b)
-    order[atomicAdd(cursor[b], 1u)] = m | (b == b0 ? kFirstSlab : 0u) | (b == b1 ? kLastSlab : 0u);
+  for (uint b = b0; b <= b1; ++b) {
+    // Within the slab's share as counted (a splat placed otherwise than in the count pass
+    // would lose an entry, never write past its slab or the list).
+    uint end = b + 1u < uSlabCount ? slabFirst[b + 1u] : rangeEntries;
+    uint at = atomicAdd(cursor[b], 1u);
+    if (at < end) order[at] = m | (b == b0 ? kFirstSlab : 0u) | (b == b1 ? kLastSlab : 0u);
+  }
 }
 #endif

@@ -64,37 +64,37 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
   const glm::dvec3 row(-view[0][2], -view[1][2], -view[2][2]);
   const double d0 = glm::dot(row, origin) - view[3][2];
   const KernelReach& k = extent.reach;
-  gl::Program& e = extentPass_;
-  e.setUInt("uCount", GLuint(n));
-  e.setDouble("uD0", d0);
-  e.setDVec3("uDijk", row * spacing);
-  e.setDVec3("uRow", row);
   const glm::dvec3 sigma = kernelSigma(spacing, extent.kernelWidth);
-  e.setDouble("uVolumeVariance", cameraCovariance(extent.rotation, sigma)[2][2]);
-  e.setDMat3("uRotation", extent.rotation);
-  e.setDVec3("uSigma", sigma);
-  e.setDouble("uCullDepth", nearCull);
-  e.setDouble("uThickness", thickness);
-  e.setInt("uSurfaces", surfaces ? 1 : 0);
-  e.setDouble("uCutoff", k.cutoff);
-  e.setDouble("uDepthCutoff", k.depthCutoff);
-  e.setDouble("uMaxSigma", k.maxSigma);
-  e.setDouble("uMinSpacing", std::min({spacing.x, spacing.y, spacing.z}));
-  e.setDouble("uSwanSpacing", k.swanSpacing);
-  e.setInt("uSwan", k.swan ? 1 : 0);
-  e.setInt("uOrthographic", k.orthographic ? 1 : 0);
-  e.setDouble("uFocalPixels", k.focalPixels);
-  e.setDouble("uPixelsPerUnit", k.pixelsPerUnit);
-  reserve(extents_, n * 2 * sizeof(float));
+  // Every per-splat pass forms each splat's extent from these (splatExtent in the shader).
+  for (gl::Program* e : {&extentPass_, &countPass_, &scatterPass_}) {
+    e->setUInt("uCount", GLuint(n));
+    e->setDouble("uD0", d0);
+    e->setDVec3("uDijk", row * spacing);
+    e->setDVec3("uRow", row);
+    e->setDouble("uVolumeVariance", cameraCovariance(extent.rotation, sigma)[2][2]);
+    e->setDMat3("uRotation", extent.rotation);
+    e->setDVec3("uSigma", sigma);
+    e->setDouble("uCullDepth", nearCull);
+    e->setInt("uSurfaces", surfaces ? 1 : 0);
+    e->setDouble("uCutoff", k.cutoff);
+    e->setDouble("uDepthCutoff", k.depthCutoff);
+    e->setDouble("uMaxSigma", k.maxSigma);
+    e->setDouble("uMinSpacing", std::min({spacing.x, spacing.y, spacing.z}));
+    e->setDouble("uSwanSpacing", k.swanSpacing);
+    e->setInt("uSwan", k.swan ? 1 : 0);
+    e->setInt("uOrthographic", k.orthographic ? 1 : 0);
+    e->setDouble("uFocalPixels", k.focalPixels);
+    e->setDouble("uPixelsPerUnit", k.pixelsPerUnit);
+  }
   const uint32_t init[5] = {kAll, 0u, kAll, 0u, 0u};
   range_.setSubData(0, sizeof init, init);
   splats.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
   attributes.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
-  extents_.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
   range_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
   dispatch(extentPass_, n, kGroup);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-  // The one wait of the partition: the slab count sizes the passes and the CPU's slab loop.
+  // The first of the partition's two waits: the slab count sizes the passes and the CPU's slab
+  // loop.
   uint32_t range[5];
   range_.getSubData(0, sizeof range, range);
   splatCount_ = range[3];
@@ -112,24 +112,28 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
   reserve(cursor_, slabCount * sizeof(uint32_t));
   reserve(first_, slabCount * sizeof(uint32_t));
   reserve(commands_, slabCount * 8 * sizeof(uint32_t));
-  reserve(order_, size_t(range[4]) * sizeof(uint32_t));
   const uint32_t zero = 0;
   glClearNamedBufferSubData(cursor_.id(), GL_R32UI, 0, GLsizeiptr(slabCount * sizeof(uint32_t)),
                             GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   for (gl::Program* p : {&countPass_, &scanPass_, &scatterPass_}) {
-    p->setUInt("uCount", GLuint(n));
     p->setUInt("uSlabCount", GLuint(slabCount));
     p->setDouble("uLo", lo);
     p->setDouble("uScale", scale);
   }
-  order_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   first_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   cursor_.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
   commands_.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
   dispatch(countPass_, n, kGroup);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   dispatch(scanPass_, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  // The second wait: the order list is made exactly as long as its entries (a bound from the
+  // extents alone, a splat's length in slabs rounded up plus one, held a third more; a 512^3
+  // volume's list is hundreds of megabytes).
+  uint32_t entries = 0;
+  range_.getSubData(4 * sizeof(uint32_t), sizeof entries, &entries);
+  reserve(order_, size_t(entries) * sizeof(uint32_t));
+  order_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   dispatch(scatterPass_, n, kGroup);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
                   GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -167,8 +171,7 @@ void GpuSlabPartition::bindForDrawing() const {
 }
 
 size_t GpuSlabPartition::bytes() const {
-  return size_t(extents_.size() + range_.size() + cursor_.size() + first_.size() +
-                commands_.size() + order_.size());
+  return size_t(range_.size() + cursor_.size() + first_.size() + commands_.size() + order_.size());
 }
 
 }  // namespace ewa

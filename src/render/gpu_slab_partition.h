@@ -22,8 +22,9 @@ class GpuSlabPartition {
 
   // SlabPartition::build on the GPU for the `count` splats in `splats` (binding 0) and
   // `attributes` (binding 2; `surfaces`: they may hold surface splats). Reads back only the
-  // depth range (a few bytes, one wait for the first pass) to size the slabs: slabs() then
-  // holds every slab between the range's ends, empty ones included, with first and count
+  // depth range (a few bytes, one wait for the first pass) to size the slabs, and the number of
+  // entries (a second wait, for the count and scan passes) to size the order list: slabs()
+  // then holds every slab between the range's ends, empty ones included, with first and count
   // unknown (0) until readCounts().
   void build(const gl::Buffer& splats, const gl::Buffer& attributes, size_t count, bool surfaces,
              const glm::dvec3& origin, const glm::dmat4& view, double thickness, double nearCull,
@@ -55,7 +56,7 @@ class GpuSlabPartition {
   void dispatch(gl::Program& program, size_t invocations, size_t groupSize);
 
   gl::Program extentPass_, countPass_, scanPass_, scatterPass_;
-  gl::Buffer extents_, range_, cursor_, first_, commands_, order_;
+  gl::Buffer range_, cursor_, first_, commands_, order_;
   std::vector<Slab> slabs_;
   size_t splatCount_ = 0;
   double nearestCenter_ = 0.0;

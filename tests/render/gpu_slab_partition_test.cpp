@@ -129,5 +129,27 @@ TEST_F(GpuSlabPartitionTest, SlabListsEqualTheCpuPartitionAsSets) {
   EXPECT_GT(entries, 100000u);
 }
 
+// Its memory: the order list at its exact length and a few words a slab; nothing a splat
+// beyond the list's entries (no per-splat extents kept between the passes).
+TEST_F(GpuSlabPartitionTest, HoldsTheOrderListAndAFewWordsASlab) {
+  const gl::ShaderLibrary shaders;
+  GpuSlabPartition gpu(shaders);
+  const Volume vol = testVolume(glm::dvec3(1.0));
+  const ClassifiedSplats c = classifySplats(vol, whiteTf(0.3, 1.0), Classification{});
+  Camera cam;
+  cam.focalPoint = 0.5 * (vol.boundsMin() + vol.boundsMax());
+  cam.position = cam.focalPoint + glm::dvec3(0.0, 0.3, 1.0) * 45.0;
+  RenderSettings settings;
+  expectSamePartition(c, vol, cam, settings, 64, 0.7, 0.7, gpu, "first build");
+  const size_t slabs = gpu.slabs().size(), entries = gpu.readOrder().size();
+  ASSERT_GT(slabs, 10u);
+  ASSERT_GT(entries, c.splats.size());  // kernels reach into more than one slab
+  const auto atLeast16 = [](size_t bytes) { return std::max<size_t>(bytes, 16); };
+  // The range (5 words), cursors, first entries, two draw commands a slab, the order list.
+  const size_t expected =
+      5 * 4 + 2 * atLeast16(4 * slabs) + atLeast16(32 * slabs) + atLeast16(4 * entries);
+  EXPECT_EQ(gpu.bytes(), expected) << c.splats.size() << " splats, " << entries << " entries";
+}
+
 }  // namespace
 }  // namespace ewa::test
