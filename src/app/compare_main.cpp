@@ -130,7 +130,7 @@ int run(int argc, char** argv) {
   RenderSettings settings;  // EWA's: the defaults unless --kernel-width, --cutoff, ...
   std::string classification = classificationModeName(settings.classification.mode),
               culling = "auto", slabRects = "on", pairs = "on", slabResolution = "auto",
-              slabPrecision = "auto";
+              slabPrecision = "auto", partition = "auto";
   app.add_option("--data", data,
                  "Folder with engine/, bonsai/ and cthead/ (default ../shared/data)");
   app.add_option("--volumes", volumes,
@@ -188,6 +188,10 @@ int run(int argc, char** argv) {
                  "half for kernel widths up to 1 unless shaded and post-classified. The bare "
                  "sprites draw into the same")
       ->check(CLI::IsMember({"auto", "half", "float"}));
+  app.add_option("--partition", partition,
+                 "EWA: where the slab partition is built: auto (default: the CPU on software "
+                 "rasterizers, the GPU elsewhere), gpu or cpu")
+      ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
   app.add_option("--shader-dir", shaderDir, "Load shaders from this folder (development)");
   addBackendOption(app, backend);
   CLI11_PARSE(app, argc, argv);
@@ -217,14 +221,17 @@ int run(int argc, char** argv) {
   const gl::ShaderLibrary shaders(shaderDir);
   SplatRenderer ewa(shaders);
   ewa.setSlabScissor(slabRects == "on");
-  char ewaText[280], prefilterText[64];
+  PartitionMode partitionMode = PartitionMode::Auto;
+  parsePartitionMode(partition, &partitionMode);
+  ewa.setPartition(partitionMode);
+  char ewaText[320], prefilterText[64];
   std::snprintf(
       prefilterText, sizeof prefilterText, ", prefilter %g%s", settings.classification.prefilter,
       pairs == "on" ? (settings.slabSamples >= 4 ? ", 4 samples a slab" : ", 2 samples a slab")
                     : "");
   std::snprintf(ewaText, sizeof ewaText,
                 "kernel width %.2f, cutoff %g, depth cutoff %g, %s-classification%s%s, "
-                "%s slab images, occlusion culling %s%s%s%s",
+                "%s slab images, occlusion culling %s%s%s%s, slab partition on the %s%s",
                 settings.kernelWidth, settings.cutoff, settings.depthCutoff, classification.c_str(),
                 classification == "post" && pairs == "off" ? " without slab pre-integration" : "",
                 classification == "post" ? prefilterText : "",
@@ -232,7 +239,8 @@ int run(int argc, char** argv) {
                 ewa.occlusionCulling(settings.occlusionCulling) ? "on" : "off",
                 culling == "auto" ? " (auto)" : "",
                 slabRects == "on" ? "" : ", whole-image slab passes",
-                slabResolution == "auto" ? "" : ", full-resolution slabs");
+                slabResolution == "auto" ? "" : ", full-resolution slabs",
+                ewa.gpuPartition() ? "GPU" : "CPU", partition == "auto" ? " (auto)" : "");
   report.ewaSettings = ewaText;
   SpriteBaseline sprites(shaders);
   const std::unique_ptr<Renderer> shearWarp = createRenderer(RendererKind::ShearWarp, shaders);

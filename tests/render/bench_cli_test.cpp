@@ -73,13 +73,13 @@ TEST(CompareCli, KernelWidthCutoffsAndClassificationReachEwa) {
       compare(std::string(kTiny) +
               " --kernel-width 0.55 --cutoff 5 --depth-cutoff 2.25 "
               "--classification post --prefilter 0.1 --slab-samples 2 --occlusion-culling off "
-              "--slab-rects off --slab-resolution full --json");
+              "--slab-rects off --slab-resolution full --partition gpu --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const json doc = json::parse(r.out);
   EXPECT_EQ(doc["ewa_settings"],
             "kernel width 0.55, cutoff 5, depth cutoff 2.25, post-classification, prefilter 0.1, "
             "2 samples a slab, half-float slab images, occlusion culling off, "
-            "whole-image slab passes, full-resolution slabs");
+            "whole-image slab passes, full-resolution slabs, slab partition on the GPU");
   ASSERT_EQ(doc["rows"].size(), 1u) << r.out;
   EXPECT_GT(doc["rows"][0]["ewa_ms"].get<double>(), 0.0);
   EXPECT_EQ(doc["rows"][0]["culled_percent"].get<double>(), 0.0);
@@ -132,7 +132,7 @@ TEST(CompareCli, MissingSharedDataIsSkippedWithANote) {
 
 TEST(CompareCli, BadOptionsFailWithOneLine) {
   for (const char* args : {"--sizes 0", "--volumes teapot", "--repeats 0", "--csv --json",
-                           "--kernel-width 5", "--classification sideways"}) {
+                           "--kernel-width 5", "--classification sideways", "--partition disk"}) {
     const CliRun r = compare(args);
     EXPECT_NE(r.code, 0) << args;
     EXPECT_GE(lineCount(r.err), 1) << args;
