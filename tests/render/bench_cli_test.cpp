@@ -30,7 +30,8 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
   ASSERT_EQ(r.code, 0) << r.err;
   const json doc = json::parse(r.out);
   EXPECT_EQ(doc["repeats"], 1);
-  // Auto leaves occlusion culling off on software rasterizers (llvmpipe), on elsewhere.
+  // Auto leaves occlusion culling off and the partition on the CPU on software rasterizers
+  // (llvmpipe), culling on and the partition on the GPU elsewhere.
   const std::string context = doc["context"].get<std::string>();
   const bool software = context.find("llvmpipe") != std::string::npos ||
                         context.find("softpipe") != std::string::npos;
@@ -38,7 +39,8 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
       doc["ewa_settings"],
       std::string("kernel width 0.70, cutoff 5, depth cutoff 1, post-classification, "
                   "prefilter 0.05, 4 samples a slab, half-float slab images, occlusion culling ") +
-          (software ? "off" : "on") + " (auto)")
+          (software ? "off" : "on") + " (auto), slab partition on the " +
+          (software ? "CPU" : "GPU") + " (auto)")
       << context;
   EXPECT_NE(doc["context"].get<std::string>().find("OpenGL"), std::string::npos) << doc["context"];
   EXPECT_NE(doc["command"].get<std::string>().find("--synthetic sphere:24"), std::string::npos);
