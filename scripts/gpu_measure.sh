@@ -27,4 +27,9 @@ if [ "$mode" = all ] || [ "$mode" = bench ]; then
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --repeats 20 | tee "$out/compare.txt"
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --repeats 20 \
     --occlusion-culling off | tee -a "$out/compare.txt"
+  # Bytes a splat with each partition (the GPU's by default there), and a 512^3 volume.
+  "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --volumes engine --sizes 1024 \
+    --repeats 3 --partition cpu | tee -a "$out/compare.txt"
+  "$bin/ewaview" --synthetic marschner-lobb:512 --backend egl --resolution 1024,1024 \
+    -o "$out/ml512.png" --stats | tee "$out/ml512.txt"
 fi
