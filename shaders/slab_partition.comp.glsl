@@ -70,7 +70,7 @@ bool splatExtent(uint m, out vec2 e, out double centre) {
   uvec2 s = splats[m];
   precise double d = uD0 + double(s.x & 0xffffu) * uDijk.x + double(s.x >> 16) * uDijk.y +
                      double(s.y & 0xffffu) * uDijk.z;
-  double variance = uVolumeVariance;
+  precise double variance = uVolumeVariance;  // precise: each pass must form it alike
   uvec2 at = uSurfaces ? attributes[m] : uvec2(0u);  // no surfaces: none uploaded
   if ((at.y >> 16) != 0u) {
     vec2 xy = unpackHalf2x16(at.x), zk = unpackHalf2x16(at.y);
