@@ -194,7 +194,8 @@ Footprint computeFootprint(vec3 u, mat3 covIn, Projection proj, FootprintParams 
   return fp;
 }
 
+const float kPointSpriteMargin = 0.125;  // src/core/ewa_footprint.h
 float pointSpriteSize(Footprint fp, float cutoff) {
   float extent = max(fp.covariance.x, fp.covariance.z);
-  return 2.0 * sqrt(cutoff * extent) + 0.5;
+  return 2.0 * sqrt(cutoff * extent) + kPointSpriteMargin;
 }

@@ -188,7 +188,7 @@ Footprint computeFootprint(const glm::dvec3& u, const glm::dmat3& covIn, const P
 
 double pointSpriteSize(const Footprint& fp, double cutoff) {
   const double extent = std::max(fp.covariance[0][0], fp.covariance[1][1]);
-  return 2.0 * std::sqrt(cutoff * extent) + 0.5;
+  return 2.0 * std::sqrt(cutoff * extent) + kPointSpriteMargin;
 }
 
 double footprintWeight(const Footprint& fp, const glm::dvec2& pixel, double cutoff) {

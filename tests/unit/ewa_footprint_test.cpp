@@ -415,5 +415,40 @@ TEST(Camera, FrameFitsTheBoundingSphereAndOrbitKeepsDistance) {
   EXPECT_NEAR(glm::dot(cam.direction(), glm::normalize(cam.viewUp)), 0.0, 1e-9);
 }
 
+// The point sprite holds every pixel centre the ellipse r <= cutoff holds, with the margin to
+// spare, and is no larger than the ellipse's bounding square and the margin: round, elongated
+// and turned footprints, magnified and minified, at sub-pixel centre offsets.
+TEST(EwaFootprint, PointSpriteHoldsTheEllipseWithASmallMargin) {
+  for (double cutoff : {2.0, 5.0, 9.0})
+    for (double a : {0.3, 1.0, 7.5, 40.0})
+      for (double ratio : {1.0, 0.2})
+        for (double turn : {0.0, 0.6, 1.3}) {
+          // Covariance R diag(a, a * ratio) R^T.
+          const double c0 = std::cos(turn), s0 = std::sin(turn), b = a * ratio;
+          Footprint fp;
+          fp.visible = true;
+          fp.covariance = glm::dmat2(c0 * c0 * a + s0 * s0 * b, c0 * s0 * (a - b),
+                                     c0 * s0 * (a - b), s0 * s0 * a + c0 * c0 * b);
+          fp.conic = glm::inverse(fp.covariance);
+          const double size = pointSpriteSize(fp, cutoff);
+          const double bound = 2.0 * std::sqrt(cutoff * std::max(a, b));
+          EXPECT_LE(size, bound + kPointSpriteMargin + 1e-12);
+          for (double ox : {0.0, 0.25, 0.5, 0.93})
+            for (double oy : {0.0, 0.4, 0.77}) {
+              fp.center = glm::dvec2(100.0 + ox, 100.0 + oy);
+              const int reach = int(std::ceil(bound)) + 2;
+              double widest = 0.0;  // the largest |dx| or |dy| of a centre inside the ellipse
+              for (int y = 100 - reach; y <= 100 + reach; ++y)
+                for (int x = 100 - reach; x <= 100 + reach; ++x) {
+                  const glm::dvec2 d = glm::dvec2(x + 0.5, y + 0.5) - fp.center;
+                  if (glm::dot(d, fp.conic * d) <= cutoff)
+                    widest = std::max({widest, std::abs(d.x), std::abs(d.y)});
+                }
+              EXPECT_LE(widest, 0.5 * (size - kPointSpriteMargin) + 1e-9)
+                  << "cutoff " << cutoff << " a " << a << " ratio " << ratio << " turn " << turn;
+            }
+        }
+}
+
 }  // namespace
 }  // namespace ewa
