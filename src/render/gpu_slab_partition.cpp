@@ -65,13 +65,15 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
   const double d0 = glm::dot(row, origin) - view[3][2];
   const KernelReach& k = extent.reach;
   const glm::dvec3 sigma = kernelSigma(spacing, extent.kernelWidth);
+  const double volumeVariance = cameraCovariance(extent.rotation, sigma)[2][2];
+  const double minSpacing = std::min({spacing.x, spacing.y, spacing.z});
   // Every per-splat pass forms each splat's extent from these (splatExtent in the shader).
   for (gl::Program* e : {&extentPass_, &countPass_, &scatterPass_}) {
     e->setUInt("uCount", GLuint(n));
     e->setDouble("uD0", d0);
     e->setDVec3("uDijk", row * spacing);
     e->setDVec3("uRow", row);
-    e->setDouble("uVolumeVariance", cameraCovariance(extent.rotation, sigma)[2][2]);
+    e->setDouble("uVolumeVariance", volumeVariance);
     e->setDMat3("uRotation", extent.rotation);
     e->setDVec3("uSigma", sigma);
     e->setDouble("uCullDepth", nearCull);
@@ -79,7 +81,7 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
     e->setDouble("uCutoff", k.cutoff);
     e->setDouble("uDepthCutoff", k.depthCutoff);
     e->setDouble("uMaxSigma", k.maxSigma);
-    e->setDouble("uMinSpacing", std::min({spacing.x, spacing.y, spacing.z}));
+    e->setDouble("uMinSpacing", minSpacing);
     e->setDouble("uSwanSpacing", k.swanSpacing);
     e->setInt("uSwan", k.swan ? 1 : 0);
     e->setInt("uOrthographic", k.orthographic ? 1 : 0);
