@@ -64,8 +64,8 @@ uniform vec2 uSlabDepths;       // this slab's near and far camera depth
 uniform float uPixelsPerUnit;   // orthographic: pixels per world unit
 // Slab images may be coarser than the picture (src/core/slab_image_scale.h): pixels a texel a
 // side of this slab's image and of the neighbour's; 1: the picture's own pixels.
-uniform int uSlabScale;
-uniform int uNeighbourScale;
+uniform float uSlabScale;
+uniform float uNeighbourScale;
 
 out vec4 outColor;
 
@@ -76,19 +76,20 @@ struct Surface {
   vec3 toEye;
 };
 
-// A slab image's sums at pixel q: its texel, or on a coarser image the bilinear mean of the
-// four texels about the pixel's centre (the sums are band-limited far below its texels); that
-// image has a border of one texel (scaledCoordinate in src/core/slab_image_scale.h).
-vec4 slabSums(sampler2D image, ivec2 q, int scale) {
-  if (!kScaled || scale == 1) return texelFetch(image, q, 0);
-  vec2 texel = (vec2(q) + 0.5) / float(scale) + 1.0;
+// A slab image's sums at the pixel centred at `centre`: its texel, or on a coarser image the
+// bilinear mean of the four texels about that point (the sums are band-limited far below its
+// texels); that image has a border of one texel (scaledCoordinate in
+// src/core/slab_image_scale.h).
+vec4 slabSums(sampler2D image, vec2 centre, float scale) {
+  if (!kScaled || scale == 1.0) return texelFetch(image, ivec2(floor(centre)), 0);
+  vec2 texel = centre / scale + 1.0;
   return texture(image, texel / vec2(textureSize(image, 0)));
 }
 
-// The slab's mean value over both halves at pixel q; false where no kernel reaches it.
-bool slabValue(ivec2 q, out float v) {
-  vec4 s = slabSums(uSlab, q, uSlabScale);
-  if (kQuarters) s += slabSums(uSlabBack, q, uSlabScale);
+// The slab's mean value over both halves at the point `centre`; false where no kernel reaches.
+bool slabValue(vec2 centre, out float v) {
+  vec4 s = slabSums(uSlab, centre, uSlabScale);
+  if (kQuarters) s += slabSums(uSlabBack, centre, uSlabScale);
   float w = s.g + s.a;
   v = w > 0.0 ? (s.r + s.b) / w : 0.0;
   return w > 0.0;
@@ -97,10 +98,10 @@ bool slabValue(ivec2 q, out float v) {
 // d(value)/d(pixel) along the unit step `dir`: central where both neighbours have kernels,
 // else one-sided. On a coarser image the neighbours are a texel apart, so the derivative is the
 // bilinear mean of the texels' central differences.
-float pixelDerivative(ivec2 q, ivec2 dir, float centre) {
-  int scale = kScaled ? uSlabScale : 1;
-  ivec2 step = dir * scale;
-  float ahead, behind, span = float(scale);
+float pixelDerivative(vec2 q, vec2 dir, float centre) {
+  float span = kScaled ? uSlabScale : 1.0;
+  vec2 step = dir * span;
+  float ahead, behind;
   bool hasAhead = slabValue(q + step, ahead), hasBehind = slabValue(q - step, behind);
   if (hasAhead && hasBehind) return 0.5 * (ahead - behind) / span;
   if (hasAhead) return (ahead - centre) / span;
@@ -113,22 +114,22 @@ float pixelDerivative(ivec2 q, ivec2 dir, float centre) {
 // along it from the front half's value to the back half's, half a slab apart. `s`: the sums
 // of the halves (in quarters, each half's two quarters added).
 vec3 fieldGradient(vec4 s) {
-  ivec2 q = ivec2(gl_FragCoord.xy);
+  vec2 q = gl_FragCoord.xy;
   float centre = (s.r + s.b) / max(s.g + s.a, 1e-30);
   float thickness = uSlabDepths.y - uSlabDepths.x;
   float depth = 0.5 * (uSlabDepths.x + uSlabDepths.y);
   float pixelsPerUnit = uOrthographic ? uPixelsPerUnit : uFocalPixels / max(depth, 1e-30);
   bool front = s.g > 0.0, back = s.a > 0.0;
   float along = front && back ? (s.b / s.a - s.r / s.g) / (0.5 * thickness) : 0.0;
-  return vec3(pixelDerivative(q, ivec2(1, 0), centre) * pixelsPerUnit,
-              pixelDerivative(q, ivec2(0, 1), centre) * pixelsPerUnit, -along);
+  return vec3(pixelDerivative(q, vec2(1.0, 0.0), centre) * pixelsPerUnit,
+              pixelDerivative(q, vec2(0.0, 1.0), centre) * pixelsPerUnit, -along);
 }
 
 Surface pixelSurface(vec4 s) {
   Surface p = Surface(vec3(0.0), vec3(0.0, 0.0, 1.0));
   if (!kShading) return p;
   vec3 normal = kFieldNormals ? fieldGradient(s)
-                              : slabSums(uSlabNormal, ivec2(gl_FragCoord.xy), uSlabScale).xyz;
+                              : slabSums(uSlabNormal, gl_FragCoord.xy, uSlabScale).xyz;
   vec2 ray = (gl_FragCoord.xy - 0.5 * uViewport) / uFocalPixels;
   float len = length(normal);
   p.normal = len > 0.0 ? normal / len : vec3(0.0);
@@ -216,9 +217,8 @@ vec4 preintegratedQuarters(vec4 front, vec4 back) {
   vec4 lengths = quarterLengths(vec4(front.g, front.a, back.g, back.a));
   float other = kNeighbourInFront ? own.x : own.w;
   if (uNeighbour) {
-    ivec2 q = ivec2(gl_FragCoord.xy);
-    vec4 nf = slabSums(uNeighbourSlab, q, uNeighbourScale);
-    vec4 nb = slabSums(uNeighbourBack, q, uNeighbourScale);
+    vec4 nf = slabSums(uNeighbourSlab, gl_FragCoord.xy, uNeighbourScale);
+    vec4 nb = slabSums(uNeighbourBack, gl_FragCoord.xy, uNeighbourScale);
     if (nf.g + nf.a + nb.g + nb.a > 0.0) {
       vec4 n = quarterValues(nf, nb);
       other = kNeighbourInFront ? n.w : n.x;
@@ -250,7 +250,7 @@ vec4 preintegrated(vec4 s) {
   vec2 own = halfValues(s);
   vec2 other = kNeighbourInFront ? own.xx : own.yy;
   if (uNeighbour) {
-    vec4 n = slabSums(uNeighbourSlab, ivec2(gl_FragCoord.xy), uNeighbourScale);
+    vec4 n = slabSums(uNeighbourSlab, gl_FragCoord.xy, uNeighbourScale);
     if (n.g + n.a > 0.0) other = halfValues(n);
   }
   Surface p = pixelSurface(s);
@@ -267,9 +267,9 @@ vec4 preintegrated(vec4 s) {
 }
 
 void main() {
-  vec4 s = slabSums(uSlab, ivec2(gl_FragCoord.xy), uSlabScale);
+  vec4 s = slabSums(uSlab, gl_FragCoord.xy, uSlabScale);
   if (kQuarters) {
-    vec4 back = slabSums(uSlabBack, ivec2(gl_FragCoord.xy), uSlabScale);
+    vec4 back = slabSums(uSlabBack, gl_FragCoord.xy, uSlabScale);
     if (!(s.g + s.a + back.g + back.a > 0.0)) discard;
     outColor = preintegratedQuarters(s, back);
     if (!(outColor.a > 0.0)) discard;

@@ -212,10 +212,12 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   // "series/" and "series" are one folder (and name one bookmarks file beside it).
   while (o->file.size() > 1 && o->file.back() == '/') o->file.pop_back();
   o->resolutionGiven = !res.empty();
+  // Every option the settings file also holds (main.cpp takes the saved ones only when none is
+  // given): one missing here was silently overridden by the saved value in the window.
   for (const char* name :
        {"--filter", "--render-mode", "--cutoff", "--depth-cutoff", "--kernel-width",
         "--classification", "--slab-preintegration", "--slab-samples", "--low-pass", "--prefilter",
-        "--slab-thickness", "--background", "--close-up"})
+        "--post-normals", "--slab-thickness", "--slab-resolution", "--background", "--close-up"})
     o->renderOptionsGiven |= app.count(name) > 0;
   if (!res.empty()) {
     o->width = res[0];

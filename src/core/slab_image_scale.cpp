@@ -11,31 +11,31 @@ double minFootprintSigma(const KernelReach& reach, double minSigma, double depth
   return depth > 0.0 ? minSigma * reach.focalPixels / depth : INFINITY;
 }
 
-int slabImageScale(const KernelReach& reach, double minSigma, double farthestCenter) {
+double slabImageScale(const KernelReach& reach, double minSigma, double farthestCenter) {
   const double sigma = minFootprintSigma(reach, minSigma, farthestCenter);
-  int scale = 1;
-  while (scale < kMaxSlabImageScale && sigma >= kMinSigmaTexels * double(2 * scale)) scale *= 2;
-  return scale;
+  if (!(sigma >= kMinSigmaTexels * (1.0 + kSlabImageScaleStep))) return 1.0;  // NaN too
+  const double steps = std::floor(sigma / kMinSigmaTexels / kSlabImageScaleStep);
+  return std::min(kMaxSlabImageScale, steps * kSlabImageScaleStep);
 }
 
-Projection scaledProjection(const Projection& proj, int scale) {
-  if (scale <= 1) return proj;
-  const double s = double(scale);
+Projection scaledProjection(const Projection& proj, double scale) {
+  if (scale <= 1.0) return proj;
+  const double s = scale;
   Projection p = proj;
   p.focalPixels = proj.focalPixels / s;
   p.pixelsPerUnit = proj.pixelsPerUnit / s;
   p.principal = proj.principal / s + 1.0;
-  p.width = (proj.width + scale - 1) / scale + 2;
-  p.height = (proj.height + scale - 1) / scale + 2;
+  p.width = int(std::ceil(double(proj.width) / s)) + 2;
+  p.height = int(std::ceil(double(proj.height) / s)) + 2;
   return p;
 }
 
-double scaledCoordinate(double pixel, int scale) {
-  return scale <= 1 ? pixel : pixel / double(scale) + 1.0;
+double scaledCoordinate(double pixel, double scale) {
+  return scale <= 1.0 ? pixel : pixel / scale + 1.0;
 }
 
-PixelRect scaledRect(const PixelRect& rect, int scale) {
-  if (rect.empty() || scale <= 1) return rect;
+PixelRect scaledRect(const PixelRect& rect, double scale) {
+  if (rect.empty() || scale <= 1.0) return rect;
   // Pixel centres x0 + 0.5 .. x1 - 0.5 read texels from floor(coordinate - 0.5) to one beyond.
   const auto lo = [&](int v) { return int(std::floor(scaledCoordinate(v + 0.5, scale) - 0.5)); };
   const auto hi = [&](int v) {

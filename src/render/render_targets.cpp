@@ -19,11 +19,17 @@ gl::Texture slabImageTexture(int w, int h, bool half) {
 
 }  // namespace
 
-void RenderTargets::resize(int w, int h, bool paired, bool quarter, bool normals, bool half) {
+void RenderTargets::resize(int w, int h, bool paired, bool quarter, bool normals, bool half,
+                           bool coarse) {
   quarter = quarter && paired;
   const bool fresh = !(w == width && h == height && output && half == halfSlabs_);
   if (fresh) createImages(w, h, half);
-  if (!fresh && paired == pairedSlabs() && quarter == quarters() && normals == normalSums()) return;
+  if (!fresh && paired == pairedSlabs() && quarter == quarters() && normals == normalSums() &&
+      coarse == coarseSlabs())
+    return;
+  slabCoarseFbo = gl::Framebuffer();
+  slabOtherCoarseFbo = gl::Framebuffer();
+  coarseMarks = gl::Texture();
   slabOtherFbo = gl::Framebuffer();
   slabOther = gl::Texture();
   slabBack = gl::Texture();
@@ -38,17 +44,23 @@ void RenderTargets::resize(int w, int h, bool paired, bool quarter, bool normals
     slabBack = slabImageTexture(w, h, half);
     slabOtherBack = slabImageTexture(w, h, half);
   }
-  slabFbo = slabFramebuffer(slab, slabBack);
-  if (paired) slabOtherFbo = slabFramebuffer(slabOther, slabOtherBack);
+  slabFbo = slabFramebuffer(slab, slabBack, stencil);
+  if (paired) slabOtherFbo = slabFramebuffer(slabOther, slabOtherBack, stencil);
+  if (coarse) {
+    coarseMarks = gl::Texture::create2D(GL_DEPTH24_STENCIL8, w, h);
+    slabCoarseFbo = slabFramebuffer(slab, slabBack, coarseMarks);
+    if (paired) slabOtherCoarseFbo = slabFramebuffer(slabOther, slabOtherBack, coarseMarks);
+  }
   gl::checkGlError("slab images");
 }
 
-gl::Framebuffer RenderTargets::slabFramebuffer(const gl::Texture& image, const gl::Texture& back) {
+gl::Framebuffer RenderTargets::slabFramebuffer(const gl::Texture& image, const gl::Texture& back,
+                                               const gl::Texture& depth) {
   gl::Framebuffer fbo = gl::Framebuffer::create();
   fbo.attachColor(0, image);
   if (slabNormal) fbo.attachColor(1, slabNormal);
   if (back) fbo.attachColor(2, back);
-  fbo.attachDepth(stencil, GL_DEPTH_STENCIL_ATTACHMENT);
+  fbo.attachDepth(depth, GL_DEPTH_STENCIL_ATTACHMENT);
   fbo.checkComplete();
   return fbo;
 }

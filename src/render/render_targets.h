@@ -33,36 +33,47 @@ struct RenderTargets {
   // first and second quarters.
   gl::Texture slabBack;
   gl::Texture slabOtherBack;
+  // Coarser slab images (slab_image_scale.h): their splats' marks, at the coarser image's
+  // texels (DEPTH24_STENCIL8 as `stencil`, so a blit carries them to the picture's pixels for
+  // the slab pass), and each slab image's framebuffer with it in place of `stencil`.
+  gl::Texture coarseMarks;
+  gl::Framebuffer slabCoarseFbo;
+  gl::Framebuffer slabOtherCoarseFbo;
 
   // (Re)creates the images when the size changes, the second slab image when `pairedSlabs`
   // asks for it, the back halves when `quarters` does and the normal sums when `normalSums`
-  // does (freed when not); the slab images are half floats when `halfSlabs` says so (all made
-  // again when it changes). Throws gl::GlError if incomplete.
+  // does (freed when not), the coarser images' marks when `coarseSlabs` does; the slab images
+  // are half floats when `halfSlabs` says so (all made again when it changes). Throws
+  // gl::GlError if incomplete.
   void resize(int w, int h, bool pairedSlabs = false, bool quarters = false,
-              bool normalSums = false, bool halfSlabs = false);
+              bool normalSums = false, bool halfSlabs = false, bool coarseSlabs = false);
   bool halfSlabs() const { return halfSlabs_; }
   bool pairedSlabs() const { return bool(slabOther); }
   bool quarters() const { return bool(slabBack); }
   bool normalSums() const { return bool(slabNormal); }
+  bool coarseSlabs() const { return bool(coarseMarks); }
   // Slab image `i` (0 or 1), its back half and its framebuffer; 1 only with paired slabs.
   const gl::Texture& slabImage(int i) const { return i ? slabOther : slab; }
   const gl::Texture& slabBackImage(int i) const { return i ? slabOtherBack : slabBack; }
   gl::Framebuffer& slabTarget(int i) { return i ? slabOtherFbo : slabFbo; }
+  // Its framebuffer for a coarser image (with coarseMarks); only with coarse slabs.
+  gl::Framebuffer& slabCoarseTarget(int i) { return i ? slabOtherCoarseFbo : slabCoarseFbo; }
   // Bytes the images hold: one slab image (two with paired slabs, four in quarters; 8 or 16
   // bytes a pixel each), the RGBA32F accumulation, one RGBA8, one depth-stencil (4 bytes) per
-  // pixel, and the RGBA16F normal sums if any.
+  // pixel (two with coarse slabs), and the RGBA16F normal sums if any.
   size_t bytes() const {
     const size_t slabImage = halfSlabs_ ? 8 : 16;
     return size_t(width) * size_t(height) *
-           (slabImage + 16 + 4 + 4 + (normalSums() ? 8 : 0) + (pairedSlabs() ? slabImage : 0) +
-            (quarters() ? 2 * slabImage : 0));
+           (slabImage + 16 + 4 + 4 + (coarseSlabs() ? 4 : 0) + (normalSums() ? 8 : 0) +
+            (pairedSlabs() ? slabImage : 0) + (quarters() ? 2 * slabImage : 0));
   }
 
  private:
   void createImages(int w, int h, bool halfSlabs);
   // The framebuffer of one slab image: the image, the normal sums and its back half if any,
-  // the stencil.
-  gl::Framebuffer slabFramebuffer(const gl::Texture& image, const gl::Texture& back);
+  // and `depth` (the stencil, or the coarser images' marks).
+  gl::Framebuffer slabFramebuffer(const gl::Texture& image, const gl::Texture& back,
+                                  const gl::Texture& depth);
 
   bool halfSlabs_ = false;
 };

@@ -7,6 +7,7 @@
 #include <future>
 #include <glm/gtc/type_ptr.hpp>
 #include <limits>
+#include <numeric>
 
 #include "core/clip_share.h"
 #include "core/kernel_reach.h"
@@ -180,13 +181,13 @@ void SplatRenderer::computeSlabRects() {
     // A kernel listed in the slab lies at most its depth reach behind the far plane.
     const double reachFar = depthReach(reach, reach.maxSigma * reach.maxSigma, slab.farDepth);
     const double farthest = std::min(slab.farDepth + reachFar, boxFar);
-    frame_.slabScales.push_back(coarse ? slabImageScale(reach, minSigma, farthest) : 1);
+    frame_.slabScales.push_back(coarse ? slabImageScale(reach, minSigma, farthest) : 1.0);
   }
 }
 
-int SplatRenderer::slabScale(size_t s) const {
+double SplatRenderer::slabScale(size_t s) const {
   const size_t i = slabPosition(s);
-  return i < frame_.slabScales.size() ? frame_.slabScales[i] : 1;
+  return i < frame_.slabScales.size() ? frame_.slabScales[i] : 1.0;
 }
 
 gl::Program& SplatRenderer::slabPassProgram(size_t s) {
@@ -194,7 +195,7 @@ gl::Program& SplatRenderer::slabPassProgram(size_t s) {
   return *slabPass_[scaled && slabPass_[1] ? 1 : 0];
 }
 
-void SplatRenderer::scissorToSlab(size_t s, int scale) {
+void SplatRenderer::scissorToSlab(size_t s, double scale) {
   if (!slabScissor_ || frame_.slabRects.size() != frame_.slabs.size()) return;
   scissorTo(scaledRect(frame_.slabRects[slabPosition(s)], scale));
 }
@@ -229,37 +230,58 @@ void SplatRenderer::beginCompositeSlab(size_t s) {
   target.clearColor(0, zero);
   if (voxelNormalSums(frame_.settings)) target.clearColor(1, zero);
   if (frame_.quarters) target.clearColor(2, zero);
+  if (slabScale(s) > 1.0)
+    glClearNamedFramebufferfi(targets_.slabCoarseTarget(slabImageOf(s)).id(), GL_DEPTH_STENCIL, 0,
+                              0.0f, 0);
 }
 
 void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
   Slab range = slabInOrder(s);
   range.first += uint32_t(first);
   range.count = count;
-  const int scale = slabScale(s);
+  const double scale = slabScale(s);
   scissorToSlab(s, scale);
   // Inside a slab: order-independent sums of each kernel's share of optical depth and light.
-  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabTarget(slabImageOf(s)).id());
+  // A coarser image is drawn into the lower left corner of its slab image, with the marks of
+  // its own depth image.
+  const bool coarser = scale > 1.0;
+  const int image = slabImageOf(s);
+  glBindFramebuffer(GL_FRAMEBUFFER,
+                    (coarser ? targets_.slabCoarseTarget(image) : targets_.slabTarget(image)).id());
   glBlendFunc(GL_ONE, GL_ONE);
   const int gpuSlab = frame_.indirect ? int(slabPosition(s)) : -1;  // then a whole slab
   setSlabUniforms(range, true, true, gpuSlab);
   setSplatScale(scale);
-  if (scale == 1) {
-    // Each splat fragment leaves the slab's mark in the depth buffer (written before the
-    // shader, so a footprint's whole point or quad is marked), for its slab pass.
-    for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()})
-      p->setFloat("uSlabMark", slabMark(s));
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDepthMask(GL_TRUE);
-    drawSplats(range, stats_.quadPass, gpuSlab);
-    glDisable(GL_DEPTH_TEST);
-    return;
-  }
-  // Into the image's lower left corner. The stencil marks the picture's pixels: coarser images
-  // draw every texel (near slabs, where little is opaque yet).
-  glDisable(GL_STENCIL_TEST);
+  // Each splat fragment leaves the slab's mark in the depth buffer (written before the shader,
+  // so a footprint's whole point or quad is marked), for its slab pass.
+  for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()})
+    p->setFloat("uSlabMark", slabMark(s));
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glDepthMask(GL_TRUE);
+  // The stencil marks the picture's pixels: coarser images draw every texel (near slabs, where
+  // little is opaque yet).
+  if (coarser) glDisable(GL_STENCIL_TEST);
   drawSplats(range, stats_.quadPass, gpuSlab);
-  if (terminates()) glEnable(GL_STENCIL_TEST);
+  if (coarser && terminates()) glEnable(GL_STENCIL_TEST);
+  glDisable(GL_DEPTH_TEST);
+}
+
+void SplatRenderer::blitCoarseMarks(size_t s) {
+  // Picture pixel centre x + 0.5 lies at texel coordinate (x + 0.5) / scale + 1
+  // (scaledCoordinate); a blit maps its rectangles' ends linearly, so they are integers that
+  // keep that ratio: a span of D pixels, D a multiple of the scale's numerator (the scale is
+  // a multiple of a quarter), from texel 1. The scissor keeps it to the slab's rectangle.
+  const double scale = slabScale(s);
+  const int quarters = int(std::lround(scale * 4.0));
+  const int divisor = std::gcd(quarters, 4);
+  const int num = quarters / divisor, den = 4 / divisor;  // scale = num / den
+  const auto span = [&](int pixels) { return (pixels + num - 1) / num * num; };
+  const int dx = span(frame_.width), dy = span(frame_.height);
+  scissorToSlab(s);
+  glBlitNamedFramebuffer(targets_.slabCoarseTarget(slabImageOf(s)).id(), targets_.accumFbo.id(), 1,
+                         1, 1 + dx / num * den, 1 + dy / num * den, 0, 0, dx, dy,
+                         GL_DEPTH_BUFFER_BIT, GL_NEAREST);
 }
 
 void SplatRenderer::endCompositeSlab(size_t s) {
@@ -268,6 +290,7 @@ void SplatRenderer::endCompositeSlab(size_t s) {
   const bool terminate = frontToBack && settings.terminationOpacity < 1.0;
   const size_t n = frame_.slabs.size();
   // Between slabs: 1 - exp(-depth) composited under (front to back) or over (back to front).
+  if (slabScale(s) > 1.0) blitCoarseMarks(s);
   scissorToSlab(s);
   if (frame_.slabRects.size() == n)
     frame_.markRect = frame_.markRect.unite(frame_.slabRects[slabPosition(s)]);
@@ -279,7 +302,7 @@ void SplatRenderer::endCompositeSlab(size_t s) {
   targets_.slabImage(slabImageOf(s)).bindUnit(1);
   if (frame_.quarters) targets_.slabBackImage(slabImageOf(s)).bindUnit(kSlabBackUnit);
   gl::Program& pass = slabPassProgram(s);
-  pass.setInt("uSlabScale", slabScale(s));
+  pass.setFloat("uSlabScale", float(slabScale(s)));
   if (frame_.pairedSlabs) {
     // The slab drawn before this one, if it is this one's neighbour in depth (empty slabs are
     // not drawn): a segment runs from its nearer half's value to this slab's.
@@ -287,27 +310,23 @@ void SplatRenderer::endCompositeSlab(size_t s) {
     if (frame_.quarters) targets_.slabBackImage(slabImageOf(s + 1)).bindUnit(kNeighbourBackUnit);
     const bool adjacent = s > 0 && slabsAdjacent(slabInOrder(s - 1), slabInOrder(s));
     pass.setInt("uNeighbour", adjacent ? 1 : 0);
-    pass.setInt("uNeighbourScale", s > 0 ? slabScale(s - 1) : 1);
+    pass.setFloat("uNeighbourScale", s > 0 ? float(slabScale(s - 1)) : 1.0f);
   }
   const Slab& slab = slabInOrder(s);
   pass.setVec2("uSlabDepths", glm::vec2(slab.nearDepth, slab.farDepth));
-  // A full-resolution slab's pass runs only where its splats left their mark: llvmpipe runs a
-  // shader's every line under a mask (discard saves nothing), but skips blocks that fail an
-  // early depth test. The pass lies half a mark below its slab's: earlier slabs' marks and the
-  // cleared 0 lie below it and fail GL_LEQUAL, without an exact equality of depths.
-  const bool marked = slabScale(s) == 1;
-  if (marked) {
-    pass.setFloat("uSlabMark", slabMark(s) - 0.5f * slabMarkStep());
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_FALSE);
-  }
+  // The pass runs only where the slab's splats left their mark (a coarser slab's carried over
+  // by blitCoarseMarks): llvmpipe runs a shader's every line under a mask (discard saves
+  // nothing), but skips blocks that fail an early depth test. The pass lies half a mark below
+  // its slab's: earlier slabs' marks and the cleared 0 lie below it and fail GL_LEQUAL,
+  // without an exact equality of depths.
+  pass.setFloat("uSlabMark", slabMark(s) - 0.5f * slabMarkStep());
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
   glUseProgram(pass.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  if (marked) {
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);  // clears respect the mask
-  }
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);  // clears respect the mask
   ++stats_.slabsDrawn;
   if (slabScale(s) > 1) ++stats_.slabsCoarse;
   if (terminate && (s + 1) % kCheckEvery == 0 && s + 1 < n) {
@@ -529,7 +548,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   frame_.pairedSlabs = pairedSlabs(settings);
   frame_.quarters = quarterSlabs(settings);
   targets_.resize(width, height, frame_.pairedSlabs, frame_.quarters, voxelNormalSums(settings),
-                  halfFloatSlabs(settings));
+                  halfFloatSlabs(settings), coarseMarks(settings));
   stats_ = RenderStats{};
   const GLfloat zero[4] = {0, 0, 0, 0};
   glDisable(GL_SCISSOR_TEST);  // the whole images are cleared

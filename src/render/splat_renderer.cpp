@@ -245,12 +245,14 @@ void SplatRenderer::setProjectionUniforms(gl::Program& p, const Projection& proj
   p.setFloat("uLowPass", float(lowPass));
 }
 
-void SplatRenderer::setSplatScale(int scale) {
+void SplatRenderer::setSplatScale(double scale) {
   if (scale == frame_.splatScale) return;
   frame_.splatScale = scale;
   const Projection proj = scaledProjection(frame_.proj, scale);
-  // The footprints are the picture's, low-pass filter included, sampled on coarser texels.
-  const double lowPass = lowPassVariance(frame_.settings) / (double(scale) * double(scale));
+  // The footprints are the picture's, low-pass filter included, sampled on coarser texels and
+  // narrowed by the blur of the bilinear read-back (kBilinearReadVariance).
+  const double lowPass = lowPassVariance(frame_.settings) / (scale * scale) -
+                         (scale > 1.0 ? kBilinearReadVariance : 0.0);
   for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()}) {
     setProjectionUniforms(*p, proj, lowPass);
     // The clip rays of the coarser image's pixels.
@@ -301,12 +303,16 @@ SlabPassVariant SplatRenderer::slabPassVariant(const RenderSettings& settings, b
 void SplatRenderer::prepare(const RenderSettings& settings, int width, int height) {
   if (width > 0 && height > 0)
     targets_.resize(width, height, pairedSlabs(settings), quarterSlabs(settings),
-                    voxelNormalSums(settings), halfFloatSlabs(settings));
+                    voxelNormalSums(settings), halfFloatSlabs(settings), coarseMarks(settings));
   splatPrograms_.select(splatVariant(settings, false));
   if (settings.mode != RenderMode::Composite) return;
   slabPrograms_.select(slabPassVariant(settings, false));
   if (settings.coarseSlabs) slabPrograms_.select(slabPassVariant(settings, true));
   if (volume_ && pairedSlabs(settings)) preparePairTable(settings);
+}
+
+bool SplatRenderer::coarseMarks(const RenderSettings& settings) {
+  return settings.coarseSlabs && settings.mode == RenderMode::Composite;
 }
 
 bool SplatRenderer::pairedSlabs(const RenderSettings& settings) {
@@ -332,7 +338,7 @@ double SplatRenderer::preparePairTable(const RenderSettings& settings) {
 void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSettings& settings) {
   const Lighting& light = settings.lighting;
   const bool coarser = std::any_of(frame_.slabScales.begin(), frame_.slabScales.end(),
-                                   [](int scale) { return scale > 1; });
+                                   [](double scale) { return scale > 1.0; });
   slabPass_[1] = nullptr;
   for (int scaled = coarser ? 1 : 0; scaled >= 0; --scaled) {
     gl::Program& p = slabPrograms_.select(slabPassVariant(settings, scaled == 1));
@@ -357,8 +363,8 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
     p.setInt("uSlabBack", int(kSlabBackUnit));
     p.setInt("uNeighbourBack", int(kNeighbourBackUnit));
     p.setInt("uSlab", 1);
-    p.setInt("uSlabScale", 1);
-    p.setInt("uNeighbourScale", 1);
+    p.setFloat("uSlabScale", 1.0f);
+    p.setFloat("uNeighbourScale", 1.0f);
   }
 }
 

@@ -160,6 +160,8 @@ class SplatRenderer : public Renderer {
   static bool fieldNormals(const RenderSettings& settings);
   // Post-classified and pre-integrated between slabs: two slab images, drawn in turn.
   static bool pairedSlabs(const RenderSettings& settings);
+  // Coarser slab images may be drawn: their marks need a depth image of their own.
+  static bool coarseMarks(const RenderSettings& settings);
   // Paired slabs with four depth samples a slab (RenderSettings::slabSamples): a second image
   // a slab for its back half.
   static bool quarterSlabs(const RenderSettings& settings);
@@ -206,10 +208,10 @@ class SplatRenderer : public Renderer {
   // frame_.slabs order) for this frame's slabs.
   void computeSlabRects();
   // The image scale of slab `slabIndex` of the drawing order (1 without computeSlabRects).
-  int slabScale(size_t slabIndex) const;
+  double slabScale(size_t slabIndex) const;
   // Sets the splat programs' projection, low-pass filter, clip rays and occlusion culling for
   // an image `scale` times coarser than the picture (1: the picture), and the viewport.
-  void setSplatScale(int scale);
+  void setSplatScale(double scale);
   // The slab pass program for slab `slabIndex` of the drawing order: the variant that reads
   // coarser images where it or its neighbour has one.
   gl::Program& slabPassProgram(size_t slabIndex);
@@ -223,7 +225,10 @@ class SplatRenderer : public Renderer {
   // Returns once no partition is running on the worker thread.
   void waitForPartition();
   // Scissor to the rectangle of slab `slabIndex` (drawing order), when slab scissors are on.
-  void scissorToSlab(size_t slabIndex, int scale = 1);
+  void scissorToSlab(size_t slabIndex, double scale = 1.0);
+  // Carries a coarser slab's marks (targets_.coarseMarks) to the picture's pixels in the
+  // stencil image's depth, each pixel taking its nearest texel's, for its slab pass.
+  void blitCoarseMarks(size_t slabIndex);
   // Scissor to `rect` (enables the scissor test).
   static void scissorTo(const PixelRect& rect);
   void drawSlabRange(size_t slabIndex, size_t first, size_t count);
@@ -323,8 +328,8 @@ class SplatRenderer : public Renderer {
     Clock::time_point partitionStart;  // for stats_.partitionMs
     std::vector<Slab> slabs;           // front to back: the CPU partition's, or the GPU's
     std::vector<PixelRect> slabRects;  // per slab: the pixels its kernels can reach
-    std::vector<int> slabScales;       // per slab: its image's scale (slab_image_scale.h)
-    int splatScale = 1;                // the scale the splat programs are set up for
+    std::vector<double> slabScales;    // per slab: its image's scale (slab_image_scale.h)
+    double splatScale = 1.0;           // the scale the splat programs are set up for
     bool pyramidBuilt = false;         // occlusion culling: a pyramid of this frame is bound
     PixelRect markRect;                // slabs composited since the last opacity marks
     bool gpuSlabs = false;             // slabs come from gpuPartition_

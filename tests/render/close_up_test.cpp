@@ -89,8 +89,8 @@ TEST(CloseUp, LowPassAndSlabSamplesOptions) {
   EXPECT_DOUBLE_EQ(lowPassVariance(s), 1.0);
   const Parsed pre = parse({"--synthetic", "sphere:8", "--classification", "pre"});
   EXPECT_DOUBLE_EQ(lowPassVariance(pre.options.render), 1.0);
-  const Parsed given = parse({"--synthetic", "sphere:8", "--low-pass", "0.7", "--slab-samples",
-                              "2", "--classification", "pre"});
+  const Parsed given = parse({"--synthetic", "sphere:8", "--low-pass", "0.7", "--slab-samples", "2",
+                              "--classification", "pre"});
   ASSERT_TRUE(given.result.run);
   EXPECT_DOUBLE_EQ(lowPassVariance(given.options.render), 0.7);
   EXPECT_EQ(given.options.render.slabSamples, 2);
@@ -124,6 +124,38 @@ TEST(CloseUp, OptionsGivenBesideItWin) {
   EXPECT_TRUE(parse({"--synthetic", "sphere:8", "--close-up", "--surface-threshold", "100",
                      "--classification", "pre"})
                   .result.run);
+}
+
+// The window takes the saved render settings only when no option the settings file holds is
+// given: each of them, given alone, must count (--slab-resolution and --post-normals did not,
+// so the window silently drew with the saved values).
+TEST(SavedSettings, EachOptionTheFileHoldsCountsAsGiven) {
+  EXPECT_FALSE(parse({"--synthetic", "sphere:8"}).options.renderOptionsGiven);
+  EXPECT_FALSE(parse({"--synthetic", "sphere:8", "--shading"}).options.renderOptionsGiven);
+  const std::vector<std::vector<const char*>> given = {{"--filter", "swan"},
+                                                       {"--render-mode", "mip"},
+                                                       {"--cutoff", "4"},
+                                                       {"--depth-cutoff", "4"},
+                                                       {"--kernel-width", "0.8"},
+                                                       {"--classification", "pre"},
+                                                       {"--slab-preintegration", "off"},
+                                                       {"--slab-samples", "2"},
+                                                       {"--low-pass", "0.7"},
+                                                       {"--prefilter", "0.1"},
+                                                       {"--post-normals", "voxel"},
+                                                       {"--slab-thickness", "3"},
+                                                       {"--slab-resolution", "full"},
+                                                       {"--background", "0.1,0.2,0.3"},
+                                                       {"--close-up"}};
+  for (const auto& option : given) {
+    std::vector<const char*> args = {"--synthetic", "sphere:8"};
+    args.insert(args.end(), option.begin(), option.end());
+    const Parsed p = parse(args);
+    ASSERT_TRUE(p.result.run) << option[0];
+    EXPECT_TRUE(p.options.renderOptionsGiven) << option[0];
+  }
+  EXPECT_FALSE(
+      parse({"--synthetic", "sphere:8", "--slab-resolution", "full"}).options.render.coarseSlabs);
 }
 
 // The program draws the same picture with --close-up as with its four options spelt out and as

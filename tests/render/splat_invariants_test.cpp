@@ -267,10 +267,10 @@ TEST_F(SplatInvariants, GpuTimestampsTimeTheStagesWithoutChangingThePicture) {
 }
 
 // RenderStats::gpuBytes counts what the renderer allocated: the splat and attribute buffers
-// (8 bytes a splat each), the transfer table (4096 RGBA32F texels), the frame's images (32
+// (8 bytes a splat each), the transfer table (4096 RGBA32F texels), the frame's images (36
 // bytes a pixel: the RGBA16F slab image of auto precision, the RGBA32F accumulation, the RGBA8
-// output and the depth-stencil) and the partition's buffers; a larger image adds exactly its
-// pixels.
+// output, the depth-stencil and the coarser slab images' marks) and the partition's buffers; a
+// larger image adds exactly its pixels.
 TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   const Volume cube = makeVolume(12, 12, 12, glm::dvec3(1.0), [](int, int, int) { return true; });
   renderer()->setVolume(cube);
@@ -285,7 +285,7 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   ASSERT_EQ(small.splatsTotal, 12u * 12u * 12u);
   // The splat records (8 bytes each; the attributes are not uploaded without shading or
   // surface splats: a 16-byte placeholder), the transfer table and the images.
-  const size_t fixed = small.splatsTotal * 8 + 16 + 4096 * 16 + 48 * 48 * 32;
+  const size_t fixed = small.splatsTotal * 8 + 16 + 4096 * 16 + 48 * 48 * 36;
   // Plus the order list (at least 4 bytes an entry) and, for the GPU partition, its scratch
   // buffers, which keep the capacity earlier frames needed.
   EXPECT_GE(small.gpuBytes, fixed + small.splatsTotal * 4);
@@ -295,7 +295,7 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   const size_t pyramid48 = 1024 + 256 + 64 + 16 + 4 + 1;
   const size_t pyramid96x64 = 2048 + 512 + 128 + 32 + 8 + 2 + 1;
   EXPECT_EQ(renderer()->stats().gpuBytes - small.gpuBytes,
-            size_t(96 * 64 - 48 * 48) * 32 + pyramid96x64 - pyramid48);
+            size_t(96 * 64 - 48 * 48) * 36 + pyramid96x64 - pyramid48);
   // Shading reads the normals: 8 bytes a splat more, in place of the placeholder.
   const size_t unshaded = renderer()->stats().gpuBytes;
   settings.lighting.enabled = true;

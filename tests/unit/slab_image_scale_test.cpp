@@ -23,22 +23,33 @@ TEST(SlabImageScale, FollowsTheSmallestFootprintOfTheSlab) {
   // sigma 0.7 world units: 7 pixels at depth 100, 0.7 at depth 1000.
   EXPECT_NEAR(minFootprintSigma(reach, 0.7, 100.0), 7.0, 1e-12);
   EXPECT_NEAR(minFootprintSigma(reach, 0.7, 1000.0), 0.7, 1e-12);
-  // 2 texels on an image s times coarser: sigma >= 4 pixels for 2, >= 8 for 4.
-  EXPECT_EQ(slabImageScale(reach, 0.7, 1000.0), 1);
-  EXPECT_EQ(slabImageScale(reach, 0.7, 0.7 * 1000.0 / 3.99), 1);
-  EXPECT_EQ(slabImageScale(reach, 0.7, 0.7 * 1000.0 / 4.01), 2);
-  EXPECT_EQ(slabImageScale(reach, 0.7, 0.7 * 1000.0 / 7.99), 2);
-  EXPECT_EQ(slabImageScale(reach, 0.7, 0.7 * 1000.0 / 8.01), 4);
+  // 2 texels on an image s times coarser, s in quarter steps: sigma >= 2.5 pixels for 1.25,
+  // >= 3 for 1.5, >= 4 for 2, >= 8 for 4.
+  EXPECT_EQ(slabImageScale(reach, 0.7, 1000.0), 1.0);
+  EXPECT_EQ(slabImageScale(reach, 0.7, 0.7 * 1000.0 / 2.49), 1.0);
+  EXPECT_EQ(slabImageScale(reach, 0.7, 0.7 * 1000.0 / 2.51), 1.25);
+  EXPECT_EQ(slabImageScale(reach, 0.7, 0.7 * 1000.0 / 3.3), 1.5);  // the default window's view
+  EXPECT_EQ(slabImageScale(reach, 0.7, 0.7 * 1000.0 / 3.99), 1.75);
+  EXPECT_EQ(slabImageScale(reach, 0.7, 0.7 * 1000.0 / 4.01), 2.0);
+  EXPECT_EQ(slabImageScale(reach, 0.7, 0.7 * 1000.0 / 7.99), 3.75);
+  EXPECT_EQ(slabImageScale(reach, 0.7, 0.7 * 1000.0 / 8.01), 4.0);
   EXPECT_EQ(slabImageScale(reach, 0.7, 1.0), kMaxSlabImageScale);  // never coarser than 4
+  // Every scale keeps the smallest footprint kMinSigmaTexels texels wide on its image.
+  for (double sigma = 0.5; sigma < 12.0; sigma += 0.01) {
+    const double s = slabImageScale(reach, 0.7, 0.7 * 1000.0 / sigma);
+    if (s > 1.0) EXPECT_GE(sigma / s, kMinSigmaTexels - 1e-9) << sigma;
+    EXPECT_EQ(std::fmod(s, kSlabImageScaleStep), 0.0) << sigma;
+  }
+  EXPECT_EQ(slabImageScale(reach, 0.7, 0.0), kMaxSlabImageScale);  // at the eye: infinitely wide
   // Orthographic: the same at every depth.
   KernelReach ortho = reach;
   ortho.orthographic = true;
-  ortho.pixelsPerUnit = 5.0;  // sigma 3.5 pixels
-  EXPECT_EQ(slabImageScale(ortho, 0.7, 1.0), 1);
-  EXPECT_EQ(slabImageScale(ortho, 0.7, 1e6), 1);
+  ortho.pixelsPerUnit = 3.5;  // sigma 2.45 pixels
+  EXPECT_EQ(slabImageScale(ortho, 0.7, 1.0), 1.0);
+  EXPECT_EQ(slabImageScale(ortho, 0.7, 1e6), 1.0);
   ortho.pixelsPerUnit = 6.0;  // 4.2
-  EXPECT_EQ(slabImageScale(ortho, 0.7, 1.0), 2);
-  EXPECT_EQ(slabImageScale(ortho, 0.7, 1e6), 2);
+  EXPECT_EQ(slabImageScale(ortho, 0.7, 1.0), 2.0);
+  EXPECT_EQ(slabImageScale(ortho, 0.7, 1e6), 2.0);
 }
 
 TEST(SlabImageScale, CoarserProjectionHasABorderTexel) {
@@ -61,8 +72,9 @@ TEST(SlabImageScale, CoarserProjectionHasABorderTexel) {
   EXPECT_EQ(scaledProjection(p, 1).width, 384);
   EXPECT_EQ(scaledCoordinate(x, 1), x);
   // Every texel a bilinear read of a picture pixel centre takes lies inside the image.
-  for (int scale : {2, 4}) {
+  for (double scale : {1.25, 1.5, 1.75, 2.0, 3.25, 4.0}) {
     const Projection q = scaledProjection(p, scale);
+    EXPECT_EQ(q.width, int(std::ceil(384.0 / scale)) + 2) << scale;
     for (int px : {0, 1, p.width - 2, p.width - 1}) {
       const double u = scaledCoordinate(px + 0.5, scale) - 0.5;
       EXPECT_GE(std::floor(u), 0.0) << scale << " " << px;
@@ -75,7 +87,7 @@ TEST(SlabImageScale, RectHoldsEveryTexelItsPixelsRead) {
   const PixelRect r{13, 7, 101, 64};
   EXPECT_EQ(scaledRect(r, 1).x0, 13);
   EXPECT_TRUE(scaledRect(PixelRect{}, 2).empty());
-  for (int scale : {2, 4}) {
+  for (double scale : {1.25, 1.5, 2.0, 2.75, 4.0}) {
     const PixelRect s = scaledRect(r, scale);
     for (int x = r.x0; x < r.x1; ++x) {
       const double u = scaledCoordinate(x + 0.5, scale) - 0.5;
@@ -88,7 +100,7 @@ TEST(SlabImageScale, RectHoldsEveryTexelItsPixelsRead) {
       EXPECT_LT(int(std::floor(v)) + 1, s.y1);
     }
     // No more than a texel of margin beyond what is read.
-    EXPECT_LE(s.x1 - s.x0, (r.x1 - r.x0) / scale + 3);
+    EXPECT_LE(s.x1 - s.x0, int(double(r.x1 - r.x0) / scale) + 3);
   }
 }
 
