@@ -42,9 +42,9 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
       ->check(CLI::IsMember({"auto", "on", "off"}));
   app.add_option("--slab-resolution", p.slabResolution,
                  "Composite: splat each slab into an image as coarse as its kernels allow (auto, "
-                 "default: 2 or 4 pixels a texel where every footprint stays 2 texels wide, "
-                 "read back bilinearly; not with shaded post-classification) or at the "
-                 "picture's resolution (full)")
+                 "default: 1.25 to 4 pixels a texel in quarter steps, where every footprint "
+                 "stays 2 texels wide, read back bilinearly; not with shaded "
+                 "post-classification) or at the picture's resolution (full)")
       ->check(CLI::IsMember({"auto", "full"}));
   app.add_option("--slab-precision", p.slabPrecision,
                  "Composite: slab images of half floats (half: within a few levels of float, "

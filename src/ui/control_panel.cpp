@@ -175,9 +175,9 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
   changed |= ImGui::Checkbox("coarse slabs", &settings.coarseSlabs);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
-        "Slabs whose kernels are all at least 4 pixels wide are splatted into images 2 or 4 "
-        "times coarser and read back bilinearly: faster close up, within a few levels "
-        "(ewaview --slab-resolution auto; off: full)");
+        "Slabs whose kernels are all at least 2.5 pixels wide are splatted into images 1.25 "
+        "to 4 times coarser (each kernel 2 texels wide) and read back bilinearly: faster close "
+        "up, within a few levels (ewaview --slab-resolution auto; off: full)");
 
   for (RenderMode mode : kModes) {
     if (mode != kModes[0]) ImGui::SameLine();
