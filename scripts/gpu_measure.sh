@@ -8,6 +8,7 @@ bundle="$(cd "$1" && pwd)"
 data="$2"
 out="$3"
 mode="${4:-all}"
+assets="$(cd "$(dirname "$0")/../assets" && pwd)"  # the default volume and its sidecar
 mkdir -p "$out"
 export LD_LIBRARY_PATH="$bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 # Every program, and the render suite's own context, through EGL (OSMesa is stubbed).
@@ -32,4 +33,12 @@ if [ "$mode" = all ] || [ "$mode" = bench ]; then
     --repeats 3 --partition cpu | tee -a "$out/compare.txt"
   "$bin/ewaview" --synthetic marschner-lobb:512 --backend egl --resolution 1024,1024 \
     -o "$out/ml512.png" --stats | tee "$out/ml512.txt"
+  # Coarser slab images (measured on llvmpipe only): the default volume in the window's size
+  # (kernels 3.3 pixels wide: scales 1.25-1.75) with them and without, three times each.
+  for i in 1 2 3; do
+    for res in auto full; do
+      echo "default volume 1024x768 --slab-resolution $res: $("$bin/ewaview" "$assets/default.nrrd" \
+        --backend egl --resolution 1024,768 -o "$out/default_$res.png" --stats --slab-resolution "$res")"
+    done
+  done | tee "$out/coarse_slabs.txt"
 fi
