@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace ewa {
 
@@ -42,6 +43,16 @@ PixelRect scaledRect(const PixelRect& rect, double scale) {
     return int(std::floor(scaledCoordinate(v - 0.5, scale) - 0.5)) + 2;
   };
   return {lo(rect.x0), lo(rect.y0), hi(rect.x1), hi(rect.y1)};
+}
+
+BlitRects coarseToPictureBlit(int width, int height, double scale) {
+  const int steps = int(std::lround(1.0 / kSlabImageScaleStep));
+  const int quarters = int(std::lround(scale * steps));
+  const int divisor = std::gcd(quarters, steps);
+  const int num = quarters / divisor, den = steps / divisor;  // scale = num / den
+  const auto span = [&](int pixels) { return (pixels + num - 1) / num * num; };
+  const int dx = span(width), dy = span(height);
+  return {{1, 1, 1 + dx / num * den, 1 + dy / num * den}, {0, 0, dx, dy}};
 }
 
 }  // namespace ewa

@@ -52,4 +52,14 @@ double scaledCoordinate(double pixel, double scale);
 // The texels of that image the bilinear reads of `rect`'s pixels take (rounded outwards).
 PixelRect scaledRect(const PixelRect& rect, double scale);
 
+// The source (texels of that image) and destination (picture pixels) rectangles of a blit that
+// maps picture coordinate x to scaledCoordinate(x, scale), covering a `width` x `height`
+// picture (it may reach beyond it). A blit maps its rectangles' integer ends linearly, so the
+// destination spans a multiple of the scale's numerator (scale = num / den, a multiple of
+// kSlabImageScaleStep) from pixel 0, the source the matching texels from texel 1.
+struct BlitRects {
+  PixelRect source, destination;
+};
+BlitRects coarseToPictureBlit(int width, int height, double scale);
+
 }  // namespace ewa

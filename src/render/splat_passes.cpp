@@ -7,7 +7,6 @@
 #include <future>
 #include <glm/gtc/type_ptr.hpp>
 #include <limits>
-#include <numeric>
 
 #include "core/clip_share.h"
 #include "core/kernel_reach.h"
@@ -268,20 +267,14 @@ void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
 }
 
 void SplatRenderer::blitCoarseMarks(size_t s) {
-  // Picture pixel centre x + 0.5 lies at texel coordinate (x + 0.5) / scale + 1
-  // (scaledCoordinate); a blit maps its rectangles' ends linearly, so they are integers that
-  // keep that ratio: a span of D pixels, D a multiple of the scale's numerator (the scale is
-  // a multiple of a quarter), from texel 1. The scissor keeps it to the slab's rectangle.
-  const double scale = slabScale(s);
-  const int quarters = int(std::lround(scale * 4.0));
-  const int divisor = std::gcd(quarters, 4);
-  const int num = quarters / divisor, den = 4 / divisor;  // scale = num / den
-  const auto span = [&](int pixels) { return (pixels + num - 1) / num * num; };
-  const int dx = span(frame_.width), dy = span(frame_.height);
+  // Each picture pixel takes the texel its centre lies in (scaledCoordinate); the scissor
+  // keeps the blit to the slab's rectangle.
+  const BlitRects r = coarseToPictureBlit(frame_.width, frame_.height, slabScale(s));
   scissorToSlab(s);
-  glBlitNamedFramebuffer(targets_.slabCoarseTarget(slabImageOf(s)).id(), targets_.accumFbo.id(), 1,
-                         1, 1 + dx / num * den, 1 + dy / num * den, 0, 0, dx, dy,
-                         GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  glBlitNamedFramebuffer(targets_.slabCoarseTarget(slabImageOf(s)).id(), targets_.accumFbo.id(),
+                         r.source.x0, r.source.y0, r.source.x1, r.source.y1, r.destination.x0,
+                         r.destination.y0, r.destination.x1, r.destination.y1, GL_DEPTH_BUFFER_BIT,
+                         GL_NEAREST);
 }
 
 void SplatRenderer::endCompositeSlab(size_t s) {

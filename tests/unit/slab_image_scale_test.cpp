@@ -105,6 +105,34 @@ TEST(SlabImageScale, RectHoldsEveryTexelItsPixelsRead) {
   }
 }
 
+// The marks' blit maps each picture coordinate where scaledCoordinate does (a blit maps its
+// rectangles' ends linearly), covers the picture, and reads no texel past the coarser image's
+// own (ceil(width / scale) + 2 wide) beyond what lies outside the picture.
+TEST(SlabImageScale, CoarseBlitMapsPixelsAsTheBilinearReadDoes) {
+  for (int width : {16, 97, 1024}) {
+    for (double scale = 1.25; scale <= kMaxSlabImageScale; scale += kSlabImageScaleStep) {
+      const BlitRects r = coarseToPictureBlit(width, 768, scale);
+      EXPECT_EQ(r.destination.x0, 0);
+      EXPECT_GE(r.destination.x1, width);
+      EXPECT_GE(r.destination.y1, 768);
+      const double ratio =
+          double(r.source.x1 - r.source.x0) / (r.destination.x1 - r.destination.x0);
+      EXPECT_NEAR(ratio, 1.0 / scale, 1e-12) << scale;
+      EXPECT_NEAR(double(r.source.y1 - r.source.y0) / (r.destination.y1 - r.destination.y0),
+                  1.0 / scale, 1e-12);
+      for (double x : {0.5, 7.5, double(width) - 0.5})
+        EXPECT_NEAR(r.source.x0 + (x - r.destination.x0) * ratio, scaledCoordinate(x, scale), 1e-9)
+            << width << " " << scale;
+      // The picture's last pixel reads a texel of the coarser image.
+      const double last = scaledCoordinate(width - 0.5, scale);
+      Projection picture;
+      picture.width = width;
+      picture.height = 768;
+      EXPECT_LT(last, scaledProjection(picture, scale).width);
+    }
+  }
+}
+
 // The rule's premise, in one dimension: a Gaussian at least kMinSigmaTexels texels wide,
 // sampled at texel centres and read back linearly between them, is within 1/(8 sigma^2) of its
 // peak everywhere (3.1% at 2 texels; an isolated kernel, the worst case: the sums of
