@@ -169,6 +169,10 @@ int run(int argc, char** argv) {
   app.add_option("--slab-samples", settings.slabSamples,
                  "EWA post-classification, pre-integrated: depth samples a slab, 4 (default) or 2")
       ->check(CLI::IsMember({2, 4}));
+  app.add_option("--slab-passes", settings.slabPasses,
+                 "EWA, 4 samples a slab: splat each slab once into both images (1, default) or "
+                 "once into each (2)")
+      ->check(CLI::IsMember({1, 2}));
   app.add_option("--prefilter", settings.classification.prefilter,
                  "EWA post-classification: value prefilter strength (default 0.05)")
       ->check(CLI::Range(0.0, kMaxPrefilter));
@@ -225,10 +229,12 @@ int run(int argc, char** argv) {
   parsePartitionMode(partition, &partitionMode);
   ewa.setPartition(partitionMode);
   char ewaText[320], prefilterText[64];
-  std::snprintf(
-      prefilterText, sizeof prefilterText, ", prefilter %g%s", settings.classification.prefilter,
-      pairs == "on" ? (settings.slabSamples >= 4 ? ", 4 samples a slab" : ", 2 samples a slab")
-                    : "");
+  std::snprintf(prefilterText, sizeof prefilterText, ", prefilter %g%s",
+                settings.classification.prefilter,
+                pairs == "on" ? (settings.slabSamples < 4   ? ", 2 samples a slab"
+                                 : settings.slabPasses == 2 ? ", 4 samples a slab in 2 passes"
+                                                            : ", 4 samples a slab")
+                              : "");
   std::snprintf(ewaText, sizeof ewaText,
                 "kernel width %.2f, cutoff %g, depth cutoff %g, %s-classification%s%s, "
                 "%s slab images, occlusion culling %s%s%s%s, slab partition on the %s%s",

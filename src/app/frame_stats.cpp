@@ -36,6 +36,7 @@ std::string frameStatsJson(const RenderStats& s, const std::string& renderer, in
   j["slab_entries"] = s.slabEntries;
   j["entries_culled"] = s.entriesCulled;
   j["slabs_coarse"] = s.slabsCoarse;
+  j["gpu_partition"] = s.gpuPartition;
   j["gpu_bytes"] = s.gpuBytes;
   const double perSplat = gpuBytesPerSplat(s);
   j["gpu_bytes_per_splat"] = perSplat > 0.0 ? nlohmann::ordered_json(perSplat) : nullptr;

@@ -20,6 +20,11 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
                  "Post-classified and pre-integrated: each slab's values at 4 depths (its "
                  "quarters, default) or 2 (its halves; cheaper, softer in depth)")
       ->check(CLI::IsMember({2, 4}));
+  app.add_option("--slab-passes", s.slabPasses,
+                 "With 4 samples a slab: splat each slab's kernels once into both of its images "
+                 "(1, default) or once into each (2: the same picture; faster on some GPUs, "
+                 "slower on llvmpipe)")
+      ->check(CLI::IsMember({1, 2}));
   app.add_option("--prefilter", s.classification.prefilter,
                  "Post-classification: sharpen each splat's value by B times its discrete "
                  "Laplacian, so the kernels come nearer interpolating the voxels (default 0.05; 0: "

@@ -43,11 +43,19 @@ void Framebuffer::attachColor(GLuint index, const Texture& texture, GLint level)
     drawBuffers_.push_back(attachment);
     std::sort(drawBuffers_.begin(), drawBuffers_.end());
   }
+  drawTo(~0u);
+  glNamedFramebufferReadBuffer(id_, drawBuffers_.front());
+}
+
+void Framebuffer::drawTo(unsigned mask) {
+  if (drawBuffers_.empty()) return;
   // glDrawBuffers maps fragment output i to entry i, so leave gaps as GL_NONE.
   std::vector<GLenum> mapping(drawBuffers_.back() - GL_COLOR_ATTACHMENT0 + 1, GL_NONE);
-  for (GLenum buffer : drawBuffers_) mapping[buffer - GL_COLOR_ATTACHMENT0] = buffer;
+  for (GLenum buffer : drawBuffers_) {
+    const unsigned index = buffer - GL_COLOR_ATTACHMENT0;
+    if (index < 32 && (mask >> index) & 1u) mapping[index] = buffer;
+  }
   glNamedFramebufferDrawBuffers(id_, static_cast<GLsizei>(mapping.size()), mapping.data());
-  glNamedFramebufferReadBuffer(id_, drawBuffers_.front());
 }
 
 void Framebuffer::attachDepth(const Texture& texture, GLenum attachment, GLint level) {

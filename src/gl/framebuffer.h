@@ -37,6 +37,9 @@ class Framebuffer {
 
   // Clears colour attachment `index` of this framebuffer to `rgba` (4 floats).
   void clearColor(GLint index, const GLfloat* rgba);
+  // Fragment outputs reach only the attached colour buffers whose bit is set in `mask` (bit i:
+  // attachment i; the others take GL_NONE); ~0u restores them all.
+  void drawTo(unsigned mask);
   void clearDepth(GLfloat depth = 1.0f);
   // Binds as GL_FRAMEBUFFER.
   void bind() const;

@@ -106,6 +106,11 @@ struct RenderSettings {
   // one voxel thick come nearest a ray caster close up, for fewer draws than such slabs;
   // README, "Depth samples a slab").
   int slabSamples = 4;
+  // Four samples a slab: each slab's kernels splatted once into both of its images (1), or once
+  // into each (2): twice the vertex and fragment work for half the blending a pass. On an H200
+  // two passes made engine's and CThead's frames at 1024^2 0.63x and 0.57x as long, bonsai's
+  // 1.16x (README, "On a GPU"); on llvmpipe, whose cost is the fragments, they cost more.
+  int slabPasses = 1;
   // Composite: slab images of half floats (RGBA16F) or floats. Auto: half floats for kernels
   // at most one spacing wide (the default's 0.7), floats for wider ones, which overlap so many
   // kernels in a pixel of one slab that the smallest contributions round away (a homogeneous
@@ -168,6 +173,9 @@ struct RenderStats {
   size_t slabEntries = 0;    // splats drawn summed over slabs (kernels span several slabs)
   size_t entriesCulled = 0;  // of slabEntries, those occlusion culling did not rasterize
   bool quadPass = false;     // some footprints exceeded the point-size limit
+  // The slab lists came from the GPU's partition, whose order of a slab's entries (and the
+  // rounding of their sums with it) may vary between frames; false: the CPU's, or none.
+  bool gpuPartition = false;
   // Wall time of the last frame (render(), or beginFrame and every stepFrame), waits for the
   // GPU included.
   double renderMs = 0.0;

@@ -261,7 +261,20 @@ void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
   // The stencil marks the picture's pixels: coarser images draw every texel (near slabs, where
   // little is opaque yet).
   if (coarser) glDisable(GL_STENCIL_TEST);
-  drawSplats(range, stats_.quadPass, gpuSlab);
+  if (frame_.quarters && frame_.settings.slabPasses == 2) {
+    // The front quarters (and the voxel normals) first, then the back quarters: the same sums,
+    // each pass blending into one image.
+    gl::Framebuffer& fbo = coarser ? targets_.slabCoarseTarget(image) : targets_.slabTarget(image);
+    fbo.drawTo(0b011u);
+    drawSplats(range, stats_.quadPass, gpuSlab);
+    const size_t entries = stats_.slabEntries;  // the second pass draws the same entries
+    fbo.drawTo(0b100u);
+    drawSplats(range, stats_.quadPass, gpuSlab);
+    stats_.slabEntries = entries;
+    fbo.drawTo(~0u);
+  } else {
+    drawSplats(range, stats_.quadPass, gpuSlab);
+  }
   if (coarser && terminates()) glEnable(GL_STENCIL_TEST);
   glDisable(GL_DEPTH_TEST);
 }
@@ -582,6 +595,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     // Splats beyond a storage block: the GPU partition cannot read them, the CPU's can.
     frame_.texelBuffers = texelBuffers();
     frame_.gpuSlabs = gpuPartition() && !frame_.texelBuffers;
+    stats_.gpuPartition = frame_.gpuSlabs;
     if (frame_.gpuSlabs) {
       if (!gpuPartition_) gpuPartition_ = std::make_unique<GpuSlabPartition>(shaders_);
       gpuPartition_->build(splatBuffer_, attributeBuffer_, splats.size(),

@@ -162,6 +162,7 @@ TEST(StatsCli, OneJsonLineWithSplatsTimesAndMemory) {
   EXPECT_GT(j["slabs"].get<double>(), 0.0);
   EXPECT_GE(j["slab_entries"].get<double>(), j["splats_drawn"].get<double>());
   EXPECT_GT(j["peak_rss"].get<double>(), 1e6);
+  EXPECT_TRUE(j["gpu_partition"].is_boolean()) << r.out;
   ASSERT_TRUE(j.contains("gpu_bytes"));
   if (j["gpu_bytes"].get<double>() > 0)
     EXPECT_NEAR(j["gpu_bytes_per_splat"].get<double>(),
@@ -228,7 +229,8 @@ TEST(StatsCli, OcclusionCullingCountsCulledDrawsAndKeepsThePicture) {
   EXPECT_TRUE(culledAuto == a["entries_culled"].get<double>() || culledAuto == 0.0) << culledAuto;
   const Image8 imageOn = readPng(dir + "/culled_on.png"),
                imageOff = readPng(dir + "/culled_off.png");
-  EXPECT_EQ(imageOn.pixels, imageOff.pixels) << "culling changed the picture";
+  EXPECT_LE(maxDifference(imageOn, imageOff), runToRunLevels(on.out))
+      << "culling changed the picture";
   const CliRun post = runEwaview("--synthetic sphere:32 --tf " + tf +
                                  " --resolution 64,64 --stats --occlusion-culling on -o " + dir +
                                  "/culled_post.png");

@@ -151,5 +151,22 @@ TEST_F(GpuSlabPartitionTest, HoldsTheOrderListAndAFewWordsASlab) {
   EXPECT_EQ(gpu.bytes(), expected) << c.splats.size() << " splats, " << entries << " entries";
 }
 
+// The frame's statistics say which partition drew it (--stats' gpu_partition): tests that hold
+// two runs' pictures equal to the bit allow the GPU's varying order its rounding.
+TEST_F(GpuSlabPartitionTest, StatisticsNameThePartitionThatDrewTheFrame) {
+  const Volume vol = testVolume(glm::dvec3(1.0));
+  SplatRenderer& r = *renderer();
+  r.setVolume(vol);
+  r.setTransferFunction(whiteTf(0.3, 1.0));
+  Camera cam;
+  cam.frame(vol.boundsMin(), vol.boundsMax(), {0.3, 0.2, 1.0}, {0, 1, 0}, 1.0);
+  for (PartitionMode mode : {PartitionMode::Gpu, PartitionMode::Cpu, PartitionMode::Gpu}) {
+    r.setPartition(mode);
+    r.render(cam, paperSettings(), 32, 32);
+    EXPECT_GT(r.stats().slabEntries, 0u);
+    EXPECT_EQ(r.stats().gpuPartition, mode == PartitionMode::Gpu) << partitionModeName(mode);
+  }
+}
+
 }  // namespace
 }  // namespace ewa::test

@@ -45,6 +45,12 @@ int maxDifference(const Image8& a, const Image8& b) {
   return worst;
 }
 
+double meanValue(const Image8& a) {
+  double sum = 0.0;
+  for (uint8_t v : a.pixels) sum += v;
+  return sum / double(std::max<size_t>(1, a.pixels.size()));
+}
+
 Rgb8 backgroundRgb8(double r, double g, double b) {
   auto q = [](double v) { return uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
   return {q(r), q(g), q(b)};

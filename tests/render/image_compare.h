@@ -29,6 +29,8 @@ ImageDifference compareCovered(const Image8& a, const Image8& b, const Rgb8& bac
 // The largest absolute difference of one channel between two pictures of one size, 0..255
 // (255, and a failed expectation, when their sizes differ).
 int maxDifference(const Image8& a, const Image8& b);
+// Mean of all channels of all pixels (0 for an empty image).
+double meanValue(const Image8& a);
 
 // Reads tests/reference/<name>.png; throws std::runtime_error when absent or unreadable.
 Image8 readReference(const std::string& name);

@@ -47,12 +47,6 @@ glm::dvec2 brightnessCentre(const Image8& a, int scale) {
   return sum / std::max(total, 1e-9) * double(scale);
 }
 
-double meanValue(const Image8& a) {
-  double sum = 0.0;
-  for (uint8_t v : a.pixels) sum += v;
-  return sum / double(a.pixels.size());
-}
-
 // What a coarse level should change, predicted from the full picture alone. Box-averaging the
 // volume by f (discrete box variance (f^2 - 1)/12 voxels^2) and widening every kernel from one
 // voxel to f voxels (variance f^2 - 1) blur the picture by a Gaussian of variance

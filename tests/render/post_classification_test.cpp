@@ -317,5 +317,35 @@ TEST_F(PostClassification, ShadedBallFollowsLambertWithEitherNormals) {
                                                      size_t(size) * size * 8);
 }
 
+// Two passes a slab (--slab-passes 2) add the same sums into the same images, one image a pass:
+// the same picture to the bit (the CPU partition: one order of sums), also shaded with voxel
+// normals (their image drawn with the front quarters) and in coarser slab images. Last here:
+// the CPU partition's order pages stay allocated, which ShadedBall's byte count would see.
+TEST_F(PostClassification, TwoPassesASlabDrawTheSamePicture) {
+  const SyntheticVolume ml = makeSyntheticVolume("marschner-lobb:32");
+  SplatRenderer& r = *renderer();
+  r.setPartition(PartitionMode::Cpu);
+  r.setVolume(ml.volume);
+  r.setTransferFunction(*ml.transferFunction);
+  Camera cam;
+  cam.focalPoint = glm::dvec3(15.5);
+  cam.position = {40.0, -10.0, 45.0};  // near: the front slabs go to coarser images
+  cam.viewUp = {0.0, 0.0, 1.0};
+  for (int shaded = 0; shaded < 3; ++shaded) {
+    RenderSettings settings;
+    settings.lighting.enabled = shaded > 0;
+    if (shaded == 2) settings.postNormals = PostNormals::Voxel;
+    r.render(cam, settings, 96, 96);
+    const Image8 once = r.readImage();
+    const RenderStats onceStats = r.stats();
+    settings.slabPasses = 2;
+    r.render(cam, settings, 96, 96);
+    EXPECT_EQ(r.readImage().pixels, once.pixels) << "shaded " << shaded;
+    EXPECT_EQ(r.stats().slabEntries, onceStats.slabEntries);
+    EXPECT_GT(meanValue(once), 10.0);
+    if (shaded == 0) EXPECT_GT(onceStats.slabsCoarse, 0u);
+  }
+}
+
 }  // namespace
 }  // namespace ewa::test

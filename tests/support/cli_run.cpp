@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "image_compare.h"
@@ -41,6 +42,10 @@ CliRun runProgram(const std::string& binary, const std::string& args, const std:
   r.out = readWholeFile(stem + ".out");
   r.err = readWholeFile(stem + ".err");
   return r;
+}
+
+int runToRunLevels(const std::string& statsLine) {
+  return nlohmann::json::parse(statsLine).value("gpu_partition", false) ? 3 : 0;
 }
 
 }  // namespace ewa::test

@@ -26,4 +26,10 @@ std::string readWholeFile(const std::string& path);
 // Number of '\n' in `s`: errors must be one line.
 int lineCount(const std::string& s);
 
+// The levels (of 255) two runs' pictures of one setting may differ by, from a run's --stats
+// line: 0 where the CPU's slab partition drew it (one order of sums), 3 where the GPU's did
+// (its order of a slab's entries varies between runs; half-float slab images round the sums
+// apart by up to 3 levels on an H200).
+int runToRunLevels(const std::string& statsLine);
+
 }  // namespace ewa::test
