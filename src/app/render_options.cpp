@@ -20,11 +20,12 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
                  "Post-classified and pre-integrated: each slab's values at 4 depths (its "
                  "quarters, default) or 2 (its halves; cheaper, softer in depth)")
       ->check(CLI::IsMember({2, 4}));
-  app.add_option("--slab-passes", s.slabPasses,
+  app.add_option("--slab-passes", p.slabPasses,
                  "With 4 samples a slab: splat each slab's kernels once into both of its images "
-                 "(1, default) or once into each (2: the same picture; faster on some GPUs, "
-                 "slower on llvmpipe)")
-      ->check(CLI::IsMember({1, 2}));
+                 "(1) or once into each (2: the same picture, faster on some GPUs); auto "
+                 "(default): 1 on software rasterizers, elsewhere whichever timed frames find "
+                 "faster")
+      ->check(CLI::IsMember({"auto", "1", "2"}));
   app.add_option("--prefilter", s.classification.prefilter,
                  "Post-classification: sharpen each splat's value by B times its discrete "
                  "Laplacian, so the kernels come nearer interpolating the voxels (default 0.05; 0: "
@@ -96,6 +97,7 @@ std::string finishShadingOptions(const RenderOptionText& p, RenderSettings* s) {
   s->slabPreintegration = p.slabPreintegration == "on";
   s->coarseSlabs = p.slabResolution == "auto";
   parseSlabPrecision(p.slabPrecision, &s->slabPrecision);
+  s->slabPasses = p.slabPasses == "auto" ? 0 : std::stoi(p.slabPasses);
   parsePostNormals(p.postNormals, &s->postNormals);
   if (p.surfaceValue) {
     if (!std::isfinite(*p.surfaceValue)) return "--surface-threshold: not a finite number";

@@ -23,6 +23,7 @@ struct RenderOptionText {
   std::string occlusionCulling = "auto";
   std::string slabResolution = "auto";
   std::string slabPrecision = "auto";
+  std::string slabPasses = "auto";
   std::optional<double> surfaceValue;
   std::optional<double> surfaceOpacity;
 };

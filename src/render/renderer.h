@@ -107,10 +107,12 @@ struct RenderSettings {
   // README, "Depth samples a slab").
   int slabSamples = 4;
   // Four samples a slab: each slab's kernels splatted once into both of its images (1), or once
-  // into each (2): twice the vertex and fragment work for half the blending a pass. On an H200
-  // two passes made engine's and CThead's frames at 1024^2 0.63x and 0.57x as long, bonsai's
-  // 1.16x (README, "On a GPU"); on llvmpipe, whose cost is the fragments, they cost more.
-  int slabPasses = 1;
+  // into each (2): twice the vertex and fragment work for half the blending a pass, the same
+  // picture to the bit. On an H200 two passes made engine's and CThead's frames at 1024^2 0.63x
+  // and 0.57x as long, bonsai's 1.16x (README, "On a GPU"); on llvmpipe, whose cost is the
+  // fragments, they cost more. 0 (auto): one pass where the GPU's timers are not used
+  // (software rasterizers); elsewhere the faster as timed frames find it (TwoWayTuner).
+  int slabPasses = 0;
   // Composite: slab images of half floats (RGBA16F) or floats. Auto: half floats for kernels
   // at most one spacing wide (the default's 0.7), floats for wider ones, which overlap so many
   // kernels in a pixel of one slab that the smallest contributions round away (a homogeneous
@@ -176,6 +178,7 @@ struct RenderStats {
   // The slab lists came from the GPU's partition, whose order of a slab's entries (and the
   // rounding of their sums with it) may vary between frames; false: the CPU's, or none.
   bool gpuPartition = false;
+  int slabPasses = 0;  // four samples a slab: the passes each slab took (1 or 2); 0 otherwise
   // Wall time of the last frame (render(), or beginFrame and every stepFrame), waits for the
   // GPU included.
   double renderMs = 0.0;

@@ -261,7 +261,7 @@ void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
   // The stencil marks the picture's pixels: coarser images draw every texel (near slabs, where
   // little is opaque yet).
   if (coarser) glDisable(GL_STENCIL_TEST);
-  if (frame_.quarters && frame_.settings.slabPasses == 2) {
+  if (frame_.quarters && frame_.slabPasses == 2) {
     // The front quarters (and the voxel normals) first, then the back quarters: the same sums,
     // each pass blending into one image.
     gl::Framebuffer& fbo = coarser ? targets_.slabCoarseTarget(image) : targets_.slabTarget(image);
@@ -553,9 +553,11 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   frame_.height = height;
   frame_.pairedSlabs = pairedSlabs(settings);
   frame_.quarters = quarterSlabs(settings);
+  frame_.slabPasses = slabPassesFor(settings);
   targets_.resize(width, height, frame_.pairedSlabs, frame_.quarters, voxelNormalSums(settings),
                   halfFloatSlabs(settings), coarseMarks(settings));
   stats_ = RenderStats{};
+  stats_.slabPasses = frame_.quarters ? frame_.slabPasses : 0;
   const GLfloat zero[4] = {0, 0, 0, 0};
   glDisable(GL_SCISSOR_TEST);  // the whole images are cleared
   targets_.accumFbo.clearColor(0, zero);
@@ -778,6 +780,10 @@ bool SplatRenderer::stepFrame(double budgetMs) {
     for (size_t s = 0; s < drawn && s < frame_.slabs.size(); ++s)
       stats_.slabEntries += slabInOrder(s).count;
   }
+  // Auto passes: this frame's splat stage a slab entry, for the way it took (the GPU
+  // partition's entries are only counted above).
+  if (frame_.timed && frame_.quarters && frame_.settings.slabPasses == 0 && stats_.slabEntries > 0)
+    passTuner_.report(frame_.slabPasses - 1, stats_.splatMs / double(stats_.slabEntries));
   frame_.active = false;
   stats_.renderMs += millisecondsSince(start);
   return true;

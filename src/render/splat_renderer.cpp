@@ -111,6 +111,7 @@ void SplatRenderer::setPointSizeLimit(float limit) {
 void SplatRenderer::setVolume(const Volume& volume) {
   volume_ = &volume;
   splatsDirty_ = true;
+  passTuner_.reset();  // another volume: both ways timed again
 }
 
 void SplatRenderer::setTransferFunction(const TransferFunction& tf) {
@@ -321,6 +322,13 @@ bool SplatRenderer::pairedSlabs(const RenderSettings& settings) {
 
 bool SplatRenderer::quarterSlabs(const RenderSettings& settings) {
   return pairedSlabs(settings) && settings.slabSamples >= 4;
+}
+
+int SplatRenderer::slabPassesFor(const RenderSettings& settings) const {
+  if (settings.slabPasses == 1 || settings.slabPasses == 2) return settings.slabPasses;
+  // Auto: timed frames choose where the GPU's timers are used (not on software rasterizers,
+  // where two passes always cost more: the fragments are the cost).
+  return gpuTimers_ ? 1 + passTuner_.choice() : 1;
 }
 
 double SplatRenderer::slabThickness(const RenderSettings& settings, const glm::dvec3& spacing) {

@@ -14,6 +14,7 @@
 #include "core/slab_rect.h"
 #include "core/splat_attributes.h"
 #include "core/splat_set.h"
+#include "core/two_way_tuner.h"
 #include "gl/buffer.h"
 #include "gl/program.h"
 #include "gl/shader_library.h"
@@ -135,6 +136,7 @@ class SplatRenderer : public Renderer {
   // rasterizers, which draw everything when it is waited for anyway). Budgeted steps time
   // their chunks with glFinish either way: the next chunk is sized from the last one's time.
   void setGpuTimers(bool on) { gpuTimers_ = on; }
+  bool gpuTimers() const { return gpuTimers_; }
 
  private:
   void rebuildSplats(const Classification& classification);
@@ -165,6 +167,8 @@ class SplatRenderer : public Renderer {
   // Paired slabs with four depth samples a slab (RenderSettings::slabSamples): a second image
   // a slab for its back half.
   static bool quarterSlabs(const RenderSettings& settings);
+  // The passes a slab of a frame with `settings` takes: the setting's, or auto's choice.
+  int slabPassesFor(const RenderSettings& settings) const;
   // The slabs' thickness in world units for a volume of this spacing.
   static double slabThickness(const RenderSettings& settings, const glm::dvec3& spacing);
   // Builds the pre-integration tables for `settings` unless they are up to date; returns the
@@ -305,6 +309,7 @@ class SplatRenderer : public Renderer {
   // Timestamps of a whole frame: splat stage begun, splat stage done, final pass done.
   unsigned timers_[3] = {0, 0, 0};
   bool gpuTimers_ = false;
+  TwoWayTuner passTuner_;  // slabPasses auto: one pass a slab (way 0) or two (way 1)
   float pointSizeLimit_ = 64.0f;
   float glPointSizeLimit_ = 64.0f;
   int maxViewport_ = 16384;  // GL_MAX_VIEWPORT_DIMS, the smaller
@@ -339,6 +344,7 @@ class SplatRenderer : public Renderer {
     bool occlusion = false;    // occlusion culling in this frame (front to back, terminating)
     bool pairedSlabs = false;  // post-classified with pre-integration: two slab images
     bool quarters = false;     // paired, four depth samples a slab: two images a slab
+    int slabPasses = 1;        // quarters: splat passes a slab (RenderSettings::slabPasses)
     int nextQuery = 0;         // of queries_, the one the next check issues
     bool queryIssued[2] = {false, false};  // lagged termination: a result not yet read
     bool conditional = false;              // lagged termination: conditional rendering begun

@@ -107,9 +107,14 @@ TEST(CloseUp, LowPassSlabSamplesAndPassesOptions) {
     EXPECT_FALSE(q.result.run) << bad;
     EXPECT_EQ(q.result.exitCode, 2) << bad;
   }
-  // Passes a slab: 1 by default, 2 given; nothing else.
-  EXPECT_EQ(plain.options.render.slabPasses, 1);
-  EXPECT_EQ(parse({"--synthetic", "sphere:8", "--slab-passes", "2"}).options.render.slabPasses, 2);
+  // Passes a slab: auto (0) by default, 1 or 2 given; nothing else.
+  EXPECT_EQ(plain.options.render.slabPasses, 0);
+  for (int passes : {1, 2})
+    EXPECT_EQ(parse({"--synthetic", "sphere:8", "--slab-passes", std::to_string(passes).c_str()})
+                  .options.render.slabPasses,
+              passes);
+  EXPECT_EQ(parse({"--synthetic", "sphere:8", "--slab-passes", "auto"}).options.render.slabPasses,
+            0);
   for (const char* bad : {"0", "3", "x"}) {
     const Parsed q = parse({"--synthetic", "sphere:8", "--slab-passes", bad});
     EXPECT_FALSE(q.result.run) << bad;

@@ -1,0 +1,30 @@
+// Chooses the cheaper of two ways of drawing that give the same picture, from frames timed each
+// way.
+#pragma once
+
+namespace ewa {
+
+// Each way is tried once, then the cheaper one taken, and the other tried again every
+// kRetryEvery frames: their costs move with the view, the volume and the window's size.
+// Costs are per unit of work (milliseconds a slab entry), so frames of different views compare.
+class TwoWayTuner {
+ public:
+  static constexpr int kRetryEvery = 32;
+
+  // The way (0 or 1) the next timed frame should take.
+  int choice() const;
+  // A frame drawn `way` took `cost` per unit of work; non-finite or negative costs are ignored.
+  void report(int way, double cost);
+  // Forgets both costs (a new volume or setting): each way is tried again.
+  void reset();
+  // The latest cost of `way`; negative while it has not been measured.
+  double cost(int way) const { return cost_[way & 1]; }
+
+ private:
+  int cheaper() const { return cost_[1] < cost_[0] ? 1 : 0; }
+
+  double cost_[2] = {-1.0, -1.0};
+  int sinceRetry_ = 0;  // frames the cheaper way has drawn since the other was last tried
+};
+
+}  // namespace ewa
