@@ -18,6 +18,7 @@
 #include "io/volume_loader.h"
 #include "platform/headless_context.h"
 #include "render/lod_renderer.h"
+#include "render/renderer_factory.h"
 #include "render/splat_renderer.h"
 
 namespace ewa {
@@ -48,16 +49,26 @@ Options optionsFor(const std::string& spec, int size) {
 }
 
 std::vector<std::string> defaultVolumes(const std::string& d) {
-  return {d + "/nucleon/nucleon.nrrd",      d + "/headmr/HeadMRVolume.mhd",
-          d + "/neghip/neghip.slc",         d + "/headsq/quarter.nhdr",
-          d + "/tooth/tooth.nrrd",          d + "/walnut/walnut.dat",
-          d + "/fetal-t2/template_T2.nrrd", d + "/hydrogen/hydrogenatom.dat",
-          d + "/cthead/CThead.nhdr",        d + "/mrbrain/MRbrain.raw@256,256,109@uint16@1,1,2@big",
-          d + "/lidc2/LIDC2.mha",           d + "/engine/engine.nhdr",
-          d + "/aneurism/aneurism.nhdr",    d + "/bonsai/bonsai.nhdr",
-          d + "/dicom-pet",                 d + "/nifti/anatomical.nii",
-          d + "/nifti/example4d.nii.gz",    d + "/nifti/example_nifti2.nii.gz",
-          d + "/nifti/functional.nii",      d + "/nifti/standard.nii.gz"};
+  return {d + "/nucleon/nucleon.nrrd",
+          d + "/headmr/HeadMRVolume.mhd",
+          d + "/neghip/neghip.slc",
+          d + "/headsq/quarter.nhdr",
+          d + "/tooth/tooth.nrrd",
+          d + "/walnut/walnut.dat",
+          d + "/fetal-t2/template_T2.nrrd",
+          d + "/hydrogen/hydrogenatom.dat",
+          d + "/cthead/CThead.nhdr",
+          d + "/mrbrain/MRbrain.raw@256,256,109@uint16@1,1,2@big",
+          d + "/lidc2/LIDC2.mha",
+          d + "/engine/engine.nhdr",
+          d + "/aneurism/aneurism.nhdr",
+          d + "/bonsai/bonsai.nhdr",
+          d + "/dicom-pet",
+          d + "/nifti/anatomical.nii",
+          d + "/nifti/example4d.nii.gz",
+          d + "/nifti/example_nifti2.nii.gz",
+          d + "/nifti/functional.nii",
+          d + "/nifti/standard.nii.gz"};
 }
 
 // The MR DICOM stack comes zipped: unpacked (with unzip) into a temporary folder to be read.
@@ -121,7 +132,10 @@ int run(int argc, char** argv) {
     auto t = BenchClock::now();
     LodVolumes coarse = buildLodVolumes(scene.volume);
     const double lodBuildMs = msSince(t);
-    LodRenderer lod([&shaders] { return std::make_unique<SplatRenderer>(shaders); });
+    // The window's way: the levels share one set of programs.
+    std::shared_ptr<SplatProgramSet> programs;
+    LodRenderer lod(
+        [&shaders, &programs] { return createRenderer(RendererKind::Splat, shaders, &programs); });
     lod.setVolume(scene.volume, std::move(coarse));
     lod.setTransferFunction(scene.transferFunction);
     const Camera start = initialCamera(scene.volume, o);

@@ -6,9 +6,12 @@
 
 namespace ewa {
 
-std::unique_ptr<Renderer> createRenderer(RendererKind kind, const gl::ShaderLibrary& shaders) {
+std::unique_ptr<Renderer> createRenderer(RendererKind kind, const gl::ShaderLibrary& shaders,
+                                         std::shared_ptr<SplatProgramSet>* sharedPrograms) {
   if (kind == RendererKind::ShearWarp) return std::make_unique<ShearWarpRenderer>();
-  return std::make_unique<SplatRenderer>(shaders);
+  if (!sharedPrograms) return std::make_unique<SplatRenderer>(shaders);
+  if (!*sharedPrograms) *sharedPrograms = std::make_shared<SplatProgramSet>(shaders);
+  return std::make_unique<SplatRenderer>(shaders, *sharedPrograms);
 }
 
 }  // namespace ewa

@@ -684,15 +684,21 @@ void SplatRenderer::prepareSlabs(double nearest) {
     occlusion_.resize(frame_.width, frame_.height);
     occlusion_.resetCount();
   }
-  splatPrograms_.select(splatVariant(settings, frame_.texelBuffers));
-  setCommonUniforms(splatPrograms_.point(), frame_.camera, proj, settings);
-  setCommonUniforms(splatPrograms_.quad(), frame_.camera, proj, settings);
-  setSlabPassUniforms(proj, settings);
+  setFrameUniforms();
   frame_.drawSplats = true;
   setFrameWeights();
   // The partition (its upload or its compute passes and the range read back; on the CPU, from
   // the worker's start).
   stats_.partitionMs = millisecondsSince(frame_.partitionStart);
+}
+
+void SplatRenderer::setFrameUniforms() {
+  const RenderSettings& settings = frame_.settings;
+  splatPrograms_.select(splatVariant(settings, frame_.texelBuffers));
+  setCommonUniforms(splatPrograms_.point(), frame_.camera, frame_.proj, settings);
+  setCommonUniforms(splatPrograms_.quad(), frame_.camera, frame_.proj, settings);
+  setSlabPassUniforms(frame_.proj, settings);
+  programs_->user = this;
 }
 
 void SplatRenderer::setFrameWeights() {
@@ -743,6 +749,8 @@ bool SplatRenderer::stepFrame(double budgetMs) {
   frame_.timed = gpuTimers_ && !std::isfinite(budgetMs) && frame_.drawnWeight == 0.0;
   if (frame_.timed) glQueryCounter(timers_[0], GL_TIMESTAMP);
   if (frame_.drawSplats) {
+    // Another renderer sharing the programs drew since this frame set them up.
+    if (programs_->user != this) setFrameUniforms();
     bindFrameState();
     glEnable(GL_BLEND);
     const bool done = frame_.settings.mode == RenderMode::Composite

@@ -30,13 +30,15 @@ bool parsePartitionMode(const std::string& text, PartitionMode* mode) {
   return parseIn(kPartitionModeNames, text, mode);
 }
 
-SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders)
+SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders,
+                             std::shared_ptr<SplatProgramSet> programs)
     : shaders_(shaders),
-      splatPrograms_(shaders_),
-      slabPrograms_(shaders_),
-      markProgram_(shaders.program("fullscreen.vert.glsl", "opacity_mark.frag.glsl")),
-      finalProgram_(shaders.program("fullscreen.vert.glsl", "final_composite.frag.glsl")),
-      boxProgram_(shaders.program("bounds_box.vert.glsl", "bounds_box.frag.glsl")),
+      programs_(programs ? std::move(programs) : std::make_shared<SplatProgramSet>(shaders)),
+      splatPrograms_(programs_->splat),
+      slabPrograms_(programs_->slab),
+      markProgram_(programs_->mark),
+      finalProgram_(programs_->final),
+      boxProgram_(programs_->box),
       occlusion_(shaders),
       emptyVao_(gl::VertexArray::create()),
       transferTexture_(gl::Texture::create1D(GL_RGBA32F, kTransferSamples)) {
@@ -82,6 +84,7 @@ SplatRenderer::~SplatRenderer() {
   waitForPartition();
   if (queries_[0]) glDeleteQueries(2, queries_);
   if (timers_[0]) glDeleteQueries(3, timers_);
+  if (programs_->user == this) programs_->user = nullptr;  // another renderer may get this address
 }
 
 uint64_t SplatRenderer::storageBlockBytes() const {
@@ -306,6 +309,7 @@ void SplatRenderer::prepare(const RenderSettings& settings, int width, int heigh
     targets_.resize(width, height, pairedSlabs(settings), quarterSlabs(settings),
                     voxelNormalSums(settings), halfFloatSlabs(settings), coarseMarks(settings));
   splatPrograms_.select(splatVariant(settings, false));
+  programs_->user = nullptr;  // the current variant changed: a frame under way sets its own again
   if (settings.mode != RenderMode::Composite) return;
   slabPrograms_.select(slabPassVariant(settings, false));
   if (settings.coarseSlabs) slabPrograms_.select(slabPassVariant(settings, true));

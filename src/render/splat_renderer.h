@@ -27,6 +27,7 @@
 #include "render/renderer.h"
 #include "render/slab_pair_table.h"
 #include "render/slab_pass_programs.h"
+#include "render/splat_program_set.h"
 #include "render/splat_programs.h"
 
 namespace ewa {
@@ -41,7 +42,9 @@ bool parsePartitionMode(const std::string& text, PartitionMode* mode);
 class SplatRenderer : public Renderer {
  public:
   // Builds the shader programs; a GL 4.5 context must be current. Throws gl::GlError.
-  explicit SplatRenderer(const gl::ShaderLibrary& shaders);
+  // `programs`: a set shared with other renderers of this context (made here when null).
+  explicit SplatRenderer(const gl::ShaderLibrary& shaders,
+                         std::shared_ptr<SplatProgramSet> programs = nullptr);
   ~SplatRenderer() override;
 
   void setVolume(const Volume& volume) override;
@@ -189,6 +192,8 @@ class SplatRenderer : public Renderer {
   // CPU's from then on (for drawing in budgeted steps and for the statistics).
   void takeGpuCounts();
   void setFrameWeights();
+  // Selects this frame's program variants and sets their per-frame uniforms (programs_->user).
+  void setFrameUniforms();
   // GL state every step needs again (a window draws other things between steps).
   void bindFrameState();
   void setSlabLoopState();
@@ -268,12 +273,13 @@ class SplatRenderer : public Renderer {
   std::optional<std::pair<double, double>> depthWindow_;
   bool slabScissor_ = true;
 
-  SplatPrograms splatPrograms_;    // the point and quad programs of this frame's variant
-  SlabPassPrograms slabPrograms_;  // the slab pass of this frame's variants
+  std::shared_ptr<SplatProgramSet> programs_;  // perhaps shared (SplatProgramSet)
+  SplatPrograms& splatPrograms_;    // the point and quad programs of this frame's variant
+  SlabPassPrograms& slabPrograms_;  // the slab pass of this frame's variants
   gl::Program* slabPass_[2] = {nullptr, nullptr};  // this frame's: full-resolution, coarser
-  gl::Program markProgram_;
-  gl::Program finalProgram_;
-  gl::Program boxProgram_;
+  gl::Program& markProgram_;
+  gl::Program& finalProgram_;
+  gl::Program& boxProgram_;
   OcclusionPyramid occlusion_;
   static constexpr unsigned kOpaqueUnit = 4;  // texture unit of the occlusion pyramid
   SlabPairTable pairTable_;                   // post-classification with pre-integration

@@ -58,7 +58,7 @@ ViewerWindow::ViewerWindow(platform::GlfwWindowContext& window, LoadedVolume ini
       config_(config),
       saved_(config.saved),
       shaders_(config.shaderDir),
-      lod_([this] { return createRenderer(settings_.renderer, shaders_); }),
+      lod_([this] { return createRenderer(settings_.renderer, shaders_, &splatPrograms_); }),
       refinement_(refineBudgetMs(), kRefineFrameTargetMs),
       controller_(config.camera),
       settings_(config.settings),

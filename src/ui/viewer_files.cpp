@@ -5,8 +5,8 @@
 #include <iostream>
 #include <optional>
 
-#include "render/renderer_factory.h"
 #include "core/camera_views.h"
+#include "render/renderer_factory.h"
 #include "ui/viewer_window.h"
 
 namespace ewa {
@@ -42,9 +42,9 @@ void ViewerWindow::adopt(LoadedVolume loaded, bool newCamera) {
     Camera camera;
     camera.viewAngleDeg = controller_.camera().viewAngleDeg;
     camera.orthographic = controller_.camera().orthographic;
-    camera = initialVolumeView(camera, current_.volume->worldBoundsMin(),
-                               current_.volume->worldBoundsMax(),
-                               fb.y > 0 ? double(fb.x) / fb.y : 1.0, current_.volume->patientFrame());
+    camera = initialVolumeView(
+        camera, current_.volume->worldBoundsMin(), current_.volume->worldBoundsMax(),
+        fb.y > 0 ? double(fb.x) / fb.y : 1.0, current_.volume->patientFrame());
     controller_.restart(camera);
   }
   if (!current_.path.empty()) addRecentFile(saved_.recentFiles, current_.path);
@@ -85,7 +85,7 @@ void ViewerWindow::pollLoad() {
 // Every level's renderer is of the kind settings_.renderer names (the panel switches it).
 LodRenderer::Factory ViewerWindow::rendererFactory() {
   rendererKind_ = settings_.renderer;
-  return [this] { return createRenderer(settings_.renderer, shaders_); };
+  return [this] { return createRenderer(settings_.renderer, shaders_, &splatPrograms_); };
 }
 
 // A new set of renderers when the panel switched the renderer kind.

@@ -31,6 +31,8 @@
 
 namespace ewa {
 
+struct SplatProgramSet;
+
 // A turntable being written from the window, one frame per loop iteration.
 struct WindowTurntable {
   int total = 0;  // 0: none running
@@ -104,6 +106,8 @@ class ViewerWindow {
   ViewerSettings saved_;
   Clock::time_point epoch_ = Clock::now();
   gl::ShaderLibrary shaders_;
+  // The level-of-detail renderers' programs, one set for all (a level compiles nothing twice).
+  std::shared_ptr<SplatProgramSet> splatPrograms_;
   LoadedVolume current_;
   LodRenderer lod_;
   RendererKind rendererKind_ = RendererKind::Splat;
