@@ -43,5 +43,15 @@ for p in "${programs[@]}"; do LD_LIBRARY_PATH="$out/lib" ldd "$out/bin/$p"; done
     [ -e "$out/lib/$name" ] || cp -L "$path" "$out/lib/$name"
   done
 rm -rf "$out/stub-src"
-strip --strip-unneeded "$out"/bin/* "$out"/lib/*
+# The test programs name files by this checkout's absolute paths (references, outputs, the
+# programs they run, ../shared/data): gpu_measure.sh recreates them there from this file.
+(cd "$(dirname "$0")/.." && pwd) >"$out/source_root"
+basename "$(cd "$build" && pwd)" >"$out/build_dir"
+# libglvnd's dispatch libraries, for a machine whose driver came without them (an H200 image had
+# no libEGL.so.1): gpu_measure.sh adds lib/glvnd to the path only where the system has none.
+mkdir -p "$out/lib/glvnd"
+for lib in libEGL.so.1 libGLdispatch.so.0 libOpenGL.so.0 libGL.so.1 libGLX.so.0; do
+  [ -e "/lib/x86_64-linux-gnu/$lib" ] && cp -L "/lib/x86_64-linux-gnu/$lib" "$out/lib/glvnd/"
+done
+strip --strip-unneeded "$out"/bin/* "$out"/lib/*.so* "$out"/lib/glvnd/*
 du -sh "$out"
