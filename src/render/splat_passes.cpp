@@ -698,6 +698,12 @@ void SplatRenderer::setFrameUniforms() {
   setCommonUniforms(splatPrograms_.point(), frame_.camera, frame_.proj, settings);
   setCommonUniforms(splatPrograms_.quad(), frame_.camera, frame_.proj, settings);
   setSlabPassUniforms(frame_.proj, settings);
+  // The splat programs now hold the picture's own scale (setSplatScale sets a coarser one), and
+  // culling as the frame has it so far (a pyramid built mid-frame, when set again then).
+  frame_.splatScale = 1.0;
+  if (frame_.pyramidBuilt)
+    for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()})
+      occlusion_.setUniforms(*p, kOpaqueUnit, true);
   programs_->user = this;
 }
 

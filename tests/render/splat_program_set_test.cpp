@@ -1,5 +1,6 @@
 // Renderers sharing one SplatProgramSet (the window's levels of detail): each frame keeps its
-// own programs' state, and a second renderer compiles nothing the first compiled.
+// own programs' state (its coarser slab images' scale too), and a second renderer compiles
+// nothing the first compiled.
 #include "render/splat_program_set.h"
 
 #include <gtest/gtest.h>
@@ -31,7 +32,9 @@ TEST_F(SplatProgramSetTest, SharingRenderersKeepTheirOwnFrames) {
   b.setVolume(ball.volume);
   b.setTransferFunction(*ball.transferFunction);
   Camera camA, camB;
-  camA.frame(ml.volume.boundsMin(), ml.volume.boundsMax(), {0.3, -0.4, 1.0}, {0, 1, 0}, 1.0);
+  camA.focalPoint = glm::dvec3(11.5);
+  camA.position = {30.0, -8.0, 34.0};  // near: A's front slabs go to coarser images
+  camA.viewUp = {0.0, 0.0, 1.0};
   camB.frame(ball.volume.boundsMin(), ball.volume.boundsMax(), {1.0, 0.2, 0.1}, {0, 0, 1}, 1.2);
   RenderSettings settingsA;
   settingsA.slabThickness = 1.0;  // many slabs: many steps
@@ -41,6 +44,7 @@ TEST_F(SplatProgramSetTest, SharingRenderersKeepTheirOwnFrames) {
 
   a.render(camA, settingsA, 64, 64);
   const Image8 wholeA = a.readImage();
+  ASSERT_GT(a.stats().slabsCoarse, 0u);
   const size_t variantsA = programs->splat.compiled();
   b.render(camB, settingsB, 48, 48);
   const Image8 wholeB = b.readImage();
