@@ -206,7 +206,7 @@ int run(int argc, char** argv) {
   settings.slabPreintegration = pairs == "on";
   settings.coarseSlabs = slabResolution == "auto";
   parseSlabPrecision(slabPrecision, &settings.slabPrecision);
-  settings.slabPasses = slabPasses == "auto" ? 0 : std::stoi(slabPasses);
+  parseSlabPasses(slabPasses, &settings.slabPasses);
 
   CompareReport report;
   report.repeats = repeats;

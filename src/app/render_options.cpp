@@ -97,7 +97,7 @@ std::string finishShadingOptions(const RenderOptionText& p, RenderSettings* s) {
   s->slabPreintegration = p.slabPreintegration == "on";
   s->coarseSlabs = p.slabResolution == "auto";
   parseSlabPrecision(p.slabPrecision, &s->slabPrecision);
-  s->slabPasses = p.slabPasses == "auto" ? 0 : std::stoi(p.slabPasses);
+  parseSlabPasses(p.slabPasses, &s->slabPasses);
   parsePostNormals(p.postNormals, &s->postNormals);
   if (p.surfaceValue) {
     if (!std::isfinite(*p.surfaceValue)) return "--surface-threshold: not a finite number";

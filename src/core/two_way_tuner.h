@@ -15,7 +15,7 @@ class TwoWayTuner {
   int choice() const;
   // A frame drawn `way` took `cost` per unit of work; non-finite or negative costs are ignored.
   void report(int way, double cost);
-  // Forgets both costs (a new volume or setting): each way is tried again.
+  // Forgets both costs (SplatRenderer: a new volume): each way is tried again.
   void reset();
   // The latest cost of `way`; negative while it has not been measured.
   double cost(int way) const { return cost_[way & 1]; }

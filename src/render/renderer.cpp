@@ -21,6 +21,7 @@ constexpr NamedValue<RenderMode> kRenderMode[] = {
 constexpr NamedValue<CompositeOrder> kCompositeOrder[] = {
     {CompositeOrder::FrontToBack, "front-to-back"}, {CompositeOrder::BackToFront, "back-to-front"}};
 constexpr NamedValue<XRayMap> kXRayMap[] = {{XRayMap::Attenuation, "exp"}, {XRayMap::Sum, "sum"}};
+constexpr NamedValue<int> kSlabPasses[] = {{0, "auto"}, {1, "1"}, {2, "2"}};
 constexpr NamedValue<RendererKind> kRendererKind[] = {{RendererKind::Splat, "splat"},
                                                       {RendererKind::ShearWarp, "shearwarp"}};
 
@@ -40,6 +41,10 @@ const char* slabPrecisionName(SlabPrecision precision) {
 
 bool parseSlabPrecision(const std::string& text, SlabPrecision* precision) {
   return parseIn(kSlabPrecision, text, precision);
+}
+
+bool parseSlabPasses(const std::string& text, int* passes) {
+  return parseIn(kSlabPasses, text, passes);
 }
 
 const char* postNormalsName(PostNormals normals) {

@@ -49,6 +49,8 @@ bool parseOcclusionCulling(const std::string& text, OcclusionCulling* mode);
 enum class SlabPrecision { Auto = 0, Half = 1, Float = 2 };
 const char* slabPrecisionName(SlabPrecision precision);
 bool parseSlabPrecision(const std::string& text, SlabPrecision* precision);
+// RenderSettings::slabPasses from "auto" (0), "1" or "2"; false for any other text.
+bool parseSlabPasses(const std::string& text, int* passes);
 // Whether `settings` draw into half-float slab images (the composite mode, by slabPrecision).
 struct RenderSettings;
 bool halfFloatSlabs(const RenderSettings& settings);

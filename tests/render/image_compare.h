@@ -29,6 +29,10 @@ ImageDifference compareCovered(const Image8& a, const Image8& b, const Rgb8& bac
 // The largest absolute difference of one channel between two pictures of one size, 0..255
 // (255, and a failed expectation, when their sizes differ).
 int maxDifference(const Image8& a, const Image8& b);
+// Levels two frames of one setting may differ by when the GPU's slab partition drew them: its
+// order of a slab's entries varies between frames, and half-float sums round apart with it (up
+// to 3 on an H200); the CPU's partition draws them equal to the bit.
+constexpr int kGpuPartitionLevels = 3;
 // Mean of all channels of all pixels (0 for an empty image).
 double meanValue(const Image8& a);
 

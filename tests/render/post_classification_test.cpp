@@ -375,9 +375,8 @@ TEST_F(PostClassification, AutoPassesTryBothThenTakeTheFaster) {
     for (int i = 0; i < 4; ++i) {
       r.render(cam, settings, 64, 64);
       frames.push_back(r.stats());
-      // The GPU partition's order of a slab's entries may vary between frames (its rounding
-      // with it: runToRunLevels); the CPU's does not.
-      EXPECT_LE(maxDifference(r.readImage(), first), partition == PartitionMode::Gpu ? 3 : 0)
+      EXPECT_LE(maxDifference(r.readImage(), first),
+                partition == PartitionMode::Gpu ? kGpuPartitionLevels : 0)
           << "frame " << i;
     }
     r.setGpuTimers(timers);

@@ -45,7 +45,7 @@ CliRun runProgram(const std::string& binary, const std::string& args, const std:
 }
 
 int runToRunLevels(const std::string& statsLine) {
-  return nlohmann::json::parse(statsLine).value("gpu_partition", false) ? 3 : 0;
+  return nlohmann::json::parse(statsLine).value("gpu_partition", false) ? kGpuPartitionLevels : 0;
 }
 
 }  // namespace ewa::test

@@ -27,9 +27,7 @@ std::string readWholeFile(const std::string& path);
 int lineCount(const std::string& s);
 
 // The levels (of 255) two runs' pictures of one setting may differ by, from a run's --stats
-// line: 0 where the CPU's slab partition drew it (one order of sums), 3 where the GPU's did
-// (its order of a slab's entries varies between runs; half-float slab images round the sums
-// apart by up to 3 levels on an H200).
+// line: 0 where the CPU's slab partition drew it, kGpuPartitionLevels where the GPU's did.
 int runToRunLevels(const std::string& statsLine);
 
 }  // namespace ewa::test
