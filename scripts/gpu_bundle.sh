@@ -9,8 +9,8 @@ build="$1"
 out="$2"
 rm -rf "$out"
 mkdir -p "$out/bin" "$out/lib" "$out/stub-src"
-programs=(ewaview ewaview-compare ewaview-bench ewaview-interact-bench ewa_render_tests
-          ewa_unit_tests)
+programs=(ewaview ewaview-compare ewaview-bench ewaview-interact-bench ewaview-classify-bench
+          ewa_render_tests ewa_unit_tests)
 for p in "${programs[@]}"; do cp "$build/$p" "$out/bin/"; done
 # Stubs: every function the programs import from these libraries, under the same versions.
 stubbed=(libOSMesa.so.8 libavformat.so.59 libavcodec.so.59 libswscale.so.6 libavutil.so.57

@@ -64,6 +64,11 @@ if [ "$mode" = all ] || [ "$mode" = bench ]; then
         --backend egl --resolution 1024,768 -o "$out/default_$res.png" --stats --slab-resolution "$res")"
     done
   done | tee "$out/coarse_slabs.txt"
+  # Classification on one thread beside all the machine's cores (the CPU side of a new volume
+  # or transfer function): the three volumes, then a 512^3 one once each way.
+  "$bin/ewaview-classify-bench" "$data/engine/engine.nhdr" "$data/bonsai/bonsai.nhdr" \
+    "$data/cthead/CThead.nhdr" | tee "$out/classify.txt"
+  "$bin/ewaview-classify-bench" --synthetic marschner-lobb:512 --repeats 1 | tee -a "$out/classify.txt"
   # The window's refinement, headless (no display there): the default volume, engine, CThead.
   "$bin/ewaview-interact-bench" --backend egl --size 1024 "$assets/default.nrrd" \
     "$data/engine/engine.nhdr" "$data/cthead/CThead.nhdr" | tee "$out/interact.txt"

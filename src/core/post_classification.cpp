@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/named_values.h"
+#include "core/parallel_chunks.h"
 
 namespace ewa {
 
@@ -23,67 +24,93 @@ constexpr int kTable = 4096;
 // (x-rows, or xy-planes for z), row t taking the minimum over rows t - margin ... t + margin, so
 // memory is read in order: gathering a z-line one byte a plane apart missed the cache at every
 // voxel. Rows before t are overwritten by then; their values before the pass are kept in `past`.
-void distanceX(std::vector<uint8_t>& grid, const std::array<int64_t, 3>& d, int margin, int cap) {
+void distanceX(std::vector<uint8_t>& grid, const std::array<int64_t, 3>& d, int margin, int cap,
+               unsigned threads) {
   const int64_t n = d[0];
   if (n <= 1) return;
-  std::vector<uint8_t> line(static_cast<size_t>(n));
-  for (int64_t base = 0; base < int64_t(grid.size()); base += n) {
-    uint8_t* row = grid.data() + base;
-    if (std::all_of(row, row + n, [cap](uint8_t v) { return v >= cap; })) continue;
-    std::copy(row, row + n, line.begin());
-    for (int64_t t = 0; t < n; ++t) {
-      int best = line[size_t(t)];
-      const int64_t lo = std::max<int64_t>(t - margin, 0),
-                    hi = std::min<int64_t>(t + margin, n - 1);
-      for (int64_t u = lo; u <= hi; ++u)
-        best = std::min(best, line[size_t(u)] + int((u - t) * (u - t)));
-      row[t] = uint8_t(std::min(best, cap));
+  const size_t rows = grid.size() / size_t(n);
+  parallelChunks(rows, 256, threads, [&](size_t first, size_t last, size_t) {
+    std::vector<uint8_t> line(static_cast<size_t>(n));
+    for (size_t r = first; r < last; ++r) {
+      uint8_t* row = grid.data() + r * size_t(n);
+      if (std::all_of(row, row + n, [cap](uint8_t v) { return v >= cap; })) continue;
+      std::copy(row, row + n, line.begin());
+      for (int64_t t = 0; t < n; ++t) {
+        int best = line[size_t(t)];
+        const int64_t lo = std::max<int64_t>(t - margin, 0),
+                      hi = std::min<int64_t>(t + margin, n - 1);
+        for (int64_t u = lo; u <= hi; ++u)
+          best = std::min(best, line[size_t(u)] + int((u - t) * (u - t)));
+        row[t] = uint8_t(std::min(best, cap));
+      }
+    }
+  });
+}
+
+// distanceRows over blocks [o0, o1) and, in each row, the bytes [x0, x1).
+void distanceRowsPart(std::vector<uint8_t>& grid, int64_t length, int64_t count, int64_t o0,
+                      int64_t o1, size_t x0, size_t x1, int margin, int cap) {
+  const size_t len = size_t(length), part = x1 - x0;
+  std::vector<uint8_t> past(size_t(margin) * part), original(part);
+  std::vector<int> best(part);
+  for (int64_t o = o0; o < o1; ++o) {
+    uint8_t* block = grid.data() + size_t(o * count) * len + x0;
+    for (int64_t t = 0; t < count; ++t) {
+      uint8_t* row = block + size_t(t) * len;
+      std::copy(row, row + part, original.begin());
+      for (size_t x = 0; x < part; ++x) best[x] = row[x];
+      for (int s = 1; s <= margin; ++s) {
+        const int add = s * s;
+        if (t - s >= 0) {  // before the pass: kept in past, slot (t - s) % margin
+          const uint8_t* before = past.data() + size_t((t - s) % margin) * part;
+          for (size_t x = 0; x < part; ++x) best[x] = std::min(best[x], before[x] + add);
+        }
+        if (t + s < count) {
+          const uint8_t* after = block + size_t(t + s) * len;
+          for (size_t x = 0; x < part; ++x) best[x] = std::min(best[x], after[x] + add);
+        }
+      }
+      for (size_t x = 0; x < part; ++x) row[x] = uint8_t(std::min(best[x], cap));
+      std::copy(original.begin(), original.end(), past.begin() + size_t(t % margin) * part);
     }
   }
 }
 
-// `rows` rows of `length` bytes, `count` of them along the axis, repeated `outer` times.
+// `rows` rows of `length` bytes, `count` of them along the axis, repeated `outer` times. The
+// blocks, or with one block the columns of bytes, are independent: split between the cores.
 void distanceRows(std::vector<uint8_t>& grid, int64_t length, int64_t count, int64_t outer,
-                  int margin, int cap) {
+                  int margin, int cap, unsigned threads) {
   if (count <= 1) return;
-  const size_t len = size_t(length);
-  std::vector<uint8_t> past(size_t(margin) * len), original(len);
-  std::vector<int> best(len);
-  for (int64_t o = 0; o < outer; ++o) {
-    uint8_t* block = grid.data() + size_t(o * count) * len;
-    for (int64_t t = 0; t < count; ++t) {
-      uint8_t* row = block + size_t(t) * len;
-      std::copy(row, row + len, original.begin());
-      for (size_t x = 0; x < len; ++x) best[x] = row[x];
-      for (int s = 1; s <= margin; ++s) {
-        const int add = s * s;
-        if (t - s >= 0) {  // before the pass: kept in past, slot (t - s) % margin
-          const uint8_t* before = past.data() + size_t((t - s) % margin) * len;
-          for (size_t x = 0; x < len; ++x) best[x] = std::min(best[x], before[x] + add);
-        }
-        if (t + s < count) {
-          const uint8_t* after = block + size_t(t + s) * len;
-          for (size_t x = 0; x < len; ++x) best[x] = std::min(best[x], after[x] + add);
-        }
-      }
-      for (size_t x = 0; x < len; ++x) row[x] = uint8_t(std::min(best[x], cap));
-      std::copy(original.begin(), original.end(), past.begin() + size_t(t % margin) * len);
-    }
+  if (outer > 1) {
+    parallelChunks(size_t(outer), 1, threads, [&](size_t first, size_t last, size_t) {
+      distanceRowsPart(grid, length, count, int64_t(first), int64_t(last), 0, size_t(length),
+                       margin, cap);
+    });
+  } else {
+    parallelChunks(size_t(length), 4096, threads, [&](size_t first, size_t last, size_t) {
+      distanceRowsPart(grid, length, count, 0, outer, first, last, margin, cap);
+    });
   }
 }
 
 // Keeps the voxels within Euclidean distance `margin` (in voxels) of a set one: a ball, as a
 // kernel reaches, not the cube of a per-axis max filter, whose corners reach sqrt(3) times as
 // far and, around thin structures, hold most of the margin.
-void dilateBall(std::vector<uint8_t>& mask, const std::array<int64_t, 3>& d, int margin) {
+void dilateBall(std::vector<uint8_t>& mask, const std::array<int64_t, 3>& d, int margin,
+                unsigned threads) {
   const int m = std::clamp(margin, 0, 15);  // m^2 + 1 fits a byte
   if (m == 0) return;
   const int cap = m * m + 1;
-  for (uint8_t& v : mask) v = v ? 0 : uint8_t(cap);
-  distanceX(mask, d, m, cap);
-  distanceRows(mask, d[0], d[1], d[2], m, cap);
-  distanceRows(mask, d[0] * d[1], d[2], 1, m, cap);
-  for (uint8_t& v : mask) v = v < cap ? 1 : 0;
+  auto map = [&](auto f) {
+    parallelChunks(mask.size(), size_t(1) << 20, threads, [&](size_t first, size_t last, size_t) {
+      for (size_t n = first; n < last; ++n) mask[n] = f(mask[n]);
+    });
+  };
+  map([cap](uint8_t v) { return v ? uint8_t(0) : uint8_t(cap); });
+  distanceX(mask, d, m, cap, threads);
+  distanceRows(mask, d[0], d[1], d[2], m, cap, threads);
+  distanceRows(mask, d[0] * d[1], d[2], 1, m, cap, threads);
+  map([cap](uint8_t v) { return uint8_t(v < cap ? 1 : 0); });
 }
 
 // A value's place in the 4096-entry table: the entries below and above it (equal on an entry);
@@ -133,7 +160,7 @@ int postClassificationMargin(double cutoff, double kernelWidth) {
 
 std::vector<uint8_t> postClassificationMask(const Volume& volume,
                                             const std::function<bool(double)>& isVisible,
-                                            int margin) {
+                                            int margin, unsigned threads) {
   const auto& d = volume.dims();
   std::vector<uint8_t> mask(size_t(volume.voxelCount()), 0);
   if (mask.empty()) return mask;
@@ -145,44 +172,45 @@ std::vector<uint8_t> postClassificationMask(const Volume& volume,
   for (int t = 0; t < kTable; ++t)
     before[t + 1] = before[t] + (isVisible(lo + width * t / (kTable - 1)) ? 1 : 0);
   if (before[kTable] == 0) return mask;
-  // Each voxel's table position as its floor and ceiling entries, computed once per voxel (for
-  // this slice and the next, the neighbours' along z): the interval between two values reaches
-  // from the lower floor to the higher ceiling (floor and ceiling are monotonic), so the tests
-  // below are integer work only.
+  // Each voxel's table position as its floor and ceiling entries, computed once per voxel and
+  // slice (for the slices before and after, the neighbours' along z): the interval between two
+  // values reaches from the lower floor to the higher ceiling (floor and ceiling are
+  // monotonic), so the tests below are integer work only.
   const size_t sliceSize = size_t(d[0] * d[1]);
-  std::vector<TablePosition> here(sliceSize), next(sliceSize);
-  slicePositions(volume, 0, lo, width, &next);
   auto anyVisible = [&](TablePosition a, TablePosition b) {
     return before[std::max(a.ceil, b.ceil) + 1] - before[std::min(a.floor, b.floor)] > 0;
   };
-  const int64_t strides[3] = {1, d[0], d[0] * d[1]};
-  for (int64_t k = 0; k < d[2]; ++k) {
-    here.swap(next);
-    if (k + 1 < d[2]) slicePositions(volume, k + 1, lo, width, &next);
-    for (int64_t j = 0; j < d[1]; ++j)
-      for (int64_t i = 0; i < d[0]; ++i) {
-        const int64_t m = i + d[0] * j;  // in the slice
-        const int64_t n = volume.index(i, j, k);
-        const TablePosition v = here[size_t(m)];
-        if (!v.finite()) continue;
-        if (anyVisible(v, v)) {
-          mask[size_t(n)] = 1;
-          continue;
+  // Each voxel decides its own mark from its neighbours (no voxel writes another's), so runs of
+  // slices go to the machine's cores.
+  parallelChunks(size_t(d[2]), 1, threads, [&](size_t first, size_t last, size_t) {
+    std::vector<TablePosition> prev(sliceSize), here(sliceSize), next(sliceSize);
+    if (first > 0) slicePositions(volume, int64_t(first) - 1, lo, width, &prev);
+    slicePositions(volume, int64_t(first), lo, width, &here);
+    for (int64_t k = int64_t(first); k < int64_t(last); ++k) {
+      if (k + 1 < d[2]) slicePositions(volume, k + 1, lo, width, &next);
+      for (int64_t j = 0; j < d[1]; ++j)
+        for (int64_t i = 0; i < d[0]; ++i) {
+          const int64_t m = i + d[0] * j;  // in the slice
+          const TablePosition v = here[size_t(m)];
+          if (!v.finite()) continue;
+          // A crossing between two invisible values marks both (a visible end is a seed
+          // itself, and the margin covers its neighbours).
+          auto crossing = [&](TablePosition w) {
+            return w.finite() && !anyVisible(w, w) && anyVisible(v, w);
+          };
+          const bool seed = anyVisible(v, v) || (i > 0 && crossing(here[size_t(m - 1)])) ||
+                            (i + 1 < d[0] && crossing(here[size_t(m + 1)])) ||
+                            (j > 0 && crossing(here[size_t(m - d[0])])) ||
+                            (j + 1 < d[1] && crossing(here[size_t(m + d[0])])) ||
+                            (k > 0 && crossing(prev[size_t(m)])) ||
+                            (k + 1 < d[2] && crossing(next[size_t(m)]));
+          if (seed) mask[size_t(volume.index(i, j, k))] = 1;
         }
-        // A crossing between two invisible values marks both (a visible end is a seed itself,
-        // and the margin covers its neighbours).
-        const int64_t ijk[3] = {i, j, k};
-        for (int axis = 0; axis < 3; ++axis) {
-          if (ijk[axis] + 1 >= d[axis]) continue;
-          const TablePosition w = axis == 2 ? next[size_t(m)] : here[size_t(m + strides[axis])];
-          if (w.finite() && !anyVisible(w, w) && anyVisible(v, w)) {
-            mask[size_t(n)] = 1;
-            mask[size_t(n + strides[axis])] = 1;
-          }
-        }
-      }
-  }
-  dilateBall(mask, d, margin);
+      prev.swap(here);
+      here.swap(next);
+    }
+  });
+  dilateBall(mask, d, margin, threads);
   return mask;
 }
 

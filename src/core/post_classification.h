@@ -30,9 +30,10 @@ int postClassificationMargin(double cutoff, double kernelWidth);
 // crosses one (a transfer-function peak between two voxel values, which interpolation passes
 // through), or such a voxel lies within Euclidean distance `margin` (in voxel steps, at most
 // 15; a ball, as far as a kernel reaches in every direction). `isVisible` is asked on a
-// 4096-entry table over the value range, not per voxel.
+// 4096-entry table over the value range, not per voxel, from several threads at once.
+// `threads` as parallelChunks takes it (0: the machine's cores); the mask is the same for any.
 std::vector<uint8_t> postClassificationMask(const Volume& volume,
                                             const std::function<bool(double)>& isVisible,
-                                            int margin);
+                                            int margin, unsigned threads = 0);
 
 }  // namespace ewa

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/packing.hpp>
-#include <thread>
 
 #include "core/named_values.h"
+#include "core/parallel_chunks.h"
 
 namespace ewa {
 
@@ -88,7 +88,7 @@ glm::dvec3 volumeGradient(const Volume& v, int64_t i, int64_t j, int64_t k, Grad
 }
 
 ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf,
-                                const Classification& c, size_t maxSplats) {
+                                const Classification& c, size_t maxSplats, unsigned threads) {
   ClassifiedSplats out;
   const double lo = volume.minValue(), hi = volume.maxValue();
   const double width = hi > lo ? hi - lo : 1.0;
@@ -119,7 +119,7 @@ ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf
   auto keep = [&](int64_t i, int64_t j, int64_t k, double v) { return onSurface(i, j, k, v); };
   const auto isVisible = [&tf](double v) { return tf.alphaAt(v) > 0.0; };
   std::vector<uint8_t> needed;
-  if (post) needed = postClassificationMask(volume, isVisible, c.postMargin);
+  if (post) needed = postClassificationMask(volume, isVisible, c.postMargin, threads);
   auto inMask = [&](int64_t i, int64_t j, int64_t k, double) {
     return needed[size_t(volume.index(i, j, k))] != 0;
   };
@@ -128,15 +128,16 @@ ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf
                       post                                  ? SplatSet::VoxelPredicate(inMask)
                       : c.surface == SurfaceCriterion::None ? SplatSet::VoxelPredicate()
                                                             : SplatSet::VoxelPredicate(keep),
-                      maxSplats);
+                      maxSplats, threads);
   // Voxels are kept by their own values (above); only what the splats carry is sharpened.
-  if (post) prefilterSplatValues(volume, c.prefilter, &out.splats);
+  if (post) prefilterSplatValues(volume, c.prefilter, &out.splats, threads);
   const double minSpacing = std::min({volume.spacing().x, volume.spacing().y, volume.spacing().z});
   const std::vector<PackedSplat>& splats = out.splats.splats();
   out.attributes.resize(splats.size());
   // Each splat's normal and kind depend on its own neighbourhood only: the splats are split
   // between the machine's cores (the gradients are most of classification's time after the mask).
   auto attributes = [&](size_t first, size_t last, size_t* surfaces) {
+    size_t surfaceCount = 0;  // written out once: counters side by side share a cache line
     for (size_t n = first; n < last; ++n) {
       const PackedSplat& s = splats[n];
       const int64_t i = SplatSet::i(s), j = SplatSet::j(s), k = SplatSet::k(s);
@@ -153,19 +154,15 @@ ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf
       const double offset = surface && c.surface == SurfaceCriterion::Value
                                 ? (v - c.threshold) / (mag * minSpacing)
                                 : 0.0;
-      *surfaces += surface ? 1 : 0;
+      surfaceCount += surface ? 1 : 0;
       out.attributes[n] = packAttributes(nrm, surface, offset);
     }
+    *surfaces = surfaceCount;
   };
-  const size_t threads =
-      splats.size() < 65536 ? 1 : std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 16);
-  std::vector<size_t> surfaces(threads, 0);
-  std::vector<std::thread> pool;
-  for (size_t t = 1; t < threads; ++t)
-    pool.emplace_back(attributes, splats.size() * t / threads, splats.size() * (t + 1) / threads,
-                      &surfaces[t]);
-  attributes(0, splats.size() / threads, &surfaces[0]);
-  for (std::thread& th : pool) th.join();
+  std::vector<size_t> surfaces(chunkCount(splats.size(), 65536, threads), 0);
+  parallelChunks(splats.size(), 65536, threads, [&](size_t first, size_t last, size_t chunk) {
+    attributes(first, last, &surfaces[chunk]);
+  });
   for (size_t count : surfaces) out.surfaceCount += count;
   return out;
 }

@@ -85,8 +85,10 @@ struct ClassifiedSplats {
 // The splats of `volume` under `tf` (voxels with opacity > 0, plus surface voxels whatever
 // their opacity; post: plus postClassificationMask's margin, no surfaces), their normals and
 // surface flags.
-// Throws SplatLimitError when more than `maxSplats` voxels would be kept.
+// Throws SplatLimitError when more than `maxSplats` voxels would be kept. Runs on `threads`
+// threads as parallelChunks takes it (0: the machine's cores); the result is the same for any.
 ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf,
-                                const Classification& c, size_t maxSplats = SIZE_MAX);
+                                const Classification& c, size_t maxSplats = SIZE_MAX,
+                                unsigned threads = 0);
 
 }  // namespace ewa

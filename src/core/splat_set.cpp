@@ -2,14 +2,18 @@
 #include "core/splat_set.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "core/parallel_chunks.h"
+
 namespace ewa {
 
 SplatSet SplatSet::build(const Volume& volume, const std::function<bool(double)>& isVisible,
-                         int stride, const VoxelPredicate& alsoKeep, size_t maxSplats) {
+                         int stride, const VoxelPredicate& alsoKeep, size_t maxSplats,
+                         unsigned threads) {
   SplatSet set;
   set.stride_ = std::max(1, stride);
   const auto& d = volume.dims();
@@ -25,23 +29,51 @@ SplatSet SplatSet::build(const Volume& volume, const std::function<bool(double)>
   std::vector<char> visible(table);
   for (int t = 0; t + 1 < kTable; ++t) visible[t] = table[t] || table[t + 1];
   const int s = set.stride_;
-  for (int64_t k = 0; k < d[2]; k += s) {
-    for (int64_t j = 0; j < d[1]; j += s) {
-      int64_t n = volume.index(0, j, k);
-      for (int64_t i = 0; i < d[0]; i += s, n += s) {
-        const double v = volume.valueAt(n);
-        if (!std::isfinite(v)) continue;
-        const double x = std::clamp((v - lo) / width, 0.0, 1.0);
-        if (!visible[std::min(kTable - 1, int(x * (kTable - 1)))] &&
-            !(alsoKeep && alsoKeep(i, j, k, v)))
-          continue;
-        if (set.splats_.size() >= maxSplats)
-          throw SplatLimitError("more than " + std::to_string(maxSplats) +
-                                " voxels are visible, the most that fit");
-        set.splats_.push_back({uint32_t(i) | uint32_t(j) << 16, uint32_t(k) | quantize(x) << 16});
+  // Slices of layers on the machine's cores, joined in order: the sequential loop's list.
+  const size_t layers = size_t((d[2] + s - 1) / s);
+  // Each chunk's splats in blocks of a fixed size: a growing vector's copies and freed pages
+  // (whose unmapping interrupts every core) made 16 threads only 3x as fast as one.
+  constexpr size_t kBlock = size_t(1) << 18;
+  std::vector<std::vector<std::vector<PackedSplat>>> parts(chunkCount(layers, 1, threads));
+  std::atomic<size_t> kept{0};  // all chunks' splats so far, checked a row at a time
+  auto tooMany = [maxSplats] {
+    return SplatLimitError("more than " + std::to_string(maxSplats) +
+                           " voxels are visible, the most that fit");
+  };
+  parallelChunks(layers, 1, threads, [&](size_t first, size_t last, size_t chunk) {
+    std::vector<std::vector<PackedSplat>>& blocks = parts[chunk];
+    size_t count = 0;  // this chunk's splats
+    for (int64_t k = int64_t(first) * s; k < int64_t(last) * s && k < d[2]; k += s) {
+      for (int64_t j = 0; j < d[1]; j += s) {
+        const size_t before = count;
+        int64_t n = volume.index(0, j, k);
+        for (int64_t i = 0; i < d[0]; i += s, n += s) {
+          const double v = volume.valueAt(n);
+          if (!std::isfinite(v)) continue;
+          const double x = std::clamp((v - lo) / width, 0.0, 1.0);
+          if (!visible[std::min(kTable - 1, int(x * (kTable - 1)))] &&
+              !(alsoKeep && alsoKeep(i, j, k, v)))
+            continue;
+          if (count >= maxSplats) throw tooMany();
+          if (blocks.empty() || blocks.back().size() == kBlock) {
+            blocks.emplace_back();
+            blocks.back().reserve(kBlock);
+          }
+          blocks.back().push_back(
+              {uint32_t(i) | uint32_t(j) << 16, uint32_t(k) | quantize(x) << 16});
+          ++count;
+        }
+        if (kept.fetch_add(count - before) + (count - before) > maxSplats) throw tooMany();
       }
     }
-  }
+  });
+  // Block by block, each freed once copied: the joined list's pages fill as the blocks' go.
+  set.splats_.reserve(kept.load());
+  for (auto& blocks : parts)
+    for (std::vector<PackedSplat>& block : blocks) {
+      set.splats_.insert(set.splats_.end(), block.begin(), block.end());
+      std::vector<PackedSplat>().swap(block);
+    }
   return set;
 }
 

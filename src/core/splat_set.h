@@ -32,11 +32,12 @@ class SplatSet {
   // Throws SplatLimitError as soon as more than `maxSplats` voxels are kept, before the list
   // grows past that (the caller's memory or GPU buffer limit).
   // `alsoKeep(i, j, k, value)`, when given, is asked about voxels the table leaves out (surface
-  // voxels are kept whatever their opacity).
+  // voxels are kept whatever their opacity) from several threads at once. `threads`: as
+  // parallelChunks takes it (0: the machine's cores); the list is the same for any count.
   using VoxelPredicate = std::function<bool(int64_t, int64_t, int64_t, double)>;
   static SplatSet build(const Volume& volume, const std::function<bool(double)>& isVisible,
                         int stride = 1, const VoxelPredicate& alsoKeep = nullptr,
-                        size_t maxSplats = SIZE_MAX);
+                        size_t maxSplats = SIZE_MAX, unsigned threads = 0);
 
   const std::vector<PackedSplat>& splats() const { return splats_; }
   size_t size() const { return splats_.size(); }

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/parallel_chunks.h"
+
 namespace ewa {
 
 double prefilteredValue(const Volume& volume, int64_t i, int64_t j, int64_t k, double strength) {
@@ -24,16 +26,20 @@ double prefilteredValue(const Volume& volume, int64_t i, int64_t j, int64_t k, d
   return std::clamp(v + strength * laplacian, volume.minValue(), volume.maxValue());
 }
 
-void prefilterSplatValues(const Volume& volume, double strength, SplatSet* splats) {
+void prefilterSplatValues(const Volume& volume, double strength, SplatSet* splats,
+                          unsigned threads) {
   if (!(strength > 0.0)) return;
   const double lo = volume.minValue(), hi = volume.maxValue();
   const double width = hi > lo ? hi - lo : 1.0;
-  for (size_t n = 0; n < splats->size(); ++n) {
-    const PackedSplat& s = splats->splats()[n];
-    const double v =
-        prefilteredValue(volume, SplatSet::i(s), SplatSet::j(s), SplatSet::k(s), strength);
-    splats->setNormalizedValue(n, (v - lo) / width);
-  }
+  // Each splat's new value reads the volume only: the splats split between the cores.
+  parallelChunks(splats->size(), 65536, threads, [&](size_t first, size_t last, size_t) {
+    for (size_t n = first; n < last; ++n) {
+      const PackedSplat& s = splats->splats()[n];
+      const double v =
+          prefilteredValue(volume, SplatSet::i(s), SplatSet::j(s), SplatSet::k(s), strength);
+      splats->setNormalizedValue(n, (v - lo) / width);
+    }
+  });
 }
 
 }  // namespace ewa

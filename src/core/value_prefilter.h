@@ -25,7 +25,9 @@ constexpr double kMaxPrefilter = 0.25;
 double prefilteredValue(const Volume& volume, int64_t i, int64_t j, int64_t k, double strength);
 
 // Rewrites every splat's stored value with prefilteredValue. The set of splats is unchanged:
-// which voxels are kept is decided from the data's own values.
-void prefilterSplatValues(const Volume& volume, double strength, SplatSet* splats);
+// which voxels are kept is decided from the data's own values. `threads` as parallelChunks
+// takes it (0: the machine's cores); the values are the same for any count.
+void prefilterSplatValues(const Volume& volume, double strength, SplatSet* splats,
+                          unsigned threads = 0);
 
 }  // namespace ewa

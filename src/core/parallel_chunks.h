@@ -1,0 +1,25 @@
+// Runs a loop's contiguous chunks on the machine's cores, in a fixed order of chunks.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+namespace ewa {
+
+// The threads parallelChunks uses for `requested`: 0 means the machine's cores (at most 16),
+// anything else is taken as it is.
+unsigned workerThreads(unsigned requested);
+
+// Splits [0, count) into at most workerThreads(threads) contiguous chunks of at least
+// `minPerChunk` items (one chunk, on the calling thread, if count is smaller) and calls
+// fn(first, last, chunk) for each, chunk 0 on the calling thread. Chunk c covers the items
+// after chunk c - 1's, so results kept per chunk and joined in chunk order come out in the
+// sequential loop's order whatever the thread count. Returns the number of chunks. An exception
+// from any chunk is rethrown (the first chunk's in order) after every chunk has finished.
+size_t parallelChunks(size_t count, size_t minPerChunk, unsigned threads,
+                      const std::function<void(size_t first, size_t last, size_t chunk)>& fn);
+
+// The number of chunks parallelChunks would use for these arguments (to size per-chunk state).
+size_t chunkCount(size_t count, size_t minPerChunk, unsigned threads);
+
+}  // namespace ewa
