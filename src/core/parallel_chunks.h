@@ -1,10 +1,21 @@
 // Runs a loop's contiguous chunks on the machine's cores, in a fixed order of chunks.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 
 namespace ewa {
+
+// Voxels (or splats) of work below which a chunk is not worth a thread of its own.
+constexpr size_t kMinChunkWork = 65536;
+
+// The least items a chunk should take when each item is `workPerItem` voxels of work (a
+// slice, a row): at least 1, and kMinChunkWork voxels a chunk.
+inline size_t minItemsPerChunk(size_t workPerItem) {
+  return workPerItem == 0 ? 1
+                          : std::max<size_t>(1, (kMinChunkWork + workPerItem - 1) / workPerItem);
+}
 
 // The threads parallelChunks uses for `requested`: 0 means the machine's cores (at most 16),
 // anything else is taken as it is.

@@ -29,22 +29,23 @@ void distanceX(std::vector<uint8_t>& grid, const std::array<int64_t, 3>& d, int 
   const int64_t n = d[0];
   if (n <= 1) return;
   const size_t rows = grid.size() / size_t(n);
-  parallelChunks(rows, 256, threads, [&](size_t first, size_t last, size_t) {
-    std::vector<uint8_t> line(static_cast<size_t>(n));
-    for (size_t r = first; r < last; ++r) {
-      uint8_t* row = grid.data() + r * size_t(n);
-      if (std::all_of(row, row + n, [cap](uint8_t v) { return v >= cap; })) continue;
-      std::copy(row, row + n, line.begin());
-      for (int64_t t = 0; t < n; ++t) {
-        int best = line[size_t(t)];
-        const int64_t lo = std::max<int64_t>(t - margin, 0),
-                      hi = std::min<int64_t>(t + margin, n - 1);
-        for (int64_t u = lo; u <= hi; ++u)
-          best = std::min(best, line[size_t(u)] + int((u - t) * (u - t)));
-        row[t] = uint8_t(std::min(best, cap));
-      }
-    }
-  });
+  parallelChunks(rows, minItemsPerChunk(size_t(n)), threads,
+                 [&](size_t first, size_t last, size_t) {
+                   std::vector<uint8_t> line(static_cast<size_t>(n));
+                   for (size_t r = first; r < last; ++r) {
+                     uint8_t* row = grid.data() + r * size_t(n);
+                     if (std::all_of(row, row + n, [cap](uint8_t v) { return v >= cap; })) continue;
+                     std::copy(row, row + n, line.begin());
+                     for (int64_t t = 0; t < n; ++t) {
+                       int best = line[size_t(t)];
+                       const int64_t lo = std::max<int64_t>(t - margin, 0),
+                                     hi = std::min<int64_t>(t + margin, n - 1);
+                       for (int64_t u = lo; u <= hi; ++u)
+                         best = std::min(best, line[size_t(u)] + int((u - t) * (u - t)));
+                       row[t] = uint8_t(std::min(best, cap));
+                     }
+                   }
+                 });
 }
 
 // distanceRows over blocks [o0, o1) and, in each row, the bytes [x0, x1).
@@ -82,14 +83,16 @@ void distanceRows(std::vector<uint8_t>& grid, int64_t length, int64_t count, int
                   int margin, int cap, unsigned threads) {
   if (count <= 1) return;
   if (outer > 1) {
-    parallelChunks(size_t(outer), 1, threads, [&](size_t first, size_t last, size_t) {
-      distanceRowsPart(grid, length, count, int64_t(first), int64_t(last), 0, size_t(length),
-                       margin, cap);
-    });
+    parallelChunks(size_t(outer), minItemsPerChunk(size_t(length * count)), threads,
+                   [&](size_t first, size_t last, size_t) {
+                     distanceRowsPart(grid, length, count, int64_t(first), int64_t(last), 0,
+                                      size_t(length), margin, cap);
+                   });
   } else {
-    parallelChunks(size_t(length), 4096, threads, [&](size_t first, size_t last, size_t) {
-      distanceRowsPart(grid, length, count, 0, outer, first, last, margin, cap);
-    });
+    parallelChunks(size_t(length), minItemsPerChunk(size_t(count)), threads,
+                   [&](size_t first, size_t last, size_t) {
+                     distanceRowsPart(grid, length, count, 0, outer, first, last, margin, cap);
+                   });
   }
 }
 
@@ -102,9 +105,10 @@ void dilateBall(std::vector<uint8_t>& mask, const std::array<int64_t, 3>& d, int
   if (m == 0) return;
   const int cap = m * m + 1;
   auto map = [&](auto f) {
-    parallelChunks(mask.size(), size_t(1) << 20, threads, [&](size_t first, size_t last, size_t) {
-      for (size_t n = first; n < last; ++n) mask[n] = f(mask[n]);
-    });
+    parallelChunks(mask.size(), kMinChunkWork * 16, threads,
+                   [&](size_t first, size_t last, size_t) {
+                     for (size_t n = first; n < last; ++n) mask[n] = f(mask[n]);
+                   });
   };
   map([cap](uint8_t v) { return v ? uint8_t(0) : uint8_t(cap); });
   distanceX(mask, d, m, cap, threads);
@@ -182,34 +186,35 @@ std::vector<uint8_t> postClassificationMask(const Volume& volume,
   };
   // Each voxel decides its own mark from its neighbours (no voxel writes another's), so runs of
   // slices go to the machine's cores.
-  parallelChunks(size_t(d[2]), 1, threads, [&](size_t first, size_t last, size_t) {
-    std::vector<TablePosition> prev(sliceSize), here(sliceSize), next(sliceSize);
-    if (first > 0) slicePositions(volume, int64_t(first) - 1, lo, width, &prev);
-    slicePositions(volume, int64_t(first), lo, width, &here);
-    for (int64_t k = int64_t(first); k < int64_t(last); ++k) {
-      if (k + 1 < d[2]) slicePositions(volume, k + 1, lo, width, &next);
-      for (int64_t j = 0; j < d[1]; ++j)
-        for (int64_t i = 0; i < d[0]; ++i) {
-          const int64_t m = i + d[0] * j;  // in the slice
-          const TablePosition v = here[size_t(m)];
-          if (!v.finite()) continue;
-          // A crossing between two invisible values marks both (a visible end is a seed
-          // itself, and the margin covers its neighbours).
-          auto crossing = [&](TablePosition w) {
-            return w.finite() && !anyVisible(w, w) && anyVisible(v, w);
-          };
-          const bool seed = anyVisible(v, v) || (i > 0 && crossing(here[size_t(m - 1)])) ||
-                            (i + 1 < d[0] && crossing(here[size_t(m + 1)])) ||
-                            (j > 0 && crossing(here[size_t(m - d[0])])) ||
-                            (j + 1 < d[1] && crossing(here[size_t(m + d[0])])) ||
-                            (k > 0 && crossing(prev[size_t(m)])) ||
-                            (k + 1 < d[2] && crossing(next[size_t(m)]));
-          if (seed) mask[size_t(volume.index(i, j, k))] = 1;
+  parallelChunks(
+      size_t(d[2]), minItemsPerChunk(sliceSize), threads, [&](size_t first, size_t last, size_t) {
+        std::vector<TablePosition> prev(sliceSize), here(sliceSize), next(sliceSize);
+        if (first > 0) slicePositions(volume, int64_t(first) - 1, lo, width, &prev);
+        slicePositions(volume, int64_t(first), lo, width, &here);
+        for (int64_t k = int64_t(first); k < int64_t(last); ++k) {
+          if (k + 1 < d[2]) slicePositions(volume, k + 1, lo, width, &next);
+          for (int64_t j = 0; j < d[1]; ++j)
+            for (int64_t i = 0; i < d[0]; ++i) {
+              const int64_t m = i + d[0] * j;  // in the slice
+              const TablePosition v = here[size_t(m)];
+              if (!v.finite()) continue;
+              // A crossing between two invisible values marks both (a visible end is a seed
+              // itself, and the margin covers its neighbours).
+              auto crossing = [&](TablePosition w) {
+                return w.finite() && !anyVisible(w, w) && anyVisible(v, w);
+              };
+              const bool seed = anyVisible(v, v) || (i > 0 && crossing(here[size_t(m - 1)])) ||
+                                (i + 1 < d[0] && crossing(here[size_t(m + 1)])) ||
+                                (j > 0 && crossing(here[size_t(m - d[0])])) ||
+                                (j + 1 < d[1] && crossing(here[size_t(m + d[0])])) ||
+                                (k > 0 && crossing(prev[size_t(m)])) ||
+                                (k + 1 < d[2] && crossing(next[size_t(m)]));
+              if (seed) mask[size_t(volume.index(i, j, k))] = 1;
+            }
+          prev.swap(here);
+          here.swap(next);
         }
-      prev.swap(here);
-      here.swap(next);
-    }
-  });
+      });
   dilateBall(mask, d, margin, threads);
   return mask;
 }

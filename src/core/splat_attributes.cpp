@@ -159,10 +159,10 @@ ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf
     }
     *surfaces = surfaceCount;
   };
-  std::vector<size_t> surfaces(chunkCount(splats.size(), 65536, threads), 0);
-  parallelChunks(splats.size(), 65536, threads, [&](size_t first, size_t last, size_t chunk) {
-    attributes(first, last, &surfaces[chunk]);
-  });
+  std::vector<size_t> surfaces(chunkCount(splats.size(), kMinChunkWork, threads), 0);
+  parallelChunks(
+      splats.size(), kMinChunkWork, threads,
+      [&](size_t first, size_t last, size_t chunk) { attributes(first, last, &surfaces[chunk]); });
   for (size_t count : surfaces) out.surfaceCount += count;
   return out;
 }

@@ -34,13 +34,14 @@ SplatSet SplatSet::build(const Volume& volume, const std::function<bool(double)>
   // Each chunk's splats in blocks of a fixed size: a growing vector's copies and freed pages
   // (whose unmapping interrupts every core) made 16 threads only 3x as fast as one.
   constexpr size_t kBlock = size_t(1) << 18;
-  std::vector<std::vector<std::vector<PackedSplat>>> parts(chunkCount(layers, 1, threads));
+  const size_t minLayers = minItemsPerChunk(size_t((d[0] + s - 1) / s * ((d[1] + s - 1) / s)));
+  std::vector<std::vector<std::vector<PackedSplat>>> parts(chunkCount(layers, minLayers, threads));
   std::atomic<size_t> kept{0};  // all chunks' splats so far, checked a row at a time
   auto tooMany = [maxSplats] {
     return SplatLimitError("more than " + std::to_string(maxSplats) +
                            " voxels are visible, the most that fit");
   };
-  parallelChunks(layers, 1, threads, [&](size_t first, size_t last, size_t chunk) {
+  parallelChunks(layers, minLayers, threads, [&](size_t first, size_t last, size_t chunk) {
     std::vector<std::vector<PackedSplat>>& blocks = parts[chunk];
     size_t count = 0;  // this chunk's splats
     for (int64_t k = int64_t(first) * s; k < int64_t(last) * s && k < d[2]; k += s) {

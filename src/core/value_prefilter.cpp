@@ -32,7 +32,7 @@ void prefilterSplatValues(const Volume& volume, double strength, SplatSet* splat
   const double lo = volume.minValue(), hi = volume.maxValue();
   const double width = hi > lo ? hi - lo : 1.0;
   // Each splat's new value reads the volume only: the splats split between the cores.
-  parallelChunks(splats->size(), 65536, threads, [&](size_t first, size_t last, size_t) {
+  parallelChunks(splats->size(), kMinChunkWork, threads, [&](size_t first, size_t last, size_t) {
     for (size_t n = first; n < last; ++n) {
       const PackedSplat& s = splats->splats()[n];
       const double v =
