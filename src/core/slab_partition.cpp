@@ -10,7 +10,7 @@
 
 namespace ewa {
 
-void SlabPartition::build(const SplatSet& splats, const std::vector<PackedAttributes>& attributes,
+void SlabPartition::build(const SplatSet& splats, const AttributeList& attributes,
                           const glm::dvec3& origin, const glm::dmat4& view, double thickness,
                           double nearCull, const DepthExtent& extent) {
   order_.clear();

@@ -42,9 +42,8 @@ class SlabPartition {
   // extent overlaps. `attributes` (may be empty) marks surface splats, whose extent and center
   // follow their normal. `view` maps world to camera space; voxel (i,j,k) sits at
   // origin + (i,j,k) * spacing. Splats at or behind nearCull are left out.
-  void build(const SplatSet& splats, const std::vector<PackedAttributes>& attributes,
-             const glm::dvec3& origin, const glm::dmat4& view, double thickness, double nearCull,
-             const DepthExtent& extent);
+  void build(const SplatSet& splats, const AttributeList& attributes, const glm::dvec3& origin,
+             const glm::dmat4& view, double thickness, double nearCull, const DepthExtent& extent);
 
   const std::vector<uint32_t>& order() const { return order_; }
   // Slabs front (smallest depth) to back; empty slabs are dropped.

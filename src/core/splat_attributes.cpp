@@ -132,7 +132,7 @@ ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf
   // Voxels are kept by their own values (above); only what the splats carry is sharpened.
   if (post) prefilterSplatValues(volume, c.prefilter, &out.splats, threads);
   const double minSpacing = std::min({volume.spacing().x, volume.spacing().y, volume.spacing().z});
-  const std::vector<PackedSplat>& splats = out.splats.splats();
+  const SplatList& splats = out.splats.splats();
   out.attributes.resize(splats.size());
   // Each splat's normal and kind depend on its own neighbourhood only: the splats are split
   // between the machine's cores (the gradients are most of classification's time after the mask).

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/default_init_allocator.h"
 #include "core/post_classification.h"
 #include "core/splat_set.h"
 #include "core/transfer_function.h"
@@ -63,6 +64,9 @@ struct PackedAttributes {
   uint32_t nzKind;
 };
 
+// Filled in whole by classifySplats' parallel pass: not zeroed first on one thread.
+using AttributeList = std::vector<PackedAttributes, DefaultInitAllocator<PackedAttributes>>;
+
 struct UnpackedAttributes {
   glm::dvec3 normal{0.0};
   bool surface = false;
@@ -78,7 +82,7 @@ glm::dvec3 volumeGradient(const Volume& volume, int64_t i, int64_t j, int64_t k,
 
 struct ClassifiedSplats {
   SplatSet splats;
-  std::vector<PackedAttributes> attributes;  // one per splat, same order
+  AttributeList attributes;  // one per splat, same order
   size_t surfaceCount = 0;
 };
 

@@ -68,13 +68,22 @@ SplatSet SplatSet::build(const Volume& volume, const std::function<bool(double)>
       }
     }
   });
-  // Block by block, each freed once copied: the joined list's pages fill as the blocks' go.
-  set.splats_.reserve(kept.load());
-  for (auto& blocks : parts)
-    for (std::vector<PackedSplat>& block : blocks) {
-      set.splats_.insert(set.splats_.end(), block.begin(), block.end());
-      std::vector<PackedSplat>().swap(block);
+  // Each chunk's blocks copied to their place in the list on its own thread, and freed.
+  std::vector<size_t> offsets(parts.size() + 1, 0);
+  for (size_t c = 0; c < parts.size(); ++c) {
+    offsets[c + 1] = offsets[c];
+    for (const auto& block : parts[c]) offsets[c + 1] += block.size();
+  }
+  set.splats_.resize(offsets.back());
+  parallelChunks(parts.size(), 1, threads, [&](size_t first, size_t last, size_t) {
+    for (size_t c = first; c < last; ++c) {
+      PackedSplat* out = set.splats_.data() + offsets[c];
+      for (std::vector<PackedSplat>& block : parts[c]) {
+        out = std::copy(block.begin(), block.end(), out);
+        std::vector<PackedSplat>().swap(block);
+      }
     }
+  });
   return set;
 }
 

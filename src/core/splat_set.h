@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/default_init_allocator.h"
 #include "core/volume.h"
 
 namespace ewa {
@@ -24,6 +25,9 @@ struct PackedSplat {
   uint32_t kValue;  // k | quantized value << 16 (0..65535 over [minValue, maxValue])
 };
 
+// Filled in whole by SplatSet::build's parallel join: not zeroed first on one thread.
+using SplatList = std::vector<PackedSplat, DefaultInitAllocator<PackedSplat>>;
+
 class SplatSet {
  public:
   // Keeps voxels whose value's opacity (by `isVisible`, called on a 4096-entry table over the
@@ -39,7 +43,7 @@ class SplatSet {
                         int stride = 1, const VoxelPredicate& alsoKeep = nullptr,
                         size_t maxSplats = SIZE_MAX, unsigned threads = 0);
 
-  const std::vector<PackedSplat>& splats() const { return splats_; }
+  const SplatList& splats() const { return splats_; }
   size_t size() const { return splats_.size(); }
   int stride() const { return stride_; }
 
@@ -58,7 +62,7 @@ class SplatSet {
   static uint32_t quantize(double x) {  // x in [0, 1]
     return static_cast<uint32_t>(std::lround(x * (kValueLevels - 1)));
   }
-  std::vector<PackedSplat> splats_;
+  SplatList splats_;
   int stride_ = 1;
 };
 

@@ -2,21 +2,27 @@
 #include "core/volume.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <glm/common.hpp>
 #include <limits>
 #include <stdexcept>
 
-#include <glm/common.hpp>
+#include "core/parallel_chunks.h"
 
 namespace ewa {
 
 const char* scalarName(ScalarType type) {
   switch (type) {
-    case ScalarType::UInt8: return "uint8";
-    case ScalarType::Int16: return "int16";
-    case ScalarType::UInt16: return "uint16";
-    case ScalarType::Float32: return "float32";
+    case ScalarType::UInt8:
+      return "uint8";
+    case ScalarType::Int16:
+      return "int16";
+    case ScalarType::UInt16:
+      return "uint16";
+    case ScalarType::Float32:
+      return "float32";
   }
   return "?";
 }
@@ -69,7 +75,9 @@ DataBox Volume::indexDataBox() const {
   return box;
 }
 
-void Volume::setIndexDataBox(const DataBox& box) { dataBox_ = box; }
+void Volume::setIndexDataBox(const DataBox& box) {
+  dataBox_ = box;
+}
 
 namespace {
 
@@ -78,9 +86,9 @@ glm::dvec3 worldCornerBound(const Volume& v, bool upper) {
   glm::dvec3 out = v.worldPosition(0, 0, 0);
   const auto& d = v.dims();
   for (int c = 1; c < 8; ++c) {
-    const glm::dvec3 p = v.worldPosition((c & 1) ? double(d[0] - 1) : 0.0,
-                                         (c & 2) ? double(d[1] - 1) : 0.0,
-                                         (c & 4) ? double(d[2] - 1) : 0.0);
+    const glm::dvec3 p =
+        v.worldPosition((c & 1) ? double(d[0] - 1) : 0.0, (c & 2) ? double(d[1] - 1) : 0.0,
+                        (c & 4) ? double(d[2] - 1) : 0.0);
     out = upper ? glm::max(out, p) : glm::min(out, p);
   }
   return out;
@@ -88,29 +96,53 @@ glm::dvec3 worldCornerBound(const Volume& v, bool upper) {
 
 }  // namespace
 
-glm::dvec3 Volume::worldBoundsMin() const { return worldCornerBound(*this, false); }
-glm::dvec3 Volume::worldBoundsMax() const { return worldCornerBound(*this, true); }
+glm::dvec3 Volume::worldBoundsMin() const {
+  return worldCornerBound(*this, false);
+}
+glm::dvec3 Volume::worldBoundsMax() const {
+  return worldCornerBound(*this, true);
+}
 
 void Volume::computeStatistics() {
-  const int64_t n = voxelCount();
+  const size_t n = size_t(voxelCount());
+  // Range, then histogram, each over chunks of the voxels on the machine's cores: minima,
+  // maxima and counts merge to the same result in any order.
+  const size_t chunks = chunkCount(n, kMinChunkWork, 0);
+  std::vector<std::array<double, 2>> ranges(
+      chunks, {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
+  parallelChunks(n, kMinChunkWork, 0, [&](size_t first, size_t last, size_t c) {
+    double lo = ranges[c][0], hi = ranges[c][1];
+    for (size_t i = first; i < last; ++i) {
+      const double v = valueAt(int64_t(i));
+      if (!std::isfinite(v)) continue;
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    ranges[c] = {lo, hi};
+  });
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;
-  for (int64_t i = 0; i < n; ++i) {
-    const double v = valueAt(i);
-    if (!std::isfinite(v)) continue;
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
+  for (const auto& r : ranges) {
+    lo = std::min(lo, r[0]);
+    hi = std::max(hi, r[1]);
   }
   if (!(lo <= hi)) lo = hi = 0.0;
   range_ = {lo, hi};
-  histogram_.assign(histogramBins(), 0);
   const double width = hi > lo ? hi - lo : 1.0;
-  for (int64_t i = 0; i < n; ++i) {
-    const double v = valueAt(i);
-    if (!std::isfinite(v)) continue;
-    int bin = static_cast<int>((v - lo) / width * histogramBins());
-    histogram_[std::clamp(bin, 0, histogramBins() - 1)]++;
-  }
+  const int bins = histogramBins();
+  std::vector<std::vector<uint64_t>> counts(chunks, std::vector<uint64_t>(size_t(bins), 0));
+  parallelChunks(n, kMinChunkWork, 0, [&](size_t first, size_t last, size_t c) {
+    std::vector<uint64_t>& h = counts[c];
+    for (size_t i = first; i < last; ++i) {
+      const double v = valueAt(int64_t(i));
+      if (!std::isfinite(v)) continue;
+      const int bin = static_cast<int>((v - lo) / width * bins);
+      h[size_t(std::clamp(bin, 0, bins - 1))]++;
+    }
+  });
+  histogram_.assign(size_t(bins), 0);
+  for (const auto& h : counts)
+    for (int b = 0; b < bins; ++b) histogram_[size_t(b)] += h[size_t(b)];
 }
 
 }  // namespace ewa

@@ -102,7 +102,7 @@ class SplatRenderer : public Renderer {
   std::vector<float> readOpticalDepth() const;
   // The splats of the current volume and transfer function (built on the next render()).
   const SplatSet& splats() const { return classified_.splats; }
-  const std::vector<PackedAttributes>& attributes() const { return classified_.attributes; }
+  const AttributeList& attributes() const { return classified_.attributes; }
   // The largest point size this GL draws; bigger footprints go through the quad path.
   float pointSizeLimit() const { return pointSizeLimit_; }
   // Test hook: a lower limit forces the quad path (never above the GL limit).
