@@ -11,8 +11,11 @@
 #include <vector>
 
 #include "cli_run.h"
+#include "core/splat_attributes.h"
+#include "core/synthetic_volume.h"
 #include "image_compare.h"
 #include "io/png_io.h"
+#include "render/renderer.h"
 
 namespace ewa::test {
 namespace {
@@ -259,6 +262,40 @@ TEST(StatsCli, SlabResolutionReportsCoarseSlabs) {
   const CliRun bad = runEwaview("--synthetic sphere:8 --slab-resolution half -o " + dir + "/x.png");
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("--slab-resolution"), std::string::npos) << bad.err;
+}
+
+// ewaview-classify-bench: one row a volume whose splat count is what classification keeps with
+// the viewer's defaults, positive times; a missing file is a one-line error naming it.
+TEST(ClassifyBenchCli, RowCountsTheDefaultClassificationsSplats) {
+  const CliRun r = runProgram(EWA_CLASSIFY_BENCH_BINARY,
+                              "--synthetic marschner-lobb:48 --repeats 1 --threads 3", "classify");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::string line, name;
+  long long voxels = 0;
+  size_t splats = 0;
+  double one = 0.0, parallel = 0.0, ratio = 0.0;
+  bool found = false;
+  while (std::getline(lines, line)) {
+    if (line.rfind("marschner-lobb:48", 0) != 0) continue;
+    std::istringstream row(line);
+    found = bool(row >> name >> voxels >> splats >> one >> parallel >> ratio);
+  }
+  ASSERT_TRUE(found) << r.out;
+  EXPECT_NE(r.out.find("3 threads"), std::string::npos) << r.out;
+  const SyntheticVolume s = makeSyntheticVolume("marschner-lobb:48");
+  EXPECT_EQ(voxels, s.volume.voxelCount());
+  EXPECT_LT(splats, size_t(voxels));  // the transfer function leaves some out
+  EXPECT_EQ(splats,
+            classifySplats(s.volume, *s.transferFunction, splatClassification(RenderSettings{}))
+                .splats.size());
+  EXPECT_GT(one, 0.0);
+  EXPECT_GT(parallel, 0.0);
+  EXPECT_NEAR(ratio, parallel / one, 0.01 + 0.01 * ratio);
+  const CliRun bad = runProgram(EWA_CLASSIFY_BENCH_BINARY, "/nonexistent/v.nrrd", "classify_bad");
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_EQ(lineCount(bad.err), 1) << bad.err;
+  EXPECT_NE(bad.err.find("/nonexistent/v.nrrd"), std::string::npos) << bad.err;
 }
 
 }  // namespace
