@@ -4,7 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <thread>
+
+#include "core/parallel_chunks.h"
 
 namespace ewa {
 
@@ -64,8 +65,8 @@ PreintegrationTable PreintegrationTable::build(const TransferFunction& tf, doubl
   for (int i = 0; i < size; ++i) table.pointTau_[i] = tf.extinctionAt(scalarOf(lo, hi, size, i));
   table.tauPrefix_.assign(size_t(bins) + 1, 0.0);
   for (int j = 0; j < bins; ++j) table.tauPrefix_[j + 1] = table.tauPrefix_[j] + tau[j];
-  // Diagonals are independent; two threads take alternate ones (their cost grows with delta,
-  // so alternating keeps the halves even).
+  // Diagonals are independent; each core takes every lanes-th one (their cost grows with
+  // delta, so interleaving keeps the lanes even).
   auto diagonals = [&](int first, int stride) {
     std::vector<double> transmit(bins);
     std::vector<glm::dvec3> emit(bins);
@@ -98,9 +99,11 @@ PreintegrationTable PreintegrationTable::build(const TransferFunction& tf, doubl
       }
     }
   };
-  std::thread helper(diagonals, 2, 2);
-  diagonals(1, 2);
-  helper.join();
+  // One lane of alternate diagonals a core: diagonal 1 + lane, then every lanes-th.
+  const size_t lanes = std::min<size_t>(workerThreads(0), size_t(std::max(size - 1, 1)));
+  parallelChunks(lanes, 1, unsigned(lanes), [&](size_t first, size_t last, size_t) {
+    for (size_t lane = first; lane < last; ++lane) diagonals(int(lane) + 1, int(lanes));
+  });
   return table;
 }
 
