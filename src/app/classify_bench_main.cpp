@@ -64,9 +64,10 @@ int run(int argc, char** argv) {
         splats = s.splats.size();
       }
     }
+    const double oneMs = summarize(one).median, allMs = summarize(all).median;
     std::printf("%-24s %12lld %12zu %10.1f %10.1f %8.2f\n", scene.name.c_str(),
-                static_cast<long long>(scene.volume.voxelCount()), splats, summarize(one).median,
-                summarize(all).median, summarize(all).median / summarize(one).median);
+                static_cast<long long>(scene.volume.voxelCount()), splats, oneMs, allMs,
+                allMs / oneMs);
   }
   return 0;
 }
