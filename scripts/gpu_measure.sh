@@ -45,8 +45,9 @@ if [ "$mode" = all ] || [ "$mode" = tests ]; then
 fi
 if [ "$mode" = all ] || [ "$mode" = bench ]; then
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --repeats 20 | tee "$out/compare.txt"
-  "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --repeats 20 \
-    --occlusion-culling off | tee -a "$out/compare.txt"
+  # The compute tiles (tiles_ms) at 8 x 8 pixels beside the default 16 x 16 above.
+  "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --sizes 1024 --repeats 7 \
+    --tile-size 8 | tee -a "$out/compare.txt"
   # Auto passes a slab (above) against one pass always (the H200: 0.57-0.64x for engine and
   # CThead at 1024^2).
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --sizes 1024 --repeats 7 \

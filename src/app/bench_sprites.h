@@ -1,4 +1,5 @@
-// spriteSizes: the bare point sprites the benchmarks draw beside EWA splats, one per splat.
+// spriteSizes, tileFootprints: the bare point sprites and compute-tile footprints the
+// benchmarks draw beside EWA splats, one per splat.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -8,6 +9,7 @@
 #include "core/volume.h"
 #include "render/renderer.h"
 #include "render/splat_renderer.h"
+#include "render/tile_splat_baseline.h"
 
 namespace ewa {
 
@@ -16,5 +18,10 @@ namespace ewa {
 std::vector<glm::vec3> spriteSizes(const SplatRenderer& renderer, const Volume& volume,
                                    const Camera& camera, const RenderSettings& settings, int width,
                                    int height);
+
+// The same visible splats' footprints for TileSplatBaseline: each one's box, conic and peak.
+std::vector<TileFootprint> tileFootprints(const SplatRenderer& renderer, const Volume& volume,
+                                          const Camera& camera, const RenderSettings& settings,
+                                          int width, int height);
 
 }  // namespace ewa

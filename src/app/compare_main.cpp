@@ -27,6 +27,7 @@
 #include "render/renderer_factory.h"
 #include "render/splat_renderer.h"
 #include "render/sprite_baseline.h"
+#include "render/tile_splat_baseline.h"
 
 namespace ewa {
 namespace {
@@ -70,6 +71,7 @@ std::string fileName(std::string name) {
 struct Methods {
   SplatRenderer& ewa;
   SpriteBaseline& sprites;
+  TileSplatBaseline& tiles;
   Renderer& shearWarp;
 };
 
@@ -81,10 +83,12 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   glFinish();
   m.sprites.setSprites(spriteSizes(m.ewa, scene.volume, cam, rs, size, size));
   m.sprites.draw(size, size, halfFloatSlabs(rs));
+  m.tiles.setFootprints(tileFootprints(m.ewa, scene.volume, cam, rs, size, size), float(rs.cutoff));
+  m.tiles.draw(size, size, halfFloatSlabs(rs));
   RenderSettings sw = rs;
   sw.renderer = RendererKind::ShearWarp;
   m.shearWarp.render(cam, sw, size, size);
-  std::vector<double> ewa, partition, splat, final, sprites, shearWarp;
+  std::vector<double> ewa, partition, splat, final, sprites, tiles, tileBins, shearWarp;
   for (int r = 0; r < repeats; ++r) {
     auto start = BenchClock::now();
     m.ewa.render(cam, rs, size, size);
@@ -95,6 +99,9 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
     splat.push_back(s.splatMs);
     final.push_back(s.compositeMs);
     sprites.push_back(m.sprites.draw(size, size, halfFloatSlabs(rs)));
+    const TileSplatBaseline::Timing t = m.tiles.draw(size, size, halfFloatSlabs(rs));
+    tiles.push_back(t.totalMs());
+    tileBins.push_back(t.binMs);
     start = BenchClock::now();
     m.shearWarp.render(cam, sw, size, size);
     glFinish();
@@ -114,6 +121,8 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   row.splatMs = summarize(splat).median;
   row.finalMs = summarize(final).median;
   row.spritesMs = summarize(sprites).median;
+  row.tilesMs = summarize(tiles).median;
+  row.tilesBinMs = summarize(tileBins).median;
   row.shearWarpMs = summarize(shearWarp).median;
 }
 
@@ -197,6 +206,10 @@ int run(int argc, char** argv) {
                  "EWA: where the slab partition is built: auto (default: the CPU on software "
                  "rasterizers, the GPU elsewhere), gpu or cpu")
       ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
+  int tileSize = 16;
+  app.add_option("--tile-size", tileSize,
+                 "Pixels a side of the compute tiles of the tiles_ms column (8 or 16, default 16)")
+      ->check(CLI::IsMember({8, 16}));
   app.add_option("--shader-dir", shaderDir, "Load shaders from this folder (development)");
   addBackendOption(app, backend);
   CLI11_PARSE(app, argc, argv);
@@ -252,6 +265,7 @@ int run(int argc, char** argv) {
                 ewa.gpuPartition() ? "GPU" : "CPU", partition == "auto" ? " (auto)" : "");
   report.ewaSettings = ewaText;
   SpriteBaseline sprites(shaders);
+  TileSplatBaseline tiles(shaders, tileSize);
   const std::unique_ptr<Renderer> shearWarp = createRenderer(RendererKind::ShearWarp, shaders);
   bool vtkWorks = !noVtk, failed = false;
   for (Input& in : inputs) {
@@ -279,7 +293,7 @@ int run(int argc, char** argv) {
       row.dims = dimsText(scene.volume);
       row.size = size;
       try {
-        timeOpenGlMethods({ewa, sprites, *shearWarp}, scene, cam, rs, size, repeats, row);
+        timeOpenGlMethods({ewa, sprites, tiles, *shearWarp}, scene, cam, rs, size, repeats, row);
       } catch (const std::exception& e) {
         // Too big for this GL (the splat buffer's limit): the other volumes still run.
         const std::string note =

@@ -19,6 +19,8 @@ struct CompareRow {
   double ewaMs = -1, ewaMinMs = -1;
   double partitionMs = -1, splatMs = -1, finalMs = -1;  // EWA's stages (RenderStats)
   double spritesMs = -1, shearWarpMs = -1, vtkCpuMs = -1, vtkGpuMs = -1;
+  // The same footprints added up by compute tiles (TileSplatBaseline): in all, and the binning.
+  double tilesMs = -1, tilesBinMs = -1;
   size_t gpuBytes = 0;  // 0: the renderer does not count it
   double gpuBytesPerSplat = 0;
   size_t peakRss = 0;  // of the benchmark process after this row

@@ -55,10 +55,11 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
   const double splats = row["splats"];
   EXPECT_GT(splats, 100.0);
   EXPECT_LE(row["splats_drawn"].get<double>(), splats);
-  for (const char* key : {"ewa_ms", "ewa_min_ms", "splat_ms", "final_ms", "sprites_ms",
-                          "shearwarp_ms", "ewa_per_sprites", "peak_rss_mib"})
+  for (const char* key : {"ewa_ms", "ewa_min_ms", "splat_ms", "final_ms", "sprites_ms", "tiles_ms",
+                          "tile_bin_ms", "shearwarp_ms", "ewa_per_sprites", "peak_rss_mib"})
     EXPECT_GT(row[key].get<double>(), 0.0) << key;
   EXPECT_GE(row["partition_ms"].get<double>(), 0.0);
+  EXPECT_LT(row["tile_bin_ms"].get<double>(), row["tiles_ms"].get<double>());
   const double ewa = row["ewa_ms"];
   // One repeat: the median is the minimum, and the stages lie inside the full frame.
   EXPECT_DOUBLE_EQ(row["ewa_min_ms"].get<double>(), ewa);
@@ -136,8 +137,9 @@ TEST(CompareCli, MissingSharedDataIsSkippedWithANote) {
 }
 
 TEST(CompareCli, BadOptionsFailWithOneLine) {
-  for (const char* args : {"--sizes 0", "--volumes teapot", "--repeats 0", "--csv --json",
-                           "--kernel-width 5", "--classification sideways", "--partition disk"}) {
+  for (const char* args :
+       {"--sizes 0", "--volumes teapot", "--repeats 0", "--csv --json", "--kernel-width 5",
+        "--classification sideways", "--partition disk", "--tile-size 12"}) {
     const CliRun r = compare(args);
     EXPECT_NE(r.code, 0) << args;
     EXPECT_GE(lineCount(r.err), 1) << args;

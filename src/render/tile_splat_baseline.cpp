@@ -1,0 +1,115 @@
+// TileSplatBaseline: the four passes of shaders/tile_splat.comp.glsl, timed with glFinish.
+#include "render/tile_splat_baseline.h"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+#include "gl/gl_error.h"
+
+namespace ewa {
+
+namespace {
+
+std::string defines(int tileSize, const char* pass, const char* format = "rgba32f") {
+  return "#define TILE_SIZE " + std::to_string(tileSize) + "\n#define " + pass +
+         " 1\n#define IMAGE_FORMAT " + format + "\n";
+}
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+// Grows `buffer` to hold at least `bytes` (its contents are not kept).
+void reserve(gl::Buffer& buffer, size_t bytes) {
+  bytes = std::max<size_t>(bytes, 16);
+  if (buffer && size_t(buffer.size()) >= bytes) return;
+  buffer.setData(GLsizeiptr(bytes), nullptr, GL_DYNAMIC_DRAW);
+  gl::checkGlError("tile splat buffers");
+}
+
+}  // namespace
+
+TileSplatBaseline::TileSplatBaseline(const gl::ShaderLibrary& shaders, int tileSize)
+    : tileSize_(tileSize),
+      countPass_(shaders.computeProgram("tile_splat.comp.glsl", defines(tileSize, "COUNT_PASS"))),
+      scanPass_(shaders.computeProgram("tile_splat.comp.glsl", defines(tileSize, "SCAN_PASS"))),
+      scatterPass_(
+          shaders.computeProgram("tile_splat.comp.glsl", defines(tileSize, "SCATTER_PASS"))),
+      accumulateHalf_(shaders.computeProgram("tile_splat.comp.glsl",
+                                             defines(tileSize, "ACCUMULATE_PASS", "rgba16f"))),
+      accumulateFloat_(
+          shaders.computeProgram("tile_splat.comp.glsl", defines(tileSize, "ACCUMULATE_PASS"))) {}
+
+void TileSplatBaseline::setFootprints(const std::vector<TileFootprint>& footprints, float cutoff) {
+  count_ = footprints.size();
+  cutoff_ = cutoff;
+  footprints_.setData(GLsizeiptr(std::max<size_t>(1, count_) * sizeof(TileFootprint)),
+                      count_ ? footprints.data() : nullptr, GL_STATIC_DRAW);
+}
+
+TileSplatBaseline::Timing TileSplatBaseline::draw(int width, int height, bool halfFloat) {
+  const GLenum format = halfFloat ? GL_RGBA16F : GL_RGBA32F;
+  if (front_.width() != width || front_.height() != height || front_.internalFormat() != format) {
+    front_ = gl::Texture::create2D(format, width, height);
+    back_ = gl::Texture::create2D(format, width, height);
+  }
+  const glm::ivec2 tiles((width + tileSize_ - 1) / tileSize_, (height + tileSize_ - 1) / tileSize_);
+  const size_t tileCount = size_t(tiles.x) * size_t(tiles.y);
+  reserve(cursor_, tileCount * sizeof(uint32_t));
+  reserve(offsets_, (tileCount + 1) * sizeof(uint32_t));
+  for (gl::Program* p :
+       {&countPass_, &scanPass_, &scatterPass_, &accumulateHalf_, &accumulateFloat_}) {
+    p->setUInt("uCount", GLuint(count_));
+    p->setIVec2("uTiles", tiles);
+    p->setIVec2("uViewport", glm::ivec2(width, height));
+    p->setFloat("uCutoff", cutoff_);
+  }
+  footprints_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  cursor_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  offsets_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  const size_t groups = std::max<size_t>(1, (count_ + 255) / 256);
+  const GLuint gx = GLuint(std::min<size_t>(groups, 65535)), gy = GLuint((groups + gx - 1) / gx);
+
+  Timing t;
+  glFinish();
+  auto start = std::chrono::steady_clock::now();
+  const uint32_t zero = 0;
+  glClearNamedBufferData(cursor_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glUseProgram(countPass_.id());
+  glDispatchCompute(gx, gy, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(scanPass_.id());
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  uint32_t entries = 0;  // the lists' length sizes their buffer: one small read back
+  offsets_.getSubData(GLintptr(tileCount * sizeof(uint32_t)), sizeof entries, &entries);
+  t.entries = entries;
+  reserve(entries_, size_t(entries) * sizeof(uint32_t));
+  entries_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  glUseProgram(scatterPass_.id());
+  glDispatchCompute(gx, gy, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glFinish();
+  t.binMs = msSince(start);
+
+  start = std::chrono::steady_clock::now();
+  glBindImageTexture(0, front_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+  glBindImageTexture(1, back_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+  glUseProgram((halfFloat ? accumulateHalf_ : accumulateFloat_).id());
+  glDispatchCompute(GLuint(tiles.x), GLuint(tiles.y), 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glFinish();
+  t.accumulateMs = msSince(start);
+  gl::checkGlError("tile splat draw");
+  return t;
+}
+
+std::vector<glm::vec4> TileSplatBaseline::frontImage() const {
+  std::vector<glm::vec4> out(size_t(front_.width()) * size_t(front_.height()));
+  front_.getImage(0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(glm::vec4)), out.data());
+  return out;
+}
+
+}  // namespace ewa
