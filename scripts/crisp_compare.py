@@ -238,7 +238,7 @@ def main():
     p.add_argument("--depth-cutoff", help="ewaview's --depth-cutoff (default: ewaview's, 1)")
     p.add_argument("--prefilters", default=None,
                    help="post: ewaview's --prefilter values to compare, comma-separated "
-                        "(default: ewaview's, 0.05)")
+                        "(default: ewaview's, 0.04)")
     p.add_argument("--slab-thickness", type=float, default=2.0,
                    help="slab thickness in voxels (ewaview's default 2)")
     p.add_argument("--low-pass", type=float,
@@ -256,6 +256,10 @@ def main():
                         "not in the list)")
     p.add_argument("--elevation", type=float, default=0.0,
                    help="raise each view's eye by this many degrees")
+    p.add_argument("--views",
+                   help="several views AZIMUTH:ELEVATION:DISTANCE-SCALE, comma-separated (e.g. "
+                        "0:0:1,120:0:1); prints each variant's SSIM per view with the worst and "
+                        "the mean instead of one view's table")
     a = p.parse_args()
     if a.vtk:
         return vtk_child(a.vtk[0], a.vtk[1], a.repeats, a.distance_scale, a.azimuth,
@@ -267,6 +271,9 @@ def main():
                 for b in (prefilters if c.startswith("post") else [None])]
     if a.out:
         os.makedirs(a.out, exist_ok=True)
+    if a.views:
+        return compare_views(a, variants, [tuple(float(x) for x in v.split(":"))
+                                           for v in a.views.split(",")])
     print(f"| volume | classification | kernel width | prefilter | SSIM | sharpness | ms/frame |")
     print(f"| --- | --- | --- | --- | --- | --- | --- |")
     all_vols = volumes()
@@ -277,30 +284,10 @@ def main():
         ref, vtk_ms = vtk_picture(name, a.repeats, a.distance_scale, a.azimuth, a.elevation)
         ref_y = luminance(ref)
         print(f"| {name} | VTK ray caster | | | 1 | 1 | {vtk_ms:.0f} |", flush=True)
-        scene = ewaview.Scene(array,
-                              spacing=spacing, resolution=(SIZE, SIZE),
-                              camera_position=tuple(cam[1]), camera_focal_point=tuple(cam[0]),
-                              camera_view_up=cam[2], background=(0, 0, 0), cutoff=a.cutoff)
-        scene.transfer_function = dict(tf, opacity_unit_distance=1.0)
+        scene = make_scene(array, spacing, tf, cam, a.cutoff)
         pictures = [ref]
         for classification, width, prefilter in variants:
-            options = dict(classification=classification.split("-")[0], kernel_width=width,
-                           slab_thickness=a.slab_thickness)
-            if classification == "post-mean":
-                options["slab_preintegration"] = "off"
-            if a.depth_cutoff:
-                options["depth_cutoff"] = a.depth_cutoff
-            if a.slab_resolution:
-                options["slab_resolution"] = a.slab_resolution
-            if a.low_pass:
-                options["low_pass"] = a.low_pass
-            if a.slab_samples and classification == "post":
-                options["slab_samples"] = a.slab_samples
-            if prefilter is not None:
-                options["prefilter"] = prefilter
-            shown = "" if not classification.startswith("post") else (
-                "default" if prefilter is None else f"{prefilter:g}")
-            tag = f"{classification}_{width:g}" + ("" if prefilter is None else f"_p{prefilter:g}")
+            shown, tag, options = variant_options(a, classification, width, prefilter)
             img = scene.render(**options)  # classifies
             times = []
             for _ in range(a.repeats):
@@ -317,6 +304,67 @@ def main():
         if a.out:
             ewaview.write_png(f"{a.out}/{name}_vtk.png", ref)
             ewaview.write_png(f"{a.out}/{name}_montage.png", np.concatenate(pictures, axis=1))
+
+
+def make_scene(array, spacing, tf, cam, cutoff):
+    import ewaview
+    scene = ewaview.Scene(array, spacing=spacing, resolution=(SIZE, SIZE),
+                          camera_position=tuple(cam[1]), camera_focal_point=tuple(cam[0]),
+                          camera_view_up=cam[2], background=(0, 0, 0), cutoff=cutoff)
+    scene.transfer_function = dict(tf, opacity_unit_distance=1.0)
+    return scene
+
+
+def variant_options(a, classification, width, prefilter):
+    """(prefilter as shown, file tag, Scene.render keywords) of one variant."""
+    options = dict(classification=classification.split("-")[0], kernel_width=width,
+                   slab_thickness=a.slab_thickness)
+    if classification == "post-mean":
+        options["slab_preintegration"] = "off"
+    if a.depth_cutoff:
+        options["depth_cutoff"] = a.depth_cutoff
+    if a.slab_resolution:
+        options["slab_resolution"] = a.slab_resolution
+    if a.low_pass:
+        options["low_pass"] = a.low_pass
+    if a.slab_samples and classification == "post":
+        options["slab_samples"] = a.slab_samples
+    if prefilter is not None:
+        options["prefilter"] = prefilter
+    shown = "" if not classification.startswith("post") else (
+        "default" if prefilter is None else f"{prefilter:g}")
+    tag = f"{classification}_{width:g}" + ("" if prefilter is None else f"_p{prefilter:g}")
+    return shown, tag, options
+
+
+def compare_views(a, variants, views):
+    """Each variant of each volume at several views: SSIM per view, the worst and the mean."""
+    import ewaview
+    names = " | ".join(f"{az:g}:{el:g}:{sc:g}" for az, el, sc in views)
+    print(f"| volume | classification | kernel width | prefilter | {names} | worst | mean | "
+          f"worst sharpness |")
+    print("| --- " * (len(views) + 7) + "|")
+    all_vols = volumes()
+    for name in a.volumes.split(","):
+        array, spacing, tf, direction, distance = all_vols[name]()
+        scores = {v: [] for v in variants}
+        for az, el, sc in views:
+            cam = camera(array, spacing, direction, distance * sc, az, el)
+            ref_y = luminance(vtk_picture(name, 1, sc, az, el)[0])
+            scene = make_scene(array, spacing, tf, cam, a.cutoff)
+            for v in variants:
+                shown, tag, options = variant_options(a, *v)
+                img = scene.render(**options)
+                y = luminance(img)
+                scores[v].append((ssim(y, ref_y), sharpness(y, ref_y)))
+                if a.out:
+                    ewaview.write_png(f"{a.out}/{name}_{tag}_{az:g}_{el:g}_{sc:g}.png", img)
+        for v in variants:
+            shown = variant_options(a, *v)[0]
+            s = [x for x, _ in scores[v]]
+            cells = " | ".join(f"{x:.4f}" for x in s)
+            print(f"| {name} | {v[0]} | {v[1]:g} | {shown} | {cells} | {min(s):.4f} | "
+                  f"{statistics.mean(s):.4f} | {min(h for _, h in scores[v]):.2f} |", flush=True)
 
 
 if __name__ == "__main__":

@@ -184,7 +184,7 @@ int run(int argc, char** argv) {
                  "each (2); auto (default): 1 on software rasterizers, else the faster as timed")
       ->check(CLI::IsMember({"auto", "1", "2"}));
   app.add_option("--prefilter", settings.classification.prefilter,
-                 "EWA post-classification: value prefilter strength (default 0.05)")
+                 "EWA post-classification: value prefilter strength (default 0.04)")
       ->check(CLI::Range(0.0, kMaxPrefilter));
   app.add_option("--occlusion-culling", culling,
                  "EWA: occlusion culling auto (default: off on software rasterizers), on or off")

@@ -28,7 +28,7 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
       ->check(CLI::IsMember({"auto", "1", "2"}));
   app.add_option("--prefilter", s.classification.prefilter,
                  "Post-classification: sharpen each splat's value by B times its discrete "
-                 "Laplacian, so the kernels come nearer interpolating the voxels (default 0.05; 0: "
+                 "Laplacian, so the kernels come nearer interpolating the voxels (default 0.04; 0: "
                  "the data's values)")
       ->check(CLI::Range(0.0, kMaxPrefilter));
   app.add_option("--post-normals", p.postNormals,

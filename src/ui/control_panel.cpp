@@ -136,7 +136,7 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
-        "Post-classified, pre-integrated, kernel width 0.7, cutoff 5, prefilter 0.05: nearest "
+        "Post-classified, pre-integrated, kernel width 0.7, cutoff 5, prefilter 0.04: nearest "
         "to a ray caster close up (ewaview --close-up)");
   int precision = int(settings.slabPrecision);
   const char* precisions[] = {"auto", "half", "float"};

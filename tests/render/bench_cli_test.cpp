@@ -41,7 +41,7 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
   EXPECT_EQ(
       doc["ewa_settings"],
       std::string("kernel width 0.70, cutoff 5, depth cutoff 1, post-classification, "
-                  "prefilter 0.05, 4 samples a slab, half-float slab images, occlusion culling ") +
+                  "prefilter 0.04, 4 samples a slab, half-float slab images, occlusion culling ") +
           (software ? "off" : "on") + " (auto), slab partition on the " +
           (software ? "CPU" : "GPU") + " (auto)")
       << context;

@@ -54,7 +54,7 @@ TEST(CloseUp, SetsPostClassificationAndNarrowKernels) {
   EXPECT_TRUE(plain.options.render.slabPreintegration);
   EXPECT_DOUBLE_EQ(plain.options.render.kernelWidth, 0.7);
   EXPECT_DOUBLE_EQ(plain.options.render.cutoff, 5.0);
-  EXPECT_DOUBLE_EQ(plain.options.render.classification.prefilter, 0.05);
+  EXPECT_DOUBLE_EQ(plain.options.render.classification.prefilter, 0.04);
   // ...except with surface splats, which need pre-classification: asked for without a
   // classification they pick it, asked for with post they are a usage error.
   const Parsed surfaces = parse({"--synthetic", "sphere:8", "--surface-threshold", "100"});
