@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <functional>
+#include <vector>
 
 namespace ewa {
 
@@ -30,7 +31,20 @@ unsigned workerThreads(unsigned requested);
 size_t parallelChunks(size_t count, size_t minPerChunk, unsigned threads,
                       const std::function<void(size_t first, size_t last, size_t chunk)>& fn);
 
-// The number of chunks parallelChunks would use for these arguments (to size per-chunk state).
+// The number of chunks parallelChunks would use for these arguments.
 size_t chunkCount(size_t count, size_t minPerChunk, unsigned threads);
+
+// parallelChunks for loops that keep state per chunk: fn(first, last) returns its chunk's
+// result (a count, a range, its part of a list), and the results come back in chunk order, so
+// joined in that order they are the sequential loop's. Each chunk's result is stored once, when
+// it returns: chunks that add into shared slots instead slow each other (one cache line).
+template <typename T, typename Fn>
+std::vector<T> parallelChunkResults(size_t count, size_t minPerChunk, unsigned threads, Fn fn) {
+  std::vector<T> results(chunkCount(count, minPerChunk, threads));
+  parallelChunks(count, minPerChunk, threads, [&](size_t first, size_t last, size_t chunk) {
+    results[chunk] = fn(first, last);
+  });
+  return results;
+}
 
 }  // namespace ewa

@@ -159,10 +159,12 @@ ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf
     }
     *surfaces = surfaceCount;
   };
-  std::vector<size_t> surfaces(chunkCount(splats.size(), kMinChunkWork, threads), 0);
-  parallelChunks(
-      splats.size(), kMinChunkWork, threads,
-      [&](size_t first, size_t last, size_t chunk) { attributes(first, last, &surfaces[chunk]); });
+  const std::vector<size_t> surfaces = parallelChunkResults<size_t>(
+      splats.size(), kMinChunkWork, threads, [&](size_t first, size_t last) {
+        size_t count = 0;
+        attributes(first, last, &count);
+        return count;
+      });
   for (size_t count : surfaces) out.surfaceCount += count;
   return out;
 }

@@ -35,39 +35,41 @@ SplatSet SplatSet::build(const Volume& volume, const std::function<bool(double)>
   // (whose unmapping interrupts every core) made 16 threads only 3x as fast as one.
   constexpr size_t kBlock = size_t(1) << 18;
   const size_t minLayers = minItemsPerChunk(size_t((d[0] + s - 1) / s * ((d[1] + s - 1) / s)));
-  std::vector<std::vector<std::vector<PackedSplat>>> parts(chunkCount(layers, minLayers, threads));
   std::atomic<size_t> kept{0};  // all chunks' splats so far, checked a row at a time
   auto tooMany = [maxSplats] {
     return SplatLimitError("more than " + std::to_string(maxSplats) +
                            " voxels are visible, the most that fit");
   };
-  parallelChunks(layers, minLayers, threads, [&](size_t first, size_t last, size_t chunk) {
-    std::vector<std::vector<PackedSplat>>& blocks = parts[chunk];
-    size_t count = 0;  // this chunk's splats
-    for (int64_t k = int64_t(first) * s; k < int64_t(last) * s && k < d[2]; k += s) {
-      for (int64_t j = 0; j < d[1]; j += s) {
-        const size_t before = count;
-        int64_t n = volume.index(0, j, k);
-        for (int64_t i = 0; i < d[0]; i += s, n += s) {
-          const double v = volume.valueAt(n);
-          if (!std::isfinite(v)) continue;
-          const double x = std::clamp((v - lo) / width, 0.0, 1.0);
-          if (!visible[std::min(kTable - 1, int(x * (kTable - 1)))] &&
-              !(alsoKeep && alsoKeep(i, j, k, v)))
-            continue;
-          if (count >= maxSplats) throw tooMany();
-          if (blocks.empty() || blocks.back().size() == kBlock) {
-            blocks.emplace_back();
-            blocks.back().reserve(kBlock);
+  using Blocks = std::vector<std::vector<PackedSplat>>;
+  std::vector<Blocks> parts =
+      parallelChunkResults<Blocks>(layers, minLayers, threads, [&](size_t first, size_t last) {
+        Blocks blocks;
+        size_t count = 0;  // this chunk's splats
+        for (int64_t k = int64_t(first) * s; k < int64_t(last) * s && k < d[2]; k += s) {
+          for (int64_t j = 0; j < d[1]; j += s) {
+            const size_t before = count;
+            int64_t n = volume.index(0, j, k);
+            for (int64_t i = 0; i < d[0]; i += s, n += s) {
+              const double v = volume.valueAt(n);
+              if (!std::isfinite(v)) continue;
+              const double x = std::clamp((v - lo) / width, 0.0, 1.0);
+              if (!visible[std::min(kTable - 1, int(x * (kTable - 1)))] &&
+                  !(alsoKeep && alsoKeep(i, j, k, v)))
+                continue;
+              if (count >= maxSplats) throw tooMany();
+              if (blocks.empty() || blocks.back().size() == kBlock) {
+                blocks.emplace_back();
+                blocks.back().reserve(kBlock);
+              }
+              blocks.back().push_back(
+                  {uint32_t(i) | uint32_t(j) << 16, uint32_t(k) | quantize(x) << 16});
+              ++count;
+            }
+            if (kept.fetch_add(count - before) + (count - before) > maxSplats) throw tooMany();
           }
-          blocks.back().push_back(
-              {uint32_t(i) | uint32_t(j) << 16, uint32_t(k) | quantize(x) << 16});
-          ++count;
         }
-        if (kept.fetch_add(count - before) + (count - before) > maxSplats) throw tooMany();
-      }
-    }
-  });
+        return blocks;
+      });
   // Each chunk's blocks copied to their place in the list on its own thread, and freed.
   std::vector<size_t> offsets(parts.size() + 1, 0);
   for (size_t c = 0; c < parts.size(); ++c) {

@@ -107,19 +107,18 @@ void Volume::computeStatistics() {
   const size_t n = size_t(voxelCount());
   // Range, then histogram, each over chunks of the voxels on the machine's cores: minima,
   // maxima and counts merge to the same result in any order.
-  const size_t chunks = chunkCount(n, kMinChunkWork, 0);
-  std::vector<std::array<double, 2>> ranges(
-      chunks, {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
-  parallelChunks(n, kMinChunkWork, 0, [&](size_t first, size_t last, size_t c) {
-    double lo = ranges[c][0], hi = ranges[c][1];
-    for (size_t i = first; i < last; ++i) {
-      const double v = valueAt(int64_t(i));
-      if (!std::isfinite(v)) continue;
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
-    ranges[c] = {lo, hi};
-  });
+  using Range = std::array<double, 2>;
+  const std::vector<Range> ranges =
+      parallelChunkResults<Range>(n, kMinChunkWork, 0, [&](size_t first, size_t last) {
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (size_t i = first; i < last; ++i) {
+          const double v = valueAt(int64_t(i));
+          if (!std::isfinite(v)) continue;
+          lo = std::min(lo, v);
+          hi = std::max(hi, v);
+        }
+        return Range{lo, hi};
+      });
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;
   for (const auto& r : ranges) {
@@ -130,16 +129,18 @@ void Volume::computeStatistics() {
   range_ = {lo, hi};
   const double width = hi > lo ? hi - lo : 1.0;
   const int bins = histogramBins();
-  std::vector<std::vector<uint64_t>> counts(chunks, std::vector<uint64_t>(size_t(bins), 0));
-  parallelChunks(n, kMinChunkWork, 0, [&](size_t first, size_t last, size_t c) {
-    std::vector<uint64_t>& h = counts[c];
-    for (size_t i = first; i < last; ++i) {
-      const double v = valueAt(int64_t(i));
-      if (!std::isfinite(v)) continue;
-      const int bin = static_cast<int>((v - lo) / width * bins);
-      h[size_t(std::clamp(bin, 0, bins - 1))]++;
-    }
-  });
+  using Counts = std::vector<uint64_t>;
+  const std::vector<Counts> counts =
+      parallelChunkResults<Counts>(n, kMinChunkWork, 0, [&](size_t first, size_t last) {
+        Counts h(size_t(bins), 0);
+        for (size_t i = first; i < last; ++i) {
+          const double v = valueAt(int64_t(i));
+          if (!std::isfinite(v)) continue;
+          const int bin = static_cast<int>((v - lo) / width * bins);
+          h[size_t(std::clamp(bin, 0, bins - 1))]++;
+        }
+        return h;
+      });
   histogram_.assign(size_t(bins), 0);
   for (const auto& h : counts)
     for (int b = 0; b < bins; ++b) histogram_[size_t(b)] += h[size_t(b)];

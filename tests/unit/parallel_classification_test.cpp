@@ -48,6 +48,33 @@ TEST(ParallelChunks, CoverTheRangeInOrderAndRethrowTheFirstError) {
   }
 }
 
+TEST(ParallelChunks, ResultsComeBackOnePerChunkInChunkOrder) {
+  // Each chunk returns its range: joined in order they tile [0, count) as one loop would.
+  const auto ranges =
+      parallelChunkResults<std::vector<size_t>>(100, 7, 4, [](size_t first, size_t last) {
+        std::vector<size_t> items;
+        for (size_t i = first; i < last; ++i) items.push_back(i);
+        return items;
+      });
+  ASSERT_EQ(ranges.size(), chunkCount(100, 7, 4));
+  ASSERT_EQ(ranges.size(), 4u);
+  std::vector<size_t> joined;
+  for (const auto& r : ranges) {
+    EXPECT_FALSE(r.empty());
+    joined.insert(joined.end(), r.begin(), r.end());
+  }
+  ASSERT_EQ(joined.size(), 100u);
+  for (size_t i = 0; i < joined.size(); ++i) EXPECT_EQ(joined[i], i);
+  EXPECT_TRUE(parallelChunkResults<int>(0, 1, 3, [](size_t, size_t) { return 1; }).empty());
+  // An error in a chunk still reaches the caller.
+  EXPECT_THROW(parallelChunkResults<int>(30, 1, 3,
+                                         [](size_t first, size_t) -> int {
+                                           if (first > 0) throw std::runtime_error("late chunk");
+                                           return 0;
+                                         }),
+               std::runtime_error);
+}
+
 // A float field with smooth lobes, noise, NaNs and a thin transfer-function peak between voxel
 // values: every part of the mask (seeds, crossings, margin) and of classification is exercised,
 // with chunk boundaries inside each pass at 3 and 7 threads (96 x 96 rows, 40 slices).
