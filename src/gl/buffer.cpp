@@ -1,6 +1,7 @@
 // Buffer: creation, upload and ownership transfer of GL buffer objects.
 #include "gl/buffer.h"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
@@ -47,6 +48,13 @@ void Buffer::setData(GLsizeiptr size, const void* data, GLenum usage) {
   if (id_ == 0) glCreateBuffers(1, &id_);
   glNamedBufferData(id_, size, data, usage);
   size_ = size;
+}
+
+void Buffer::reserve(GLsizeiptr size, const char* what) {
+  size = std::max<GLsizeiptr>(size, 16);
+  if (id_ != 0 && size_ >= size) return;
+  setData(id_ != 0 ? size + size / 2 : size, nullptr, GL_DYNAMIC_DRAW);
+  checkGlError(what);
 }
 
 void Buffer::setSubData(GLintptr offset, GLsizeiptr size, const void* data) {

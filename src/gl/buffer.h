@@ -20,6 +20,11 @@ class Buffer {
 
   // Reallocates the store (glNamedBufferData); creates the buffer first when empty.
   void setData(GLsizeiptr size, const void* data, GLenum usage = GL_DYNAMIC_DRAW);
+  // Makes the store hold at least `size` bytes (16 at least), its contents not kept: exactly
+  // that the first time (a 512^3 volume's per-splat buffers are gigabytes), half again more
+  // when it grows, so that a size that creeps up (views turning) settles. A failed allocation
+  // (GL_OUT_OF_MEMORY) throws GlError naming `what`.
+  void reserve(GLsizeiptr size, const char* what);
   // Overwrites bytes [offset, offset + size); throws GlError when outside the store.
   void setSubData(GLintptr offset, GLsizeiptr size, const void* data);
   // Copies bytes [offset, offset + size) into `out`; throws GlError when outside the store.

@@ -34,15 +34,6 @@ GpuSlabPartition::GpuSlabPartition(const gl::ShaderLibrary& shaders)
       scatterPass_(shaders.computeProgram("slab_partition.comp.glsl", "#define SCATTER_PASS 1\n")),
       range_(gl::Buffer::create(5 * sizeof(uint32_t))) {}
 
-void GpuSlabPartition::reserve(gl::Buffer& buffer, size_t bytes) {
-  bytes = std::max<size_t>(bytes, 16);
-  if (buffer && size_t(buffer.size()) >= bytes) return;
-  // Exactly what is asked the first time (a 512^3 volume's per-splat buffers are gigabytes);
-  // half again when it grows, so that it settles as the view turns.
-  buffer.setData(GLsizeiptr(buffer ? bytes + bytes / 2 : bytes), nullptr, GL_DYNAMIC_DRAW);
-  gl::checkGlError("slab partition buffers");  // GL_OUT_OF_MEMORY names the buffers
-}
-
 void GpuSlabPartition::dispatch(gl::Program& program, size_t invocations, size_t groupSize) {
   const size_t groups = std::max<size_t>(1, (invocations + groupSize - 1) / groupSize);
   const size_t x = std::min<size_t>(groups, 65535), y = (groups + x - 1) / x;
@@ -111,9 +102,9 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
   const double count = std::min(std::floor((hi - lo) / thickness) + 1.0, 1.0e6);
   const auto slabCount = static_cast<size_t>(count);
   const double scale = count < 1.0e6 ? 1.0 / thickness : count / (hi - lo) * (1.0 - 1e-9);
-  reserve(cursor_, slabCount * sizeof(uint32_t));
-  reserve(first_, slabCount * sizeof(uint32_t));
-  reserve(commands_, slabCount * 8 * sizeof(uint32_t));
+  cursor_.reserve(GLsizeiptr(slabCount * sizeof(uint32_t)), "slab partition buffers");
+  first_.reserve(GLsizeiptr(slabCount * sizeof(uint32_t)), "slab partition buffers");
+  commands_.reserve(GLsizeiptr(slabCount * 8 * sizeof(uint32_t)), "slab partition buffers");
   const uint32_t zero = 0;
   glClearNamedBufferSubData(cursor_.id(), GL_R32UI, 0, GLsizeiptr(slabCount * sizeof(uint32_t)),
                             GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -134,7 +125,7 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
   // volume's list is hundreds of megabytes).
   uint32_t entries = 0;
   range_.getSubData(4 * sizeof(uint32_t), sizeof entries, &entries);
-  reserve(order_, size_t(entries) * sizeof(uint32_t));
+  order_.reserve(GLsizeiptr(size_t(entries) * sizeof(uint32_t)), "slab partition buffers");
   order_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   dispatch(scatterPass_, n, kGroup);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |

@@ -51,8 +51,6 @@ class GpuSlabPartition {
   size_t bytes() const;
 
  private:
-  // Makes `buffer` hold at least `bytes`: exactly at first, half again more when it grows.
-  static void reserve(gl::Buffer& buffer, size_t bytes);
   void dispatch(gl::Program& program, size_t invocations, size_t groupSize);
 
   gl::Program extentPass_, countPass_, scanPass_, scatterPass_;

@@ -21,14 +21,6 @@ double msSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
-// Grows `buffer` to hold at least `bytes` (its contents are not kept).
-void reserve(gl::Buffer& buffer, size_t bytes) {
-  bytes = std::max<size_t>(bytes, 16);
-  if (buffer && size_t(buffer.size()) >= bytes) return;
-  buffer.setData(GLsizeiptr(bytes), nullptr, GL_DYNAMIC_DRAW);
-  gl::checkGlError("tile splat buffers");
-}
-
 }  // namespace
 
 TileSplatBaseline::TileSplatBaseline(const gl::ShaderLibrary& shaders, int tileSize)
@@ -57,8 +49,8 @@ TileSplatBaseline::Timing TileSplatBaseline::draw(int width, int height, bool ha
   }
   const glm::ivec2 tiles((width + tileSize_ - 1) / tileSize_, (height + tileSize_ - 1) / tileSize_);
   const size_t tileCount = size_t(tiles.x) * size_t(tiles.y);
-  reserve(cursor_, tileCount * sizeof(uint32_t));
-  reserve(offsets_, (tileCount + 1) * sizeof(uint32_t));
+  cursor_.reserve(GLsizeiptr(tileCount * sizeof(uint32_t)), "tile splat buffers");
+  offsets_.reserve(GLsizeiptr((tileCount + 1) * sizeof(uint32_t)), "tile splat buffers");
   for (gl::Program* p :
        {&countPass_, &scanPass_, &scatterPass_, &accumulateHalf_, &accumulateFloat_}) {
     p->setUInt("uCount", GLuint(count_));
@@ -86,7 +78,7 @@ TileSplatBaseline::Timing TileSplatBaseline::draw(int width, int height, bool ha
   uint32_t entries = 0;  // the lists' length sizes their buffer: one small read back
   offsets_.getSubData(GLintptr(tileCount * sizeof(uint32_t)), sizeof entries, &entries);
   t.entries = entries;
-  reserve(entries_, size_t(entries) * sizeof(uint32_t));
+  entries_.reserve(GLsizeiptr(size_t(entries) * sizeof(uint32_t)), "tile splat buffers");
   entries_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   glUseProgram(scatterPass_.id());
   glDispatchCompute(gx, gy, 1);

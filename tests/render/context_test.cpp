@@ -238,6 +238,20 @@ TEST_P(HeadlessContextTest, MovingBufferTransfersOwnership) {
   EXPECT_THROW(gl::Buffer::create(16).setSubData(8, 16, nullptr), GlError);
 }
 
+TEST_P(HeadlessContextTest, BufferReserveGrowsExactlyFirstThenByHalfAgain) {
+  gl::Buffer b;
+  b.reserve(100, "test buffer");  // creates it, exactly
+  ASSERT_NE(b.id(), 0u);
+  EXPECT_EQ(b.size(), 100);
+  b.reserve(80, "test buffer");  // big enough: kept
+  EXPECT_EQ(b.size(), 100);
+  b.reserve(200, "test buffer");  // grows with room to settle
+  EXPECT_EQ(b.size(), 300);
+  gl::Buffer tiny;
+  tiny.reserve(0, "test buffer");  // never empty: storage buffers need some bytes
+  EXPECT_EQ(tiny.size(), 16);
+}
+
 TEST_P(HeadlessContextTest, UniformLocationsAreCachedAndMissingOnesAreMinusOne) {
   gl::Program program =
       gl::ShaderLibrary(kTestShaders).program("test_fill.vert.glsl", "test_fill.frag.glsl");
