@@ -68,7 +68,9 @@ TileSplatBaseline::Timing TileSplatBaseline::draw(int width, int height, bool ha
   glFinish();
   auto start = std::chrono::steady_clock::now();
   const uint32_t zero = 0;
-  glClearNamedBufferData(cursor_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  // This picture's tiles only: the buffer may be longer (reserve leaves room to grow).
+  glClearNamedBufferSubData(cursor_.id(), GL_R32UI, 0, GLsizeiptr(tileCount * sizeof(uint32_t)),
+                            GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   glUseProgram(countPass_.id());
   glDispatchCompute(gx, gy, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

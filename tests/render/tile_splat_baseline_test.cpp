@@ -54,6 +54,7 @@ TEST_F(TileSplatBaselineTest, SumsEveryFootprintAtEveryPixelAsTheCppFootprintDoe
   for (int tileSize : {8, 16}) {
     TileSplatBaseline baseline(gl::ShaderLibrary(), tileSize);
     baseline.setFootprints(tiles, float(cutoff));
+    baseline.draw(20, 17, false);  // a smaller picture first: the buffers then grow
     for (bool halfFloat : {false, true}) {
       const TileSplatBaseline::Timing t = baseline.draw(width, height, halfFloat);
       EXPECT_GT(t.entries, cases.size()) << "some footprints reach several tiles";
