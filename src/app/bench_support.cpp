@@ -29,10 +29,6 @@ int benchmarkMain(const char* program, int (*run)(int, char**), int argc, char**
   }
 }
 
-double msSince(BenchClock::time_point start) {
-  return std::chrono::duration<double, std::milli>(BenchClock::now() - start).count();
-}
-
 double secondsSince(BenchClock::time_point start) {
   return std::chrono::duration<double>(BenchClock::now() - start).count();
 }

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/stopwatch.h"
+
 namespace CLI {
 class App;
 }
@@ -16,7 +18,6 @@ namespace ewa {
 int benchmarkMain(const char* program, int (*run)(int, char**), int argc, char** argv);
 
 using BenchClock = std::chrono::steady_clock;
-double msSince(BenchClock::time_point start);
 double secondsSince(BenchClock::time_point start);
 // CPU seconds of this process, all threads: less sensitive than wall time to other programs
 // loading the machine.

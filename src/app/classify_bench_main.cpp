@@ -60,7 +60,7 @@ int run(int argc, char** argv) {
         const auto start = BenchClock::now();
         const ClassifiedSplats s =
             classifySplats(scene.volume, scene.transferFunction, c, SIZE_MAX, t);
-        (t == 1 ? one : all).push_back(msSince(start));
+        (t == 1 ? one : all).push_back(millisecondsSince(start));
         splats = s.splats.size();
       }
     }

@@ -93,7 +93,7 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
     auto start = BenchClock::now();
     m.ewa.render(cam, rs, size, size);
     glFinish();
-    ewa.push_back(msSince(start));
+    ewa.push_back(millisecondsSince(start));
     const RenderStats s = m.ewa.stats();
     partition.push_back(s.partitionMs);
     splat.push_back(s.splatMs);
@@ -105,7 +105,7 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
     start = BenchClock::now();
     m.shearWarp.render(cam, sw, size, size);
     glFinish();
-    shearWarp.push_back(msSince(start));
+    shearWarp.push_back(millisecondsSince(start));
   }
   const RenderStats s = m.ewa.stats();
   row.splats = s.splatsTotal;

@@ -131,7 +131,7 @@ int run(int argc, char** argv) {
     }
     auto t = BenchClock::now();
     LodVolumes coarse = buildLodVolumes(scene.volume);
-    const double lodBuildMs = msSince(t);
+    const double lodBuildMs = millisecondsSince(t);
     // The window's way: the levels share one set of programs.
     std::shared_ptr<SplatProgramSet> programs;
     LodRenderer lod(
@@ -145,7 +145,7 @@ int run(int argc, char** argv) {
     // As the window does: the first full-quality frame picks the first moving level.
     t = BenchClock::now();
     lod.render(0, start, o.render, size, size);
-    const double firstFullMs = msSince(t);
+    const double firstFullMs = millisecondsSince(t);
     const size_t splats = lod.last().stats().splatsTotal;
 
     LodPolicy policy(target, refineDelay);
@@ -159,7 +159,7 @@ int run(int argc, char** argv) {
       const int level = policy.movingLevel();
       t = BenchClock::now();
       lod.render(level, cam, o.render, size, size);
-      const double ms = msSince(t);
+      const double ms = millisecondsSince(t);
       policy.reportMovingFrame(level, ms);
       moving.push_back(ms);
       ++levelUse[size_t(level)];
@@ -167,7 +167,7 @@ int run(int argc, char** argv) {
       if (f % size_t(baselineEvery) == 0) {
         t = BenchClock::now();
         lod.render(0, cam, o.render, size, size);
-        full.push_back(msSince(t));
+        full.push_back(millisecondsSince(t));
       }
     }
     // Input stops: the viewer waits refineDelay, then refines full quality in steps of about
@@ -176,13 +176,13 @@ int run(int argc, char** argv) {
     double worstStep = 0.0;
     int steps = 0;
     lod.beginFull(cam, o.render, size, size);
-    worstStep = msSince(t);
+    worstStep = millisecondsSince(t);
     for (bool done = false; !done; ++steps) {
       const auto s = BenchClock::now();
       done = lod.stepFull(budget);
-      worstStep = std::max(worstStep, msSince(s));
+      worstStep = std::max(worstStep, millisecondsSince(s));
     }
-    const double refine = refineDelay + msSince(t);
+    const double refine = refineDelay + millisecondsSince(t);
     std::string levels;
     for (int l = 0; l < LodPolicy::kLevelCount; ++l)
       if (levelUse[size_t(l)])

@@ -7,6 +7,7 @@
 
 #include "core/named_values.h"
 #include "core/opacity_correction.h"
+#include "core/stopwatch.h"
 #include "core/volume_orientation.h"
 
 namespace ewa {
@@ -14,9 +15,6 @@ namespace ewa {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 constexpr NamedValue<TableLookup> kTableLookupNames[] = {{TableLookup::Nearest, "nearest"},
                                                          {TableLookup::Bilinear, "bilinear"}};
@@ -100,7 +98,7 @@ const PreintegrationTable& ShearWarp::pairTable(double distance, int size) {
     const double lo = volume_ ? volume_->minValue() : 0.0, hi = volume_ ? volume_->maxValue() : 1.0;
     it = pairTables_.emplace(distance, PreintegrationTable::build(tf_, lo, hi, size, distance))
              .first;
-    lastBuildMs_ = msSince(start);
+    lastBuildMs_ = millisecondsSince(start);
   }
   return it->second;
 }
@@ -183,16 +181,16 @@ void ShearWarp::render(const Camera& camera, const ShearWarpSettings& settings, 
     }
     input.runs = &everything;
   }
-  stats_.tableMs = msSince(start);
+  stats_.tableMs = millisecondsSince(start);
 
   start = Clock::now();
   const int threads = shearWarpThreads(settings);
   compositeSlices(input, threads, buffers_, intermediate_);
-  stats_.compositeMs = msSince(start);
+  stats_.compositeMs = millisecondsSince(start);
 
   start = Clock::now();
   image_ = warpImage(intermediate_, view.inverseWarp, width, height, threads);
-  stats_.warpMs = msSince(start);
+  stats_.warpMs = millisecondsSince(start);
 }
 
 }  // namespace ewa

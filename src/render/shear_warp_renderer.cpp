@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/stopwatch.h"
 #include "gl/gl_error.h"
 
 namespace ewa {
@@ -52,8 +53,7 @@ void ShearWarpRenderer::render(const Camera& camera, const RenderSettings& setti
   stats_.classifyMs = s.tableMs;
   stats_.compositeMs = s.compositeMs + s.warpMs;
   stats_.gpuBytes = size_t(width) * size_t(height) * 4;  // the RGBA8 texture it allocated
-  stats_.renderMs =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  stats_.renderMs = millisecondsSince(start);
 }
 
 }  // namespace ewa

@@ -5,6 +5,7 @@
 
 #include "core/preintegration_table.h"
 #include "core/slab_preintegration.h"
+#include "core/stopwatch.h"
 
 namespace ewa {
 
@@ -33,8 +34,7 @@ double SlabPairTable::prepare(const TransferFunction& tf, double lo, double hi, 
   lo_ = lo;
   hi_ = hi;
   distance_ = distance;
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
+  return millisecondsSince(start);
 }
 
 size_t SlabPairTable::bytes() const {

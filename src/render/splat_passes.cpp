@@ -10,6 +10,7 @@
 
 #include "core/clip_share.h"
 #include "core/kernel_reach.h"
+#include "core/stopwatch.h"
 #include "core/volume_orientation.h"
 #include "gl/gl_error.h"
 #include "render/splat_renderer.h"
@@ -44,10 +45,6 @@ glm::mat4 clipMatrix(const Projection& proj, const glm::dmat4& view, double near
     p[2][3] = -1.0;
   }
   return glm::mat4(p * view);
-}
-
-double millisecondsSince(SplatRenderer::Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(SplatRenderer::Clock::now() - t).count();
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 
 #include <chrono>
 
+#include "core/stopwatch.h"
+
 namespace ewa {
 
 SpriteBaseline::SpriteBaseline(const gl::ShaderLibrary& shaders)
@@ -41,8 +43,7 @@ double SpriteBaseline::draw(int width, int height, bool halfFloat) {
   glDisable(GL_BLEND);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glFinish();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
+  return millisecondsSince(start);
 }
 
 }  // namespace ewa

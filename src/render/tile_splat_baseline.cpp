@@ -5,6 +5,7 @@
 #include <chrono>
 #include <string>
 
+#include "core/stopwatch.h"
 #include "gl/gl_error.h"
 
 namespace ewa {
@@ -14,11 +15,6 @@ namespace {
 std::string defines(int tileSize, const char* pass, const char* format = "rgba32f") {
   return "#define TILE_SIZE " + std::to_string(tileSize) + "\n#define " + pass +
          " 1\n#define IMAGE_FORMAT " + format + "\n";
-}
-
-double msSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
 }
 
 }  // namespace
@@ -86,7 +82,7 @@ TileSplatBaseline::Timing TileSplatBaseline::draw(int width, int height, bool ha
   glDispatchCompute(gx, gy, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   glFinish();
-  t.binMs = msSince(start);
+  t.binMs = millisecondsSince(start);
 
   start = std::chrono::steady_clock::now();
   glBindImageTexture(0, front_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
@@ -95,7 +91,7 @@ TileSplatBaseline::Timing TileSplatBaseline::draw(int width, int height, bool ha
   glDispatchCompute(GLuint(tiles.x), GLuint(tiles.y), 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   glFinish();
-  t.accumulateMs = msSince(start);
+  t.accumulateMs = millisecondsSince(start);
   gl::checkGlError("tile splat draw");
   return t;
 }

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "core/stopwatch.h"
+
 namespace ewa {
 
 namespace {
@@ -10,9 +12,6 @@ namespace {
 // (GL state, the wait for the chunk) would dominate.
 constexpr double kMinBudgetMs = 4.0;
 
-double millisecondsSince(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
-}
 }  // namespace
 
 ProgressiveRefinement::ProgressiveRefinement(double budgetMs, double frameTargetMs)

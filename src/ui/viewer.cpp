@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "core/camera_path.h"
+#include "core/stopwatch.h"
 #include "gl/gpu_memory.h"
 #include "io/atomic_file.h"
 #include "render/renderer_factory.h"
@@ -32,11 +33,6 @@ constexpr double kBuildPollSeconds = 0.02;
 // 10-30 ms of it).
 constexpr double kRefineBudgetMs = 30.0;
 constexpr double kRefineFrameTargetMs = 50.0;
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 bool envFlag(const char* name) {
   const char* value = std::getenv(name);
