@@ -210,8 +210,9 @@ TEST_F(LodRendererTest, WarmUpClassifiesEachUndrawnLevelOnceAndKeepsThePicture) 
   for (int level = 1; level < LodPolicy::kLevelCount; ++level) {
     cold.lod.render(level, cold.camera, settings, 64, 64);
     // Levels share a volume factor's renderer: the first of each classifies.
-    if (LodPolicy::level(level).volumeFactor != LodPolicy::level(level - 1).volumeFactor)
+    if (LodPolicy::level(level).volumeFactor != LodPolicy::level(level - 1).volumeFactor) {
       EXPECT_GT(cold.lod.last().stats().classifyMs, 0.0) << level;
+    }
     // Within a level: the GPU partition (Auto's choice on hardware GL) orders a slab's entries
     // differently from frame to frame, and the sums' rounding with them.
     EXPECT_LE(maxDifference(cold.lod.last().readImage(), warmed[size_t(level - 1)]), 1) << level;

@@ -345,7 +345,9 @@ TEST_F(PostClassification, TwoPassesASlabDrawTheSamePicture) {
     EXPECT_EQ(r.readImage().pixels, once.pixels) << "shaded " << shaded;
     EXPECT_EQ(r.stats().slabEntries, onceStats.slabEntries);
     EXPECT_GT(meanValue(once), 10.0);
-    if (shaded == 0) EXPECT_GT(onceStats.slabsCoarse, 0u);
+    if (shaded == 0) {
+      EXPECT_GT(onceStats.slabsCoarse, 0u);
+    }
   }
 }
 

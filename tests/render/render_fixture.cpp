@@ -49,7 +49,9 @@ void RenderFixture::TearDownTestSuite() {
 }
 
 void RenderFixture::SetUp() {
-  if (!renderer()) EWA_SKIP_UNLESS_CI() << "no OpenGL 4.5 context: " << skipReason();
+  if (!renderer()) {
+    EWA_SKIP_UNLESS_CI() << "no OpenGL 4.5 context: " << skipReason();
+  }
   context()->makeCurrent();
   renderer()->setPointSizeLimit(1e9f);
   renderer()->setLaggedTermination(defaultLaggedTermination());  // the context's default

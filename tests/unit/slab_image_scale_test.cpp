@@ -38,7 +38,9 @@ TEST(SlabImageScale, FollowsTheSmallestFootprintOfTheSlab) {
   // Every scale keeps the smallest footprint kMinSigmaTexels texels wide on its image.
   for (double sigma = 0.5; sigma < 12.0; sigma += 0.01) {
     const double s = slabImageScale(reach, 0.7, 0.7 * 1000.0 / sigma);
-    if (s > 1.0) EXPECT_GE(sigma / s, kMinSigmaTexels - 1e-9) << sigma;
+    if (s > 1.0) {
+      EXPECT_GE(sigma / s, kMinSigmaTexels - 1e-9) << sigma;
+    }
     EXPECT_EQ(std::fmod(s, kSlabImageScaleStep), 0.0) << sigma;
   }
   EXPECT_EQ(slabImageScale(reach, 0.7, 0.0), kMaxSlabImageScale);  // at the eye: infinitely wide
