@@ -178,6 +178,9 @@ int run(int argc, char** argv) {
   app.add_option("--slab-samples", settings.slabSamples,
                  "EWA post-classification, pre-integrated: depth samples a slab, 4 (default) or 2")
       ->check(CLI::IsMember({2, 4}));
+  app.add_option("--slab-thickness", settings.slabThickness,
+                 "EWA: slab thickness in voxels of the smallest spacing (default 2)")
+      ->check(CLI::Range(0.25, 1000.0));
   std::string slabPasses = "auto";
   app.add_option("--slab-passes", slabPasses,
                  "EWA, 4 samples a slab: splat each slab once into both images (1) or once into "
@@ -243,7 +246,7 @@ int run(int argc, char** argv) {
   PartitionMode partitionMode = PartitionMode::Auto;
   parsePartitionMode(partition, &partitionMode);
   ewa.setPartition(partitionMode);
-  char ewaText[320], prefilterText[64];
+  char ewaText[400], prefilterText[64];
   std::snprintf(prefilterText, sizeof prefilterText, ", prefilter %g%s",
                 settings.classification.prefilter,
                 pairs == "on" ? (settings.slabSamples < 4   ? ", 2 samples a slab"
@@ -252,9 +255,11 @@ int run(int argc, char** argv) {
                                                             : ", 4 samples a slab in 2 passes")
                               : "");
   std::snprintf(ewaText, sizeof ewaText,
-                "kernel width %.2f, cutoff %g, depth cutoff %g, %s-classification%s%s, "
-                "%s slab images, occlusion culling %s%s%s%s, slab partition on the %s%s",
-                settings.kernelWidth, settings.cutoff, settings.depthCutoff, classification.c_str(),
+                "kernel width %.2f, cutoff %g, depth cutoff %g, slabs %g thick, "
+                "%s-classification%s%s, %s slab images, occlusion culling %s%s%s%s, "
+                "slab partition on the %s%s",
+                settings.kernelWidth, settings.cutoff, settings.depthCutoff, settings.slabThickness,
+                classification.c_str(),
                 classification == "post" && pairs == "off" ? " without slab pre-integration" : "",
                 classification == "post" ? prefilterText : "",
                 halfFloatSlabs(settings) ? "half-float" : "float",

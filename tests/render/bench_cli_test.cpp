@@ -38,12 +38,12 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
   const std::string context = doc["context"].get<std::string>();
   const bool software = context.find("llvmpipe") != std::string::npos ||
                         context.find("softpipe") != std::string::npos;
-  EXPECT_EQ(
-      doc["ewa_settings"],
-      std::string("kernel width 0.70, cutoff 5, depth cutoff 1, post-classification, "
-                  "prefilter 0.04, 4 samples a slab, half-float slab images, occlusion culling ") +
-          (software ? "off" : "on") + " (auto), slab partition on the " +
-          (software ? "CPU" : "GPU") + " (auto)")
+  EXPECT_EQ(doc["ewa_settings"],
+            std::string(
+                "kernel width 0.70, cutoff 5, depth cutoff 1, slabs 2 thick, post-classification, "
+                "prefilter 0.04, 4 samples a slab, half-float slab images, occlusion culling ") +
+                (software ? "off" : "on") + " (auto), slab partition on the " +
+                (software ? "CPU" : "GPU") + " (auto)")
       << context;
   EXPECT_NE(doc["context"].get<std::string>().find("OpenGL"), std::string::npos) << doc["context"];
   EXPECT_NE(doc["command"].get<std::string>().find("--synthetic sphere:24"), std::string::npos);
@@ -77,14 +77,14 @@ TEST(CompareCli, JsonRowHasConsistentPositiveTimings) {
 TEST(CompareCli, KernelWidthCutoffsAndClassificationReachEwa) {
   const CliRun r =
       compare(std::string(kTiny) +
-              " --kernel-width 0.55 --cutoff 5 --depth-cutoff 2.25 "
+              " --kernel-width 0.55 --cutoff 5 --depth-cutoff 2.25 --slab-thickness 1 "
               "--classification post --prefilter 0.1 --slab-samples 2 --occlusion-culling off "
               "--slab-rects off --slab-resolution full --partition gpu --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const json doc = json::parse(r.out);
   EXPECT_EQ(doc["ewa_settings"],
-            "kernel width 0.55, cutoff 5, depth cutoff 2.25, post-classification, prefilter 0.1, "
-            "2 samples a slab, half-float slab images, occlusion culling off, "
+            "kernel width 0.55, cutoff 5, depth cutoff 2.25, slabs 1 thick, post-classification, "
+            "prefilter 0.1, 2 samples a slab, half-float slab images, occlusion culling off, "
             "whole-image slab passes, full-resolution slabs, slab partition on the GPU");
   ASSERT_EQ(doc["rows"].size(), 1u) << r.out;
   EXPECT_GT(doc["rows"][0]["ewa_ms"].get<double>(), 0.0);
