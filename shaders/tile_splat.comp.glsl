@@ -84,6 +84,18 @@ const uint kBatch = uint(TILE_SIZE * TILE_SIZE);
 shared vec4 batchBox[kBatch];
 shared vec4 batchConic[kBatch];
 
+// The weight of batch footprint j (none past n) at the pixel centred at `centre`.
+float footprintAt(uint j, uint n, vec2 centre) {
+  if (j >= n) return 0.0;
+  vec4 box = batchBox[j];
+  vec2 dx = centre - box.xy;
+  // Outside the footprint's box: skipped, by whole SIMD rows of pixels where all miss.
+  if (any(greaterThan(abs(dx), box.zw))) return 0.0;
+  vec4 q = batchConic[j];
+  float r = q.x * dx.x * dx.x + 2.0 * q.y * dx.x * dx.y + q.z * dx.y * dx.y;
+  return q.w * windowedGaussian(r, uCutoff);
+}
+
 void main() {
   uint tile = gl_WorkGroupID.y * uint(uTiles.x) + gl_WorkGroupID.x;
   uint begin = offsets[tile], end = offsets[tile + 1u];
@@ -100,14 +112,13 @@ void main() {
     }
     barrier();
     uint n = min(kBatch, end - base);
-    for (uint j = 0u; j < n; ++j) {
-      vec4 box = batchBox[j];
-      vec2 dx = centre - box.xy;
-      // Outside the footprint's box: skipped, by whole SIMD rows of pixels where all miss.
-      if (any(greaterThan(abs(dx), box.zw))) continue;
-      vec4 q = batchConic[j];
-      float r = q.x * dx.x * dx.x + 2.0 * q.y * dx.x * dx.y + q.z * dx.y * dx.y;
-      float w = q.w * windowedGaussian(r, uCutoff);
+    // Eight footprints an iteration: llvmpipe ends a shader's loops after 65535 iterations in
+    // all (LP_MAX_TGSI_LOOP_ITERATIONS), which a busy tile reaches one footprint at a time.
+    for (uint j = 0u; j < n; j += 8u) {
+      float w = footprintAt(j, n, centre) + footprintAt(j + 1u, n, centre) +
+                footprintAt(j + 2u, n, centre) + footprintAt(j + 3u, n, centre) +
+                footprintAt(j + 4u, n, centre) + footprintAt(j + 5u, n, centre) +
+                footprintAt(j + 6u, n, centre) + footprintAt(j + 7u, n, centre);
       // Stand-ins for a slab's four (weight * value, weight) pairs.
       front += vec4(0.5 * w, w, 0.25 * w, w);
       back += vec4(0.125 * w, w, 0.0625 * w, w);

@@ -13,6 +13,7 @@
 
 #include "app/bench_sprites.h"
 #include "app/bench_support.h"
+#include "app/bench_tile_ewa.h"
 #include "app/compare_report.h"
 #include "app/frame_stats.h"
 #include "app/options.h"
@@ -27,6 +28,7 @@
 #include "render/renderer_factory.h"
 #include "render/splat_renderer.h"
 #include "render/sprite_baseline.h"
+#include "render/tile_ewa_splatter.h"
 #include "render/tile_splat_baseline.h"
 
 namespace ewa {
@@ -72,6 +74,7 @@ struct Methods {
   SplatRenderer& ewa;
   SpriteBaseline& sprites;
   TileSplatBaseline& tiles;
+  TileEwaSplatter& tileEwa;
   Renderer& shearWarp;
 };
 
@@ -85,10 +88,17 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   m.sprites.draw(size, size, halfFloatSlabs(rs));
   m.tiles.setFootprints(tileFootprints(m.ewa, scene.volume, cam, rs, size, size), float(rs.cutoff));
   m.tiles.draw(size, size, halfFloatSlabs(rs));
+  // The compute EWA splatter draws pre-classified frames only (its splats' colour and opacity).
+  const bool tileEwa = rs.classification.mode == ClassificationMode::Pre;
+  if (tileEwa) {
+    m.tileEwa.setFrame(
+        tileEwaFrame(m.ewa, scene.volume, scene.transferFunction, cam, rs, size, size));
+    m.tileEwa.draw(size, size);
+  }
   RenderSettings sw = rs;
   sw.renderer = RendererKind::ShearWarp;
   m.shearWarp.render(cam, sw, size, size);
-  std::vector<double> ewa, partition, splat, final, sprites, tiles, tileBins, shearWarp;
+  std::vector<double> ewa, partition, splat, final, sprites, tiles, tileBins, tileEwaMs, shearWarp;
   for (int r = 0; r < repeats; ++r) {
     auto start = BenchClock::now();
     m.ewa.render(cam, rs, size, size);
@@ -102,6 +112,7 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
     const TileSplatBaseline::Timing t = m.tiles.draw(size, size, halfFloatSlabs(rs));
     tiles.push_back(t.totalMs());
     tileBins.push_back(t.binMs);
+    if (tileEwa) tileEwaMs.push_back(m.tileEwa.draw(size, size).totalMs());
     start = BenchClock::now();
     m.shearWarp.render(cam, sw, size, size);
     glFinish();
@@ -123,6 +134,7 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   row.spritesMs = summarize(sprites).median;
   row.tilesMs = summarize(tiles).median;
   row.tilesBinMs = summarize(tileBins).median;
+  if (tileEwa) row.tileEwaMs = summarize(tileEwaMs).median;
   row.shearWarpMs = summarize(shearWarp).median;
 }
 
@@ -271,6 +283,7 @@ int run(int argc, char** argv) {
   report.ewaSettings = ewaText;
   SpriteBaseline sprites(shaders);
   TileSplatBaseline tiles(shaders, tileSize);
+  TileEwaSplatter tileEwa(shaders, tileSize);
   const std::unique_ptr<Renderer> shearWarp = createRenderer(RendererKind::ShearWarp, shaders);
   bool vtkWorks = !noVtk, failed = false;
   for (Input& in : inputs) {
@@ -298,7 +311,8 @@ int run(int argc, char** argv) {
       row.dims = dimsText(scene.volume);
       row.size = size;
       try {
-        timeOpenGlMethods({ewa, sprites, tiles, *shearWarp}, scene, cam, rs, size, repeats, row);
+        timeOpenGlMethods({ewa, sprites, tiles, tileEwa, *shearWarp}, scene, cam, rs, size, repeats,
+                          row);
       } catch (const std::exception& e) {
         // Too big for this GL (the splat buffer's limit): the other volumes still run.
         const std::string note =
@@ -316,6 +330,9 @@ int run(int argc, char** argv) {
       if (!imagesDir.empty()) {
         writePng(stem + "ewa.png", ewa.readImage());
         writePng(stem + "shearwarp.png", shearWarp->readImage());
+        if (row.tileEwaMs >= 0)
+          writePng(stem + "tile-ewa.png",
+                   tileEwaImage(tileEwa.picture(), size, size, rs.background));
       }
       for (const char* mapper : {"cpu", "gpu"}) {
         if (!vtkWorks) break;

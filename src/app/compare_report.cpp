@@ -26,6 +26,7 @@ const std::vector<Column>& columns() {
       {"sprites_ms", "sprites_ms", [](const CompareRow& r) { return r.spritesMs; }, "%10.1f"},
       {"tiles_ms", "tiles_ms", [](const CompareRow& r) { return r.tilesMs; }, "%8.1f"},
       {"tile_bin_ms", "tile_bin_ms", [](const CompareRow& r) { return r.tilesBinMs; }, "%11.1f"},
+      {"tile_ewa_ms", "tile_ewa_ms", [](const CompareRow& r) { return r.tileEwaMs; }, "%11.1f"},
       {"shearwarp_ms", "shearwarp_ms", [](const CompareRow& r) { return r.shearWarpMs; }, "%12.1f"},
       {"vtk_cpu_ms", "vtk_cpu_ms", [](const CompareRow& r) { return r.vtkCpuMs; }, "%10.1f"},
       {"vtk_gpu_ms", "vtk_gpu_ms", [](const CompareRow& r) { return r.vtkGpuMs; }, "%10.1f"},

@@ -21,6 +21,9 @@ struct CompareRow {
   double spritesMs = -1, shearWarpMs = -1, vtkCpuMs = -1, vtkGpuMs = -1;
   // The same footprints added up by compute tiles (TileSplatBaseline): in all, and the binning.
   double tilesMs = -1, tilesBinMs = -1;
+  // The pre-classified frame splatted by compute tiles, slab by slab (TileEwaSplatter): binning
+  // and compositing; measured with --classification pre only.
+  double tileEwaMs = -1;
   size_t gpuBytes = 0;  // 0: the renderer does not count it
   double gpuBytesPerSplat = 0;
   size_t peakRss = 0;  // of the benchmark process after this row

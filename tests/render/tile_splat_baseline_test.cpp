@@ -79,5 +79,28 @@ TEST_F(TileSplatBaselineTest, SumsEveryFootprintAtEveryPixelAsTheCppFootprintDoe
   }
 }
 
+// Seventy thousand footprints over one tile: every one is added (llvmpipe ends a shader's loops
+// after 65535 iterations in all, which one footprint an iteration reached: tiles_ms on llvmpipe
+// then left out part of its busiest tiles' work).
+TEST_F(TileSplatBaselineTest, AddsEveryFootprintOfABusyTile) {
+  const int size = 16;
+  const double cutoff = 5.0;
+  const Case k = footprint(8.0, 8.0, 60.0, 0.0, 60.0, 1e-4, cutoff);
+  const std::vector<TileFootprint> tiles(70000, k.tile);
+  for (int tileSize : {8, 16}) {
+    TileSplatBaseline baseline(gl::ShaderLibrary(), tileSize);
+    baseline.setFootprints(tiles, float(cutoff));
+    baseline.draw(size, size, false);
+    const std::vector<glm::vec4> image = baseline.frontImage();
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        const double want =
+            double(tiles.size()) * footprintWeight(k.fp, glm::dvec2(x + 0.5, y + 0.5), cutoff);
+        ASSERT_NEAR(image[size_t(y * size + x)].y, want, 1e-3 * want)
+            << x << "," << y << " tile " << tileSize;
+      }
+  }
+}
+
 }  // namespace
 }  // namespace ewa::test

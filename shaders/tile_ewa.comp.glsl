@@ -1,0 +1,136 @@
+// A compute EWA splatter for the benchmarks (pre-classified, front to back), in passes chosen
+// by a define: COUNT_PASS (slab entries per screen tile and slab), SCATTER_PASS (the lists,
+// each tile's slab by slab; the scan between them is tile_splat.comp.glsl's) and
+// COMPOSITE_PASS (one work group a tile: each slab's footprints added up per pixel with their
+// exact depth share, the slab composited, the tile left once every pixel is opaque): no
+// rasterizer, no blending, no slab images.
+#include "ewa_footprint.glsl"
+
+// Per splat four vec4: (centre x, centre y, half width, half height) in pixels (y up, pixel
+// centres at +0.5); (conic xx, conic xy, conic yy, optical depth at the centre); (camera depth
+// of the kernel's centre, its slope per pixel x and y, its depth sigma); (colour rgb, unused).
+layout(std430, binding = 0) readonly buffer Splats { vec4 splats[]; };
+layout(std430, binding = 1) buffer Cursor { uint cursor[]; };    // counts, then next free entry
+layout(std430, binding = 2) buffer Offsets { uint offsets[]; };  // buckets + 1 first entries
+// The slab entries in slab order: (splat | kFirstSlab | kLastSlab, slab).
+layout(std430, binding = 3) readonly buffer Entries { uvec2 entries[]; };
+layout(std430, binding = 4) buffer Lists { uint lists[]; };   // splat | flags per bucket entry
+layout(std430, binding = 5) readonly buffer Slabs { vec2 slabDepths[]; };  // near, far
+
+const uint kFirstSlab = 1u << 31;  // src/core/slab_partition.h
+const uint kLastSlab = 1u << 30;
+const uint kIndexMask = kLastSlab - 1u;
+
+uniform uint uCount;      // slab entries
+uniform uint uSlabCount;  // slabs; bucket (tile, slab) is tile * uSlabCount + slab
+uniform ivec2 uTiles;     // tiles across and up
+uniform ivec2 uViewport;  // pixels
+uniform float uCutoff;
+uniform vec2 uDepthProfile;  // DepthProfile, as the splat fragments take it
+uniform float uTermination;  // a pixel stops at this opacity
+
+const int kTile = TILE_SIZE;
+
+#if defined(COUNT_PASS) || defined(SCATTER_PASS)
+layout(local_size_x = 256) in;
+
+void main() {
+  uint e = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 256u;
+  if (e >= uCount) return;
+  uvec2 entry = entries[e];
+  vec4 box = splats[4u * (entry.x & kIndexMask)];
+  // Pixels whose centres lie in the box, as tiles; nothing where the box misses the picture.
+  ivec2 lo = ivec2(ceil(box.xy - box.zw - 0.5));
+  ivec2 hi = ivec2(floor(box.xy + box.zw - 0.5));
+  if (any(greaterThan(lo, uViewport - 1)) || any(lessThan(hi, ivec2(0)))) return;
+  ivec2 t0 = clamp(lo, ivec2(0), uViewport - 1) / kTile;
+  ivec2 t1 = clamp(hi, ivec2(0), uViewport - 1) / kTile;
+  for (int y = t0.y; y <= t1.y; ++y) {
+    for (int x = t0.x; x <= t1.x; ++x) {
+      uint bucket = uint(y * uTiles.x + x) * uSlabCount + entry.y;
+#ifdef COUNT_PASS
+      atomicAdd(cursor[bucket], 1u);
+#else
+      lists[atomicAdd(cursor[bucket], 1u)] = entry.x;
+#endif
+    }
+  }
+}
+#endif
+
+#ifdef COMPOSITE_PASS
+layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
+layout(rgba32f, binding = 0) uniform writeonly image2D uPicture;  // premultiplied, front to back
+const uint kBatch = uint(TILE_SIZE * TILE_SIZE);
+shared vec4 batch[4u * kBatch];
+shared uint batchOpen[kBatch];
+shared uint unfinished;
+
+// (colour * optical depth, optical depth) of batch splat j (none past n) at the pixel centred at
+// `centre`, in the slab between `depths`: its footprint and its share of the kernel along the
+// ray, as the splat fragments take them.
+vec4 splatAt(uint j, uint n, vec2 centre, vec2 depths) {
+  if (j >= n) return vec4(0.0);
+  vec4 box = batch[4u * j];
+  vec2 dx = centre - box.xy;
+  if (any(greaterThan(abs(dx), box.zw))) return vec4(0.0);
+  vec4 q = batch[4u * j + 1u];
+  float r = q.x * dx.x * dx.x + 2.0 * q.y * dx.x * dx.y + q.z * dx.y * dx.y;
+  if (r > uCutoff) return vec4(0.0);
+  vec4 z = batch[4u * j + 2u];
+  uint flags = batchOpen[j];
+  float share = slabFraction(z.x + dot(z.yz, dx), z.w, depths.x, depths.y,
+                             (flags & kFirstSlab) != 0u, (flags & kLastSlab) != 0u, uDepthProfile);
+  float depth = q.w * windowedGaussian(r, uCutoff) * share;
+  return vec4(batch[4u * j + 3u].rgb * depth, depth);
+}
+
+void main() {
+  uint tile = gl_WorkGroupID.y * uint(uTiles.x) + gl_WorkGroupID.x;
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  vec2 centre = vec2(pixel) + 0.5;
+  bool inside = all(lessThan(pixel, uViewport));
+  vec4 picture = vec4(0.0);
+  for (uint slab = 0u; slab < uSlabCount; ++slab) {
+    uint bucket = tile * uSlabCount + slab;
+    uint begin = offsets[bucket], end = offsets[bucket + 1u];
+    if (begin == end) continue;  // the same for the whole group
+    // Early termination: the tile is done once none of its pixels can take more.
+    if (gl_LocalInvocationIndex == 0u) unfinished = 0u;
+    barrier();
+    bool open = inside && picture.a < uTermination;
+    if (open) atomicAdd(unfinished, 1u);
+    barrier();
+    if (unfinished == 0u) break;
+    vec2 depths = slabDepths[slab];
+    vec4 sums = vec4(0.0);  // (colour * optical depth, optical depth) of this slab
+    for (uint base = begin; base < end; base += kBatch) {
+      // The group loads a batch of the bucket's splats once; every pixel reads them all.
+      uint k = base + gl_LocalInvocationIndex;
+      if (k < end) {
+        uint entry = lists[k];
+        uint s = 4u * (entry & kIndexMask);
+        for (uint i = 0u; i < 4u; ++i) batch[4u * gl_LocalInvocationIndex + i] = splats[s + i];
+        batchOpen[gl_LocalInvocationIndex] = entry;
+      }
+      barrier();
+      uint n = min(kBatch, end - base);
+      // Eight splats an iteration: llvmpipe ends a shader's loops after 65535 iterations in all
+      // (LP_MAX_TGSI_LOOP_ITERATIONS), which a busy tile's slabs reach one splat at a time.
+      for (uint j = 0u; open && j < n; j += 8u) {
+        sums += splatAt(j, n, centre, depths) + splatAt(j + 1u, n, centre, depths) +
+                splatAt(j + 2u, n, centre, depths) + splatAt(j + 3u, n, centre, depths) +
+                splatAt(j + 4u, n, centre, depths) + splatAt(j + 5u, n, centre, depths) +
+                splatAt(j + 6u, n, centre, depths) + splatAt(j + 7u, n, centre, depths);
+      }
+      barrier();
+    }
+    // The slab pass's pre-classified composite: opacity 1 - exp(-depth), front to back.
+    if (sums.a > 0.0) {
+      float alpha = 1.0 - exp(-sums.a);
+      picture += (1.0 - picture.a) * vec4(sums.rgb / sums.a * alpha, alpha);
+    }
+  }
+  if (inside) imageStore(uPicture, pixel, picture);
+}
+#endif

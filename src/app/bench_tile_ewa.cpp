@@ -1,0 +1,87 @@
+// tileEwaFrame: footprints, colours and slab lists of a pre-classified frame, made on the CPU as
+// the splat shaders and the CPU partition make them.
+#include "app/bench_tile_ewa.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/ewa_footprint.h"
+#include "core/kernel_reach.h"
+#include "core/slab_partition.h"
+#include "core/volume_orientation.h"
+
+namespace ewa {
+
+TileEwaFrame tileEwaFrame(const SplatRenderer& r, const Volume& vol, const TransferFunction& tf,
+                          const Camera& cam, const RenderSettings& s, int w, int h) {
+  TileEwaFrame frame;
+  const Projection proj = cam.projection(w, h);
+  // Splats sit in the volume's own frame, seen by the camera moved as the renderer moves it.
+  const Camera local = cameraInVolumeFrame(cam, vol);
+  const glm::dmat4 view = local.viewMatrix();
+  const glm::dvec3 sp = vol.spacing();
+  const glm::dmat3 cov = cameraCovariance(local.rotation(), kernelSigma(sp, s.kernelWidth));
+  const FootprintParams params = footprintParams(s, sp);
+  const double lo = vol.minValue(), hi = vol.maxValue();
+  const double voxelVolume = sp.x * sp.y * sp.z;
+  const SplatSet& splats = r.splats();
+  frame.splats.resize(splats.size());
+  for (size_t n = 0; n < splats.size(); ++n) {
+    const PackedSplat& p = splats.splats()[n];
+    const glm::dvec3 at = vol.framePosition(SplatSet::i(p), SplatSet::j(p), SplatSet::k(p));
+    const Footprint fp =
+        computeFootprint(glm::dvec3(view * glm::dvec4(at, 1.0)), cov, proj, params);
+    if (!fp.visible) continue;  // left zero: no optical depth, a box nowhere
+    const double value = lo + (hi - lo) * SplatSet::normalizedValue(p);
+    const glm::dvec2 half(std::sqrt(s.cutoff * fp.covariance[0][0]),
+                          std::sqrt(s.cutoff * fp.covariance[1][1]));
+    TileEwaSplat& out = frame.splats[n];
+    out.box = glm::vec4(glm::dvec4(fp.center, half));
+    out.conic = glm::vec4(glm::dvec4(fp.conic[0][0], fp.conic[0][1], fp.conic[1][1],
+                                     tf.extinctionAt(value) * voxelVolume * fp.peak));
+    out.depth = glm::vec4(glm::dvec4(fp.depth, fp.depthSlope, fp.depthSigma));
+    out.color = glm::vec4(glm::dvec3(tf.colorAt(value)), 0.0f);
+  }
+  DepthExtent extent;
+  extent.reach = kernelReach(proj, s.filter, s.cutoff, sp, s.kernelWidth, s.depthCutoff);
+  extent.rotation = local.rotation();
+  extent.spacing = sp;
+  extent.kernelWidth = s.kernelWidth;
+  SlabPartition partition;
+  // The renderer's slab thickness (SplatRenderer::slabThickness).
+  const double thickness = std::max(0.25, s.slabThickness) * params.minSpacing;
+  partition.build(splats, {}, vol.origin(), view, thickness, params.cullDepth, extent);
+  for (size_t k = 0; k < partition.slabs().size(); ++k) {
+    const Slab& slab = partition.slabs()[k];
+    frame.slabDepths.emplace_back(float(slab.nearDepth), float(slab.farDepth));
+    for (uint32_t e = slab.first; e < slab.first + slab.count; ++e)
+      frame.entries.emplace_back(partition.order()[e], uint32_t(k));
+  }
+  frame.cutoff = float(s.cutoff);
+  const DepthProfile profile = depthProfile(s);
+  frame.depthProfile = glm::vec2(float(profile.erfReach), float(profile.scale));
+  frame.termination = float(s.terminationOpacity);
+  return frame;
+}
+
+Image8 tileEwaImage(const std::vector<glm::vec4>& picture, int w, int h,
+                    const glm::dvec3& background) {
+  Image8 out;
+  out.width = w;
+  out.height = h;
+  out.channels = 3;
+  out.pixels.assign(size_t(w) * size_t(h) * 3, 0);
+  for (int y = 0; y < h && picture.size() >= size_t(w) * size_t(h); ++y) {
+    for (int x = 0; x < w; ++x) {
+      const glm::vec4 p = picture[size_t(h - 1 - y) * size_t(w) + size_t(x)];
+      for (int c = 0; c < 3; ++c) {
+        const double v = std::clamp(double(p[c]) + (1.0 - double(p.a)) * background[c], 0.0, 1.0);
+        out.pixels[(size_t(y) * size_t(w) + size_t(x)) * 3 + size_t(c)] =
+            uint8_t(std::lround(v * 255.0));
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace ewa
