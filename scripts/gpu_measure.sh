@@ -53,9 +53,11 @@ if [ "$mode" = all ] || [ "$mode" = bench ]; then
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --sizes 1024 --repeats 7 \
     --slab-passes 1 | tee -a "$out/compare.txt"
   # Post- against pre-classified (the crisp-pictures issue allows 1.3x; the H100 gave 2.24x
-  # with four samples a slab), and two samples a slab in slabs 1 voxel thick: the same
-  # half-voxel spacing of values with one slab image instead of two (on llvmpipe as near to
-  # VTK's ray caster as the default), for 1.33x the slab entries and twice the slab passes.
+  # with four samples a slab); the pre-classified run also times the compute EWA splatter
+  # (tile_ewa_ms) against the rasterized frame. Then two samples a slab in slabs 1 voxel
+  # thick: the same half-voxel spacing of values with one slab image instead of two (on
+  # llvmpipe as near to VTK's ray caster as the default), for 1.33x the slab entries and twice
+  # the slab passes.
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --sizes 1024 --repeats 7 \
     --classification pre | tee -a "$out/compare.txt"
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --sizes 1024 --repeats 7 \

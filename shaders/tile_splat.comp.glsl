@@ -84,16 +84,19 @@ const uint kBatch = uint(TILE_SIZE * TILE_SIZE);
 shared vec4 batchBox[kBatch];
 shared vec4 batchConic[kBatch];
 
-// The weight of batch footprint j (none past n) at the pixel centred at `centre`.
-float footprintAt(uint j, uint n, vec2 centre) {
-  if (j >= n) return 0.0;
+// Adds batch footprint j (none past n) at the pixel centred at `centre` to the two images' sums.
+void addFootprint(uint j, uint n, vec2 centre, inout vec4 front, inout vec4 back) {
+  if (j >= n) return;
   vec4 box = batchBox[j];
   vec2 dx = centre - box.xy;
   // Outside the footprint's box: skipped, by whole SIMD rows of pixels where all miss.
-  if (any(greaterThan(abs(dx), box.zw))) return 0.0;
+  if (any(greaterThan(abs(dx), box.zw))) return;
   vec4 q = batchConic[j];
   float r = q.x * dx.x * dx.x + 2.0 * q.y * dx.x * dx.y + q.z * dx.y * dx.y;
-  return q.w * windowedGaussian(r, uCutoff);
+  float w = q.w * windowedGaussian(r, uCutoff);
+  // Stand-ins for a slab's four (weight * value, weight) pairs.
+  front += vec4(0.5 * w, w, 0.25 * w, w);
+  back += vec4(0.125 * w, w, 0.0625 * w, w);
 }
 
 void main() {
@@ -115,13 +118,7 @@ void main() {
     // Eight footprints an iteration: llvmpipe ends a shader's loops after 65535 iterations in
     // all (LP_MAX_TGSI_LOOP_ITERATIONS), which a busy tile reaches one footprint at a time.
     for (uint j = 0u; j < n; j += 8u) {
-      float w = footprintAt(j, n, centre) + footprintAt(j + 1u, n, centre) +
-                footprintAt(j + 2u, n, centre) + footprintAt(j + 3u, n, centre) +
-                footprintAt(j + 4u, n, centre) + footprintAt(j + 5u, n, centre) +
-                footprintAt(j + 6u, n, centre) + footprintAt(j + 7u, n, centre);
-      // Stand-ins for a slab's four (weight * value, weight) pairs.
-      front += vec4(0.5 * w, w, 0.25 * w, w);
-      back += vec4(0.125 * w, w, 0.0625 * w, w);
+      for (uint u = 0u; u < 8u; ++u) addFootprint(j + u, n, centre, front, back);
     }
     barrier();
   }

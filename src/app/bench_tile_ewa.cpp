@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/ewa_footprint.h"
+#include "app/bench_sprites.h"
 #include "core/kernel_reach.h"
 #include "core/slab_partition.h"
 #include "core/volume_orientation.h"
@@ -16,23 +16,13 @@ TileEwaFrame tileEwaFrame(const SplatRenderer& r, const Volume& vol, const Trans
                           const Camera& cam, const RenderSettings& s, int w, int h) {
   TileEwaFrame frame;
   const Projection proj = cam.projection(w, h);
-  // Splats sit in the volume's own frame, seen by the camera moved as the renderer moves it.
-  const Camera local = cameraInVolumeFrame(cam, vol);
-  const glm::dmat4 view = local.viewMatrix();
   const glm::dvec3 sp = vol.spacing();
-  const glm::dmat3 cov = cameraCovariance(local.rotation(), kernelSigma(sp, s.kernelWidth));
-  const FootprintParams params = footprintParams(s, sp);
   const double lo = vol.minValue(), hi = vol.maxValue();
   const double voxelVolume = sp.x * sp.y * sp.z;
   const SplatSet& splats = r.splats();
-  frame.splats.resize(splats.size());
-  for (size_t n = 0; n < splats.size(); ++n) {
-    const PackedSplat& p = splats.splats()[n];
-    const glm::dvec3 at = vol.framePosition(SplatSet::i(p), SplatSet::j(p), SplatSet::k(p));
-    const Footprint fp =
-        computeFootprint(glm::dvec3(view * glm::dvec4(at, 1.0)), cov, proj, params);
-    if (!fp.visible) continue;  // left zero: no optical depth, a box nowhere
-    const double value = lo + (hi - lo) * SplatSet::normalizedValue(p);
+  frame.splats.resize(splats.size());  // invisible ones left zero: no depth, a box nowhere
+  forEachFootprint(r, vol, cam, s, w, h, [&](const Footprint& fp, size_t n) {
+    const double value = lo + (hi - lo) * SplatSet::normalizedValue(splats.splats()[n]);
     const glm::dvec2 half(std::sqrt(s.cutoff * fp.covariance[0][0]),
                           std::sqrt(s.cutoff * fp.covariance[1][1]));
     TileEwaSplat& out = frame.splats[n];
@@ -41,7 +31,10 @@ TileEwaFrame tileEwaFrame(const SplatRenderer& r, const Volume& vol, const Trans
                                      tf.extinctionAt(value) * voxelVolume * fp.peak));
     out.depth = glm::vec4(glm::dvec4(fp.depth, fp.depthSlope, fp.depthSigma));
     out.color = glm::vec4(glm::dvec3(tf.colorAt(value)), 0.0f);
-  }
+  });
+  // The partition as the renderer builds it (SplatRenderer::beginFrame), in the volume's frame.
+  const Camera local = cameraInVolumeFrame(cam, vol);
+  const FootprintParams params = footprintParams(s, sp);
   DepthExtent extent;
   extent.reach = kernelReach(proj, s.filter, s.cutoff, sp, s.kernelWidth, s.depthCutoff);
   extent.rotation = local.rotation();
@@ -50,7 +43,8 @@ TileEwaFrame tileEwaFrame(const SplatRenderer& r, const Volume& vol, const Trans
   SlabPartition partition;
   // The renderer's slab thickness (SplatRenderer::slabThickness).
   const double thickness = std::max(0.25, s.slabThickness) * params.minSpacing;
-  partition.build(splats, {}, vol.origin(), view, thickness, params.cullDepth, extent);
+  partition.build(splats, {}, vol.origin(), local.viewMatrix(), thickness, params.cullDepth,
+                  extent);
   for (size_t k = 0; k < partition.slabs().size(); ++k) {
     const Slab& slab = partition.slabs()[k];
     frame.slabDepths.emplace_back(float(slab.nearDepth), float(slab.farDepth));
