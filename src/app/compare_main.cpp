@@ -223,7 +223,8 @@ int run(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
   int tileSize = 16;
   app.add_option("--tile-size", tileSize,
-                 "Pixels a side of the compute tiles of the tiles_ms column (8 or 16, default 16)")
+                 "Pixels a side of the compute tiles of the tiles_ms and tile_ewa_ms columns (8 or "
+                 "16, default 16)")
       ->check(CLI::IsMember({8, 16}));
   app.add_option("--shader-dir", shaderDir, "Load shaders from this folder (development)");
   addBackendOption(app, backend);
