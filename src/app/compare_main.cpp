@@ -88,8 +88,11 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   m.sprites.draw(size, size, halfFloatSlabs(rs));
   m.tiles.setFootprints(tileFootprints(m.ewa, scene.volume, cam, rs, size, size), float(rs.cutoff));
   m.tiles.draw(size, size, halfFloatSlabs(rs));
-  // The compute EWA splatter draws pre-classified frames only (its splats' colour and opacity).
-  const bool tileEwa = rs.classification.mode == ClassificationMode::Pre;
+  // The compute EWA splatter draws pre-classified frames only (its splats' colour and opacity),
+  // from 64 bytes a splat made on the CPU: up to 8 M splats (a 512^3 volume's 74 M would take
+  // 4.7 GB twice over).
+  const bool tileEwa = rs.classification.mode == ClassificationMode::Pre &&
+                       m.ewa.splats().size() <= size_t(8'000'000);
   if (tileEwa) {
     m.tileEwa.setFrame(
         tileEwaFrame(m.ewa, scene.volume, scene.transferFunction, cam, rs, size, size));
