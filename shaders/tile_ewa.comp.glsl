@@ -5,6 +5,7 @@
 // exact depth share, the slab composited, the tile left once every pixel is opaque): no
 // rasterizer, no blending, no slab images.
 #include "ewa_footprint.glsl"
+#include "tile_range.glsl"
 
 // Per splat four vec4: (centre x, centre y, half width, half height) in pixels (y up, pixel
 // centres at +0.5); (conic xx, conic xy, conic yy, optical depth at the centre); (camera depth
@@ -39,12 +40,8 @@ void main() {
   if (e >= uCount) return;
   uvec2 entry = entries[e];
   vec4 box = splats[4u * (entry.x & kIndexMask)];
-  // Pixels whose centres lie in the box, as tiles; nothing where the box misses the picture.
-  ivec2 lo = ivec2(ceil(box.xy - box.zw - 0.5));
-  ivec2 hi = ivec2(floor(box.xy + box.zw - 0.5));
-  if (any(greaterThan(lo, uViewport - 1)) || any(lessThan(hi, ivec2(0)))) return;
-  ivec2 t0 = clamp(lo, ivec2(0), uViewport - 1) / kTile;
-  ivec2 t1 = clamp(hi, ivec2(0), uViewport - 1) / kTile;
+  ivec2 t0, t1;
+  if (!boxTiles(box, uViewport, kTile, t0, t1)) return;
   for (int y = t0.y; y <= t1.y; ++y) {
     for (int x = t0.x; x <= t1.x; ++x) {
       uint bucket = uint(y * uTiles.x + x) * uSlabCount + entry.y;

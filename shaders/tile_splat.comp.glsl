@@ -3,6 +3,7 @@
 // lists) and ACCUMULATE_PASS (one work group a tile adds up its footprints per pixel and
 // stores two images, as a slab with four samples has): no rasterizer, no blending.
 #include "ewa_footprint.glsl"
+#include "tile_range.glsl"
 
 // Per footprint two vec4: (centre x, centre y, half width, half height) in pixels (y up, pixel
 // centres at +0.5), then (conic xx, conic xy, conic yy, peak).
@@ -25,12 +26,8 @@ void main() {
   uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 256u;
   if (i >= uCount) return;
   vec4 box = footprints[2u * i];
-  // Pixels whose centres lie in the box, as tiles; nothing where the box misses the picture.
-  ivec2 lo = ivec2(ceil(box.xy - box.zw - 0.5));
-  ivec2 hi = ivec2(floor(box.xy + box.zw - 0.5));
-  if (any(greaterThan(lo, uViewport - 1)) || any(lessThan(hi, ivec2(0)))) return;
-  ivec2 t0 = clamp(lo, ivec2(0), uViewport - 1) / kTile;
-  ivec2 t1 = clamp(hi, ivec2(0), uViewport - 1) / kTile;
+  ivec2 t0, t1;
+  if (!boxTiles(box, uViewport, kTile, t0, t1)) return;
   for (int y = t0.y; y <= t1.y; ++y) {
     for (int x = t0.x; x <= t1.x; ++x) {
       uint tile = uint(y * uTiles.x + x);

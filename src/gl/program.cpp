@@ -1,6 +1,7 @@
 // Program: compiling and linking GLSL stages, with readable errors, and uniform setters.
 #include "gl/program.h"
 
+#include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 #include <memory>
 #include <utility>
@@ -207,6 +208,13 @@ void Program::release() {
   if (id_ != 0) glDeleteProgram(id_);
   id_ = 0;
   uniforms_.clear();
+}
+
+void dispatchOver(const Program& program, size_t invocations, size_t groupSize) {
+  const size_t groups = std::max<size_t>(1, (invocations + groupSize - 1) / groupSize);
+  const size_t x = std::min<size_t>(groups, 65535), y = (groups + x - 1) / x;
+  program.use();
+  glDispatchCompute(GLuint(x), GLuint(y), 1);
 }
 
 }  // namespace ewa::gl

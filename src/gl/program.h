@@ -79,4 +79,10 @@ class Program {
   mutable std::unordered_map<std::string, GLint> uniforms_;
 };
 
+// Runs `program` (glUseProgram) over at least `invocations` invocations in work groups of
+// `groupSize`: rows of at most 65535 groups, so a shader numbers its invocation
+// gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * groupSize and
+// returns past the end. At least one group.
+void dispatchOver(const Program& program, size_t invocations, size_t groupSize);
+
 }  // namespace ewa::gl

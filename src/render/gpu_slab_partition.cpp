@@ -34,13 +34,6 @@ GpuSlabPartition::GpuSlabPartition(const gl::ShaderLibrary& shaders)
       scatterPass_(shaders.computeProgram("slab_partition.comp.glsl", "#define SCATTER_PASS 1\n")),
       range_(gl::Buffer::create(5 * sizeof(uint32_t))) {}
 
-void GpuSlabPartition::dispatch(gl::Program& program, size_t invocations, size_t groupSize) {
-  const size_t groups = std::max<size_t>(1, (invocations + groupSize - 1) / groupSize);
-  const size_t x = std::min<size_t>(groups, 65535), y = (groups + x - 1) / x;
-  glUseProgram(program.id());
-  glDispatchCompute(GLuint(x), GLuint(y), 1);
-}
-
 void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attributes, size_t n,
                              bool surfaces, const glm::dvec3& origin, const glm::dmat4& view,
                              double thickness, double nearCull, const DepthExtent& extent) {
@@ -84,7 +77,7 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
   splats.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
   attributes.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
   range_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
-  dispatch(extentPass_, n, kGroup);
+  gl::dispatchOver(extentPass_, n, kGroup);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   // The first of the partition's two waits: the slab count sizes the passes and the CPU's slab
   // loop.
@@ -116,9 +109,9 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
   first_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   cursor_.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
   commands_.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
-  dispatch(countPass_, n, kGroup);
+  gl::dispatchOver(countPass_, n, kGroup);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  dispatch(scanPass_, 1, 1);
+  gl::dispatchOver(scanPass_, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   // The second wait: the order list is made exactly as long as its entries (a bound from the
   // extents alone, a splat's length in slabs rounded up plus one, held a third more; a 512^3
@@ -127,7 +120,7 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
   range_.getSubData(4 * sizeof(uint32_t), sizeof entries, &entries);
   order_.reserve(GLsizeiptr(size_t(entries) * sizeof(uint32_t)), "slab partition buffers");
   order_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-  dispatch(scatterPass_, n, kGroup);
+  gl::dispatchOver(scatterPass_, n, kGroup);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
                   GL_BUFFER_UPDATE_BARRIER_BIT);
   glUseProgram(0);

@@ -51,8 +51,6 @@ class GpuSlabPartition {
   size_t bytes() const;
 
  private:
-  void dispatch(gl::Program& program, size_t invocations, size_t groupSize);
-
   gl::Program extentPass_, countPass_, scanPass_, scatterPass_;
   gl::Buffer range_, cursor_, first_, commands_, order_;
   std::vector<Slab> slabs_;

@@ -52,8 +52,6 @@ TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {
   const glm::ivec2 tiles((width + tileSize_ - 1) / tileSize_, (height + tileSize_ - 1) / tileSize_);
   const size_t slabs = std::max<size_t>(1, slabCount_);
   const size_t buckets = size_t(tiles.x) * size_t(tiles.y) * slabs;
-  cursor_.reserve(GLsizeiptr(buckets * sizeof(uint32_t)), "tile EWA buffers");
-  offsets_.reserve(GLsizeiptr((buckets + 1) * sizeof(uint32_t)), "tile EWA buffers");
   for (gl::Program* p : {&countPass_, &scatterPass_, &compositePass_}) {
     p->setUInt("uCount", GLuint(entryCount_));
     p->setUInt("uSlabCount", GLuint(slabCount_));
@@ -66,33 +64,13 @@ TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {
   // The scan sees the buckets as one row of "tiles".
   scanPass_.setIVec2("uTiles", glm::ivec2(int(buckets), 1));
   splats_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  cursor_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-  offsets_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
   entries_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   slabs_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
-  const size_t groups = std::max<size_t>(1, (entryCount_ + 255) / 256);
-  const GLuint gx = GLuint(std::min<size_t>(groups, 65535)), gy = GLuint((groups + gx - 1) / gx);
 
   Timing t;
   glFinish();
   auto start = std::chrono::steady_clock::now();
-  const uint32_t zero = 0;
-  glClearNamedBufferSubData(cursor_.id(), GL_R32UI, 0, GLsizeiptr(buckets * sizeof(uint32_t)),
-                            GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glUseProgram(countPass_.id());
-  glDispatchCompute(gx, gy, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glUseProgram(scanPass_.id());
-  glDispatchCompute(1, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  uint32_t listed = 0;  // the lists' length sizes their buffer: one small read back
-  offsets_.getSubData(GLintptr(buckets * sizeof(uint32_t)), sizeof listed, &listed);
-  t.entries = listed;
-  lists_.reserve(GLsizeiptr(std::max<size_t>(1, listed) * sizeof(uint32_t)), "tile EWA buffers");
-  lists_.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
-  glUseProgram(scatterPass_.id());
-  glDispatchCompute(gx, gy, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  t.entries = bins_.bin(countPass_, scanPass_, scatterPass_, entryCount_, buckets, 4);
   glFinish();
   t.binMs = millisecondsSince(start);
 

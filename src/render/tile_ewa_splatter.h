@@ -11,6 +11,7 @@
 #include "gl/program.h"
 #include "gl/shader_library.h"
 #include "gl/texture.h"
+#include "render/tile_bins.h"
 
 namespace ewa {
 
@@ -59,7 +60,8 @@ class TileEwaSplatter {
  private:
   int tileSize_;
   gl::Program countPass_, scanPass_, scatterPass_, compositePass_;
-  gl::Buffer splats_, entries_, slabs_, cursor_, offsets_, lists_;
+  gl::Buffer splats_, entries_, slabs_;
+  TileBins bins_{"tile EWA buffers"};  // each slab entry listed in its (tile, slab) buckets
   gl::Texture picture_;
   TileEwaFrame settings_;  // the frame's scalars (its vectors are uploaded, then dropped)
   size_t entryCount_ = 0, slabCount_ = 0;

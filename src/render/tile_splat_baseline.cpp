@@ -45,8 +45,6 @@ TileSplatBaseline::Timing TileSplatBaseline::draw(int width, int height, bool ha
   }
   const glm::ivec2 tiles((width + tileSize_ - 1) / tileSize_, (height + tileSize_ - 1) / tileSize_);
   const size_t tileCount = size_t(tiles.x) * size_t(tiles.y);
-  cursor_.reserve(GLsizeiptr(tileCount * sizeof(uint32_t)), "tile splat buffers");
-  offsets_.reserve(GLsizeiptr((tileCount + 1) * sizeof(uint32_t)), "tile splat buffers");
   for (gl::Program* p :
        {&countPass_, &scanPass_, &scatterPass_, &accumulateHalf_, &accumulateFloat_}) {
     p->setUInt("uCount", GLuint(count_));
@@ -55,32 +53,11 @@ TileSplatBaseline::Timing TileSplatBaseline::draw(int width, int height, bool ha
     p->setFloat("uCutoff", cutoff_);
   }
   footprints_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  cursor_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-  offsets_.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
-  const size_t groups = std::max<size_t>(1, (count_ + 255) / 256);
-  const GLuint gx = GLuint(std::min<size_t>(groups, 65535)), gy = GLuint((groups + gx - 1) / gx);
 
   Timing t;
   glFinish();
   auto start = std::chrono::steady_clock::now();
-  const uint32_t zero = 0;
-  // This picture's tiles only: the buffer may be longer (reserve leaves room to grow).
-  glClearNamedBufferSubData(cursor_.id(), GL_R32UI, 0, GLsizeiptr(tileCount * sizeof(uint32_t)),
-                            GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glUseProgram(countPass_.id());
-  glDispatchCompute(gx, gy, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glUseProgram(scanPass_.id());
-  glDispatchCompute(1, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  uint32_t entries = 0;  // the lists' length sizes their buffer: one small read back
-  offsets_.getSubData(GLintptr(tileCount * sizeof(uint32_t)), sizeof entries, &entries);
-  t.entries = entries;
-  entries_.reserve(GLsizeiptr(size_t(entries) * sizeof(uint32_t)), "tile splat buffers");
-  entries_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
-  glUseProgram(scatterPass_.id());
-  glDispatchCompute(gx, gy, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  t.entries = bins_.bin(countPass_, scanPass_, scatterPass_, count_, tileCount, 3);
   glFinish();
   t.binMs = millisecondsSince(start);
 

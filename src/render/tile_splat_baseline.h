@@ -9,6 +9,7 @@
 #include "gl/program.h"
 #include "gl/shader_library.h"
 #include "gl/texture.h"
+#include "render/tile_bins.h"
 
 namespace ewa {
 
@@ -42,7 +43,8 @@ class TileSplatBaseline {
  private:
   int tileSize_;
   gl::Program countPass_, scanPass_, scatterPass_, accumulateHalf_, accumulateFloat_;
-  gl::Buffer footprints_, cursor_, offsets_, entries_;
+  gl::Buffer footprints_;
+  TileBins bins_{"tile splat buffers"};  // each footprint listed in the tiles it reaches
   gl::Texture front_, back_;
   size_t count_ = 0;
   float cutoff_ = 4.0f;
