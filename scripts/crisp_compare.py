@@ -10,6 +10,11 @@ montage per volume (VTK, then the variants in the order of the table).
 
   PYTHONPATH=build/python /usr/bin/python3 scripts/crisp_compare.py --out crisp_out
 
+The reference is VTK's own ray-cast image (--vtk-picture rays): VTK 9.1 shows that image in its
+window stretched by U / (U - 1) about its centre (U its width in pixels: 384/383 for a close-up),
+a half-texel offset of its display helper's texture coordinates, which moves edges by up to half
+a pixel and resamples the picture; --vtk-picture window compares with the window as shown.
+
 Needs the ewaview module (build/python), NumPy and python3-vtk9 (VTK renders off screen; run
 under xvfb-run without a display).
 """
@@ -98,8 +103,50 @@ def camera(array, spacing, direction, distance, azimuth=0.0, elevation=0.0):
     return focal, focal + distance * e / np.linalg.norm(e), (0.0, 0.0, 1.0)
 
 
-def vtk_render(array, spacing, tf, cam, repeats):
+def ray_cast_image(mapper):
+    """The fixed-point mapper's own ray-cast image (premultiplied RGBA, 15-bit fixed point, one
+    ray through each window pixel's centre), as [y (bottom row first), x, 4] floats, with its
+    in-use size and origin in window pixels. Read from the mapper's memory: VTK's Python wrapping
+    gives the buffer only as an address."""
+    import ctypes
+    image = mapper.GetRayCastImage()
+    used, origin, memory = (image.GetImageInUseSize(), image.GetImageOrigin(),
+                            image.GetImageMemorySize())
+    if not (0 < used[0] <= memory[0] and 0 < used[1] <= memory[1]):
+        sys.exit(f"crisp_compare.py: unexpected VTK ray-cast image sizes {used}, {memory}")
+    address = int(image.GetImage().split("_")[1], 16)  # '_<hex>_p_void'
+    count = memory[0] * memory[1] * 4
+    buffer = (ctypes.c_uint16 * count).from_address(address)
+    raw = np.ctypeslib.as_array(buffer).reshape(memory[1], memory[0], 4).astype(np.float64)
+    return raw[:used[1], :used[0]], used, origin
+
+
+def displayed(raw, used, origin, size):
+    """What VTK 9.1's display helper makes of a ray-cast image (vtkOpenGLRayCastImageDisplayHelper,
+    RenderTextureInternal): a quad over the in-use pixels whose texture coordinates run from the
+    first texel's centre to the last one's, bilinear, so the picture is stretched by U / (U - 1)
+    about the in-use image's centre. RGB in 8-bit levels, bottom row first."""
+    out = np.zeros((size, size, 3))
+    x = (np.arange(size) + 0.5 - origin[0]) * (used[0] - 1) / used[0]
+    y = (np.arange(size) + 0.5 - origin[1]) * (used[1] - 1) / used[1]
+    inside_x = (np.arange(size) >= origin[0]) & (np.arange(size) < origin[0] + used[0])
+    inside_y = (np.arange(size) >= origin[1]) & (np.arange(size) < origin[1] + used[1])
+    x, y = np.clip(x, 0, used[0] - 1), np.clip(y, 0, used[1] - 1)
+    x0, y0 = np.floor(x).astype(int), np.floor(y).astype(int)
+    x1, y1 = np.minimum(x0 + 1, used[0] - 1), np.minimum(y0 + 1, used[1] - 1)
+    fx, fy = (x - x0)[None, :, None], (y - y0)[:, None, None]
+    rgb = raw[..., :3] * 255.0 / 32767.0
+    s = (rgb[y0][:, x0] * (1 - fx) * (1 - fy) + rgb[y0][:, x1] * fx * (1 - fy) +
+         rgb[y1][:, x0] * (1 - fx) * fy + rgb[y1][:, x1] * fx * fy)
+    out[np.ix_(inside_y, inside_x)] = s[np.ix_(inside_y, inside_x)]
+    return out
+
+
+def vtk_render(array, spacing, tf, cam, repeats, picture="rays", sample_distance=0.25):
     # VTK's GL and ewaview's OSMesa do not share a process: this runs in a child (--vtk).
+    # picture "window": the window as VTK shows it; "rays": the ray caster's own image (one ray
+    # through each pixel's centre), without the display's stretch by U / (U - 1) (displayed());
+    # "gpu": VTK's GPU ray caster's window.
     try:
         from vtkmodules.util import numpy_support
         from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
@@ -131,11 +178,15 @@ def vtk_render(array, spacing, tf, cam, repeats):
     prop.SetScalarOpacityUnitDistance(1.0)
     prop.SetInterpolationTypeToLinear()
     prop.ShadeOff()
-    mapper = vtkFixedPointVolumeRayCastMapper()
+    if picture == "gpu":  # a cross-check of the geometry: GL's own projection, no display step
+        from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLGPUVolumeRayCastMapper
+        mapper = vtkOpenGLGPUVolumeRayCastMapper()
+    else:
+        mapper = vtkFixedPointVolumeRayCastMapper()
+        mapper.SetImageSampleDistance(1.0)
     mapper.SetInputData(image)
     mapper.SetAutoAdjustSampleDistances(0)
-    mapper.SetSampleDistance(0.25 * min(spacing))
-    mapper.SetImageSampleDistance(1.0)
+    mapper.SetSampleDistance(sample_distance * min(spacing))
     volume = vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(prop)
@@ -166,6 +217,17 @@ def vtk_render(array, spacing, tf, cam, repeats):
     out = grab.GetOutput()
     w, h, _ = out.GetDimensions()
     rgb = numpy_support.vtk_to_numpy(out.GetPointData().GetScalars()).reshape(h, w, 3)
+    if picture == "rays":
+        raw, used, origin = ray_cast_image(mapper)
+        # The image read must be the one shown: the window holds it stretched as displayed()
+        # says, to rounding (measured: mean 0.15, largest 0.5 levels); otherwise stop.
+        error = np.abs(displayed(raw, used, origin, SIZE) - rgb.astype(np.float64))
+        if error.mean() > 0.5 or error.max() > 2.0:
+            sys.exit(f"crisp_compare.py: VTK's ray-cast image does not match its window "
+                     f"(mean {error.mean():.2f}, largest {error.max():.2f} levels)")
+        rgb = np.zeros((SIZE, SIZE, 3), np.uint8)
+        rgb[origin[1]:origin[1] + used[1], origin[0]:origin[0] + used[0]] = np.rint(
+            np.clip(raw[..., :3] * 255.0 / 32767.0, 0, 255)).astype(np.uint8)
     return rgb[::-1].copy(), 1000.0 * statistics.median(times)
 
 
@@ -204,21 +266,23 @@ def sharpness(ours, ref):
     return float(g_ours[edges].mean() / g_ref[edges].mean())
 
 
-def vtk_child(name, out, repeats, scale, azimuth, elevation):
+def vtk_child(name, out, repeats, scale, azimuth, elevation, picture, sample_distance):
     array, spacing, tf, direction, distance = volumes()[name]()
     rgb, ms = vtk_render(array, spacing, tf,
                          camera(array, spacing, direction, distance * scale, azimuth, elevation),
-                         repeats)
+                         repeats, picture, sample_distance)
     np.save(out, rgb)
     print(f"{ms:.3f}")
 
 
-def vtk_picture(name, repeats, scale, azimuth, elevation):
+def vtk_picture(name, repeats, scale, azimuth, elevation, picture="rays", sample_distance=0.25):
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "vtk.npy")
         run = subprocess.run([sys.executable, os.path.abspath(__file__), "--vtk", name, out,
                               "--repeats", str(repeats), "--distance-scale", str(scale),
-                              "--azimuth", str(azimuth), "--elevation", str(elevation)],
+                              "--azimuth", str(azimuth), "--elevation", str(elevation),
+                              "--vtk-picture", picture,
+                              "--vtk-sample-distance", str(sample_distance)],
                              capture_output=True, text=True)
         if run.returncode != 0:
             sys.exit(f"crisp_compare.py: VTK failed on {name}: {run.stderr.strip()}")
@@ -256,6 +320,15 @@ def main():
                         "not in the list)")
     p.add_argument("--elevation", type=float, default=0.0,
                    help="raise each view's eye by this many degrees")
+    p.add_argument("--vtk-picture", choices=["rays", "window", "gpu"], default="rays",
+                   help="the reference: rays, VTK's CPU ray-cast image (one ray through each "
+                        "pixel's centre; default); window, its window as VTK shows it, which its "
+                        "display stretches by U / (U - 1) about the in-use image's centre (384/383 "
+                        "for a view that fills the 384-pixel window); gpu, VTK's GPU ray caster "
+                        "(vtkOpenGLGPUVolumeRayCastMapper) instead, as a cross-check")
+    p.add_argument("--vtk-sample-distance", type=float, default=0.25,
+                   help="VTK's sample distance along its rays in voxel spacings (the issue's "
+                        "0.25; finer shows fewer of its wood-grain rings)")
     p.add_argument("--views",
                    help="several views AZIMUTH:ELEVATION:DISTANCE-SCALE, comma-separated (e.g. "
                         "0:0:1,120:0:1); prints each variant's SSIM per view with the worst and "
@@ -263,7 +336,7 @@ def main():
     a = p.parse_args()
     if a.vtk:
         return vtk_child(a.vtk[0], a.vtk[1], a.repeats, a.distance_scale, a.azimuth,
-                         a.elevation)
+                         a.elevation, a.vtk_picture, a.vtk_sample_distance)
     import ewaview
     widths = [float(w) for w in a.widths.split(",")]
     prefilters = [None] if a.prefilters is None else [float(b) for b in a.prefilters.split(",")]
@@ -281,7 +354,8 @@ def main():
         array, spacing, tf, direction, distance = all_vols[name]()
         cam = camera(array, spacing, direction, distance * a.distance_scale, a.azimuth,
                      a.elevation)
-        ref, vtk_ms = vtk_picture(name, a.repeats, a.distance_scale, a.azimuth, a.elevation)
+        ref, vtk_ms = vtk_picture(name, a.repeats, a.distance_scale, a.azimuth, a.elevation,
+                                  a.vtk_picture, a.vtk_sample_distance)
         ref_y = luminance(ref)
         print(f"| {name} | VTK ray caster | | | 1 | 1 | {vtk_ms:.0f} |", flush=True)
         scene = make_scene(array, spacing, tf, cam, a.cutoff)
@@ -338,7 +412,8 @@ def variant_options(a, classification, width, prefilter):
 
 
 def compare_views(a, variants, views):
-    """Each variant of each volume at several views: SSIM per view, the worst and the mean."""
+    """Each variant of each volume at several views: SSIM / sharpness per view, the worst SSIM and
+    the mean, the worst sharpness."""
     import ewaview
     names = " | ".join(f"{az:g}:{el:g}:{sc:g}" for az, el, sc in views)
     print(f"| volume | classification | kernel width | prefilter | {names} | worst | mean | "
@@ -350,7 +425,8 @@ def compare_views(a, variants, views):
         scores = {v: [] for v in variants}
         for az, el, sc in views:
             cam = camera(array, spacing, direction, distance * sc, az, el)
-            ref_y = luminance(vtk_picture(name, 1, sc, az, el)[0])
+            ref_y = luminance(vtk_picture(name, 1, sc, az, el, a.vtk_picture,
+                                          a.vtk_sample_distance)[0])
             scene = make_scene(array, spacing, tf, cam, a.cutoff)
             for v in variants:
                 shown, tag, options = variant_options(a, *v)
@@ -362,7 +438,7 @@ def compare_views(a, variants, views):
         for v in variants:
             shown = variant_options(a, *v)[0]
             s = [x for x, _ in scores[v]]
-            cells = " | ".join(f"{x:.4f}" for x in s)
+            cells = " | ".join(f"{x:.4f} / {h:.2f}" for x, h in scores[v])
             print(f"| {name} | {v[0]} | {v[1]:g} | {shown} | {cells} | {min(s):.4f} | "
                   f"{statistics.mean(s):.4f} | {min(h for _, h in scores[v]):.2f} |", flush=True)
 
