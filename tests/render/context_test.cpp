@@ -120,7 +120,9 @@ class HeadlessContextTest : public ::testing::TestWithParam<HeadlessBackend> {
   void SetUp() override {
     std::string skipReason;
     context_ = makeContext(GetParam(), skipReason);
-    if (!context_) EWA_SKIP_UNLESS_CI() << skipReason;
+    if (!context_) {
+      EWA_SKIP_UNLESS_CI() << skipReason;
+    }
   }
 
   std::unique_ptr<GlContext> context_;
@@ -291,7 +293,9 @@ TEST(HeadlessContexts, OsMesaAndEglInOneProcess) {
   auto osmesa = makeContext(HeadlessBackend::OsMesa, skipReason);
   expectTestFill(renderTestFill());
   auto egl = makeContext(HeadlessBackend::Egl, skipReason);
-  if (!egl) EWA_SKIP_UNLESS_CI() << skipReason;
+  if (!egl) {
+    EWA_SKIP_UNLESS_CI() << skipReason;
+  }
   expectTestFill(renderTestFill());
   osmesa->makeCurrent();
   expectTestFill(renderTestFill());
@@ -315,7 +319,9 @@ TEST(HeadlessContexts, ParsesBackendNames) {
 TEST(GlfwWindowContext, OpensHiddenWindowWith45Core) {
   const char* display = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
-  if (!(display && *display) && !(wayland && *wayland)) EWA_SKIP_UNLESS_CI() << "no display";
+  if (!(display && *display) && !(wayland && *wayland)) {
+    EWA_SKIP_UNLESS_CI() << "no display";
+  }
   platform::WindowOptions options;
   options.width = 64;
   options.height = 48;
