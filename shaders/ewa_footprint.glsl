@@ -139,6 +139,16 @@ vec4 slabQuarters(float mu, float sigma, float zNear, float zFar, bool openNear,
   return 0.5 * profile.y * max(vec4(e1 - e0, e2 - e1, e3 - e2, e4 - e3), 0.0);
 }
 
+// depthProfileMisses (src/core/ewa_footprint.h): no share of the kernel between zNear and zFar
+// for any mean depth within mu +- spread.
+bool depthProfileMisses(float mu, float spread, float sigma, float zNear, float zFar,
+                        vec2 profile) {
+  if (!(profile.x < 1e20)) return false;
+  float reach = profile.x * sqrt(2.0) * sigma * 1.0001;
+  float margin = 1e-5 * (abs(mu) + spread + reach) + 1e-4 * sigma;
+  return mu - spread - reach >= zFar + margin || mu + spread + reach <= zNear - margin;
+}
+
 bool cullKernel(vec3 u, float radius, Projection proj, FootprintParams params) {
   float depth = -u.z;
   if (depth <= params.cullDepth) return true;

@@ -54,6 +54,16 @@ uniform float uSurfaceTau;   // optical depth of a surface-splat layer along its
 // The attributes are uploaded only while a frame uses them (shading or surface splats); else
 // every splat is an unshaded volume splat and the buffer is not read.
 uniform bool uAttributes;
+// The slab's depths and how its kernels are split between slabs (the fragment shader's), and
+// which part of the slab a pass sums: a slab's two passes take its front quarters (1), then its
+// back ones (2); 0 the whole slab. A kernel whose cut depth profile misses that half adds
+// nothing to it and is not drawn (missesPassHalf).
+uniform bool uSplitDepth;
+uniform bool uOpenTails;
+uniform float uSlabNear;
+uniform float uSlabFar;
+uniform vec2 uDepthProfile;
+uniform int uPassHalf;
 
 flat out vec2 vCenter;
 flat out vec3 vConic;
@@ -120,6 +130,19 @@ bool setupSplat(uint n, out Footprint fp) {
   vDepthSigma = fp.depthSigma;
   vOpen = ((entry & kFirstSlab) != 0u ? 1 : 0) | ((entry & kLastSlab) != 0u ? 2 : 0);
   return true;
+}
+
+// True when this pass sums half of the slab (uPassHalf) and the kernel set up by setupSplat
+// cannot reach it anywhere within `halfSide` pixels of its centre (its sprite or quad): every
+// quarter share the fragment shader would take there is exactly 0.
+bool missesPassHalf(Footprint fp, vec2 halfSide) {
+  if (uPassHalf == 0 || !uSplitDepth) return false;
+  bool openNear = uOpenTails && (vOpen & 1) != 0, openFar = uOpenTails && (vOpen & 2) != 0;
+  float mid = 0.5 * (uSlabNear + uSlabFar);
+  float zNear = uPassHalf == 1 ? (openNear ? -1e30 : uSlabNear) : mid;
+  float zFar = uPassHalf == 1 ? mid : (openFar ? 1e30 : uSlabFar);
+  float spread = dot(abs(fp.depthSlope), halfSide);
+  return depthProfileMisses(fp.depth, spread, fp.depthSigma, zNear, zFar, uDepthProfile);
 }
 
 vec4 pixelToClip(vec2 pixel) {

@@ -10,6 +10,7 @@ void main() {
   if (!setupSplat(uint(gl_VertexID), fp)) return;
   float size = pointSpriteSize(fp, uCutoff);
   if (size > uPointSizeLimit) return;  // the quad path draws it
+  if (missesPassHalf(fp, vec2(0.5 * size))) return;
   if (occluded(fp.center - (0.5 * size + 1.0), fp.center + (0.5 * size + 1.0))) {
     atomicAdd(culledSplats, 1u);
     return;

@@ -11,6 +11,7 @@ void main() {
   if (size <= uPointSizeLimit) return;  // the point path drew it
   // Bounding box of the ellipse r <= cutoff: half extents sqrt(cutoff * a), sqrt(cutoff * c).
   vec2 halfExtent = sqrt(uCutoff * fp.covariance.xz) + 1.0;
+  if (missesPassHalf(fp, halfExtent)) return;
   if (occluded(fp.center - halfExtent, fp.center + halfExtent)) {
     if (gl_VertexID == 0) atomicAdd(culledSplats, 1u);  // once per quad
     return;

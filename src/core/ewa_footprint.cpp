@@ -118,6 +118,16 @@ double slabFraction(double mu, double sigma, double zNear, double zFar,
          (profileErf((zFar - mu) * s, profile) - profileErf((zNear - mu) * s, profile));
 }
 
+bool depthProfileMisses(double mu, double spread, double sigma, double zNear, double zFar,
+                        const DepthProfile& profile) {
+  if (!(profile.erfReach < 1e20)) return false;  // uncut: a Gaussian reaches every depth
+  // profileErf clamps beyond +-erfReach, so bounds both beyond the reach on one side give equal
+  // values. The margin covers float32 depths of a few thousand units and sigma's rounding.
+  const double reach = profile.erfReach * std::sqrt(2.0) * sigma * 1.0001;
+  const double margin = 1e-5 * (std::abs(mu) + spread + reach) + 1e-4 * sigma;
+  return mu - spread - reach >= zFar + margin || mu + spread + reach <= zNear - margin;
+}
+
 bool cullKernel(const glm::dvec3& u, double radius, const Projection& proj,
                 const FootprintParams& params) {
   const double depth = -u.z;

@@ -104,6 +104,13 @@ double profileErf(double t, const DepthProfile& profile);
 // ray integral.
 double slabFraction(double mu, double sigma, double zNear, double zFar,
                     const DepthProfile& profile = {});
+// True when a kernel whose mean depth lies within [mu - spread, mu + spread] over its footprint
+// (depth standard deviation sigma, cut as `profile` says) has no share at all between depths
+// zNear and zFar (infinite: open tails): slabFraction is exactly 0 at every mean in that range,
+// with a margin for the GPU's float rounding. Never with the uncut profile. A slab's two splat
+// passes (its front quarters, then its back ones) skip such kernels.
+bool depthProfileMisses(double mu, double spread, double sigma, double zNear, double zFar,
+                        const DepthProfile& profile);
 
 // True when a kernel of world bounding radius `radius` centred at camera-space point `u` lies
 // wholly outside the view (or at or behind the eye): tested before the Jacobian is formed.

@@ -261,12 +261,21 @@ void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
   if (frame_.quarters && frame_.slabPasses == 2) {
     // The front quarters (and the voxel normals) first, then the back quarters: the same sums,
     // each pass blending into one image.
+    // Each pass leaves out the kernels whose cut depth profile misses its half (the front pass
+    // only without voxel normals, whose sums take the whole slab): they add exactly nothing.
     gl::Framebuffer& fbo = coarser ? targets_.slabCoarseTarget(image) : targets_.slabTarget(image);
+    const auto passHalf = [&](int half) {
+      for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()})
+        p->setInt("uPassHalf", passHalfCulling_ ? half : 0);
+    };
     fbo.drawTo(0b011u);
+    passHalf(targets_.normalSums() ? 0 : 1);
     drawSplats(range, stats_.quadPass, gpuSlab);
     const size_t entries = stats_.slabEntries;  // the second pass draws the same entries
     fbo.drawTo(0b100u);
+    passHalf(2);
     drawSplats(range, stats_.quadPass, gpuSlab);
+    passHalf(0);
     stats_.slabEntries = entries;
     fbo.drawTo(~0u);
   } else {

@@ -139,6 +139,9 @@ class SplatRenderer : public Renderer {
   // rasterizers, which draw everything when it is waited for anyway). Budgeted steps time
   // their chunks with glFinish either way: the next chunk is sized from the last one's time.
   void setGpuTimers(bool on) { gpuTimers_ = on; }
+  // Test hook: with two splat passes a slab, each pass leaves out the kernels whose cut depth
+  // profile misses its half of the slab (on by default; the picture is the same either way).
+  void setPassHalfCulling(bool on) { passHalfCulling_ = on; }
   bool gpuTimers() const { return gpuTimers_; }
 
  private:
@@ -315,7 +318,8 @@ class SplatRenderer : public Renderer {
   // Timestamps of a whole frame: splat stage begun, splat stage done, final pass done.
   unsigned timers_[3] = {0, 0, 0};
   bool gpuTimers_ = false;
-  TwoWayTuner passTuner_;  // slabPasses auto: one pass a slab (way 0) or two (way 1)
+  bool passHalfCulling_ = true;  // setPassHalfCulling
+  TwoWayTuner passTuner_;        // slabPasses auto: one pass a slab (way 0) or two (way 1)
   float pointSizeLimit_ = 64.0f;
   float glPointSizeLimit_ = 64.0f;
   int maxViewport_ = 16384;  // GL_MAX_VIEWPORT_DIMS, the smaller

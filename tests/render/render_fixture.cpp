@@ -103,6 +103,18 @@ LodScene::LodScene(const std::string& name)
                {0, 1, 0}, 1.0);
 }
 
+unsigned queryCount(unsigned target, const std::function<void()>& draw) {
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  glBeginQuery(target, query);
+  draw();
+  glEndQuery(target);
+  GLuint count = 0;
+  glGetQueryObjectuiv(query, GL_QUERY_RESULT, &count);
+  glDeleteQueries(1, &query);
+  return count;
+}
+
 std::vector<glm::vec4> dispatchCases(gl::Program& program, const void* cases, size_t caseBytes,
                                      size_t count) {
   gl::Buffer in = gl::Buffer::create(GLsizeiptr(count * caseBytes), cases);

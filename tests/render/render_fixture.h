@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <glm/vec4.hpp>
 #include <memory>
 #include <string>
@@ -47,6 +48,9 @@ RenderSettings paperSettings();
 // that hold a shader snippet equal to its C++ mirror.
 std::vector<glm::vec4> dispatchCases(gl::Program& program, const void* cases, size_t caseBytes,
                                      size_t count);
+// The count a GL query of `target` (GL_PRIMITIVES_GENERATED, GL_SAMPLES_PASSED, ...) gives for
+// what `draw` issues, waited for.
+unsigned queryCount(unsigned target, const std::function<void()>& draw);
 // Expects a shader's depth interval (near, far) to equal `want` to float precision, or both
 // to be empty.
 void expectSameInterval(const glm::vec2& got, const RayInterval& want, const std::string& what);

@@ -323,15 +323,7 @@ TEST_F(SlabCompositing, BackToFrontEqualsFrontToBackAndTerminationStopsEarly) {
 // Primitives the GL's vertex stage put out while `draw` ran: draws that conditional rendering
 // skipped put out none.
 GLuint primitivesGenerated(const std::function<void()>& draw) {
-  GLuint query = 0;
-  glGenQueries(1, &query);
-  glBeginQuery(GL_PRIMITIVES_GENERATED, query);
-  draw();
-  glEndQuery(GL_PRIMITIVES_GENERATED);
-  GLuint count = 0;
-  glGetQueryObjectuiv(query, GL_QUERY_RESULT, &count);
-  glDeleteQueries(1, &query);
-  return count;
+  return queryCount(GL_PRIMITIVES_GENERATED, draw);
 }
 
 TEST_F(SlabCompositing, LaggedTerminationKeepsThePictureAndStillStops) {

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
+#include <random>
 #include <vector>
 
 #include "core/camera.h"
@@ -253,6 +254,49 @@ TEST(Shading, HeadLightPhong) {
   EXPECT_EQ(headlightShade(rgb, glm::dvec3(0.0), glm::dvec3(0, 0, 1), light), rgb);  // no normal
   light.enabled = false;
   EXPECT_EQ(headlightShade(rgb, n, glm::dvec3(0, 0, 1), light), rgb);
+}
+
+// A slab's two splat passes skip kernels whose cut depth profile misses the pass's half
+// (depthProfileMisses): every share such a kernel would give there, at any mean depth its
+// footprint spans, is exactly 0; kernels that reach the half are never skipped; the uncut
+// Gaussian reaches everywhere.
+TEST(SlabMath, DepthProfileMissesOnlyWhereEveryShareIsZero) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (double cutoff : {0.5, 1.0, 2.25}) {
+    const DepthProfile profile = depthProfile(cutoff);
+    int misses = 0, reaches = 0;
+    for (int n = 0; n < 4000; ++n) {
+      const double mu = 200.0 + 8.0 * unit(rng), spread = 0.6 * unit(rng);
+      const double sigma = 0.3 + 0.8 * unit(rng);
+      double zNear = 200.0 + 8.0 * unit(rng), zFar = zNear + 0.25 + 2.0 * unit(rng);
+      if (unit(rng) < 0.15) zNear = -INFINITY;  // open tails
+      if (unit(rng) < 0.15) zFar = INFINITY;
+      const bool missed = depthProfileMisses(mu, spread, sigma, zNear, zFar, profile);
+      double largest = 0.0;
+      for (int k = 0; k <= 16; ++k) {
+        const double m = mu - spread + 2.0 * spread * k / 16.0;
+        largest = std::max(largest, slabFraction(m, sigma, zNear, zFar, profile));
+      }
+      if (missed) {
+        EXPECT_EQ(largest, 0.0) << "cut " << cutoff << ", case " << n;
+        ++misses;
+      } else {
+        reaches += largest > 0.0;
+      }
+    }
+    // Both outcomes are exercised, and the margin leaves few kernels drawn for nothing.
+    EXPECT_GT(misses, 1000) << cutoff;
+    EXPECT_GT(reaches, 1000) << cutoff;
+    EXPECT_GT(misses + reaches, 3900) << cutoff;
+  }
+  // The cut reach: sqrt(cutoff) * sigma beyond the spread, not less.
+  const DepthProfile cut = depthProfile(1.0);
+  EXPECT_TRUE(depthProfileMisses(10.0, 0.5, 1.0, 11.6, 12.0, cut));
+  EXPECT_FALSE(depthProfileMisses(10.0, 0.5, 1.0, 11.4, 12.0, cut));
+  EXPECT_TRUE(depthProfileMisses(10.0, 0.5, 1.0, 7.0, 8.4, cut));
+  EXPECT_FALSE(depthProfileMisses(10.0, 0.5, 1.0, 7.0, 8.6, cut));
+  EXPECT_FALSE(depthProfileMisses(10.0, 0.0, 1.0, 40.0, 41.0, depthProfile(INFINITY)));
 }
 
 }  // namespace
