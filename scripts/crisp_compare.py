@@ -334,6 +334,8 @@ def main():
                         "0:0:1,120:0:1); prints each variant's SSIM per view with the worst and "
                         "the mean instead of one view's table")
     a = p.parse_args()
+    if not a.vtk_sample_distance > 0:
+        p.error(f"--vtk-sample-distance: {a.vtk_sample_distance:g} is not a positive length")
     if a.vtk:
         return vtk_child(a.vtk[0], a.vtk[1], a.repeats, a.distance_scale, a.azimuth,
                          a.elevation, a.vtk_picture, a.vtk_sample_distance)
