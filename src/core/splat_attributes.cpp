@@ -119,7 +119,7 @@ ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf
   auto keep = [&](int64_t i, int64_t j, int64_t k, double v) { return onSurface(i, j, k, v); };
   const auto isVisible = [&tf](double v) { return tf.alphaAt(v) > 0.0; };
   std::vector<uint8_t> needed;
-  if (post) needed = postClassificationMask(volume, isVisible, c.postMargin, threads);
+  if (post) needed = postClassificationMask(volume, isVisible, c.postMarginSquared, threads);
   auto inMask = [&](int64_t i, int64_t j, int64_t k, double) {
     return needed[size_t(volume.index(i, j, k))] != 0;
   };

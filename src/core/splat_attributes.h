@@ -32,10 +32,12 @@ struct Classification {
   SurfaceCriterion surface = SurfaceCriterion::None;
   double threshold = 0.5;
   double minGradient = 0.0;
-  // Post: splats carry values, zero-opacity voxels within postMargin voxels of visible ones
-  // (or of a transfer-function crossing) are kept, and there are no surface splats.
+  // Post: splats carry values, zero-opacity voxels within squared distance postMarginSquared
+  // (in voxel steps) of visible ones (or of a transfer-function crossing) are kept, and there
+  // are no surface splats.
   ClassificationMode mode = ClassificationMode::Pre;
-  int postMargin = 2;  // set from the kernel's reach (splatClassification in render/renderer.h)
+  // Set from the kernel's reach (splatClassification in render/renderer.h).
+  int postMarginSquared = 2;
   // Post: the splats' values are prefiltered with this strength (prefilteredValue), so the
   // reconstruction comes nearer interpolating the voxels; 0 keeps the data's values.
   double prefilter = kDefaultPrefilter;
@@ -43,7 +45,7 @@ struct Classification {
     return gradient == o.gradient && surface == o.surface && threshold == o.threshold &&
            minGradient == o.minGradient && mode == o.mode &&
            (mode == ClassificationMode::Pre ||
-            (postMargin == o.postMargin && prefilter == o.prefilter));
+            (postMarginSquared == o.postMarginSquared && prefilter == o.prefilter));
   }
   bool operator!=(const Classification& o) const { return !(*this == o); }
 };

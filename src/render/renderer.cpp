@@ -133,7 +133,7 @@ DepthProfile depthProfile(const RenderSettings& settings) {
 
 Classification splatClassification(const RenderSettings& settings) {
   Classification c = settings.classification;
-  c.postMargin = postClassificationMargin(settings.cutoff, settings.kernelWidth);
+  c.postMarginSquared = postClassificationMarginSquared(settings.cutoff, settings.kernelWidth);
   // X-ray and MIP classify each splat (pre) whatever the classification: their values stay the
   // data's.
   if (settings.mode != RenderMode::Composite) c.prefilter = 0.0;

@@ -120,16 +120,16 @@ TEST(ParallelClassification, SameMaskAndSplatsForAnyThreadCount) {
   const Volume v = awkwardVolume();
   const TransferFunction tf = peakAndBand();
   const auto visible = [&tf](double x) { return tf.alphaAt(x) > 0.0; };
-  const std::vector<uint8_t> one = postClassificationMask(v, visible, 2, 1);
+  const std::vector<uint8_t> one = postClassificationMask(v, visible, 4, 1);
   size_t kept = 0;
   for (uint8_t m : one) kept += m;
   EXPECT_GT(kept, one.size() / 10);  // neither empty nor everything
   EXPECT_LT(kept, one.size() * 9 / 10);
   for (unsigned threads : {2u, 3u, 7u})
-    EXPECT_EQ(postClassificationMask(v, visible, 2, threads), one);
+    EXPECT_EQ(postClassificationMask(v, visible, 4, threads), one);
 
   Classification post = postClassification();
-  post.postMargin = 2;
+  post.postMarginSquared = 4;
   Classification surfaces;  // pre-classified with surface splats: the other predicate
   surfaces.surface = SurfaceCriterion::Value;
   surfaces.threshold = 120.0;
@@ -175,9 +175,9 @@ TEST(ParallelClassification, MaskMatchesItsDefinition) {
         }
         seed[size_t(v.index(i, j, k))] = s;
       }
-  const int margin = 2;
+  const int margin = 2, marginSquared = 3;  // a radius between whole voxels
   const std::vector<uint8_t> mask = postClassificationMask(
-      v, [&tf](double x) { return tf.alphaAt(x) > 0.0; }, margin, 3);
+      v, [&tf](double x) { return tf.alphaAt(x) > 0.0; }, marginSquared, 3);
   for (int64_t k = 0; k < d[2]; ++k)
     for (int64_t j = 0; j < d[1]; ++j)
       for (int64_t i = 0; i < d[0]; ++i) {
@@ -186,7 +186,7 @@ TEST(ParallelClassification, MaskMatchesItsDefinition) {
           for (int64_t b = -margin; b <= margin && !near; ++b)
             for (int64_t a = -margin; a <= margin && !near; ++a) {
               const int64_t p = i + a, q = j + b, r = k + c;
-              near = a * a + b * b + c * c <= margin * margin && p >= 0 && q >= 0 && r >= 0 &&
+              near = a * a + b * b + c * c <= marginSquared && p >= 0 && q >= 0 && r >= 0 &&
                      p < d[0] && q < d[1] && r < d[2] && seed[size_t(v.index(p, q, r))];
             }
         ASSERT_EQ(mask[size_t(v.index(i, j, k))], near ? 1 : 0) << i << "," << j << "," << k;

@@ -18,30 +18,33 @@ Volume line(const std::vector<uint8_t>& values) {
 }
 
 TEST(PostClassification, MarginFollowsTheKernelsReach) {
-  EXPECT_EQ(postClassificationMargin(4.0, 1.0), 2);
-  EXPECT_EQ(postClassificationMargin(4.0, 0.85), 1);  // reach 1.7: whole voxels only
-  EXPECT_EQ(postClassificationMargin(5.0, 0.7), 1);
-  EXPECT_EQ(postClassificationMargin(4.0, 0.7), 1);
-  EXPECT_EQ(postClassificationMargin(4.0, 0.5), 1);
-  EXPECT_EQ(postClassificationMargin(9.0, 1.5), 4);
-  EXPECT_EQ(postClassificationMargin(9.0, 1.0), 3);
-  EXPECT_EQ(postClassificationMargin(4.0, 0.1), 1);    // never none: neighbours always matter
-  EXPECT_EQ(postClassificationMargin(64.0, 2.0), 15);  // at most 15: the mask's limit
+  // Squared distances in voxel steps: cutoff * width^2, rounded down.
+  EXPECT_EQ(postClassificationMarginSquared(4.0, 1.0), 4);
+  EXPECT_EQ(postClassificationMarginSquared(4.0, 0.85), 2);  // reach^2 2.89
+  EXPECT_EQ(postClassificationMarginSquared(5.0, 0.7), 2);   // reach^2 2.45: 18 neighbours
+  EXPECT_EQ(postClassificationMarginSquared(4.0, 0.7), 1);   // reach^2 1.96: the face ones
+  EXPECT_EQ(postClassificationMarginSquared(4.0, 0.5), 1);
+  EXPECT_EQ(postClassificationMarginSquared(9.0, 1.5), 20);
+  EXPECT_EQ(postClassificationMarginSquared(9.0, 1.0), 9);
+  EXPECT_EQ(postClassificationMarginSquared(4.0, 0.1), 1);     // never none: neighbours matter
+  EXPECT_EQ(postClassificationMarginSquared(64.0, 2.0), 225);  // at most 15^2: the mask's limit
 }
 
 TEST(PostClassification, MaskDilatesVisibleVoxelsByTheMargin) {
   const Volume v = line({0, 0, 0, 0, 0, 255, 0, 0, 0, 0, 0});
   const auto visible = [](double x) { return x > 200.0; };
   const std::vector<uint8_t> expected = {0, 0, 0, 1, 1, 1, 1, 1, 0, 0, 0};
-  EXPECT_EQ(postClassificationMask(v, visible, 2), expected);
+  EXPECT_EQ(postClassificationMask(v, visible, 4), expected);  // two steps either side
+  const std::vector<uint8_t> near = {0, 0, 0, 0, 1, 1, 1, 0, 0, 0, 0};
+  EXPECT_EQ(postClassificationMask(v, visible, 3), near);  // 2^2 = 4 > 3: one step
   const std::vector<uint8_t> none(11, 0);
   EXPECT_EQ(postClassificationMask(
-                v, [](double) { return false; }, 2),
+                v, [](double) { return false; }, 4),
             none);
 }
 
-// The margin is a ball of the margin's radius in voxel steps (a kernel reaches as far in every
-// direction), not a cube: checked against the brute-force definition on random seeds.
+// The margin is a ball of the margin's squared radius in voxel steps (a kernel reaches as far in
+// every direction), not a cube: checked against the brute-force definition on random seeds.
 TEST(PostClassification, MarginIsABallAroundEachVisibleVoxel) {
   const std::array<int64_t, 3> dims = {13, 11, 9};
   std::vector<uint8_t> bytes(size_t(dims[0] * dims[1] * dims[2]), 0);
@@ -53,8 +56,9 @@ TEST(PostClassification, MarginIsABallAroundEachVisibleVoxel) {
   bytes[0] = 255;  // a corner seed: the window must stop at the edges
   const Volume v(dims, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8, bytes);
   const auto visible = [](double x) { return x > 200.0; };
-  for (int margin : {1, 2, 3, 6}) {  // 6: a window wider than the grid along z
-    const std::vector<uint8_t> mask = postClassificationMask(v, visible, margin);
+  // 36: a window wider than the grid along z; 2, 3 and 5: radii between whole voxels.
+  for (int r2 : {1, 2, 3, 4, 5, 9, 36}) {
+    const std::vector<uint8_t> mask = postClassificationMask(v, visible, r2);
     size_t kept = 0;
     for (int64_t k = 0; k < dims[2]; ++k)
       for (int64_t j = 0; j < dims[1]; ++j)
@@ -64,21 +68,26 @@ TEST(PostClassification, MarginIsABallAroundEachVisibleVoxel) {
             for (int64_t b = 0; b < dims[1] && !near; ++b)
               for (int64_t a = 0; a < dims[0] && !near; ++a)
                 near = bytes[size_t(v.index(a, b, c))] &&
-                       (a - i) * (a - i) + (b - j) * (b - j) + (c - k) * (c - k) <= margin * margin;
+                       (a - i) * (a - i) + (b - j) * (b - j) + (c - k) * (c - k) <= r2;
           ASSERT_EQ(mask[size_t(v.index(i, j, k))], near ? 1 : 0)
-              << "margin " << margin << " at " << i << "," << j << "," << k;
+              << "squared margin " << r2 << " at " << i << "," << j << "," << k;
           kept += near;
         }
     EXPECT_GT(kept, 0u);
   }
-  // One seed, margin 2: 1 + 6 + 12 + 8 (the (1,1,1) diagonals, 1.73 away) + 6 (two steps along
-  // an axis) = 33 voxels; a cube would keep 125.
+  // One seed, radius 2: 1 + 6 + 12 + 8 (the (1,1,1) diagonals, 1.73 away) + 6 (two steps along
+  // an axis) = 33 voxels; a cube would keep 125. Squared radius 2 (the default kernel's
+  // reach): 1 + 6 + 12 = 19.
   std::vector<uint8_t> one(size_t(dims[0] * dims[1] * dims[2]), 0);
   one[size_t(v.index(6, 5, 4))] = 255;
   const Volume single(dims, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8, one);
-  size_t count = 0;
-  for (uint8_t m : postClassificationMask(single, visible, 2)) count += m;
-  EXPECT_EQ(count, 33u);
+  const auto count = [&](int r2) {
+    size_t n = 0;
+    for (uint8_t m : postClassificationMask(single, visible, r2)) n += m;
+    return n;
+  };
+  EXPECT_EQ(count(4), 33u);
+  EXPECT_EQ(count(2), 19u);
 }
 
 TEST(PostClassification, MaskFindsPeaksBetweenNeighbouringValues) {
@@ -100,7 +109,7 @@ TEST(PostClassification, ClassifiedSplatsKeepTheMarginAndNoSurfaces) {
   c.threshold = 128.0;
   EXPECT_EQ(classifySplats(v, tf, c).splats.size(), 1u);
   c.mode = ClassificationMode::Post;
-  c.postMargin = 1;
+  c.postMarginSquared = 1;
   const ClassifiedSplats post = classifySplats(v, tf, c);
   EXPECT_EQ(post.splats.size(), 7u);  // the voxel and its six face neighbours: a ball
   EXPECT_EQ(post.surfaceCount, 0u);
