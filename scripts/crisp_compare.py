@@ -61,6 +61,11 @@ def fetal_t2():
     return np.frombuffer(gzip.decompress(body), "<f4").reshape(126, 159, 117).astype(np.float32)
 
 
+def headsq():
+    return np.stack([raw(os.path.join(DATA, "headsq", f"quarter.{k}"), "<i2", (64, 64))
+                     for k in range(1, 94)])
+
+
 def tooth():
     path = os.path.join(DATA, "tooth", "tooth.nrrd")
     with open(path, "rb") as f:
@@ -126,6 +131,22 @@ def volumes():
                       "color": [[0, 0.2, 0.5, 1], [30, 0.4, 0.7, 1], [80, 1, 0.8, 0.3],
                                 [255, 1, 1, 0.9]]},
                      (1.0, -0.8, 0.6), 250.0),
+        # And three small or coarse ones: a quarter-resolution CT head (spacing 3.2, 3.2, 1.5),
+        # an MR head of 4-unit voxels, and the 41^3 nucleon.
+        "headsq": lambda: (headsq(), (3.2, 3.2, 1.5),
+                   {"opacity": [[0, 0], [1500, 0], [1800, 0.6], [3926, 0.9]],
+                    "color": [[0, 0.9, 0.75, 0.6], [1800, 1, 0.95, 0.85], [3926, 1, 1, 1]]},
+                   (0.4, -1.0, 0.3), 300.0),
+        "headmr": lambda: (raw(f"{d}/headmr/HeadMRVolume.raw", "u1", (42, 62, 48)), (4, 4, 4),
+                   {"opacity": [[0, 0], [60, 0], [90, 0.4], [255, 0.9]],
+                    "color": [[0, 0.9, 0.6, 0.5], [90, 1, 0.85, 0.7], [255, 1, 1, 1]]},
+                   (1.0, -0.5, 0.4), 450.0),
+        "nucleon": lambda: (raw(f"{d}/nucleon/nucleon.raw", "u1", (41, 41, 41)), (1, 1, 1),
+                    {"opacity": [[0, 0], [60, 0], [80, 0.15], [110, 0], [180, 0], [200, 0.8],
+                                 [255, 0.9]],
+                     "color": [[0, 0.3, 0.5, 1], [80, 0.4, 0.6, 1], [200, 1, 0.7, 0.3],
+                               [255, 1, 1, 0.9]]},
+                    (1.0, -0.7, 0.5), 100.0),
     }
 
 
