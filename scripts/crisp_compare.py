@@ -355,7 +355,9 @@ def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--vtk", nargs=2, metavar=("VOLUME", "NPY"), help=argparse.SUPPRESS)
     p.add_argument("--out", help="folder for the pictures and montages")
-    p.add_argument("--volumes", default="aneurism,bonsai,engine,CThead,tooth")
+    p.add_argument("--volumes", default="aneurism,bonsai,engine,CThead,tooth",
+                   help="comma-separated; also mrbrain, lidc2, walnut, fetal-t2, hydrogen, "
+                        "headsq, headmr, nucleon")
     p.add_argument("--widths", default="1,0.85,0.7")
     p.add_argument("--classifications", default="pre,post,post-mean",
                    help="pre, post (pre-integrated between slabs), post-mean (each slab's mean "
@@ -398,6 +400,9 @@ def main():
     a = p.parse_args()
     if not a.vtk_sample_distance > 0:
         p.error(f"--vtk-sample-distance: {a.vtk_sample_distance:g} is not a positive length")
+    unknown = [n for n in a.volumes.split(",") if n not in volumes()]
+    if unknown and not a.vtk:
+        p.error(f"--volumes: unknown volume {unknown[0]} (known: {', '.join(volumes())})")
     if a.vtk:
         return vtk_child(a.vtk[0], a.vtk[1], a.repeats, a.distance_scale, a.azimuth,
                          a.elevation, a.vtk_picture, a.vtk_sample_distance)
