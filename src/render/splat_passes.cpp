@@ -250,8 +250,7 @@ void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
   setSplatScale(scale);
   // Each splat fragment leaves the slab's mark in the depth buffer (written before the shader,
   // so a footprint's whole point or quad is marked), for its slab pass.
-  for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()})
-    p->setFloat("uSlabMark", slabMark(s));
+  for (gl::Program* p : splatPrograms_.both()) p->setFloat("uSlabMark", slabMark(s));
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_ALWAYS);
   glDepthMask(GL_TRUE);
@@ -265,7 +264,7 @@ void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
     // only without voxel normals, whose sums take the whole slab): they add exactly nothing.
     gl::Framebuffer& fbo = coarser ? targets_.slabCoarseTarget(image) : targets_.slabTarget(image);
     const auto passHalf = [&](int half) {
-      for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()})
+      for (gl::Program* p : splatPrograms_.both())
         p->setInt("uPassHalf", passHalfCulling_ ? half : 0);
     };
     fbo.drawTo(0b011u);
@@ -360,7 +359,7 @@ void SplatRenderer::endCompositeSlab(size_t s) {
       // The pyramid of the pixels just marked: later slabs' splats over them are culled.
       occlusion_.build(targets_.accum, float(settings.terminationOpacity));
       frame_.pyramidBuilt = true;
-      for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()})
+      for (gl::Program* p : splatPrograms_.both())
         occlusion_.setUniforms(*p, kOpaqueUnit, frame_.splatScale == 1);
     }
     if (terminationCheck()) frame_.terminated = true;
@@ -708,8 +707,7 @@ void SplatRenderer::setFrameUniforms() {
   // culling as the frame has it so far (a pyramid built mid-frame, when set again then).
   frame_.splatScale = 1.0;
   if (frame_.pyramidBuilt)
-    for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()})
-      occlusion_.setUniforms(*p, kOpaqueUnit, true);
+    for (gl::Program* p : splatPrograms_.both()) occlusion_.setUniforms(*p, kOpaqueUnit, true);
   programs_->user = this;
 }
 

@@ -3,6 +3,7 @@
 // settings need.
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "gl/program.h"
@@ -36,6 +37,8 @@ class SplatPrograms {
   void select(const SplatVariant& variant);
   gl::Program& point() { return current_->point; }
   gl::Program& quad() { return current_->quad; }
+  // Both programs of the current variant, for the uniforms they share.
+  std::array<gl::Program*, 2> both() { return {&current_->point, &current_->quad}; }
   // Variants compiled so far (tests).
   size_t compiled() const { return programs_.compiled(); }
 

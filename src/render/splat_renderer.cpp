@@ -257,7 +257,7 @@ void SplatRenderer::setSplatScale(double scale) {
   // narrowed by the blur of the bilinear read-back (kBilinearReadVariance).
   const double lowPass = lowPassVariance(frame_.settings) / (scale * scale) -
                          (scale > 1.0 ? kBilinearReadVariance : 0.0);
-  for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()}) {
+  for (gl::Program* p : splatPrograms_.both()) {
     setProjectionUniforms(*p, proj, lowPass);
     // The clip rays of the coarser image's pixels.
     setClipUniforms(*p, frame_.settings.clip, *volume_, frame_.camera, proj);
@@ -381,7 +381,7 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
 }
 
 void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex) {
-  for (gl::Program* p : {&splatPrograms_.point(), &splatPrograms_.quad()}) {
+  for (gl::Program* p : splatPrograms_.both()) {
     p->setInt("uSlabIndex", slabIndex);
     p->setInt("uSplitDepth", split ? 1 : 0);
     p->setInt("uOpenTails", openTails ? 1 : 0);
