@@ -354,7 +354,8 @@ def vtk_picture(name, repeats, scale, azimuth, elevation, picture="rays", sample
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--vtk", nargs=2, metavar=("VOLUME", "NPY"), help=argparse.SUPPRESS)
-    p.add_argument("--out", help="folder for the pictures and montages")
+    p.add_argument("--out", help="folder for the pictures (with --views: ours and VTK's at each "
+                                 "view) and montages")
     p.add_argument("--volumes", default="aneurism,bonsai,engine,CThead,tooth",
                    help="comma-separated; also mrbrain, lidc2, walnut, fetal-t2, hydrogen, "
                         "headsq, headmr, nucleon")
@@ -494,8 +495,10 @@ def compare_views(a, variants, views):
         scores = {v: [] for v in variants}
         for az, el, sc in views:
             cam = camera(array, spacing, direction, distance * sc, az, el)
-            ref_y = luminance(vtk_picture(name, 1, sc, az, el, a.vtk_picture,
-                                          a.vtk_sample_distance)[0])
+            ref = vtk_picture(name, 1, sc, az, el, a.vtk_picture, a.vtk_sample_distance)[0]
+            ref_y = luminance(ref)
+            if a.out:
+                ewaview.write_png(f"{a.out}/{name}_vtk_{az:g}_{el:g}_{sc:g}.png", ref)
             scene = make_scene(array, spacing, tf, cam, a.cutoff)
             for v in variants:
                 shown, tag, options = variant_options(a, *v)
