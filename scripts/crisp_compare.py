@@ -8,8 +8,9 @@ has edges, ours over VTK's) and milliseconds per frame (median wall time of rend
 first, classifying frame), as one Markdown table; with --out it writes the pictures and a
 montage per volume (VTK, then the variants in the order of the table). With --views, one row
 per volume and variant: SSIM / sharpness at each view, marked * where the view is flat (VTK's
-picture has no luminance step above FLAT_GRADIENT a pixel, so its "edges" are its own sampling
-steps), and the worst sharpness over all views and over the views with edges.
+picture has no luminance step above FLAT_GRADIENT a pixel: a smooth field, or a surface filling
+the picture whose "edges" are the ray caster's sampling steps), and the worst sharpness over
+all views and over the views with edges.
 
   PYTHONPATH=build/python /usr/bin/python3 scripts/crisp_compare.py --out crisp_out
 
@@ -434,7 +435,6 @@ def main():
     print(f"| volume | classification | kernel width | prefilter | SSIM | sharpness | ms/frame |")
     print(f"| --- | --- | --- | --- | --- | --- | --- |")
     all_vols = volumes()
-    any_flat = [False]
     for name in a.volumes.split(","):
         array, spacing, tf, direction, distance = all_vols[name]()
         cam = camera(array, spacing, direction, distance * a.distance_scale, a.azimuth,
@@ -505,7 +505,7 @@ def compare_views(a, variants, views):
           f"worst sharpness | worst sharpness, views with edges |")
     print("| --- " * (len(views) + 8) + "|")
     all_vols = volumes()
-    any_flat = [False]
+    any_flat = False
     for name in a.volumes.split(","):
         array, spacing, tf, direction, distance = all_vols[name]()
         scores = {v: [] for v in variants}
@@ -515,7 +515,7 @@ def compare_views(a, variants, views):
             ref = vtk_picture(name, 1, sc, az, el, a.vtk_picture, a.vtk_sample_distance)[0]
             ref_y = luminance(ref)
             flat.append(is_flat(ref_y))
-            any_flat[0] = any_flat[0] or flat[-1]
+            any_flat = any_flat or flat[-1]
             if a.out:
                 ewaview.write_png(f"{a.out}/{name}_vtk_{az:g}_{el:g}_{sc:g}.png", ref)
             scene = make_scene(array, spacing, tf, cam, a.cutoff)
@@ -534,10 +534,11 @@ def compare_views(a, variants, views):
             edged = [h for (_, h), f in zip(scores[v], flat) if not f]
             print(f"| {name} | {v[0]} | {v[1]:g} | {shown} | {cells} | {min(s):.4f} | "
                   f"{statistics.mean(s):.4f} | {min(h for _, h in scores[v]):.2f} | "
-                  f"{min(edged) if edged else float('nan'):.2f} |", flush=True)
-    if any_flat[0]:
+                  f"{f'{min(edged):.2f}' if edged else '-'} |", flush=True)
+    if any_flat:
         print(f"\n\\* flat view: VTK's picture has no luminance step above {FLAT_GRADIENT:g} a "
-              "pixel (99th percentile), so the edges sharpness weighs are its sampling steps")
+              "pixel (99th percentile): the edges sharpness weighs are faint (a smooth field, or "
+              "a surface filling the picture with the ray caster's sampling steps on it)")
 
 
 if __name__ == "__main__":
