@@ -326,9 +326,9 @@ def gradient(x):
 
 
 # A view whose ray-cast picture has no edge steeper than this (luminance a pixel, at its 99th
-# percentile) is flat: a surface filling the picture, where the "edges" sharpness weighs are
-# the ray caster's own sampling steps (CThead at 180:0:0.6 0.004, bonsai's pot at 300:20:1
-# 0.024; close-ups with structure 0.2 to 0.5).
+# percentile) is flat: a smooth field (hydrogen), or a surface filling the picture, where the
+# "edges" sharpness weighs are the ray caster's own sampling steps (CThead at 180:0:0.6 0.004,
+# bonsai's pot at 300:20:1 0.024; close-ups with structure 0.2 to 0.5).
 FLAT_GRADIENT = 0.05
 
 
