@@ -86,11 +86,11 @@ TEST_F(PassHalf, ShaderDepthProfileMissesEqualsCpp) {
 }
 
 // Culled or not, the two passes draw the same picture: to the bit with the CPU partition (one
-// order of sums), within the GPU partition's rounding (its order of a slab's entries varies)
-// with it; unshaded, shaded with field normals and with voxel normals. The culled frame runs
-// fewer fragments (counted without early termination, whose occlusion queries would nest in
-// the count's). With voxel normals the front pass also sums the normals of the whole slab, so
-// only the back pass culls there.
+// order of sums; within a level on hardware GL, below), within the GPU partition's rounding (its
+// order of a slab's entries varies) with it; unshaded, shaded with field normals and with voxel
+// normals. The culled frame runs fewer fragments (counted without early termination, whose
+// occlusion queries would nest in the count's). With voxel normals the front pass also sums the
+// normals of the whole slab, so only the back pass culls there.
 TEST_F(PassHalf, CulledPassesDrawTheSamePictureWithFewerFragments) {
   const SyntheticVolume ml = makeSyntheticVolume("marschner-lobb:32");
   SplatRenderer& r = *renderer();
@@ -98,6 +98,15 @@ TEST_F(PassHalf, CulledPassesDrawTheSamePictureWithFewerFragments) {
   r.setTransferFunction(*ml.transferFunction);
   Camera cam;
   cam.frame(ml.volume.boundsMin(), ml.volume.boundsMax(), {0.4, -0.6, 0.7}, {0, 0, 1}, 1.0);
+  // A hardware GL's compiler may fuse a quarter's scale and erf difference into a multiply-add
+  // (the H100's and H200's did), whose rounding leaves about 1e-8 of a kernel in quarters
+  // beyond its cut, where the culling takes exactly 0: float slab images (shaded) hold it, and
+  // a pixel may round a level apart. Making those quarters exactly 0 (a select on the clamped
+  // bounds) cost 9% of the two-pass frames there, so the tolerance is the test's.
+  const auto* glRenderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string rendererName = glRenderer ? glRenderer : "";
+  const bool software = rendererName.find("llvmpipe") != std::string::npos ||
+                        rendererName.find("softpipe") != std::string::npos;
   for (PartitionMode partition : {PartitionMode::Cpu, PartitionMode::Gpu}) {
     r.setPartition(partition);
     for (int shaded = 0; shaded < 3; ++shaded) {
@@ -112,11 +121,19 @@ TEST_F(PassHalf, CulledPassesDrawTheSamePictureWithFewerFragments) {
       const unsigned whole =
           queryCount(GL_SAMPLES_PASSED, [&] { r.render(cam, settings, 80, 80); });
       const Image8 unculled = r.readImage();
+      const RenderStats first = r.stats();
+      // What the first frame drew: on the H200 it came out empty once (the whole suite: no
+      // samples, 11 s), not again in the suite nor in three runs alone.
+      SCOPED_TRACE("unculled frame: " + std::to_string(first.splatsDrawn) + " splats, " +
+                   std::to_string(first.slabEntries) + " entries, " +
+                   std::to_string(first.slabsDrawn) + " of " + std::to_string(first.slabs) +
+                   " slabs, " + std::to_string(first.renderMs) + " ms, GL error " +
+                   std::to_string(glGetError()));
       r.setPassHalfCulling(true);
       const unsigned culled =
           queryCount(GL_SAMPLES_PASSED, [&] { r.render(cam, settings, 80, 80); });
       if (partition == PartitionMode::Cpu) {
-        EXPECT_EQ(r.readImage().pixels, unculled.pixels);
+        EXPECT_LE(maxDifference(r.readImage(), unculled), software ? 0 : 1);
       } else {
         EXPECT_LE(maxDifference(r.readImage(), unculled), 3);
       }
