@@ -52,14 +52,15 @@ if [ "$mode" = all ] || [ "$mode" = bench ]; then
   # CThead at 1024^2).
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --sizes 1024 --repeats 7 \
     --slab-passes 1 | tee -a "$out/compare.txt"
-  # Post- against pre-classified (the crisp-pictures issue allows 1.3x; the H100 gave 2.24x
-  # with four samples a slab); the pre-classified run also times the compute EWA splatter
-  # (tile_ewa_ms) against the rasterized frame. Then two samples a slab in slabs 1 voxel
-  # thick: the same half-voxel spacing of values with one slab image instead of two (on
+  # Post- against pre-classified (the crisp-pictures issue allows 1.3x; the H100 gave
+  # 2.07-2.42x on 2026-11-28); the pre-classified run also times the compute EWA splatter
+  # (tile_ewa_ms: 0.094-0.11x the rasterized frame there) and writes both pictures to
+  # OUT/images (within 3 levels of each other on the H200). Then two samples a slab in slabs
+  # 1 voxel thick: the same half-voxel spacing of values with one slab image instead of two (on
   # llvmpipe as near to VTK's ray caster as the default), for 1.33x the slab entries and twice
-  # the slab passes.
+  # the slab passes (the H200: 0.79x the default frame for engine and CThead, 0.96x bonsai).
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --sizes 1024 --repeats 7 \
-    --classification pre | tee -a "$out/compare.txt"
+    --classification pre --images "$out/images" | tee -a "$out/compare.txt"
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --sizes 1024 --repeats 7 \
     --slab-samples 2 --slab-thickness 1 | tee -a "$out/compare.txt"
   # Two samples in slabs 1.5 voxels thick: 1.11x the default's slab entries (the default volume
