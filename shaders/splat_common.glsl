@@ -1,4 +1,5 @@
-// Per-splat setup shared by the point-sprite and quad vertex shaders.
+// Per-splat setup shared by the point-sprite and quad vertex shaders (and, with SPLAT_COMPUTE,
+// the compute splatter's footprint pass: splatSetup alone, no varyings).
 #include "splat_variant.glsl"
 #include "ewa_footprint.glsl"
 #include "clip_region.glsl"
@@ -65,15 +66,6 @@ uniform float uSlabFar;
 uniform vec2 uDepthProfile;
 uniform int uPassHalf;
 
-flat out vec2 vCenter;
-flat out vec3 vConic;
-flat out float vAmplitude;
-flat out vec3 vColor;       // post: the camera-space normal, for shading per pixel
-flat out float vValue;       // normalized value, for MIP and post-classification
-flat out vec3 vDepth;        // mean depth at the center, depth slope per pixel (x, y)
-flat out float vDepthSigma;
-flat out int vOpen;          // 1: first slab of this splat, 2: last slab (open tails)
-
 const uint kFirstSlab = 0x80000000u;
 const uint kLastSlab = 0x40000000u;
 const uint kIndexMask = 0x3fffffffu;
@@ -84,10 +76,18 @@ KernelReach kernelReach() {
                      uOrthographic, uFocalPixels, uPixelsPerUnit);
 }
 
-// Fills the flat outputs for splat number `n` of this draw; false when nothing is to be drawn.
-bool setupSplat(uint n, out Footprint fp) {
-  uint entry = order[(uSlabIndex >= 0 ? slabFirst[uSlabIndex] : uFirst) + n];
-  uint index = entry & kIndexMask;
+// One kernel as the splat shaders draw it: its footprint, optical depth at the centre
+// (amplitude), colour (post: the camera-space normal, for shading per pixel) and normalized
+// value.
+struct SplatSetup {
+  Footprint fp;
+  float amplitude;
+  vec3 color;
+  float value;
+};
+
+// Sets up splat record `index` for this frame; false when nothing is to be drawn.
+bool splatSetup(uint index, out SplatSetup k) {
   uvec2 s = splatRecord(index);
   uvec3 ijk = uvec3(s.x & 0xffffu, s.x >> 16, s.y & 0xffffu);
   float value = float(s.y >> 16) / 65535.0;
@@ -97,7 +97,7 @@ bool setupSplat(uint n, out Footprint fp) {
   vec2 nxy = unpackHalf2x16(at.x), nzKind = unpackHalf2x16(at.y);
   vec3 normal = vec3(nxy, nzKind.x);
   bool surface = nzKind.y >= 1.0;
-  fp.visible = false;
+  k.fp.visible = false;
   // Post: zero-opacity voxels next to visible ones shape the mean value; they stay.
   if (!kPost && !surface && !(tf.a > 0.0)) return false;
   vec3 world = uOrigin + vec3(ijk) * uSpacing;
@@ -118,14 +118,37 @@ bool setupSplat(uint n, out Footprint fp) {
   // Kernels wholly outside the crop box or a clipping plane; twice the cutoff radius, so the
   // Gaussian tail a culled kernel would have left on the kept side is negligible.
   if (clipCullsKernel(u, 2.0 * radius)) return false;
-  fp = computeFootprint(u, cov, proj, params);
-  if (!fp.visible) return false;
+  k.fp = computeFootprint(u, cov, proj, params);
+  if (!k.fp.visible) return false;
+  k.amplitude = mass * k.fp.peak;
+  vec3 toEye = uOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(-u);
+  k.color = kPost ? rotation * normal : headlightShade(tf.rgb, rotation * normal, toEye);
+  k.value = value;
+  return true;
+}
+
+#ifndef SPLAT_COMPUTE
+flat out vec2 vCenter;
+flat out vec3 vConic;
+flat out float vAmplitude;
+flat out vec3 vColor;       // post: the camera-space normal, for shading per pixel
+flat out float vValue;       // normalized value, for MIP and post-classification
+flat out vec3 vDepth;        // mean depth at the center, depth slope per pixel (x, y)
+flat out float vDepthSigma;
+flat out int vOpen;          // 1: first slab of this splat, 2: last slab (open tails)
+
+// Fills the flat outputs for splat number `n` of this draw; false when nothing is to be drawn.
+bool setupSplat(uint n, out Footprint fp) {
+  uint entry = order[(uSlabIndex >= 0 ? slabFirst[uSlabIndex] : uFirst) + n];
+  SplatSetup k;
+  bool drawn = splatSetup(entry & kIndexMask, k);
+  fp = k.fp;
+  if (!drawn) return false;
   vCenter = fp.center;
   vConic = fp.conic;
-  vAmplitude = mass * fp.peak;
-  vec3 toEye = uOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(-u);
-  vColor = kPost ? rotation * normal : headlightShade(tf.rgb, rotation * normal, toEye);
-  vValue = value;
+  vAmplitude = k.amplitude;
+  vColor = k.color;
+  vValue = k.value;
   vDepth = vec3(fp.depth, fp.depthSlope);
   vDepthSigma = fp.depthSigma;
   vOpen = ((entry & kFirstSlab) != 0u ? 1 : 0) | ((entry & kLastSlab) != 0u ? 2 : 0);
@@ -148,3 +171,4 @@ bool missesPassHalf(Footprint fp, vec2 halfSide) {
 vec4 pixelToClip(vec2 pixel) {
   return vec4((pixel - uViewportRect.xy) / uViewportRect.zw * 2.0 - 1.0, uSlabMark, 1.0);
 }
+#endif  // SPLAT_COMPUTE

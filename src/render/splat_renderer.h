@@ -143,6 +143,12 @@ class SplatRenderer : public Renderer {
   // profile misses its half of the slab (on by default; the picture is the same either way).
   void setPassHalfCulling(bool on) { passHalfCulling_ = on; }
   bool gpuTimers() const { return gpuTimers_; }
+  // The compute splatter's records of the last frame begun (TileEwaSplat, tile_ewa_splatter.h:
+  // four vec4 a splat in splats() order, zeros for a splat not drawn), made on the GPU as the
+  // splat vertex shaders make each footprint (shaders/tile_ewa_footprints.comp.glsl), into
+  // `out`, which must hold splats().size() records. Pre-classified, unclipped frames: what
+  // the compute splatter draws. For the benchmarks.
+  void writeTileSplats(gl::Buffer& out);
 
  private:
   void rebuildSplats(const Classification& classification);
@@ -283,6 +289,8 @@ class SplatRenderer : public Renderer {
   gl::Program& markProgram_;
   gl::Program& finalProgram_;
   gl::Program& boxProgram_;
+  std::optional<gl::Program> tileSplatPass_;  // writeTileSplats', for tileSplatVariant_
+  unsigned tileSplatVariant_ = 0;
   OcclusionPyramid occlusion_;
   static constexpr unsigned kOpaqueUnit = 4;  // texture unit of the occlusion pyramid
   SlabPairTable pairTable_;                   // post-classification with pre-integration

@@ -56,6 +56,9 @@ class TileEwaSplatter {
   Timing draw(int width, int height);
   // The last draw's picture, rows bottom up.
   std::vector<glm::vec4> picture() const;
+  // The splat records setFrame uploaded, for a GPU pass to overwrite with its own
+  // (SplatRenderer::writeTileSplats) before the next draw.
+  gl::Buffer& splatBuffer() { return splats_; }
 
  private:
   int tileSize_;

@@ -97,6 +97,73 @@ TEST_F(TileEwaSplatterTest, DrawsTheRasterizersPreClassifiedPicture) {
   }
 }
 
+// The records the GPU makes from the renderer's own setup (SplatRenderer::writeTileSplats) are
+// the CPU's (tileEwaFrame) within float rounding and the transfer function's texture, splat
+// for splat, and draw the rasterizer's picture as closely as they do.
+TEST_F(TileEwaSplatterTest, GpuRecordsAreTheCpuFootprintsAndDrawTheSamePicture) {
+  const Volume vol = wallAndHaze();
+  const TransferFunction tf = wallTf();
+  SplatRenderer& r = *renderer();
+  r.setVolume(vol);
+  r.setTransferFunction(tf);
+  r.setPartition(PartitionMode::Cpu);
+  RenderSettings settings;
+  settings.classification.mode = ClassificationMode::Pre;
+  settings.coarseSlabs = false;
+  settings.occlusionCulling = OcclusionCulling::Off;
+  settings.terminationOpacity = 1.0;
+  Camera cam;
+  cam.focalPoint = {11.5, 11.5, 11.5};
+  cam.position = {-6.0, 8.0, 22.0};  // perspective, near: many kernels lie outside the view
+  cam.viewAngleDeg = 25.0;
+  const int width = 57, height = 49;
+  r.render(cam, settings, width, height);
+  const Image8 raster = r.readImage();
+  const TileEwaFrame frame = tileEwaFrame(r, vol, tf, cam, settings, width, height);
+  TileEwaSplatter splatter(gl::ShaderLibrary(), 8);
+  splatter.setFrame(frame);
+  r.writeTileSplats(splatter.splatBuffer());
+  std::vector<TileEwaSplat> gpu(frame.splats.size());
+  splatter.splatBuffer().getSubData(0, GLsizeiptr(gpu.size() * sizeof(TileEwaSplat)), gpu.data());
+  const auto near = [](const glm::vec4& a, const glm::vec4& b, float relative, float absolute) {
+    for (int c = 0; c < 4; ++c)
+      if (!(std::abs(a[c] - b[c]) <=
+            absolute + relative * std::max(std::abs(a[c]), std::abs(b[c]))))
+        return false;
+    return true;
+  };
+  // The CPU's footprints skip no kernel outside the view; the GPU's culls them (cullKernel),
+  // which reach no tile.
+  const auto reaches = [&](const glm::vec4& box) {
+    return box.x + box.z > 0.0f && box.x - box.z < float(width) && box.y + box.w > 0.0f &&
+           box.y - box.w < float(height);
+  };
+  size_t gpuDrawn = 0, cpuDrawn = 0, mismatched = 0;
+  for (size_t n = 0; n < gpu.size(); ++n) {
+    const TileEwaSplat& g = gpu[n];
+    const TileEwaSplat& c = frame.splats[n];
+    const bool onGpu = g.conic.w > 0.0f, onCpu = c.conic.w > 0.0f;
+    gpuDrawn += onGpu;
+    cpuDrawn += onCpu;
+    const bool same = near(g.box, c.box, 1e-4f, 1e-3f) && near(g.conic, c.conic, 2e-2f, 1e-6f) &&
+                      near(g.depth, c.depth, 1e-4f, 1e-4f) && near(g.color, c.color, 2e-2f, 1e-3f);
+    const bool fine = onGpu ? onCpu && same : !onCpu || !reaches(c.box);
+    if (!fine && ++mismatched <= 5) {
+      ADD_FAILURE() << "splat " << n << ": gpu box (" << g.box.x << ", " << g.box.y << ", "
+                    << g.box.z << ", " << g.box.w << ") amplitude " << g.conic.w << ", cpu box ("
+                    << c.box.x << ", " << c.box.y << ", " << c.box.z << ", " << c.box.w
+                    << ") amplitude " << c.conic.w;
+    }
+  }
+  EXPECT_EQ(mismatched, 0u);
+  EXPECT_GT(gpuDrawn, cpuDrawn / 4);
+  EXPECT_LT(gpuDrawn, cpuDrawn) << "the near view should leave some kernels out";
+  splatter.draw(width, height);
+  const Image8 tiles = tileEwaImage(splatter.picture(), width, height, settings.background);
+  EXPECT_GT(meanValue(raster), 20.0);
+  EXPECT_LE(maxDifference(tiles, raster), 2);
+}
+
 // Seventy thousand faint splats over one tile in one slab: every one is added (llvmpipe ends a
 // shader's loops after 65535 iterations in all, which one splat an iteration would reach; the
 // picture was then a few SIMD rows short), checked against the closed form.

@@ -1,0 +1,30 @@
+// The compute splatter's footprint pass: each splat's footprint, optical depth and colour as
+// the splat vertex shaders make them (splatSetup), written as tile_ewa.comp.glsl's records.
+#define SPLAT_COMPUTE 1
+#include "splat_common.glsl"
+
+layout(local_size_x = 64) in;
+
+// Per splat four vec4 (TileEwaSplat): the footprint's box (centre, half extents in pixels),
+// (conic, optical depth at the centre), (depth, depth slope x and y, depth sigma), (colour, 0).
+// A splat not drawn gets zeros: a box of no size, no optical depth.
+layout(std430, binding = 6) writeonly buffer TileSplats { vec4 tileSplats[]; };
+
+uniform uint uSplatCount;
+
+void main() {
+  uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 64u;
+  if (i >= uSplatCount) return;
+  SplatSetup k;
+  vec4 box = vec4(0.0), conic = vec4(0.0), depth = vec4(0.0), color = vec4(0.0);
+  if (splatSetup(i, k)) {
+    box = vec4(k.fp.center, sqrt(uCutoff * k.fp.covariance.xz));
+    conic = vec4(k.fp.conic, k.amplitude);
+    depth = vec4(k.fp.depth, k.fp.depthSlope, k.fp.depthSigma);
+    color = vec4(k.color, 0.0);
+  }
+  tileSplats[4u * i] = box;
+  tileSplats[4u * i + 1u] = conic;
+  tileSplats[4u * i + 2u] = depth;
+  tileSplats[4u * i + 3u] = color;
+}
