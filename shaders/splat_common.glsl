@@ -76,28 +76,21 @@ KernelReach kernelReach() {
                      uOrthographic, uFocalPixels, uPixelsPerUnit);
 }
 
-// One kernel as the splat shaders draw it: its footprint, optical depth at the centre
+// Sets up splat record `index` for this frame: its footprint, optical depth at the centre
 // (amplitude), colour (post: the camera-space normal, for shading per pixel) and normalized
-// value.
-struct SplatSetup {
-  Footprint fp;
-  float amplitude;
-  vec3 color;
-  float value;
-};
-
-// Sets up splat record `index` for this frame; false when nothing is to be drawn.
-bool splatSetup(uint index, out SplatSetup k) {
+// value; false when nothing is to be drawn.
+bool splatSetup(uint index, out Footprint fp, out float amplitude, out vec3 color,
+                out float value) {
   uvec2 s = splatRecord(index);
   uvec3 ijk = uvec3(s.x & 0xffffu, s.x >> 16, s.y & 0xffffu);
-  float value = float(s.y >> 16) / 65535.0;
+  value = float(s.y >> 16) / 65535.0;
   int size = textureSize(uTransfer, 0);
   vec4 tf = texture(uTransfer, (value * float(size - 1) + 0.5) / float(size));
   uvec2 at = uAttributes ? splatAttributes(index) : uvec2(0u);
   vec2 nxy = unpackHalf2x16(at.x), nzKind = unpackHalf2x16(at.y);
   vec3 normal = vec3(nxy, nzKind.x);
   bool surface = nzKind.y >= 1.0;
-  k.fp.visible = false;
+  fp.visible = false;
   // Post: zero-opacity voxels next to visible ones shape the mean value; they stay.
   if (!kPost && !surface && !(tf.a > 0.0)) return false;
   vec3 world = uOrigin + vec3(ijk) * uSpacing;
@@ -118,12 +111,11 @@ bool splatSetup(uint index, out SplatSetup k) {
   // Kernels wholly outside the crop box or a clipping plane; twice the cutoff radius, so the
   // Gaussian tail a culled kernel would have left on the kept side is negligible.
   if (clipCullsKernel(u, 2.0 * radius)) return false;
-  k.fp = computeFootprint(u, cov, proj, params);
-  if (!k.fp.visible) return false;
-  k.amplitude = mass * k.fp.peak;
+  fp = computeFootprint(u, cov, proj, params);
+  if (!fp.visible) return false;
+  amplitude = mass * fp.peak;
   vec3 toEye = uOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(-u);
-  k.color = kPost ? rotation * normal : headlightShade(tf.rgb, rotation * normal, toEye);
-  k.value = value;
+  color = kPost ? rotation * normal : headlightShade(tf.rgb, rotation * normal, toEye);
   return true;
 }
 
@@ -140,15 +132,9 @@ flat out int vOpen;          // 1: first slab of this splat, 2: last slab (open 
 // Fills the flat outputs for splat number `n` of this draw; false when nothing is to be drawn.
 bool setupSplat(uint n, out Footprint fp) {
   uint entry = order[(uSlabIndex >= 0 ? slabFirst[uSlabIndex] : uFirst) + n];
-  SplatSetup k;
-  bool drawn = splatSetup(entry & kIndexMask, k);
-  fp = k.fp;
-  if (!drawn) return false;
+  if (!splatSetup(entry & kIndexMask, fp, vAmplitude, vColor, vValue)) return false;
   vCenter = fp.center;
   vConic = fp.conic;
-  vAmplitude = k.amplitude;
-  vColor = k.color;
-  vValue = k.value;
   vDepth = vec3(fp.depth, fp.depthSlope);
   vDepthSigma = fp.depthSigma;
   vOpen = ((entry & kFirstSlab) != 0u ? 1 : 0) | ((entry & kLastSlab) != 0u ? 2 : 0);

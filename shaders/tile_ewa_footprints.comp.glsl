@@ -15,13 +15,15 @@ uniform uint uSplatCount;
 void main() {
   uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 64u;
   if (i >= uSplatCount) return;
-  SplatSetup k;
+  Footprint fp;
+  float amplitude, value;
+  vec3 rgb;
   vec4 box = vec4(0.0), conic = vec4(0.0), depth = vec4(0.0), color = vec4(0.0);
-  if (splatSetup(i, k)) {
-    box = vec4(k.fp.center, sqrt(uCutoff * k.fp.covariance.xz));
-    conic = vec4(k.fp.conic, k.amplitude);
-    depth = vec4(k.fp.depth, k.fp.depthSlope, k.fp.depthSigma);
-    color = vec4(k.color, 0.0);
+  if (splatSetup(i, fp, amplitude, rgb, value)) {
+    box = vec4(fp.center, sqrt(uCutoff * fp.covariance.xz));
+    conic = vec4(fp.conic, amplitude);
+    depth = vec4(fp.depth, fp.depthSlope, fp.depthSigma);
+    color = vec4(rgb, 0.0);
   }
   tileSplats[4u * i] = box;
   tileSplats[4u * i + 1u] = conic;
