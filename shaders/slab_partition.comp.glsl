@@ -6,6 +6,7 @@
 // between passes. Depths are doubles, as in the C++, so both put every kernel in the same slabs.
 #define REACH_FLOAT double
 #include "kernel_reach.glsl"
+#include "dispatch_index.glsl"
 
 const uint kFirstSlab = 0x80000000u;
 const uint kLastSlab = 0x40000000u;
@@ -35,7 +36,7 @@ uint orderedBits(float f) {
 
 // The splat of this invocation: the per-splat passes run groups of 256 on a 2D grid.
 uint splatIndex() {
-  return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 256u;
+  return dispatchIndex(256u);
 }
 
 uint slabOf(float d) {

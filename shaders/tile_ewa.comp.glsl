@@ -6,6 +6,7 @@
 // rasterizer, no blending, no slab images.
 #include "ewa_footprint.glsl"
 #include "tile_range.glsl"
+#include "dispatch_index.glsl"
 
 // Per splat four vec4: (centre x, centre y, half width, half height) in pixels (y up, pixel
 // centres at +0.5); (conic xx, conic xy, conic yy, optical depth at the centre); (camera depth
@@ -36,7 +37,7 @@ const int kTile = TILE_SIZE;
 layout(local_size_x = 256) in;
 
 void main() {
-  uint e = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 256u;
+  uint e = dispatchIndex(256u);
   if (e >= uCount) return;
   uvec2 entry = entries[e];
   vec4 box = splats[4u * (entry.x & kIndexMask)];

@@ -2,6 +2,7 @@
 // the splat vertex shaders make them (splatSetup), written as tile_ewa.comp.glsl's records.
 #define SPLAT_COMPUTE 1
 #include "splat_common.glsl"
+#include "dispatch_index.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -13,7 +14,7 @@ layout(std430, binding = 6) writeonly buffer TileSplats { vec4 tileSplats[]; };
 uniform uint uSplatCount;
 
 void main() {
-  uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 64u;
+  uint i = dispatchIndex(64u);
   if (i >= uSplatCount) return;
   Footprint fp;
   float amplitude, value;

@@ -4,6 +4,7 @@
 // stores two images, as a slab with four samples has): no rasterizer, no blending.
 #include "ewa_footprint.glsl"
 #include "tile_range.glsl"
+#include "dispatch_index.glsl"
 
 // Per footprint two vec4: (centre x, centre y, half width, half height) in pixels (y up, pixel
 // centres at +0.5), then (conic xx, conic xy, conic yy, peak).
@@ -23,7 +24,7 @@ const int kTile = TILE_SIZE;
 layout(local_size_x = 256) in;
 
 void main() {
-  uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 256u;
+  uint i = dispatchIndex(256u);
   if (i >= uCount) return;
   vec4 box = footprints[2u * i];
   ivec2 t0, t1;

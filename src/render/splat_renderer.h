@@ -143,6 +143,8 @@ class SplatRenderer : public Renderer {
   // profile misses its half of the slab (on by default; the picture is the same either way).
   void setPassHalfCulling(bool on) { passHalfCulling_ = on; }
   bool gpuTimers() const { return gpuTimers_; }
+  // GL_RENDERER names a software rasterizer (llvmpipe, softpipe): what the auto modes go by.
+  bool softwareGl() const { return softwareGl_; }
   // The compute splatter's records of the last frame begun (TileEwaSplat, tile_ewa_splatter.h:
   // four vec4 a splat in splats() order, zeros for a splat not drawn), made on the GPU as the
   // splat vertex shaders make each footprint (shaders/tile_ewa_footprints.comp.glsl), into

@@ -3,13 +3,14 @@
 
 #include "gl/gl_error.h"
 #include "render/splat_renderer.h"
+#include "render/tile_ewa_splatter.h"
 
 namespace ewa {
 
 void SplatRenderer::writeTileSplats(gl::Buffer& out) {
   const size_t count = classified_.splats.size();
   if (!volume_ || count == 0) return;
-  if (out.size() < GLsizeiptr(count * 4 * sizeof(float) * 4))
+  if (out.size() < GLsizeiptr(count * sizeof(TileEwaSplat)))
     throw std::invalid_argument("writeTileSplats: the buffer holds fewer records than splats");
   // The frame's own variant (post-classified or clipped frames compile too, though the compute
   // splatter draws neither), so the footprints come from the same compiled setup.

@@ -103,10 +103,7 @@ TEST_F(PassHalf, CulledPassesDrawTheSamePictureWithFewerFragments) {
   // beyond its cut, where the culling takes exactly 0: float slab images (shaded) hold it, and
   // a pixel may round a level apart. Making those quarters exactly 0 (a select on the clamped
   // bounds) cost 9% of the two-pass frames there, so the tolerance is the test's.
-  const auto* glRenderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const std::string rendererName = glRenderer ? glRenderer : "";
-  const bool software = rendererName.find("llvmpipe") != std::string::npos ||
-                        rendererName.find("softpipe") != std::string::npos;
+  const bool software = r.softwareGl();
   for (PartitionMode partition : {PartitionMode::Cpu, PartitionMode::Gpu}) {
     r.setPartition(partition);
     for (int shaded = 0; shaded < 3; ++shaded) {
