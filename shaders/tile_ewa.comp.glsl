@@ -1,9 +1,10 @@
-// A compute EWA splatter for the benchmarks (pre-classified, front to back), in passes chosen
+// A compute EWA splatter for the benchmarks (front to back), in passes chosen
 // by a define: COUNT_PASS (slab entries per screen tile and slab), SCATTER_PASS (the lists,
 // each tile's slab by slab; the scan between them is tile_splat.comp.glsl's) and
-// COMPOSITE_PASS (one work group a tile: each slab's footprints added up per pixel with their
-// exact depth share, the slab composited, the tile left once every pixel is opaque): no
-// rasterizer, no blending, no slab images.
+// COMPOSITE_PASS (pre-classified; one work group a tile: each slab's footprints added up per
+// pixel with their exact depth share, the slab composited, the tile left once every pixel is
+// opaque; post-classified frames composite in tile_ewa_post.comp.glsl): no rasterizer, no
+// blending, no slab images.
 #include "ewa_footprint.glsl"
 #include "tile_range.glsl"
 #include "dispatch_index.glsl"
@@ -14,8 +15,6 @@
 layout(std430, binding = 0) readonly buffer Splats { vec4 splats[]; };
 layout(std430, binding = 1) buffer Cursor { uint cursor[]; };    // counts, then next free entry
 layout(std430, binding = 2) buffer Offsets { uint offsets[]; };  // buckets + 1 first entries
-// The slab entries in slab order: (splat | kFirstSlab | kLastSlab, slab).
-layout(std430, binding = 3) readonly buffer Entries { uvec2 entries[]; };
 layout(std430, binding = 4) buffer Lists { uint lists[]; };   // splat | flags per bucket entry
 layout(std430, binding = 5) readonly buffer Slabs { vec2 slabDepths[]; };  // near, far
 
@@ -30,8 +29,34 @@ uniform ivec2 uViewport;  // pixels
 uniform float uCutoff;
 uniform vec2 uDepthProfile;  // DepthProfile, as the splat fragments take it
 uniform float uTermination;  // a pixel stops at this opacity
+// Pixels the lists reach beyond each tile's own: 1 for the post-classified composite
+// (tile_ewa_post.comp.glsl), whose normals take the neighbouring pixels' values.
+uniform float uBorder;
 
 const int kTile = TILE_SIZE;
+
+#ifdef GPU_ORDER
+// The GPU partition's lists (GpuSlabPartition): its order list, slab by slab, and each slab's
+// first entry.
+layout(std430, binding = 3) readonly buffer Order { uint order[]; };
+layout(std430, binding = 6) readonly buffer SlabFirst { uint slabFirst[]; };
+
+// Entry e as (splat | kFirstSlab | kLastSlab, slab): its slab is the last whose first entry is
+// at most e (an empty slab's first entry is the next slab's).
+uvec2 entryAt(uint e) {
+  uint lo = 0u, hi = uSlabCount - 1u;
+  while (lo < hi) {
+    uint mid = (lo + hi + 1u) / 2u;
+    if (slabFirst[mid] <= e) lo = mid; else hi = mid - 1u;
+  }
+  return uvec2(order[e], lo);
+}
+#else
+// The slab entries in slab order: (splat | kFirstSlab | kLastSlab, slab).
+layout(std430, binding = 3) readonly buffer Entries { uvec2 entries[]; };
+
+uvec2 entryAt(uint e) { return entries[e]; }
+#endif
 
 #if defined(COUNT_PASS) || defined(SCATTER_PASS)
 layout(local_size_x = 256) in;
@@ -39,10 +64,10 @@ layout(local_size_x = 256) in;
 void main() {
   uint e = dispatchIndex(256u);
   if (e >= uCount) return;
-  uvec2 entry = entries[e];
+  uvec2 entry = entryAt(e);
   vec4 box = splats[4u * (entry.x & kIndexMask)];
   ivec2 t0, t1;
-  if (!boxTiles(box, uViewport, kTile, t0, t1)) return;
+  if (!boxTiles(box + vec4(0.0, 0.0, uBorder, uBorder), uViewport, kTile, t0, t1)) return;
   for (int y = t0.y; y <= t1.y; ++y) {
     for (int x = t0.x; x <= t1.x; ++x) {
       uint bucket = uint(y * uTiles.x + x) * uSlabCount + entry.y;
@@ -58,7 +83,10 @@ void main() {
 
 #ifdef COMPOSITE_PASS
 layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
-layout(rgba32f, binding = 0) uniform writeonly image2D uPicture;  // premultiplied, front to back
+// Premultiplied, front to back; a draw in chunks of slabs carries it from one to the next.
+layout(rgba32f, binding = 0) uniform image2D uPicture;
+uniform uint uSlabBegin;  // this dispatch's slabs: [uSlabBegin, uSlabEnd)
+uniform uint uSlabEnd;
 const uint kBatch = uint(TILE_SIZE * TILE_SIZE);
 shared vec4 batch[4u * kBatch];
 shared uint batchOpen[kBatch];
@@ -88,8 +116,8 @@ void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   vec2 centre = vec2(pixel) + 0.5;
   bool inside = all(lessThan(pixel, uViewport));
-  vec4 picture = vec4(0.0);
-  for (uint slab = 0u; slab < uSlabCount; ++slab) {
+  vec4 picture = uSlabBegin > 0u && inside ? imageLoad(uPicture, pixel) : vec4(0.0);
+  for (uint slab = uSlabBegin; slab < uSlabEnd; ++slab) {
     uint bucket = tile * uSlabCount + slab;
     uint begin = offsets[bucket], end = offsets[bucket + 1u];
     if (begin == end) continue;  // the same for the whole group

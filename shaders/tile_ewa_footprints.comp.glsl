@@ -7,7 +7,8 @@
 layout(local_size_x = 64) in;
 
 // Per splat four vec4 (TileEwaSplat): the footprint's box (centre, half extents in pixels),
-// (conic, optical depth at the centre), (depth, depth slope x and y, depth sigma), (colour, 0).
+// (conic, optical depth or post-classified weight at the centre), (depth, depth slope x and y,
+// depth sigma), (colour, normalized value).
 // A splat not drawn gets zeros: a box of no size, no optical depth.
 layout(std430, binding = 6) writeonly buffer TileSplats { vec4 tileSplats[]; };
 
@@ -24,7 +25,7 @@ void main() {
     box = vec4(fp.center, sqrt(uCutoff * fp.covariance.xz));
     conic = vec4(fp.conic, amplitude);
     depth = vec4(fp.depth, fp.depthSlope, fp.depthSigma);
-    color = vec4(rgb, 0.0);
+    color = vec4(rgb, value);
   }
   tileSplats[4u * i] = box;
   tileSplats[4u * i + 1u] = conic;

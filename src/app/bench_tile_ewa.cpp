@@ -22,7 +22,8 @@ TileEwaFrame tileEwaFrame(const SplatRenderer& r, const Volume& vol, const Trans
   const SplatSet& splats = r.splats();
   frame.splats.resize(splats.size());  // invisible ones left zero: no depth, a box nowhere
   forEachFootprint(r, vol, cam, s, w, h, [&](const Footprint& fp, size_t n) {
-    const double value = lo + (hi - lo) * SplatSet::normalizedValue(splats.splats()[n]);
+    const double normalized = SplatSet::normalizedValue(splats.splats()[n]);
+    const double value = lo + (hi - lo) * normalized;
     const glm::dvec2 half(std::sqrt(s.cutoff * fp.covariance[0][0]),
                           std::sqrt(s.cutoff * fp.covariance[1][1]));
     TileEwaSplat& out = frame.splats[n];
@@ -30,7 +31,7 @@ TileEwaFrame tileEwaFrame(const SplatRenderer& r, const Volume& vol, const Trans
     out.conic = glm::vec4(glm::dvec4(fp.conic[0][0], fp.conic[0][1], fp.conic[1][1],
                                      tf.extinctionAt(value) * voxelVolume * fp.peak));
     out.depth = glm::vec4(glm::dvec4(fp.depth, fp.depthSlope, fp.depthSigma));
-    out.color = glm::vec4(glm::dvec3(tf.colorAt(value)), 0.0f);
+    out.color = glm::vec4(glm::dvec4(tf.colorAt(value), normalized));
   });
   // The partition as the renderer builds it (SplatRenderer::beginFrame), in the volume's frame.
   const Camera local = cameraInVolumeFrame(cam, vol);

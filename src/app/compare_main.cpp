@@ -88,21 +88,29 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   m.sprites.draw(size, size, halfFloatSlabs(rs));
   m.tiles.setFootprints(tileFootprints(m.ewa, scene.volume, cam, rs, size, size), float(rs.cutoff));
   m.tiles.draw(size, size, halfFloatSlabs(rs));
-  // The compute EWA splatter draws pre-classified, unclipped frames only (its splats' colour
-  // and opacity), from 64 bytes a splat: up to 8 M splats (a 512^3 volume's 74 M would take
-  // 4.7 GB twice over). Its slab lists are the CPU partition's (uploaded, not timed); its
-  // records are made on the GPU from the renderer's last frame (timed with the tiles).
-  const bool tileEwa = rs.classification.mode == ClassificationMode::Pre && !rs.clip.active() &&
+  // The compute EWA splatter draws unclipped frames, pre-classified or post-classified as the
+  // default (SplatRenderer::tileComposite), from 64 bytes a splat: up to 8 M splats (a 512^3
+  // volume's 74 M would take 4.7 GB twice over). Its slab lists are the renderer's own where it
+  // built them on the GPU (binned where they are; their making is in partition_ms), else the
+  // CPU partition's (uploaded, not timed); its records are made on the GPU from the renderer's
+  // last frame and the classification's state set (both timed with the tiles).
+  TileEwaFrame tileFrame;
+  const bool tileEwa = m.ewa.tileComposite(tileFrame.post, tileFrame.shading) &&
                        m.ewa.splats().size() <= size_t(8'000'000);
   const auto tileEwaDraw = [&] {
+    if (const GpuSlabPartition* lists = m.ewa.gpuSlabLists()) m.tileEwa.useGpuSlabLists(*lists);
     const auto start = BenchClock::now();
     m.ewa.writeTileSplats(m.tileEwa.splatBuffer());
+    if (tileFrame.post) m.ewa.prepareTileComposite(m.tileEwa.compositeProgram());
     glFinish();
     return millisecondsSince(start) + m.tileEwa.draw(size, size).totalMs();
   };
   if (tileEwa) {
-    m.tileEwa.setFrame(
-        tileEwaFrame(m.ewa, scene.volume, scene.transferFunction, cam, rs, size, size));
+    TileEwaFrame frame =
+        tileEwaFrame(m.ewa, scene.volume, scene.transferFunction, cam, rs, size, size);
+    frame.post = tileFrame.post;
+    frame.shading = tileFrame.shading;
+    m.tileEwa.setFrame(frame);
     tileEwaDraw();
   }
   RenderSettings sw = rs;

@@ -21,8 +21,9 @@ struct CompareRow {
   double spritesMs = -1, shearWarpMs = -1, vtkCpuMs = -1, vtkGpuMs = -1;
   // The same footprints added up by compute tiles (TileSplatBaseline): in all, and the binning.
   double tilesMs = -1, tilesBinMs = -1;
-  // The pre-classified frame splatted by compute tiles, slab by slab (TileEwaSplatter): binning
-  // and compositing; measured with --classification pre only.
+  // The same frame splatted by compute tiles, slab by slab (TileEwaSplatter): its records,
+  // binning and compositing; measured where the tiles draw the frame's settings
+  // (SplatRenderer::tileComposite: unclipped, post-classified only pre-integrated in quarters).
   double tileEwaMs = -1;
   size_t gpuBytes = 0;  // 0: the renderer does not count it
   double gpuBytesPerSplat = 0;

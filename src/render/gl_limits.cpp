@@ -2,6 +2,7 @@
 #include "render/gl_limits.h"
 
 #include <algorithm>
+#include <string>
 
 #include "gl/gl_api.h"
 
@@ -14,6 +15,13 @@ int maxRenderTargetSize() {
   glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &fbWidth);
   glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &fbHeight);
   return std::min({texture, viewport[0], viewport[1], fbWidth, fbHeight});
+}
+
+bool softwareRasterizer() {
+  const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string renderer = name ? name : "";
+  return renderer.find("llvmpipe") != std::string::npos ||
+         renderer.find("softpipe") != std::string::npos;
 }
 
 }  // namespace ewa

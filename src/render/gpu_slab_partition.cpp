@@ -38,7 +38,7 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
                              bool surfaces, const glm::dvec3& origin, const glm::dmat4& view,
                              double thickness, double nearCull, const DepthExtent& extent) {
   slabs_.clear();
-  splatCount_ = 0;
+  splatCount_ = entryCount_ = 0;
   nearestCenter_ = INFINITY;
   countsKnown_ = true;
   if (n == 0 || !(thickness > 0.0)) return;
@@ -119,6 +119,7 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
   uint32_t entries = 0;
   range_.getSubData(4 * sizeof(uint32_t), sizeof entries, &entries);
   order_.reserve(GLsizeiptr(size_t(entries) * sizeof(uint32_t)), "slab partition buffers");
+  entryCount_ = entries;
   order_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   gl::dispatchOver(scatterPass_, n, kGroup);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |

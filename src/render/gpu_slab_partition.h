@@ -39,8 +39,11 @@ class GpuSlabPartition {
   // The order list (entries as in SlabPartition::order(), slab by slab), read back (tests).
   std::vector<uint32_t> readOrder() const;
 
-  // The order list itself (drawn through windows of it when the counts are read back).
+  // The order list itself (drawn through windows of it when the counts are read back), its
+  // length, and each slab's first entry (slabs().size() of them).
   const gl::Buffer& orderBuffer() const { return order_; }
+  size_t entryCount() const { return entryCount_; }
+  const gl::Buffer& firstBuffer() const { return first_; }
   // Binds the order list (binding 1), the first entries (binding 3) and the draw commands
   // (GL_DRAW_INDIRECT_BUFFER) for drawing.
   void bindForDrawing() const;
@@ -54,7 +57,7 @@ class GpuSlabPartition {
   gl::Program extentPass_, countPass_, scanPass_, scatterPass_;
   gl::Buffer range_, cursor_, first_, commands_, order_;
   std::vector<Slab> slabs_;
-  size_t splatCount_ = 0;
+  size_t splatCount_ = 0, entryCount_ = 0;
   double nearestCenter_ = 0.0;
   bool countsKnown_ = false;
 };

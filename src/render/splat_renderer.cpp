@@ -13,6 +13,7 @@
 #include "core/named_values.h"
 #include "gl/gl_error.h"
 #include "render/clip_uniforms.h"
+#include "render/gl_limits.h"
 
 namespace ewa {
 
@@ -67,10 +68,7 @@ SplatRenderer::SplatRenderer(const gl::ShaderLibrary& shaders,
   glMaxSplats_ = maxSplats_ = size_t(std::min(bufferBytes, memory / 2) / sizeof(PackedSplat));
   glCreateQueries(GL_SAMPLES_PASSED, 2, queries_);
   glCreateQueries(GL_TIMESTAMP, 3, timers_);
-  const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const std::string renderer = name ? name : "";
-  softwareGl_ = renderer.find("llvmpipe") != std::string::npos ||
-                renderer.find("softpipe") != std::string::npos;
+  softwareGl_ = softwareRasterizer();
   laggedTermination_ = !softwareGl_;
   gpuTimers_ = !softwareGl_;
 }
@@ -348,7 +346,6 @@ double SplatRenderer::preparePairTable(const RenderSettings& settings) {
 }
 
 void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSettings& settings) {
-  const Lighting& light = settings.lighting;
   const bool coarser = std::any_of(frame_.slabScales.begin(), frame_.slabScales.end(),
                                    [](double scale) { return scale > 1.0; });
   slabPass_[1] = nullptr;
@@ -357,20 +354,8 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
     slabPass_[scaled] = &p;
     p.setInt("uTransfer", 0);
     p.setInt("uSlabNormal", 3);
-    p.setInt("uOrthographic", proj.orthographic ? 1 : 0);
-    p.setFloat("uFocalPixels", float(proj.focalPixels));
     p.setVec2("uViewport", glm::vec2(proj.width, proj.height));
-    p.setInt("uShading", light.enabled ? 1 : 0);
-    p.setFloat("uAmbient", float(light.ambient));
-    p.setFloat("uDiffuse", float(light.diffuse));
-    p.setFloat("uSpecular", float(light.specular));
-    p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
-    p.setFloat("uPixelsPerUnit", float(proj.pixelsPerUnit));
-    // Post-classified: the covered lengths end at the data's box.
-    setDataBoxUniforms(p, *volume_, frame_.camera, proj);
-    // Samplers of different types must not share a unit, used or not.
-    p.setInt("uPairTable", int(kPairTableUnit));
-    p.setInt("uPairPrefix", int(kPairPrefixUnit));
+    setClassifyUniforms(p, proj, settings);
     p.setInt("uNeighbourSlab", int(kNeighbourSlabUnit));
     p.setInt("uSlabBack", int(kSlabBackUnit));
     p.setInt("uNeighbourBack", int(kNeighbourBackUnit));
@@ -378,6 +363,24 @@ void SplatRenderer::setSlabPassUniforms(const Projection& proj, const RenderSett
     p.setFloat("uSlabScale", 1.0f);
     p.setFloat("uNeighbourScale", 1.0f);
   }
+}
+
+void SplatRenderer::setClassifyUniforms(gl::Program& p, const Projection& proj,
+                                        const RenderSettings& settings) {
+  const Lighting& light = settings.lighting;
+  p.setInt("uOrthographic", proj.orthographic ? 1 : 0);
+  p.setFloat("uFocalPixels", float(proj.focalPixels));
+  p.setInt("uShading", light.enabled ? 1 : 0);
+  p.setFloat("uAmbient", float(light.ambient));
+  p.setFloat("uDiffuse", float(light.diffuse));
+  p.setFloat("uSpecular", float(light.specular));
+  p.setFloat("uShininess", float(std::max(light.shininess, 1e-3)));
+  p.setFloat("uPixelsPerUnit", float(proj.pixelsPerUnit));
+  // Post-classified: the covered lengths end at the data's box.
+  setDataBoxUniforms(p, *volume_, frame_.camera, proj);
+  // Samplers of different types must not share a unit, used or not.
+  p.setInt("uPairTable", int(kPairTableUnit));
+  p.setInt("uPairPrefix", int(kPairPrefixUnit));
 }
 
 void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex) {

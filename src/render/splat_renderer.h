@@ -148,9 +148,22 @@ class SplatRenderer : public Renderer {
   // The compute splatter's records of the last frame begun (TileEwaSplat, tile_ewa_splatter.h:
   // four vec4 a splat in splats() order, zeros for a splat not drawn), made on the GPU as the
   // splat vertex shaders make each footprint (shaders/tile_ewa_footprints.comp.glsl), into
-  // `out`, which must hold splats().size() records. Pre-classified, unclipped frames: what
-  // the compute splatter draws. For the benchmarks.
+  // `out`, which must hold splats().size() records. Unclipped frames: what the compute
+  // splatter draws. For the benchmarks.
   void writeTileSplats(gl::Buffer& out);
+  // Whether the compute splatter draws the last frame begun: unclipped, front to back and
+  // pre-classified, or post-classified, pre-integrated in quarters of a slab, shaded (if at
+  // all) from the field's gradient; and the TileEwaFrame flags (post, shading) that say how.
+  bool tileComposite(bool& post, bool& shading) const;
+  // The GPU partition of the last frame begun, if it built its slab lists on the GPU (the
+  // compute splatter can bin them where they are: TileEwaSplatter::useGpuSlabLists).
+  const GpuSlabPartition* gpuSlabLists() const {
+    return frame_.gpuSlabs ? gpuPartition_.get() : nullptr;
+  }
+  // Sets the classification's uniforms and textures (the slab pass's: the pair table, the
+  // data's box, the light) of the last frame begun on the compute splatter's post-classified
+  // composite `program` (TileEwaSplatter::compositeProgram), for its next draw.
+  void prepareTileComposite(gl::Program& program);
 
  private:
   void rebuildSplats(const Classification& classification);
@@ -196,6 +209,8 @@ class SplatRenderer : public Renderer {
   SlabPassVariant slabPassVariant(const RenderSettings& settings, bool scaled) const;
   // The slab pass's uniforms and the slab buffer's draw buffers for this frame.
   void setSlabPassUniforms(const Projection& proj, const RenderSettings& settings);
+  // Its classification's: the camera's, the light's, the data's box and the pair table's units.
+  void setClassifyUniforms(gl::Program& p, const Projection& proj, const RenderSettings& settings);
   // Draws the slab's splats into the bound image at frame_.splatScale, through the guard band.
   void drawSplats(const Slab& slab, bool quads, int slabIndex = -1);
   void drawSplatPrimitives(const Slab& slab, bool quads, int slabIndex);

@@ -1,4 +1,5 @@
-// SplatRenderer::writeTileSplats: the compute splatter's records from the splat shaders' setup.
+// SplatRenderer::writeTileSplats and the rest of what the compute splatter takes from the frame:
+// its records from the splat shaders' setup, its variant, the classification's state.
 #include <stdexcept>
 
 #include "gl/gl_error.h"
@@ -12,8 +13,8 @@ void SplatRenderer::writeTileSplats(gl::Buffer& out) {
   if (!volume_ || count == 0) return;
   if (out.size() < GLsizeiptr(count * sizeof(TileEwaSplat)))
     throw std::invalid_argument("writeTileSplats: the buffer holds fewer records than splats");
-  // The frame's own variant (post-classified or clipped frames compile too, though the compute
-  // splatter draws neither), so the footprints come from the same compiled setup.
+  // The frame's own variant (clipped frames compile too, though the compute splatter does not
+  // draw them), so the footprints come from the same compiled setup.
   const SplatVariant variant = splatVariant(frame_.settings, frame_.texelBuffers);
   if (!tileSplatPass_ || tileSplatVariant_ != variant.key()) {
     tileSplatPass_ = shaders_.computeProgram("tile_ewa_footprints.comp.glsl", variant.defines());
@@ -27,6 +28,21 @@ void SplatRenderer::writeTileSplats(gl::Buffer& out) {
   gl::dispatchOver(pass, count, 64);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   gl::checkGlError("tile splat records");
+}
+
+bool SplatRenderer::tileComposite(bool& post, bool& shading) const {
+  const RenderSettings& s = frame_.settings;
+  post = postClassified(s);
+  shading = fieldNormals(s);
+  if (s.mode != RenderMode::Composite || s.clip.active() || s.order != CompositeOrder::FrontToBack)
+    return false;
+  return !post || (quarterSlabs(s) && (shading || !s.lighting.enabled));
+}
+
+void SplatRenderer::prepareTileComposite(gl::Program& program) {
+  if (!volume_) return;
+  setClassifyUniforms(program, frame_.proj, frame_.settings);
+  if (pairedSlabs(frame_.settings)) pairTable_.bindUnits(kPairTableUnit, kPairPrefixUnit);
 }
 
 }  // namespace ewa

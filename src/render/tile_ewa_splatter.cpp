@@ -7,6 +7,7 @@
 
 #include "core/stopwatch.h"
 #include "gl/gl_error.h"
+#include "render/gl_limits.h"
 
 namespace ewa {
 
@@ -26,6 +27,7 @@ void upload(gl::Buffer& buffer, const std::vector<T>& data) {
 
 TileEwaSplatter::TileEwaSplatter(const gl::ShaderLibrary& shaders, int tileSize)
     : tileSize_(tileSize),
+      shaders_(shaders),
       countPass_(shaders.computeProgram("tile_ewa.comp.glsl", defines(tileSize, "COUNT_PASS"))),
       // The scan of tile_splat.comp.glsl, over (tile, slab) buckets in place of tiles.
       scanPass_(shaders.computeProgram(
@@ -33,7 +35,8 @@ TileEwaSplatter::TileEwaSplatter(const gl::ShaderLibrary& shaders, int tileSize)
           defines(tileSize, "SCAN_PASS") + "#define IMAGE_FORMAT rgba32f\n")),
       scatterPass_(shaders.computeProgram("tile_ewa.comp.glsl", defines(tileSize, "SCATTER_PASS"))),
       compositePass_(
-          shaders.computeProgram("tile_ewa.comp.glsl", defines(tileSize, "COMPOSITE_PASS"))) {}
+          shaders.computeProgram("tile_ewa.comp.glsl", defines(tileSize, "COMPOSITE_PASS"))),
+      chunkIterations_(softwareRasterizer() ? 60000 : 0) {}
 
 void TileEwaSplatter::setFrame(const TileEwaFrame& frame) {
   upload(splats_, frame.splats);
@@ -44,6 +47,67 @@ void TileEwaSplatter::setFrame(const TileEwaFrame& frame) {
   settings_.cutoff = frame.cutoff;
   settings_.depthProfile = frame.depthProfile;
   settings_.termination = frame.termination;
+  settings_.post = frame.post;
+  settings_.shading = frame.shading;
+  gpuLists_ = nullptr;
+  slabEntries_.assign(slabCount_, 0);
+  for (const glm::uvec2& entry : frame.entries)
+    if (entry.y < slabCount_) ++slabEntries_[entry.y];
+}
+
+void TileEwaSplatter::useGpuSlabLists(const GpuSlabPartition& partition) {
+  if (!gpuCountPass_) {
+    const std::string gpuOrder = "#define GPU_ORDER 1\n";
+    gpuCountPass_ =
+        shaders_.computeProgram("tile_ewa.comp.glsl", gpuOrder + defines(tileSize_, "COUNT_PASS"));
+    gpuScatterPass_ = shaders_.computeProgram("tile_ewa.comp.glsl",
+                                              gpuOrder + defines(tileSize_, "SCATTER_PASS"));
+  }
+  std::vector<glm::vec2> depths;
+  for (const Slab& slab : partition.slabs())
+    depths.emplace_back(float(slab.nearDepth), float(slab.farDepth));
+  upload(slabs_, depths);
+  slabCount_ = depths.size();
+  entryCount_ = partition.entryCount();
+  gpuLists_ = &partition;
+  slabEntries_.clear();
+  if (partition.countsKnown())
+    for (const Slab& slab : partition.slabs()) slabEntries_.push_back(slab.count);
+}
+
+std::vector<glm::uvec2> TileEwaSplatter::compositeChunks() const {
+  const auto slabs = GLuint(slabCount_);
+  if (chunkIterations_ == 0 || slabEntries_.size() != slabCount_) return {glm::uvec2(0, slabs)};
+  // A tile's iterations in a slab: at most its entries over eight (the splats an iteration)
+  // and over the smallest batch, and about a dozen more (the batches, the classification's
+  // loops); bounded by the slab's entries, every tile's at once.
+  std::vector<glm::uvec2> chunks;
+  size_t iterations = 0;
+  GLuint first = 0;
+  for (GLuint b = 0; b < slabs; ++b) {
+    const size_t cost = 12 + slabEntries_[b] / 8 + slabEntries_[b] / 64;
+    if (b > first && iterations + cost > chunkIterations_) {
+      chunks.emplace_back(first, b);
+      first = b;
+      iterations = 0;
+    }
+    iterations += cost;
+  }
+  chunks.emplace_back(first, slabs);
+  return chunks;
+}
+
+gl::Program& TileEwaSplatter::compositeProgram() {
+  if (!settings_.post) return compositePass_;
+  std::optional<gl::Program>& pass = postPass_[settings_.shading ? 1 : 0];
+  if (!pass) {
+    const std::string shading = settings_.shading ? "1" : "0";
+    pass = shaders_.computeProgram("tile_ewa_post.comp.glsl",
+                                   "#define TILE_SIZE " + std::to_string(tileSize_) +
+                                       "\n#define SLAB_SHADING " + shading +
+                                       "\n#define SLAB_FIELD_NORMALS " + shading + "\n");
+  }
+  return *pass;
 }
 
 TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {
@@ -52,7 +116,10 @@ TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {
   const glm::ivec2 tiles((width + tileSize_ - 1) / tileSize_, (height + tileSize_ - 1) / tileSize_);
   const size_t slabs = std::max<size_t>(1, slabCount_);
   const size_t buckets = size_t(tiles.x) * size_t(tiles.y) * slabs;
-  for (gl::Program* p : {&countPass_, &scatterPass_, &compositePass_}) {
+  gl::Program& composite = compositeProgram();
+  gl::Program& count = gpuLists_ ? *gpuCountPass_ : countPass_;
+  gl::Program& scatter = gpuLists_ ? *gpuScatterPass_ : scatterPass_;
+  for (gl::Program* p : {&count, &scatter, &composite}) {
     p->setUInt("uCount", GLuint(entryCount_));
     p->setUInt("uSlabCount", GLuint(slabCount_));
     p->setIVec2("uTiles", tiles);
@@ -60,25 +127,48 @@ TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {
     p->setFloat("uCutoff", settings_.cutoff);
     p->setVec2("uDepthProfile", settings_.depthProfile);
     p->setFloat("uTermination", settings_.termination);
+    // Post-classified tiles read their border's pixels for the normals.
+    p->setFloat("uBorder", settings_.post ? 1.0f : 0.0f);
   }
   // The scan sees the buckets as one row of "tiles".
   scanPass_.setIVec2("uTiles", glm::ivec2(int(buckets), 1));
   splats_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  entries_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  if (gpuLists_) {
+    gpuLists_->orderBuffer().bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+    gpuLists_->firstBuffer().bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+  } else {
+    entries_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  }
   slabs_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
 
   Timing t;
   glFinish();
   auto start = std::chrono::steady_clock::now();
-  t.entries = bins_.bin(countPass_, scanPass_, scatterPass_, entryCount_, buckets, 4);
+  t.entries = bins_.bin(count, scanPass_, scatter, entryCount_, buckets, 4);
   glFinish();
   t.binMs = millisecondsSince(start);
 
   start = std::chrono::steady_clock::now();
-  glBindImageTexture(0, picture_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glUseProgram(compositePass_.id());
-  glDispatchCompute(GLuint(tiles.x), GLuint(tiles.y), 1);
+  const std::vector<glm::uvec2> chunks = compositeChunks();
+  if (settings_.post && chunks.size() > 1 &&
+      (lastFront_.width() != width || lastFront_.height() != height)) {
+    lastFront_ = gl::Texture::create2D(GL_RGBA32F, width, height);
+    lastBack_ = gl::Texture::create2D(GL_RGBA32F, width, height);
+  }
+  glBindImageTexture(0, picture_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  if (settings_.post && chunks.size() > 1) {
+    glBindImageTexture(1, lastFront_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindImageTexture(2, lastBack_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  }
+  glUseProgram(composite.id());
+  for (const glm::uvec2& chunk : chunks) {
+    composite.setUInt("uSlabBegin", chunk.x);
+    composite.setUInt("uSlabEnd", chunk.y);
+    glDispatchCompute(GLuint(tiles.x), GLuint(tiles.y), 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  t.chunks = chunks.size();
   glFinish();
   t.compositeMs = millisecondsSince(start);
   gl::checkGlError("tile EWA draw");
