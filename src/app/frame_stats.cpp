@@ -37,6 +37,7 @@ std::string frameStatsJson(const RenderStats& s, const std::string& renderer, in
   j["entries_culled"] = s.entriesCulled;
   j["slabs_coarse"] = s.slabsCoarse;
   j["gpu_partition"] = s.gpuPartition;
+  j["splatter"] = s.tiles ? "tiles" : "raster";
   j["slab_passes"] = s.slabPasses;
   j["gpu_bytes"] = s.gpuBytes;
   const double perSplat = gpuBytesPerSplat(s);

@@ -35,6 +35,12 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
                  "Post-classified and pre-integrated, with --shading: normals from the gradient "
                  "of the reconstructed field (field, default) or the splats' voxel normals (voxel)")
       ->check(CLI::IsMember({"field", "voxel"}));
+  app.add_option("--splatter", p.splatter,
+                 "Whole composite frames (headless): rasterized slab by slab (raster, default) "
+                 "or in compute tiles (tiles: no rasterizer, no blending; unclipped, front to "
+                 "back, post-classified only with 4 samples a slab and field normals, else "
+                 "rasterized)")
+      ->check(CLI::IsMember({"raster", "tiles"}));
   app.add_option("--compositing", p.compositing,
                  "Slab order: front-to-back (default) or back-to-front")
       ->check(CLI::IsMember({"front-to-back", "back-to-front"}));
@@ -99,6 +105,7 @@ std::string finishShadingOptions(const RenderOptionText& p, RenderSettings* s) {
   parseSlabPrecision(p.slabPrecision, &s->slabPrecision);
   parseSlabPasses(p.slabPasses, &s->slabPasses);
   parsePostNormals(p.postNormals, &s->postNormals);
+  parseSplatter(p.splatter, &s->splatter);
   if (p.surfaceValue) {
     if (!std::isfinite(*p.surfaceValue)) return "--surface-threshold: not a finite number";
     s->classification.surface = SurfaceCriterion::Value;

@@ -20,6 +20,7 @@ struct RenderOptionText {
   std::string classification;  // empty: post, or pre with surface splats
   std::string slabPreintegration = "on";
   std::string postNormals = "field";
+  std::string splatter = "raster";
   std::string occlusionCulling = "auto";
   std::string slabResolution = "auto";
   std::string slabPrecision = "auto";
@@ -29,7 +30,8 @@ struct RenderOptionText {
 };
 
 // Adds --classification, --slab-preintegration, --slab-samples, --prefilter, --post-normals,
-// --compositing, --termination, --occlusion-culling, --slab-resolution, --slab-precision,
+// --splatter, --compositing, --termination, --occlusion-culling, --slab-resolution,
+// --slab-precision,
 // --xray-map, --xray-scale, --shading, --ambient, --diffuse, --specular, --shininess,
 // --gradient, --surface-threshold, --surface-opacity-threshold, --surface-min-gradient and
 // --surface-opacity to `app`, writing into `settings` and `text`; both must outlive the parse.

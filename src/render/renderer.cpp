@@ -16,6 +16,8 @@ constexpr NamedValue<SlabPrecision> kSlabPrecision[] = {
     {SlabPrecision::Auto, "auto"}, {SlabPrecision::Half, "half"}, {SlabPrecision::Float, "float"}};
 constexpr NamedValue<PostNormals> kPostNormals[] = {{PostNormals::Field, "field"},
                                                     {PostNormals::Voxel, "voxel"}};
+constexpr NamedValue<Splatter> kSplatter[] = {{Splatter::Raster, "raster"},
+                                              {Splatter::Tiles, "tiles"}};
 constexpr NamedValue<RenderMode> kRenderMode[] = {
     {RenderMode::Composite, "composite"}, {RenderMode::XRay, "xray"}, {RenderMode::Mip, "mip"}};
 constexpr NamedValue<CompositeOrder> kCompositeOrder[] = {
@@ -53,6 +55,14 @@ const char* postNormalsName(PostNormals normals) {
 
 bool parsePostNormals(const std::string& text, PostNormals* normals) {
   return parseIn(kPostNormals, text, normals);
+}
+
+const char* splatterName(Splatter splatter) {
+  return nameIn(kSplatter, splatter);
+}
+
+bool parseSplatter(const std::string& text, Splatter* splatter) {
+  return parseIn(kSplatter, text, splatter);
 }
 
 const char* renderModeName(RenderMode mode) {

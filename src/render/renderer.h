@@ -38,6 +38,15 @@ enum class PostNormals { Field = 0, Voxel = 1 };
 const char* postNormalsName(PostNormals normals);
 bool parsePostNormals(const std::string& text, PostNormals* normals);
 
+// How the splat renderer draws a whole composite frame: rasterized slab by slab (points and
+// quads blended into slab images), or in compute tiles (TileEwaSplatter: each screen tile's
+// slabs added up and classified in one work group; no rasterizer, no blending). Tiles draw
+// unclipped front-to-back frames, pre-classified or post-classified with four samples a slab
+// and field normals, and only frames drawn at once (headless); the rest is rasterized.
+enum class Splatter { Raster = 0, Tiles = 1 };
+const char* splatterName(Splatter splatter);
+bool parseSplatter(const std::string& text, Splatter* splatter);
+
 enum class RendererKind { Splat = 0, ShearWarp = 1 };
 // Occlusion culling (splats over pixels already opaque are not drawn; the same picture). Auto:
 // on hardware GL, off on software rasterizers, where the vertex shader's extra texel fetches
@@ -130,6 +139,7 @@ struct RenderSettings {
   // two halves in depth), or the splats' voxel normals summed in a second image (Voxel; also
   // post without pre-integration, which has no depth difference).
   PostNormals postNormals = PostNormals::Field;
+  Splatter splatter = Splatter::Raster;  // whole composite frames in compute tiles or not
   // Composite: each slab is splatted into an image as coarse as its kernels allow (up to 4
   // pixels a texel a side where every footprint is at least 2 texels wide, so near the eye in
   // magnified views; slab_image_scale.h) and read back bilinearly, classified per pixel; the
@@ -180,6 +190,7 @@ struct RenderStats {
   // The slab lists came from the GPU's partition, whose order of a slab's entries (and the
   // rounding of their sums with it) may vary between frames; false: the CPU's, or none.
   bool gpuPartition = false;
+  bool tiles = false;  // the splat stage ran in compute tiles (RenderSettings::splatter)
   int slabPasses = 0;  // four samples a slab: the passes each slab took (1 or 2); 0 otherwise
   // Wall time of the last frame (render(), or beginFrame and every stepFrame), waits for the
   // GPU included.

@@ -758,6 +758,13 @@ bool SplatRenderer::stepFrame(double budgetMs) {
   // A whole frame drawn in this one step may be timed on the GPU: no wait between its stages.
   frame_.timed = gpuTimers_ && !std::isfinite(budgetMs) && frame_.drawnWeight == 0.0;
   if (frame_.timed) glQueryCounter(timers_[0], GL_TIMESTAMP);
+  // A whole composite frame in compute tiles, if asked for and they draw its settings.
+  if (frame_.drawSplats && frame_.settings.splatter == Splatter::Tiles &&
+      frame_.settings.mode == RenderMode::Composite && !std::isfinite(budgetMs) &&
+      frame_.nextSlab == 0 && drawTiles()) {
+    frame_.drawSplats = false;
+    stats_.splatMs += millisecondsSince(drawStart);  // the tiles wait for their passes
+  }
   if (frame_.drawSplats) {
     // Another renderer sharing the programs drew since this frame set them up.
     if (programs_->user != this) setFrameUniforms();
@@ -794,7 +801,7 @@ bool SplatRenderer::stepFrame(double budgetMs) {
     stats_.slabs = slabs;
     frame_.slabs = gpuPartition_->slabs();
     const bool composite = frame_.settings.mode == RenderMode::Composite;
-    const size_t drawn = composite ? frame_.nextSlab : frame_.slabs.size();
+    const size_t drawn = composite && !frame_.tiles ? frame_.nextSlab : frame_.slabs.size();
     for (size_t s = 0; s < drawn && s < frame_.slabs.size(); ++s)
       stats_.slabEntries += slabInOrder(s).count;
   }
@@ -821,7 +828,8 @@ void SplatRenderer::drawFinalPass() {
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
   targets_.slab.bindUnit(1);
-  targets_.accum.bindUnit(2);
+  // Front to back, premultiplied, over nothing: the tiles' picture is what the slab loop leaves.
+  (frame_.tiles ? tiles_->pictureTexture() : targets_.accum).bindUnit(2);
   finalProgram_.setInt("uSlab", 1);
   finalProgram_.setInt("uImage", 2);
   finalProgram_.setInt("uMode", int(settings.mode));

@@ -101,7 +101,7 @@ RenderStats SplatRenderer::stats() const {
   s.gpuBytes = size_t(splatBuffer_.size() + attributeBuffer_.size()) + orderPages_.bytes() +
                size_t(kTransferSamples) * 4 * sizeof(float) + targets_.bytes() +
                (gpuPartition_ ? gpuPartition_->bytes() : 0) + occlusion_.bytes() +
-               pairTable_.bytes();
+               pairTable_.bytes() + (tiles_ ? tiles_->bytes() : 0);
   return s;
 }
 

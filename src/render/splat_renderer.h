@@ -29,6 +29,7 @@
 #include "render/slab_pass_programs.h"
 #include "render/splat_program_set.h"
 #include "render/splat_programs.h"
+#include "render/tile_ewa_splatter.h"
 
 namespace ewa {
 
@@ -220,6 +221,9 @@ class SplatRenderer : public Renderer {
   void setFrameWeights();
   // Selects this frame's program variants and sets their per-frame uniforms (programs_->user).
   void setFrameUniforms();
+  // Draws the whole frame in compute tiles (RenderSettings::splatter) if it can: false, and
+  // nothing drawn, where tileComposite says the tiles do not draw these settings.
+  bool drawTiles();
   // GL state every step needs again (a window draws other things between steps).
   void bindFrameState();
   void setSlabLoopState();
@@ -295,6 +299,7 @@ class SplatRenderer : public Renderer {
   PartitionMode partitionMode_ = PartitionMode::Auto;
   bool softwareGl_ = false;                         // GL_RENDERER names a software rasterizer
   std::unique_ptr<GpuSlabPartition> gpuPartition_;  // made on first use
+  std::unique_ptr<TileEwaSplatter> tiles_;          // RenderSettings::splatter; on first use
   gl::ShaderLibrary shaders_;                       // for the GPU partition, built on first use
   std::optional<std::pair<double, double>> depthWindow_;
   bool slabScissor_ = true;
@@ -373,6 +378,7 @@ class SplatRenderer : public Renderer {
     bool pyramidBuilt = false;         // occlusion culling: a pyramid of this frame is bound
     PixelRect markRect;                // slabs composited since the last opacity marks
     bool gpuSlabs = false;             // slabs come from gpuPartition_
+    bool tiles = false;                // drawn in compute tiles: the picture is tiles_'s
     bool indirect = false;     // GPU slabs whose counts only the GPU knows (empty ones kept)
     size_t nextSlab = 0;       // composite: the next slab in drawing order
     bool terminated = false;   // early termination ended the slab loop

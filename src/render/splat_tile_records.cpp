@@ -1,5 +1,6 @@
 // SplatRenderer::writeTileSplats and the rest of what the compute splatter takes from the frame:
 // its records from the splat shaders' setup, its variant, the classification's state.
+#include <memory>
 #include <stdexcept>
 
 #include "gl/gl_error.h"
@@ -28,6 +29,44 @@ void SplatRenderer::writeTileSplats(gl::Buffer& out) {
   gl::dispatchOver(pass, count, 64);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   gl::checkGlError("tile splat records");
+}
+
+bool SplatRenderer::drawTiles() {
+  TileEwaFrame tileFrame;
+  if (!tileComposite(tileFrame.post, tileFrame.shading) || classified_.splats.size() == 0)
+    return false;
+  if (!tiles_) tiles_ = std::make_unique<TileEwaSplatter>(shaders_, 16);
+  const RenderSettings& s = frame_.settings;
+  tileFrame.cutoff = float(s.cutoff);
+  const DepthProfile profile = depthProfile(s);
+  tileFrame.depthProfile = glm::vec2(float(profile.erfReach), float(profile.scale));
+  tileFrame.termination = float(s.terminationOpacity);
+  if (!frame_.gpuSlabs) {
+    // The CPU partition's lists, front to back: each entry with its slab's number.
+    const std::vector<uint32_t>& order = partition_.order();
+    for (size_t k = 0; k < frame_.slabs.size(); ++k) {
+      const Slab& slab = frame_.slabs[k];
+      tileFrame.slabDepths.emplace_back(float(slab.nearDepth), float(slab.farDepth));
+      for (size_t e = slab.first; e < slab.first + slab.count; ++e)
+        tileFrame.entries.emplace_back(order[e], uint32_t(k));
+    }
+  }
+  tiles_->setFrame(tileFrame);
+  if (frame_.gpuSlabs) {
+    // llvmpipe's composite runs in chunks of slabs sized by their counts (a short wait).
+    if (softwareGl_) gpuPartition_->readCounts();
+    tiles_->useGpuSlabLists(*gpuPartition_);
+  }
+  tiles_->reserveSplats(classified_.splats.size());
+  writeTileSplats(tiles_->splatBuffer());
+  if (tileFrame.post) prepareTileComposite(tiles_->compositeProgram());
+  tiles_->draw(frame_.width, frame_.height);
+  // The GPU's counts are read after the final pass (stepFrame), as for rasterized frames.
+  if (!frame_.indirect)
+    stats_.slabEntries = frame_.gpuSlabs ? gpuPartition_->entryCount() : tileFrame.entries.size();
+  stats_.slabsDrawn = frame_.gpuSlabs ? gpuPartition_->slabs().size() : frame_.slabs.size();
+  frame_.tiles = stats_.tiles = true;
+  return true;
 }
 
 bool SplatRenderer::tileComposite(bool& post, bool& shading) const {

@@ -22,6 +22,8 @@ class TileBins {
   // lists' length.
   size_t bin(const gl::Program& count, const gl::Program& scan, const gl::Program& scatter,
              size_t items, size_t buckets, GLuint listBinding);
+  // Bytes of its buffers.
+  size_t bytes() const { return size_t(cursor_.size() + offsets_.size() + lists_.size()); }
 
  private:
   const char* what_;

@@ -39,7 +39,8 @@ TileEwaSplatter::TileEwaSplatter(const gl::ShaderLibrary& shaders, int tileSize)
       chunkIterations_(softwareRasterizer() ? 60000 : 0) {}
 
 void TileEwaSplatter::setFrame(const TileEwaFrame& frame) {
-  upload(splats_, frame.splats);
+  // None given: the records are written on the GPU (reserveSplats, then the renderer's pass).
+  if (!frame.splats.empty()) upload(splats_, frame.splats);
   upload(entries_, frame.entries);
   upload(slabs_, frame.slabDepths);
   entryCount_ = frame.entries.size();
@@ -95,6 +96,11 @@ std::vector<glm::uvec2> TileEwaSplatter::compositeChunks() const {
   }
   chunks.emplace_back(first, slabs);
   return chunks;
+}
+
+void TileEwaSplatter::reserveSplats(size_t count) {
+  splats_.reserve(GLsizeiptr(std::max<size_t>(1, count) * sizeof(TileEwaSplat)),
+                  "tile EWA splat records");
 }
 
 gl::Program& TileEwaSplatter::compositeProgram() {
@@ -173,6 +179,13 @@ TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {
   t.compositeMs = millisecondsSince(start);
   gl::checkGlError("tile EWA draw");
   return t;
+}
+
+size_t TileEwaSplatter::bytes() const {
+  const size_t images = size_t(picture_.width()) * size_t(picture_.height()) +
+                        2 * size_t(lastFront_.width()) * size_t(lastFront_.height());
+  return size_t(splats_.size() + entries_.size() + slabs_.size()) + bins_.bytes() +
+         images * sizeof(glm::vec4);
 }
 
 std::vector<glm::vec4> TileEwaSplatter::picture() const {

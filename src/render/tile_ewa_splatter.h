@@ -52,7 +52,8 @@ class TileEwaSplatter {
  public:
   // `tileSize`: pixels a side of a tile (one work group), 8 or 16.
   TileEwaSplatter(const gl::ShaderLibrary& shaders, int tileSize);
-  // Uploads the frame's splats, entries and slabs; not part of the timed draw.
+  // Uploads the frame's splats (none: keeps the records there), entries and slabs; not part of
+  // the timed draw.
   void setFrame(const TileEwaFrame& frame);
   // Takes the frame's slab lists from `partition` (built, on the GPU) in place of the frame's
   // entries and slab depths, until the next setFrame: no per-frame list crosses to the GPU.
@@ -75,9 +76,14 @@ class TileEwaSplatter {
   void setChunkIterations(size_t iterations) { chunkIterations_ = iterations; }
   // The last draw's picture, rows bottom up.
   std::vector<glm::vec4> picture() const;
+  const gl::Texture& pictureTexture() const { return picture_; }
+  // Bytes of its buffers and images.
+  size_t bytes() const;
   // The splat records setFrame uploaded, for a GPU pass to overwrite with its own
   // (SplatRenderer::writeTileSplats) before the next draw.
   gl::Buffer& splatBuffer() { return splats_; }
+  // Makes splatBuffer() hold at least `count` records (their contents undefined).
+  void reserveSplats(size_t count);
   // The program that composites the frame setFrame took (post-classified: its variant).
   gl::Program& compositeProgram();
 

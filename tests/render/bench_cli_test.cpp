@@ -245,6 +245,27 @@ TEST(StatsCli, OcclusionCullingCountsCulledDrawsAndKeepsThePicture) {
             2);
 }
 
+// --splatter tiles: the frame drawn in compute tiles (splatter "tiles"), the rasterized picture
+// within a few levels; a clipped frame stays rasterized; a bad value is a usage error.
+TEST(StatsCli, SplatterTilesDrawsTheFrameInTiles) {
+  const std::string dir = testOutputDir();
+  const std::string common = "--synthetic marschner-lobb:24 --resolution 48,48 --stats";
+  const CliRun raster = runEwaview(common + " -o " + dir + "/splatter_raster.png");
+  const CliRun tiles = runEwaview(common + " --splatter tiles -o " + dir + "/splatter_tiles.png");
+  const CliRun cropped = runEwaview(common + " --splatter tiles --crop 0,12,0,23,0,23 -o " + dir +
+                                    "/splatter_cropped.png");
+  ASSERT_EQ(raster.code, 0) << raster.err;
+  ASSERT_EQ(tiles.code, 0) << tiles.err;
+  ASSERT_EQ(cropped.code, 0) << cropped.err;
+  EXPECT_EQ(json::parse(raster.out)["splatter"], "raster");
+  EXPECT_EQ(json::parse(tiles.out)["splatter"], "tiles");
+  EXPECT_EQ(json::parse(cropped.out)["splatter"], "raster");
+  EXPECT_LE(
+      maxDifference(readPng(dir + "/splatter_tiles.png"), readPng(dir + "/splatter_raster.png")),
+      4);
+  EXPECT_EQ(runEwaview("--synthetic sphere:8 --splatter compute -o " + dir + "/x.png").code, 2);
+}
+
 // A magnified sphere: its near slabs go to coarser images (slabs_coarse), --slab-resolution
 // full keeps them all at the picture's resolution, a bad value is a usage error.
 TEST(StatsCli, SlabResolutionReportsCoarseSlabs) {

@@ -278,6 +278,49 @@ TEST_F(TileEwaSplatterTest, BinsTheGpuPartitionsLists) {
   }
 }
 
+// RenderSettings::splatter: whole frames drawn in tiles by the renderer itself are the
+// rasterized frames (pre-classified and post-classified shaded, early termination, either
+// partition), with the same slab entries; clipped frames and budgeted steps stay rasterized.
+TEST_F(TileEwaSplatterTest, RendererDrawsWholeFramesInTilesWhenAsked) {
+  const Camera cam = obliqueCamera();
+  const int width = 61, height = 53;
+  for (PartitionMode partition : {PartitionMode::Cpu, PartitionMode::Gpu}) {
+    SplatRenderer& r = wallRenderer(partition);
+    for (ClassificationMode mode : {ClassificationMode::Pre, ClassificationMode::Post}) {
+      SCOPED_TRACE(std::to_string(int(partition)) + " " + std::to_string(int(mode)));
+      RenderSettings settings = tileSettings();
+      settings.classification.mode = mode;
+      settings.lighting.enabled = mode == ClassificationMode::Post;
+      r.render(cam, settings, width, height);
+      const Image8 raster = r.readImage();
+      const RenderStats rasterStats = r.stats();
+      EXPECT_FALSE(rasterStats.tiles);
+      settings.splatter = Splatter::Tiles;
+      r.render(cam, settings, width, height);
+      EXPECT_TRUE(r.stats().tiles);
+      EXPECT_EQ(r.stats().slabEntries, rasterStats.slabEntries);
+      EXPECT_GT(r.stats().splatMs, 0.0);
+      const Image8 tiles = r.readImage();
+      EXPECT_GT(meanValue(raster), 30.0);
+      // Early termination on (0.99): 3 levels measured against the CPU lists (as above).
+      EXPECT_LE(maxDifference(tiles, raster), 4);
+    }
+  }
+  SplatRenderer& r = wallRenderer(PartitionMode::Cpu);
+  RenderSettings settings = tileSettings();
+  settings.splatter = Splatter::Tiles;
+  settings.clip.cropEnabled = true;
+  settings.clip.cropMin = {0.0, 0.0, 0.0};
+  settings.clip.cropMax = {12.0, 23.0, 23.0};
+  r.render(cam, settings, width, height);
+  EXPECT_FALSE(r.stats().tiles) << "clipped frames are rasterized";
+  settings.clip = ClipRegion{};
+  r.beginFrame(cam, settings, width, height);
+  while (!r.stepFrame(5.0)) {
+  }
+  EXPECT_FALSE(r.stats().tiles) << "budgeted steps are rasterized";
+}
+
 // Seventy thousand faint splats over one tile in one slab: every one is added (llvmpipe ends a
 // shader's loops after 65535 iterations in all, which one splat an iteration would reach; the
 // picture was then a few SIMD rows short), checked against the closed form.
