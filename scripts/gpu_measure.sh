@@ -44,7 +44,10 @@ if [ "$mode" = all ] || [ "$mode" = tests ]; then
   tail -n 3 "$out/unit_tests.txt"
 fi
 if [ "$mode" = all ] || [ "$mode" = bench ]; then
-  "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --repeats 20 | tee "$out/compare.txt"
+  # The default frame, rasterized (ewa_ms) and in compute tiles from the GPU partition's lists
+  # (tile_ewa_ms, post-classified since 2026-11-28; not yet timed on a GPU) with their pictures.
+  "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --repeats 20 \
+    --images "$out/images_default" | tee "$out/compare.txt"
   # The compute tiles (tiles_ms) at 8 x 8 pixels beside the default 16 x 16 above.
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --sizes 1024 --repeats 7 \
     --tile-size 8 | tee -a "$out/compare.txt"
@@ -82,6 +85,14 @@ if [ "$mode" = all ] || [ "$mode" = bench ]; then
         --backend egl --resolution 1024,768 -o "$out/default_$res.png" --stats --slab-resolution "$res")"
     done
   done | tee "$out/coarse_slabs.txt"
+  # Whole frames in compute tiles (--splatter tiles) against rasterized, taking turns.
+  for i in 1 2 3; do
+    for splatter in raster tiles; do
+      echo "default volume 1024x768 --splatter $splatter: $("$bin/ewaview" "$assets/default.nrrd" \
+        --backend egl --resolution 1024,768 -o "$out/default_$splatter.png" --stats \
+        --splatter "$splatter")"
+    done
+  done | tee "$out/splatter.txt"
   # Classification on one thread beside all the machine's cores (the CPU side of a new volume
   # or transfer function): the three volumes, then a 512^3 one once each way.
   "$bin/ewaview-classify-bench" "$data/engine/engine.nhdr" "$data/bonsai/bonsai.nhdr" \
