@@ -6,6 +6,7 @@
 // opaque; post-classified frames composite in tile_ewa_post.comp.glsl): no rasterizer, no
 // blending, no slab images.
 #include "ewa_footprint.glsl"
+#include "clip_region.glsl"
 #include "tile_range.glsl"
 #include "dispatch_index.glsl"
 
@@ -94,8 +95,8 @@ shared uint unfinished;
 
 // (colour * optical depth, optical depth) of batch splat j (none past n) at the pixel centred at
 // `centre`, in the slab between `depths`: its footprint and its share of the kernel along the
-// ray, as the splat fragments take them.
-vec4 splatAt(uint j, uint n, vec2 centre, vec2 depths) {
+// ray (clipped: inside the depths `kept`), as the splat fragments take them.
+vec4 splatAt(uint j, uint n, vec2 centre, vec2 depths, vec2 kept) {
   if (j >= n) return vec4(0.0);
   vec4 box = batch[4u * j];
   vec2 dx = centre - box.xy;
@@ -105,8 +106,13 @@ vec4 splatAt(uint j, uint n, vec2 centre, vec2 depths) {
   if (r > uCutoff) return vec4(0.0);
   vec4 z = batch[4u * j + 2u];
   uint flags = batchOpen[j];
-  float share = slabFraction(z.x + dot(z.yz, dx), z.w, depths.x, depths.y,
-                             (flags & kFirstSlab) != 0u, (flags & kLastSlab) != 0u, uDepthProfile);
+  bool openNear = (flags & kFirstSlab) != 0u, openFar = (flags & kLastSlab) != 0u;
+  float mu = z.x + dot(z.yz, dx);
+  float share =
+      uClipCount > 0
+          ? clippedSlabFraction(mu, z.w, depths.x, depths.y, openNear, openFar, kept,
+                                uDepthProfile)
+          : slabFraction(mu, z.w, depths.x, depths.y, openNear, openFar, uDepthProfile);
   float depth = q.w * windowedGaussian(r, uCutoff) * share;
   return vec4(batch[4u * j + 3u].rgb * depth, depth);
 }
@@ -115,6 +121,7 @@ void main() {
   uint tile = gl_WorkGroupID.y * uint(uTiles.x) + gl_WorkGroupID.x;
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   vec2 centre = vec2(pixel) + 0.5;
+  vec2 kept = clippedDepths(centre);  // the crop box and clipping planes along this ray
   bool inside = all(lessThan(pixel, uViewport));
   vec4 picture = uSlabBegin > 0u && inside ? imageLoad(uPicture, pixel) : vec4(0.0);
   for (uint slab = uSlabBegin; slab < uSlabEnd; ++slab) {
@@ -144,10 +151,10 @@ void main() {
       // Eight splats an iteration: llvmpipe ends a shader's loops after 65535 iterations in all
       // (LP_MAX_TGSI_LOOP_ITERATIONS), which a busy tile's slabs reach one splat at a time.
       for (uint j = 0u; open && j < n; j += 8u) {
-        sums += splatAt(j, n, centre, depths) + splatAt(j + 1u, n, centre, depths) +
-                splatAt(j + 2u, n, centre, depths) + splatAt(j + 3u, n, centre, depths) +
-                splatAt(j + 4u, n, centre, depths) + splatAt(j + 5u, n, centre, depths) +
-                splatAt(j + 6u, n, centre, depths) + splatAt(j + 7u, n, centre, depths);
+        sums += splatAt(j, n, centre, depths, kept) + splatAt(j + 1u, n, centre, depths, kept) +
+                splatAt(j + 2u, n, centre, depths, kept) + splatAt(j + 3u, n, centre, depths, kept) +
+                splatAt(j + 4u, n, centre, depths, kept) + splatAt(j + 5u, n, centre, depths, kept) +
+                splatAt(j + 6u, n, centre, depths, kept) + splatAt(j + 7u, n, centre, depths, kept);
       }
       barrier();
     }

@@ -9,6 +9,7 @@
 #define SLAB_QUARTERS 1
 #define SLAB_NEIGHBOUR_IN_FRONT 1
 #include "ewa_footprint.glsl"
+#include "clip_region.glsl"
 #include "slab_classify.glsl"
 
 // The records of tile_ewa.comp.glsl, the value in place of the unused fourth colour channel:
@@ -49,8 +50,10 @@ shared uint unfinished;
 
 // Adds batch splat j (none past n) at the pixel centred at `centre`, in the slab between
 // `depths`, to the sums of the slab's first two quarters (weight * value, weight, weight *
-// value, weight) and of its last two, as the splat fragments add them.
-void addSplat(uint j, uint n, vec2 centre, vec2 depths, inout vec4 front, inout vec4 back) {
+// value, weight) and of its last two, as the splat fragments add them (clipped: inside the
+// depths `kept`).
+void addSplat(uint j, uint n, vec2 centre, vec2 depths, vec2 kept, inout vec4 front,
+              inout vec4 back) {
   if (j >= n) return;
   vec4 box = batch[4u * j];
   vec2 dx = centre - box.xy;
@@ -62,7 +65,7 @@ void addSplat(uint j, uint n, vec2 centre, vec2 depths, inout vec4 front, inout 
   uint flags = batchOpen[j];
   vec4 d = q.w * windowedGaussian(r, uCutoff) *
            slabQuarters(z.x + dot(z.yz, dx), z.w, depths.x, depths.y, (flags & kFirstSlab) != 0u,
-                        (flags & kLastSlab) != 0u, vec2(-1e30, 1e30), uDepthProfile);
+                        (flags & kLastSlab) != 0u, kept, uDepthProfile);
   float v = batch[4u * j + 3u].w;
   front += vec4(v * d.x, d.x, v * d.y, d.y);
   back += vec4(v * d.z, d.z, v * d.w, d.w);
@@ -79,6 +82,7 @@ void main() {
   ivec2 local = ivec2(int(me) % kSide, int(me) / kSide);
   ivec2 pixel = ivec2(gl_WorkGroupID.xy) * TILE_SIZE + local - 1;
   vec2 centre = vec2(pixel) + 0.5;
+  vec2 kept = clippedDepths(centre);  // the crop box and clipping planes along this ray
   bool inside = all(greaterThanEqual(pixel, ivec2(0))) && all(lessThan(pixel, uViewport));
   bool own = inside && all(greaterThan(local, ivec2(0))) && all(lessThan(local, ivec2(kSide - 1)));
   vec4 picture = vec4(0.0);
@@ -119,14 +123,14 @@ void main() {
       // (LP_MAX_TGSI_LOOP_ITERATIONS), which the middle tiles of a small picture reached with
       // four (engine at 128^2: 144 levels off in a block of tiles).
       for (uint j = 0u; inside && j < n; j += 8u) {
-        addSplat(j, n, centre, depths, front, back);
-        addSplat(j + 1u, n, centre, depths, front, back);
-        addSplat(j + 2u, n, centre, depths, front, back);
-        addSplat(j + 3u, n, centre, depths, front, back);
-        addSplat(j + 4u, n, centre, depths, front, back);
-        addSplat(j + 5u, n, centre, depths, front, back);
-        addSplat(j + 6u, n, centre, depths, front, back);
-        addSplat(j + 7u, n, centre, depths, front, back);
+        addSplat(j, n, centre, depths, kept, front, back);
+        addSplat(j + 1u, n, centre, depths, kept, front, back);
+        addSplat(j + 2u, n, centre, depths, kept, front, back);
+        addSplat(j + 3u, n, centre, depths, kept, front, back);
+        addSplat(j + 4u, n, centre, depths, kept, front, back);
+        addSplat(j + 5u, n, centre, depths, kept, front, back);
+        addSplat(j + 6u, n, centre, depths, kept, front, back);
+        addSplat(j + 7u, n, centre, depths, kept, front, back);
       }
       barrier();
     }

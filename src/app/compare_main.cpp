@@ -88,7 +88,7 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   m.sprites.draw(size, size, halfFloatSlabs(rs));
   m.tiles.setFootprints(tileFootprints(m.ewa, scene.volume, cam, rs, size, size), float(rs.cutoff));
   m.tiles.draw(size, size, halfFloatSlabs(rs));
-  // The compute EWA splatter draws unclipped frames, pre-classified or post-classified as the
+  // The compute EWA splatter draws front-to-back frames, pre-classified or post-classified as the
   // default (SplatRenderer::tileComposite), from 64 bytes a splat: up to 8 M splats (a 512^3
   // volume's 74 M would take 4.7 GB twice over). Its slab lists are the renderer's own where it
   // built them on the GPU (binned where they are; their making is in partition_ms), else the
@@ -101,7 +101,7 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
     if (const GpuSlabPartition* lists = m.ewa.gpuSlabLists()) m.tileEwa.useGpuSlabLists(*lists);
     const auto start = BenchClock::now();
     m.ewa.writeTileSplats(m.tileEwa.splatBuffer());
-    if (tileFrame.post) m.ewa.prepareTileComposite(m.tileEwa.compositeProgram());
+    m.ewa.prepareTileComposite(m.tileEwa.compositeProgram());
     glFinish();
     return millisecondsSince(start) + m.tileEwa.draw(size, size).totalMs();
   };

@@ -37,7 +37,7 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
       ->check(CLI::IsMember({"field", "voxel"}));
   app.add_option("--splatter", p.splatter,
                  "Whole composite frames (headless): rasterized slab by slab (raster, default) "
-                 "or in compute tiles (tiles: no rasterizer, no blending; unclipped, front to "
+                 "or in compute tiles (tiles: no rasterizer, no blending; front to "
                  "back, post-classified only with 4 samples a slab and field normals, else "
                  "rasterized)")
       ->check(CLI::IsMember({"raster", "tiles"}));

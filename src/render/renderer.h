@@ -41,8 +41,9 @@ bool parsePostNormals(const std::string& text, PostNormals* normals);
 // How the splat renderer draws a whole composite frame: rasterized slab by slab (points and
 // quads blended into slab images), or in compute tiles (TileEwaSplatter: each screen tile's
 // slabs added up and classified in one work group; no rasterizer, no blending). Tiles draw
-// unclipped front-to-back frames, pre-classified or post-classified with four samples a slab
-// and field normals, and only frames drawn at once (headless); the rest is rasterized.
+// front-to-back frames (cropped and clipped too), pre-classified or post-classified with four
+// samples a slab and field normals, and only frames drawn at once (headless); the rest is
+// rasterized.
 enum class Splatter { Raster = 0, Tiles = 1 };
 const char* splatterName(Splatter splatter);
 bool parseSplatter(const std::string& text, Splatter* splatter);

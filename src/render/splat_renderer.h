@@ -149,10 +149,9 @@ class SplatRenderer : public Renderer {
   // The compute splatter's records of the last frame begun (TileEwaSplat, tile_ewa_splatter.h:
   // four vec4 a splat in splats() order, zeros for a splat not drawn), made on the GPU as the
   // splat vertex shaders make each footprint (shaders/tile_ewa_footprints.comp.glsl), into
-  // `out`, which must hold splats().size() records. Unclipped frames: what the compute
-  // splatter draws. For the benchmarks.
+  // `out`, which must hold splats().size() records.
   void writeTileSplats(gl::Buffer& out);
-  // Whether the compute splatter draws the last frame begun: unclipped, front to back and
+  // Whether the compute splatter draws the last frame begun: front to back (clipped or not) and
   // pre-classified, or post-classified, pre-integrated in quarters of a slab, shaded (if at
   // all) from the field's gradient; and the TileEwaFrame flags (post, shading) that say how.
   bool tileComposite(bool& post, bool& shading) const;
@@ -161,9 +160,10 @@ class SplatRenderer : public Renderer {
   const GpuSlabPartition* gpuSlabLists() const {
     return frame_.gpuSlabs ? gpuPartition_.get() : nullptr;
   }
-  // Sets the classification's uniforms and textures (the slab pass's: the pair table, the
-  // data's box, the light) of the last frame begun on the compute splatter's post-classified
-  // composite `program` (TileEwaSplatter::compositeProgram), for its next draw.
+  // Sets the crop box's and clipping planes' uniforms and, post-classified, the
+  // classification's uniforms and textures (the slab pass's: the pair table, the data's box,
+  // the light) of the last frame begun on the compute splatter's composite `program`
+  // (TileEwaSplatter::compositeProgram), for its next draw.
   void prepareTileComposite(gl::Program& program);
 
  private:

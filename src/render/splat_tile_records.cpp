@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "gl/gl_error.h"
+#include "render/clip_uniforms.h"
 #include "render/splat_renderer.h"
 #include "render/tile_ewa_splatter.h"
 
@@ -14,8 +15,8 @@ void SplatRenderer::writeTileSplats(gl::Buffer& out) {
   if (!volume_ || count == 0) return;
   if (out.size() < GLsizeiptr(count * sizeof(TileEwaSplat)))
     throw std::invalid_argument("writeTileSplats: the buffer holds fewer records than splats");
-  // The frame's own variant (clipped frames compile too, though the compute splatter does not
-  // draw them), so the footprints come from the same compiled setup.
+  // The frame's own variant (clipped or not), so the footprints come from the same compiled
+  // setup.
   const SplatVariant variant = splatVariant(frame_.settings, frame_.texelBuffers);
   if (!tileSplatPass_ || tileSplatVariant_ != variant.key()) {
     tileSplatPass_ = shaders_.computeProgram("tile_ewa_footprints.comp.glsl", variant.defines());
@@ -59,7 +60,7 @@ bool SplatRenderer::drawTiles() {
   }
   tiles_->reserveSplats(classified_.splats.size());
   writeTileSplats(tiles_->splatBuffer());
-  if (tileFrame.post) prepareTileComposite(tiles_->compositeProgram());
+  prepareTileComposite(tiles_->compositeProgram());
   tiles_->draw(frame_.width, frame_.height);
   // The GPU's counts are read after the final pass (stepFrame), as for rasterized frames.
   if (!frame_.indirect)
@@ -73,13 +74,14 @@ bool SplatRenderer::tileComposite(bool& post, bool& shading) const {
   const RenderSettings& s = frame_.settings;
   post = postClassified(s);
   shading = fieldNormals(s);
-  if (s.mode != RenderMode::Composite || s.clip.active() || s.order != CompositeOrder::FrontToBack)
-    return false;
+  if (s.mode != RenderMode::Composite || s.order != CompositeOrder::FrontToBack) return false;
   return !post || (quarterSlabs(s) && (shading || !s.lighting.enabled));
 }
 
 void SplatRenderer::prepareTileComposite(gl::Program& program) {
   if (!volume_) return;
+  setClipUniforms(program, frame_.settings.clip, *volume_, frame_.camera, frame_.proj);
+  if (!postClassified(frame_.settings)) return;
   setClassifyUniforms(program, frame_.proj, frame_.settings);
   if (pairedSlabs(frame_.settings)) pairTable_.bindUnits(kPairTableUnit, kPairPrefixUnit);
 }

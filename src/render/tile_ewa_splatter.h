@@ -41,8 +41,9 @@ struct TileEwaFrame {
   glm::vec2 depthProfile{1e30f, 1.0f};  // DepthProfile (erfReach, scale)
   float termination = 0.99f;
   // Post-classified, pre-integrated in quarters of each slab, front to back (the splat
-  // renderer's default); the caller sets the classification's uniforms and textures on
-  // compositeProgram() (SplatRenderer::prepareTileComposite). `shading`: with normals from the
+  // renderer's default). Either way the caller sets the clip region's (and, post-classified,
+  // the classification's) uniforms and textures on compositeProgram()
+  // (SplatRenderer::prepareTileComposite). `shading`: with normals from the
   // field's gradient.
   bool post = false;
   bool shading = false;

@@ -246,23 +246,30 @@ TEST(StatsCli, OcclusionCullingCountsCulledDrawsAndKeepsThePicture) {
 }
 
 // --splatter tiles: the frame drawn in compute tiles (splatter "tiles"), the rasterized picture
-// within a few levels; a clipped frame stays rasterized; a bad value is a usage error.
+// within a few levels, cropped too; back to front it is rasterized; a bad value is a usage
+// error.
 TEST(StatsCli, SplatterTilesDrawsTheFrameInTiles) {
   const std::string dir = testOutputDir();
   const std::string common = "--synthetic marschner-lobb:24 --resolution 48,48 --stats";
+  const std::string crop = " --crop 0,12,0,23,0,23";
   const CliRun raster = runEwaview(common + " -o " + dir + "/splatter_raster.png");
   const CliRun tiles = runEwaview(common + " --splatter tiles -o " + dir + "/splatter_tiles.png");
-  const CliRun cropped = runEwaview(common + " --splatter tiles --crop 0,12,0,23,0,23 -o " + dir +
-                                    "/splatter_cropped.png");
-  ASSERT_EQ(raster.code, 0) << raster.err;
-  ASSERT_EQ(tiles.code, 0) << tiles.err;
-  ASSERT_EQ(cropped.code, 0) << cropped.err;
+  const CliRun croppedRaster = runEwaview(common + crop + " -o " + dir + "/splatter_crop_r.png");
+  const CliRun croppedTiles =
+      runEwaview(common + crop + " --splatter tiles -o " + dir + "/splatter_crop_t.png");
+  const CliRun backToFront = runEwaview(
+      common + " --splatter tiles --compositing back-to-front -o " + dir + "/splatter_back.png");
+  for (const CliRun* run : {&raster, &tiles, &croppedRaster, &croppedTiles, &backToFront})
+    ASSERT_EQ(run->code, 0) << run->err;
   EXPECT_EQ(json::parse(raster.out)["splatter"], "raster");
   EXPECT_EQ(json::parse(tiles.out)["splatter"], "tiles");
-  EXPECT_EQ(json::parse(cropped.out)["splatter"], "raster");
-  EXPECT_LE(
-      maxDifference(readPng(dir + "/splatter_tiles.png"), readPng(dir + "/splatter_raster.png")),
-      4);
+  EXPECT_EQ(json::parse(croppedTiles.out)["splatter"], "tiles");
+  EXPECT_EQ(json::parse(backToFront.out)["splatter"], "raster");
+  const auto picture = [&](const char* name) { return readPng(dir + "/" + name + ".png"); };
+  EXPECT_LE(maxDifference(picture("splatter_tiles"), picture("splatter_raster")), 4);
+  EXPECT_LE(maxDifference(picture("splatter_crop_t"), picture("splatter_crop_r")), 4);
+  EXPECT_GT(maxDifference(picture("splatter_crop_t"), picture("splatter_tiles")), 40)
+      << "the crop should show";
   EXPECT_EQ(runEwaview("--synthetic sphere:8 --splatter compute -o " + dir + "/x.png").code, 2);
 }
 

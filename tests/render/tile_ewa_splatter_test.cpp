@@ -267,7 +267,7 @@ TEST_F(TileEwaSplatterTest, BinsTheGpuPartitionsLists) {
                                    GL_DYNAMIC_DRAW);
     r.writeTileSplats(splatter.splatBuffer());
     splatter.useGpuSlabLists(*r.gpuSlabLists());
-    if (frame.post) r.prepareTileComposite(splatter.compositeProgram());
+    r.prepareTileComposite(splatter.compositeProgram());
     const TileEwaSplatter::Timing t = splatter.draw(width, height);
     EXPECT_GT(t.entries, r.gpuSlabLists()->entryCount() / 2);
     const Image8 tiles = tileEwaImage(splatter.picture(), width, height, settings.background);
@@ -280,7 +280,8 @@ TEST_F(TileEwaSplatterTest, BinsTheGpuPartitionsLists) {
 
 // RenderSettings::splatter: whole frames drawn in tiles by the renderer itself are the
 // rasterized frames (pre-classified and post-classified shaded, early termination, either
-// partition), with the same slab entries; clipped frames and budgeted steps stay rasterized.
+// partition, cropped and cut by a tilted plane), with the same slab entries; back-to-front
+// frames and budgeted steps stay rasterized.
 TEST_F(TileEwaSplatterTest, RendererDrawsWholeFramesInTilesWhenAsked) {
   const Camera cam = obliqueCamera();
   const int width = 61, height = 53;
@@ -307,14 +308,32 @@ TEST_F(TileEwaSplatterTest, RendererDrawsWholeFramesInTilesWhenAsked) {
     }
   }
   SplatRenderer& r = wallRenderer(PartitionMode::Cpu);
+  for (ClassificationMode mode : {ClassificationMode::Pre, ClassificationMode::Post}) {
+    SCOPED_TRACE("clipped " + std::to_string(int(mode)));
+    RenderSettings settings = tileSettings();
+    settings.classification.mode = mode;
+    // The wall's left part cropped away, the haze cut by a tilted plane.
+    settings.clip.cropEnabled = true;
+    settings.clip.cropMin = {4.3, 0.0, 0.0};
+    settings.clip.cropMax = {23.0, 23.0, 23.0};
+    settings.clip.planes.push_back(ClipPlane{{11.5, 11.5, 8.0}, {0.3, 0.2, 1.0}, true});
+    r.render(cam, settings, width, height);
+    const Image8 raster = r.readImage();
+    settings.splatter = Splatter::Tiles;
+    r.render(cam, settings, width, height);
+    EXPECT_TRUE(r.stats().tiles);
+    const Image8 tiles = r.readImage();
+    settings.clip = ClipRegion{};
+    r.render(cam, settings, width, height);
+    EXPECT_GT(maxDifference(r.readImage(), tiles), 40) << "the clip region should show";
+    EXPECT_LE(maxDifference(tiles, raster), 4);
+  }
   RenderSettings settings = tileSettings();
   settings.splatter = Splatter::Tiles;
-  settings.clip.cropEnabled = true;
-  settings.clip.cropMin = {0.0, 0.0, 0.0};
-  settings.clip.cropMax = {12.0, 23.0, 23.0};
+  settings.order = CompositeOrder::BackToFront;
   r.render(cam, settings, width, height);
-  EXPECT_FALSE(r.stats().tiles) << "clipped frames are rasterized";
-  settings.clip = ClipRegion{};
+  EXPECT_FALSE(r.stats().tiles) << "back-to-front frames are rasterized";
+  settings.order = CompositeOrder::FrontToBack;
   r.beginFrame(cam, settings, width, height);
   while (!r.stepFrame(5.0)) {
   }

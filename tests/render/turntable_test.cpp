@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <iostream>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include "cli_run.h"
@@ -110,8 +110,8 @@ TEST(Turntable, FramesComeFromTheRendererTheOptionsName) {
   const std::string dir = freshDir("turntable_renderer");
   fs::create_directories(dir);
   const std::string front = kScene + "--camera-position 11.5,11.5,71.5 ";
-  ASSERT_EQ(ewaview(front + "--renderer shearwarp --turntable 2 --output " + dir + "/sw_%d.png").code,
-            0);
+  ASSERT_EQ(
+      ewaview(front + "--renderer shearwarp --turntable 2 --output " + dir + "/sw_%d.png").code, 0);
   ASSERT_EQ(ewaview(front + "--renderer shearwarp --output " + dir + "/sw.png").code, 0);
   ASSERT_EQ(ewaview(front + "--output " + dir + "/splat.png").code, 0);
   const Image8 frame = readPng(dir + "/sw_0.png"), single = readPng(dir + "/sw.png");
@@ -133,8 +133,8 @@ TEST(Turntable, VideosHoldTheFramesAtTheirSizeAndRate) {
       "--camera-view-up 0,1,0 --camera-position 11.5,11.5,71.5 ";
   ASSERT_EQ(ewaview(scene + "--output " + dir + "/single.png").code, 0);
   const Image8 single = readPng(dir + "/single.png");
-  for (const auto& [name, codec] : {std::pair<std::string, std::string>{"spin.mp4", "h264"},
-                                    {"spin.webm", "vp9"}}) {
+  for (const auto& [name, codec] :
+       {std::pair<std::string, std::string>{"spin.mp4", "h264"}, {"spin.webm", "vp9"}}) {
     const CliRun r = ewaview(scene + "--turntable 8 --fps 12 --output " + dir + "/" + name);
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_TRUE(r.err.empty()) << r.err;  // no encoder chatter
@@ -156,10 +156,10 @@ TEST(Turntable, VideosHoldTheFramesAtTheirSizeAndRate) {
 
 TEST(Turntable, OddSizedVideosDropTheLastRowAndColumn) {
   const std::string dir = freshDir("turntable_odd");
-  ASSERT_EQ(ewaview("--synthetic sphere:12 --resolution 33,21 --turntable 2 --output " + dir +
-                    "/odd.mp4")
-                .code,
-            0);
+  ASSERT_EQ(
+      ewaview("--synthetic sphere:12 --resolution 33,21 --turntable 2 --output " + dir + "/odd.mp4")
+          .code,
+      0);
   const DecodedVideo video = readVideo(dir + "/odd.mp4");
   ASSERT_EQ(video.frames.size(), 2u);
   EXPECT_EQ(video.frames[0].width, 32);
@@ -170,15 +170,16 @@ TEST(Turntable, BadVideoPathsAreOneLineAndExitOne) {
   const std::string dir = freshDir("turntable_bad_video");
   fs::create_directories(dir + "/taken.mp4");
   std::ofstream(dir + "/file") << "x";
-  for (const std::string& out :
-       {dir + "/taken.mp4", dir + "/file/spin.mp4", dir + "/spin.avi", std::string("/proc/x.webm")}) {
+  for (const std::string& out : {dir + "/taken.mp4", dir + "/file/spin.mp4", dir + "/spin.avi",
+                                 std::string("/proc/x.webm")}) {
     const CliRun r = ewaview("--synthetic sphere:8 --turntable 2 --output " + out);
     EXPECT_EQ(r.code, 1) << out;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_EQ(r.err.rfind("ewaview: " + out + ": ", 0), 0u) << r.err;
   }
   EXPECT_FALSE(fs::exists(dir + "/spin.avi"));
-  EXPECT_EQ(ewaview("--synthetic sphere:8 --turntable 2 --fps 0 --output " + dir + "/a.mp4").code, 2);
+  EXPECT_EQ(ewaview("--synthetic sphere:8 --turntable 2 --fps 0 --output " + dir + "/a.mp4").code,
+            2);
 }
 
 }  // namespace
