@@ -90,7 +90,7 @@ class TileEwaSplatter {
 
  private:
   int tileSize_;
-  const gl::ShaderLibrary& shaders_;
+  gl::ShaderLibrary shaders_;  // a copy: callers pass temporaries; compiles the variants later
   gl::Program countPass_, scanPass_, scatterPass_, compositePass_;
   std::optional<gl::Program> postPass_[2];  // post-classified, unshaded and shaded
   std::optional<gl::Program> gpuCountPass_, gpuScatterPass_;  // binning the GPU's lists
