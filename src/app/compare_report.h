@@ -23,7 +23,8 @@ struct CompareRow {
   double tilesMs = -1, tilesBinMs = -1;
   // The same frame splatted by compute tiles, slab by slab (TileEwaSplatter): its records,
   // binning and compositing; measured where the tiles draw the frame's settings
-  // (SplatRenderer::tileComposite: unclipped, post-classified only pre-integrated in quarters).
+  // (SplatRenderer::tileComposite: front to back, post-classified only pre-integrated in
+  // quarters).
   double tileEwaMs = -1;
   size_t gpuBytes = 0;  // 0: the renderer does not count it
   double gpuBytesPerSplat = 0;

@@ -31,10 +31,10 @@ struct RenderOptionText {
 
 // Adds --classification, --slab-preintegration, --slab-samples, --prefilter, --post-normals,
 // --splatter, --compositing, --termination, --occlusion-culling, --slab-resolution,
-// --slab-precision,
-// --xray-map, --xray-scale, --shading, --ambient, --diffuse, --specular, --shininess,
-// --gradient, --surface-threshold, --surface-opacity-threshold, --surface-min-gradient and
-// --surface-opacity to `app`, writing into `settings` and `text`; both must outlive the parse.
+// --slab-precision, --xray-map, --xray-scale, --shading, --ambient, --diffuse, --specular,
+// --shininess, --gradient, --surface-threshold, --surface-opacity-threshold,
+// --surface-min-gradient and --surface-opacity to `app`, writing into `settings` and `text`; both
+// must outlive the parse.
 void addShadingOptions(CLI::App& app, RenderSettings& settings, RenderOptionText& text);
 // Applies the parsed text options; returns a usage error message, or "" when all is well.
 std::string finishShadingOptions(const RenderOptionText& text, RenderSettings* settings);
