@@ -167,6 +167,8 @@ int run(int argc, char** argv) {
   int repeats = 5;
   bool csv = false, json = false, noVtk = false, orthographic = false;
   RenderSettings settings;  // EWA's: the defaults unless --kernel-width, --cutoff, ...
+  // The EWA column is the rasterized frame; the tile_ewa column times the tiles beside it.
+  settings.splatter = Splatter::Raster;
   std::string classification = classificationModeName(settings.classification.mode),
               culling = "auto", slabRects = "on", pairs = "on", slabResolution = "auto",
               slabPrecision = "auto", partition = "auto";

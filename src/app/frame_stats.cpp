@@ -44,6 +44,7 @@ std::string frameStatsJson(const RenderStats& s, const std::string& renderer, in
   j["gpu_bytes_per_splat"] = perSplat > 0.0 ? nlohmann::ordered_json(perSplat) : nullptr;
   j["peak_rss"] = peakRssBytes();
   j["huge_pages"] = hugePagesInUse();
+  if (!s.note.empty()) j["note"] = s.note;
   return j.dump();
 }
 

@@ -1,6 +1,8 @@
 // HeadlessSession: context first, then shaders and the factory's renderer; GL objects go first.
 #include "app/headless_session.h"
 
+#include <iostream>
+
 #include "platform/headless_context.h"
 #include "render/renderer_factory.h"
 
@@ -37,6 +39,9 @@ Image8 HeadlessSession::render(const Volume& volume, const TransferFunction& tf,
     tfSet_ = true;
   }
   renderer_->render(camera, settings, width, height);
+  const std::string note = renderer_->stats().note;
+  if (!note.empty() && note != lastNote_) std::cerr << "ewaview: " << note << "\n";
+  lastNote_ = note;  // said once while it holds
   return renderer_->readImage();
 }
 

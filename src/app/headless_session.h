@@ -39,6 +39,7 @@ class HeadlessSession {
   const Volume* volume_ = nullptr;  // what renderer_ was given, to skip repeated uploads
   TransferFunction tf_;
   bool tfSet_ = false;
+  std::string lastNote_;  // RenderStats::note, said on stderr when it first appears
 };
 
 }  // namespace ewa

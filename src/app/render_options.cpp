@@ -36,11 +36,12 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
                  "of the reconstructed field (field, default) or the splats' voxel normals (voxel)")
       ->check(CLI::IsMember({"field", "voxel"}));
   app.add_option("--splatter", p.splatter,
-                 "Whole composite frames (headless): rasterized slab by slab (raster, default) "
-                 "or in compute tiles (tiles: no rasterizer, no blending; front to "
-                 "back, post-classified only with 4 samples a slab and field normals, else "
-                 "rasterized)")
-      ->check(CLI::IsMember({"raster", "tiles"}));
+                 "Whole composite frames (headless): rasterized slab by slab (raster), in "
+                 "compute tiles (tiles: no rasterizer, no blending; front to back, "
+                 "post-classified only with 4 samples a slab and field normals, else "
+                 "rasterized), or auto (default: raster on software GL, else the faster as "
+                 "timed frames find it)")
+      ->check(CLI::IsMember({"raster", "tiles", "auto"}));
   app.add_option("--compositing", p.compositing,
                  "Slab order: front-to-back (default) or back-to-front")
       ->check(CLI::IsMember({"front-to-back", "back-to-front"}));

@@ -20,7 +20,7 @@ struct RenderOptionText {
   std::string classification;  // empty: post, or pre with surface splats
   std::string slabPreintegration = "on";
   std::string postNormals = "field";
-  std::string splatter = "raster";
+  std::string splatter = "auto";
   std::string occlusionCulling = "auto";
   std::string slabResolution = "auto";
   std::string slabPrecision = "auto";

@@ -16,8 +16,8 @@ constexpr NamedValue<SlabPrecision> kSlabPrecision[] = {
     {SlabPrecision::Auto, "auto"}, {SlabPrecision::Half, "half"}, {SlabPrecision::Float, "float"}};
 constexpr NamedValue<PostNormals> kPostNormals[] = {{PostNormals::Field, "field"},
                                                     {PostNormals::Voxel, "voxel"}};
-constexpr NamedValue<Splatter> kSplatter[] = {{Splatter::Raster, "raster"},
-                                              {Splatter::Tiles, "tiles"}};
+constexpr NamedValue<Splatter> kSplatter[] = {
+    {Splatter::Raster, "raster"}, {Splatter::Tiles, "tiles"}, {Splatter::Auto, "auto"}};
 constexpr NamedValue<RenderMode> kRenderMode[] = {
     {RenderMode::Composite, "composite"}, {RenderMode::XRay, "xray"}, {RenderMode::Mip, "mip"}};
 constexpr NamedValue<CompositeOrder> kCompositeOrder[] = {

@@ -43,8 +43,10 @@ bool parsePostNormals(const std::string& text, PostNormals* normals);
 // slabs added up and classified in one work group; no rasterizer, no blending). Tiles draw
 // front-to-back frames (cropped and clipped too), pre-classified or post-classified with four
 // samples a slab and field normals, and only frames drawn at once (headless); the rest is
-// rasterized.
-enum class Splatter { Raster = 0, Tiles = 1 };
+// rasterized. Auto: rasterized where the GPU's timers are not used (software rasterizers, where
+// tiles cost 11-14x the rasterized frame); elsewhere the faster as timed frames find it
+// (TwoWayTuner: a rasterized frame first, then one in tiles, README "Compute EWA splatting").
+enum class Splatter { Raster = 0, Tiles = 1, Auto = 2 };
 const char* splatterName(Splatter splatter);
 bool parseSplatter(const std::string& text, Splatter* splatter);
 
@@ -140,7 +142,7 @@ struct RenderSettings {
   // two halves in depth), or the splats' voxel normals summed in a second image (Voxel; also
   // post without pre-integration, which has no depth difference).
   PostNormals postNormals = PostNormals::Field;
-  Splatter splatter = Splatter::Raster;  // whole composite frames in compute tiles or not
+  Splatter splatter = Splatter::Auto;  // whole composite frames in compute tiles or not
   // Composite: each slab is splatted into an image as coarse as its kernels allow (up to 4
   // pixels a texel a side where every footprint is at least 2 texels wide, so near the eye in
   // magnified views; slab_image_scale.h) and read back bilinearly, classified per pixel; the
@@ -192,6 +194,9 @@ struct RenderStats {
   // rounding of their sums with it) may vary between frames; false: the CPU's, or none.
   bool gpuPartition = false;
   bool tiles = false;  // the splat stage ran in compute tiles (RenderSettings::splatter)
+  // Why the frame was not drawn as asked, in one line (the compute splatter's programs did not
+  // build on this GL, so it was rasterized); empty when it was.
+  std::string note;
   int slabPasses = 0;  // four samples a slab: the passes each slab took (1 or 2); 0 otherwise
   // Wall time of the last frame (render(), or beginFrame and every stepFrame), waits for the
   // GPU included.

@@ -759,7 +759,7 @@ bool SplatRenderer::stepFrame(double budgetMs) {
   frame_.timed = gpuTimers_ && !std::isfinite(budgetMs) && frame_.drawnWeight == 0.0;
   if (frame_.timed) glQueryCounter(timers_[0], GL_TIMESTAMP);
   // A whole composite frame in compute tiles, if asked for and they draw its settings.
-  if (frame_.drawSplats && frame_.settings.splatter == Splatter::Tiles &&
+  if (frame_.drawSplats && tilesWanted(frame_.settings) &&
       frame_.settings.mode == RenderMode::Composite && !std::isfinite(budgetMs) &&
       frame_.nextSlab == 0 && drawTiles()) {
     frame_.drawSplats = false;
@@ -807,8 +807,10 @@ bool SplatRenderer::stepFrame(double budgetMs) {
   }
   // Auto passes: this frame's splat stage a slab entry, for the way it took (the GPU
   // partition's entries are only counted above).
-  if (frame_.timed && frame_.quarters && frame_.settings.slabPasses == 0 && stats_.slabEntries > 0)
+  if (frame_.timed && frame_.quarters && frame_.settings.slabPasses == 0 && !frame_.tiles &&
+      stats_.slabEntries > 0)
     passTuner_.report(frame_.slabPasses - 1, stats_.splatMs / double(stats_.slabEntries));
+  reportSplatterCost();
   frame_.active = false;
   stats_.renderMs += millisecondsSince(start);
   return true;

@@ -113,6 +113,7 @@ void SplatRenderer::setVolume(const Volume& volume) {
   volume_ = &volume;
   splatsDirty_ = true;
   passTuner_.reset();  // another volume: both ways timed again
+  splatterTuner_.reset();
 }
 
 void SplatRenderer::setTransferFunction(const TransferFunction& tf) {

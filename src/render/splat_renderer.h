@@ -224,6 +224,13 @@ class SplatRenderer : public Renderer {
   // Draws the whole frame in compute tiles (RenderSettings::splatter) if it can: false, and
   // nothing drawn, where tileComposite says the tiles do not draw these settings.
   bool drawTiles();
+  bool drawTilesNow();  // drawTiles, failures thrown
+  // Whether a whole frame under `settings` is drawn in tiles if they draw it (splatter: Tiles,
+  // or Auto's choice where the GPU's timers are used).
+  bool tilesWanted(const RenderSettings& settings) const;
+  // Auto splatter: this timed frame's splat stage a slab entry of the whole frame, for the way
+  // it took (frames the tiles do not draw are not counted).
+  void reportSplatterCost();
   // GL state every step needs again (a window draws other things between steps).
   void bindFrameState();
   void setSlabLoopState();
@@ -350,6 +357,9 @@ class SplatRenderer : public Renderer {
   bool gpuTimers_ = false;
   bool passHalfCulling_ = true;  // setPassHalfCulling
   TwoWayTuner passTuner_;        // slabPasses auto: one pass a slab (way 0) or two (way 1)
+  TwoWayTuner splatterTuner_;    // splatter auto: rasterized (way 0) or in tiles (way 1)
+  // The compute splatter's programs failed to build on this GL: auto rasterizes from then on.
+  bool tilesFailed_ = false;
   float pointSizeLimit_ = 64.0f;
   float glPointSizeLimit_ = 64.0f;
   int maxViewport_ = 16384;  // GL_MAX_VIEWPORT_DIMS, the smaller

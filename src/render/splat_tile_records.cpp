@@ -32,7 +32,40 @@ void SplatRenderer::writeTileSplats(gl::Buffer& out) {
   gl::checkGlError("tile splat records");
 }
 
+bool SplatRenderer::tilesWanted(const RenderSettings& settings) const {
+  if (settings.splatter == Splatter::Tiles) return true;
+  return settings.splatter == Splatter::Auto && gpuTimers_ && !tilesFailed_ &&
+         splatterTuner_.choice() == 1;
+}
+
+void SplatRenderer::reportSplatterCost() {
+  bool post = false, shading = false;
+  if (!frame_.timed || frame_.settings.splatter != Splatter::Auto || tilesFailed_ ||
+      !tileComposite(post, shading))
+    return;
+  // Per entry of the whole frame: early termination leaves the rasterizer's later slabs
+  // undrawn, and what it saves counts for it.
+  size_t entries = 0;
+  for (const Slab& slab : frame_.slabs) entries += slab.count;
+  if (entries > 0) splatterTuner_.report(frame_.tiles ? 1 : 0, stats_.splatMs / double(entries));
+}
+
 bool SplatRenderer::drawTiles() {
+  if (frame_.settings.splatter != Splatter::Auto) return drawTilesNow();
+  try {
+    return drawTilesNow();
+  } catch (const gl::GlError& e) {
+    // A GL whose compiler rejects the tiles' programs (they have run on Mesa and NVIDIA only):
+    // auto rasterizes instead, and says why once.
+    tilesFailed_ = true;
+    const std::string what = e.what();
+    stats_.note =
+        "compute tiles unavailable, frames rasterized: " + what.substr(0, what.find('\n'));
+    return false;
+  }
+}
+
+bool SplatRenderer::drawTilesNow() {
   TileEwaFrame tileFrame;
   if (!tileComposite(tileFrame.post, tileFrame.shading) || classified_.splats.size() == 0)
     return false;

@@ -247,7 +247,8 @@ TEST(StatsCli, OcclusionCullingCountsCulledDrawsAndKeepsThePicture) {
 
 // --splatter tiles: the frame drawn in compute tiles (splatter "tiles"), the rasterized picture
 // within a few levels, cropped too; back to front it is rasterized; a bad value is a usage
-// error.
+// error. The default (auto) rasterizes one frame alone (its first way, and the only one on
+// software GL).
 TEST(StatsCli, SplatterTilesDrawsTheFrameInTiles) {
   const std::string dir = testOutputDir();
   const std::string common = "--synthetic marschner-lobb:24 --resolution 48,48 --stats";
@@ -259,8 +260,11 @@ TEST(StatsCli, SplatterTilesDrawsTheFrameInTiles) {
       runEwaview(common + crop + " --splatter tiles -o " + dir + "/splatter_crop_t.png");
   const CliRun backToFront = runEwaview(
       common + " --splatter tiles --compositing back-to-front -o " + dir + "/splatter_back.png");
-  for (const CliRun* run : {&raster, &tiles, &croppedRaster, &croppedTiles, &backToFront})
+  const CliRun automatic = runEwaview(common + " --splatter auto -o " + dir + "/splatter_a.png");
+  for (const CliRun* run :
+       {&raster, &tiles, &croppedRaster, &croppedTiles, &backToFront, &automatic})
     ASSERT_EQ(run->code, 0) << run->err;
+  EXPECT_EQ(json::parse(automatic.out)["splatter"], "raster");
   EXPECT_EQ(json::parse(raster.out)["splatter"], "raster");
   EXPECT_EQ(json::parse(tiles.out)["splatter"], "tiles");
   EXPECT_EQ(json::parse(croppedTiles.out)["splatter"], "tiles");

@@ -32,19 +32,6 @@ CliRun ewaview(const fs::path& dir, const std::string& args) {
   return runEwaview(args, "gl_fault", 60);
 }
 
-// A copy of shaders/ in `dir` with the text `from` in `file` replaced by `to`.
-fs::path brokenShaders(const fs::path& dir, const std::string& file, const std::string& from,
-                       const std::string& to) {
-  const fs::path shaders = dir / "shaders";
-  if (!fs::exists(shaders)) fs::copy(EWA_SOURCE_SHADER_DIR, shaders);
-  std::string text = readWholeFile(shaders / file);
-  const size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from << " not in " << file;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  std::ofstream(shaders / file, std::ios::binary | std::ios::trunc) << text;
-  return shaders;
-}
-
 TEST(GlFaults, ShaderCompileErrorIsOneLineWithTheGlLogAndExitOne) {
   const fs::path dir = scratch();
   const fs::path shaders =

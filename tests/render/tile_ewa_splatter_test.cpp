@@ -7,14 +7,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
 
 #include "app/bench_tile_ewa.h"
+#include "cli_run.h"
 #include "core/ewa_footprint.h"
 #include "core/slab_partition.h"
+#include "gl/gl_error.h"
 #include "image_compare.h"
 #include "io/png_io.h"
 #include "render_fixture.h"
@@ -338,6 +341,83 @@ TEST_F(TileEwaSplatterTest, RendererDrawsWholeFramesInTilesWhenAsked) {
   while (!r.stepFrame(5.0)) {
   }
   EXPECT_FALSE(r.stats().tiles) << "budgeted steps are rasterized";
+}
+
+// RenderSettings::splatter auto (the default): rasterized where the GPU's timers are not used
+// (software rasterizers); where they are, the first timed frame is rasterized, the next drawn in
+// tiles, and the third the way whose splat stage took less. A frame in tiles does not count for
+// auto passes a slab: the rasterized frame after it tries the second pass. Every picture the
+// rasterizer's within the tiles' levels.
+TEST_F(TileEwaSplatterTest, AutoSplatterTriesBothThenTakesTheFaster) {
+  const Camera cam = obliqueCamera();
+  const int width = 61, height = 53;
+  SplatRenderer& r = wallRenderer(PartitionMode::Cpu);
+  const bool timers = r.gpuTimers();
+  RenderSettings settings = tileSettings();
+  settings.slabPasses = 0;
+  settings.lighting.enabled = true;  // post-classified and shaded from the field
+  ASSERT_EQ(settings.splatter, Splatter::Auto);
+  r.setGpuTimers(false);
+  r.render(cam, settings, width, height);
+  EXPECT_FALSE(r.stats().tiles);
+  EXPECT_EQ(r.stats().slabPasses, 1);
+  const Image8 raster = r.readImage();
+  EXPECT_GT(meanValue(raster), 30.0);
+  r.setGpuTimers(true);
+  r.setVolume(vol);  // a volume set again: both ways timed afresh
+  std::vector<RenderStats> frames;
+  for (int i = 0; i < 3; ++i) {
+    r.render(cam, settings, width, height);
+    frames.push_back(r.stats());
+    EXPECT_LE(maxDifference(r.readImage(), raster), 4) << "frame " << i;
+    EXPECT_EQ(frames.back().note, "");
+  }
+  r.setGpuTimers(timers);
+  EXPECT_FALSE(frames[0].tiles);
+  EXPECT_EQ(frames[0].slabPasses, 1);
+  EXPECT_TRUE(frames[1].tiles);
+  ASSERT_GT(frames[0].splatMs, 0.0);
+  ASSERT_GT(frames[1].splatMs, 0.0);
+  ASSERT_EQ(frames[0].slabEntries, frames[1].slabEntries);
+  EXPECT_EQ(frames[2].tiles, frames[1].splatMs < frames[0].splatMs);
+  if (!frames[2].tiles) EXPECT_EQ(frames[2].slabPasses, 2) << "the tiles' frame was counted";
+  // Raster alone is never tiles, tiles alone always (the timers as they were).
+  settings.splatter = Splatter::Raster;
+  r.render(cam, settings, width, height);
+  EXPECT_FALSE(r.stats().tiles);
+}
+
+// Auto on a GL whose compiler rejects the tiles' programs: the frame is rasterized instead and
+// the statistics say why in one line, once; asked for tiles outright, the error is thrown.
+TEST_F(TileEwaSplatterTest, AutoSplatterRasterizesWhereTheTilesDoNotBuild) {
+  const std::filesystem::path dir = std::filesystem::path(testOutputDir()) / "tiles_broken";
+  std::filesystem::remove_all(dir);
+  const std::filesystem::path shaders =
+      brokenShaders(dir, "tile_ewa_post.comp.glsl", "void main", "int broken = ;\nvoid main");
+  SplatRenderer r{gl::ShaderLibrary(shaders.string())};
+  r.setVolume(vol);
+  r.setTransferFunction(tf);
+  r.setGpuTimers(true);
+  const Camera cam = obliqueCamera();
+  RenderSettings settings = tileSettings();
+  std::vector<RenderStats> frames;
+  for (int i = 0; i < 3; ++i) {
+    r.render(cam, settings, 40, 36);
+    frames.push_back(r.stats());
+    EXPECT_FALSE(frames.back().tiles) << "frame " << i;
+  }
+  EXPECT_EQ(frames[0].note, "");
+  EXPECT_EQ(frames[1].note.find("compute tiles unavailable, frames rasterized: "), 0u)
+      << frames[1].note;
+  EXPECT_NE(frames[1].note.find("tile_ewa_post.comp.glsl"), std::string::npos) << frames[1].note;
+  EXPECT_EQ(lineCount(frames[1].note), 0);
+  EXPECT_EQ(frames[2].note, "");
+  const Image8 rasterized = r.readImage();
+  settings.splatter = Splatter::Raster;
+  r.render(cam, settings, 40, 36);
+  EXPECT_EQ(maxDifference(r.readImage(), rasterized), 0);
+  settings.splatter = Splatter::Tiles;
+  EXPECT_THROW(r.render(cam, settings, 40, 36), gl::GlError);
 }
 
 // Seventy thousand faint splats over one tile in one slab: every one is added (llvmpipe ends a

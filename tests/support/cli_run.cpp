@@ -20,6 +20,20 @@ std::string readWholeFile(const std::string& path) {
   return s.str();
 }
 
+std::filesystem::path brokenShaders(const std::filesystem::path& dir, const std::string& file,
+                                    const std::string& from, const std::string& to) {
+  namespace fs = std::filesystem;
+  const fs::path shaders = dir / "shaders";
+  fs::create_directories(dir);
+  if (!fs::exists(shaders)) fs::copy(EWA_SOURCE_SHADER_DIR, shaders);
+  std::string text = readWholeFile(shaders / file);
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from << " not in " << file;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  std::ofstream(shaders / file, std::ios::binary | std::ios::trunc) << text;
+  return shaders;
+}
+
 int lineCount(const std::string& s) {
   int n = 0;
   for (char c : s) n += c == '\n';

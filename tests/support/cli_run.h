@@ -2,6 +2,7 @@
 // command-line runner of the render tests.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 namespace ewa::test {
@@ -22,6 +23,11 @@ CliRun runProgram(const std::string& binary, const std::string& args, const std:
 
 // Whole file as a string ("" when it cannot be read).
 std::string readWholeFile(const std::string& path);
+
+// A copy of the source tree's shaders/ in `dir`/shaders (made once) with the text `from` in
+// `file` replaced by `to`, for --shader-dir or a gl::ShaderLibrary; returns that folder.
+std::filesystem::path brokenShaders(const std::filesystem::path& dir, const std::string& file,
+                                    const std::string& from, const std::string& to);
 
 // Number of '\n' in `s`: errors must be one line.
 int lineCount(const std::string& s);
