@@ -93,15 +93,14 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   // volume's 74 M would take 4.7 GB twice over). Its slab lists are the renderer's own where it
   // built them on the GPU (binned where they are; their making is in partition_ms), else the
   // CPU partition's (uploaded, not timed); its records are made on the GPU from the renderer's
-  // last frame and the classification's state set (both timed with the tiles).
+  // last frame and the classification's state set (SplatRenderer::loadTiles, timed with the
+  // tiles).
   TileEwaFrame tileFrame;
   const bool tileEwa = m.ewa.tileComposite(tileFrame.post, tileFrame.shading) &&
                        m.ewa.splats().size() <= size_t(8'000'000);
   const auto tileEwaDraw = [&] {
-    if (const GpuSlabPartition* lists = m.ewa.gpuSlabLists()) m.tileEwa.useGpuSlabLists(*lists);
     const auto start = BenchClock::now();
-    m.ewa.writeTileSplats(m.tileEwa.splatBuffer());
-    m.ewa.prepareTileComposite(m.tileEwa.compositeProgram());
+    m.ewa.loadTiles(m.tileEwa);
     glFinish();
     return millisecondsSince(start) + m.tileEwa.draw(size, size).totalMs();
   };

@@ -160,11 +160,10 @@ class SplatRenderer : public Renderer {
   const GpuSlabPartition* gpuSlabLists() const {
     return frame_.gpuSlabs ? gpuPartition_.get() : nullptr;
   }
-  // Sets the crop box's and clipping planes' uniforms and, post-classified, the
-  // classification's uniforms and textures (the slab pass's: the pair table, the data's box,
-  // the light) of the last frame begun on the compute splatter's composite `program`
-  // (TileEwaSplatter::compositeProgram), for its next draw.
-  void prepareTileComposite(gl::Program& program);
+  // Hands the last frame begun to `tiles` after its setFrame, for its next draw: the GPU
+  // partition's lists where the frame built them there (gpuSlabLists), the records
+  // (writeTileSplats) and the composite's uniforms and textures (prepareTileComposite).
+  void loadTiles(TileEwaSplatter& tiles);
 
  private:
   void rebuildSplats(const Classification& classification);
@@ -225,6 +224,11 @@ class SplatRenderer : public Renderer {
   // nothing drawn, where tileComposite says the tiles do not draw these settings.
   bool drawTiles();
   bool drawTilesNow();  // drawTiles, failures thrown
+  // Sets the crop box's and clipping planes' uniforms and, post-classified, the
+  // classification's uniforms and textures (the slab pass's: the pair table, the data's box,
+  // the light) of the last frame begun on the compute splatter's composite `program`
+  // (TileEwaSplatter::compositeProgram), for its next draw.
+  void prepareTileComposite(gl::Program& program);
   // Whether a whole frame under `settings` is drawn in tiles if they draw it (splatter: Tiles,
   // or Auto's choice where the GPU's timers are used).
   bool tilesWanted(const RenderSettings& settings) const;

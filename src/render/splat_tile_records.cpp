@@ -86,14 +86,7 @@ bool SplatRenderer::drawTilesNow() {
     }
   }
   tiles_->setFrame(tileFrame);
-  if (frame_.gpuSlabs) {
-    // llvmpipe's composite runs in chunks of slabs sized by their counts (a short wait).
-    if (softwareGl_) gpuPartition_->readCounts();
-    tiles_->useGpuSlabLists(*gpuPartition_);
-  }
-  tiles_->reserveSplats(classified_.splats.size());
-  writeTileSplats(tiles_->splatBuffer());
-  prepareTileComposite(tiles_->compositeProgram());
+  loadTiles(*tiles_);
   tiles_->draw(frame_.width, frame_.height);
   // The GPU's counts are read after the final pass (stepFrame), as for rasterized frames.
   if (!frame_.indirect)
@@ -109,6 +102,17 @@ bool SplatRenderer::tileComposite(bool& post, bool& shading) const {
   shading = fieldNormals(s);
   if (s.mode != RenderMode::Composite || s.order != CompositeOrder::FrontToBack) return false;
   return !post || (quarterSlabs(s) && (shading || !s.lighting.enabled));
+}
+
+void SplatRenderer::loadTiles(TileEwaSplatter& tiles) {
+  if (frame_.gpuSlabs) {
+    // llvmpipe's composite runs in chunks of slabs sized by their counts (a short wait).
+    if (softwareGl_) gpuPartition_->readCounts();
+    tiles.useGpuSlabLists(*gpuPartition_);
+  }
+  tiles.reserveSplats(classified_.splats.size());
+  writeTileSplats(tiles.splatBuffer());
+  prepareTileComposite(tiles.compositeProgram());
 }
 
 void SplatRenderer::prepareTileComposite(gl::Program& program) {

@@ -209,8 +209,7 @@ TEST_F(TileEwaSplatterTest, DrawsTheRasterizersPostClassifiedPicture) {
       SCOPED_TRACE(tileSize);
       TileEwaSplatter splatter(gl::ShaderLibrary(), tileSize);
       splatter.setFrame(frame);
-      r.writeTileSplats(splatter.splatBuffer());
-      r.prepareTileComposite(splatter.compositeProgram());
+      r.loadTiles(splatter);
       splatter.draw(width, height);
       const Image8 tiles = tileEwaImage(splatter.picture(), width, height, settings.background);
       const int worst = maxDifference(tiles, raster);
@@ -266,11 +265,7 @@ TEST_F(TileEwaSplatterTest, BinsTheGpuPartitionsLists) {
     ASSERT_TRUE(r.tileComposite(frame.post, frame.shading));
     TileEwaSplatter splatter(gl::ShaderLibrary(), 16);
     splatter.setFrame(frame);
-    splatter.splatBuffer().setData(GLsizeiptr(r.splats().size() * sizeof(TileEwaSplat)), nullptr,
-                                   GL_DYNAMIC_DRAW);
-    r.writeTileSplats(splatter.splatBuffer());
-    splatter.useGpuSlabLists(*r.gpuSlabLists());
-    r.prepareTileComposite(splatter.compositeProgram());
+    r.loadTiles(splatter);
     const TileEwaSplatter::Timing t = splatter.draw(width, height);
     EXPECT_GT(t.entries, r.gpuSlabLists()->entryCount() / 2);
     const Image8 tiles = tileEwaImage(splatter.picture(), width, height, settings.background);
