@@ -90,11 +90,10 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   m.tiles.draw(size, size, halfFloatSlabs(rs));
   // The compute EWA splatter draws front-to-back frames, pre-classified or post-classified as the
   // default (SplatRenderer::tileComposite), from 64 bytes a splat: up to 8 M splats (a 512^3
-  // volume's 74 M would take 4.7 GB twice over). Its slab lists are the renderer's own where it
-  // built them on the GPU (binned where they are; their making is in partition_ms), else the
-  // CPU partition's (uploaded, not timed); its records are made on the GPU from the renderer's
-  // last frame and the classification's state set (SplatRenderer::loadTiles, timed with the
-  // tiles).
+  // volume's 74 M would take 4.7 GB twice over). It draws the renderer's last frame as the
+  // renderer's own tile frames do (SplatRenderer::loadTiles, timed with the tiles): its slab
+  // lists binned where the GPU built them (their making is in partition_ms), else the CPU
+  // partition's uploaded; its records made on the GPU; the classification's state set.
   TileEwaFrame tileFrame;
   const bool tileEwa = m.ewa.tileComposite(tileFrame.post, tileFrame.shading) &&
                        m.ewa.splats().size() <= size_t(8'000'000);
@@ -104,14 +103,7 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
     glFinish();
     return millisecondsSince(start) + m.tileEwa.draw(size, size).totalMs();
   };
-  if (tileEwa) {
-    TileEwaFrame frame =
-        tileEwaFrame(m.ewa, scene.volume, scene.transferFunction, cam, rs, size, size);
-    frame.post = tileFrame.post;
-    frame.shading = tileFrame.shading;
-    m.tileEwa.setFrame(frame);
-    tileEwaDraw();
-  }
+  if (tileEwa) tileEwaDraw();  // warm-up: the programs' first use
   RenderSettings sw = rs;
   sw.renderer = RendererKind::ShearWarp;
   m.shearWarp.render(cam, sw, size, size);

@@ -160,10 +160,12 @@ class SplatRenderer : public Renderer {
   const GpuSlabPartition* gpuSlabLists() const {
     return frame_.gpuSlabs ? gpuPartition_.get() : nullptr;
   }
-  // Hands the last frame begun to `tiles` after its setFrame, for its next draw: the GPU
-  // partition's lists where the frame built them there (gpuSlabLists), the records
-  // (writeTileSplats) and the composite's uniforms and textures (prepareTileComposite).
-  void loadTiles(TileEwaSplatter& tiles);
+  // Hands the last frame begun to `tiles` for its next draw (TileEwaSplatter::setFrame and the
+  // rest): its slab lists (the CPU partition's, or the GPU's where it built them there:
+  // gpuSlabLists), the records (writeTileSplats) and the composite's uniforms and textures
+  // (prepareTileComposite). False, and nothing handed over, where the tiles do not draw the
+  // frame (tileComposite) or it has no splats.
+  bool loadTiles(TileEwaSplatter& tiles);
 
  private:
   void rebuildSplats(const Classification& classification);

@@ -66,10 +66,32 @@ bool SplatRenderer::drawTiles() {
 }
 
 bool SplatRenderer::drawTilesNow() {
+  if (!tiles_) tiles_ = std::make_unique<TileEwaSplatter>(shaders_, 16);
+  if (!loadTiles(*tiles_)) return false;
+  tiles_->draw(frame_.width, frame_.height);
+  // The GPU's counts are read after the final pass (stepFrame), as for rasterized frames.
+  if (!frame_.indirect) {
+    size_t entries = 0;
+    for (const Slab& slab : frame_.slabs) entries += slab.count;
+    stats_.slabEntries = frame_.gpuSlabs ? gpuPartition_->entryCount() : entries;
+  }
+  stats_.slabsDrawn = frame_.gpuSlabs ? gpuPartition_->slabs().size() : frame_.slabs.size();
+  frame_.tiles = stats_.tiles = true;
+  return true;
+}
+
+bool SplatRenderer::tileComposite(bool& post, bool& shading) const {
+  const RenderSettings& s = frame_.settings;
+  post = postClassified(s);
+  shading = fieldNormals(s);
+  if (s.mode != RenderMode::Composite || s.order != CompositeOrder::FrontToBack) return false;
+  return !post || (quarterSlabs(s) && (shading || !s.lighting.enabled));
+}
+
+bool SplatRenderer::loadTiles(TileEwaSplatter& tiles) {
   TileEwaFrame tileFrame;
   if (!tileComposite(tileFrame.post, tileFrame.shading) || classified_.splats.size() == 0)
     return false;
-  if (!tiles_) tiles_ = std::make_unique<TileEwaSplatter>(shaders_, 16);
   const RenderSettings& s = frame_.settings;
   tileFrame.cutoff = float(s.cutoff);
   const DepthProfile profile = depthProfile(s);
@@ -85,26 +107,7 @@ bool SplatRenderer::drawTilesNow() {
         tileFrame.entries.emplace_back(order[e], uint32_t(k));
     }
   }
-  tiles_->setFrame(tileFrame);
-  loadTiles(*tiles_);
-  tiles_->draw(frame_.width, frame_.height);
-  // The GPU's counts are read after the final pass (stepFrame), as for rasterized frames.
-  if (!frame_.indirect)
-    stats_.slabEntries = frame_.gpuSlabs ? gpuPartition_->entryCount() : tileFrame.entries.size();
-  stats_.slabsDrawn = frame_.gpuSlabs ? gpuPartition_->slabs().size() : frame_.slabs.size();
-  frame_.tiles = stats_.tiles = true;
-  return true;
-}
-
-bool SplatRenderer::tileComposite(bool& post, bool& shading) const {
-  const RenderSettings& s = frame_.settings;
-  post = postClassified(s);
-  shading = fieldNormals(s);
-  if (s.mode != RenderMode::Composite || s.order != CompositeOrder::FrontToBack) return false;
-  return !post || (quarterSlabs(s) && (shading || !s.lighting.enabled));
-}
-
-void SplatRenderer::loadTiles(TileEwaSplatter& tiles) {
+  tiles.setFrame(tileFrame);  // no splats: the records are made on the GPU below
   if (frame_.gpuSlabs) {
     // llvmpipe's composite runs in chunks of slabs sized by their counts (a short wait).
     if (softwareGl_) gpuPartition_->readCounts();
@@ -113,6 +116,7 @@ void SplatRenderer::loadTiles(TileEwaSplatter& tiles) {
   tiles.reserveSplats(classified_.splats.size());
   writeTileSplats(tiles.splatBuffer());
   prepareTileComposite(tiles.compositeProgram());
+  return true;
 }
 
 void SplatRenderer::prepareTileComposite(gl::Program& program) {

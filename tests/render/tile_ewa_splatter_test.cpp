@@ -201,15 +201,14 @@ TEST_F(TileEwaSplatterTest, DrawsTheRasterizersPostClassifiedPicture) {
     settings.lighting.enabled = shaded;
     r.render(cam, settings, width, height);
     const Image8 raster = r.readImage();
-    TileEwaFrame frame = tileEwaFrame(r, vol, tf, cam, settings, width, height);
-    ASSERT_TRUE(r.tileComposite(frame.post, frame.shading));
-    EXPECT_TRUE(frame.post);
-    EXPECT_EQ(frame.shading, shaded);
+    bool post = false, shading = false;
+    ASSERT_TRUE(r.tileComposite(post, shading));
+    EXPECT_TRUE(post);
+    EXPECT_EQ(shading, shaded);
     for (int tileSize : {8, 16}) {
       SCOPED_TRACE(tileSize);
       TileEwaSplatter splatter(gl::ShaderLibrary(), tileSize);
-      splatter.setFrame(frame);
-      r.loadTiles(splatter);
+      ASSERT_TRUE(r.loadTiles(splatter));
       splatter.draw(width, height);
       const Image8 tiles = tileEwaImage(splatter.picture(), width, height, settings.background);
       const int worst = maxDifference(tiles, raster);
@@ -257,15 +256,8 @@ TEST_F(TileEwaSplatterTest, BinsTheGpuPartitionsLists) {
     r.render(cam, settings, width, height);
     const Image8 raster = r.readImage();
     ASSERT_NE(r.gpuSlabLists(), nullptr) << "the frame's lists were built on the GPU";
-    TileEwaFrame frame;  // no splats, entries or slabs from the CPU
-    frame.cutoff = float(settings.cutoff);
-    const DepthProfile profile = depthProfile(settings);
-    frame.depthProfile = glm::vec2(float(profile.erfReach), float(profile.scale));
-    frame.termination = float(settings.terminationOpacity);
-    ASSERT_TRUE(r.tileComposite(frame.post, frame.shading));
     TileEwaSplatter splatter(gl::ShaderLibrary(), 16);
-    splatter.setFrame(frame);
-    r.loadTiles(splatter);
+    ASSERT_TRUE(r.loadTiles(splatter));  // no splats, entries or slabs from the CPU
     const TileEwaSplatter::Timing t = splatter.draw(width, height);
     EXPECT_GT(t.entries, r.gpuSlabLists()->entryCount() / 2);
     const Image8 tiles = tileEwaImage(splatter.picture(), width, height, settings.background);
