@@ -143,6 +143,12 @@ class SplatRenderer : public Renderer {
   // Test hook: with two splat passes a slab, each pass leaves out the kernels whose cut depth
   // profile misses its half of the slab (on by default; the picture is the same either way).
   void setPassHalfCulling(bool on) { passHalfCulling_ = on; }
+  // Splatter auto draws in tiles only up to this many splats: their records, lists and images
+  // take about 250 GPU bytes a splat against the rasterizer's 16-30 (README, "Compute EWA
+  // splatting"), 2 GB at this count; bigger volumes keep the rasterizer's memory.
+  static constexpr size_t kAutoTileSplats = 8'000'000;
+  // Test hook: another limit than kAutoTileSplats.
+  void setAutoTileSplats(size_t splats) { autoTileSplats_ = splats; }
   bool gpuTimers() const { return gpuTimers_; }
   // GL_RENDERER names a software rasterizer (llvmpipe, softpipe): what the auto modes go by.
   bool softwareGl() const { return softwareGl_; }
@@ -366,6 +372,7 @@ class SplatRenderer : public Renderer {
   TwoWayTuner splatterTuner_;    // splatter auto: rasterized (way 0) or in tiles (way 1)
   // The compute splatter's programs failed to build on this GL: auto rasterizes from then on.
   bool tilesFailed_ = false;
+  size_t autoTileSplats_ = kAutoTileSplats;  // setAutoTileSplats
   float pointSizeLimit_ = 64.0f;
   float glPointSizeLimit_ = 64.0f;
   int maxViewport_ = 16384;  // GL_MAX_VIEWPORT_DIMS, the smaller

@@ -35,13 +35,13 @@ void SplatRenderer::writeTileSplats(gl::Buffer& out) {
 bool SplatRenderer::tilesWanted(const RenderSettings& settings) const {
   if (settings.splatter == Splatter::Tiles) return true;
   return settings.splatter == Splatter::Auto && gpuTimers_ && !tilesFailed_ &&
-         splatterTuner_.choice() == 1;
+         classified_.splats.size() <= autoTileSplats_ && splatterTuner_.choice() == 1;
 }
 
 void SplatRenderer::reportSplatterCost() {
   bool post = false, shading = false;
   if (!frame_.timed || frame_.settings.splatter != Splatter::Auto || tilesFailed_ ||
-      !tileComposite(post, shading))
+      classified_.splats.size() > autoTileSplats_ || !tileComposite(post, shading))
     return;
   // Per entry of the whole frame: early termination leaves the rasterizer's later slabs
   // undrawn, and what it saves counts for it.

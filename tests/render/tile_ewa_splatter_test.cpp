@@ -334,7 +334,7 @@ TEST_F(TileEwaSplatterTest, RendererDrawsWholeFramesInTilesWhenAsked) {
 // (software rasterizers); where they are, the first timed frame is rasterized, the next drawn in
 // tiles, and the third the way whose splat stage took less. A frame in tiles does not count for
 // auto passes a slab: the rasterized frame after it tries the second pass. Every picture the
-// rasterizer's within the tiles' levels.
+// rasterizer's within the tiles' levels. Volumes of more splats than its limit stay rasterized.
 TEST_F(TileEwaSplatterTest, AutoSplatterTriesBothThenTakesTheFaster) {
   const Camera cam = obliqueCamera();
   const int width = 61, height = 53;
@@ -368,10 +368,16 @@ TEST_F(TileEwaSplatterTest, AutoSplatterTriesBothThenTakesTheFaster) {
   ASSERT_EQ(frames[0].slabEntries, frames[1].slabEntries);
   EXPECT_EQ(frames[2].tiles, frames[1].splatMs < frames[0].splatMs);
   if (!frames[2].tiles) EXPECT_EQ(frames[2].slabPasses, 2) << "the tiles' frame was counted";
-  // Raster alone is never tiles, tiles alone always (the timers as they were).
-  settings.splatter = Splatter::Raster;
-  r.render(cam, settings, width, height);
-  EXPECT_FALSE(r.stats().tiles);
+  // A volume of more splats than auto's limit stays rasterized (the tiles' memory).
+  r.setGpuTimers(true);
+  r.setAutoTileSplats(r.splats().size() - 1);
+  r.setVolume(vol);
+  for (int i = 0; i < 3; ++i) {
+    r.render(cam, settings, width, height);
+    EXPECT_FALSE(r.stats().tiles) << "frame " << i << " of a volume over the limit";
+  }
+  r.setAutoTileSplats(SplatRenderer::kAutoTileSplats);
+  r.setGpuTimers(timers);
 }
 
 // Auto on a GL whose compiler rejects the tiles' programs: the frame is rasterized instead and
