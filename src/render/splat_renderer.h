@@ -240,8 +240,9 @@ class SplatRenderer : public Renderer {
   // Whether a whole frame under `settings` is drawn in tiles if they draw it (splatter: Tiles,
   // or Auto's choice where the GPU's timers are used).
   bool tilesWanted(const RenderSettings& settings) const;
-  // Auto splatter: this timed frame's splat stage a slab entry of the whole frame, for the way
-  // it took (frames the tiles do not draw are not counted).
+  // Auto splatter, at a frame's end: this timed frame's splat stage a slab entry of the whole
+  // frame, for the way it took (frames the tiles do not draw are not counted); the note of
+  // tiles that failed to build.
   void reportSplatterCost();
   // GL state every step needs again (a window draws other things between steps).
   void bindFrameState();
@@ -370,8 +371,10 @@ class SplatRenderer : public Renderer {
   bool passHalfCulling_ = true;  // setPassHalfCulling
   TwoWayTuner passTuner_;        // slabPasses auto: one pass a slab (way 0) or two (way 1)
   TwoWayTuner splatterTuner_;    // splatter auto: rasterized (way 0) or in tiles (way 1)
-  // The compute splatter's programs failed to build on this GL: auto rasterizes from then on.
+  // The compute splatter's programs failed to build on this GL: auto rasterizes from then on,
+  // its frames' RenderStats::note saying why (tilesNote_).
   bool tilesFailed_ = false;
+  std::string tilesNote_;
   size_t autoTileSplats_ = kAutoTileSplats;  // setAutoTileSplats
   float pointSizeLimit_ = 64.0f;
   float glPointSizeLimit_ = 64.0f;

@@ -39,6 +39,7 @@ bool SplatRenderer::tilesWanted(const RenderSettings& settings) const {
 }
 
 void SplatRenderer::reportSplatterCost() {
+  if (frame_.settings.splatter == Splatter::Auto) stats_.note = tilesNote_;
   bool post = false, shading = false;
   if (!frame_.timed || frame_.settings.splatter != Splatter::Auto || tilesFailed_ ||
       classified_.splats.size() > autoTileSplats_ || !tileComposite(post, shading))
@@ -56,11 +57,10 @@ bool SplatRenderer::drawTiles() {
     return drawTilesNow();
   } catch (const gl::GlError& e) {
     // A GL whose compiler rejects the tiles' programs (they have run on Mesa and NVIDIA only):
-    // auto rasterizes instead, and says why once.
+    // auto rasterizes instead, and every frame's statistics say why.
     tilesFailed_ = true;
     const std::string what = e.what();
-    stats_.note =
-        "compute tiles unavailable, frames rasterized: " + what.substr(0, what.find('\n'));
+    tilesNote_ = "compute tiles unavailable, frames rasterized: " + what.substr(0, what.find('\n'));
     return false;
   }
 }
