@@ -89,21 +89,16 @@ layout(rgba32f, binding = 0) uniform image2D uPicture;
 uniform uint uSlabBegin;  // this dispatch's slabs: [uSlabBegin, uSlabEnd)
 uniform uint uSlabEnd;
 const uint kBatch = uint(TILE_SIZE * TILE_SIZE);
-shared vec4 batch[4u * kBatch];
-shared uint batchOpen[kBatch];
-shared uint unfinished;
+#include "tile_batch.glsl"
 
 // (colour * optical depth, optical depth) of batch splat j (none past n) at the pixel centred at
 // `centre`, in the slab between `depths`: its footprint and its share of the kernel along the
 // ray (clipped: inside the depths `kept`), as the splat fragments take them.
 vec4 splatAt(uint j, uint n, vec2 centre, vec2 depths, vec2 kept) {
-  if (j >= n) return vec4(0.0);
-  vec4 box = batch[4u * j];
-  vec2 dx = centre - box.xy;
-  if (any(greaterThan(abs(dx), box.zw))) return vec4(0.0);
+  vec2 dx;
+  float r;
+  if (!batchFootprint(j, n, centre, dx, r)) return vec4(0.0);
   vec4 q = batch[4u * j + 1u];
-  float r = q.x * dx.x * dx.x + 2.0 * q.y * dx.x * dx.y + q.z * dx.y * dx.y;
-  if (r > uCutoff) return vec4(0.0);
   vec4 z = batch[4u * j + 2u];
   uint flags = batchOpen[j];
   bool openNear = (flags & kFirstSlab) != 0u, openFar = (flags & kLastSlab) != 0u;
@@ -129,23 +124,12 @@ void main() {
     uint begin = offsets[bucket], end = offsets[bucket + 1u];
     if (begin == end) continue;  // the same for the whole group
     // Early termination: the tile is done once none of its pixels can take more.
-    if (gl_LocalInvocationIndex == 0u) unfinished = 0u;
-    barrier();
     bool open = inside && picture.a < uTermination;
-    if (open) atomicAdd(unfinished, 1u);
-    barrier();
-    if (unfinished == 0u) break;
+    if (!groupOpen(open)) break;
     vec2 depths = slabDepths[slab];
     vec4 sums = vec4(0.0);  // (colour * optical depth, optical depth) of this slab
     for (uint base = begin; base < end; base += kBatch) {
-      // The group loads a batch of the bucket's splats once; every pixel reads them all.
-      uint k = base + gl_LocalInvocationIndex;
-      if (k < end) {
-        uint entry = lists[k];
-        uint s = 4u * (entry & kIndexMask);
-        for (uint i = 0u; i < 4u; ++i) batch[4u * gl_LocalInvocationIndex + i] = splats[s + i];
-        batchOpen[gl_LocalInvocationIndex] = entry;
-      }
+      loadBatchEntry(base + gl_LocalInvocationIndex, end, gl_LocalInvocationIndex);
       barrier();
       uint n = min(kBatch, end - base);
       // Eight splats an iteration: llvmpipe ends a shader's loops after 65535 iterations in all

@@ -42,11 +42,9 @@ layout(rgba32f, binding = 1) uniform image2D uLastFront;
 layout(rgba32f, binding = 2) uniform image2D uLastBack;
 uniform uint uSlabBegin;  // this dispatch's slabs: [uSlabBegin, uSlabEnd)
 uniform uint uSlabEnd;
-shared vec4 batch[4u * kBatch];
-shared uint batchOpen[kBatch];
+#include "tile_batch.glsl"
 shared float slabValues[kBatch];  // each pixel's mean value in the slab, for its neighbours
 shared uint weighted[kBatch];     // that pixel has kernels in the slab
-shared uint unfinished;
 
 // Adds batch splat j (none past n) at the pixel centred at `centre`, in the slab between
 // `depths`, to the sums of the slab's first two quarters (weight * value, weight, weight *
@@ -54,13 +52,10 @@ shared uint unfinished;
 // depths `kept`).
 void addSplat(uint j, uint n, vec2 centre, vec2 depths, vec2 kept, inout vec4 front,
               inout vec4 back) {
-  if (j >= n) return;
-  vec4 box = batch[4u * j];
-  vec2 dx = centre - box.xy;
-  if (any(greaterThan(abs(dx), box.zw))) return;
+  vec2 dx;
+  float r;
+  if (!batchFootprint(j, n, centre, dx, r)) return;
   vec4 q = batch[4u * j + 1u];
-  float r = q.x * dx.x * dx.x + 2.0 * q.y * dx.x * dx.y + q.z * dx.y * dx.y;
-  if (r > uCutoff) return;
   vec4 z = batch[4u * j + 2u];
   uint flags = batchOpen[j];
   vec4 d = q.w * windowedGaussian(r, uCutoff) *
@@ -101,22 +96,12 @@ void main() {
     }
     // Early termination: the tile is done once none of its own pixels can take more; the
     // border's pixels add up their sums while it is not, for the normals.
-    if (me == 0u) unfinished = 0u;
-    barrier();
     bool open = own && picture.a < uTermination;
-    if (open) atomicAdd(unfinished, 1u);
-    barrier();
-    if (unfinished == 0u) break;
+    if (!groupOpen(open)) break;
     vec2 depths = slabDepths[slab];
     vec4 front = vec4(0.0), back = vec4(0.0);
     for (uint base = begin; base < end; base += kBatch) {
-      uint k = base + me;
-      if (k < end) {
-        uint entry = lists[k];
-        uint s = 4u * (entry & kIndexMask);
-        for (uint i = 0u; i < 4u; ++i) batch[4u * me + i] = splats[s + i];
-        batchOpen[me] = entry;
-      }
+      loadBatchEntry(base + me, end, me);
       barrier();
       uint n = min(kBatch, end - base);
       // Eight splats an iteration: llvmpipe ends a shader's loops after 65535 iterations in all
