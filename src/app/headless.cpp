@@ -30,6 +30,8 @@ void renderHeadless(const Scene& scene, const Options& o) {
   HeadlessSession session(o.backend, o.shaderDir);
   writePng(o.output, session.render(scene.volume, scene.transferFunction,
                                     initialCamera(scene.volume, o), o.render, o.width, o.height));
+  if (const std::string note = session.takeNote(); !note.empty())
+    std::cerr << "ewaview: " << note << std::endl;
   if (o.stats)
     std::cout << frameStatsJson(session.stats(), rendererKindName(o.render.renderer), o.width,
                                 o.height)

@@ -1,8 +1,6 @@
 // HeadlessSession: context first, then shaders and the factory's renderer; GL objects go first.
 #include "app/headless_session.h"
 
-#include <iostream>
-
 #include "platform/headless_context.h"
 #include "render/renderer_factory.h"
 
@@ -40,9 +38,15 @@ Image8 HeadlessSession::render(const Volume& volume, const TransferFunction& tf,
   }
   renderer_->render(camera, settings, width, height);
   const std::string note = renderer_->stats().note;
-  if (!note.empty() && note != lastNote_) std::cerr << "ewaview: " << note << "\n";
-  lastNote_ = note;  // said once while it holds
+  if (note != lastNote_) newNote_ = note;  // said once while it holds
+  lastNote_ = note;
   return renderer_->readImage();
+}
+
+std::string HeadlessSession::takeNote() {
+  std::string note;
+  note.swap(newNote_);
+  return note;
 }
 
 }  // namespace ewa

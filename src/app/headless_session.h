@@ -30,6 +30,9 @@ class HeadlessSession {
                 const RenderSettings& settings, int width, int height);
   // The statistics of the last render (empty before the first).
   RenderStats stats() const { return renderer_ ? renderer_->stats() : RenderStats{}; }
+  // The renderer's RenderStats::note (why a frame was not drawn as asked) when a render has
+  // brought a new one since the last call, else empty: each note said once while it holds.
+  std::string takeNote();
 
  private:
   std::unique_ptr<platform::GlContext> context_;
@@ -39,7 +42,8 @@ class HeadlessSession {
   const Volume* volume_ = nullptr;  // what renderer_ was given, to skip repeated uploads
   TransferFunction tf_;
   bool tfSet_ = false;
-  std::string lastNote_;  // RenderStats::note, said on stderr when it first appears
+  std::string lastNote_;  // the last render's RenderStats::note
+  std::string newNote_;   // one that appeared since takeNote last took it
 };
 
 }  // namespace ewa

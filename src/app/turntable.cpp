@@ -3,6 +3,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "app/headless.h"
 #include "app/headless_session.h"
@@ -20,17 +23,20 @@ void renderTurntable(const Scene& scene, const Options& o) {
   const Camera start = initialCamera(scene.volume, o);
   TerminalProgress progress("ewaview: turntable");
   const auto begin = std::chrono::steady_clock::now();
+  std::vector<std::string> notes;  // said after the progress line, not through it
   for (int f = 0; f < count; ++f) {
     progress.update(f + 1, count, sink->fileOf(f));
     sink->add(session.render(scene.volume, scene.transferFunction, turntableCamera(start, f, count),
                              o.render, o.width, o.height),
               f);
+    if (std::string note = session.takeNote(); !note.empty()) notes.push_back(std::move(note));
   }
   sink->finish();
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   char note[96];
   std::snprintf(note, sizeof note, "%d frames in %.1f s", count, s);
   progress.finish(note);
+  for (const std::string& line : notes) std::fprintf(stderr, "ewaview: %s\n", line.c_str());
 }
 
 }  // namespace ewa

@@ -21,11 +21,15 @@ namespace ewa::python {
 namespace {
 
 // A new dict with the same items (py::dict's copy constructor shares the object).
-// The command line's stderr note, as a Python UserWarning (an error when warnings are errors).
-void warnAboutNote(const Options& o) {
-  const std::string note = renderNote(o);
+// A note the command line says on stderr, as a Python UserWarning (an error when warnings are
+// errors).
+void warn(const std::string& note) {
   if (!note.empty() && PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0)
     throw py::error_already_set();
+}
+
+void warnAboutNote(const Options& o) {
+  warn(renderNote(o));
 }
 
 py::dict copyOf(const py::dict& d) {
@@ -173,9 +177,17 @@ Image8 PythonScene::renderImage(const py::dict& overrides) {
   const Options o = renderOptions(overrides);
   warnAboutNote(o);
   const Camera camera = initialCamera(*volume_, o);
-  py::gil_scoped_release released;
-  std::lock_guard<std::mutex> lock(mutex_);
-  return session(o).render(*volume_, tf_, camera, o.render, o.width, o.height);
+  Image8 image;
+  std::string note;
+  {
+    py::gil_scoped_release released;
+    std::lock_guard<std::mutex> lock(mutex_);
+    HeadlessSession& s = session(o);
+    image = s.render(*volume_, tf_, camera, o.render, o.width, o.height);
+    note = s.takeNote();
+  }
+  warn(note);  // the renderer's own (RenderStats::note)
+  return image;
 }
 
 void PythonScene::turntable(const std::string& path, int frames, int fps,
@@ -183,14 +195,22 @@ void PythonScene::turntable(const std::string& path, int frames, int fps,
   const Options o = renderOptions(overrides);
   warnAboutNote(o);
   const Camera start = initialCamera(*volume_, o);
-  py::gil_scoped_release released;
-  std::lock_guard<std::mutex> lock(mutex_);
-  const std::unique_ptr<FrameSink> sink = openFrameSink(path, frames, fps);
-  HeadlessSession& s = session(o);
-  for (int f = 0; f < frames; ++f)
-    sink->add(
-        s.render(*volume_, tf_, turntableCamera(start, f, frames), o.render, o.width, o.height), f);
-  sink->finish();
+  std::string notes;
+  {
+    py::gil_scoped_release released;
+    std::lock_guard<std::mutex> lock(mutex_);
+    const std::unique_ptr<FrameSink> sink = openFrameSink(path, frames, fps);
+    HeadlessSession& s = session(o);
+    for (int f = 0; f < frames; ++f) {
+      sink->add(
+          s.render(*volume_, tf_, turntableCamera(start, f, frames), o.render, o.width, o.height),
+          f);
+      const std::string note = s.takeNote();
+      if (!note.empty()) notes += (notes.empty() ? "" : "; ") + note;
+    }
+    sink->finish();
+  }
+  warn(notes);
 }
 
 py::array_t<uint8_t> PythonScene::render(const py::dict& overrides) {
