@@ -59,6 +59,13 @@ def lidc2():
     return np.frombuffer(zlib.decompress(body), "u1").reshape(133, 256, 256)
 
 
+def loaded(path):
+    """A file's voxels as ewaview reads them (formats numpy alone does not: SLC, DICOM), given to
+    both renderers as an array."""
+    import ewaview
+    return ewaview.Scene(os.path.join(DATA, path)).array
+
+
 def fetal_t2():
     import gzip
     body = after_header(os.path.join(DATA, "fetal-t2", "template_T2.nrrd"), b"\n\n")
@@ -151,6 +158,32 @@ def volumes():
                      "color": [[0, 0.3, 0.5, 1], [80, 0.4, 0.6, 1], [200, 1, 0.7, 0.3],
                                [255, 1, 1, 0.9]]},
                     (1.0, -0.7, 0.5), 100.0),
+        # And two read by ewaview's own loaders (ewaview.Scene(...).array), chosen 2026-11-28,
+        # nothing tuned on them: the 66^3 negative-potential field (SLC) and a whole-body PET
+        # series (299 DICOM files, float after each slice's rescale; the body's uptake about
+        # 2500, the hot organs above 10000).
+        "neghip": lambda: (loaded("neghip/neghip.slc"), (1, 1, 1),
+                   {"opacity": [[0, 0], [20, 0], [60, 0.1], [150, 0.5], [255, 0.9]],
+                    "color": [[0, 0.2, 0.4, 1], [60, 0.4, 0.7, 1], [150, 1, 0.7, 0.3],
+                              [255, 1, 1, 0.9]]},
+                   (1.0, -0.6, 0.5), 110.0),
+        "pet": lambda: (loaded("dicom-pet"), (3.5378182, 3.5378182, 3.375),
+                {"opacity": [[0, 0], [1500, 0], [4000, 0.05], [10000, 0.4], [40000, 0.9],
+                             [66261, 0.9]],
+                 "color": [[0, 0.5, 0.05, 0], [4000, 0.8, 0.2, 0.05], [10000, 1, 0.6, 0.1],
+                           [40000, 1, 1, 0.8], [66261, 1, 1, 1]]},
+                (1.0, -0.4, 0.2), 950.0),
+        # Two NIfTI files (NiBabel's test data): a small big-endian anatomical MR of 2 mm
+        # voxels, magnified, and the first frame of a 4D series (2, 2, 2.2 mm).
+        "nifti-anat": lambda: (loaded("nifti/anatomical.nii"), (2, 2, 2),
+                       {"opacity": [[0, 0], [8000, 0], [10000, 0.3], [12500, 0.8],
+                                    [14500, 0.9]],
+                        "color": [[0, 0.8, 0.5, 0.4], [10000, 1, 0.85, 0.7], [14500, 1, 1, 1]]},
+                       (1.0, -0.6, 0.4), 200.0),
+        "nifti-4d": lambda: (loaded("nifti/example4d.nii.gz"), (2, 2, 2.2),
+                     {"opacity": [[0, 0], [300, 0], [450, 0.3], [650, 0.8], [830, 0.9]],
+                      "color": [[0, 0.8, 0.5, 0.4], [450, 1, 0.85, 0.7], [830, 1, 1, 1]]},
+                     (0.8, -1.0, 0.5), 570.0),
     }
 
 

@@ -83,5 +83,8 @@ the histogram, as on the command line.)")
       .def("_repr_png_", [](PythonScene& s) { return s.png(py::dict()); })
       .def_property_readonly("info", &PythonScene::info,
                              "dims, spacing, type, range (as --info prints) and name.")
+      .def_property_readonly("array", &PythonScene::array,
+                             "The voxels as loaded: a new array indexed [z, y, x] of the volume's "
+                             "type (uint8, int16, uint16 or float32).")
       .def("__repr__", &PythonScene::repr);
 }

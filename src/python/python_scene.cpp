@@ -234,6 +234,30 @@ py::dict PythonScene::info() const {
   return d;
 }
 
+py::array PythonScene::array() const {
+  const auto& d = volume_->dims();
+  const std::vector<py::ssize_t> shape{py::ssize_t(d[2]), py::ssize_t(d[1]), py::ssize_t(d[0])};
+  py::dtype dtype;
+  switch (volume_->type()) {
+    case ScalarType::UInt8:
+      dtype = py::dtype::of<uint8_t>();
+      break;
+    case ScalarType::Int16:
+      dtype = py::dtype::of<int16_t>();
+      break;
+    case ScalarType::UInt16:
+      dtype = py::dtype::of<uint16_t>();
+      break;
+    case ScalarType::Float32:
+      dtype = py::dtype::of<float>();
+      break;
+  }
+  py::array out(dtype, shape);  // C order: x fastest, as the volume holds its voxels
+  const std::vector<uint8_t>& bytes = volume_->bytes();
+  if (!bytes.empty()) std::memcpy(out.mutable_data(), bytes.data(), bytes.size());
+  return out;
+}
+
 std::string PythonScene::repr() const {
   const auto& d = volume_->dims();
   return "<ewaview.Scene " + name_ + " " + std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" +

@@ -43,6 +43,9 @@ class PythonScene {
   // The same picture as PNG bytes, for Jupyter.
   pybind11::bytes png(const pybind11::dict& overrides);
   pybind11::dict info() const;
+  // The voxels as loaded (scaled and flipped as the renderers see them), a new [z, y, x] array
+  // of the volume's type.
+  pybind11::array array() const;
   std::string repr() const;
 
  private:

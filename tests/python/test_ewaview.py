@@ -88,6 +88,26 @@ def test_numpy_array_equals_the_same_voxels_read_as_raw(cli, out_dir):
     assert np.array_equal(ewaview.Scene(data[:, :, ::-1]).render(**SMALL), flipped)
 
 
+def test_array_gives_the_voxels_back(shared_data):
+    """scene.array: a scene's voxels as loaded, [z, y, x] in the volume's type; an array scene's
+    are its own array (a copy), a file's the file's voxels."""
+    rng = np.random.default_rng(7)
+    for dtype in (np.uint8, np.int16, np.uint16, np.float32):
+        data = (rng.random((5, 6, 7)) * 1000).astype(dtype)
+        back = ewaview.Scene(data).array
+        assert back.dtype == dtype and back.shape == (5, 6, 7)
+        assert np.array_equal(back, data)
+    scene = ewaview.Scene(np.zeros((2, 3, 4), np.uint8))
+    scene.array[0, 0, 0] = 9  # a new array each time: the scene's voxels are not touched
+    assert scene.array[0, 0, 0] == 0
+    raw = shared_data / "engine" / "engine.raw"
+    if not raw.exists():
+        pytest.skip(f"shared data absent: {raw}")
+    engine = ewaview.Scene(shared_data / "engine" / "engine.nhdr").array
+    assert engine.shape == (128, 256, 256)
+    assert np.array_equal(engine, np.fromfile(raw, np.uint8).reshape(128, 256, 256))
+
+
 def test_transfer_function_dict_equals_the_tf_file(cli, out_dir):
     tf = {"opacity": [[0, 0], [0.3, 0], [1, 0.6]],
           "color": [[0, 0.2, 0.4, 1], [1, 1, 0.6, 0.1]], "opacity_unit_distance": 2}
