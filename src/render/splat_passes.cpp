@@ -712,8 +712,7 @@ void SplatRenderer::setFrameUniforms() {
 }
 
 void SplatRenderer::setFrameWeights() {
-  size_t entries = 0;
-  for (const Slab& slab : frame_.slabs) entries += slab.count;
+  const size_t entries = frameEntryCount();
   const size_t slabCount = frame_.slabs.size();
   frame_.meanEntries = double(entries) / double(std::max<size_t>(1, slabCount));
   frame_.totalWeight = frame_.settings.mode == RenderMode::Composite

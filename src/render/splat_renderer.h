@@ -244,6 +244,8 @@ class SplatRenderer : public Renderer {
   // frame, for the way it took (frames the tiles do not draw are not counted); the note of
   // tiles that failed to build.
   void reportSplatterCost();
+  // The slab entries of every slab of the frame (frame_.slabs), drawn or not.
+  size_t frameEntryCount() const;
   // GL state every step needs again (a window draws other things between steps).
   void bindFrameState();
   void setSlabLoopState();

@@ -46,9 +46,14 @@ void SplatRenderer::reportSplatterCost() {
     return;
   // Per entry of the whole frame: early termination leaves the rasterizer's later slabs
   // undrawn, and what it saves counts for it.
+  const size_t entries = frameEntryCount();
+  if (entries > 0) splatterTuner_.report(frame_.tiles ? 1 : 0, stats_.splatMs / double(entries));
+}
+
+size_t SplatRenderer::frameEntryCount() const {
   size_t entries = 0;
   for (const Slab& slab : frame_.slabs) entries += slab.count;
-  if (entries > 0) splatterTuner_.report(frame_.tiles ? 1 : 0, stats_.splatMs / double(entries));
+  return entries;
 }
 
 bool SplatRenderer::drawTiles() {
@@ -70,11 +75,8 @@ bool SplatRenderer::drawTilesNow() {
   if (!loadTiles(*tiles_)) return false;
   tiles_->draw(frame_.width, frame_.height);
   // The GPU's counts are read after the final pass (stepFrame), as for rasterized frames.
-  if (!frame_.indirect) {
-    size_t entries = 0;
-    for (const Slab& slab : frame_.slabs) entries += slab.count;
-    stats_.slabEntries = frame_.gpuSlabs ? gpuPartition_->entryCount() : entries;
-  }
+  if (!frame_.indirect)
+    stats_.slabEntries = frame_.gpuSlabs ? gpuPartition_->entryCount() : frameEntryCount();
   stats_.slabsDrawn = frame_.gpuSlabs ? gpuPartition_->slabs().size() : frame_.slabs.size();
   frame_.tiles = stats_.tiles = true;
   return true;
