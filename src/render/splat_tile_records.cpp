@@ -79,6 +79,7 @@ bool SplatRenderer::drawTilesNow() {
     stats_.slabEntries = frame_.gpuSlabs ? gpuPartition_->entryCount() : frameEntryCount();
   stats_.slabsDrawn = frame_.gpuSlabs ? gpuPartition_->slabs().size() : frame_.slabs.size();
   frame_.tiles = stats_.tiles = true;
+  stats_.slabPasses = 0;  // no splat passes: each tile adds its slabs' quarters at once
   return true;
 }
 

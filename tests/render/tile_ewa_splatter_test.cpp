@@ -363,6 +363,7 @@ TEST_F(TileEwaSplatterTest, AutoSplatterTriesBothThenTakesTheFaster) {
   EXPECT_FALSE(frames[0].tiles);
   EXPECT_EQ(frames[0].slabPasses, 1);
   EXPECT_TRUE(frames[1].tiles);
+  EXPECT_EQ(frames[1].slabPasses, 0) << "tiles take no splat passes";
   ASSERT_GT(frames[0].splatMs, 0.0);
   ASSERT_GT(frames[1].splatMs, 0.0);
   ASSERT_EQ(frames[0].slabEntries, frames[1].slabEntries);
