@@ -20,7 +20,6 @@ namespace ewa::python {
 
 namespace {
 
-// A new dict with the same items (py::dict's copy constructor shares the object).
 // A note the command line says on stderr, as a Python UserWarning (an error when warnings are
 // errors).
 void warn(const std::string& note) {
@@ -32,6 +31,7 @@ void warnAboutNote(const Options& o) {
   warn(renderNote(o));
 }
 
+// A new dict with the same items (py::dict's copy constructor shares the object).
 py::dict copyOf(const py::dict& d) {
   return py::reinterpret_steal<py::dict>(PyDict_Copy(d.ptr()));
 }
