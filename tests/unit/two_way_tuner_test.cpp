@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace ewa {
@@ -21,8 +22,9 @@ std::vector<int> run(TwoWayTuner& t, int frames, double cost0, double cost1) {
 }
 
 TEST(TwoWayTuner, TriesBothThenKeepsTheCheaperAndRetriesTheOther) {
+  // Costs a fifth apart: the other way retried after kRetryEvery frames of the cheaper.
   TwoWayTuner t;
-  const std::vector<int> ways = run(t, 2 + 2 * (TwoWayTuner::kRetryEvery + 1), 2.0, 1.0);
+  const std::vector<int> ways = run(t, 2 + 2 * (TwoWayTuner::kRetryEvery + 1), 1.2, 1.0);
   EXPECT_EQ(ways[0], 0);
   EXPECT_EQ(ways[1], 1);
   int zeros = 0;
@@ -33,8 +35,32 @@ TEST(TwoWayTuner, TriesBothThenKeepsTheCheaperAndRetriesTheOther) {
     EXPECT_EQ(ways[i], retry ? 0 : 1) << i;
   }
   EXPECT_EQ(zeros, 2);
-  EXPECT_DOUBLE_EQ(t.cost(0), 2.0);
+  EXPECT_DOUBLE_EQ(t.cost(0), 1.2);
   EXPECT_DOUBLE_EQ(t.cost(1), 1.0);
+}
+
+// A way r times dearer is retried after kRetryEvery * (r - 1) frames (at least kRetryEvery, at
+// most kMaxRetryEvery), so the retries' share of the time stays under 1/kRetryEvery up to the
+// cap: 2x apart every 32 frames, 5x every 128, 20x every 256.
+TEST(TwoWayTuner, RetriesADearerWayLessOften) {
+  for (const auto& [dear, every] :
+       {std::pair{2.0, 32}, std::pair{5.0, 128}, std::pair{20.0, 256}}) {
+    SCOPED_TRACE(dear);
+    TwoWayTuner t;
+    const int frames = 2 + 3 * (every + 1);
+    const std::vector<int> ways = run(t, frames, dear, 1.0);
+    EXPECT_EQ(t.retryEvery(), every);
+    std::vector<int> retries;
+    for (int i = 2; i < frames; ++i)
+      if (ways[size_t(i)] == 0) retries.push_back(i);
+    ASSERT_EQ(retries.size(), 3u);
+    EXPECT_EQ(retries[0], 2 + every);
+    EXPECT_EQ(retries[1] - retries[0], every + 1);
+    double time = 0.0;
+    for (int way : ways) time += way == 0 ? dear : 1.0;
+    const double retryShare = 3.0 * (dear - 1.0) / time;
+    EXPECT_LT(retryShare, dear > 8.0 ? 0.08 : 1.0 / TwoWayTuner::kRetryEvery) << retryShare;
+  }
 }
 
 TEST(TwoWayTuner, FollowsACostThatChanges) {
