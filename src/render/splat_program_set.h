@@ -1,10 +1,13 @@
 // SplatProgramSet: a splat renderer's GL programs, which the renderers of one context may share.
 #pragma once
 
+#include <memory>
+
 #include "gl/program.h"
 #include "gl/shader_library.h"
 #include "render/slab_pass_programs.h"
 #include "render/splat_programs.h"
+#include "render/tile_ewa_programs.h"
 
 namespace ewa {
 
@@ -22,6 +25,8 @@ struct SplatProgramSet {
   gl::Program mark;
   gl::Program final;
   gl::Program box;
+  // The compute splatter's (RenderSettings::splatter), made when a renderer first draws in tiles.
+  std::shared_ptr<TileEwaPrograms> tiles;
   const void* user = nullptr;
 };
 

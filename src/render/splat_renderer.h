@@ -232,6 +232,8 @@ class SplatRenderer : public Renderer {
   // nothing drawn, where tileComposite says the tiles do not draw these settings.
   bool drawTiles();
   bool drawTilesNow();  // drawTiles, failures thrown
+  // The compute splatter's programs, in the set this renderer may share (SplatProgramSet).
+  TileEwaPrograms& tilePrograms();
   // Sets the crop box's and clipping planes' uniforms and, post-classified, the
   // classification's uniforms and textures (the slab pass's: the pair table, the data's box,
   // the light) of the last frame begun on the compute splatter's composite `program`
@@ -333,8 +335,6 @@ class SplatRenderer : public Renderer {
   gl::Program& markProgram_;
   gl::Program& finalProgram_;
   gl::Program& boxProgram_;
-  std::optional<gl::Program> tileSplatPass_;  // writeTileSplats', for tileSplatVariant_
-  unsigned tileSplatVariant_ = 0;
   OcclusionPyramid occlusion_;
   static constexpr unsigned kOpaqueUnit = 4;  // texture unit of the occlusion pyramid
   SlabPairTable pairTable_;                   // post-classification with pre-integration

@@ -18,11 +18,7 @@ void SplatRenderer::writeTileSplats(gl::Buffer& out) {
   // The frame's own variant (clipped or not), so the footprints come from the same compiled
   // setup.
   const SplatVariant variant = splatVariant(frame_.settings, frame_.texelBuffers);
-  if (!tileSplatPass_ || tileSplatVariant_ != variant.key()) {
-    tileSplatPass_ = shaders_.computeProgram("tile_ewa_footprints.comp.glsl", variant.defines());
-    tileSplatVariant_ = variant.key();
-  }
-  gl::Program& pass = *tileSplatPass_;
+  gl::Program& pass = tilePrograms().footprints(variant.key(), variant.defines());
   setCommonUniforms(pass, frame_.camera, frame_.proj, frame_.settings);
   pass.setUInt("uSplatCount", GLuint(count));
   bindFrameState();
@@ -70,8 +66,17 @@ bool SplatRenderer::drawTiles() {
   }
 }
 
+TileEwaPrograms& SplatRenderer::tilePrograms() {
+  // Made on first use, in the set the renderers of the window's levels share.
+  if (!programs_->tiles) programs_->tiles = std::make_shared<TileEwaPrograms>(shaders_, 16);
+  return *programs_->tiles;
+}
+
 bool SplatRenderer::drawTilesNow() {
-  if (!tiles_) tiles_ = std::make_unique<TileEwaSplatter>(shaders_, 16);
+  if (!tiles_) {
+    tilePrograms();
+    tiles_ = std::make_unique<TileEwaSplatter>(programs_->tiles);
+  }
   if (!loadTiles(*tiles_)) return false;
   tiles_->draw(frame_.width, frame_.height);
   // The GPU's counts are read after the final pass (stepFrame), as for rasterized frames.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <string>
+#include <utility>
 
 #include "core/stopwatch.h"
 #include "gl/gl_error.h"
@@ -12,10 +13,6 @@
 namespace ewa {
 
 namespace {
-
-std::string defines(int tileSize, const char* pass) {
-  return "#define TILE_SIZE " + std::to_string(tileSize) + "\n#define " + pass + " 1\n";
-}
 
 template <typename T>
 void upload(gl::Buffer& buffer, const std::vector<T>& data) {
@@ -26,16 +23,11 @@ void upload(gl::Buffer& buffer, const std::vector<T>& data) {
 }  // namespace
 
 TileEwaSplatter::TileEwaSplatter(const gl::ShaderLibrary& shaders, int tileSize)
-    : tileSize_(tileSize),
-      shaders_(shaders),
-      countPass_(shaders.computeProgram("tile_ewa.comp.glsl", defines(tileSize, "COUNT_PASS"))),
-      // The scan of tile_splat.comp.glsl, over (tile, slab) buckets in place of tiles.
-      scanPass_(shaders.computeProgram(
-          "tile_splat.comp.glsl",
-          defines(tileSize, "SCAN_PASS") + "#define IMAGE_FORMAT rgba32f\n")),
-      scatterPass_(shaders.computeProgram("tile_ewa.comp.glsl", defines(tileSize, "SCATTER_PASS"))),
-      compositePass_(
-          shaders.computeProgram("tile_ewa.comp.glsl", defines(tileSize, "COMPOSITE_PASS"))),
+    : TileEwaSplatter(std::make_shared<TileEwaPrograms>(shaders, tileSize)) {}
+
+TileEwaSplatter::TileEwaSplatter(std::shared_ptr<TileEwaPrograms> programs)
+    : programs_(std::move(programs)),
+      tileSize_(programs_->tileSize()),
       chunkIterations_(softwareRasterizer() ? 60000 : 0) {}
 
 void TileEwaSplatter::setFrame(const TileEwaFrame& frame) {
@@ -57,13 +49,6 @@ void TileEwaSplatter::setFrame(const TileEwaFrame& frame) {
 }
 
 void TileEwaSplatter::useGpuSlabLists(const GpuSlabPartition& partition) {
-  if (!gpuCountPass_) {
-    const std::string gpuOrder = "#define GPU_ORDER 1\n";
-    gpuCountPass_ =
-        shaders_.computeProgram("tile_ewa.comp.glsl", gpuOrder + defines(tileSize_, "COUNT_PASS"));
-    gpuScatterPass_ = shaders_.computeProgram("tile_ewa.comp.glsl",
-                                              gpuOrder + defines(tileSize_, "SCATTER_PASS"));
-  }
   std::vector<glm::vec2> depths;
   for (const Slab& slab : partition.slabs())
     depths.emplace_back(float(slab.nearDepth), float(slab.farDepth));
@@ -104,16 +89,7 @@ void TileEwaSplatter::reserveSplats(size_t count) {
 }
 
 gl::Program& TileEwaSplatter::compositeProgram() {
-  if (!settings_.post) return compositePass_;
-  std::optional<gl::Program>& pass = postPass_[settings_.shading ? 1 : 0];
-  if (!pass) {
-    const std::string shading = settings_.shading ? "1" : "0";
-    pass = shaders_.computeProgram("tile_ewa_post.comp.glsl",
-                                   "#define TILE_SIZE " + std::to_string(tileSize_) +
-                                       "\n#define SLAB_SHADING " + shading +
-                                       "\n#define SLAB_FIELD_NORMALS " + shading + "\n");
-  }
-  return *pass;
+  return programs_->composite(settings_.post, settings_.shading);
 }
 
 TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {
@@ -123,8 +99,9 @@ TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {
   const size_t slabs = std::max<size_t>(1, slabCount_);
   const size_t buckets = size_t(tiles.x) * size_t(tiles.y) * slabs;
   gl::Program& composite = compositeProgram();
-  gl::Program& count = gpuLists_ ? *gpuCountPass_ : countPass_;
-  gl::Program& scatter = gpuLists_ ? *gpuScatterPass_ : scatterPass_;
+  gl::Program& count = programs_->count(gpuLists_ != nullptr);
+  gl::Program& scatter = programs_->scatter(gpuLists_ != nullptr);
+  gl::Program& scan = programs_->scan();
   for (gl::Program* p : {&count, &scatter, &composite}) {
     p->setUInt("uCount", GLuint(entryCount_));
     p->setUInt("uSlabCount", GLuint(slabCount_));
@@ -137,7 +114,7 @@ TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {
     p->setFloat("uBorder", settings_.post ? 1.0f : 0.0f);
   }
   // The scan sees the buckets as one row of "tiles".
-  scanPass_.setIVec2("uTiles", glm::ivec2(int(buckets), 1));
+  scan.setIVec2("uTiles", glm::ivec2(int(buckets), 1));
   splats_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
   if (gpuLists_) {
     gpuLists_->orderBuffer().bindBase(GL_SHADER_STORAGE_BUFFER, 3);
@@ -150,7 +127,7 @@ TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {
   Timing t;
   glFinish();
   auto start = std::chrono::steady_clock::now();
-  t.entries = bins_.bin(count, scanPass_, scatter, entryCount_, buckets, 4);
+  t.entries = bins_.bin(count, scan, scatter, entryCount_, buckets, 4);
   glFinish();
   t.binMs = millisecondsSince(start);
 

@@ -6,7 +6,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
-#include <optional>
+#include <memory>
 #include <vector>
 
 #include "gl/buffer.h"
@@ -15,6 +15,7 @@
 #include "gl/texture.h"
 #include "render/gpu_slab_partition.h"
 #include "render/tile_bins.h"
+#include "render/tile_ewa_programs.h"
 
 namespace ewa {
 
@@ -51,8 +52,10 @@ struct TileEwaFrame {
 
 class TileEwaSplatter {
  public:
-  // `tileSize`: pixels a side of a tile (one work group), 8 or 16.
+  // `tileSize`: pixels a side of a tile (one work group), 8 or 16; its own programs.
   TileEwaSplatter(const gl::ShaderLibrary& shaders, int tileSize);
+  // With programs other splatters may share (SplatProgramSet::tiles), of their tile size.
+  explicit TileEwaSplatter(std::shared_ptr<TileEwaPrograms> programs);
   // Uploads the frame's splats (none: keeps the records there), entries and slabs; not part of
   // the timed draw.
   void setFrame(const TileEwaFrame& frame);
@@ -89,11 +92,8 @@ class TileEwaSplatter {
   gl::Program& compositeProgram();
 
  private:
+  std::shared_ptr<TileEwaPrograms> programs_;
   int tileSize_;
-  gl::ShaderLibrary shaders_;  // a copy: callers pass temporaries; compiles the variants later
-  gl::Program countPass_, scanPass_, scatterPass_, compositePass_;
-  std::optional<gl::Program> postPass_[2];  // post-classified, unshaded and shaded
-  std::optional<gl::Program> gpuCountPass_, gpuScatterPass_;  // binning the GPU's lists
   const GpuSlabPartition* gpuLists_ = nullptr;
   gl::Buffer splats_, entries_, slabs_;
   TileBins bins_{"tile EWA buffers"};  // each slab entry listed in its (tile, slab) buckets

@@ -75,5 +75,36 @@ TEST_F(SplatProgramSetTest, SharingRenderersKeepTheirOwnFrames) {
   EXPECT_EQ(programs->slab.compiled(), slabVariants);
 }
 
+// Frames drawn in compute tiles (RenderSettings::splatter): the set's tile programs are made by
+// the first renderer that draws in tiles, and a second renderer compiles none of them again.
+TEST_F(SplatProgramSetTest, SharingRenderersShareTheTilePrograms) {
+  const gl::ShaderLibrary shaders;
+  auto programs = std::make_shared<SplatProgramSet>(shaders);
+  SplatRenderer a(shaders, programs), b(shaders, programs);
+  const SyntheticVolume ml = makeSyntheticVolume("marschner-lobb:24");
+  Camera cam;
+  cam.frame(ml.volume.boundsMin(), ml.volume.boundsMax(), {0.3, -0.5, 1.0}, {0, 1, 0}, 1.0);
+  RenderSettings settings;
+  settings.splatter = Splatter::Tiles;
+  for (SplatRenderer* r : {&a, &b}) {
+    r->setPartition(PartitionMode::Cpu);
+    r->setVolume(ml.volume);
+    r->setTransferFunction(*ml.transferFunction);
+  }
+  EXPECT_EQ(programs->tiles, nullptr) << "made only when a renderer draws in tiles";
+  a.render(cam, settings, 48, 48);
+  ASSERT_TRUE(a.stats().tiles);
+  ASSERT_NE(programs->tiles, nullptr);
+  const TileEwaPrograms* first = programs->tiles.get();
+  const size_t compiled = programs->tiles->compiled();
+  EXPECT_GE(compiled, 5u);  // footprints, count, scan, scatter, composite
+  b.render(cam, settings, 48, 48);
+  ASSERT_TRUE(b.stats().tiles);
+  EXPECT_EQ(programs->tiles.get(), first);
+  EXPECT_EQ(programs->tiles->compiled(), compiled);
+  EXPECT_EQ(b.readImage().pixels, a.readImage().pixels);
+  EXPECT_GT(meanValue(a.readImage()), 3.0);
+}
+
 }  // namespace
 }  // namespace ewa::test
