@@ -94,9 +94,9 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   // renderer's own tile frames do (SplatRenderer::loadTiles, timed with the tiles): its slab
   // lists binned where the GPU built them (their making is in partition_ms), else the CPU
   // partition's uploaded; its records made on the GPU; the classification's state set.
-  TileEwaFrame tileFrame;
-  const bool tileEwa = m.ewa.tileComposite(tileFrame.post, tileFrame.shading) &&
-                       m.ewa.splats().size() <= size_t(8'000'000);
+  bool post = false, shading = false;
+  const bool tileEwa =
+      m.ewa.tileComposite(post, shading) && m.ewa.splats().size() <= size_t(8'000'000);
   const auto tileEwaDraw = [&] {
     const auto start = BenchClock::now();
     m.ewa.loadTiles(m.tileEwa);

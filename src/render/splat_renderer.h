@@ -233,14 +233,17 @@ class SplatRenderer : public Renderer {
   bool drawTiles();
   bool drawTilesNow();  // drawTiles, failures thrown
   // The compute splatter's programs, in the set this renderer may share (SplatProgramSet).
-  TileEwaPrograms& tilePrograms();
+  const std::shared_ptr<TileEwaPrograms>& tilePrograms();
   // Sets the crop box's and clipping planes' uniforms and, post-classified, the
   // classification's uniforms and textures (the slab pass's: the pair table, the data's box,
   // the light) of the last frame begun on the compute splatter's composite `program`
   // (TileEwaSplatter::compositeProgram), for its next draw.
   void prepareTileComposite(gl::Program& program);
+  // Splatter auto may draw frames under `settings` in tiles: the GPU's timers are used, the
+  // tiles' programs built and the volume within the splat limit.
+  bool autoTiles(const RenderSettings& settings) const;
   // Whether a whole frame under `settings` is drawn in tiles if they draw it (splatter: Tiles,
-  // or Auto's choice where the GPU's timers are used).
+  // or Auto's choice where autoTiles).
   bool tilesWanted(const RenderSettings& settings) const;
   // Auto splatter, at a frame's end: this timed frame's splat stage a slab entry of the whole
   // frame, for the way it took (frames the tiles do not draw are not counted); the note of

@@ -18,7 +18,7 @@ void SplatRenderer::writeTileSplats(gl::Buffer& out) {
   // The frame's own variant (clipped or not), so the footprints come from the same compiled
   // setup.
   const SplatVariant variant = splatVariant(frame_.settings, frame_.texelBuffers);
-  gl::Program& pass = tilePrograms().footprints(variant.key(), variant.defines());
+  gl::Program& pass = tilePrograms()->footprints(variant.key(), variant.defines());
   setCommonUniforms(pass, frame_.camera, frame_.proj, frame_.settings);
   pass.setUInt("uSplatCount", GLuint(count));
   bindFrameState();
@@ -28,18 +28,20 @@ void SplatRenderer::writeTileSplats(gl::Buffer& out) {
   gl::checkGlError("tile splat records");
 }
 
-bool SplatRenderer::tilesWanted(const RenderSettings& settings) const {
-  if (settings.splatter == Splatter::Tiles) return true;
+bool SplatRenderer::autoTiles(const RenderSettings& settings) const {
   return settings.splatter == Splatter::Auto && gpuTimers_ && !tilesFailed_ &&
-         classified_.splats.size() <= autoTileSplats_ && splatterTuner_.choice() == 1;
+         classified_.splats.size() <= autoTileSplats_;
+}
+
+bool SplatRenderer::tilesWanted(const RenderSettings& settings) const {
+  return settings.splatter == Splatter::Tiles ||
+         (autoTiles(settings) && splatterTuner_.choice() == 1);
 }
 
 void SplatRenderer::reportSplatterCost() {
   if (frame_.settings.splatter == Splatter::Auto) stats_.note = tilesNote_;
   bool post = false, shading = false;
-  if (!frame_.timed || frame_.settings.splatter != Splatter::Auto || tilesFailed_ ||
-      classified_.splats.size() > autoTileSplats_ || !tileComposite(post, shading))
-    return;
+  if (!frame_.timed || !autoTiles(frame_.settings) || !tileComposite(post, shading)) return;
   // Per entry of the whole frame: early termination leaves the rasterizer's later slabs
   // undrawn, and what it saves counts for it.
   const size_t entries = frameEntryCount();
@@ -66,17 +68,14 @@ bool SplatRenderer::drawTiles() {
   }
 }
 
-TileEwaPrograms& SplatRenderer::tilePrograms() {
+const std::shared_ptr<TileEwaPrograms>& SplatRenderer::tilePrograms() {
   // Made on first use, in the set the renderers of the window's levels share.
   if (!programs_->tiles) programs_->tiles = std::make_shared<TileEwaPrograms>(shaders_, 16);
-  return *programs_->tiles;
+  return programs_->tiles;
 }
 
 bool SplatRenderer::drawTilesNow() {
-  if (!tiles_) {
-    tilePrograms();
-    tiles_ = std::make_unique<TileEwaSplatter>(programs_->tiles);
-  }
+  if (!tiles_) tiles_ = std::make_unique<TileEwaSplatter>(tilePrograms());
   if (!loadTiles(*tiles_)) return false;
   tiles_->draw(frame_.width, frame_.height);
   // The GPU's counts are read after the final pass (stepFrame), as for rasterized frames.

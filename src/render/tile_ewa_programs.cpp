@@ -7,8 +7,12 @@ namespace ewa {
 
 namespace {
 
+std::string tileSizeDefine(int tileSize) {
+  return "#define TILE_SIZE " + std::to_string(tileSize) + "\n";
+}
+
 std::string defines(int tileSize, const char* pass) {
-  return "#define TILE_SIZE " + std::to_string(tileSize) + "\n#define " + pass + " 1\n";
+  return tileSizeDefine(tileSize) + "#define " + pass + " 1\n";
 }
 
 const char* const kGpuOrder = "#define GPU_ORDER 1\n";
@@ -47,7 +51,7 @@ gl::Program& TileEwaPrograms::composite(bool post, bool shading) {
   if (!post) return once(composite_[0], "tile_ewa.comp.glsl", defines(tileSize_, "COMPOSITE_PASS"));
   const std::string s = shading ? "1" : "0";
   return once(composite_[shading ? 2 : 1], "tile_ewa_post.comp.glsl",
-              "#define TILE_SIZE " + std::to_string(tileSize_) + "\n#define SLAB_SHADING " + s +
+              tileSizeDefine(tileSize_) + "#define SLAB_SHADING " + s +
                   "\n#define SLAB_FIELD_NORMALS " + s + "\n");
 }
 

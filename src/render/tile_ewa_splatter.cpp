@@ -26,9 +26,7 @@ TileEwaSplatter::TileEwaSplatter(const gl::ShaderLibrary& shaders, int tileSize)
     : TileEwaSplatter(std::make_shared<TileEwaPrograms>(shaders, tileSize)) {}
 
 TileEwaSplatter::TileEwaSplatter(std::shared_ptr<TileEwaPrograms> programs)
-    : programs_(std::move(programs)),
-      tileSize_(programs_->tileSize()),
-      chunkIterations_(softwareRasterizer() ? 60000 : 0) {}
+    : programs_(std::move(programs)), chunkIterations_(softwareRasterizer() ? 60000 : 0) {}
 
 void TileEwaSplatter::setFrame(const TileEwaFrame& frame) {
   // None given: the records are written on the GPU (reserveSplats, then the renderer's pass).
@@ -95,7 +93,8 @@ gl::Program& TileEwaSplatter::compositeProgram() {
 TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {
   if (picture_.width() != width || picture_.height() != height)
     picture_ = gl::Texture::create2D(GL_RGBA32F, width, height);
-  const glm::ivec2 tiles((width + tileSize_ - 1) / tileSize_, (height + tileSize_ - 1) / tileSize_);
+  const int side = programs_->tileSize();
+  const glm::ivec2 tiles((width + side - 1) / side, (height + side - 1) / side);
   const size_t slabs = std::max<size_t>(1, slabCount_);
   const size_t buckets = size_t(tiles.x) * size_t(tiles.y) * slabs;
   gl::Program& composite = compositeProgram();

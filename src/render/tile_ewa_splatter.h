@@ -92,8 +92,7 @@ class TileEwaSplatter {
   gl::Program& compositeProgram();
 
  private:
-  std::shared_ptr<TileEwaPrograms> programs_;
-  int tileSize_;
+  std::shared_ptr<TileEwaPrograms> programs_;  // of its tile size
   const GpuSlabPartition* gpuLists_ = nullptr;
   gl::Buffer splats_, entries_, slabs_;
   TileBins bins_{"tile EWA buffers"};  // each slab entry listed in its (tile, slab) buckets

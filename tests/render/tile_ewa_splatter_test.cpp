@@ -368,7 +368,9 @@ TEST_F(TileEwaSplatterTest, AutoSplatterTriesBothThenTakesTheFaster) {
   ASSERT_GT(frames[1].splatMs, 0.0);
   ASSERT_EQ(frames[0].slabEntries, frames[1].slabEntries);
   EXPECT_EQ(frames[2].tiles, frames[1].splatMs < frames[0].splatMs);
-  if (!frames[2].tiles) EXPECT_EQ(frames[2].slabPasses, 2) << "the tiles' frame was counted";
+  if (!frames[2].tiles) {
+    EXPECT_EQ(frames[2].slabPasses, 2) << "the tiles' frame was counted";
+  }
   // A volume of more splats than auto's limit stays rasterized (the tiles' memory).
   r.setGpuTimers(true);
   r.setAutoTileSplats(r.splats().size() - 1);
