@@ -757,10 +757,10 @@ bool SplatRenderer::stepFrame(double budgetMs) {
   // A whole frame drawn in this one step may be timed on the GPU: no wait between its stages.
   frame_.timed = gpuTimers_ && !std::isfinite(budgetMs) && frame_.drawnWeight == 0.0;
   if (frame_.timed) glQueryCounter(timers_[0], GL_TIMESTAMP);
-  // A whole composite frame in compute tiles, if asked for and they draw its settings.
-  if (frame_.drawSplats && tilesWanted(frame_.settings) &&
-      frame_.settings.mode == RenderMode::Composite && !std::isfinite(budgetMs) &&
-      frame_.nextSlab == 0 && drawTiles()) {
+  // A whole composite frame in compute tiles, if asked for and they draw its settings (in a
+  // budgeted step: auto's choice, drawn whole where it fits a UI frame).
+  if (frame_.drawSplats && tilesFitStep(budgetMs) && tilesWanted(frame_.settings) &&
+      frame_.settings.mode == RenderMode::Composite && frame_.nextSlab == 0 && drawTiles()) {
     frame_.drawSplats = false;
     stats_.splatMs += millisecondsSince(drawStart);  // the tiles wait for their passes
   }

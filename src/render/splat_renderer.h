@@ -149,6 +149,14 @@ class SplatRenderer : public Renderer {
   static constexpr size_t kAutoTileSplats = 8'000'000;
   // Test hook: another limit than kAutoTileSplats.
   void setAutoTileSplats(size_t splats) { autoTileSplats_ = splats; }
+  // A budgeted frame (the window's refinement) is drawn whole in tiles in one step where auto
+  // chooses them and their last frame here, at the cost a slab entry it took, would take at
+  // most this long: a UI frame under the 100 ms the window keeps to. Before the tiles' first
+  // frame here they are tried (on a GPU they took a tenth of the rasterizer's time).
+  static constexpr double kTileStepMs = 80.0;
+  // Test hooks: another limit than kTileStepMs; the auto splatter's costs.
+  void setTileStepMs(double ms) { tileStepMs_ = ms; }
+  TwoWayTuner& splatterTuner() { return splatterTuner_; }
   bool gpuTimers() const { return gpuTimers_; }
   // GL_RENDERER names a software rasterizer (llvmpipe, softpipe): what the auto modes go by.
   bool softwareGl() const { return softwareGl_; }
@@ -245,9 +253,13 @@ class SplatRenderer : public Renderer {
   // Whether a whole frame under `settings` is drawn in tiles if they draw it (splatter: Tiles,
   // or Auto's choice where autoTiles).
   bool tilesWanted(const RenderSettings& settings) const;
-  // Auto splatter, at a frame's end: this timed frame's splat stage a slab entry of the whole
-  // frame, for the way it took (frames the tiles do not draw are not counted); the note of
-  // tiles that failed to build.
+  // Whether tiles may draw the frame in a step of `budgetMs` (infinite: a whole frame), from
+  // the slabs' counts known by then (kTileStepMs).
+  bool tilesFitStep(double budgetMs) const;
+  // Auto splatter, at a frame's end: this frame's splat stage a slab entry of the whole frame
+  // (GPU timers for a whole frame; the steps' own clock, their waits included, for a budgeted
+  // one), for the way it took (frames the tiles do not draw are not counted); the note of tiles
+  // that failed to build.
   void reportSplatterCost();
   // The slab entries of every slab of the frame (frame_.slabs), drawn or not.
   size_t frameEntryCount() const;
@@ -381,6 +393,7 @@ class SplatRenderer : public Renderer {
   bool tilesFailed_ = false;
   std::string tilesNote_;
   size_t autoTileSplats_ = kAutoTileSplats;  // setAutoTileSplats
+  double tileStepMs_ = kTileStepMs;          // setTileStepMs
   float pointSizeLimit_ = 64.0f;
   float glPointSizeLimit_ = 64.0f;
   int maxViewport_ = 16384;  // GL_MAX_VIEWPORT_DIMS, the smaller

@@ -1,5 +1,6 @@
 // SplatRenderer::writeTileSplats and the rest of what the compute splatter takes from the frame:
 // its records from the splat shaders' setup, its variant, the classification's state.
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 
@@ -38,10 +39,21 @@ bool SplatRenderer::tilesWanted(const RenderSettings& settings) const {
          (autoTiles(settings) && splatterTuner_.choice() == 1);
 }
 
+bool SplatRenderer::tilesFitStep(double budgetMs) const {
+  if (!std::isfinite(budgetMs)) return true;
+  // Asked for outright, tiles draw whole frames only: on a software GL one would hold a UI
+  // frame for seconds, and without auto's costs nothing would tell.
+  if (frame_.settings.splatter != Splatter::Auto) return false;
+  const double cost = splatterTuner_.cost(1);
+  return cost < 0.0 || cost * double(frameEntryCount()) <= tileStepMs_;
+}
+
 void SplatRenderer::reportSplatterCost() {
   if (frame_.settings.splatter == Splatter::Auto) stats_.note = tilesNote_;
   bool post = false, shading = false;
-  if (!frame_.timed || !autoTiles(frame_.settings) || !tileComposite(post, shading)) return;
+  // With the GPU's timers every whole frame is timed on the GPU, and a budgeted frame's steps
+  // wait for their chunks: either way splatMs is the splat stage's whole time.
+  if (!autoTiles(frame_.settings) || !tileComposite(post, shading)) return;
   // Per entry of the whole frame: early termination leaves the rasterizer's later slabs
   // undrawn, and what it saves counts for it.
   const size_t entries = frameEntryCount();

@@ -383,6 +383,62 @@ TEST_F(TileEwaSplatterTest, AutoSplatterTriesBothThenTakesTheFaster) {
   r.setGpuTimers(timers);
 }
 
+// The window's refinement under auto (budgeted steps): where the GPU's timers are used, its
+// first frame is rasterized in steps, the next drawn whole in tiles in one step, and both costs
+// count for the choice as whole frames' do. A budgeted frame stays rasterized where the tiles'
+// last cost a slab entry would make the step longer than the limit, and when tiles are asked
+// for outright (a whole frame is drawn in them then). Every picture the rasterizer's within the
+// tiles' levels, from either partition's lists.
+TEST_F(TileEwaSplatterTest, AutoSplatterDrawsBudgetedFramesInTilesWhereTheyFit) {
+  const Camera cam = obliqueCamera();
+  const int width = 61, height = 53;
+  for (const PartitionMode partition : {PartitionMode::Cpu, PartitionMode::Gpu}) {
+    SCOPED_TRACE(int(partition));
+    SplatRenderer& r = wallRenderer(partition);
+    const bool timers = r.gpuTimers();
+    RenderSettings settings = tileSettings();
+    settings.lighting.enabled = true;  // post-classified and shaded from the field
+    r.setGpuTimers(false);
+    r.render(cam, settings, width, height);
+    const Image8 raster = r.readImage();
+    r.setGpuTimers(true);
+    r.setVolume(vol);  // both ways timed afresh
+    // Steps of a microsecond: a chunk of slabs each. Returns the steps that drew (the last,
+    // and those before it that left part of the frame drawn; the CPU partition's worker and the
+    // upload of its lists take steps of their own).
+    const auto budgeted = [&](const RenderSettings& s) {
+      r.beginFrame(cam, s, width, height);
+      int drawing = 1;
+      while (!r.stepFrame(0.001)) drawing += r.frameProgress() > 0.0;
+      EXPECT_LE(maxDifference(r.readImage(), raster), 4);
+      return drawing;
+    };
+    EXPECT_GT(budgeted(settings), 2);
+    EXPECT_FALSE(r.stats().tiles);
+    EXPECT_GT(r.splatterTuner().cost(0), 0.0) << "the budgeted frame's cost counts";
+    EXPECT_EQ(budgeted(settings), 1) << "the tiles tried, whole";
+    EXPECT_TRUE(r.stats().tiles);
+    const double tileCost = r.splatterTuner().cost(1);
+    EXPECT_GT(tileCost, 0.0);
+    // Tiles the cheaper (as on a GPU): drawn whole while their frame fits the step limit.
+    r.splatterTuner().report(1, r.splatterTuner().cost(0) * 0.1);
+    EXPECT_EQ(budgeted(settings), 1);
+    EXPECT_TRUE(r.stats().tiles);
+    r.splatterTuner().report(1, r.splatterTuner().cost(0) * 0.1);
+    r.setTileStepMs(0.0);  // no frame fits
+    EXPECT_GT(budgeted(settings), 2);
+    EXPECT_FALSE(r.stats().tiles);
+    r.setTileStepMs(SplatRenderer::kTileStepMs);
+    RenderSettings tiles = settings;
+    tiles.splatter = Splatter::Tiles;
+    EXPECT_GT(budgeted(tiles), 2);
+    EXPECT_FALSE(r.stats().tiles) << "tiles asked for: whole frames only";
+    r.render(cam, tiles, width, height);
+    EXPECT_TRUE(r.stats().tiles);
+    r.setGpuTimers(timers);
+  }
+}
+
 // Auto on a GL whose compiler rejects the tiles' programs: the frame is rasterized instead and
 // the statistics say why in one line from then on; asked for tiles outright, the error is
 // thrown.
