@@ -17,6 +17,7 @@
 #include "io/format_loaders.h"
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
+#include "io/text_fields.h"
 #include "io/volume_layout.h"
 
 namespace ewa {
@@ -180,32 +181,48 @@ const DicomSeries& pickSeries(const std::string& path, const std::vector<DicomSe
   failLoad(path, "no series " + quoteText(uid, 80) + " here (series: " + known + ")");
 }
 
+// The folder of `file` relative to `root` (where a series lies in a CD's tree).
+std::string relativeFolder(const std::string& file, const std::string& root) {
+  const std::filesystem::path rel =
+      std::filesystem::path(file).parent_path().lexically_relative(root);
+  return rel.empty() ? std::string(".") : rel.generic_string();
+}
+
 }  // namespace
 
 Volume loadDicom(const std::string& path, const std::string& seriesUid) {
   std::error_code ec;
-  const bool folder = std::filesystem::is_directory(path, ec);
-  const std::string dir = folder ? path : std::filesystem::path(path).parent_path().string();
+  const std::filesystem::path named(path);
+  // A CD's DICOMDIR names the images in the folders below it: opened as that folder is.
+  const bool dicomdir = toLower(named.filename().string()) == "dicomdir";
+  const bool folder = dicomdir || std::filesystem::is_directory(path, ec);
+  std::string dir = std::filesystem::is_directory(path, ec) ? path : named.parent_path().string();
+  if (dir.empty()) dir = ".";
   if (!folder && !looksLikeDicom(path))
     failLoad(path,
              "not a DICOM file (no 'DICM' at byte 128; files without the Part 10 preamble "
              "are not read)");
   std::string fileSeries;
-  const std::vector<DicomSeries> all =
-      scanDicomFolder(dir.empty() ? "." : dir, folder ? std::string() : path, &fileSeries);
+  std::vector<DicomSeries> all = scanDicomFolder(dir, folder ? std::string() : path, &fileSeries);
+  // No image in the folder itself: the images of the folders below it (a CD's tree).
+  const bool below = folder && all.empty();
+  if (below) all = scanDicomFolder(dir, std::string(), nullptr, true);
   if (all.empty())
-    failLoad(path, folder ? "a directory with no DICOM image or TIFF file" : "not a DICOM image");
+    failLoad(path, folder ? "a directory with no DICOM image or TIFF file, in it or below it"
+                          : "not a DICOM image");
   if (!folder && fileSeries.empty() && seriesUid.empty())
     failLoad(path, "not a DICOM image (no Rows and Columns)");
   const DicomSeries& chosen = pickSeries(path, all, seriesUid, fileSeries);
 
   VolumeLayout layout;
   layout.patientFrame = true;
-  if (all.size() > 1)
+  if (all.size() > 1 || below)  // below: where the series lies, even alone
     for (const DicomSeries& s : all)
-      layout.notes.push_back("series " + s.uid + ": " + std::to_string(s.slices.size()) +
-                             " slices" + (s.description.empty() ? "" : ", " + s.description) +
-                             (&s == &chosen ? " (open)" : " (--series UID opens it)"));
+      layout.notes.push_back(
+          "series " + s.uid + ": " + std::to_string(s.slices.size()) + " slices" +
+          (s.description.empty() ? "" : ", " + s.description) +
+          (below ? " in " + quoteText(relativeFolder(s.slices.front().file, dir), 80) : "") +
+          (&s == &chosen ? " (open)" : " (--series UID opens it)"));
   std::vector<DicomSlice> slices = chosen.slices;
   // The size most slices have is the series' size; the odd one out is named.
   std::map<std::pair<int64_t, int64_t>, size_t> sizes;

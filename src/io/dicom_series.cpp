@@ -50,25 +50,46 @@ int64_t integer(const char* text) {
   return text && parseInt64(trim(std::string(text)), v) ? v : 0;
 }
 
+std::vector<std::string> dicomCandidates(const std::string& folder, bool below) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> files;
+  std::error_code ec;
+  const auto consider = [&files](const fs::directory_entry& entry) {
+    std::error_code statError;  // a dangling link is skipped, not the listing's failure
+    // GDCM sizes buffers by element lengths: only files whose lengths fit reach it.
+    if (entry.is_regular_file(statError) &&
+        checkDicomStructure(entry.path().string()) == DicomStructure::Plausible)
+      files.push_back(entry.path().string());
+  };
+  if (below) {
+    size_t entries = 0;
+    fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec);
+    for (const fs::recursive_directory_iterator end; !ec && it != end; it.increment(ec)) {
+      if (++entries > kDicomMaxEntries)
+        failLoad(folder, "more than " + std::to_string(kDicomMaxEntries) +
+                             " files and folders below it: open the series' own folder");
+      if (it.depth() + 1 >= kDicomMaxDepth) it.disable_recursion_pending();
+      consider(*it);
+    }
+  } else {
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
+      consider(*it);
+  }
+  if (ec) failLoad(folder, "cannot list the folder (" + ec.message() + ")");
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 }  // namespace
 
 std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::string& namedFile,
-                                         std::string* fileSeries) {
+                                         std::string* fileSeries, bool below) {
   // GDCM reports on stderr by default; our errors are one line each, from us.
   gdcm::Trace::WarningOff();
   gdcm::Trace::ErrorOff();
   gdcm::Trace::DebugOff();
-  std::vector<std::string> files;
+  const std::vector<std::string> files = dicomCandidates(folder, below);
   std::error_code ec;
-  for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end;
-       it.increment(ec)) {
-    if (!it->is_regular_file(ec)) continue;
-    // GDCM sizes buffers by element lengths: only files whose lengths fit reach it.
-    if (checkDicomStructure(it->path().string()) == DicomStructure::Plausible)
-      files.push_back(it->path().string());
-  }
-  if (ec) failLoad(folder, "cannot list the folder (" + ec.message() + ")");
-  std::sort(files.begin(), files.end());
 
   gdcm::Scanner scanner;
   for (const gdcm::Tag& t : {kSeriesUid, kSeriesDescription, kPosition, kOrientation, kRows,

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <glm/vec3.hpp>
 #include <string>
 #include <vector>
@@ -29,11 +31,15 @@ struct DicomSeries {
   std::vector<DicomSlice> slices;
 };
 
-// Reads the headers of the regular files in `folder` (not below it) and groups the images
-// (files with Rows and Columns) by SeriesInstanceUID, largest series first. Files that are not
-// DICOM are skipped. `fileSeries` gets the series of `namedFile` when that is one of them.
+// Reads the headers of the regular files in `folder` (with `below`, in its subfolders too, as a
+// CD's DICOMDIR tree holds them: not through links to folders, at most kDicomMaxDepth levels
+// down and kDicomMaxEntries entries, else LoadError) and groups the images (files with Rows and
+// Columns) by SeriesInstanceUID, largest series first. Files that are not DICOM are skipped.
+// `fileSeries` gets the series of `namedFile` when that is one of them.
 std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::string& namedFile,
-                                         std::string* fileSeries);
+                                         std::string* fileSeries, bool below = false);
+constexpr int kDicomMaxDepth = 8;
+constexpr size_t kDicomMaxEntries = 100000;
 
 // Sorts the slices by their position along the slice normal (row x column cosines), never by
 // name. Throws LoadError naming `path` when slices share a position or their orientations

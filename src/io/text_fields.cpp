@@ -1,6 +1,8 @@
 // Strict number and word parsing for header text; uses from_chars so the locale cannot interfere.
 #include "io/text_fields.h"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <system_error>
 
@@ -95,6 +97,27 @@ bool parseDoubleList(std::string_view text, std::vector<double>& out) {
     out.push_back(v);
   }
   return true;
+}
+
+bool naturalLess(const std::string& a, const std::string& b) {
+  size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (std::isdigit(uint8_t(a[i])) && std::isdigit(uint8_t(b[j]))) {
+      size_t ie = i, je = j;
+      while (ie < a.size() && std::isdigit(uint8_t(a[ie]))) ++ie;
+      while (je < b.size() && std::isdigit(uint8_t(b[je]))) ++je;
+      std::string na = a.substr(i, ie - i), nb = b.substr(j, je - j);
+      na.erase(0, std::min(na.find_first_not_of('0'), na.size()));
+      nb.erase(0, std::min(nb.find_first_not_of('0'), nb.size()));
+      if (na.size() != nb.size()) return na.size() < nb.size();
+      if (na != nb) return na < nb;
+      i = ie, j = je;
+    } else {
+      if (a[i] != b[j]) return a[i] < b[j];
+      ++i, ++j;
+    }
+  }
+  return a.size() - i < b.size() - j;
 }
 
 }  // namespace ewa

@@ -26,4 +26,7 @@ bool parseDouble(std::string_view text, double& out);
 bool parseInt64List(std::string_view text, std::vector<int64_t>& out);
 bool parseDoubleList(std::string_view text, std::vector<double>& out);
 
+// Names in natural order: digit runs compare by value ("slice2" before "slice10"; TIFF stacks).
+bool naturalLess(const std::string& a, const std::string& b);
+
 }  // namespace ewa

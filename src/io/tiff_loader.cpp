@@ -2,7 +2,6 @@
 #include <tiffio.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdarg>
 #include <cstring>
@@ -70,6 +69,8 @@ class TiffFile {
 struct PageFormat {
   uint32_t width = 0, height = 0;
   uint16_t bits = 0, samples = 1, sampleFormat = SAMPLEFORMAT_UINT, planar = PLANARCONFIG_CONTIG;
+  uint32_t tileWidth = 0, tileHeight = 0;  // 0: stored in strips
+  // Strips or tiles may differ from page to page; the samples may not.
   bool operator==(const PageFormat& o) const {
     return width == o.width && height == o.height && bits == o.bits && samples == o.samples &&
            sampleFormat == o.sampleFormat && planar == o.planar;
@@ -80,30 +81,36 @@ struct PageFormat {
   }
 };
 
-// The page's samples must fit in its strips before anything is sized by the header: all of
-// them when uncompressed, and at most kMaxRatio times the strips' bytes when compressed (LZW,
-// the loosest of TIFF's codecs, stays under it).
+// The page's samples must fit in its strips or tiles before anything is sized by the header:
+// all of them when uncompressed, and at most kMaxRatio times the stored bytes when compressed
+// (LZW, the loosest of TIFF's codecs, stays under it).
 constexpr uint64_t kMaxRatio = 4096;
 
-void checkStripBytes(const TiffFile& file, const PageFormat& f) {
+void checkStoredBytes(const TiffFile& file, const PageFormat& f) {
   TIFF* t = file.get();
+  const bool tiled = TIFFIsTiled(t);
+  const std::string blocks = tiled ? "tiles" : "strips";
   uint16_t compression = COMPRESSION_NONE;
   TIFFGetFieldDefaulted(t, TIFFTAG_COMPRESSION, &compression);
   uint64_t* counts = nullptr;
-  if (!TIFFGetField(t, TIFFTAG_STRIPBYTECOUNTS, &counts) || !counts)
-    file.fail("a page has no strip byte counts");
+  if (!TIFFGetField(t, tiled ? TIFFTAG_TILEBYTECOUNTS : TIFFTAG_STRIPBYTECOUNTS, &counts) ||
+      !counts)
+    file.fail("a page has no " + blocks.substr(0, blocks.size() - 1) + " byte counts");
   uint64_t stored = 0;
-  for (uint32_t s = 0; s < TIFFNumberOfStrips(t); ++s)
-    if (__builtin_add_overflow(stored, counts[s], &stored)) file.fail("bad strip byte counts");
+  const uint32_t n = tiled ? TIFFNumberOfTiles(t) : TIFFNumberOfStrips(t);
+  for (uint32_t s = 0; s < n; ++s)
+    if (__builtin_add_overflow(stored, counts[s], &stored))
+      file.fail("bad " + blocks + " byte counts");
   if (stored > file.size())
-    file.fail("strip byte counts of " + std::to_string(stored) + " exceed the file's " +
-              std::to_string(file.size()) + " bytes");
+    file.fail(blocks.substr(0, blocks.size() - 1) + " byte counts of " + std::to_string(stored) +
+              " exceed the file's " + std::to_string(file.size()) + " bytes");
   const unsigned __int128 samples =
       (unsigned __int128)f.width * f.height * f.samples * std::max<uint16_t>(f.bits, 1) / 8;
   if (compression == COMPRESSION_NONE ? samples > stored
                                       : samples > (unsigned __int128)stored * kMaxRatio + 65536)
     file.fail("a page of " + std::to_string(f.width) + " x " + std::to_string(f.height) +
-              " does not fit in its " + std::to_string(stored) + " bytes of strips (truncated?)");
+              " does not fit in its " + std::to_string(stored) + " bytes of " + blocks +
+              " (truncated?)");
 }
 
 PageFormat pageFormat(const TiffFile& file) {
@@ -116,8 +123,23 @@ PageFormat pageFormat(const TiffFile& file) {
   TIFFGetFieldDefaulted(t, TIFFTAG_SAMPLESPERPIXEL, &f.samples);
   TIFFGetFieldDefaulted(t, TIFFTAG_SAMPLEFORMAT, &f.sampleFormat);
   TIFFGetFieldDefaulted(t, TIFFTAG_PLANARCONFIG, &f.planar);
-  if (TIFFIsTiled(t)) file.fail("tiled TIFF pages are not supported (only strips)");
-  checkStripBytes(file, f);
+  if (TIFFIsTiled(t)) {
+    if (!TIFFGetField(t, TIFFTAG_TILEWIDTH, &f.tileWidth) ||
+        !TIFFGetField(t, TIFFTAG_TILELENGTH, &f.tileHeight) || f.tileWidth == 0 ||
+        f.tileHeight == 0)
+      file.fail("a tiled page has no tile size");
+    // Tiles overhang the page up to their size's multiple of 16; a tile much bigger than the
+    // page would size the tile buffer from the header alone.
+    const auto bytesOf = [&](uint64_t w, uint64_t h) {
+      return (unsigned __int128)w * h * f.samples * std::max<uint16_t>(f.bits, 8) / 8;
+    };
+    const unsigned __int128 limit =
+        std::max<unsigned __int128>(4 * bytesOf(f.width, f.height), 4u << 20);
+    if (bytesOf(f.tileWidth, f.tileHeight) > limit)
+      file.fail("tiles of " + std::to_string(f.tileWidth) + " x " + std::to_string(f.tileHeight) +
+                " for a page of " + std::to_string(f.width) + " x " + std::to_string(f.height));
+  }
+  checkStoredBytes(file, f);
   return f;
 }
 
@@ -131,8 +153,14 @@ FileScalar scalarOf(const TiffFile& file, const PageFormat& f) {
             std::to_string(f.sampleFormat) + "; supported: 8/16-bit integers, 32-bit float)");
 }
 
-// Copies channel `channel` of the current page into `out` (width * height samples).
-void readPage(const TiffFile& file, const PageFormat& f, int channel, uint8_t* out) {
+// Copies channel `channel` of `count` pixels from `src` (`stride` samples a pixel) to `dst`.
+void copyChannel(const uint8_t* src, size_t stride, size_t bytes, uint32_t count, uint8_t* dst) {
+  for (uint32_t x = 0; x < count; ++x)
+    std::memcpy(dst + x * bytes, src + x * stride * bytes, bytes);
+}
+
+// Copies channel `channel` of the current page, stored in strips, into `out`.
+void readStrips(const TiffFile& file, const PageFormat& f, int channel, uint8_t* out) {
   TIFF* t = file.get();
   const size_t bytes = f.bits / 8;
   const tmsize_t lineSize = TIFFScanlineSize(t);
@@ -143,12 +171,44 @@ void readPage(const TiffFile& file, const PageFormat& f, int channel, uint8_t* o
   for (uint32_t y = 0; y < f.height; ++y) {
     if (TIFFReadScanline(t, line.data(), y, planar ? uint16_t(channel) : 0) < 0)
       file.fail("cannot read row " + std::to_string(y) + " (truncated or corrupt file?)");
-    uint8_t* dst = out + size_t(y) * f.width * bytes;
-    for (uint32_t x = 0; x < f.width; ++x) {
-      const size_t src = planar ? x * bytes : (size_t(x) * f.samples + size_t(channel)) * bytes;
-      std::memcpy(dst + x * bytes, line.data() + src, bytes);
-    }
+    copyChannel(line.data() + (planar ? 0 : size_t(channel) * bytes), planar ? 1 : f.samples, bytes,
+                f.width, out + size_t(y) * f.width * bytes);
   }
+}
+
+// The same from tiles (microscopy's big planes, GeoTIFF-style writers): each tile decoded once,
+// its part inside the page copied.
+void readTiles(const TiffFile& file, const PageFormat& f, int channel, uint8_t* out) {
+  TIFF* t = file.get();
+  const size_t bytes = f.bits / 8;
+  const bool planar = f.planar == PLANARCONFIG_SEPARATE;
+  const size_t stride = planar ? 1 : f.samples;
+  const tmsize_t tileSize = TIFFTileSize(t);
+  const uint64_t need = uint64_t(f.tileWidth) * f.tileHeight * bytes * stride;
+  if (tileSize <= 0 || uint64_t(tileSize) < need) file.fail("bad tile size");
+  std::vector<uint8_t> tile(static_cast<size_t>(tileSize));
+  for (uint32_t y0 = 0; y0 < f.height; y0 += f.tileHeight)
+    for (uint32_t x0 = 0; x0 < f.width; x0 += f.tileWidth) {
+      const uint32_t index = TIFFComputeTile(t, x0, y0, 0, planar ? uint16_t(channel) : 0);
+      std::fill(tile.begin(), tile.end(), uint8_t(0));
+      if (TIFFReadEncodedTile(t, index, tile.data(), tileSize) < 0)
+        file.fail("cannot read the tile at " + std::to_string(x0) + ", " + std::to_string(y0) +
+                  " (truncated or corrupt file?)");
+      const uint32_t w = std::min(f.tileWidth, f.width - x0);
+      const uint32_t h = std::min(f.tileHeight, f.height - y0);
+      for (uint32_t r = 0; r < h; ++r)
+        copyChannel(tile.data() +
+                        (size_t(r) * f.tileWidth * stride + (planar ? 0 : size_t(channel))) * bytes,
+                    stride, bytes, w, out + (size_t(y0 + r) * f.width + x0) * bytes);
+    }
+}
+
+// Copies channel `channel` of the current page into `out` (width * height samples).
+void readPage(const TiffFile& file, const PageFormat& f, int channel, uint8_t* out) {
+  if (f.tileWidth > 0)
+    readTiles(file, f, channel, out);
+  else
+    readStrips(file, f, channel, out);
 }
 
 // ImageJ's description: "spacing=", "unit=", "channels=" lines.
@@ -157,28 +217,6 @@ std::string imageJField(const std::string& description, const std::string& key) 
     if (line.compare(0, key.size() + 1, key + "=") == 0) return trim(line.substr(key.size() + 1));
   }
   return "";
-}
-
-// Names in natural order: digit runs compare by value ("slice2" before "slice10").
-bool naturalLess(const std::string& a, const std::string& b) {
-  size_t i = 0, j = 0;
-  while (i < a.size() && j < b.size()) {
-    if (std::isdigit(uint8_t(a[i])) && std::isdigit(uint8_t(b[j]))) {
-      size_t ie = i, je = j;
-      while (ie < a.size() && std::isdigit(uint8_t(a[ie]))) ++ie;
-      while (je < b.size() && std::isdigit(uint8_t(b[je]))) ++je;
-      std::string na = a.substr(i, ie - i), nb = b.substr(j, je - j);
-      na.erase(0, std::min(na.find_first_not_of('0'), na.size()));
-      nb.erase(0, std::min(nb.find_first_not_of('0'), nb.size()));
-      if (na.size() != nb.size()) return na.size() < nb.size();
-      if (na != nb) return na < nb;
-      i = ie, j = je;
-    } else {
-      if (a[i] != b[j]) return a[i] < b[j];
-      ++i, ++j;
-    }
-  }
-  return a.size() - i < b.size() - j;
 }
 
 }  // namespace

@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <glm/matrix.hpp>
 #include <string>
+#include <tuple>
 
+#include "io/dicom_series.h"
 #include "io/volume_loader.h"
 #include "medical_test_files.h"
 
@@ -234,6 +236,54 @@ TEST(DicomFiles, GantryTiltWarnsAndSeveralSeriesAreListed) {
   EXPECT_DOUBLE_EQ(other.spacing().z, 3.0);
 }
 
+// A CD's tree: a DICOMDIR and no image at the top, the series in folders below. The folder (or
+// its DICOMDIR) opens the largest series, the notes say where each lies; a folder with images of
+// its own keeps to them; images deeper than kDicomMaxDepth levels are not looked for.
+TEST(DicomFiles, SeriesInFoldersBelowAFolderWithoutImages) {
+  TempDir dir;
+  const std::string cd = dir.path("cd");
+  const std::string first = dicomSeries(dir, "cd/PAT1/STU1/SER1", 5);
+  testing::DicomSliceSpec other;
+  other.seriesUid = "1.2.826.0.1.3680043.2.1125.7";
+  dicomSeries(dir, "cd/PAT1/STU1/SER2", 2, other);
+  dir.write("cd/README.TXT", "a CD");
+  {
+    // The DICOMDIR: a DICOM file (the Part 10 preamble) that is no image.
+    gdcm::Reader reader;
+    reader.SetFileName((first + "/im0.dcm").c_str());
+    ASSERT_TRUE(reader.Read());
+    gdcm::DataSet& ds = reader.GetFile().GetDataSet();
+    for (const gdcm::Tag& tag :
+         {gdcm::Tag(0x0028, 0x0010), gdcm::Tag(0x0028, 0x0011), gdcm::Tag(0x7fe0, 0x0010)})
+      ds.Remove(tag);
+    gdcm::Writer writer;
+    writer.SetFile(reader.GetFile());
+    writer.SetFileName((cd + "/DICOMDIR").c_str());
+    ASSERT_TRUE(writer.Write());
+  }
+  const Volume v = loadVolume(cd);
+  EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{5, 4, 5}));
+  EXPECT_EQ(v.bytes(), loadVolume(first).bytes());
+  std::string notes;
+  for (const std::string& n : v.notes()) notes += n + "\n";
+  EXPECT_NE(notes.find("series 1.2.826.0.1.3680043.2.1125.7: 2 slices in 'PAT1/STU1/SER2' "
+                       "(--series UID opens it)"),
+            std::string::npos)
+      << notes;
+  EXPECT_NE(notes.find("5 slices in 'PAT1/STU1/SER1' (open)"), std::string::npos) << notes;
+  EXPECT_EQ(loadVolume(cd + "/DICOMDIR").bytes(), v.bytes());
+  EXPECT_EQ(loadVolume(cd, {other.seriesUid, 0, 0}).dims()[2], 2);
+  // Images of its own: the folder's, not those below.
+  const std::string own = dicomSeries(dir, "own", 3);
+  dicomSeries(dir, "own/sub", 6);
+  EXPECT_EQ(loadVolume(own).dims()[2], 3);
+  // Nine levels down: out of reach.
+  std::string deep = "deep";
+  for (int level = 0; level < kDicomMaxDepth + 1; ++level) deep += "/d" + std::to_string(level);
+  dicomSeries(dir, deep, 2);
+  expectVolumeLoadError(dir.path("deep"), "no DICOM image or TIFF file, in it or below it");
+}
+
 TEST(DicomFiles, BadSeriesFailWithOneLine) {
   TempDir dir;
   std::filesystem::create_directories(dir.path("empty"));
@@ -334,6 +384,71 @@ TEST(TiffFiles, FolderInNaturalOrder) {
   EXPECT_EQ(v.value(0, 0, 2), 10);
 }
 
+// Tiled pages (microscopy's big planes): tiles overhanging the page's right and bottom edges,
+// interleaved and planar samples, uncompressed and compressed, give the strips' volume; a cut
+// tiled file fails with one line.
+TEST(TiffFiles, TiledPagesReadAsStripsDo) {
+  TempDir dir;
+  const uint32_t width = 37, height = 21;  // not multiples of the 16-pixel tiles
+  const uint16_t samples = 3;
+  std::vector<std::vector<uint16_t>> pages(2,
+                                           std::vector<uint16_t>(size_t(width) * height * samples));
+  for (size_t p = 0; p < pages.size(); ++p)
+    for (size_t i = 0; i < pages[p].size(); ++i) pages[p][i] = uint16_t(7919 * i + 1000 * p);
+  ASSERT_TRUE(
+      testing::writeTiff(dir.path("strips.tif"), width, height, pages, SAMPLEFORMAT_UINT, samples));
+  for (const auto& [name, planar, compression] :
+       {std::tuple{"contig.tif", false, COMPRESSION_NONE},
+        std::tuple{"planar.tif", true, COMPRESSION_NONE},
+        std::tuple{"deflate.tif", false, COMPRESSION_ADOBE_DEFLATE},
+        std::tuple{"planar_lzw.tif", true, COMPRESSION_LZW}}) {
+    SCOPED_TRACE(name);
+    ASSERT_TRUE(testing::writeTiledTiff(dir.path(name), width, height, pages, SAMPLEFORMAT_UINT,
+                                        samples, 16, planar, uint16_t(compression)));
+    for (int channel = 0; channel < samples; ++channel) {
+      const Volume strips = loadVolume(dir.path("strips.tif"), {"", 0, channel});
+      const Volume tiles = loadVolume(dir.path(name), {"", 0, channel});
+      ASSERT_EQ(tiles.dims(), (std::array<int64_t, 3>{width, height, 2}));
+      EXPECT_EQ(tiles.bytes(), strips.bytes()) << "channel " << channel;
+      // One value by hand: the last pixel of the second page, past the last tile's seam.
+      EXPECT_EQ(tiles.value(width - 1, height - 1, 1),
+                double(uint16_t(7919 * ((size_t(width) * height - 1) * samples + channel) + 1000)));
+    }
+  }
+  // A header whose tiles are far bigger than the page (TileWidth and TileLength patched to
+  // 4096 in the directory, which libtiff writes after the tiles) fails before a tile buffer is
+  // sized from it.
+  std::vector<std::vector<uint8_t>> small(1, std::vector<uint8_t>(64 * 64, 7));
+  ASSERT_TRUE(testing::writeTiledTiff(dir.path("tiled.tif"), 64, 64, small, SAMPLEFORMAT_UINT, 1,
+                                      16, false));
+  std::string bytes = [&] {
+    std::ifstream in(dir.path("tiled.tif"), std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  ASSERT_EQ(bytes.substr(0, 2), "II");
+  const auto u32 = [&](size_t at) {
+    return uint32_t(uint8_t(bytes[at])) | uint32_t(uint8_t(bytes[at + 1])) << 8 |
+           uint32_t(uint8_t(bytes[at + 2])) << 16 | uint32_t(uint8_t(bytes[at + 3])) << 24;
+  };
+  const size_t ifd = u32(4);
+  ASSERT_LT(ifd + 2, bytes.size());
+  const size_t entries = uint8_t(bytes[ifd]) | size_t(uint8_t(bytes[ifd + 1])) << 8;
+  int patched = 0;
+  for (size_t e = 0; e < entries; ++e) {
+    const size_t at = ifd + 2 + 12 * e;
+    const unsigned tag = uint8_t(bytes[at]) | unsigned(uint8_t(bytes[at + 1])) << 8;
+    if (tag != TIFFTAG_TILEWIDTH && tag != TIFFTAG_TILELENGTH) continue;
+    const unsigned type = uint8_t(bytes[at + 2]);
+    bytes[at + 8] = 0;  // 4096, as SHORT or LONG
+    bytes[at + 9] = 0x10;
+    if (type == TIFF_LONG) bytes[at + 10] = bytes[at + 11] = 0;
+    ++patched;
+  }
+  ASSERT_EQ(patched, 2);
+  expectVolumeLoadError(dir.write("huge_tiles.tif", bytes),
+                        "tiles of 4096 x 4096 for a page of 64 x 64");
+}
+
 TEST(TiffFiles, PagesThatDisagreeFailWithOneLine) {
   TempDir dir;
   std::vector<std::vector<uint8_t>> pages{std::vector<uint8_t>(4), std::vector<uint8_t>(4)};
@@ -370,7 +485,8 @@ TEST(TiffFiles, PagesThatDisagreeFailWithOneLine) {
     std::ifstream in(dir.path("cut.tif"), std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
   }();
-  expectVolumeLoadError(dir.write("cut2.tif", bytes.substr(0, 2000) + bytes.substr(4000)), "not a readable TIFF file");
+  expectVolumeLoadError(dir.write("cut2.tif", bytes.substr(0, 2000) + bytes.substr(4000)),
+                        "not a readable TIFF file");
   expectVolumeLoadError(dir.write("junk.tif", "II*\0junk"), "not a readable TIFF file");
 }
 

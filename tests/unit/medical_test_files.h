@@ -9,6 +9,7 @@
 #include <gdcmWriter.h>
 #include <tiffio.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -166,6 +167,46 @@ bool writeTiff(const std::string& path, uint32_t width, uint32_t height,
   }
   TIFFClose(t);
   return true;
+}
+
+// The same stored in tiles of `tile` x `tile` pixels (pixels past the page's edge zero), the
+// samples interleaved or in separate planes (`planar`), compressed with `compression`.
+template <typename T>
+bool writeTiledTiff(const std::string& path, uint32_t width, uint32_t height,
+                    const std::vector<std::vector<T>>& pages, uint16_t sampleFormat,
+                    uint16_t samples, uint32_t tile, bool planar,
+                    uint16_t compression = COMPRESSION_NONE) {
+  TIFF* t = TIFFOpen(path.c_str(), "w");
+  if (!t) return false;
+  bool ok = true;
+  for (size_t p = 0; p < pages.size() && ok; ++p) {
+    TIFFSetField(t, TIFFTAG_IMAGEWIDTH, width);
+    TIFFSetField(t, TIFFTAG_IMAGELENGTH, height);
+    TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, uint16_t(8 * sizeof(T)));
+    TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, samples);
+    TIFFSetField(t, TIFFTAG_SAMPLEFORMAT, sampleFormat);
+    TIFFSetField(t, TIFFTAG_PLANARCONFIG, planar ? PLANARCONFIG_SEPARATE : PLANARCONFIG_CONTIG);
+    TIFFSetField(t, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_MINISBLACK);
+    TIFFSetField(t, TIFFTAG_COMPRESSION, compression);
+    TIFFSetField(t, TIFFTAG_TILEWIDTH, tile);
+    TIFFSetField(t, TIFFTAG_TILELENGTH, tile);
+    const uint32_t stride = planar ? 1 : samples;
+    std::vector<T> block(size_t(tile) * tile * stride);
+    for (uint16_t plane = 0; plane < (planar ? samples : 1); ++plane)
+      for (uint32_t y0 = 0; y0 < height; y0 += tile)
+        for (uint32_t x0 = 0; x0 < width; x0 += tile) {
+          std::fill(block.begin(), block.end(), T(0));
+          for (uint32_t y = y0; y < std::min(height, y0 + tile); ++y)
+            for (uint32_t x = x0; x < std::min(width, x0 + tile); ++x)
+              for (uint32_t c = 0; c < stride; ++c)
+                block[(size_t(y - y0) * tile + (x - x0)) * stride + c] =
+                    pages[p][(size_t(y) * width + x) * samples + (planar ? plane : c)];
+          ok = ok && TIFFWriteTile(t, block.data(), x0, y0, 0, plane) >= 0;
+        }
+    ok = ok && TIFFWriteDirectory(t);
+  }
+  TIFFClose(t);
+  return ok;
 }
 
 }  // namespace ewa::testing
