@@ -33,18 +33,6 @@ const gdcm::Tag kHighBit(0x0028, 0x0102);
 const gdcm::Tag kRepresentation(0x0028, 0x0103);
 const gdcm::Tag kPhotometric(0x0028, 0x0004);
 
-// Numbers of a multi-valued DICOM string ("a\b\c"); empty when any is not a number.
-std::vector<double> numbers(const char* text) {
-  std::vector<double> out;
-  if (!text) return out;
-  for (const std::string& part : splitWords(std::string(text), "\\")) {
-    double v = 0.0;
-    if (!parseDouble(trim(part), v) || !std::isfinite(v)) return {};
-    out.push_back(v);
-  }
-  return out;
-}
-
 int64_t integer(const char* text) {
   int64_t v = 0;
   return text && parseInt64(trim(std::string(text)), v) ? v : 0;
@@ -82,6 +70,17 @@ std::vector<std::string> dicomCandidates(const std::string& folder, bool below) 
 
 }  // namespace
 
+std::vector<double> dicomNumbers(const char* text) {
+  std::vector<double> out;
+  if (!text) return out;
+  for (const std::string& part : splitWords(std::string(text), "\\")) {
+    double v = 0.0;
+    if (!parseDouble(trim(part), v) || !std::isfinite(v)) return {};
+    out.push_back(v);
+  }
+  return out;
+}
+
 std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::string& namedFile,
                                          std::string* fileSeries, bool below) {
   // GDCM reports on stderr by default; our errors are one line each, from us.
@@ -106,12 +105,12 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
     s.rows = integer(scanner.GetValue(file.c_str(), kRows));
     s.columns = integer(scanner.GetValue(file.c_str(), kColumns));
     if (s.rows <= 0 || s.columns <= 0) continue;  // not an image (DICOMDIR, report, ...)
-    const std::vector<double> p = numbers(scanner.GetValue(file.c_str(), kPosition));
+    const std::vector<double> p = dicomNumbers(scanner.GetValue(file.c_str(), kPosition));
     if (p.size() == 3) s.position = {p[0], p[1], p[2]}, s.hasPosition = true;
-    const std::vector<double> o = numbers(scanner.GetValue(file.c_str(), kOrientation));
+    const std::vector<double> o = dicomNumbers(scanner.GetValue(file.c_str(), kOrientation));
     if (o.size() == 6)
       std::copy(o.begin(), o.end(), s.orientation.begin()), s.hasOrientation = true;
-    const std::vector<double> sp = numbers(scanner.GetValue(file.c_str(), kPixelSpacing));
+    const std::vector<double> sp = dicomNumbers(scanner.GetValue(file.c_str(), kPixelSpacing));
     if (sp.size() == 2 && sp[0] > 0.0 && sp[1] > 0.0)
       s.rowSpacing = sp[0], s.columnSpacing = sp[1], s.hasSpacing = true;
     s.frames = std::max<int64_t>(1, integer(scanner.GetValue(file.c_str(), kFrames)));

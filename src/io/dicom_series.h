@@ -20,6 +20,7 @@ struct DicomSlice {
   double rowSpacing = 1.0, columnSpacing = 1.0;  // PixelSpacing: between rows, between columns
   bool hasSpacing = false;
   int64_t frames = 1;  // NumberOfFrames
+  int64_t frame = 0;   // of a multi-frame file opened frame by frame (dicom_frames.h): its frame
   // Pixel module values, checked before GDCM decodes (its reader asserts on some bad ones).
   int64_t samplesPerPixel = 1, bitsAllocated = 0, bitsStored = 0, highBit = 0, representation = 0;
   std::string photometric;  // PhotometricInterpretation, trimmed; empty when absent
@@ -40,6 +41,9 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
                                          std::string* fileSeries, bool below = false);
 constexpr int kDicomMaxDepth = 8;
 constexpr size_t kDicomMaxEntries = 100000;
+
+// Numbers of a multi-valued DICOM string ("a\\b\\c"); empty when any is not a number.
+std::vector<double> dicomNumbers(const char* text);
 
 // Sorts the slices by their position along the slice normal (row x column cosines), never by
 // name. Throws LoadError naming `path` when slices share a position or their orientations

@@ -284,6 +284,50 @@ TEST(DicomFiles, SeriesInFoldersBelowAFolderWithoutImages) {
   expectVolumeLoadError(dir.path("deep"), "no DICOM image or TIFF file, in it or below it");
 }
 
+// An enhanced multi-frame file: its frames stacked by the positions its functional groups give
+// (stored out of order here), spacing, orientation and rescale from the shared groups. Frames at
+// one place (a time series) and groups that do not cover every frame keep the file whole.
+TEST(DicomFiles, EnhancedMultiFrameFilesTakeTheirFramesGeometry) {
+  TempDir dir;
+  testing::EnhancedDicomSpec spec;
+  spec.frameZ = {4.0, 0.0, 6.0, 2.0};
+  ASSERT_TRUE(testing::writeEnhancedDicom(dir.path("enhanced.dcm"), spec));
+  const Volume v = loadVolume(dir.path("enhanced.dcm"));
+  EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{5, 4, 4}));
+  EXPECT_EQ(v.spacing(), glm::dvec3(0.75, 0.5, 2.0));
+  EXPECT_EQ(v.origin(), glm::dvec3(10, 20, 0));
+  EXPECT_TRUE(v.patientFrame());
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(v.value(3, 2, k), 3 + 20 + 200 * k) << "slice " << k;
+  EXPECT_TRUE(v.notes().empty()) << v.notes().front();
+  // Rescaled by the shared groups' Pixel Value Transformation.
+  spec.slope = 2.0;
+  spec.intercept = -5.0;
+  ASSERT_TRUE(testing::writeEnhancedDicom(dir.path("rescaled.dcm"), spec));
+  const Volume rescaled = loadVolume(dir.path("rescaled.dcm"));
+  EXPECT_EQ(rescaled.value(3, 2, 1), 2.0 * (3 + 20 + 200) - 5.0);
+  spec.slope = 1.0;
+  spec.intercept = 0.0;
+  // A time series: four frames at z = 2.
+  spec.frameZ = {2.0, 2.0, 2.0, 2.0};
+  ASSERT_TRUE(testing::writeEnhancedDicom(dir.path("time.dcm"), spec));
+  const Volume time = loadVolume(dir.path("time.dcm"));
+  EXPECT_EQ(time.dims()[2], 4);
+  EXPECT_EQ(time.spacing().z, 1.0);
+  std::string notes;
+  for (const std::string& n : time.notes()) notes += n + "\n";
+  EXPECT_NE(notes.find("frames share their positions"), std::string::npos) << notes;
+  // Positions for two of three frames.
+  spec.frameZ = {0.0, 2.0, 4.0};
+  spec.perFrameItems = 2;
+  ASSERT_TRUE(testing::writeEnhancedDicom(dir.path("partial.dcm"), spec));
+  const Volume partial = loadVolume(dir.path("partial.dcm"));
+  EXPECT_EQ(partial.dims()[2], 3);
+  EXPECT_EQ(partial.value(0, 0, 2), 400);  // stored order
+  notes.clear();
+  for (const std::string& n : partial.notes()) notes += n + "\n";
+  EXPECT_NE(notes.find("multi-frame file: slice spacing 1 assumed"), std::string::npos) << notes;
+}
+
 TEST(DicomFiles, BadSeriesFailWithOneLine) {
   TempDir dir;
   std::filesystem::create_directories(dir.path("empty"));

@@ -6,6 +6,7 @@
 #include <gdcmImageReader.h>
 #include <gdcmImageWriter.h>
 #include <gdcmReader.h>
+#include <gdcmSequenceOfItems.h>
 #include <gdcmWriter.h>
 #include <tiffio.h>
 
@@ -110,6 +111,110 @@ inline bool writeDicomSlice(const std::string& path, const DicomSliceSpec& s) {
   gdcm::Attribute<0x0020, 0x0032> ipp;
   ipp.SetValues(s.position.data(), 3);
   reader.GetFile().GetDataSet().Replace(ipp.GetAsDataElement());
+  gdcm::Writer plain;
+  plain.SetFile(reader.GetFile());
+  plain.SetFileName(path.c_str());
+  return plain.Write();
+}
+
+// An enhanced CT file of one frame a plane at each z of `frameZ` (in that stored order), int16
+// pixels i + 10 * j + 100 * z, its geometry only in the functional groups: Pixel Measures and
+// Plane Orientation shared, a Plane Position a frame (`perFrameItems` of them: fewer makes a
+// file whose groups do not cover its frames), the rescale in the shared Pixel Value
+// Transformation.
+struct EnhancedDicomSpec {
+  unsigned rows = 4, columns = 5;
+  std::vector<double> frameZ{0.0, 2.0};
+  int perFrameItems = -1;  // -1: one a frame
+  double rowSpacing = 0.5, columnSpacing = 0.75;
+  double slope = 1.0, intercept = 0.0;  // in the shared Pixel Value Transformation
+};
+
+// A sequence element of `tag` with one item a dataset of `items`.
+inline gdcm::DataElement sequenceOf(const gdcm::Tag& tag, const std::vector<gdcm::DataSet>& items) {
+  gdcm::SmartPointer<gdcm::SequenceOfItems> sq = new gdcm::SequenceOfItems;
+  sq->SetLengthToUndefined();
+  for (const gdcm::DataSet& ds : items) {
+    gdcm::Item item;
+    item.SetVLToUndefined();
+    item.SetNestedDataSet(ds);
+    sq->AddItem(item);
+  }
+  gdcm::DataElement de(tag);
+  de.SetVR(gdcm::VR::SQ);
+  de.SetValue(*sq);
+  de.SetVLToUndefined();
+  return de;
+}
+
+inline bool writeEnhancedDicom(const std::string& path, const EnhancedDicomSpec& s) {
+  const auto frames = unsigned(s.frameZ.size());
+  gdcm::ImageWriter writer;
+  gdcm::Image& image = writer.GetImage();
+  image.SetNumberOfDimensions(3);
+  image.SetDimension(0, s.columns);
+  image.SetDimension(1, s.rows);
+  image.SetDimension(2, frames);
+  image.SetPhotometricInterpretation(gdcm::PhotometricInterpretation::MONOCHROME2);
+  image.SetPixelFormat(gdcm::PixelFormat::INT16);
+  std::vector<int16_t> values;
+  for (double z : s.frameZ)
+    for (unsigned j = 0; j < s.rows; ++j)
+      for (unsigned i = 0; i < s.columns; ++i) values.push_back(int16_t(i + 10 * j + 100 * int(z)));
+  gdcm::DataElement pixels(gdcm::Tag(0x7fe0, 0x0010));
+  pixels.SetByteValue(reinterpret_cast<const char*>(values.data()),
+                      uint32_t(values.size() * sizeof(int16_t)));
+  image.SetDataElement(pixels);
+  gdcm::DataSet& top = writer.GetFile().GetDataSet();
+  gdcm::Attribute<0x0008, 0x0016> sopClass;
+  sopClass.SetValue("1.2.840.10008.5.1.4.1.1.2");
+  top.Replace(sopClass.GetAsDataElement());
+  writer.SetFileName(path.c_str());
+  if (!writer.Write()) return false;
+  // Then the geometry moved into the functional groups, as enhanced files hold it.
+  gdcm::Reader reader;
+  reader.SetFileName(path.c_str());
+  if (!reader.Read()) return false;
+  gdcm::DataSet& ds = reader.GetFile().GetDataSet();
+  for (const gdcm::Tag& t :
+       {gdcm::Tag(0x0020, 0x0032), gdcm::Tag(0x0020, 0x0037), gdcm::Tag(0x0028, 0x0030),
+        gdcm::Tag(0x5200, 0x9229), gdcm::Tag(0x5200, 0x9230)})
+    ds.Remove(t);
+  gdcm::Attribute<0x0008, 0x0016> enhanced;
+  enhanced.SetValue("1.2.840.10008.5.1.4.1.1.2.1");  // Enhanced CT Image Storage
+  ds.Replace(enhanced.GetAsDataElement());
+  gdcm::DataSet measures, orientation, shared;
+  gdcm::Attribute<0x0028, 0x0030> spacing;
+  const double sp[2] = {s.rowSpacing, s.columnSpacing};
+  spacing.SetValues(sp, 2);
+  measures.Insert(spacing.GetAsDataElement());
+  gdcm::Attribute<0x0020, 0x0037> iop;
+  const double cosines[6] = {1, 0, 0, 0, 1, 0};
+  iop.SetValues(cosines, 6);
+  orientation.Insert(iop.GetAsDataElement());
+  shared.Insert(sequenceOf(gdcm::Tag(0x0028, 0x9110), {measures}));
+  shared.Insert(sequenceOf(gdcm::Tag(0x0020, 0x9116), {orientation}));
+  gdcm::DataSet transformation;
+  gdcm::Attribute<0x0028, 0x1052> intercept;
+  intercept.SetValue(s.intercept);
+  transformation.Insert(intercept.GetAsDataElement());
+  gdcm::Attribute<0x0028, 0x1053> slope;
+  slope.SetValue(s.slope);
+  transformation.Insert(slope.GetAsDataElement());
+  shared.Insert(sequenceOf(gdcm::Tag(0x0028, 0x9145), {transformation}));
+  ds.Insert(sequenceOf(gdcm::Tag(0x5200, 0x9229), {shared}));
+  std::vector<gdcm::DataSet> perFrame;
+  const int items = s.perFrameItems < 0 ? int(frames) : s.perFrameItems;
+  for (int f = 0; f < items; ++f) {
+    gdcm::DataSet position, item;
+    gdcm::Attribute<0x0020, 0x0032> ipp;
+    const double p[3] = {10.0, 20.0, s.frameZ[size_t(f) % frames]};
+    ipp.SetValues(p, 3);
+    position.Insert(ipp.GetAsDataElement());
+    item.Insert(sequenceOf(gdcm::Tag(0x0020, 0x9113), {position}));
+    perFrame.push_back(item);
+  }
+  ds.Insert(sequenceOf(gdcm::Tag(0x5200, 0x9230), perFrame));
   gdcm::Writer plain;
   plain.SetFile(reader.GetFile());
   plain.SetFileName(path.c_str());

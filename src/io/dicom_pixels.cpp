@@ -1,0 +1,202 @@
+// DICOM pixels through GDCM: the pixel module checked, every frame decoded and rescaled.
+#include "io/dicom_pixels.h"
+
+#include <gdcmImageHelper.h>
+#include <gdcmMediaStorage.h>
+#include <gdcmPixmap.h>
+#include <gdcmPixmapReader.h>
+#include <gdcmSequenceOfFragments.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "io/dicom_items.h"
+#include "io/file_bytes.h"
+#include "io/load_failure.h"
+#include "io/memory_limit.h"
+
+namespace ewa {
+
+namespace {
+
+template <typename T>
+void appendValues(const std::vector<char>& buffer, size_t count, std::vector<double>& out) {
+  for (size_t i = 0; i < count; ++i) {
+    T v;
+    std::memcpy(&v, buffer.data() + i * sizeof(T), sizeof(T));
+    out.push_back(double(v));
+  }
+}
+
+// The pixel module must describe monochrome integer or float samples GDCM can decode; its
+// image reader asserts (aborts) on some impossible values instead of failing.
+void checkPixelModule(const DicomSlice& s) {
+  if (s.samplesPerPixel != 1)
+    failLoad(s.file, "colour or bad SamplesPerPixel " + std::to_string(s.samplesPerPixel) +
+                         " (monochrome images only)");
+  const int64_t bits = s.bitsAllocated;
+  if (bits != 8 && bits != 16 && bits != 32 && bits != 64)
+    failLoad(s.file, "unsupported BitsAllocated " + std::to_string(bits) + " (8, 16, 32 or 64)");
+  if (s.bitsStored < 1 || s.bitsStored > bits || s.highBit < s.bitsStored - 1 || s.highBit >= bits)
+    failLoad(s.file, "inconsistent BitsStored " + std::to_string(s.bitsStored) + " and HighBit " +
+                         std::to_string(s.highBit));
+  if (!s.photometric.empty() && s.photometric != "MONOCHROME1" && s.photometric != "MONOCHROME2")
+    failLoad(s.file, "PhotometricInterpretation " + quoteText(s.photometric, 20) +
+                         " (monochrome images only)");
+  if (s.representation != 0 && s.representation != 1)
+    failLoad(s.file, "bad PixelRepresentation " + std::to_string(s.representation));
+}
+
+// The classes whose rescale GDCM takes from the functional groups (its ImageHelper).
+bool functionalGroupsRescale(const gdcm::MediaStorage& ms) {
+  using M = gdcm::MediaStorage;
+  for (const M::MSType type :
+       {M::EnhancedCTImageStorage, M::EnhancedMRImageStorage, M::EnhancedPETImageStorage,
+        M::XRay3DAngiographicImageStorage, M::XRay3DCraniofacialImageStorage,
+        M::SegmentationStorage, M::BreastTomosynthesisImageStorage,
+        M::BreastProjectionXRayImageStorageForPresentation,
+        M::BreastProjectionXRayImageStorageForProcessing, M::LegacyConvertedEnhancedMRImageStorage,
+        M::LegacyConvertedEnhancedCTImageStorage, M::LegacyConvertedEnhancedPETImageStorage})
+    if (ms == type) return true;
+  return false;
+}
+
+// (intercept, slope) as GDCM's image reader gives them; for the enhanced classes, from the
+// Pixel Value Transformation of the shared functional groups, else the first frame's, read here
+// (GDCM's own reading asserts on malformed sequences).
+std::vector<double> rescaleOf(const gdcm::File& file) {
+  gdcm::MediaStorage ms;
+  ms.SetFromFile(file);
+  if (!functionalGroupsRescale(ms)) return gdcm::ImageHelper::GetRescaleInterceptSlopeValue(file);
+  const gdcm::DataSet& ds = file.GetDataSet();
+  const gdcm::Tag transformation(0x0028, 0x9145);
+  DicomItems items;
+  for (const gdcm::Tag& groups : {gdcm::Tag(0x5200, 0x9229), gdcm::Tag(0x5200, 0x9230)}) {
+    const gdcm::DataSet* item = items.first(items.first(&ds, groups), transformation);
+    const std::vector<double> intercept = dicomElementNumbers(item, gdcm::Tag(0x0028, 0x1052));
+    const std::vector<double> slope = dicomElementNumbers(item, gdcm::Tag(0x0028, 0x1053));
+    if (intercept.size() == 1 && slope.size() == 1)
+      return {intercept[0], slope[0] == 0.0 ? 1.0 : slope[0]};
+  }
+  return {0.0, 1.0};
+}
+
+}  // namespace
+
+SlicePixels readSlice(const DicomSlice& slice) {
+  checkPixelModule(slice);
+  // The pixmap reader decodes without GDCM's geometry (ImageReader's spacing, origin and
+  // direction code asserts on malformed functional groups; the geometry is ours anyway).
+  gdcm::PixmapReader reader;
+  reader.SetFileName(slice.file.c_str());
+  if (!reader.Read()) failLoad(slice.file, "GDCM cannot read the image");
+  const gdcm::Pixmap& image = reader.GetPixmap();
+  const unsigned* dims = image.GetDimensions();
+  const gdcm::PixelFormat& format = image.GetPixelFormat();
+  if (format.GetSamplesPerPixel() != 1)
+    failLoad(slice.file, "colour DICOM images (" + std::to_string(format.GetSamplesPerPixel()) +
+                             " samples per pixel) are not supported");
+  if (int64_t(dims[0]) != slice.columns || int64_t(dims[1]) != slice.rows)
+    failLoad(slice.file, "image size disagrees with Rows and Columns");
+  const uint64_t count = uint64_t(dims[0]) * dims[1] *
+                         uint64_t(std::max(1u, image.GetNumberOfDimensions() > 2 ? dims[2] : 1u));
+  if (count != uint64_t(slice.rows) * uint64_t(slice.columns) * uint64_t(slice.frames))
+    failLoad(slice.file, "pixel count disagrees with the header");
+  // The stored pixel data must be able to hold the image before a buffer is sized by Rows and
+  // Columns: all of it uncompressed; compressed, within a ratio no real image reaches.
+  const uint64_t need = count * format.GetPixelSize();
+  uint64_t capacity = 0;
+  if (const gdcm::ByteValue* raw = image.GetDataElement().GetByteValue())
+    capacity = raw->GetLength();
+  else if (const gdcm::SequenceOfFragments* f = image.GetDataElement().GetSequenceOfFragments())
+    capacity = uint64_t(f->ComputeByteLength()) * 65536 + (1u << 20);
+  if (capacity < need)
+    failLoad(slice.file, "pixel data cannot hold a " + std::to_string(slice.columns) + " x " +
+                             std::to_string(slice.rows) + " image (truncated file?)");
+  checkAllocation(slice.file, need, "DICOM image");
+  std::vector<char> buffer(image.GetBufferLength());
+  if (buffer.size() < count * format.GetPixelSize() || !image.GetBuffer(buffer.data()))
+    failLoad(slice.file, "pixel data are missing, truncated or cannot be decoded");
+  SlicePixels out;
+  const std::vector<double> rescale = rescaleOf(reader.GetFile());
+  out.intercept = rescale[0];
+  out.slope = rescale[1];
+  out.type = format.GetScalarType();
+  out.values.reserve(size_t(count));
+  switch (format.GetScalarType()) {
+    case gdcm::PixelFormat::UINT8:
+      appendValues<uint8_t>(buffer, count, out.values);
+      break;
+    case gdcm::PixelFormat::INT8:
+      appendValues<int8_t>(buffer, count, out.values);
+      break;
+    case gdcm::PixelFormat::UINT16:
+      appendValues<uint16_t>(buffer, count, out.values);
+      break;
+    case gdcm::PixelFormat::INT16:
+      appendValues<int16_t>(buffer, count, out.values);
+      break;
+    case gdcm::PixelFormat::UINT32:
+      appendValues<uint32_t>(buffer, count, out.values);
+      break;
+    case gdcm::PixelFormat::INT32:
+      appendValues<int32_t>(buffer, count, out.values);
+      break;
+    case gdcm::PixelFormat::FLOAT32:
+      appendValues<float>(buffer, count, out.values);
+      break;
+    case gdcm::PixelFormat::FLOAT64:
+      appendValues<double>(buffer, count, out.values);
+      break;
+    default:
+      failLoad(slice.file, std::string("unsupported pixel type ") + format.GetScalarTypeAsString());
+  }
+  if (!std::isfinite(out.slope) || !std::isfinite(out.intercept) || out.slope == 0.0)
+    failLoad(slice.file, "bad RescaleSlope or RescaleIntercept");
+  for (double& v : out.values) v = v * out.slope + out.intercept;
+  return out;
+}
+
+// The narrowest volume type that holds every value exactly.
+FileScalar fittingType(const std::vector<double>& values, bool integral) {
+  if (!integral) return FileScalar::Float32;
+  double lo = 0.0, hi = 0.0;
+  if (!values.empty()) lo = hi = values[0];
+  for (double v : values) lo = std::min(lo, v), hi = std::max(hi, v);
+  if (lo >= 0 && hi <= 255) return FileScalar::UInt8;
+  if (lo >= -32768 && hi <= 32767) return FileScalar::Int16;
+  if (lo >= 0 && hi <= 65535) return FileScalar::UInt16;
+  return FileScalar::Float32;
+}
+
+std::vector<uint8_t> encode(const std::vector<double>& values, FileScalar type) {
+  std::vector<uint8_t> out(values.size() * fileScalarSize(type));
+  for (size_t i = 0; i < values.size(); ++i) {
+    uint8_t* p = out.data() + i * fileScalarSize(type);
+    switch (type) {
+      case FileScalar::UInt8:
+        *p = uint8_t(values[i]);
+        break;
+      case FileScalar::Int16: {
+        const auto v = int16_t(values[i]);
+        std::memcpy(p, &v, 2);
+        break;
+      }
+      case FileScalar::UInt16: {
+        const auto v = uint16_t(values[i]);
+        std::memcpy(p, &v, 2);
+        break;
+      }
+      default: {
+        const auto v = float(values[i]);
+        std::memcpy(p, &v, 4);
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace ewa
