@@ -100,10 +100,14 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid) {
     try {
       step = sortDicomSlices(path, frames, layout.notes);
       slices = frames;
-    } catch (const LoadError&) {
-      // Frames at one place (a time series): kept whole, as a plain multi-frame file is.
+    } catch (const LoadError& e) {
+      // Frames at one place (a time series) or turned: kept whole, as a plain multi-frame file
+      // is, the note saying why.
       frames.clear();
-      layout.notes.push_back("frames share their positions: not a stack of slices");
+      const std::string what = e.what();
+      const size_t colon = what.find(": ");
+      layout.notes.push_back("frames kept in stored order, not a stack of slices: " +
+                             (colon == std::string::npos ? what : what.substr(colon + 2)));
     }
   } else {
     step = sortDicomSlices(path, slices, layout.notes);
@@ -131,7 +135,8 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid) {
   bool integral = true, sameRescale = true, sameType = true;
   double slope0 = 0.0, intercept0 = 0.0;
   gdcm::PixelFormat::ScalarType type0 = gdcm::PixelFormat::UNKNOWN;
-  const std::vector<DicomSlice>& files = frames.empty() ? slices : std::vector<DicomSlice>{whole};
+  const std::vector<DicomSlice> wholeFile{whole};
+  const std::vector<DicomSlice>& files = frames.empty() ? slices : wholeFile;
   for (size_t i = 0; i < files.size(); ++i) {
     const SlicePixels px = readSlice(files[i]);
     const bool intType =

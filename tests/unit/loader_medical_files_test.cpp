@@ -315,7 +315,10 @@ TEST(DicomFiles, EnhancedMultiFrameFilesTakeTheirFramesGeometry) {
   EXPECT_EQ(time.spacing().z, 1.0);
   std::string notes;
   for (const std::string& n : time.notes()) notes += n + "\n";
-  EXPECT_NE(notes.find("frames share their positions"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("frames kept in stored order, not a stack of slices: two slices share one "
+                       "position"),
+            std::string::npos)
+      << notes;
   // Positions for two of three frames.
   spec.frameZ = {0.0, 2.0, 4.0};
   spec.perFrameItems = 2;
