@@ -12,8 +12,6 @@ namespace ewa {
 
 namespace {
 
-const gdcm::Tag kSharedGroups(0x5200, 0x9229);
-const gdcm::Tag kPerFrameGroups(0x5200, 0x9230);
 const gdcm::Tag kPlanePosition(0x0020, 0x9113);
 const gdcm::Tag kPlaneOrientation(0x0020, 0x9116);
 const gdcm::Tag kPixelMeasures(0x0028, 0x9110);
@@ -43,12 +41,12 @@ std::vector<DicomSlice> dicomFrameSlices(const DicomSlice& file) {
   if (!reader.ReadUpToTag(kPixelData)) failLoad(file.file, "GDCM cannot read the header");
   const gdcm::DataSet& ds = reader.GetFile().GetDataSet();
   DicomItems items;
-  const gdcm::SequenceOfItems* perFrame = items.sequence(ds, kPerFrameGroups);
+  const gdcm::SequenceOfItems* perFrame = items.sequence(ds, kPerFrameFunctionalGroups);
   if (!perFrame || int64_t(perFrame->GetNumberOfItems()) != file.frames) return {};
   // The file's own values, then the shared groups', then each frame's.
   DicomSlice shared = file;
   shared.frames = 1;
-  applyGroups(items, items.first(&ds, kSharedGroups), shared);
+  applyGroups(items, items.first(&ds, kSharedFunctionalGroups), shared);
   std::vector<DicomSlice> frames;
   for (size_t f = 0; f < perFrame->GetNumberOfItems(); ++f) {
     DicomSlice s = shared;

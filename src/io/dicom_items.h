@@ -10,6 +10,11 @@
 
 namespace ewa {
 
+// The functional groups of enhanced (multi-frame) files: those all frames share, and one item a
+// frame.
+inline const gdcm::Tag kSharedFunctionalGroups(0x5200, 0x9229);
+inline const gdcm::Tag kPerFrameFunctionalGroups(0x5200, 0x9230);
+
 // The sequences of one read dataset, kept alive while their items' datasets are used (GDCM
 // may parse a sequence's bytes into a new object that only the returned pointer holds).
 class DicomItems {

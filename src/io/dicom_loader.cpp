@@ -46,8 +46,9 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid) {
   const std::filesystem::path named(path);
   // A CD's DICOMDIR names the images in the folders below it: opened as that folder is.
   const bool dicomdir = toLower(named.filename().string()) == "dicomdir";
-  const bool folder = dicomdir || std::filesystem::is_directory(path, ec);
-  std::string dir = std::filesystem::is_directory(path, ec) ? path : named.parent_path().string();
+  const bool directory = std::filesystem::is_directory(path, ec);
+  const bool folder = dicomdir || directory;
+  std::string dir = directory ? path : named.parent_path().string();
   if (dir.empty()) dir = ".";
   if (!folder && !looksLikeDicom(path))
     failLoad(path,

@@ -73,7 +73,7 @@ std::vector<double> rescaleOf(const gdcm::File& file) {
   const gdcm::DataSet& ds = file.GetDataSet();
   const gdcm::Tag transformation(0x0028, 0x9145);
   DicomItems items;
-  for (const gdcm::Tag& groups : {gdcm::Tag(0x5200, 0x9229), gdcm::Tag(0x5200, 0x9230)}) {
+  for (const gdcm::Tag& groups : {kSharedFunctionalGroups, kPerFrameFunctionalGroups}) {
     const gdcm::DataSet* item = items.first(items.first(&ds, groups), transformation);
     const std::vector<double> intercept = dicomElementNumbers(item, gdcm::Tag(0x0028, 0x1052));
     const std::vector<double> slope = dicomElementNumbers(item, gdcm::Tag(0x0028, 0x1053));

@@ -38,6 +38,8 @@ int64_t integer(const char* text) {
   return text && parseInt64(trim(std::string(text)), v) ? v : 0;
 }
 
+// The regular files of `folder` (with `below`, of its subfolders too, within kDicomMaxDepth and
+// kDicomMaxEntries) whose element structure may go to GDCM, sorted by path.
 std::vector<std::string> dicomCandidates(const std::string& folder, bool below) {
   namespace fs = std::filesystem;
   std::vector<std::string> files;

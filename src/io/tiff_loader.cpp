@@ -89,27 +89,27 @@ constexpr uint64_t kMaxRatio = 4096;
 void checkStoredBytes(const TiffFile& file, const PageFormat& f) {
   TIFF* t = file.get();
   const bool tiled = TIFFIsTiled(t);
-  const std::string blocks = tiled ? "tiles" : "strips";
+  const std::string block = tiled ? "tile" : "strip";
   uint16_t compression = COMPRESSION_NONE;
   TIFFGetFieldDefaulted(t, TIFFTAG_COMPRESSION, &compression);
   uint64_t* counts = nullptr;
   if (!TIFFGetField(t, tiled ? TIFFTAG_TILEBYTECOUNTS : TIFFTAG_STRIPBYTECOUNTS, &counts) ||
       !counts)
-    file.fail("a page has no " + blocks.substr(0, blocks.size() - 1) + " byte counts");
+    file.fail("a page has no " + block + " byte counts");
   uint64_t stored = 0;
   const uint32_t n = tiled ? TIFFNumberOfTiles(t) : TIFFNumberOfStrips(t);
   for (uint32_t s = 0; s < n; ++s)
     if (__builtin_add_overflow(stored, counts[s], &stored))
-      file.fail("bad " + blocks + " byte counts");
+      file.fail("bad " + block + " byte counts");
   if (stored > file.size())
-    file.fail(blocks.substr(0, blocks.size() - 1) + " byte counts of " + std::to_string(stored) +
-              " exceed the file's " + std::to_string(file.size()) + " bytes");
+    file.fail(block + " byte counts of " + std::to_string(stored) + " exceed the file's " +
+              std::to_string(file.size()) + " bytes");
   const unsigned __int128 samples =
       (unsigned __int128)f.width * f.height * f.samples * std::max<uint16_t>(f.bits, 1) / 8;
   if (compression == COMPRESSION_NONE ? samples > stored
                                       : samples > (unsigned __int128)stored * kMaxRatio + 65536)
     file.fail("a page of " + std::to_string(f.width) + " x " + std::to_string(f.height) +
-              " does not fit in its " + std::to_string(stored) + " bytes of " + blocks +
+              " does not fit in its " + std::to_string(stored) + " bytes of " + block + "s" +
               " (truncated?)");
 }
 
@@ -153,7 +153,8 @@ FileScalar scalarOf(const TiffFile& file, const PageFormat& f) {
             std::to_string(f.sampleFormat) + "; supported: 8/16-bit integers, 32-bit float)");
 }
 
-// Copies channel `channel` of `count` pixels from `src` (`stride` samples a pixel) to `dst`.
+// Copies one sample (`bytes` wide) of each of `count` pixels from `src`, `stride` samples a
+// pixel apart, to `dst` (contiguous).
 void copyChannel(const uint8_t* src, size_t stride, size_t bytes, uint32_t count, uint8_t* dst) {
   for (uint32_t x = 0; x < count; ++x)
     std::memcpy(dst + x * bytes, src + x * stride * bytes, bytes);

@@ -167,6 +167,19 @@ TEST(Directions, NrrdSpaceDirectionsAndMetaImageTransformMatrix) {
   EXPECT_EQ(plain.direction()[0], glm::dvec3(0, 1, 0));
 }
 
+// A volume's notes, one a line (to search for one).
+std::string allNotes(const Volume& v) {
+  std::string notes;
+  for (const std::string& n : v.notes()) notes += n + "\n";
+  return notes;
+}
+
+// A file's bytes (to cut or patch it).
+std::string fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 // A folder of `count` slices 2 apart along z, in shuffled file names.
 std::string dicomSeries(const TempDir& dir, const std::string& name, int count,
                         testing::DicomSliceSpec spec = {}) {
@@ -225,8 +238,7 @@ TEST(DicomFiles, GantryTiltWarnsAndSeveralSeriesAreListed) {
   }
   const Volume v = loadVolume(dir.path("tilt"));
   EXPECT_EQ(v.dims()[2], 4);
-  std::string notes;
-  for (const std::string& n : v.notes()) notes += n + "\n";
+  const std::string notes = allNotes(v);
   EXPECT_NE(notes.find("warning: the direction matrix is not orthonormal"), std::string::npos)
       << notes;
   EXPECT_NE(notes.find("series 1.2.826.0.1.3680043.2.1125.2: 2 slices"), std::string::npos)
@@ -264,8 +276,7 @@ TEST(DicomFiles, SeriesInFoldersBelowAFolderWithoutImages) {
   const Volume v = loadVolume(cd);
   EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{5, 4, 5}));
   EXPECT_EQ(v.bytes(), loadVolume(first).bytes());
-  std::string notes;
-  for (const std::string& n : v.notes()) notes += n + "\n";
+  const std::string notes = allNotes(v);
   EXPECT_NE(notes.find("series 1.2.826.0.1.3680043.2.1125.7: 2 slices in 'PAT1/STU1/SER2' "
                        "(--series UID opens it)"),
             std::string::npos)
@@ -313,8 +324,7 @@ TEST(DicomFiles, EnhancedMultiFrameFilesTakeTheirFramesGeometry) {
   const Volume time = loadVolume(dir.path("time.dcm"));
   EXPECT_EQ(time.dims()[2], 4);
   EXPECT_EQ(time.spacing().z, 1.0);
-  std::string notes;
-  for (const std::string& n : time.notes()) notes += n + "\n";
+  std::string notes = allNotes(time);
   EXPECT_NE(notes.find("frames kept in stored order, not a stack of slices: two slices share one "
                        "position"),
             std::string::npos)
@@ -326,8 +336,7 @@ TEST(DicomFiles, EnhancedMultiFrameFilesTakeTheirFramesGeometry) {
   const Volume partial = loadVolume(dir.path("partial.dcm"));
   EXPECT_EQ(partial.dims()[2], 3);
   EXPECT_EQ(partial.value(0, 0, 2), 400);  // stored order
-  notes.clear();
-  for (const std::string& n : partial.notes()) notes += n + "\n";
+  notes = allNotes(partial);
   EXPECT_NE(notes.find("multi-frame file: slice spacing 1 assumed"), std::string::npos) << notes;
 }
 
@@ -468,10 +477,7 @@ TEST(TiffFiles, TiledPagesReadAsStripsDo) {
   std::vector<std::vector<uint8_t>> small(1, std::vector<uint8_t>(64 * 64, 7));
   ASSERT_TRUE(testing::writeTiledTiff(dir.path("tiled.tif"), 64, 64, small, SAMPLEFORMAT_UINT, 1,
                                       16, false));
-  std::string bytes = [&] {
-    std::ifstream in(dir.path("tiled.tif"), std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }();
+  std::string bytes = fileBytes(dir.path("tiled.tif"));
   ASSERT_EQ(bytes.substr(0, 2), "II");
   const auto u32 = [&](size_t at) {
     return uint32_t(uint8_t(bytes[at])) | uint32_t(uint8_t(bytes[at + 1])) << 8 |
@@ -528,10 +534,7 @@ TEST(TiffFiles, PagesThatDisagreeFailWithOneLine) {
   // Truncated strips.
   std::vector<std::vector<uint8_t>> big(1, std::vector<uint8_t>(64 * 64, 7));
   ASSERT_TRUE(testing::writeTiff(dir.path("cut.tif"), 64, 64, big, SAMPLEFORMAT_UINT));
-  const std::string bytes = [&] {
-    std::ifstream in(dir.path("cut.tif"), std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }();
+  const std::string bytes = fileBytes(dir.path("cut.tif"));
   expectVolumeLoadError(dir.write("cut2.tif", bytes.substr(0, 2000) + bytes.substr(4000)),
                         "not a readable TIFF file");
   expectVolumeLoadError(dir.write("junk.tif", "II*\0junk"), "not a readable TIFF file");
