@@ -18,6 +18,9 @@
 #ifndef SLAB_FIELD_NORMALS
 #define SLAB_FIELD_NORMALS 0
 #endif
+#ifndef SLAB_RAY_NORMALS
+#define SLAB_RAY_NORMALS 0
+#endif
 #ifndef SLAB_NEIGHBOUR_IN_FRONT
 #define SLAB_NEIGHBOUR_IN_FRONT 0
 #endif
@@ -36,6 +39,9 @@ const bool kShading = SLAB_SHADING != 0;
 // Pre-integrated with shading: normals from the gradient of the reconstructed field, by
 // differences of the slab's mean values to the neighbouring pixels and between its halves.
 const bool kFieldNormals = SLAB_FIELD_NORMALS != 0;
+// Shaded: each segment's normal is the data's gradient read along the pixel's ray at the
+// segment's middle (src/render/gradient_texture.h), as a ray caster shades its samples.
+const bool kRayNormals = SLAB_RAY_NORMALS != 0 && kShading;
 // Front to back: the slab drawn before this one lies in front.
 const bool kNeighbourInFront = SLAB_NEIGHBOUR_IN_FRONT != 0;
 // This slab's image or its neighbour's is coarser than the picture (uSlabScale, uNeighbourScale).
@@ -50,6 +56,9 @@ uniform float uFocalPixels;
 uniform float uPixelsPerUnit;   // orthographic: pixels per world unit
 uniform sampler2D uPairTable;
 uniform sampler2D uPairPrefix;  // extinction integrated over the values, n x 1 (opacity)
+// Ray normals: the gradient per index step over its largest component, (g + 1) / 2 in RGB10_A2
+// (src/core/gradient_volume.h); trilinear, voxel centres at texel centres.
+uniform sampler3D uGradient;
 
 // A pixel's unit normal (zero without shading, which headlightShade then skips) and direction
 // to the eye: found once, shared by the segments.
@@ -68,6 +77,35 @@ Surface surfaceFrom(vec3 normal, vec2 pixel, vec2 viewport) {
   p.normal = len > 0.0 ? normal / len : vec3(0.0);
   if (!uOrthographic) p.toEye = normalize(vec3(-ray, 1.0));
   return p;
+}
+
+// The data's gradient in camera space at depth `depth` of the ray through `pixel` (its scale
+// is the texture's: only its direction counts): sampleGradient (src/core/gradient_volume.cpp)
+// at that point's index coordinates, turned by the transpose of the camera-to-index matrix.
+vec3 rayGradient(vec2 pixel, float depth) {
+  mat2x3 ray = indexRay(pixel);
+  vec3 index = ray[0] + depth * ray[1];
+  vec3 g = texture(uGradient, (index + 0.5) / vec3(textureSize(uGradient, 0))).rgb * 2.0 - 1.0;
+  return transpose(mat3(uCameraToIndex)) * g;
+}
+
+// The surface `p` with ray normals: its normal the data's gradient at `depth` along the ray
+// through `pixel`; `p` itself otherwise.
+Surface surfaceAt(Surface p, vec2 pixel, float depth) {
+  if (!kRayNormals) return p;
+  vec3 g = rayGradient(pixel, depth);
+  float len = length(g);
+  p.normal = len > 0.0 ? g / len : vec3(0.0);
+  return p;
+}
+
+// The middles of the four segments segmentsThrough draws in the slab between `depths`: front
+// to back each ends at a quarter's middle, starting at the one before (the neighbour's last for
+// the first), back to front each starts at a quarter's middle.
+vec4 segmentMiddles(vec2 depths) {
+  float q = 0.25 * (depths.y - depths.x);
+  float first = kNeighbourInFront ? depths.x : depths.x + q;
+  return first + q * vec4(0.0, 1.0, 2.0, 3.0);
 }
 
 // d(value)/d(pixel) from the values `span` pixels ahead and behind: central where both have
@@ -122,11 +160,12 @@ vec4 segment(float front, float back, float length, Surface p) {
 }
 
 // The segments from value i to value i + 1 of `v` (depth order) over `lengths`, composited
-// front to back.
-vec4 segmentsThrough(float v[5], vec4 lengths, Surface p) {
+// front to back, on the ray through `pixel`; with ray normals each lit by the gradient at its
+// middle (`middles`: segmentMiddles).
+vec4 segmentsThrough(float v[5], vec4 lengths, Surface p, vec2 pixel, vec4 middles) {
   vec4 sum = vec4(0.0);
   for (int i = 0; i < 4; ++i) {
-    vec4 c = segment(v[i], v[i + 1], lengths[i], p);
+    vec4 c = segment(v[i], v[i + 1], lengths[i], surfaceAt(p, pixel, middles[i]));
     sum += (1.0 - sum.a) * c;
   }
   return sum;

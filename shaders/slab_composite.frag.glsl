@@ -65,7 +65,9 @@ vec3 fieldGradient(vec4 s) {
 
 Surface pixelSurface(vec4 s) {
   if (!kShading) return Surface(vec3(0.0), vec3(0.0, 0.0, 1.0));
+  // Ray normals: per segment (surfaceAt); here only the direction to the eye.
   vec3 normal = kFieldNormals ? fieldGradient(s)
+                : kRayNormals ? vec3(0.0)
                               : slabSums(uSlabNormal, gl_FragCoord.xy, uSlabScale).xyz;
   return surfaceFrom(normal, gl_FragCoord.xy, uViewport);
 }
@@ -103,7 +105,7 @@ vec4 preintegratedQuarters(vec4 front, vec4 back) {
   } else {
     v[0] = own.x; v[1] = own.y; v[2] = own.z; v[3] = own.w; v[4] = other;
   }
-  return segmentsThrough(v, lengths, p);
+  return segmentsThrough(v, lengths, p, gl_FragCoord.xy, segmentMiddles(uSlabDepths));
 }
 
 vec4 preintegrated(vec4 s) {
@@ -121,13 +123,17 @@ vec4 preintegrated(vec4 s) {
   }
   Surface p = pixelSurface(s);
   vec2 lengths = halfLengths(s.ga);
+  // Ray normals: each segment's from its middle, front to back at the slab's front plane and
+  // middle, back to front at its middle and back plane.
+  vec2 q = gl_FragCoord.xy;
+  float mid = 0.5 * (uSlabDepths.x + uSlabDepths.y);
   vec4 first, second;
   if (kNeighbourInFront) {
-    first = segment(other.y, own.x, lengths.x, p);
-    second = segment(own.x, own.y, lengths.y, p);
+    first = segment(other.y, own.x, lengths.x, surfaceAt(p, q, uSlabDepths.x));
+    second = segment(own.x, own.y, lengths.y, surfaceAt(p, q, mid));
   } else {
-    first = segment(own.x, own.y, lengths.x, p);
-    second = segment(own.y, other.x, lengths.y, p);
+    first = segment(own.x, own.y, lengths.x, surfaceAt(p, q, mid));
+    second = segment(own.y, other.x, lengths.y, surfaceAt(p, q, uSlabDepths.y));
   }
   return first + (1.0 - first.a) * second;
 }
@@ -159,7 +165,8 @@ void main() {
                           rayStretch(gl_FragCoord.xy), depth);
     int size = textureSize(uTransfer, 0);
     vec4 tf = texture(uTransfer, (value * float(size - 1) + 0.5) / float(size));
-    color = shade(tf.rgb, pixelSurface(s));
+    color = shade(tf.rgb, surfaceAt(pixelSurface(s), gl_FragCoord.xy,
+                                    0.5 * (uSlabDepths.x + uSlabDepths.y)));
     depth *= tf.a;
     if (!(depth > 0.0)) discard;
   } else {

@@ -126,7 +126,7 @@ void main() {
     barrier();
     if (open && w > 0.0) {
       vec3 normal = vec3(0.0);
-      if (kShading) {
+      if (kShading && !kRayNormals) {
         float c = slabValues[me];
         uint side = uint(kSide);
         vec2 derivatives = vec2(
@@ -144,7 +144,7 @@ void main() {
         before = quarterValues(lastFront, lastBack).w;
       float v[5] = float[5](before, values.x, values.y, values.z, values.w);
       vec4 lengths = quarterLengthsAt(centre, depths, vec4(front.g, front.a, back.g, back.a));
-      picture += (1.0 - picture.a) * segmentsThrough(v, lengths, p);
+      picture += (1.0 - picture.a) * segmentsThrough(v, lengths, p, centre, segmentMiddles(depths));
     }
     lastFront = front;
     lastBack = back;

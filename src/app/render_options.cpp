@@ -32,15 +32,18 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
                  "the data's values)")
       ->check(CLI::Range(0.0, kMaxPrefilter));
   app.add_option("--post-normals", p.postNormals,
-                 "Post-classified and pre-integrated, with --shading: normals from the gradient "
-                 "of the reconstructed field (field, default) or the splats' voxel normals (voxel)")
-      ->check(CLI::IsMember({"field", "voxel"}));
-  app.add_option("--splatter", p.splatter,
-                 "Whole composite frames (headless): rasterized slab by slab (raster), in "
-                 "compute tiles (tiles: no rasterizer, no blending; front to back, "
-                 "post-classified only with 4 samples a slab and field normals, else "
-                 "rasterized), or auto (default: raster on software GL, else the faster as "
-                 "timed frames find it)")
+                 "Post-classified, with --shading: normals from the gradient of the reconstructed "
+                 "field (field; pre-integrated only, else voxel), the splats' voxel normals "
+                 "(voxel), or the data's gradient read along each pixel's ray (ray, default: as a "
+                 "ray caster shades; 4 bytes of GPU memory a voxel while shading)")
+      ->check(CLI::IsMember({"field", "voxel", "ray"}));
+  app.add_option(
+         "--splatter", p.splatter,
+         "Whole composite frames (headless): rasterized slab by slab (raster), in "
+         "compute tiles (tiles: no rasterizer, no blending; front to back, "
+         "post-classified only with 4 samples a slab and, shaded, field or ray "
+         "normals, else rasterized), or auto (default: raster on software GL, else the faster as "
+         "timed frames find it)")
       ->check(CLI::IsMember({"raster", "tiles", "auto"}));
   app.add_option("--compositing", p.compositing,
                  "Slab order: front-to-back (default) or back-to-front")

@@ -19,7 +19,7 @@ struct RenderOptionText {
   std::string gradient = "central";
   std::string classification;  // empty: post, or pre with surface splats
   std::string slabPreintegration = "on";
-  std::string postNormals = "field";
+  std::string postNormals = "ray";
   std::string splatter = "auto";
   std::string occlusionCulling = "auto";
   std::string slabResolution = "auto";

@@ -29,7 +29,7 @@ struct ViewerSettings {
   bool slabPreintegration = true;        // RenderSettings' default
   int slabSamples = 4;                   // RenderSettings' default: 2 or 4
   double prefilter = kDefaultPrefilter;  // post-classification's value prefilter
-  std::string postNormals = "field";     // "field" or "voxel"
+  std::string postNormals = "ray";       // "ray", "field" or "voxel"
   double slabThickness = 2.0;            // RenderSettings' default
   bool coarseSlabs = true;               // RenderSettings' default (--slab-resolution auto)
   glm::dvec3 background{0.0};

@@ -15,7 +15,8 @@ constexpr NamedValue<OcclusionCulling> kOcclusionCulling[] = {
 constexpr NamedValue<SlabPrecision> kSlabPrecision[] = {
     {SlabPrecision::Auto, "auto"}, {SlabPrecision::Half, "half"}, {SlabPrecision::Float, "float"}};
 constexpr NamedValue<PostNormals> kPostNormals[] = {{PostNormals::Field, "field"},
-                                                    {PostNormals::Voxel, "voxel"}};
+                                                    {PostNormals::Voxel, "voxel"},
+                                                    {PostNormals::Ray, "ray"}};
 constexpr NamedValue<Splatter> kSplatter[] = {
     {Splatter::Raster, "raster"}, {Splatter::Tiles, "tiles"}, {Splatter::Auto, "auto"}};
 constexpr NamedValue<RenderMode> kRenderMode[] = {
@@ -100,7 +101,8 @@ bool parseRendererKind(const std::string& text, RendererKind* kind) {
 bool halfFloatSlabs(const RenderSettings& settings) {
   if (settings.mode != RenderMode::Composite) return false;
   if (settings.slabPrecision == SlabPrecision::Auto)
-    return settings.kernelWidth <= 1.0 && !(postClassified(settings) && settings.lighting.enabled);
+    return settings.kernelWidth <= 1.0 && !(postClassified(settings) && settings.lighting.enabled &&
+                                            settings.postNormals != PostNormals::Ray);
   return settings.slabPrecision == SlabPrecision::Half;
 }
 

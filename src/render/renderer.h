@@ -34,7 +34,7 @@ bool parseCompositeOrder(const std::string& text, CompositeOrder* order);
 const char* xrayMapName(XRayMap map);
 bool parseXRayMap(const std::string& text, XRayMap* map);
 
-enum class PostNormals { Field = 0, Voxel = 1 };
+enum class PostNormals { Field = 0, Voxel = 1, Ray = 2 };
 const char* postNormalsName(PostNormals normals);
 bool parsePostNormals(const std::string& text, PostNormals* normals);
 
@@ -130,18 +130,22 @@ struct RenderSettings {
   // Composite: slab images of half floats (RGBA16F) or floats. Auto: half floats for kernels
   // at most one spacing wide (the default's 0.7), floats for wider ones, which overlap so many
   // kernels in a pixel of one slab that the smallest contributions round away (a homogeneous
-  // medium's opacity 1-4% low at width 1.6), and floats for shaded post-classification, whose
-  // normals are differences of the slabs' values (half floats' rounding in them moved shaded
-  // pixels by up to 7 levels). Otherwise within a few levels of the floats' pictures
+  // medium's opacity 1-4% low at width 1.6), and floats for shaded post-classification with
+  // field or voxel normals, whose normals are differences or sums in the slabs (half floats'
+  // rounding in field normals moved shaded pixels by up to 7 levels; ray normals, read from the
+  // gradient texture, move them by at most 3). Otherwise within a few levels of the floats' pictures
   // (README, "Slab image precision"), while blending half the bytes made frames 2.2-2.6x as
   // fast on a GPU. X-ray and MIP, whose one image sums or takes the maximum over the whole
   // volume, always use floats.
   SlabPrecision slabPrecision = SlabPrecision::Auto;
-  // Post-classified, pre-integrated and shaded: each pixel's normal is the gradient of the
-  // reconstructed field (screen-space differences of the slab's values, the difference of its
-  // two halves in depth), or the splats' voxel normals summed in a second image (Voxel; also
-  // post without pre-integration, which has no depth difference).
-  PostNormals postNormals = PostNormals::Field;
+  // Post-classified and shaded: each ray segment's normal is the data's gradient read along the
+  // pixel's ray at the segment's middle from a 3D texture (Ray, as a ray caster shades; 4
+  // bytes a voxel); or each pixel's normal is the gradient of the reconstructed field
+  // (Field, pre-integrated only: screen-space differences of the slab's values, the difference
+  // of its two halves in depth), or the splats' voxel normals summed in a second image (Voxel;
+  // also Field without pre-integration, which has no depth difference). Field and Voxel show
+  // the slab period as stripes on smooth surfaces seen obliquely (README, "Ray normals").
+  PostNormals postNormals = PostNormals::Ray;
   Splatter splatter = Splatter::Auto;  // whole composite frames in compute tiles or not
   // Composite: each slab is splatted into an image as coarse as its kernels allow (up to 4
   // pixels a texel a side where every footprint is at least 2 texels wide, so near the eye in

@@ -8,6 +8,7 @@ gl::VariantFlags SlabPassVariant::flags() const {
           {"SLAB_PREINTEGRATED", preintegrated},
           {"SLAB_SHADING", shading},
           {"SLAB_FIELD_NORMALS", fieldNormals},
+          {"SLAB_RAY_NORMALS", rayNormals},
           {"SLAB_NEIGHBOUR_IN_FRONT", neighbourInFront},
           {"SLAB_SCALED", scaled},
           {"SLAB_QUARTERS", quarters}};

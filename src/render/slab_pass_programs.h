@@ -18,6 +18,7 @@ struct SlabPassVariant {
   bool preintegrated = false;     // post, pre-integrated between slabs (paired slab images)
   bool shading = false;           // post, shaded with the head light
   bool fieldNormals = false;      // shaded, pre-integrated: normals from the field's gradient
+  bool rayNormals = false;        // shaded: normals from the gradient texture along the ray
   bool neighbourInFront = false;  // pre-integrated front to back: the slab drawn before is nearer
   bool scaled = false;            // the slab's or its neighbour's image is coarser (bilinear)
   bool quarters = false;          // pre-integrated with four values a slab (two images a slab)

@@ -530,6 +530,7 @@ void SplatRenderer::bindFrameState() {
   occlusion_.bindForDrawing(kOpaqueUnit);
   transferTexture_.bindUnit(0);
   if (frame_.pairedSlabs) pairTable_.bindUnits(kPairTableUnit, kPairPrefixUnit);
+  gradients_.bindUnit(kGradientUnit);
   glBindVertexArray(emptyVao_.id());
   glViewport(0, 0, frame_.width, frame_.height);
   glEnable(GL_PROGRAM_POINT_SIZE);
@@ -596,6 +597,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     extent.kernelWidth = settings.kernelWidth;
     if (frame_.pairedSlabs) stats_.classifyMs += preparePairTable(settings);
     syncAttributes(settings);
+    stats_.classifyMs += syncGradients(settings);  // once per volume: with classification
     stageStart = Clock::now();
     frame_.partitionStart = stageStart;
     frame_.reach = extent.reach;

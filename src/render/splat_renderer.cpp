@@ -11,6 +11,7 @@
 
 #include "core/clip_share.h"
 #include "core/named_values.h"
+#include "core/stopwatch.h"
 #include "gl/gl_error.h"
 #include "render/clip_uniforms.h"
 #include "render/gl_limits.h"
@@ -101,7 +102,7 @@ RenderStats SplatRenderer::stats() const {
   s.gpuBytes = size_t(splatBuffer_.size() + attributeBuffer_.size()) + orderPages_.bytes() +
                size_t(kTransferSamples) * 4 * sizeof(float) + targets_.bytes() +
                (gpuPartition_ ? gpuPartition_->bytes() : 0) + occlusion_.bytes() +
-               pairTable_.bytes() + (tiles_ ? tiles_->bytes() : 0);
+               pairTable_.bytes() + (tiles_ ? tiles_->bytes() : 0) + gradients_.bytes();
   return s;
 }
 
@@ -111,6 +112,7 @@ void SplatRenderer::setPointSizeLimit(float limit) {
 
 void SplatRenderer::setVolume(const Volume& volume) {
   volume_ = &volume;
+  gradients_.invalidate();
   splatsDirty_ = true;
   passTuner_.reset();  // another volume: both ways timed again
   splatterTuner_.reset();
@@ -182,7 +184,8 @@ void SplatRenderer::uploadSplats() {
 
 void SplatRenderer::syncAttributes(const RenderSettings& settings) {
   const bool needed =
-      (settings.lighting.enabled && !fieldNormals(settings)) || classified_.surfaceCount > 0;
+      (settings.lighting.enabled && !fieldNormals(settings) && !rayNormals(settings)) ||
+      classified_.surfaceCount > 0;
   const size_t n = classified_.splats.size();
   if (needed && !attributesUploaded_ && classified_.attributes.size() == n && n > 0) {
     attributeBuffer_.setData(GLsizeiptr(n * sizeof(PackedAttributes)),
@@ -274,8 +277,24 @@ bool SplatRenderer::fieldNormals(const RenderSettings& settings) {
          settings.postNormals == PostNormals::Field;
 }
 
+bool SplatRenderer::rayNormals(const RenderSettings& settings) {
+  return postClassified(settings) && settings.lighting.enabled &&
+         settings.postNormals == PostNormals::Ray;
+}
+
 bool SplatRenderer::voxelNormalSums(const RenderSettings& settings) {
-  return postClassified(settings) && settings.lighting.enabled && !fieldNormals(settings);
+  return postClassified(settings) && settings.lighting.enabled && !fieldNormals(settings) &&
+         !rayNormals(settings);
+}
+
+double SplatRenderer::syncGradients(const RenderSettings& settings) {
+  if (!volume_ || !rayNormals(settings)) {
+    gradients_.release();
+    return 0.0;
+  }
+  const auto start = Clock::now();
+  return gradients_.sync(*volume_, settings.classification.gradient) ? millisecondsSince(start)
+                                                                     : 0.0;
 }
 
 SplatVariant SplatRenderer::splatVariant(const RenderSettings& settings, bool texelBuffers) const {
@@ -296,6 +315,7 @@ SlabPassVariant SplatRenderer::slabPassVariant(const RenderSettings& settings, b
   variant.preintegrated = pairedSlabs(settings);
   variant.shading = variant.post && settings.lighting.enabled;  // pre-classified: in the sums
   variant.fieldNormals = fieldNormals(settings);
+  variant.rayNormals = rayNormals(settings);
   // Front to back the slab drawn before is the segment's front, back to front its back.
   variant.neighbourInFront = variant.preintegrated && settings.order == CompositeOrder::FrontToBack;
   variant.scaled = scaled;
@@ -313,6 +333,7 @@ void SplatRenderer::prepare(const RenderSettings& settings, int width, int heigh
   slabPrograms_.select(slabPassVariant(settings, false));
   if (settings.coarseSlabs) slabPrograms_.select(slabPassVariant(settings, true));
   if (volume_ && pairedSlabs(settings)) preparePairTable(settings);
+  syncGradients(settings);
 }
 
 bool SplatRenderer::coarseMarks(const RenderSettings& settings) {
@@ -382,6 +403,7 @@ void SplatRenderer::setClassifyUniforms(gl::Program& p, const Projection& proj,
   // Samplers of different types must not share a unit, used or not.
   p.setInt("uPairTable", int(kPairTableUnit));
   p.setInt("uPairPrefix", int(kPairPrefixUnit));
+  p.setInt("uGradient", int(kGradientUnit));
 }
 
 void SplatRenderer::setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex) {

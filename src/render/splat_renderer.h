@@ -21,6 +21,7 @@
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
 #include "render/gpu_slab_partition.h"
+#include "render/gradient_texture.h"
 #include "render/occlusion_pyramid.h"
 #include "render/order_pages.h"
 #include "render/render_targets.h"
@@ -203,6 +204,12 @@ class SplatRenderer : public Renderer {
   // Post-classified, shaded and pre-integrated with PostNormals::Field: the slab pass takes
   // each pixel's normal from the field's gradient (no voxel normals read or summed).
   static bool fieldNormals(const RenderSettings& settings);
+  // Post-classified and shaded with PostNormals::Ray: the slab pass reads each segment's normal
+  // from the gradient texture along the pixel's ray (no voxel normals read or summed).
+  static bool rayNormals(const RenderSettings& settings);
+  // Builds the gradient texture for a frame under `settings` that reads it unless it is up to
+  // date, frees it otherwise; returns the milliseconds a build took (0: none).
+  double syncGradients(const RenderSettings& settings);
   // Post-classified and pre-integrated between slabs: two slab images, drawn in turn.
   static bool pairedSlabs(const RenderSettings& settings);
   // Coarser slab images may be drawn: their marks need a depth image of their own.
@@ -358,6 +365,8 @@ class SplatRenderer : public Renderer {
   static constexpr unsigned kPairPrefixUnit = 9;      // paired slabs: the extinction prefix
   static constexpr unsigned kSlabBackUnit = 10;       // quarters: the slab's back half
   static constexpr unsigned kNeighbourBackUnit = 11;  // quarters: the neighbour's back half
+  GradientTexture gradients_;                         // ray normals: the data's gradient
+  static constexpr unsigned kGradientUnit = 12;
   gl::VertexArray emptyVao_;
   gl::Buffer splatBuffer_;
   OrderPages orderPages_;  // the CPU partition's order list (the GPU's keeps its own)

@@ -102,7 +102,7 @@ bool SplatRenderer::drawTilesNow() {
 bool SplatRenderer::tileComposite(bool& post, bool& shading) const {
   const RenderSettings& s = frame_.settings;
   post = postClassified(s);
-  shading = fieldNormals(s);
+  shading = fieldNormals(s) || rayNormals(s);
   if (s.mode != RenderMode::Composite || s.order != CompositeOrder::FrontToBack) return false;
   return !post || (quarterSlabs(s) && (shading || !s.lighting.enabled));
 }
@@ -112,6 +112,7 @@ bool SplatRenderer::loadTiles(TileEwaSplatter& tiles) {
   if (!tileComposite(tileFrame.post, tileFrame.shading) || classified_.splats.size() == 0)
     return false;
   const RenderSettings& s = frame_.settings;
+  tileFrame.rayNormals = rayNormals(s);
   tileFrame.cutoff = float(s.cutoff);
   const DepthProfile profile = depthProfile(s);
   tileFrame.depthProfile = glm::vec2(float(profile.erfReach), float(profile.scale));
@@ -144,6 +145,7 @@ void SplatRenderer::prepareTileComposite(gl::Program& program) {
   if (!postClassified(frame_.settings)) return;
   setClassifyUniforms(program, frame_.proj, frame_.settings);
   if (pairedSlabs(frame_.settings)) pairTable_.bindUnits(kPairTableUnit, kPairPrefixUnit);
+  gradients_.bindUnit(kGradientUnit);
 }
 
 }  // namespace ewa

@@ -47,12 +47,17 @@ gl::Program& TileEwaPrograms::scan() {
               defines(tileSize_, "SCAN_PASS") + "#define IMAGE_FORMAT rgba32f\n");
 }
 
-gl::Program& TileEwaPrograms::composite(bool post, bool shading) {
+gl::Program& TileEwaPrograms::composite(bool post, bool shading, bool rayNormals) {
   if (!post) return once(composite_[0], "tile_ewa.comp.glsl", defines(tileSize_, "COMPOSITE_PASS"));
-  const std::string s = shading ? "1" : "0";
-  return once(composite_[shading ? 2 : 1], "tile_ewa_post.comp.glsl",
-              tileSizeDefine(tileSize_) + "#define SLAB_SHADING " + s +
-                  "\n#define SLAB_FIELD_NORMALS " + s + "\n");
+  const bool ray = shading && rayNormals, field = shading && !rayNormals;
+  auto flag = [](bool on) { return on ? "1" : "0"; };
+  return once(composite_[!shading ? 1
+                         : ray    ? 3
+                                  : 2],
+              "tile_ewa_post.comp.glsl",
+              tileSizeDefine(tileSize_) + "#define SLAB_SHADING " + flag(shading) +
+                  "\n#define SLAB_FIELD_NORMALS " + flag(field) + "\n#define SLAB_RAY_NORMALS " +
+                  flag(ray) + "\n");
 }
 
 gl::Program& TileEwaPrograms::footprints(unsigned variantKey, const std::string& variantDefines) {

@@ -23,8 +23,9 @@ class TileEwaPrograms {
   gl::Program& scatter(bool gpuOrder);
   gl::Program& scan();
   // The composite: pre-classified (shaders/tile_ewa.comp.glsl), or post-classified, unshaded or
-  // shaded from the field (shaders/tile_ewa_post.comp.glsl).
-  gl::Program& composite(bool post, bool shading);
+  // shaded from the field or, rayNormals, from the gradient texture
+  // (shaders/tile_ewa_post.comp.glsl).
+  gl::Program& composite(bool post, bool shading, bool rayNormals);
   // The footprint records' pass (shaders/tile_ewa_footprints.comp.glsl) for a splat variant:
   // its key and #define lines (SplatVariant).
   gl::Program& footprints(unsigned variantKey, const std::string& variantDefines);
@@ -37,7 +38,7 @@ class TileEwaPrograms {
 
   gl::ShaderLibrary shaders_;  // a copy: the set may outlive the renderer that made it
   int tileSize_;
-  std::optional<gl::Program> count_[2], scatter_[2], scan_, composite_[3];
+  std::optional<gl::Program> count_[2], scatter_[2], scan_, composite_[4];
   std::map<unsigned, gl::Program> footprints_;
   size_t compiled_ = 0;
 };

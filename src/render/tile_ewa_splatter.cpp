@@ -40,6 +40,7 @@ void TileEwaSplatter::setFrame(const TileEwaFrame& frame) {
   settings_.termination = frame.termination;
   settings_.post = frame.post;
   settings_.shading = frame.shading;
+  settings_.rayNormals = frame.rayNormals;
   gpuLists_ = nullptr;
   slabEntries_.assign(slabCount_, 0);
   for (const glm::uvec2& entry : frame.entries)
@@ -87,7 +88,7 @@ void TileEwaSplatter::reserveSplats(size_t count) {
 }
 
 gl::Program& TileEwaSplatter::compositeProgram() {
-  return programs_->composite(settings_.post, settings_.shading);
+  return programs_->composite(settings_.post, settings_.shading, settings_.rayNormals);
 }
 
 TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {

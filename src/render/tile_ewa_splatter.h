@@ -45,9 +45,10 @@ struct TileEwaFrame {
   // renderer's default). Either way the caller sets the clip region's (and, post-classified,
   // the classification's) uniforms and textures on compositeProgram()
   // (SplatRenderer::prepareTileComposite). `shading`: with normals from the
-  // field's gradient.
+  // field's gradient or, `rayNormals`, from the gradient texture along each pixel's ray.
   bool post = false;
   bool shading = false;
+  bool rayNormals = false;
 };
 
 class TileEwaSplatter {

@@ -158,17 +158,21 @@ bool ControlPanel::drawSettings(RenderSettings& settings) {
         "Post-classified: each splat's value sharpened by this times its discrete Laplacian, "
         "nearer interpolating the voxels (0: the data's values; ewaview --prefilter)");
   ImGui::EndDisabled();
-  // Shaded post-classification's normals: the field's gradient (pre-integrated only) or voxels'.
-  ImGui::BeginDisabled(!post || !settings.slabPreintegration);
-  bool field = settings.postNormals == PostNormals::Field;
-  if (ImGui::Checkbox("field normals", &field)) {
-    settings.postNormals = field ? PostNormals::Field : PostNormals::Voxel;
+  // Shaded post-classification's normals: the data's gradient along each ray, the field's
+  // (pre-integrated only) or the voxels'. In PostNormals' order.
+  ImGui::BeginDisabled(!post);
+  int normals = int(settings.postNormals);
+  const char* normalNames[] = {"field", "voxel", "ray"};
+  ImGui::SetNextItemWidth(90.0f);
+  if (ImGui::Combo("normals", &normals, normalNames, 3)) {
+    settings.postNormals = PostNormals(normals);
     changed = true;
   }
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip(
-        "Shaded, post-classified and pre-integrated: normals from the gradient of the "
-        "reconstructed field (off: the voxels' normals; ewaview --post-normals)");
+        "Shaded, post-classified: normals from the data's gradient along each pixel's ray (ray, "
+        "as a ray caster shades), the gradient of the reconstructed field (field; "
+        "pre-integrated only) or the voxels' normals (voxel); ewaview --post-normals");
   ImGui::EndDisabled();
   changed |= sliderDouble("slab (voxels)", &settings.slabThickness, 0.25, 8.0, "%.2f",
                           ImGuiSliderFlags_Logarithmic);

@@ -259,9 +259,9 @@ namespace {
 // An opaque ball, post-classified, pre-integrated and shaded with a head light (no specular),
 // seen head-on in parallel projection: across its middle row the brightness falls off as
 // Lambert's law says, ambient + diffuse * sqrt(1 - (x / R)^2), whether the normals are the
-// field's gradient or the splats' voxel normals. A gradient missing its depth part would leave
-// the centre at the ambient term; one whose screen part were in pixels instead of world units
-// would keep the rim too bright.
+// field's gradient, the splats' voxel normals or the data's gradient along each ray. A gradient
+// missing its depth part would leave the centre at the ambient term; one whose screen part were in
+// pixels instead of world units would keep the rim too bright.
 TEST_F(PostClassification, ShadedBallFollowsLambertWithEitherNormals) {
   const Volume ball = floatVolume(40, [](int i, int j, int k) {
     const double r =
@@ -284,9 +284,10 @@ TEST_F(PostClassification, ShadedBallFollowsLambertWithEitherNormals) {
   settings.lighting.ambient = 0.3;
   settings.lighting.diffuse = 0.7;
   settings.lighting.specular = 0.0;
-  size_t bytes[2] = {0, 0};
+  settings.slabPrecision = SlabPrecision::Float;  // the same slab images for the byte counts
+  size_t bytes[3] = {0, 0, 0};
   const int size = 160;
-  for (PostNormals normals : {PostNormals::Field, PostNormals::Voxel}) {
+  for (PostNormals normals : {PostNormals::Field, PostNormals::Voxel, PostNormals::Ray}) {
     settings.postNormals = normals;
     renderer()->render(cam, settings, size, size);
     bytes[int(normals)] = renderer()->stats().gpuBytes;
@@ -318,6 +319,8 @@ TEST_F(PostClassification, ShadedBallFollowsLambertWithEitherNormals) {
   EXPECT_EQ(bytes[int(PostNormals::Voxel)] + 16, bytes[int(PostNormals::Field)] +
                                                      8 * renderer()->splats().splats().size() +
                                                      size_t(size) * size * 8);
+  // Ray normals neither: the gradient texture instead, 4 bytes a voxel.
+  EXPECT_EQ(bytes[int(PostNormals::Ray)], bytes[int(PostNormals::Field)] + 40 * 40 * 40 * 4);
 }
 
 // Two passes a slab (--slab-passes 2) add the same sums into the same images, one image a pass:

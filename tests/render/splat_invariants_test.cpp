@@ -332,8 +332,9 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
 }
 
 // Auto takes half-float slab images only where they keep the pictures (README, "Slab image
-// precision"): narrow kernels, not shaded post-classification (normals from value
-// differences), never X-ray or MIP; half and float are taken as asked in the composite mode.
+// precision"): narrow kernels, not shaded post-classification with field or voxel normals
+// (differences or sums in the slabs), never X-ray or MIP; half and float are taken as asked in the
+// composite mode.
 TEST(SlabPrecision, AutoTakesHalfFloatsOnlyWhereTheyHold) {
   RenderSettings s;  // post-classified, kernel width 0.7, unshaded
   EXPECT_TRUE(halfFloatSlabs(s));
@@ -344,8 +345,12 @@ TEST(SlabPrecision, AutoTakesHalfFloatsOnlyWhereTheyHold) {
   s.slabPrecision = SlabPrecision::Half;
   EXPECT_TRUE(halfFloatSlabs(s));
   s = RenderSettings{};
-  s.lighting.enabled = true;
-  EXPECT_FALSE(halfFloatSlabs(s));
+  s.lighting.enabled = true;  // normals read from the gradient texture, not the slabs
+  EXPECT_TRUE(halfFloatSlabs(s));
+  for (PostNormals normals : {PostNormals::Field, PostNormals::Voxel}) {
+    s.postNormals = normals;
+    EXPECT_FALSE(halfFloatSlabs(s)) << postNormalsName(normals);
+  }
   s.classification.mode = ClassificationMode::Pre;  // shaded per splat: the sums hold colours
   EXPECT_TRUE(halfFloatSlabs(s));
   s.slabPrecision = SlabPrecision::Float;

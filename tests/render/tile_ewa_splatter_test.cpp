@@ -184,9 +184,10 @@ TEST_F(TileEwaSplatterTest, GpuRecordsAreTheCpuFootprintsAndDrawTheSamePicture) 
 }
 
 // The default frame (post-classified, pre-integrated in quarters of a slab), unshaded and shaded
-// from the field's gradient, composited by the tiles from the renderer's own records, slab lists
-// and classification state, is the rasterizer's: with translucent haze behind the wall, so
-// segments, neighbouring slabs, normals across tile borders and early termination all count.
+// with ray normals (the default) and from the field's gradient, composited by the tiles from the
+// renderer's own records, slab lists and classification state, is the rasterizer's: with
+// translucent haze behind the wall, so segments, neighbouring slabs, normals across tile borders
+// and early termination all count.
 TEST_F(TileEwaSplatterTest, DrawsTheRasterizersPostClassifiedPicture) {
   SplatRenderer& r = wallRenderer(PartitionMode::Cpu);
   RenderSettings settings = tileSettings();  // the default classification
@@ -194,11 +195,15 @@ TEST_F(TileEwaSplatterTest, DrawsTheRasterizersPostClassifiedPicture) {
   const int width = 61, height = 53;
   // Measured: 1 level at most without early termination, 3 with it (the rasterizer marks
   // opaque pixels every few slabs, the tiles stop a pixel at once).
-  for (const auto& [termination, tolerance, shaded] :
-       {std::tuple{1.0, 2, true}, std::tuple{0.99, 4, true}, std::tuple{0.99, 4, false}}) {
-    SCOPED_TRACE(std::to_string(termination) + (shaded ? " shaded" : " unshaded"));
+  for (const auto& [termination, tolerance, shaded, normals] :
+       {std::tuple{1.0, 2, true, PostNormals::Ray}, std::tuple{0.99, 4, true, PostNormals::Ray},
+        std::tuple{0.99, 4, true, PostNormals::Field},
+        std::tuple{0.99, 4, false, PostNormals::Ray}}) {
+    SCOPED_TRACE(std::to_string(termination) + (shaded ? " shaded, " : " unshaded, ") +
+                 postNormalsName(normals));
     settings.terminationOpacity = termination;
     settings.lighting.enabled = shaded;
+    settings.postNormals = normals;
     r.render(cam, settings, width, height);
     const Image8 raster = r.readImage();
     bool post = false, shading = false;
@@ -223,7 +228,7 @@ TEST_F(TileEwaSplatterTest, DrawsTheRasterizersPostClassifiedPicture) {
                 1);
       if (worst > tolerance) {
         const std::string out = testOutputDir() + "/tile_ewa_post_" + std::to_string(tileSize) +
-                                (shaded ? "_shaded" : "");
+                                (shaded ? std::string("_shaded_") + postNormalsName(normals) : "");
         writePng(out + ".actual.png", tiles);
         writePng(out + ".raster.png", raster);
         ADD_FAILURE() << "pictures written to " << out << ".{actual,raster}.png";

@@ -79,7 +79,7 @@ TEST_F(ViewerFiles, SettingsRoundTripAndDefaults) {
   EXPECT_EQ(r.background, s.background);
   EXPECT_FALSE(r.levelOfDetail);
   EXPECT_EQ(r.depthCutoff, 1.0);
-  EXPECT_EQ(r.postNormals, "field");
+  EXPECT_EQ(r.postNormals, "ray");
   s.postNormals = "voxel";
   saveViewerSettings(p, s);
   EXPECT_EQ(loadViewerSettings(p).postNormals, "voxel");
@@ -106,8 +106,8 @@ TEST_F(ViewerFiles, SettingsDefaultsAreTheRenderersDefaults) {
   EXPECT_EQ(fresh.renderMode, "composite");
   EXPECT_EQ(fresh.cutoff, render.cutoff);
   EXPECT_EQ(fresh.depthCutoff, render.depthCutoff);
-  EXPECT_EQ(fresh.postNormals, "field");  // unit tests link no renderer: its name spelt out
-  EXPECT_EQ(render.postNormals, PostNormals::Field);
+  EXPECT_EQ(fresh.postNormals, "ray");  // unit tests link no renderer: its name spelt out
+  EXPECT_EQ(render.postNormals, PostNormals::Ray);
   EXPECT_EQ(fresh.kernelWidth, render.kernelWidth);
   EXPECT_EQ(fresh.classification, classificationModeName(render.classification.mode));
   EXPECT_EQ(fresh.slabThickness, render.slabThickness);
