@@ -241,7 +241,8 @@ def displayed(raw, used, origin, size):
     return out
 
 
-def vtk_render(array, spacing, tf, cam, repeats, picture="rays", sample_distance=0.25):
+def vtk_render(array, spacing, tf, cam, repeats, picture="rays", sample_distance=0.25,
+               shading=False):
     # VTK's GL and ewaview's OSMesa do not share a process: this runs in a child (--vtk).
     # picture "window": the window as VTK shows it; "rays": the ray caster's own image (one ray
     # through each pixel's centre), without the display's stretch by U / (U - 1) (displayed());
@@ -276,7 +277,14 @@ def vtk_render(array, spacing, tf, cam, repeats, picture="rays", sample_distance
     prop.SetColor(color)
     prop.SetScalarOpacityUnitDistance(1.0)
     prop.SetInterpolationTypeToLinear()
-    prop.ShadeOff()
+    if shading:  # ewaview's head light (--ambient, --diffuse, --specular, --shininess defaults)
+        prop.ShadeOn()
+        prop.SetAmbient(0.3)
+        prop.SetDiffuse(0.7)
+        prop.SetSpecular(0.25)
+        prop.SetSpecularPower(24.0)
+    else:
+        prop.ShadeOff()
     if picture == "gpu":  # a cross-check of the geometry: GL's own projection, no display step
         from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLGPUVolumeRayCastMapper
         mapper = vtkOpenGLGPUVolumeRayCastMapper()
@@ -376,23 +384,25 @@ def sharpness(ours, ref):
     return float(g_ours[edges].mean() / g_ref[edges].mean())
 
 
-def vtk_child(name, out, repeats, scale, azimuth, elevation, picture, sample_distance):
+def vtk_child(name, out, repeats, scale, azimuth, elevation, picture, sample_distance, shading):
     array, spacing, tf, direction, distance = volumes()[name]()
     rgb, ms = vtk_render(array, spacing, tf,
                          camera(array, spacing, direction, distance * scale, azimuth, elevation),
-                         repeats, picture, sample_distance)
+                         repeats, picture, sample_distance, shading)
     np.save(out, rgb)
     print(f"{ms:.3f}")
 
 
-def vtk_picture(name, repeats, scale, azimuth, elevation, picture="rays", sample_distance=0.25):
+def vtk_picture(name, repeats, scale, azimuth, elevation, picture="rays", sample_distance=0.25,
+                shading=False):
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "vtk.npy")
         run = subprocess.run([sys.executable, os.path.abspath(__file__), "--vtk", name, out,
                               "--repeats", str(repeats), "--distance-scale", str(scale),
                               "--azimuth", str(azimuth), "--elevation", str(elevation),
                               "--vtk-picture", picture,
-                              "--vtk-sample-distance", str(sample_distance)],
+                              "--vtk-sample-distance", str(sample_distance)] +
+                             (["--shading"] if shading else []),
                              capture_output=True, text=True)
         if run.returncode != 0:
             sys.exit(f"crisp_compare.py: VTK failed on {name}: {run.stderr.strip()}")
@@ -442,6 +452,12 @@ def main():
     p.add_argument("--vtk-sample-distance", type=float, default=0.25,
                    help="VTK's sample distance along its rays in voxel spacings (the issue's "
                         "0.25; finer shows fewer of its wood-grain rings)")
+    p.add_argument("--shading", action="store_true",
+                   help="both renderers shade with a head light (ewaview's default light terms, "
+                        "set on VTK's volume property too)")
+    p.add_argument("--post-normals", choices=["ray", "field", "voxel"],
+                   help="with --shading: ewaview's --post-normals for post-classified variants "
+                        "(default: ewaview's, ray)")
     p.add_argument("--views",
                    help="several views AZIMUTH:ELEVATION:DISTANCE-SCALE, comma-separated (e.g. "
                         "0:0:1,120:0:1); prints each variant's SSIM per view with the worst and "
@@ -454,7 +470,7 @@ def main():
         p.error(f"--volumes: unknown volume {unknown[0]} (known: {', '.join(volumes())})")
     if a.vtk:
         return vtk_child(a.vtk[0], a.vtk[1], a.repeats, a.distance_scale, a.azimuth,
-                         a.elevation, a.vtk_picture, a.vtk_sample_distance)
+                         a.elevation, a.vtk_picture, a.vtk_sample_distance, a.shading)
     import ewaview
     widths = [float(w) for w in a.widths.split(",")]
     prefilters = [None] if a.prefilters is None else [float(b) for b in a.prefilters.split(",")]
@@ -473,7 +489,7 @@ def main():
         cam = camera(array, spacing, direction, distance * a.distance_scale, a.azimuth,
                      a.elevation)
         ref, vtk_ms = vtk_picture(name, a.repeats, a.distance_scale, a.azimuth, a.elevation,
-                                  a.vtk_picture, a.vtk_sample_distance)
+                                  a.vtk_picture, a.vtk_sample_distance, a.shading)
         ref_y = luminance(ref)
         print(f"| {name} | VTK ray caster | | | 1 | 1 | {vtk_ms:.0f} |", flush=True)
         scene = make_scene(array, spacing, tf, cam, a.cutoff)
@@ -523,6 +539,10 @@ def variant_options(a, classification, width, prefilter):
         options["slab_samples"] = a.slab_samples
     if prefilter is not None:
         options["prefilter"] = prefilter
+    if a.shading:
+        options["shading"] = True
+        if a.post_normals and classification.startswith("post"):
+            options["post_normals"] = a.post_normals
     shown = "" if not classification.startswith("post") else (
         "default" if prefilter is None else f"{prefilter:g}")
     tag = f"{classification}_{width:g}" + ("" if prefilter is None else f"_p{prefilter:g}")
@@ -545,7 +565,8 @@ def compare_views(a, variants, views):
         flat = []
         for az, el, sc in views:
             cam = camera(array, spacing, direction, distance * sc, az, el)
-            ref = vtk_picture(name, 1, sc, az, el, a.vtk_picture, a.vtk_sample_distance)[0]
+            ref = vtk_picture(name, 1, sc, az, el, a.vtk_picture, a.vtk_sample_distance,
+                              a.shading)[0]
             ref_y = luminance(ref)
             flat.append(is_flat(ref_y))
             any_flat = any_flat or flat[-1]
