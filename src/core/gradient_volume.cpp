@@ -2,7 +2,9 @@
 #include "core/gradient_volume.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 
 #include "core/parallel_chunks.h"
 
@@ -20,29 +22,78 @@ double unpackComponent(uint32_t bits) {
   return double(bits & 1023u) / kLevels * 2.0 - 1.0;
 }
 
-}  // namespace
+// A volume's values by linear index as doubles, NaN read as 0, for one scalar type: no switch
+// on the type per read, which the first shaded frame would wait for.
+template <typename T>
+struct Values {
+  const uint8_t* bytes;
+  double operator()(int64_t n) const {
+    T v;
+    std::memcpy(&v, bytes + size_t(n) * sizeof(T), sizeof(T));
+    const double x = double(v);
+    return std::isfinite(x) ? x : 0.0;
+  }
+};
 
-PackedGradients packGradients(const Volume& volume, GradientMode mode, unsigned threads) {
-  PackedGradients out;
-  out.dims = volume.dims();
+// volumeGradient times the spacing (per index step) at voxel p: the same differences, one-sided
+// at the border, and for Smooth the same [1 2 1] x [1 2 1] / 16 average of them across each axis.
+template <typename Read>
+class Steps {
+ public:
+  Steps(const Volume& v, Read read) : d_(v.dims()), read_(read) {}
+
+  // The central difference along `axis` at p, per index step.
+  double central(const int64_t p[3], int axis) const {
+    const int64_t stride = axis == 0 ? 1 : axis == 1 ? d_[0] : d_[0] * d_[1];
+    const int64_t at = p[0] + d_[0] * (p[1] + d_[1] * p[2]);
+    const int64_t behind = p[axis] > 0 ? 1 : 0, ahead = p[axis] < d_[axis] - 1 ? 1 : 0;
+    if (behind + ahead == 0) return 0.0;
+    return (read_(at + ahead * stride) - read_(at - behind * stride)) / double(behind + ahead);
+  }
+
+  glm::dvec3 at(const int64_t p[3], GradientMode mode) const {
+    glm::dvec3 g(0.0);
+    for (int axis = 0; axis < 3; ++axis) {
+      if (mode == GradientMode::Central) {
+        g[axis] = central(p, axis);
+        continue;
+      }
+      constexpr double w[3] = {0.25, 0.5, 0.25};
+      const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+      for (int s = -1; s <= 1; ++s)
+        for (int t = -1; t <= 1; ++t) {
+          int64_t q[3] = {p[0], p[1], p[2]};
+          q[a1] = std::clamp<int64_t>(q[a1] + s, 0, d_[a1] - 1);
+          q[a2] = std::clamp<int64_t>(q[a2] + t, 0, d_[a2] - 1);
+          g[axis] += w[s + 1] * w[t + 1] * central(q, axis);
+        }
+    }
+    return g;
+  }
+
+ private:
+  std::array<int64_t, 3> d_;
+  Read read_;
+};
+
+template <typename Read>
+void packWith(const Volume& volume, Read read, GradientMode mode, unsigned threads,
+              PackedGradients& out) {
+  const Steps<Read> steps(volume, read);
   const auto& d = out.dims;
-  const glm::dvec3& spacing = volume.spacing();
   const size_t slices = size_t(d[2]), perSlice = size_t(d[0] * d[1]);
   const size_t minSlices = minItemsPerChunk(perSlice * 8);
-  auto step = [&](int64_t i, int64_t j, int64_t k) {
-    return volumeGradient(volume, i, j, k, mode) * spacing;  // per index step
-  };
-  // Two passes, the gradients found twice: a third list as big as the texels' (12 bytes a
-  // voxel) would cost more than the second pass does.
+  // Two passes: the scale from the central differences (a Smooth gradient averages them, so
+  // they bound it), then the texels. A list of the gradients between them would take 12 bytes
+  // a voxel.
   const std::vector<double> largest =
       parallelChunkResults<double>(slices, minSlices, threads, [&](size_t first, size_t last) {
         double most = 0.0;
-        for (int64_t k = int64_t(first); k < int64_t(last); ++k)
-          for (int64_t j = 0; j < d[1]; ++j)
-            for (int64_t i = 0; i < d[0]; ++i) {
-              const glm::dvec3 g = step(i, j, k);
-              most = std::max({most, std::abs(g.x), std::abs(g.y), std::abs(g.z)});
-            }
+        for (int64_t p[3] = {0, 0, int64_t(first)}; p[2] < int64_t(last); ++p[2])
+          for (p[1] = 0; p[1] < d[1]; ++p[1])
+            for (p[0] = 0; p[0] < d[0]; ++p[0])
+              for (int axis = 0; axis < 3; ++axis)
+                most = std::max(most, std::abs(steps.central(p, axis)));
         return most;
       });
   const double most = largest.empty() ? 0.0 : *std::max_element(largest.begin(), largest.end());
@@ -50,14 +101,36 @@ PackedGradients packGradients(const Volume& volume, GradientMode mode, unsigned 
   out.texels.resize(slices * perSlice);
   const double inv = 1.0 / out.scale;
   parallelChunks(slices, minSlices, threads, [&](size_t first, size_t last, size_t) {
-    for (int64_t k = int64_t(first); k < int64_t(last); ++k)
-      for (int64_t j = 0; j < d[1]; ++j)
-        for (int64_t i = 0; i < d[0]; ++i) {
-          const glm::dvec3 g = step(i, j, k) * inv;
-          out.texels[size_t(volume.index(i, j, k))] =
+    for (int64_t p[3] = {0, 0, int64_t(first)}; p[2] < int64_t(last); ++p[2])
+      for (p[1] = 0; p[1] < d[1]; ++p[1])
+        for (p[0] = 0; p[0] < d[0]; ++p[0]) {
+          const glm::dvec3 g = steps.at(p, mode) * inv;
+          out.texels[size_t(volume.index(p[0], p[1], p[2]))] =
               packComponent(g.x) | packComponent(g.y) << 10 | packComponent(g.z) << 20;
         }
   });
+}
+
+}  // namespace
+
+PackedGradients packGradients(const Volume& volume, GradientMode mode, unsigned threads) {
+  PackedGradients out;
+  out.dims = volume.dims();
+  const uint8_t* bytes = volume.bytes().data();
+  switch (volume.type()) {
+    case ScalarType::UInt8:
+      packWith(volume, Values<uint8_t>{bytes}, mode, threads, out);
+      break;
+    case ScalarType::Int16:
+      packWith(volume, Values<int16_t>{bytes}, mode, threads, out);
+      break;
+    case ScalarType::UInt16:
+      packWith(volume, Values<uint16_t>{bytes}, mode, threads, out);
+      break;
+    case ScalarType::Float32:
+      packWith(volume, Values<float>{bytes}, mode, threads, out);
+      break;
+  }
   return out;
 }
 

@@ -1,16 +1,24 @@
-// GradientTexture: packs the volume's gradient and uploads it as an RGB10_A2 3D texture.
+// GradientTexture: packs the volume's gradient on a worker and uploads it as an RGB10_A2 3D
+// texture.
 #include "render/gradient_texture.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <string>
 
-#include "core/gradient_volume.h"
 #include "gl/gl_error.h"
 
 namespace ewa {
 
-bool GradientTexture::sync(const Volume& volume, GradientMode mode) {
-  if (texture_ && volume_ == &volume && mode_ == mode) return false;
+GradientTexture::~GradientTexture() {
+  invalidate();  // the worker reads the volume
+}
+
+void GradientTexture::request(const Volume& volume, GradientMode mode) {
+  if (holds(volume, mode)) return;
+  if (pending_.valid() && pendingVolume_ == &volume && pendingMode_ == mode) return;
+  invalidate();
   const auto& d = volume.dims();
   GLint largest = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
@@ -20,8 +28,31 @@ bool GradientTexture::sync(const Volume& volume, GradientMode mode) {
                       std::to_string(largest) +
                       " for the ray normals' gradient texture (--post-normals field does not "
                       "need it)");
-  release();
-  const PackedGradients packed = packGradients(volume, mode);
+  pendingVolume_ = &volume;
+  pendingMode_ = mode;
+  pending_ =
+      std::async(std::launch::async, [&volume, mode] { return packGradients(volume, mode); });
+}
+
+bool GradientTexture::ready(double waitMs) {
+  if (!pending_.valid()) return texture_ && volume_ != nullptr;
+  if (std::isfinite(waitMs)) {
+    const auto wait = std::chrono::duration<double, std::milli>(std::max(waitMs, 0.0));
+    if (pending_.wait_for(wait) != std::future_status::ready) return false;
+  }
+  const PackedGradients packed = pending_.get();
+  const Volume* volume = pendingVolume_;
+  pendingVolume_ = nullptr;
+  upload(packed);
+  volume_ = volume;
+  mode_ = pendingMode_;
+  return true;
+}
+
+void GradientTexture::upload(const PackedGradients& packed) {
+  texture_ = gl::Texture();
+  volume_ = nullptr;
+  const auto& d = packed.dims;
   texture_ = gl::Texture::create3D(GL_RGB10_A2, GLsizei(d[0]), GLsizei(d[1]), GLsizei(d[2]));
   // In parts of at most 64 MB, so the driver's staging copy stays small for big volumes.
   const int64_t slice = d[0] * d[1];
@@ -33,14 +64,18 @@ bool GradientTexture::sync(const Volume& volume, GradientMode mode) {
   }
   gl::checkGlError(
       ("gradient texture upload (" + std::to_string(d[0] * d[1] * d[2]) + " voxels)").c_str());
-  volume_ = &volume;
-  mode_ = mode;
-  return true;
+}
+
+void GradientTexture::invalidate() {
+  if (pending_.valid()) pending_.wait();
+  pending_ = {};
+  pendingVolume_ = nullptr;
+  volume_ = nullptr;
 }
 
 void GradientTexture::release() {
+  invalidate();
   texture_ = gl::Texture();
-  volume_ = nullptr;
 }
 
 void GradientTexture::bindUnit(unsigned unit) const {

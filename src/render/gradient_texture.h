@@ -1,9 +1,12 @@
-// GradientTexture: the volume's gradient as a 3D texture (core/gradient_volume.h), built on
-// first use for shaded post-classified frames whose normals are read along each pixel's ray.
+// GradientTexture: the volume's gradient as a 3D texture (core/gradient_volume.h) for shaded
+// post-classified frames whose normals are read along each pixel's ray, packed on a worker
+// thread so a window's UI frames go on while it is built.
 #pragma once
 
 #include <cstddef>
+#include <future>
 
+#include "core/gradient_volume.h"
 #include "core/splat_attributes.h"
 #include "core/volume.h"
 #include "gl/texture.h"
@@ -12,21 +15,42 @@ namespace ewa {
 
 class GradientTexture {
  public:
-  // Makes the texture hold `volume`'s gradients under `mode` unless it does already (false);
-  // throws gl::GlError when an axis exceeds GL_MAX_3D_TEXTURE_SIZE or the GL runs out of memory.
-  bool sync(const Volume& volume, GradientMode mode);
-  // The volume's voxels may have changed: the next sync builds again.
-  void invalidate() { volume_ = nullptr; }
-  // Frees the texture (frames that do not read it).
+  GradientTexture() = default;
+  ~GradientTexture();
+  GradientTexture(const GradientTexture&) = delete;
+  GradientTexture& operator=(const GradientTexture&) = delete;
+
+  // Starts packing `volume`'s gradients under `mode` on a worker thread unless the texture
+  // holds them or that build is under way (a build of others is waited for and dropped). The
+  // volume must stay alive and unchanged until ready() or invalidate(). Throws gl::GlError when
+  // an axis exceeds GL_MAX_3D_TEXTURE_SIZE.
+  void request(const Volume& volume, GradientMode mode);
+  // Whether the texture holds what request() last asked for, uploading a finished build (on
+  // the GL thread). Waits for the worker at most `waitMs` (infinity: until it is done). Throws
+  // gl::GlError when the GL runs out of memory.
+  bool ready(double waitMs);
+  // True when the texture holds `volume`'s gradients under `mode` (nothing to wait for).
+  bool holds(const Volume& volume, GradientMode mode) const {
+    return texture_ && volume_ == &volume && mode_ == mode;
+  }
+  // The volume's voxels may change or go: waits for a build under way and forgets it, so the
+  // next request builds again.
+  void invalidate();
+  // The same, and frees the texture (frames that do not read it).
   void release();
   void bindUnit(unsigned unit) const;
   // GPU bytes held: 4 a voxel while it is in use.
   size_t bytes() const;
 
  private:
+  void upload(const PackedGradients& packed);
+
   gl::Texture texture_;
-  const Volume* volume_ = nullptr;
+  const Volume* volume_ = nullptr;  // what texture_ holds
   GradientMode mode_ = GradientMode::Central;
+  std::future<PackedGradients> pending_;  // the worker's build of pendingVolume_'s
+  const Volume* pendingVolume_ = nullptr;
+  GradientMode pendingMode_ = GradientMode::Central;
 };
 
 }  // namespace ewa

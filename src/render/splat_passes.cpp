@@ -597,7 +597,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     extent.kernelWidth = settings.kernelWidth;
     if (frame_.pairedSlabs) stats_.classifyMs += preparePairTable(settings);
     syncAttributes(settings);
-    stats_.classifyMs += syncGradients(settings);  // once per volume: with classification
+    frame_.gradientsPending = requestGradients(settings);  // on a worker: stepFrame waits
     stageStart = Clock::now();
     frame_.partitionStart = stageStart;
     frame_.reach = extent.reach;
@@ -751,6 +751,20 @@ bool SplatRenderer::stepFrame(double budgetMs) {
   if (frame_.orderUploading && !uploadOrderPieces(budgetMs, start)) {
     stats_.renderMs += millisecondsSince(start);
     return false;  // more of the order list next step
+  }
+  if (frame_.gradientsPending) {
+    // Ray normals: the gradient texture, packed on a worker since beginFrame (or prepare). A
+    // budgeted step waits for it at most what is left of its budget; the wait counts with
+    // classification.
+    const auto waitStart = Clock::now();
+    const double left =
+        std::isfinite(budgetMs) ? std::max(0.0, budgetMs - millisecondsSince(start)) : budgetMs;
+    if (!gradients_.ready(left)) {
+      stats_.renderMs += millisecondsSince(start);
+      return false;
+    }
+    stats_.classifyMs += millisecondsSince(waitStart);
+    frame_.gradientsPending = false;
   }
   const auto drawStart = Clock::now();  // the splat stage's time leaves the partition out
   // Drawing within a budget needs each slab's count: read the GPU's back (a short wait) before

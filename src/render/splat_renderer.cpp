@@ -287,14 +287,15 @@ bool SplatRenderer::voxelNormalSums(const RenderSettings& settings) {
          !rayNormals(settings);
 }
 
-double SplatRenderer::syncGradients(const RenderSettings& settings) {
+bool SplatRenderer::requestGradients(const RenderSettings& settings) {
   if (!volume_ || !rayNormals(settings)) {
     gradients_.release();
-    return 0.0;
+    return false;
   }
-  const auto start = Clock::now();
-  return gradients_.sync(*volume_, settings.classification.gradient) ? millisecondsSince(start)
-                                                                     : 0.0;
+  const GradientMode mode = settings.classification.gradient;
+  if (gradients_.holds(*volume_, mode)) return false;
+  gradients_.request(*volume_, mode);
+  return true;
 }
 
 SplatVariant SplatRenderer::splatVariant(const RenderSettings& settings, bool texelBuffers) const {
@@ -333,7 +334,7 @@ void SplatRenderer::prepare(const RenderSettings& settings, int width, int heigh
   slabPrograms_.select(slabPassVariant(settings, false));
   if (settings.coarseSlabs) slabPrograms_.select(slabPassVariant(settings, true));
   if (volume_ && pairedSlabs(settings)) preparePairTable(settings);
-  syncGradients(settings);
+  requestGradients(settings);  // packed on a worker from now on
 }
 
 bool SplatRenderer::coarseMarks(const RenderSettings& settings) {

@@ -207,9 +207,9 @@ class SplatRenderer : public Renderer {
   // Post-classified and shaded with PostNormals::Ray: the slab pass reads each segment's normal
   // from the gradient texture along the pixel's ray (no voxel normals read or summed).
   static bool rayNormals(const RenderSettings& settings);
-  // Builds the gradient texture for a frame under `settings` that reads it unless it is up to
-  // date, frees it otherwise; returns the milliseconds a build took (0: none).
-  double syncGradients(const RenderSettings& settings);
+  // Starts the gradient texture's build (on a worker) for frames under `settings` that read it
+  // unless it is up to date, and frees it otherwise; returns whether a frame must wait for it.
+  bool requestGradients(const RenderSettings& settings);
   // Post-classified and pre-integrated between slabs: two slab images, drawn in turn.
   static bool pairedSlabs(const RenderSettings& settings);
   // Coarser slab images may be drawn: their marks need a depth image of their own.
@@ -436,6 +436,7 @@ class SplatRenderer : public Renderer {
     size_t nextSlab = 0;       // composite: the next slab in drawing order
     bool terminated = false;   // early termination ended the slab loop
     bool occlusion = false;    // occlusion culling in this frame (front to back, terminating)
+    bool gradientsPending = false;  // ray normals: the gradient texture is still being built
     bool pairedSlabs = false;  // post-classified with pre-integration: two slab images
     bool quarters = false;     // paired, four depth samples a slab: two images a slab
     int slabPasses = 1;        // quarters: splat passes a slab (RenderSettings::slabPasses)

@@ -76,5 +76,29 @@ TEST_F(RayNormals, ObliqueFaceShowsNoSlabStripes) {
   }
 }
 
+// The gradient texture is packed on a worker: a budgeted frame on a volume just set steps
+// without it until it is ready, then draws the picture a whole frame draws.
+TEST_F(RayNormals, BudgetedFrameWaitsForTheGradientsInSteps) {
+  const SyntheticVolume s = makeSyntheticVolume("marschner-lobb:64");
+  SplatRenderer& r = *renderer();
+  r.setPartition(PartitionMode::Cpu);  // one order of sums: the same picture to the bit
+  r.setVolume(s.volume);
+  r.setTransferFunction(*s.transferFunction);
+  Camera cam;
+  cam.frame(s.volume.boundsMin(), s.volume.boundsMax(), {1.0, -0.4, 0.3}, {0, 0, 1}, 1.0);
+  RenderSettings settings;
+  settings.lighting.enabled = true;
+  const int size = 64;
+  r.render(cam, settings, size, size);
+  const Image8 whole = r.readImage();
+  EXPECT_GE(r.stats().gpuBytes, size_t(64 * 64 * 64 * 4)) << "the texture is held";
+  r.setVolume(s.volume);  // the texture is built again
+  r.beginFrame(cam, settings, size, size);
+  int steps = 0;
+  while (!r.stepFrame(1.0)) ASSERT_LT(++steps, 100000);
+  EXPECT_GT(steps, 0);
+  EXPECT_EQ(maxDifference(r.readImage(), whole), 0);
+}
+
 }  // namespace
 }  // namespace ewa::test

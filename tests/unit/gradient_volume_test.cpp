@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -42,6 +44,34 @@ TEST(GradientVolume, LinearFieldPacksItsSlopePerIndexStep) {
     EXPECT_EQ(texel >> 30, 0u);  // alpha unused
   }
   EXPECT_EQ(packGradients(v, GradientMode::Central, 1).texels, g.texels);  // any thread count
+}
+
+// The packed gradients are volumeGradient's (the voxel normals' and the C++ reference's) per
+// index step, central and smooth, at every voxel of an uneven field with a NaN in it, borders
+// included; the scale is the central differences' largest component (a smooth gradient
+// averages them).
+TEST(GradientVolume, TexelsAreVolumeGradientsPerIndexStep) {
+  const glm::dvec3 spacing(0.5, 2.0, 3.0);
+  const Volume v = floatField({7, 5, 4}, spacing, [](double i, double j, double k) {
+    if (i == 3 && j == 2 && k == 1) return std::nan("");
+    return std::sin(1.7 * i + 0.3 * j * j) * 40.0 + 9.0 * k - j;
+  });
+  for (GradientMode mode : {GradientMode::Central, GradientMode::Smooth}) {
+    const PackedGradients g = packGradients(v, mode, 0);
+    double most = 0.0;
+    for (int64_t k = 0; k < 4; ++k)
+      for (int64_t j = 0; j < 5; ++j)
+        for (int64_t i = 0; i < 7; ++i) {
+          const glm::dvec3 central = volumeGradient(v, i, j, k, GradientMode::Central) * spacing;
+          most = std::max({most, std::abs(central.x), std::abs(central.y), std::abs(central.z)});
+          const glm::dvec3 want = volumeGradient(v, i, j, k, mode) * spacing;
+          const glm::dvec3 got = unpackGradient(g.texels[size_t(v.index(i, j, k))]) * g.scale;
+          for (int a = 0; a < 3; ++a)
+            EXPECT_NEAR(got[a], want[a], 0.5 * kStep * g.scale)
+                << gradientModeName(mode) << " at " << i << " " << j << " " << k;
+        }
+    EXPECT_NEAR(g.scale, most, 1e-9 * most);
+  }
 }
 
 // Between voxels the read is trilinear in the texels, clamped at the edge: a quadratic field's
