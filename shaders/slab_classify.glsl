@@ -150,13 +150,28 @@ float segmentExtinction(float front, float back) {
   return b > a ? max(0.0, (prefixAt(b, n) - prefixAt(a, n)) / (b - a)) : 0.0;
 }
 
-// Premultiplied colour and opacity of the ray segment `length` world units long whose value
-// runs from `front` to `back` (normalized), as classifySlabPair (slab_preintegration.cpp).
-vec4 segment(float front, float back, float length, Surface p) {
+// The colour per unit opacity (rgb) and the opacity (a) of the ray segment `length` world
+// units long whose value runs from `front` to `back` (normalized), as classifySlabPair
+// (slab_preintegration.cpp).
+vec4 segmentColour(float front, float back, float length) {
   float n = float(textureSize(uPairTable, 0).x);
   vec4 t = texture(uPairTable, (vec2(back, front) * (n - 1.0) + 0.5) / n);
-  float alpha = 1.0 - exp(-max(length, 0.0) * segmentExtinction(front, back));
-  return vec4(shade(t.rgb, p) * alpha, alpha);
+  return vec4(t.rgb, 1.0 - exp(-max(length, 0.0) * segmentExtinction(front, back)));
+}
+
+// That segment premultiplied and lit by `p`.
+vec4 segment(float front, float back, float length, Surface p) {
+  vec4 c = segmentColour(front, back, length);
+  return vec4(shade(c.rgb, p) * c.a, c.a);
+}
+
+// The same lit, with ray normals, by the gradient at `depth` along the ray through `pixel`,
+// read only where the segment has opacity (no faster on llvmpipe, measured; a GPU may skip
+// the reads for warps of empty segments).
+vec4 segmentAt(float front, float back, float length, Surface p, vec2 pixel, float depth) {
+  vec4 c = segmentColour(front, back, length);
+  if (kRayNormals && c.a > 0.0) p = surfaceAt(p, pixel, depth);
+  return vec4(shade(c.rgb, p) * c.a, c.a);
 }
 
 // The segments from value i to value i + 1 of `v` (depth order) over `lengths`, composited
@@ -165,7 +180,7 @@ vec4 segment(float front, float back, float length, Surface p) {
 vec4 segmentsThrough(float v[5], vec4 lengths, Surface p, vec2 pixel, vec4 middles) {
   vec4 sum = vec4(0.0);
   for (int i = 0; i < 4; ++i) {
-    vec4 c = segment(v[i], v[i + 1], lengths[i], surfaceAt(p, pixel, middles[i]));
+    vec4 c = segmentAt(v[i], v[i + 1], lengths[i], p, pixel, middles[i]);
     sum += (1.0 - sum.a) * c;
   }
   return sum;

@@ -129,11 +129,11 @@ vec4 preintegrated(vec4 s) {
   float mid = 0.5 * (uSlabDepths.x + uSlabDepths.y);
   vec4 first, second;
   if (kNeighbourInFront) {
-    first = segment(other.y, own.x, lengths.x, surfaceAt(p, q, uSlabDepths.x));
-    second = segment(own.x, own.y, lengths.y, surfaceAt(p, q, mid));
+    first = segmentAt(other.y, own.x, lengths.x, p, q, uSlabDepths.x);
+    second = segmentAt(own.x, own.y, lengths.y, p, q, mid);
   } else {
-    first = segment(own.x, own.y, lengths.x, surfaceAt(p, q, mid));
-    second = segment(own.y, other.x, lengths.y, surfaceAt(p, q, uSlabDepths.y));
+    first = segmentAt(own.x, own.y, lengths.x, p, q, mid);
+    second = segmentAt(own.y, other.x, lengths.y, p, q, uSlabDepths.y);
   }
   return first + (1.0 - first.a) * second;
 }
@@ -165,10 +165,10 @@ void main() {
                           rayStretch(gl_FragCoord.xy), depth);
     int size = textureSize(uTransfer, 0);
     vec4 tf = texture(uTransfer, (value * float(size - 1) + 0.5) / float(size));
-    color = shade(tf.rgb, surfaceAt(pixelSurface(s), gl_FragCoord.xy,
-                                    0.5 * (uSlabDepths.x + uSlabDepths.y)));
     depth *= tf.a;
     if (!(depth > 0.0)) discard;
+    color = shade(tf.rgb, surfaceAt(pixelSurface(s), gl_FragCoord.xy,
+                                    0.5 * (uSlabDepths.x + uSlabDepths.y)));
   } else {
     color = s.rgb / depth;
   }
