@@ -17,7 +17,7 @@ GradientTexture::~GradientTexture() {
 
 void GradientTexture::request(const Volume& volume, GradientMode mode) {
   if (holds(volume, mode)) return;
-  if (pending_.valid() && pendingVolume_ == &volume && pendingMode_ == mode) return;
+  if ((pending_.valid() || uploading_) && pendingVolume_ == &volume && pendingMode_ == mode) return;
   invalidate();
   const auto& d = volume.dims();
   GLint largest = 0;
@@ -34,41 +34,60 @@ void GradientTexture::request(const Volume& volume, GradientMode mode) {
       std::async(std::launch::async, [&volume, mode] { return packGradients(volume, mode); });
 }
 
-bool GradientTexture::ready(double waitMs) {
-  if (!pending_.valid()) return texture_ && volume_ != nullptr;
-  if (std::isfinite(waitMs)) {
-    const auto wait = std::chrono::duration<double, std::milli>(std::max(waitMs, 0.0));
-    if (pending_.wait_for(wait) != std::future_status::ready) return false;
+bool GradientTexture::ready(double budgetMs) {
+  const auto start = std::chrono::steady_clock::now();
+  if (pending_.valid()) {
+    if (std::isfinite(budgetMs)) {
+      const auto wait = std::chrono::duration<double, std::milli>(std::max(budgetMs, 0.0));
+      if (pending_.wait_for(wait) != std::future_status::ready) return false;
+    }
+    packed_ = pending_.get();
+    const auto& d = packed_.dims;
+    texture_ = gl::Texture();
+    volume_ = nullptr;
+    texture_ = gl::Texture::create3D(GL_RGB10_A2, GLsizei(d[0]), GLsizei(d[1]), GLsizei(d[2]));
+    gl::checkGlError(
+        ("gradient texture (" + std::to_string(d[0] * d[1] * d[2]) + " voxels)").c_str());
+    uploaded_ = 0;
+    uploading_ = true;
   }
-  const PackedGradients packed = pending_.get();
-  const Volume* volume = pendingVolume_;
-  pendingVolume_ = nullptr;
-  upload(packed);
-  volume_ = volume;
-  mode_ = pendingMode_;
-  return true;
+  if (uploading_) {
+    if (!uploadParts(budgetMs, start)) return false;
+    uploading_ = false;
+    packed_ = PackedGradients();
+    volume_ = pendingVolume_;
+    mode_ = pendingMode_;
+    pendingVolume_ = nullptr;
+  }
+  return texture_ && volume_ != nullptr;
 }
 
-void GradientTexture::upload(const PackedGradients& packed) {
-  texture_ = gl::Texture();
-  volume_ = nullptr;
-  const auto& d = packed.dims;
-  texture_ = gl::Texture::create3D(GL_RGB10_A2, GLsizei(d[0]), GLsizei(d[1]), GLsizei(d[2]));
-  // In parts of at most 64 MB, so the driver's staging copy stays small for big volumes.
+bool GradientTexture::uploadParts(double budgetMs, std::chrono::steady_clock::time_point start) {
+  const auto& d = packed_.dims;
+  // Parts of about 4 MB: a few milliseconds each on llvmpipe, and a small staging copy.
   const int64_t slice = d[0] * d[1];
-  const int64_t step = std::max<int64_t>(1, (int64_t(64) << 20) / (4 * slice));
-  for (int64_t z = 0; z < d[2]; z += step) {
-    const int64_t n = std::min(step, d[2] - z);
-    texture_.subImage3D(0, 0, 0, GLint(z), GLsizei(d[0]), GLsizei(d[1]), GLsizei(n), GL_RGBA,
-                        GL_UNSIGNED_INT_2_10_10_10_REV, packed.texels.data() + z * slice);
+  const int64_t step = std::max<int64_t>(1, (int64_t(4) << 20) / (4 * slice));
+  while (uploaded_ < d[2]) {
+    const int64_t n = std::min(step, d[2] - uploaded_);
+    texture_.subImage3D(0, 0, 0, GLint(uploaded_), GLsizei(d[0]), GLsizei(d[1]), GLsizei(n),
+                        GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV,
+                        packed_.texels.data() + uploaded_ * slice);
+    uploaded_ += n;
+    if (uploaded_ < d[2] && std::isfinite(budgetMs) &&
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count() >= budgetMs)
+      return false;
   }
   gl::checkGlError(
       ("gradient texture upload (" + std::to_string(d[0] * d[1] * d[2]) + " voxels)").c_str());
+  return true;
 }
 
 void GradientTexture::invalidate() {
   if (pending_.valid()) pending_.wait();
   pending_ = {};
+  uploading_ = false;
+  packed_ = PackedGradients();
   pendingVolume_ = nullptr;
   volume_ = nullptr;
 }

@@ -3,6 +3,7 @@
 // thread so a window's UI frames go on while it is built.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <future>
 
@@ -26,9 +27,10 @@ class GradientTexture {
   // an axis exceeds GL_MAX_3D_TEXTURE_SIZE.
   void request(const Volume& volume, GradientMode mode);
   // Whether the texture holds what request() last asked for, uploading a finished build (on
-  // the GL thread). Waits for the worker at most `waitMs` (infinity: until it is done). Throws
-  // gl::GlError when the GL runs out of memory.
-  bool ready(double waitMs);
+  // the GL thread) in parts. Spends at most about `budgetMs` waiting for the worker and
+  // uploading (infinity: until it is done), so a window's refinement step stays within its
+  // budget. Throws gl::GlError when the GL runs out of memory.
+  bool ready(double budgetMs);
   // True when the texture holds `volume`'s gradients under `mode` (nothing to wait for).
   bool holds(const Volume& volume, GradientMode mode) const {
     return texture_ && volume_ == &volume && mode_ == mode;
@@ -43,7 +45,9 @@ class GradientTexture {
   size_t bytes() const;
 
  private:
-  void upload(const PackedGradients& packed);
+  // Uploads parts of packed_ from slice uploaded_ on until all are up (true) or `budgetMs` has
+  // passed since `start`.
+  bool uploadParts(double budgetMs, std::chrono::steady_clock::time_point start);
 
   gl::Texture texture_;
   const Volume* volume_ = nullptr;  // what texture_ holds
@@ -51,6 +55,9 @@ class GradientTexture {
   std::future<PackedGradients> pending_;  // the worker's build of pendingVolume_'s
   const Volume* pendingVolume_ = nullptr;
   GradientMode pendingMode_ = GradientMode::Central;
+  PackedGradients packed_;  // a finished build going up in parts
+  int64_t uploaded_ = 0;    // slices of it uploaded
+  bool uploading_ = false;
 };
 
 }  // namespace ewa
