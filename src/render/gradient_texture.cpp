@@ -92,6 +92,12 @@ void GradientTexture::invalidate() {
   volume_ = nullptr;
 }
 
+void GradientTexture::releaseWhenIdle() {
+  if (pending_.valid() && pending_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+    return;
+  release();
+}
+
 void GradientTexture::release() {
   invalidate();
   texture_ = gl::Texture();

@@ -35,6 +35,9 @@ class GradientTexture {
   bool holds(const Volume& volume, GradientMode mode) const {
     return texture_ && volume_ == &volume && mode_ == mode;
   }
+  // release() unless the worker is still packing (waiting for it would hold a UI frame): then
+  // nothing, and a later call frees it.
+  void releaseWhenIdle();
   // The volume's voxels may change or go: waits for a build under way and forgets it, so the
   // next request builds again.
   void invalidate();

@@ -289,7 +289,7 @@ bool SplatRenderer::voxelNormalSums(const RenderSettings& settings) {
 
 bool SplatRenderer::requestGradients(const RenderSettings& settings) {
   if (!volume_ || !rayNormals(settings)) {
-    gradients_.release();
+    gradients_.releaseWhenIdle();  // not wanted: freed once no worker packs it
     return false;
   }
   const GradientMode mode = settings.classification.gradient;

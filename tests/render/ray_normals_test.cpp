@@ -98,6 +98,11 @@ TEST_F(RayNormals, BudgetedFrameWaitsForTheGradientsInSteps) {
   while (!r.stepFrame(1.0)) ASSERT_LT(++steps, 100000);
   EXPECT_GT(steps, 0);
   EXPECT_EQ(maxDifference(r.readImage(), whole), 0);
+  // An unshaded frame frees the texture (nothing packs it now).
+  const size_t shaded = r.stats().gpuBytes;
+  settings.lighting.enabled = false;
+  r.render(cam, settings, size, size);
+  EXPECT_LE(r.stats().gpuBytes + size_t(64 * 64 * 64 * 4), shaded);
 }
 
 }  // namespace
