@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/gradient_stencil.h"
 #include "core/parallel_chunks.h"
 
 namespace ewa {
@@ -35,51 +36,19 @@ struct Values {
   }
 };
 
-// volumeGradient times the spacing (per index step) at voxel p: the same differences, one-sided
-// at the border, and for Smooth the same [1 2 1] x [1 2 1] / 16 average of them across each axis.
-template <typename Read>
-class Steps {
- public:
-  Steps(const Volume& v, Read read) : d_(v.dims()), read_(read) {}
-
-  // The central difference along `axis` at p, per index step.
-  double central(const int64_t p[3], int axis) const {
-    const int64_t stride = axis == 0 ? 1 : axis == 1 ? d_[0] : d_[0] * d_[1];
-    const int64_t at = p[0] + d_[0] * (p[1] + d_[1] * p[2]);
-    const int64_t behind = p[axis] > 0 ? 1 : 0, ahead = p[axis] < d_[axis] - 1 ? 1 : 0;
-    if (behind + ahead == 0) return 0.0;
-    return (read_(at + ahead * stride) - read_(at - behind * stride)) / double(behind + ahead);
-  }
-
-  glm::dvec3 at(const int64_t p[3], GradientMode mode) const {
-    glm::dvec3 g(0.0);
-    for (int axis = 0; axis < 3; ++axis) {
-      if (mode == GradientMode::Central) {
-        g[axis] = central(p, axis);
-        continue;
-      }
-      constexpr double w[3] = {0.25, 0.5, 0.25};
-      const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-      for (int s = -1; s <= 1; ++s)
-        for (int t = -1; t <= 1; ++t) {
-          int64_t q[3] = {p[0], p[1], p[2]};
-          q[a1] = std::clamp<int64_t>(q[a1] + s, 0, d_[a1] - 1);
-          q[a2] = std::clamp<int64_t>(q[a2] + t, 0, d_[a2] - 1);
-          g[axis] += w[s + 1] * w[t + 1] * central(q, axis);
-        }
-    }
-    return g;
-  }
-
- private:
-  std::array<int64_t, 3> d_;
-  Read read_;
-};
+// Calls fn(p) for every voxel p of slices [first, last) of a volume of `dims`, x fastest.
+template <typename Fn>
+void forSlices(const std::array<int64_t, 3>& d, size_t first, size_t last, Fn fn) {
+  for (int64_t p[3] = {0, 0, int64_t(first)}; p[2] < int64_t(last); ++p[2])
+    for (p[1] = 0; p[1] < d[1]; ++p[1])
+      for (p[0] = 0; p[0] < d[0]; ++p[0]) fn(p);
+}
 
 template <typename Read>
 void packWith(const Volume& volume, Read read, GradientMode mode, unsigned threads,
               PackedGradients& out) {
-  const Steps<Read> steps(volume, read);
+  // volumeGradient's stencil per index step (the shader turns it into camera space).
+  const GradientStencil<Read> steps(volume.dims(), glm::dvec3(1.0), read);
   const auto& d = out.dims;
   const size_t slices = size_t(d[2]), perSlice = size_t(d[0] * d[1]);
   const size_t minSlices = minItemsPerChunk(perSlice * 8);
@@ -89,11 +58,10 @@ void packWith(const Volume& volume, Read read, GradientMode mode, unsigned threa
   const std::vector<double> largest =
       parallelChunkResults<double>(slices, minSlices, threads, [&](size_t first, size_t last) {
         double most = 0.0;
-        for (int64_t p[3] = {0, 0, int64_t(first)}; p[2] < int64_t(last); ++p[2])
-          for (p[1] = 0; p[1] < d[1]; ++p[1])
-            for (p[0] = 0; p[0] < d[0]; ++p[0])
-              for (int axis = 0; axis < 3; ++axis)
-                most = std::max(most, std::abs(steps.central(p, axis)));
+        forSlices(d, first, last, [&](const int64_t p[3]) {
+          for (int axis = 0; axis < 3; ++axis)
+            most = std::max(most, std::abs(steps.central(p, axis)));
+        });
         return most;
       });
   const double most = largest.empty() ? 0.0 : *std::max_element(largest.begin(), largest.end());
@@ -101,13 +69,11 @@ void packWith(const Volume& volume, Read read, GradientMode mode, unsigned threa
   out.texels.resize(slices * perSlice);
   const double inv = 1.0 / out.scale;
   parallelChunks(slices, minSlices, threads, [&](size_t first, size_t last, size_t) {
-    for (int64_t p[3] = {0, 0, int64_t(first)}; p[2] < int64_t(last); ++p[2])
-      for (p[1] = 0; p[1] < d[1]; ++p[1])
-        for (p[0] = 0; p[0] < d[0]; ++p[0]) {
-          const glm::dvec3 g = steps.at(p, mode) * inv;
-          out.texels[size_t(volume.index(p[0], p[1], p[2]))] =
-              packComponent(g.x) | packComponent(g.y) << 10 | packComponent(g.z) << 20;
-        }
+    forSlices(d, first, last, [&](const int64_t p[3]) {
+      const glm::dvec3 g = steps.at(p, mode) * inv;
+      out.texels[size_t(volume.index(p[0], p[1], p[2]))] =
+          packComponent(g.x) | packComponent(g.y) << 10 | packComponent(g.z) << 20;
+    });
   });
 }
 

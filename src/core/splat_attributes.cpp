@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/packing.hpp>
 
+#include "core/gradient_stencil.h"
 #include "core/named_values.h"
 #include "core/parallel_chunks.h"
 
@@ -14,30 +15,6 @@ namespace ewa {
 namespace {
 
 constexpr int kTable = 4096;
-
-// Value of voxel (i,j,k) clamped to the volume, NaN read as 0 so gradients stay finite.
-double clampedValue(const Volume& v, int64_t i, int64_t j, int64_t k) {
-  const auto& d = v.dims();
-  i = std::clamp<int64_t>(i, 0, d[0] - 1);
-  j = std::clamp<int64_t>(j, 0, d[1] - 1);
-  k = std::clamp<int64_t>(k, 0, d[2] - 1);
-  const double x = v.value(i, j, k);
-  return std::isfinite(x) ? x : 0.0;
-}
-
-// Central difference along `axis` at (i,j,k), one-sided at the border, per world unit.
-double difference(const Volume& v, int64_t i, int64_t j, int64_t k, int axis) {
-  const auto& d = v.dims();
-  int64_t p[3] = {i, j, k};
-  const int64_t c = p[axis];
-  const int64_t lo = std::max<int64_t>(c - 1, 0), hi = std::min<int64_t>(c + 1, d[axis] - 1);
-  if (hi == lo) return 0.0;
-  p[axis] = hi;
-  const double vh = clampedValue(v, p[0], p[1], p[2]);
-  p[axis] = lo;
-  const double vl = clampedValue(v, p[0], p[1], p[2]);
-  return (vh - vl) / (double(hi - lo) * v.spacing()[axis]);
-}
 
 constexpr NamedValue<GradientMode> kGradientModeNames[] = {{GradientMode::Central, "central"},
                                                            {GradientMode::Smooth, "smooth"}};
@@ -66,25 +43,12 @@ UnpackedAttributes unpackAttributes(const PackedAttributes& a) {
 }
 
 glm::dvec3 volumeGradient(const Volume& v, int64_t i, int64_t j, int64_t k, GradientMode mode) {
-  if (mode == GradientMode::Central)
-    return {difference(v, i, j, k, 0), difference(v, i, j, k, 1), difference(v, i, j, k, 2)};
-  // Sobel-like: the central difference along each axis averaged over the 3x3 neighbours
-  // across it with weights [1 2 1] x [1 2 1] / 16, which damps noise in the normals.
-  constexpr double w[3] = {0.25, 0.5, 0.25};
-  const auto& d = v.dims();
-  glm::dvec3 g(0.0);
-  for (int axis = 0; axis < 3; ++axis) {
-    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-    for (int s = -1; s <= 1; ++s) {
-      for (int t = -1; t <= 1; ++t) {
-        int64_t p[3] = {i, j, k};
-        p[a1] = std::clamp<int64_t>(p[a1] + s, 0, d[a1] - 1);
-        p[a2] = std::clamp<int64_t>(p[a2] + t, 0, d[a2] - 1);
-        g[axis] += w[s + 1] * w[t + 1] * difference(v, p[0], p[1], p[2], axis);
-      }
-    }
-  }
-  return g;
+  auto read = [&v](int64_t n) {
+    const double x = v.valueAt(n);
+    return std::isfinite(x) ? x : 0.0;  // NaN read as 0, so gradients stay finite
+  };
+  const int64_t p[3] = {i, j, k};
+  return GradientStencil(v.dims(), v.spacing(), read).at(p, mode);
 }
 
 ClassifiedSplats classifySplats(const Volume& volume, const TransferFunction& tf,

@@ -293,9 +293,8 @@ bool SplatRenderer::requestGradients(const RenderSettings& settings) {
     return false;
   }
   const GradientMode mode = settings.classification.gradient;
-  if (gradients_.holds(*volume_, mode)) return false;
-  gradients_.request(*volume_, mode);
-  return true;
+  gradients_.request(*volume_, mode);  // nothing when the texture holds them already
+  return !gradients_.holds(*volume_, mode);
 }
 
 SplatVariant SplatRenderer::splatVariant(const RenderSettings& settings, bool texelBuffers) const {

@@ -268,11 +268,8 @@ TEST_F(PostClassification, ShadedBallFollowsLambertWithEitherNormals) {
         std::sqrt((i - 19.5) * (i - 19.5) + (j - 19.5) * (j - 19.5) + (k - 19.5) * (k - 19.5));
     return float(1.0 / (1.0 + std::exp(2.0 * (r - 14.0))));  // 1 inside, 0 outside
   });
-  TransferFunction tf;
-  tf.opacity = {{0.0, 0.0}, {0.4, 0.0}, {0.6, 1.0}, {1.0, 1.0}};
-  tf.color = {{0.0, glm::dvec3(1.0)}, {1.0, glm::dvec3(1.0)}};
   renderer()->setVolume(ball);
-  renderer()->setTransferFunction(tf);
+  renderer()->setTransferFunction(opaqueStepTf());
   Camera cam;
   cam.focalPoint = {19.5, 19.5, 19.5};
   cam.position = {19.5, 19.5, 120.0};

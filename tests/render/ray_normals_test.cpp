@@ -39,11 +39,8 @@ TEST_F(RayNormals, ObliqueFaceShowsNoSlabStripes) {
     const double d = glm::dot(glm::dvec3(i, j, k) - glm::dvec3(23.5), normal);
     return float(1.0 / (1.0 + std::exp(2.0 * d)));  // 1 below the face, 0 above
   });
-  TransferFunction tf;
-  tf.opacity = {{0.0, 0.0}, {0.4, 0.0}, {0.6, 1.0}, {1.0, 1.0}};
-  tf.color = {{0.0, glm::dvec3(1.0)}, {1.0, glm::dvec3(1.0)}};
   renderer()->setVolume(half);
-  renderer()->setTransferFunction(tf);
+  renderer()->setTransferFunction(opaqueStepTf());
   Camera cam;
   cam.focalPoint = glm::dvec3(23.5);
   cam.position = glm::dvec3(23.5) + glm::dvec3(40.0, -25.0, 30.0);

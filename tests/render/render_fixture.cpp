@@ -86,6 +86,13 @@ TransferFunction whiteTf(double alpha, double unit) {
   return tf;
 }
 
+TransferFunction opaqueStepTf() {
+  TransferFunction tf;
+  tf.opacity = {{0.0, 0.0}, {0.4, 0.0}, {0.6, 1.0}, {1.0, 1.0}};
+  tf.color = {{0.0, glm::dvec3(1.0)}, {1.0, glm::dvec3(1.0)}};
+  return tf;
+}
+
 RenderSettings paperSettings() {
   RenderSettings s;
   s.classification.mode = ClassificationMode::Pre;

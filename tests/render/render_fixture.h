@@ -38,6 +38,9 @@ Volume floatVolume(int n, const std::function<float(int, int, int)>& value);
 // A transfer function: value 0 transparent; values >= 1 white with opacity `alpha` per unit
 // distance `unit`.
 TransferFunction whiteTf(double alpha, double unit);
+// For fields of 0 outside and 1 inside (shaded surfaces): values up to 0.4 transparent, from 0.6
+// opaque, white.
+TransferFunction opaqueStepTf();
 // The EWA paper's setting, the default before post-classification and narrow kernels were:
 // pre-classified, kernels as wide as the spacing, cutoff 4. For tests of the mechanisms it
 // states (surface splats, the filters, C++ references of one splat, culling, LOD, slab counts).
