@@ -85,7 +85,8 @@ Surface surfaceFrom(vec3 normal, vec2 pixel, vec2 viewport) {
 vec3 rayGradient(vec2 pixel, float depth) {
   mat2x3 ray = indexRay(pixel);
   vec3 index = ray[0] + depth * ray[1];
-  vec3 g = texture(uGradient, (index + 0.5) / vec3(textureSize(uGradient, 0))).rgb * 2.0 - 1.0;
+  vec3 texel = texture(uGradient, (index + 0.5) / vec3(textureSize(uGradient, 0))).rgb;
+  vec3 g = (texel * 1023.0 - 512.0) / 511.0;  // unpackGradient
   return transpose(mat3(uCameraToIndex)) * g;
 }
 
@@ -122,13 +123,17 @@ float pixelDerivativeFrom(bool hasAhead, float ahead, bool hasBehind, float behi
 // per world unit: across the view from `derivatives` (per pixel, x and y) at the slab's middle
 // depth, along it from the front half's value to the back half's, half a slab apart. `s`: the
 // sums of the halves; `depths`: the slab's near and far camera depth.
+const float kFlatChange = 1e-5;
 vec3 gradientFrom(vec2 derivatives, vec4 s, vec2 depths) {
   float thickness = depths.y - depths.x;
   float depth = 0.5 * (depths.x + depths.y);
   float pixelsPerUnit = uOrthographic ? uPixelsPerUnit : uFocalPixels / max(depth, 1e-30);
   bool front = s.g > 0.0, back = s.a > 0.0;
-  float along = front && back ? (s.b / s.a - s.r / s.g) / (0.5 * thickness) : 0.0;
-  return vec3(derivatives * pixelsPerUnit, -along);
+  float change = front && back ? s.b / s.a - s.r / s.g : 0.0;
+  // Changes of the value (in [0, 1]) this small across a pixel and half a slab are the float
+  // sums' rounding, no direction (uniform data's field): no gradient, drawn unshaded.
+  if (max(max(abs(derivatives.x), abs(derivatives.y)), abs(change)) < kFlatChange) return vec3(0.0);
+  return vec3(derivatives * pixelsPerUnit, -change / (0.5 * thickness));
 }
 
 vec3 shade(vec3 color, Surface p) {

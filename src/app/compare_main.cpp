@@ -232,6 +232,12 @@ int run(int argc, char** argv) {
                  "EWA: where the slab partition is built: auto (default: the CPU on software "
                  "rasterizers, the GPU elsewhere), gpu or cpu")
       ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
+  bool shading = false;
+  std::string postNormals = "ray";
+  app.add_flag("--shading", shading, "EWA: Phong shading with a head light");
+  app.add_option("--post-normals", postNormals,
+                 "EWA post-classified, with --shading: field, voxel or ray (default) normals")
+      ->check(CLI::IsMember({"field", "voxel", "ray"}));
   int tileSize = 16;
   app.add_option("--tile-size", tileSize,
                  "Pixels a side of the compute tiles of the tiles_ms and tile_ewa_ms columns (8 or "
@@ -247,6 +253,8 @@ int run(int argc, char** argv) {
   settings.coarseSlabs = slabResolution == "auto";
   parseSlabPrecision(slabPrecision, &settings.slabPrecision);
   parseSlabPasses(slabPasses, &settings.slabPasses);
+  settings.lighting.enabled = shading;
+  parsePostNormals(postNormals, &settings.postNormals);
 
   CompareReport report;
   report.repeats = repeats;
@@ -270,7 +278,7 @@ int run(int argc, char** argv) {
   PartitionMode partitionMode = PartitionMode::Auto;
   parsePartitionMode(partition, &partitionMode);
   ewa.setPartition(partitionMode);
-  char ewaText[400], prefilterText[64];
+  char ewaText[480], prefilterText[64];
   std::snprintf(prefilterText, sizeof prefilterText, ", prefilter %g%s",
                 settings.classification.prefilter,
                 pairs == "on" ? (settings.slabSamples < 4   ? ", 2 samples a slab"
@@ -281,7 +289,7 @@ int run(int argc, char** argv) {
   std::snprintf(ewaText, sizeof ewaText,
                 "kernel width %.2f, cutoff %g, depth cutoff %g, slabs %g thick, "
                 "%s-classification%s%s, %s slab images, occlusion culling %s%s%s%s, "
-                "slab partition on the %s%s",
+                "slab partition on the %s%s%s",
                 settings.kernelWidth, settings.cutoff, settings.depthCutoff, settings.slabThickness,
                 classification.c_str(),
                 classification == "post" && pairs == "off" ? " without slab pre-integration" : "",
@@ -291,7 +299,12 @@ int run(int argc, char** argv) {
                 culling == "auto" ? " (auto)" : "",
                 slabRects == "on" ? "" : ", whole-image slab passes",
                 slabResolution == "auto" ? "" : ", full-resolution slabs",
-                ewa.gpuPartition() ? "GPU" : "CPU", partition == "auto" ? " (auto)" : "");
+                ewa.gpuPartition() ? "GPU" : "CPU", partition == "auto" ? " (auto)" : "",
+                !shading                  ? ""
+                : classification == "pre" ? ", shaded"
+                : postNormals == "ray"    ? ", shaded with ray normals"
+                : postNormals == "field"  ? ", shaded with field normals"
+                                          : ", shaded with voxel normals");
   report.ewaSettings = ewaText;
   SpriteBaseline sprites(shaders);
   TileSplatBaseline tiles(shaders, tileSize);

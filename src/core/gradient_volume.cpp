@@ -13,14 +13,17 @@ namespace ewa {
 
 namespace {
 
-constexpr double kLevels = 1023.0;  // 10 bits
+// 10 bits, zero at level 512 and +-1 at 1023 and 1: a zero gradient (uniform data) reads back
+// as exactly zero, so it is drawn unshaded; with the levels' middle (511.5) for zero it read as
+// 1/1023 in each component and lit uniform haze from a corner direction.
+constexpr double kZero = 512.0, kSteps = 511.0;
 
 uint32_t packComponent(double c) {
-  return uint32_t(std::lround(std::clamp(0.5 * (c + 1.0), 0.0, 1.0) * kLevels));
+  return uint32_t(kZero + double(std::lround(std::clamp(c, -1.0, 1.0) * kSteps)));
 }
 
 double unpackComponent(uint32_t bits) {
-  return double(bits & 1023u) / kLevels * 2.0 - 1.0;
+  return (double(bits & 1023u) - kZero) / kSteps;
 }
 
 // A volume's values by linear index as doubles, NaN read as 0, for one scalar type: no switch

@@ -15,9 +15,9 @@ namespace ewa {
 // One texel a voxel, x fastest: the gradient per index step (volumeGradient times the spacing,
 // so the shader turns it into camera space with the camera-to-index matrix alone), divided by
 // `scale`, the largest absolute component, and packed as GL_RGB10_A2 unorm with
-// GL_UNSIGNED_INT_2_10_10_10_REV (red in the low bits): component c is stored as
-// (c / scale + 1) / 2 in 10 bits. Linear, so the texture's trilinear filter interpolates the
-// gradient itself; the direction is all shading takes.
+// GL_UNSIGNED_INT_2_10_10_10_REV (red in the low bits): component c is stored as the 10-bit
+// level 512 + round(511 c / scale), so zero is exact. Linear, so the texture's trilinear filter
+// interpolates the gradient itself; the direction is all shading takes.
 struct PackedGradients {
   std::array<int64_t, 3> dims{0, 0, 0};
   double scale = 1.0;
@@ -29,7 +29,7 @@ struct PackedGradients {
 PackedGradients packGradients(const Volume& volume, GradientMode mode, unsigned threads = 0);
 
 // One texel's gradient, relative to the largest component (each in [-1, 1]): the shader's
-// decoding (texel * 2 - 1).
+// decoding ((texel * 1023 - 512) / 511).
 glm::dvec3 unpackGradient(uint32_t texel);
 
 // The texture read at index coordinates `index` (voxel centres at integers): trilinear between

@@ -24,7 +24,7 @@ Volume floatField(std::array<int64_t, 3> dims, glm::dvec3 spacing, F f) {
   return Volume(dims, spacing, glm::dvec3(0.0), ScalarType::Float32, std::move(bytes));
 }
 
-constexpr double kStep = 2.0 / 1023.0;  // one 10-bit level of a component in [-1, 1]
+constexpr double kStep = 1.0 / 511.0;  // one 10-bit level of a component in [-1, 1]
 
 // A linear field's gradient per index step is its slope per index, whatever the spacing (the
 // shader turns it into camera space through the camera-to-index matrix): (2, -3, 1) / 3 after
@@ -91,17 +91,16 @@ TEST(GradientVolume, SampleIsTrilinearBetweenVoxelCentres) {
   EXPECT_NEAR(sampleGradient(g, {2.0, 1.0, 1.0}).y, 0.0, kStep);
 }
 
-// A constant field has no gradient: texels of zero, not NaN, and a scale of 1.
+// A constant field has no gradient: texels of exactly zero (level 512), not NaN nor a level's
+// rounding (which the shader would normalize into a direction), and a scale of 1.
 TEST(GradientVolume, ConstantFieldHasNoGradient) {
   const Volume v =
       floatField({3, 3, 3}, glm::dvec3(1.0), [](double, double, double) { return 7.0; });
   const PackedGradients g = packGradients(v, GradientMode::Smooth, 0);
   EXPECT_EQ(g.scale, 1.0);
   for (uint32_t texel : g.texels) {
-    const glm::dvec3 d = unpackGradient(texel);
-    EXPECT_NEAR(d.x, 0.0, kStep);
-    EXPECT_NEAR(d.y, 0.0, kStep);
-    EXPECT_NEAR(d.z, 0.0, kStep);
+    EXPECT_EQ(unpackGradient(texel), glm::dvec3(0.0));
+    EXPECT_EQ(texel, 512u | 512u << 10 | 512u << 20);
   }
 }
 
