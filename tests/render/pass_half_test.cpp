@@ -109,7 +109,7 @@ TEST_F(PassHalf, CulledPassesDrawTheSamePictureWithFewerFragments) {
     for (int shaded = 0; shaded < 3; ++shaded) {
       SCOPED_TRACE(std::string(partitionModeName(partition)) + ", shaded " +
                    std::to_string(shaded));
-      RenderSettings settings;
+      RenderSettings settings = rasterSettings();
       settings.slabPasses = 2;
       settings.terminationOpacity = 1.0;  // no termination queries inside the samples query
       settings.lighting.enabled = shaded > 0;

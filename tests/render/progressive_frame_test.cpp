@@ -83,7 +83,7 @@ TEST_P(ProgressiveModes, TinyBudgetStepsGiveRendersPicture) {
   r.setVolume(volume);
   // Opacity 0.4 a voxel: opaque after some ten slabs, so termination comes after a few checks.
   r.setTransferFunction(terminate ? whiteTf(0.4, 1.0) : *s.transferFunction);
-  RenderSettings settings;
+  RenderSettings settings = rasterSettings();  // stepped slab by slab
   settings.slabThickness = 1.0;  // many slabs: many steps
   // The GPU partition's order of a slab's entries varies between frames: half-float sums
   // round it 2-3 levels apart (H200), floats within one.
@@ -166,7 +166,7 @@ TEST_F(ProgressiveFrame, AmpleBudgetFinishesInOneStep) {
   SplatRenderer r(shaders);
   r.setVolume(s.volume);
   r.setTransferFunction(*s.transferFunction);
-  RenderSettings settings;
+  RenderSettings settings = rasterSettings();  // stepped slab by slab
   settings.slabThickness = 6.0;                   // slabs of more entries than a first chunk holds
   settings.slabPrecision = SlabPrecision::Float;  // see TinyBudgetStepsGiveRendersPicture
   Camera cam;
@@ -191,7 +191,7 @@ TEST_F(ProgressiveFrame, AbandonedFrameLeavesNoTrace) {
   SplatRenderer& r = *renderer();
   r.setVolume(s.volume);
   r.setTransferFunction(*s.transferFunction);
-  RenderSettings settings;
+  RenderSettings settings = rasterSettings();  // stepped slab by slab
   settings.slabThickness = 1.0;
   Camera a, b;
   a.frame(s.volume.boundsMin(), s.volume.boundsMax(), {0.0, 0.0, 1.0}, {0, 1, 0}, 1.0);
@@ -211,7 +211,7 @@ TEST_F(ProgressiveFrame, LodRendererKeepsCoarseLevelUntilFullFrameIsDone) {
   LodScene scene("marschner-lobb:32");
   LodRenderer& lod = scene.lod;
   const Camera& cam = scene.camera;
-  RenderSettings settings;
+  RenderSettings settings = rasterSettings();  // stepped slab by slab
   settings.slabThickness = 1.0;
   settings.slabPrecision = SlabPrecision::Float;  // see TinyBudgetStepsGiveRendersPicture
   lod.render(0, cam, settings, 64, 64);
@@ -242,7 +242,7 @@ TEST_F(ProgressiveFrame, RefinementBudgetAdaptsAndReportsItsFrames) {
   LodScene scene("marschner-lobb:32");
   LodRenderer& lod = scene.lod;
   const Camera& cam = scene.camera;
-  RenderSettings settings;
+  RenderSettings settings = rasterSettings();  // stepped slab by slab
   settings.slabThickness = 1.0;
   settings.slabPrecision = SlabPrecision::Float;  // see TinyBudgetStepsGiveRendersPicture
   lod.render(0, cam, settings, 64, 64);

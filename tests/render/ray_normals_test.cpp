@@ -129,7 +129,7 @@ TEST_F(RayNormals, BudgetedFrameWaitsForTheGradientsInSteps) {
   r.setTransferFunction(*s.transferFunction);
   Camera cam;
   cam.frame(s.volume.boundsMin(), s.volume.boundsMax(), {1.0, -0.4, 0.3}, {0, 0, 1}, 1.0);
-  RenderSettings settings;
+  RenderSettings settings = rasterSettings();  // stepped slab by slab, its bytes counted
   settings.lighting.enabled = true;
   const int size = 64;
   r.render(cam, settings, size, size);

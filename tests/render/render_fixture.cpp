@@ -93,8 +93,14 @@ TransferFunction opaqueStepTf() {
   return tf;
 }
 
-RenderSettings paperSettings() {
+RenderSettings rasterSettings() {
   RenderSettings s;
+  s.splatter = Splatter::Raster;
+  return s;
+}
+
+RenderSettings paperSettings() {
+  RenderSettings s = rasterSettings();
   s.classification.mode = ClassificationMode::Pre;
   s.kernelWidth = 1.0;
   s.cutoff = 4.0;

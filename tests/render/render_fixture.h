@@ -41,9 +41,14 @@ TransferFunction whiteTf(double alpha, double unit);
 // For fields of 0 outside and 1 inside (shaded surfaces): values up to 0.4 transparent, from 0.6
 // opaque, white.
 TransferFunction opaqueStepTf();
+// The default settings drawn by the rasterizer, slab by slab, as auto draws them on llvmpipe: for
+// tests of what the slab passes do (steps within a budget, culling, passes, slab images, GPU
+// bytes). On a GPU auto draws frames this small whole in compute tiles, in one step.
+RenderSettings rasterSettings();
 // The EWA paper's setting, the default before post-classification and narrow kernels were:
-// pre-classified, kernels as wide as the spacing, cutoff 4. For tests of the mechanisms it
-// states (surface splats, the filters, C++ references of one splat, culling, LOD, slab counts).
+// pre-classified, kernels as wide as the spacing, cutoff 4, rasterized. For tests of the
+// mechanisms it states (surface splats, the filters, C++ references of one splat, culling, LOD,
+// slab counts).
 RenderSettings paperSettings();
 
 // Runs `program` (local size 64, uniform uCount) over `count` cases of `caseBytes` each at

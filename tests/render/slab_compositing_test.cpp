@@ -305,7 +305,7 @@ TEST_F(SlabCompositing, BackToFrontEqualsFrontToBackAndTerminationStopsEarly) {
   renderer()->setVolume(box);
   renderer()->setTransferFunction(whiteTf(0.9, 1.0));
   const Camera cam = boxFrontCamera();
-  RenderSettings opaque;
+  RenderSettings opaque = rasterSettings();  // slabs drawn and counted
   opaque.terminationOpacity = 1.0;
   renderer()->setLaggedTermination(false);  // slabs counted on the CPU: wait for each answer
   renderer()->render(cam, opaque, 32, 32);
@@ -338,7 +338,7 @@ TEST_F(SlabCompositing, LaggedTerminationKeepsThePictureAndStillStops) {
   renderer()->setVolume(box);
   renderer()->setTransferFunction(whiteTf(0.9, 1.0));
   const Camera cam = boxFrontCamera();
-  RenderSettings opaque;
+  RenderSettings opaque = rasterSettings();  // slabs drawn and counted
   opaque.slabPasses = 1;  // primitives a slab alike in every frame (auto may try two passes)
   RenderSettings never = opaque;
   never.terminationOpacity = 1.0;

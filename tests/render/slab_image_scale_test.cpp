@@ -66,7 +66,7 @@ TEST_F(SlabImageScaleRender, EdgesOfAMagnifiedPictureMatchAWiderOne) {
   cam.viewAngleDeg = 30.0;
   const int narrow = 64, wide = 96;
   for (bool post : {false, true}) {
-    RenderSettings settings;
+    RenderSettings settings = rasterSettings();  // slab images
     settings.coarseSlabs = false;
     if (!post) settings.classification.mode = ClassificationMode::Pre;
     renderer()->render(cam, settings, narrow, narrow);
@@ -129,7 +129,7 @@ TEST_F(SlabImageScaleRender, CoarserSlabImagesKeepThePicture) {
                         {"pre", ClassificationMode::Pre, true, false},
                         {"pre, shaded", ClassificationMode::Pre, true, true}};
   for (const Case& c : cases) {
-    RenderSettings settings;
+    RenderSettings settings = rasterSettings();  // slab images
     settings.classification.mode = c.mode;
     settings.slabPreintegration = c.preintegrated;
     settings.lighting.enabled = c.shading;
@@ -151,12 +151,12 @@ TEST_F(SlabImageScaleRender, CoarserSlabImagesKeepThePicture) {
 // Shaded post-classification takes its normals from differences of the slab's values, which
 // the bilinear read-back bends: it keeps full resolution; so do minified views.
 TEST_F(SlabImageScaleRender, ShadedPostAndSmallFootprintsStayFull) {
-  RenderSettings shaded;
+  RenderSettings shaded = rasterSettings();  // slab images
   shaded.lighting.enabled = true;
   const Magnified m = renderBoth(*renderer(), shaded, 128);
   EXPECT_EQ(m.coarseStats.slabsCoarse, 0u);
   EXPECT_EQ(m.coarse.pixels, m.full.pixels);
-  const Magnified small = renderBoth(*renderer(), RenderSettings{}, 24);  // a pixel a voxel
+  const Magnified small = renderBoth(*renderer(), rasterSettings(), 24);  // a pixel a voxel
   EXPECT_EQ(small.coarseStats.slabsCoarse, 0u);
   EXPECT_EQ(small.coarse.pixels, small.full.pixels);
 }

@@ -36,9 +36,9 @@ TEST_F(SplatProgramSetTest, SharingRenderersKeepTheirOwnFrames) {
   camA.position = {30.0, -8.0, 34.0};  // near: A's front slabs go to coarser images
   camA.viewUp = {0.0, 0.0, 1.0};
   camB.frame(ball.volume.boundsMin(), ball.volume.boundsMax(), {1.0, 0.2, 0.1}, {0, 0, 1}, 1.2);
-  RenderSettings settingsA;
-  settingsA.slabThickness = 1.0;  // many slabs: many steps
-  RenderSettings settingsB;       // another variant: pre-classified, shaded
+  RenderSettings settingsA = rasterSettings();  // stepped slab by slab
+  settingsA.slabThickness = 1.0;                // many slabs: many steps
+  RenderSettings settingsB = rasterSettings();  // another variant: pre-classified, shaded
   settingsB.classification.mode = ClassificationMode::Pre;
   settingsB.lighting.enabled = true;
 

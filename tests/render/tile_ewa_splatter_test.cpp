@@ -60,10 +60,10 @@ class TileEwaSplatterTest : public RenderFixture {
     r.setPartition(partition);
     return r;
   }
-  // Default settings as the compute tiles draw them: slab images at the picture's pixels, no
-  // culling, one pass a slab.
+  // Default settings as the compute tiles draw them, rasterized for the comparisons: slab images
+  // at the picture's pixels, no culling, one pass a slab.
   static RenderSettings tileSettings() {
-    RenderSettings settings;
+    RenderSettings settings = rasterSettings();
     settings.coarseSlabs = false;
     settings.occlusionCulling = OcclusionCulling::Off;
     settings.slabPasses = 1;
@@ -346,9 +346,9 @@ TEST_F(TileEwaSplatterTest, AutoSplatterTriesBothThenTakesTheFaster) {
   SplatRenderer& r = wallRenderer(PartitionMode::Cpu);
   const bool timers = r.gpuTimers();
   RenderSettings settings = tileSettings();
+  settings.splatter = Splatter::Auto;
   settings.slabPasses = 0;
   settings.lighting.enabled = true;  // post-classified and shaded from the field
-  ASSERT_EQ(settings.splatter, Splatter::Auto);
   r.setGpuTimers(false);
   r.render(cam, settings, width, height);
   EXPECT_FALSE(r.stats().tiles);
@@ -402,6 +402,7 @@ TEST_F(TileEwaSplatterTest, AutoSplatterDrawsBudgetedFramesInTilesWhereTheyFit) 
     SplatRenderer& r = wallRenderer(partition);
     const bool timers = r.gpuTimers();
     RenderSettings settings = tileSettings();
+    settings.splatter = Splatter::Auto;
     settings.lighting.enabled = true;  // post-classified and shaded from the field
     r.setGpuTimers(false);
     r.render(cam, settings, width, height);
@@ -453,11 +454,13 @@ TEST_F(TileEwaSplatterTest, AutoSplatterRasterizesWhereTheTilesDoNotBuild) {
   const std::filesystem::path shaders =
       brokenShaders(dir, "tile_ewa_post.comp.glsl", "void main", "int broken = ;\nvoid main");
   SplatRenderer r{gl::ShaderLibrary(shaders.string())};
+  r.setPartition(PartitionMode::Cpu);  // one order of sums: the same picture to the bit
   r.setVolume(vol);
   r.setTransferFunction(tf);
   r.setGpuTimers(true);
   const Camera cam = obliqueCamera();
   RenderSettings settings = tileSettings();
+  settings.splatter = Splatter::Auto;
   std::vector<RenderStats> frames;
   for (int i = 0; i < 3; ++i) {
     r.render(cam, settings, 40, 36);
