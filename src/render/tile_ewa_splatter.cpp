@@ -102,6 +102,7 @@ TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {
   gl::Program& count = programs_->count(gpuLists_ != nullptr);
   gl::Program& scatter = programs_->scatter(gpuLists_ != nullptr);
   gl::Program& scan = programs_->scan();
+  const bool fieldNormals = settings_.post && settings_.shading && !settings_.rayNormals;
   for (gl::Program* p : {&count, &scatter, &composite}) {
     p->setUInt("uCount", GLuint(entryCount_));
     p->setUInt("uSlabCount", GLuint(slabCount_));
@@ -110,8 +111,8 @@ TileEwaSplatter::Timing TileEwaSplatter::draw(int width, int height) {
     p->setFloat("uCutoff", settings_.cutoff);
     p->setVec2("uDepthProfile", settings_.depthProfile);
     p->setFloat("uTermination", settings_.termination);
-    // Post-classified tiles read their border's pixels for the normals.
-    p->setFloat("uBorder", settings_.post ? 1.0f : 0.0f);
+    // Post-classified tiles shaded from the field's gradient read their border's pixels.
+    p->setFloat("uBorder", fieldNormals ? 1.0f : 0.0f);
   }
   // The scan sees the buckets as one row of "tiles".
   scan.setIVec2("uTiles", glm::ivec2(int(buckets), 1));
