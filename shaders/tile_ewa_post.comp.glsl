@@ -104,6 +104,9 @@ void main() {
     // border's pixels add up their sums while it is not, for the normals.
     bool open = own && picture.a < uTermination;
     if (!groupOpen(open)) break;
+    // The pixels that add up this slab: the open ones, and the border's for their normals
+    // (a closed pixel's sums would only feed its neighbours' field normals).
+    bool adding = kBorder == 1 ? inside : open;
     vec2 depths = slabDepths[slab];
     vec4 front = vec4(0.0), back = vec4(0.0);
     for (uint base = begin; base < end; base += kBatch) {
@@ -113,7 +116,7 @@ void main() {
       // Eight splats an iteration: llvmpipe ends a shader's loops after 65535 iterations in all
       // (LP_MAX_TGSI_LOOP_ITERATIONS), which the middle tiles of a small picture reached with
       // four (engine at 128^2: 144 levels off in a block of tiles).
-      for (uint j = 0u; inside && j < n; j += 8u) {
+      for (uint j = 0u; adding && j < n; j += 8u) {
         addSplat(j, n, centre, depths, kept, front, back);
         addSplat(j + 1u, n, centre, depths, kept, front, back);
         addSplat(j + 2u, n, centre, depths, kept, front, back);
