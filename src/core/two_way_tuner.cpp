@@ -7,8 +7,8 @@
 namespace ewa {
 
 int TwoWayTuner::choice() const {
-  if (cost_[0] < 0.0) return 0;
-  if (cost_[1] < 0.0) return 1;
+  if (cost_[first_] < 0.0) return first_;
+  if (cost_[1 - first_] < 0.0) return 1 - first_;
   return sinceRetry_ >= retryEvery() ? 1 - cheaper() : cheaper();
 }
 

@@ -16,6 +16,9 @@ class TwoWayTuner {
   static constexpr int kRetryEvery = 32;
   static constexpr int kMaxRetryEvery = 256;
 
+  // `first`: the way tried first (0 or 1), the other second.
+  explicit TwoWayTuner(int first = 0) : first_(first & 1) {}
+
   // The way (0 or 1) the next timed frame should take.
   int choice() const;
   // A frame drawn `way` took `cost` per unit of work; non-finite or negative costs are ignored.
@@ -31,6 +34,7 @@ class TwoWayTuner {
   int cheaper() const { return cost_[1] < cost_[0] ? 1 : 0; }
 
   double cost_[2] = {-1.0, -1.0};
+  int first_ = 0;
   int sinceRetry_ = 0;  // frames the cheaper way has drawn since the other was last tried
 };
 

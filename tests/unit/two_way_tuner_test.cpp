@@ -39,6 +39,15 @@ TEST(TwoWayTuner, TriesBothThenKeepsTheCheaperAndRetriesTheOther) {
   EXPECT_DOUBLE_EQ(t.cost(1), 1.0);
 }
 
+// Way 1 tried first where asked (the compute tiles on a GPU), then way 0, then the cheaper kept.
+TEST(TwoWayTuner, TriesTheWayAskedForFirst) {
+  TwoWayTuner t(1);
+  const std::vector<int> ways = run(t, 4, 1.0, 1.2);
+  EXPECT_EQ(ways, (std::vector<int>{1, 0, 0, 0}));
+  t.reset();
+  EXPECT_EQ(t.choice(), 1) << "a reset tries the first way first again";
+}
+
 // A way r times dearer is retried after kRetryEvery * (r - 1) frames (at least kRetryEvery, at
 // most kMaxRetryEvery), so the retries' share of the time stays under 1/kRetryEvery up to the
 // cap: 2x apart every 32 frames, 5x every 128, 20x every 256.
