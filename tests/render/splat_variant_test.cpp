@@ -188,7 +188,7 @@ TEST_F(SplatVariants, HugeSplatListPathsDrawTheSamePictures) {
   Camera cam;
   cam.focalPoint = glm::dvec3(9.5);
   cam.position = cam.focalPoint + glm::dvec3(-15.0, 20.0, 45.0);
-  std::vector<RenderSettings> settings(6);
+  std::vector<RenderSettings> settings(6, rasterSettings());
   settings[1].lighting.enabled = true;
   settings[2].mode = RenderMode::XRay;
   settings[3].mode = RenderMode::Mip;
