@@ -119,20 +119,23 @@ float pixelDerivativeFrom(bool hasAhead, float ahead, bool hasBehind, float behi
   return 0.0;
 }
 
+// Changes of the value (in [0, 1]) smaller than this across a pixel and half a slab are the
+// float sums' rounding (uniform data's field): no direction.
+const float kFlatChange = 1e-5;
+
 // The gradient of the reconstructed field in camera space (x right, y up, z towards the eye)
 // per world unit: across the view from `derivatives` (per pixel, x and y) at the slab's middle
 // depth, along it from the front half's value to the back half's, half a slab apart. `s`: the
 // sums of the halves; `depths`: the slab's near and far camera depth.
-const float kFlatChange = 1e-5;
 vec3 gradientFrom(vec2 derivatives, vec4 s, vec2 depths) {
   float thickness = depths.y - depths.x;
   float depth = 0.5 * (depths.x + depths.y);
   float pixelsPerUnit = uOrthographic ? uPixelsPerUnit : uFocalPixels / max(depth, 1e-30);
   bool front = s.g > 0.0, back = s.a > 0.0;
   float change = front && back ? s.b / s.a - s.r / s.g : 0.0;
-  // Changes of the value (in [0, 1]) this small across a pixel and half a slab are the float
-  // sums' rounding, no direction (uniform data's field): no gradient, drawn unshaded.
-  if (max(max(abs(derivatives.x), abs(derivatives.y)), abs(change)) < kFlatChange) return vec3(0.0);
+  // Rounding only: no gradient, drawn unshaded.
+  float largest = max(max(abs(derivatives.x), abs(derivatives.y)), abs(change));
+  if (largest < kFlatChange) return vec3(0.0);
   return vec3(derivatives * pixelsPerUnit, -change / (0.5 * thickness));
 }
 

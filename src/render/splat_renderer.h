@@ -435,15 +435,15 @@ class SplatRenderer : public Renderer {
     PixelRect markRect;                // slabs composited since the last opacity marks
     bool gpuSlabs = false;             // slabs come from gpuPartition_
     bool tiles = false;                // drawn in compute tiles: the picture is tiles_'s
-    bool indirect = false;     // GPU slabs whose counts only the GPU knows (empty ones kept)
-    size_t nextSlab = 0;       // composite: the next slab in drawing order
-    bool terminated = false;   // early termination ended the slab loop
-    bool occlusion = false;    // occlusion culling in this frame (front to back, terminating)
+    bool indirect = false;          // GPU slabs whose counts only the GPU knows (empty ones kept)
+    size_t nextSlab = 0;            // composite: the next slab in drawing order
+    bool terminated = false;        // early termination ended the slab loop
+    bool occlusion = false;         // occlusion culling in this frame (front to back, terminating)
     bool gradientsPending = false;  // ray normals: the gradient texture is still being built
-    bool pairedSlabs = false;  // post-classified with pre-integration: two slab images
-    bool quarters = false;     // paired, four depth samples a slab: two images a slab
-    int slabPasses = 1;        // quarters: splat passes a slab (RenderSettings::slabPasses)
-    int nextQuery = 0;         // of queries_, the one the next check issues
+    bool pairedSlabs = false;       // post-classified with pre-integration: two slab images
+    bool quarters = false;          // paired, four depth samples a slab: two images a slab
+    int slabPasses = 1;             // quarters: splat passes a slab (RenderSettings::slabPasses)
+    int nextQuery = 0;              // of queries_, the one the next check issues
     bool queryIssued[2] = {false, false};  // lagged termination: a result not yet read
     bool conditional = false;              // lagged termination: conditional rendering begun
     size_t nextEntry = 0;                  // X-ray and MIP: the next entry of the single slab

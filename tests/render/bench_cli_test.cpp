@@ -215,9 +215,8 @@ TEST(StatsCli, OcclusionCullingCountsCulledDrawsAndKeepsThePicture) {
   std::ofstream(tf) << R"({"opacity": [[0, 0], [0.1, 0.6], [255, 0.6]],
                            "color": [[0, 1, 1, 1], [255, 1, 0.5, 0.2]]})";
   // Pre-classified: post-classified frames are not culled (checked at the end).
-  const std::string common =
-      "--synthetic sphere:32 --tf " + tf +
-      " --resolution 64,64 --stats --classification pre --splatter raster";
+  const std::string common = "--synthetic sphere:32 --tf " + tf +
+                             " --resolution 64,64 --stats --classification pre --splatter raster";
   // Auto (the default) leaves culling off on llvmpipe and turns it on on a GPU: it culls
   // what one of the two below culls (checked after them).
   const CliRun automatic = runEwaview(common + " -o " + dir + "/culled_auto.png");
@@ -239,8 +238,8 @@ TEST(StatsCli, OcclusionCullingCountsCulledDrawsAndKeepsThePicture) {
       << "culling changed the picture";
   const CliRun post = runEwaview("--synthetic sphere:32 --tf " + tf +
                                  " --resolution 64,64 --stats --occlusion-culling on "
-                                 "--splatter raster -o " + dir +
-                                 "/culled_post.png");
+                                 "--splatter raster -o " +
+                                 dir + "/culled_post.png");
   ASSERT_EQ(post.code, 0) << post.err;
   EXPECT_EQ(json::parse(post.out)["entries_culled"].get<double>(), 0.0);
   EXPECT_EQ(runEwaview("--synthetic sphere:8 --occlusion-culling maybe -o " + dir + "/x.png").code,

@@ -84,7 +84,7 @@ TEST_P(ProgressiveModes, TinyBudgetStepsGiveRendersPicture) {
   // Opacity 0.4 a voxel: opaque after some ten slabs, so termination comes after a few checks.
   r.setTransferFunction(terminate ? whiteTf(0.4, 1.0) : *s.transferFunction);
   RenderSettings settings = rasterSettings();  // stepped slab by slab
-  settings.slabThickness = 1.0;  // many slabs: many steps
+  settings.slabThickness = 1.0;                // many slabs: many steps
   // The GPU partition's order of a slab's entries varies between frames: half-float sums
   // round it 2-3 levels apart (H200), floats within one.
   settings.slabPrecision = SlabPrecision::Float;
@@ -166,7 +166,7 @@ TEST_F(ProgressiveFrame, AmpleBudgetFinishesInOneStep) {
   SplatRenderer r(shaders);
   r.setVolume(s.volume);
   r.setTransferFunction(*s.transferFunction);
-  RenderSettings settings = rasterSettings();  // stepped slab by slab
+  RenderSettings settings = rasterSettings();     // stepped slab by slab
   settings.slabThickness = 6.0;                   // slabs of more entries than a first chunk holds
   settings.slabPrecision = SlabPrecision::Float;  // see TinyBudgetStepsGiveRendersPicture
   Camera cam;

@@ -44,7 +44,7 @@ TEST_F(SlabScissor, SamePictureAsWholeImagePasses) {
   cam.focalPoint = {4.0, 14.0, 10.0};  // the ball sits off centre
   cam.position = cam.focalPoint + glm::dvec3(25.0, 20.0, 70.0);
   RenderSettings base = rasterSettings();  // slab passes
-  base.terminationOpacity = 0.9;  // marks and termination happen in the picture
+  base.terminationOpacity = 0.9;           // marks and termination happen in the picture
   struct Case {
     const char* name;
     RenderSettings settings;
