@@ -45,9 +45,14 @@ if [ "$mode" = all ] || [ "$mode" = tests ]; then
 fi
 if [ "$mode" = all ] || [ "$mode" = bench ]; then
   # The default frame, rasterized (ewa_ms) and in compute tiles from the GPU partition's lists
-  # (tile_ewa_ms, post-classified since 2026-11-28; not yet timed on a GPU) with their pictures.
+  # (tile_ewa_ms, post-classified: the H200 took 8.2/4.6/11.5 ms at 1024^2 on 2026-11-28) with
+  # their pictures; then shaded (ray normals, the default, and the field's).
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --repeats 20 \
     --images "$out/images_default" | tee "$out/compare.txt"
+  for normals in ray field; do
+    "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --sizes 1024 --repeats 7 \
+      --shading --post-normals "$normals" | tee -a "$out/compare.txt"
+  done
   # The compute tiles (tiles_ms) at 8 x 8 pixels beside the default 16 x 16 above.
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --sizes 1024 --repeats 7 \
     --tile-size 8 | tee -a "$out/compare.txt"
@@ -55,8 +60,8 @@ if [ "$mode" = all ] || [ "$mode" = bench ]; then
   # CThead at 1024^2).
   "$bin/ewaview-compare" --backend egl --no-vtk --data "$data" --sizes 1024 --repeats 7 \
     --slab-passes 1 | tee -a "$out/compare.txt"
-  # Post- against pre-classified (the crisp-pictures issue allows 1.3x; the H100 gave
-  # 2.07-2.42x on 2026-11-28); the pre-classified run also times the compute EWA splatter
+  # Post- against pre-classified (the crisp-pictures issue allows 1.3x; rasterized the H100 gave
+  # 2.07-2.42x on 2026-11-28, in tiles the H200 1.21-1.49x); the pre-classified run also times the compute EWA splatter
   # (tile_ewa_ms: 0.094-0.11x the rasterized frame there) and writes both pictures to
   # OUT/images (within 3 levels of each other on the H200). Then two samples a slab in slabs
   # 1 voxel thick: the same half-voxel spacing of values with one slab image instead of two (on
