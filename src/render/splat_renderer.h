@@ -435,6 +435,7 @@ class SplatRenderer : public Renderer {
     PixelRect markRect;                // slabs composited since the last opacity marks
     bool gpuSlabs = false;             // slabs come from gpuPartition_
     bool tiles = false;                // drawn in compute tiles: the picture is tiles_'s
+    bool tilesFirstUse = false;        // tiles: programs compiled or the splatter made for it
     bool indirect = false;          // GPU slabs whose counts only the GPU knows (empty ones kept)
     size_t nextSlab = 0;            // composite: the next slab in drawing order
     bool terminated = false;        // early termination ended the slab loop

@@ -56,6 +56,10 @@ void SplatRenderer::reportSplatterCost() {
   if (!autoTiles(frame_.settings) || !tileComposite(post, shading)) return;
   // Per entry of the whole frame: early termination leaves the rasterizer's later slabs
   // undrawn, and what it saves counts for it.
+  // A tile frame that compiled programs or made the splatter's buffers paid once for them (the
+  // H200's first volume in the window: its tiles measured dearer than the rasterizer and were
+  // not tried again for 256 frames): not counted, so the next frame tries the tiles again.
+  if (frame_.tiles && frame_.tilesFirstUse) return;
   const size_t entries = frameEntryCount();
   if (entries > 0) splatterTuner_.report(frame_.tiles ? 1 : 0, stats_.splatMs / double(entries));
 }
@@ -87,9 +91,12 @@ const std::shared_ptr<TileEwaPrograms>& SplatRenderer::tilePrograms() {
 }
 
 bool SplatRenderer::drawTilesNow() {
+  const size_t compiled = tilePrograms()->compiled();
+  frame_.tilesFirstUse = !tiles_;
   if (!tiles_) tiles_ = std::make_unique<TileEwaSplatter>(tilePrograms());
   if (!loadTiles(*tiles_)) return false;
   tiles_->draw(frame_.width, frame_.height);
+  frame_.tilesFirstUse = frame_.tilesFirstUse || tilePrograms()->compiled() != compiled;
   // The GPU's counts are read after the final pass (stepFrame), as for rasterized frames.
   if (!frame_.indirect)
     stats_.slabEntries = frame_.gpuSlabs ? gpuPartition_->entryCount() : frameEntryCount();

@@ -355,6 +355,9 @@ TEST_F(TileEwaSplatterTest, AutoSplatterTriesBothThenTakesTheFaster) {
   EXPECT_EQ(r.stats().slabPasses, 1);
   const Image8 raster = r.readImage();
   EXPECT_GT(meanValue(raster), 30.0);
+  RenderSettings tiles = settings;
+  tiles.splatter = Splatter::Tiles;
+  r.render(cam, tiles, width, height);  // the tiles' programs and buffers made: counted below
   r.setGpuTimers(true);
   r.setVolume(vol);  // a volume set again: both ways timed afresh
   std::vector<RenderStats> frames;
@@ -376,6 +379,26 @@ TEST_F(TileEwaSplatterTest, AutoSplatterTriesBothThenTakesTheFaster) {
   EXPECT_EQ(frames[2].tiles, frames[0].splatMs < frames[1].splatMs);
   if (!frames[2].tiles) {
     EXPECT_EQ(frames[2].slabPasses, 2) << "the tiles' frame was counted";
+  }
+  // A renderer's first tile frame (its programs compiled, its splatter made) is not counted:
+  // the next frame tries the tiles again, then the rasterizer.
+  {
+    SplatRenderer fresh{gl::ShaderLibrary()};
+    fresh.setPartition(PartitionMode::Cpu);
+    fresh.setVolume(vol);
+    fresh.setTransferFunction(tf);
+    fresh.setGpuTimers(true);
+    std::vector<bool> drewTiles;
+    for (int i = 0; i < 3; ++i) {
+      fresh.render(cam, settings, width, height);
+      drewTiles.push_back(fresh.stats().tiles);
+      if (i == 0) {
+        EXPECT_LT(fresh.splatterTuner().cost(1), 0.0) << "the first use counted";
+      }
+    }
+    EXPECT_EQ(drewTiles, (std::vector<bool>{true, true, false}));
+    EXPECT_GT(fresh.splatterTuner().cost(1), 0.0);
+    EXPECT_GT(fresh.splatterTuner().cost(0), 0.0);
   }
   // A volume of more splats than auto's limit stays rasterized (the tiles' memory).
   r.setGpuTimers(true);
@@ -408,6 +431,9 @@ TEST_F(TileEwaSplatterTest, AutoSplatterDrawsBudgetedFramesInTilesWhereTheyFit) 
     r.setGpuTimers(false);
     r.render(cam, settings, width, height);
     const Image8 raster = r.readImage();
+    RenderSettings warmUp = settings;
+    warmUp.splatter = Splatter::Tiles;
+    r.render(cam, warmUp, width, height);  // the tiles' first use (not counted) before the timing
     r.setGpuTimers(true);
     r.setVolume(vol);  // both ways timed afresh
     // Steps of a microsecond: a chunk of slabs each. Returns the steps that drew (the last,
