@@ -278,6 +278,11 @@ int run(int argc, char** argv) {
   PartitionMode partitionMode = PartitionMode::Auto;
   parsePartitionMode(partition, &partitionMode);
   ewa.setPartition(partitionMode);
+  const std::string shadingText =
+      !shading ? ""
+      : classification == "pre"
+          ? ", shaded"
+          : std::string(", shaded with ") + postNormalsName(settings.postNormals) + " normals";
   char ewaText[480], prefilterText[64];
   std::snprintf(prefilterText, sizeof prefilterText, ", prefilter %g%s",
                 settings.classification.prefilter,
@@ -286,25 +291,20 @@ int run(int argc, char** argv) {
                                  : settings.slabPasses == 1 ? ", 4 samples a slab in 1 pass"
                                                             : ", 4 samples a slab in 2 passes")
                               : "");
-  std::snprintf(ewaText, sizeof ewaText,
-                "kernel width %.2f, cutoff %g, depth cutoff %g, slabs %g thick, "
-                "%s-classification%s%s, %s slab images, occlusion culling %s%s%s%s, "
-                "slab partition on the %s%s%s",
-                settings.kernelWidth, settings.cutoff, settings.depthCutoff, settings.slabThickness,
-                classification.c_str(),
-                classification == "post" && pairs == "off" ? " without slab pre-integration" : "",
-                classification == "post" ? prefilterText : "",
-                halfFloatSlabs(settings) ? "half-float" : "float",
-                ewa.occlusionCulling(settings.occlusionCulling) ? "on" : "off",
-                culling == "auto" ? " (auto)" : "",
-                slabRects == "on" ? "" : ", whole-image slab passes",
-                slabResolution == "auto" ? "" : ", full-resolution slabs",
-                ewa.gpuPartition() ? "GPU" : "CPU", partition == "auto" ? " (auto)" : "",
-                !shading                  ? ""
-                : classification == "pre" ? ", shaded"
-                : postNormals == "ray"    ? ", shaded with ray normals"
-                : postNormals == "field"  ? ", shaded with field normals"
-                                          : ", shaded with voxel normals");
+  std::snprintf(
+      ewaText, sizeof ewaText,
+      "kernel width %.2f, cutoff %g, depth cutoff %g, slabs %g thick, "
+      "%s-classification%s%s, %s slab images, occlusion culling %s%s%s%s, "
+      "slab partition on the %s%s%s",
+      settings.kernelWidth, settings.cutoff, settings.depthCutoff, settings.slabThickness,
+      classification.c_str(),
+      classification == "post" && pairs == "off" ? " without slab pre-integration" : "",
+      classification == "post" ? prefilterText : "",
+      halfFloatSlabs(settings) ? "half-float" : "float",
+      ewa.occlusionCulling(settings.occlusionCulling) ? "on" : "off",
+      culling == "auto" ? " (auto)" : "", slabRects == "on" ? "" : ", whole-image slab passes",
+      slabResolution == "auto" ? "" : ", full-resolution slabs", ewa.gpuPartition() ? "GPU" : "CPU",
+      partition == "auto" ? " (auto)" : "", shadingText.c_str());
   report.ewaSettings = ewaText;
   SpriteBaseline sprites(shaders);
   TileSplatBaseline tiles(shaders, tileSize);
