@@ -53,6 +53,27 @@ def read_png(data):
     return out.astype(np.uint8).reshape(height, width, channels)
 
 
+# Two renders with the same settings: llvmpipe gives the same bytes, a GPU may not, since its
+# slab partition and compute tiles add a frame's floats in an order that varies from run to run
+# (atomics); that moves a pixel by a level or so. Wrong settings move pictures by far more.
+PICTURE_TOLERANCE = 2
+
+
+def picture_difference(a, b):
+    assert a.shape == b.shape, f"shapes {a.shape} and {b.shape}"
+    return int(np.abs(a.astype(np.int32) - b.astype(np.int32)).max())
+
+
+def assert_same_picture(actual, expected, tolerance=PICTURE_TOLERANCE):
+    worst = picture_difference(actual, expected)
+    assert worst <= tolerance, f"pictures differ by up to {worst} levels (tolerance {tolerance})"
+
+
+def differs(a, b, tolerance=PICTURE_TOLERANCE):
+    """Whether two pictures differ by more than run-to-run rounding."""
+    return picture_difference(a, b) > tolerance
+
+
 class Cli:
     """Runs the ewaview program the module was built beside."""
 
