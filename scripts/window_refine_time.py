@@ -56,6 +56,9 @@ def measure(binary, args, timeout=180.0):
 
 def main(argv):
     runs = 1
+    if argv[:1] in (['-h'], ['--help']):
+        print(__doc__.strip())
+        return
     if argv[:1] == ['--runs']:
         runs, argv = int(argv[1]), argv[2:]
     binaries, args = (argv[:argv.index('--')], argv[argv.index('--') + 1:]) if '--' in argv \

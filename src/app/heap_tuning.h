@@ -7,9 +7,9 @@ namespace ewa {
 // MB for a frame of splats) draw after draw; glibc hands the top of the heap back to the kernel
 // after each free and the next draw faults every page in again. Keeping up to 1 GiB of freed
 // heap for reuse took a one-shot 512x512 picture of engine from 5.1 s to 3.0 s (same image,
-// same peak memory; README, "One-shot pictures"). Leaves glibc's setting alone where the user
-// chose one (GLIBC_TUNABLES naming trim_threshold, or MALLOC_TRIM_THRESHOLD_). Returns whether
-// it changed it.
+// same peak memory; docs/performance.md, "One-shot pictures"). Leaves glibc's setting alone where
+// the user chose one (GLIBC_TUNABLES naming trim_threshold, or MALLOC_TRIM_THRESHOLD_). Returns
+// whether it changed it.
 bool keepFreedHeapForReuse();
 
 // Where transparent huge pages are given only to memory that asks (the kernel's "madvise"
@@ -18,10 +18,10 @@ bool keepFreedHeapForReuse();
 // for them. llvmpipe zero-fills every buffer it makes, and on this project's machine a 4 KiB
 // page fault costs so much that a 512^3 volume's 0.58 GB splat list took 2.7 s to upload (one
 // frozen window frame); with huge pages 0.8 s, and its headless picture 47 s instead of 63 s
-// (README, "Huge pages" under "What the default costs"). Leaves things as they are where
-// GLIBC_TUNABLES already names malloc.hugetlb (the user's choice: glibc.malloc.hugetlb=0 turns it
-// off), off Linux and glibc, or when the kernel's mode is "always" or "never". Returns only if it
-// did not run again.
+// (docs/performance.md, "Huge pages" under "What the default costs"). Leaves things as they are
+// where GLIBC_TUNABLES already names malloc.hugetlb (the user's choice: glibc.malloc.hugetlb=0
+// turns it off), off Linux and glibc, or when the kernel's mode is "always" or "never". Returns
+// only if it did not run again.
 void askForHugePages(char** argv);
 // Whether this process's large allocations get transparent huge pages: glibc asks for them
 // (GLIBC_TUNABLES has glibc.malloc.hugetlb=1) or the kernel gives them unasked ("always").

@@ -124,7 +124,7 @@ Footprint computeFootprint(const glm::dvec3& u, const glm::dmat3& cov, const Pro
 // The footprint's radial profile: a Gaussian exp(-r/2) windowed by (1 - r/c)^2, so it falls
 // smoothly to zero at the cutoff r = c. A hard cut at c = 4 leaves a step of exp(-2) = 13.5% of
 // the peak, which pixel sampling turns into 7% mass errors and 11% ripple in a lattice of
-// one-pixel splats; the window brings both under 1% (see README, "Footprint window").
+// one-pixel splats; the window brings both under 1% (see docs/rendering.md, "Footprint window").
 double windowedGaussian(double r, double cutoff);
 // Integral over [0, c] of windowedGaussian(r, c) dr: the footprint's 2D integral is
 // pi * sqrt(det covariance) * windowIntegral(c). It tends to 2 (the plain Gaussian) as c grows.

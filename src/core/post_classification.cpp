@@ -162,8 +162,8 @@ int postClassificationMarginSquared(double cutoff, double kernelWidth) {
   // reconstructed value, not one pulled toward the visible voxels' values, which swells thin
   // structures. At width 0.7, cutoff 5 (reach^2 2.45) that keeps the 18 voxels of squared
   // distance 1 and 2; whole voxels of reach (the 6 face neighbours) left close-ups further from
-  // VTK's ray caster (lidc2 0.958 -> 0.980, aneurism 0.982 -> 0.987 at one view each: README,
-  // A margin as far as a kernel reaches).
+  // VTK's ray caster (lidc2 0.958 -> 0.980, aneurism 0.982 -> 0.987 at one view each:
+  // docs/rendering.md, A margin as far as a kernel reaches).
   const double reach2 = std::max(cutoff, 0.0) * std::max(kernelWidth, 0.0) * kernelWidth;
   return std::clamp(int(std::floor(reach2 + 1e-9)), 1, kMaxMarginSquared);
 }

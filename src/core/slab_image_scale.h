@@ -21,8 +21,8 @@ constexpr double kSlabImageScaleStep = 0.25;
 // standard deviation, low-pass filter left out): the linear read-back of a Gaussian that wide
 // is within 1/(8 sigma^2) = 3.1% of its peak along an axis (an isolated kernel; the sums of
 // neighbouring kernels are smoother) and its sampling does not alias. Measured against full
-// resolution (README, "Slab image scale"): 1.5 left lines of up to 22 levels along aneurism's
-// silhouettes, where a slab's mean value changes fastest; 2 keeps them near 10.
+// resolution (docs/rendering.md, "Slab image scale"): 1.5 left lines of up to 22 levels along
+// aneurism's silhouettes, where a slab's mean value changes fastest; 2 keeps them near 10.
 constexpr double kMinSigmaTexels = 2.0;
 
 // A bilinear read-back between texels blurs, on average over where a pixel falls between them,

@@ -11,7 +11,7 @@ namespace ewa {
 
 // The strength post-classification uses unless told otherwise (--prefilter, the panel, the
 // settings file). Measured on close-ups against VTK's ray caster at kernel width 0.7, cutoff 5
-// (README, "Value prefilter"): 0.05 brought aneurism, bonsai and engine nearest without
+// (docs/rendering.md, "Value prefilter"): 0.05 brought aneurism, bonsai and engine nearest without
 // amplifying CThead's noise, 0.1 and above overshoot at edges; with four samples a slab and the
 // post-classified low-pass filter, 0.04 raises the worst of eleven views of each volume.
 constexpr double kDefaultPrefilter = 0.04;

@@ -45,7 +45,8 @@ bool parsePostNormals(const std::string& text, PostNormals* normals);
 // samples a slab and field normals, and only frames drawn at once (headless); the rest is
 // rasterized. Auto: rasterized where the GPU's timers are not used (software rasterizers, where
 // tiles cost 11-14x the rasterized frame); elsewhere the faster as timed frames find it
-// (TwoWayTuner: a rasterized frame first, then one in tiles, README "Compute EWA splatting").
+// (TwoWayTuner: a rasterized frame first, then one in tiles, docs/performance.md "Compute EWA
+// splatting").
 enum class Splatter { Raster = 0, Tiles = 1, Auto = 2 };
 const char* splatterName(Splatter splatter);
 bool parseSplatter(const std::string& text, Splatter* splatter);
@@ -53,7 +54,7 @@ bool parseSplatter(const std::string& text, Splatter* splatter);
 enum class RendererKind { Splat = 0, ShearWarp = 1 };
 // Occlusion culling (splats over pixels already opaque are not drawn; the same picture). Auto:
 // on hardware GL, off on software rasterizers, where the vertex shader's extra texel fetches
-// cost more than they save unless most splats are hidden (README, "Performance").
+// cost more than they save unless most splats are hidden (docs/performance.md, "Performance").
 enum class OcclusionCulling { Auto = 0, On = 1, Off = 2 };
 const char* occlusionCullingName(OcclusionCulling mode);
 bool parseOcclusionCulling(const std::string& text, OcclusionCulling* mode);
@@ -74,7 +75,8 @@ struct RenderSettings {
   FilterMode filter = FilterMode::Ewa;
   RenderMode mode = RenderMode::Composite;
   // Footprint cutoff r = dx^T Q dx. 5 with kernels 0.7 wide: the narrowest kernel whose lattice
-  // ripple stays under 1% (README, "Kernel width and post-classification"); the paper's 4 at 1.
+  // ripple stays under 1% (docs/rendering.md, "Kernel width and post-classification"); the paper's
+  // 4 at 1.
   double cutoff = 5.0;
   // Kernel standard deviation in voxel spacings per axis (kernelSigma), the mass per voxel
   // unchanged: narrower kernels blur less and cost fewer fragments (as width^2). 0.7: nearer a
@@ -85,14 +87,14 @@ struct RenderSettings {
   // as the paper does, and 0.5 post-classified, where it smooths the splatted field before the
   // transfer function (which no filter on the field band-limits): the narrowest variance whose
   // lattice of one-pixel footprints keeps its ripple under 1%, as the kernel width is chosen
-  // (README, "Low-pass filter").
+  // (docs/rendering.md, "Low-pass filter").
   double lowPass = 0.0;
   // Kernels' depth extent in squared standard deviations (at most the cutoff): each kernel's
   // depth profile is cut there (DepthProfile) and it is listed only in the slabs it reaches.
   // Infinite: uncut, listed to the cutoff, the first and last slab taking the tails. 1 (one
   // sigma) lists a kernel in 2 slabs of the default thickness instead of 3: frames 0.62-0.75x
-  // as long on llvmpipe, pictures within a few levels, nearer thin slabs' (README, "Depth
-  // profile").
+  // as long on llvmpipe, pictures within a few levels, nearer thin slabs' (docs/rendering.md,
+  // "Depth profile").
   double depthCutoff = 1.0;
   // In units of the smallest voxel spacing, at least 0.25. 2 by default: kernels split exactly
   // between slabs, so thinner slabs change the picture little (tests) and cost more draws.
@@ -118,14 +120,14 @@ struct RenderSettings {
   // Pre-integrated: each slab's values in depth samples a slab, 2 (its halves) or 4 (its
   // quarters: samples half a voxel apart at the default thickness, where the halves of slabs
   // one voxel thick come nearest a ray caster close up, for fewer draws than such slabs;
-  // README, "Depth samples a slab").
+  // docs/rendering.md, "Depth samples a slab").
   int slabSamples = 4;
   // Four samples a slab: each slab's kernels splatted once into both of its images (1), or once
   // into each (2): twice the vertex and fragment work for half the blending a pass, the same
   // picture to the bit. On an H200 two passes made engine's and CThead's frames at 1024^2 0.63x
-  // and 0.57x as long, bonsai's 1.16x (README, "On a GPU"); on llvmpipe, whose cost is the
-  // fragments, they cost more. 0 (auto): one pass where the GPU's timers are not used
-  // (software rasterizers); elsewhere the faster as timed frames find it (TwoWayTuner).
+  // and 0.57x as long, bonsai's 1.16x (docs/performance.md, "On a GPU"); on llvmpipe, whose cost is
+  // the fragments, they cost more. 0 (auto): one pass where the GPU's timers are not used (software
+  // rasterizers); elsewhere the faster as timed frames find it (TwoWayTuner).
   int slabPasses = 0;
   // Composite: slab images of half floats (RGBA16F) or floats. Auto: half floats for kernels
   // at most one spacing wide (the default's 0.7), floats for wider ones, which overlap so many
@@ -133,10 +135,10 @@ struct RenderSettings {
   // medium's opacity 1-4% low at width 1.6), and floats for shaded post-classification with
   // field or voxel normals, whose normals are differences or sums in the slabs (half floats'
   // rounding in field normals moved shaded pixels by up to 7 levels; ray normals, read from the
-  // gradient texture, move them by at most 3). Otherwise within a few levels of the floats' pictures
-  // (README, "Slab image precision"), while blending half the bytes made frames 2.2-2.6x as
-  // fast on a GPU. X-ray and MIP, whose one image sums or takes the maximum over the whole
-  // volume, always use floats.
+  // gradient texture, move them by at most 3). Otherwise within a few levels of the floats'
+  // pictures (docs/performance.md, "Slab image precision"), while blending half the bytes made
+  // frames 2.2-2.6x as fast on a GPU. X-ray and MIP, whose one image sums or takes the maximum over
+  // the whole volume, always use floats.
   SlabPrecision slabPrecision = SlabPrecision::Auto;
   // Post-classified and shaded: each ray segment's normal is the data's gradient read along the
   // pixel's ray at the segment's middle from a 3D texture (Ray, as a ray caster shades; 4
@@ -144,14 +146,15 @@ struct RenderSettings {
   // (Field, pre-integrated only: screen-space differences of the slab's values, the difference
   // of its two halves in depth), or the splats' voxel normals summed in a second image (Voxel;
   // also Field without pre-integration, which has no depth difference). Field and Voxel show
-  // the slab period as stripes on smooth surfaces seen obliquely (README, "Ray normals").
+  // the slab period as stripes on smooth surfaces seen obliquely (docs/rendering.md, "Ray
+  // normals").
   PostNormals postNormals = PostNormals::Ray;
   Splatter splatter = Splatter::Auto;  // whole composite frames in compute tiles or not
   // Composite: each slab is splatted into an image as coarse as its kernels allow (up to 4
   // pixels a texel a side where every footprint is at least 2 texels wide, so near the eye in
   // magnified views; slab_image_scale.h) and read back bilinearly, classified per pixel; the
-  // picture stays within a level or two (README, "Slab image scale"). False: every slab at the
-  // picture's resolution.
+  // picture stays within a level or two (docs/rendering.md, "Slab image scale"). False: every slab
+  // at the picture's resolution.
   bool coarseSlabs = true;
   double surfaceOpacity = 0.95;  // opacity of the surface-splat layer seen along its normal
   ShearWarpSettings shearWarp;   // read by the shear-warp renderer only
@@ -161,8 +164,8 @@ struct RenderSettings {
 // The close-up setting, which is also the default: post-classified and pre-integrated between
 // slabs, kernels 0.7 spacings wide at cutoff 5 (the narrowest whose lattice ripple stays under
 // 1% at any width above it). Measured nearest to a ray caster close up, and cheaper than the
-// paper's setting (README, "Narrower kernels and a thinner margin"). Restores those settings
-// over others; surface splats go (post-classification draws none).
+// paper's setting (docs/rendering.md, "Narrower kernels and a thinner margin"). Restores those
+// settings over others; surface splats go (post-classification draws none).
 void applyCloseUpSettings(RenderSettings* settings);
 
 // The footprint parameters every splat of a volume with this spacing gets under `settings`:

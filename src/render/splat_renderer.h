@@ -35,7 +35,7 @@
 namespace ewa {
 
 // Where the per-frame slab partition is built: GPU compute passes (gpu_slab_partition.h) or the
-// CPU (SlabPartition, plus the order list's upload). Auto: measured faster (README,
+// CPU (SlabPartition, plus the order list's upload). Auto: measured faster (docs/performance.md,
 // "Performance"): the CPU on software rasterizers (llvmpipe, softpipe), the GPU elsewhere.
 enum class PartitionMode { Auto = 0, Gpu = 1, Cpu = 2 };
 const char* partitionModeName(PartitionMode mode);
@@ -145,8 +145,8 @@ class SplatRenderer : public Renderer {
   // profile misses its half of the slab (on by default; the picture is the same either way).
   void setPassHalfCulling(bool on) { passHalfCulling_ = on; }
   // Splatter auto draws in tiles only up to this many splats: their records, lists and images
-  // take about 250 GPU bytes a splat against the rasterizer's 16-30 (README, "Compute EWA
-  // splatting"), 2 GB at this count; bigger volumes keep the rasterizer's memory.
+  // take about 250 GPU bytes a splat against the rasterizer's 16-30 (docs/performance.md, "Compute
+  // EWA splatting"), 2 GB at this count; bigger volumes keep the rasterizer's memory.
   static constexpr size_t kAutoTileSplats = 8'000'000;
   // Test hook: another limit than kAutoTileSplats.
   void setAutoTileSplats(size_t splats) { autoTileSplats_ = splats; }

@@ -51,7 +51,7 @@ class ProgressiveRefinement {
   // The frame was presented (any frame: the interval counts from it).
   void notePresented() { lastPresent_ = Clock::now(); }
   // Four times a second: at 100 ms the presents took 4-7% of the default volume's time to full
-  // quality (README, "Progressive refinement").
+  // quality (docs/performance.md, "Progressive refinement").
   static constexpr double kPresentIntervalMs = 250.0;
 
  private:

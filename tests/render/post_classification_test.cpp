@@ -153,7 +153,7 @@ TEST_F(PostClassification, PrefilterAndQuartersBringAThinRodNearerARayCaster) {
   // 8, 6, 4; halves without the prefilter 12, 8, 5, 2, 0, with it at 0.05 12, 8, 6, 2, 0;
   // quarters without it 12, 10, 6, 4, 2, at the default 0.04 12, 10, 8, 4, 2, at 0.15 12, 10,
   // 10, 6, 2, at 0.3 14, 10, 12, 8, 4 (the default was chosen on real volumes' SSIM against a
-  // ray caster, not on this rod: README "Value prefilter"). With a margin of the face
+  // ray caster, not on this rod: docs/rendering.md "Value prefilter"). With a margin of the face
   // neighbours only (whole voxels of reach, before the margin took every voxel within it),
   // halves without the prefilter were 3 columns wider at 130 and 2 at 150.
   constexpr double kStrength = 0.05;  // the mechanism, at the strength it shows on this rod

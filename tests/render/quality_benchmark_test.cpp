@@ -106,7 +106,7 @@ TEST_F(QualityBenchmark, PlainFlickersAndErrsBeyondKMoreThanEwa) {
 // sheet translucent (0.3 per voxel), so that compositing order matters little: against the
 // ray-integrated reference, gain 1.38 (ewa) and 1.30 (swan), RMSE 0.062 and 0.070. At the
 // sheet's own opacity (0.98) occlusion dominates and Swan's gain comes out above EWA's (1.18
-// against 1.00): see README, Quality.
+// against 1.00): see docs/quality.md.
 TEST_F(QualityBenchmark, SwanBlursAnisotropicKernelsMoreThanEwa) {
   const SyntheticVolume v = makeSyntheticVolume("zebra:4");
   QualityOptions o = smallOptions(0);

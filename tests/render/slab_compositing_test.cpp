@@ -187,7 +187,8 @@ TEST_F(SlabCompositing, SamePictureForSlabThicknessesHalfOneAndTwoVoxels) {
   renderer()->setVolume(vol);
   renderer()->setTransferFunction(blobTf());
   // Post-classified, a slab's mean value is taken over its thickness, so thinner slabs classify
-  // a less averaged value: a looser, documented tolerance (README, "Post-classification").
+  // a less averaged value: a looser, documented tolerance (docs/rendering.md,
+  // "Post-classification").
   struct Case {
     double width;
     ClassificationMode mode;

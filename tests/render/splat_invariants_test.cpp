@@ -331,8 +331,8 @@ TEST_F(SplatInvariants, GpuBytesCountTheBuffersAndImagesAllocated) {
   EXPECT_EQ(renderer()->stats().gpuBytes, single);
 }
 
-// Auto takes half-float slab images only where they keep the pictures (README, "Slab image
-// precision"): narrow kernels, not shaded post-classification with field or voxel normals
+// Auto takes half-float slab images only where they keep the pictures (docs/performance.md, "Slab
+// image precision"): narrow kernels, not shaded post-classification with field or voxel normals
 // (differences or sums in the slabs), never X-ray or MIP; half and float are taken as asked in the
 // composite mode.
 TEST(SlabPrecision, AutoTakesHalfFloatsOnlyWhereTheyHold) {

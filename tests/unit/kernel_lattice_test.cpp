@@ -1,10 +1,10 @@
 // The ripple of a lattice of windowed kernels as a function of kernel width and cutoff: the
-// measurement behind --kernel-width's range and default (README, "Kernel width").
+// measurement behind --kernel-width's range and default (docs/rendering.md, "Kernel width").
 #include "core/kernel_lattice.h"
 
-#include "core/ewa_footprint.h"
-
 #include <gtest/gtest.h>
+
+#include "core/ewa_footprint.h"
 
 namespace ewa {
 namespace {
