@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,10 @@ struct Methods {
   TileSplatBaseline& tiles;
   TileEwaSplatter& tileEwa;
   Renderer& shearWarp;
+  // Methods --skip leaves out (their columns stay '-'): the compute tiles take seconds a frame
+  // on a software rasterizer, the default post-classified frame in tiles tens of seconds.
+  std::set<std::string> skip;
+  bool timed(const char* method) const { return skip.count(method) == 0; }
 };
 
 // Times EWA, sprites and shear-warp on one view: a warm-up frame each, then `repeats` rounds
@@ -84,10 +89,17 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
                        int size, int repeats, CompareRow& row) {
   m.ewa.render(cam, rs, size, size);  // warm-up: classification and upload, not timed
   glFinish();
-  m.sprites.setSprites(spriteSizes(m.ewa, scene.volume, cam, rs, size, size));
-  m.sprites.draw(size, size, halfFloatSlabs(rs));
-  m.tiles.setFootprints(tileFootprints(m.ewa, scene.volume, cam, rs, size, size), float(rs.cutoff));
-  m.tiles.draw(size, size, halfFloatSlabs(rs));
+  const bool sprites = m.timed("sprites"), tiles = m.timed("tiles"),
+             shearWarp = m.timed("shearwarp");
+  if (sprites) {
+    m.sprites.setSprites(spriteSizes(m.ewa, scene.volume, cam, rs, size, size));
+    m.sprites.draw(size, size, halfFloatSlabs(rs));
+  }
+  if (tiles) {
+    m.tiles.setFootprints(tileFootprints(m.ewa, scene.volume, cam, rs, size, size),
+                          float(rs.cutoff));
+    m.tiles.draw(size, size, halfFloatSlabs(rs));
+  }
   // The compute EWA splatter draws front-to-back frames, pre-classified or post-classified as the
   // default (SplatRenderer::tileComposite), from 64 bytes a splat: up to 8 M splats (a 512^3
   // volume's 74 M would take 4.7 GB twice over). It draws the renderer's last frame as the
@@ -95,8 +107,8 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   // lists binned where the GPU built them (their making is in partition_ms), else the CPU
   // partition's uploaded; its records made on the GPU; the classification's state set.
   bool post = false, shading = false;
-  const bool tileEwa =
-      m.ewa.tileComposite(post, shading) && m.ewa.splats().size() <= size_t(8'000'000);
+  const bool tileEwa = m.timed("tile-ewa") && m.ewa.tileComposite(post, shading) &&
+                       m.ewa.splats().size() <= size_t(8'000'000);
   const auto tileEwaDraw = [&] {
     const auto start = BenchClock::now();
     m.ewa.loadTiles(m.tileEwa);
@@ -106,8 +118,9 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   if (tileEwa) tileEwaDraw();  // warm-up: the programs' first use
   RenderSettings sw = rs;
   sw.renderer = RendererKind::ShearWarp;
-  m.shearWarp.render(cam, sw, size, size);
-  std::vector<double> ewa, partition, splat, final, sprites, tiles, tileBins, tileEwaMs, shearWarp;
+  if (shearWarp) m.shearWarp.render(cam, sw, size, size);
+  std::vector<double> ewa, partition, splat, final, spriteMs, tileMs, tileBins, tileEwaMs,
+      shearWarpMs;
   for (int r = 0; r < repeats; ++r) {
     auto start = BenchClock::now();
     m.ewa.render(cam, rs, size, size);
@@ -117,15 +130,19 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
     partition.push_back(s.partitionMs);
     splat.push_back(s.splatMs);
     final.push_back(s.compositeMs);
-    sprites.push_back(m.sprites.draw(size, size, halfFloatSlabs(rs)));
-    const TileSplatBaseline::Timing t = m.tiles.draw(size, size, halfFloatSlabs(rs));
-    tiles.push_back(t.totalMs());
-    tileBins.push_back(t.binMs);
+    if (sprites) spriteMs.push_back(m.sprites.draw(size, size, halfFloatSlabs(rs)));
+    if (tiles) {
+      const TileSplatBaseline::Timing t = m.tiles.draw(size, size, halfFloatSlabs(rs));
+      tileMs.push_back(t.totalMs());
+      tileBins.push_back(t.binMs);
+    }
     if (tileEwa) tileEwaMs.push_back(tileEwaDraw());
-    start = BenchClock::now();
-    m.shearWarp.render(cam, sw, size, size);
-    glFinish();
-    shearWarp.push_back(millisecondsSince(start));
+    if (shearWarp) {
+      start = BenchClock::now();
+      m.shearWarp.render(cam, sw, size, size);
+      glFinish();
+      shearWarpMs.push_back(millisecondsSince(start));
+    }
   }
   const RenderStats s = m.ewa.stats();
   row.splats = s.splatsTotal;
@@ -140,11 +157,13 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   row.partitionMs = summarize(partition).median;
   row.splatMs = summarize(splat).median;
   row.finalMs = summarize(final).median;
-  row.spritesMs = summarize(sprites).median;
-  row.tilesMs = summarize(tiles).median;
-  row.tilesBinMs = summarize(tileBins).median;
+  if (sprites) row.spritesMs = summarize(spriteMs).median;
+  if (tiles) {
+    row.tilesMs = summarize(tileMs).median;
+    row.tilesBinMs = summarize(tileBins).median;
+  }
   if (tileEwa) row.tileEwaMs = summarize(tileEwaMs).median;
-  row.shearWarpMs = summarize(shearWarp).median;
+  if (shearWarp) row.shearWarpMs = summarize(shearWarpMs).median;
 }
 
 int run(int argc, char** argv) {
@@ -181,6 +200,12 @@ int run(int argc, char** argv) {
   app.add_option("--images", imagesDir,
                  "Save each method's picture as DIR/VOLUME_SIZE_METHOD.png, to compare by eye");
   app.add_flag("--no-vtk", noVtk, "Do not time VTK's ray casters");
+  std::vector<std::string> skip;
+  app.add_option("--skip", skip,
+                 "Methods not to time, their columns left '-': sprites, tiles (tiles_ms), "
+                 "tile-ewa (tile_ewa_ms), shearwarp")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"sprites", "tiles", "tile-ewa", "shearwarp"}));
   app.add_option("--vtk-script", script, "Path of vtk_raycast_bench.py");
   app.add_flag("--orthographic", orthographic, "Parallel projection (default: perspective)");
   app.add_option("--kernel-width", settings.kernelWidth,
@@ -336,8 +361,8 @@ int run(int argc, char** argv) {
       row.dims = dimsText(scene.volume);
       row.size = size;
       try {
-        timeOpenGlMethods({ewa, sprites, tiles, tileEwa, *shearWarp}, scene, cam, rs, size, repeats,
-                          row);
+        timeOpenGlMethods({ewa, sprites, tiles, tileEwa, *shearWarp, {skip.begin(), skip.end()}},
+                          scene, cam, rs, size, repeats, row);
       } catch (const std::exception& e) {
         // Too big for this GL (the splat buffer's limit): the other volumes still run.
         const std::string note =
@@ -354,7 +379,7 @@ int run(int argc, char** argv) {
           imagesDir + "/" + fileName(in.name) + "_" + std::to_string(size) + "_";
       if (!imagesDir.empty()) {
         writePng(stem + "ewa.png", ewa.readImage());
-        writePng(stem + "shearwarp.png", shearWarp->readImage());
+        if (row.shearWarpMs >= 0) writePng(stem + "shearwarp.png", shearWarp->readImage());
         if (row.tileEwaMs >= 0)
           writePng(stem + "tile-ewa.png",
                    tileEwaImage(tileEwa.picture(), size, size, rs.background));

@@ -126,6 +126,23 @@ TEST(CompareCli, ImagesAreWrittenForEachMethod) {
   }
 }
 
+TEST(CompareCli, SkippedMethodsLeaveTheirColumnsEmpty) {
+  const CliRun r = compare(std::string(kTiny) + " --skip tiles,tile-ewa,shearwarp --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json row = json::parse(r.out)["rows"][0];
+  for (const char* key : {"tiles_ms", "tile_bin_ms", "tile_ewa_ms", "shearwarp_ms"})
+    EXPECT_TRUE(row[key].is_null()) << key << " " << row[key];
+  for (const char* key : {"ewa_ms", "sprites_ms", "ewa_per_sprites"})
+    EXPECT_GT(row[key].get<double>(), 0.0) << key;
+  const CliRun s = compare(std::string(kTiny) + " --skip sprites --json");
+  ASSERT_EQ(s.code, 0) << s.err;
+  const json other = json::parse(s.out)["rows"][0];
+  EXPECT_TRUE(other["sprites_ms"].is_null());
+  EXPECT_TRUE(other["ewa_per_sprites"].is_null());
+  EXPECT_GT(other["tiles_ms"].get<double>(), 0.0);
+  EXPECT_GT(other["shearwarp_ms"].get<double>(), 0.0);
+}
+
 TEST(CompareCli, MissingSharedDataIsSkippedWithANote) {
   const CliRun r = compare("--no-vtk --data /nonexistent --volumes engine --sizes 32 --json");
   ASSERT_EQ(r.code, 0) << r.err;
@@ -139,7 +156,7 @@ TEST(CompareCli, MissingSharedDataIsSkippedWithANote) {
 TEST(CompareCli, BadOptionsFailWithOneLine) {
   for (const char* args :
        {"--sizes 0", "--volumes teapot", "--repeats 0", "--csv --json", "--kernel-width 5",
-        "--classification sideways", "--partition disk", "--tile-size 12"}) {
+        "--classification sideways", "--partition disk", "--tile-size 12", "--skip ewa"}) {
     const CliRun r = compare(args);
     EXPECT_NE(r.code, 0) << args;
     EXPECT_GE(lineCount(r.err), 1) << args;
