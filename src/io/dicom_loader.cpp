@@ -32,6 +32,17 @@ const DicomSeries& pickSeries(const std::string& path, const std::vector<DicomSe
   failLoad(path, "no series " + quoteText(uid, 80) + " here (series: " + known + ")");
 }
 
+// Warnings for the files a scan left out as corrupt: the first few named, then a count, so a
+// folder of broken files does not print a line each.
+void noteUnreadable(const std::vector<std::string>& unreadable, std::vector<std::string>& notes) {
+  constexpr size_t kNamed = 3;
+  for (size_t i = 0; i < unreadable.size() && i < kNamed; ++i)
+    notes.push_back("warning: skipped " + unreadable[i]);
+  if (unreadable.size() > kNamed)
+    notes.push_back("warning: skipped " + std::to_string(unreadable.size() - kNamed) +
+                    " more corrupt or truncated files");
+}
+
 // The folder of `file` relative to `root` (where a series lies in a CD's tree).
 std::string relativeFolder(const std::string& file, const std::string& root) {
   const std::filesystem::path rel =
@@ -55,10 +66,17 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid) {
              "not a DICOM file (no 'DICM' at byte 128; files without the Part 10 preamble "
              "are not read)");
   std::string fileSeries;
-  std::vector<DicomSeries> all = scanDicomFolder(dir, folder ? std::string() : path, &fileSeries);
+  std::vector<std::string> unreadable;
+  std::vector<DicomSeries> all =
+      scanDicomFolder(dir, folder ? std::string() : path, &fileSeries, false, &unreadable);
   // No image in the folder itself: the images of the folders below it (a CD's tree).
-  const bool below = folder && all.empty();
-  if (below) all = scanDicomFolder(dir, std::string(), nullptr, true);
+  const bool below = folder && all.empty() && unreadable.empty();
+  if (below) all = scanDicomFolder(dir, std::string(), nullptr, true, &unreadable);
+  if (all.empty() && !unreadable.empty())
+    failLoad(path, "no readable DICOM image: " + unreadable.front() +
+                       (unreadable.size() > 1
+                            ? " (and " + std::to_string(unreadable.size() - 1) + " more)"
+                            : ""));
   if (all.empty())
     failLoad(path, folder ? "a directory with no DICOM image or TIFF file, in it or below it"
                           : "not a DICOM image");
@@ -68,6 +86,7 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid) {
 
   VolumeLayout layout;
   layout.patientFrame = true;
+  noteUnreadable(unreadable, layout.notes);
   if (all.size() > 1 || below)  // below: where the series lies, even alone
     for (const DicomSeries& s : all)
       layout.notes.push_back(

@@ -39,17 +39,27 @@ int64_t integer(const char* text) {
 }
 
 // The regular files of `folder` (with `below`, of its subfolders too, within kDicomMaxDepth and
-// kDicomMaxEntries) whose element structure may go to GDCM, sorted by path.
-std::vector<std::string> dicomCandidates(const std::string& folder, bool below) {
+// kDicomMaxEntries) whose element structure may go to GDCM, sorted by path. A corrupt or cut
+// short file is left out and its one-line problem added to `unreadable`, unless it is
+// `namedFile`, whose problem is the load's.
+std::vector<std::string> dicomCandidates(const std::string& folder, bool below,
+                                         const std::string& namedFile,
+                                         std::vector<std::string>& unreadable) {
   namespace fs = std::filesystem;
   std::vector<std::string> files;
   std::error_code ec;
-  const auto consider = [&files](const fs::directory_entry& entry) {
+  const auto consider = [&](const fs::directory_entry& entry) {
     std::error_code statError;  // a dangling link is skipped, not the listing's failure
-    // GDCM sizes buffers by element lengths: only files whose lengths fit reach it.
-    if (entry.is_regular_file(statError) &&
-        checkDicomStructure(entry.path().string()) == DicomStructure::Plausible)
-      files.push_back(entry.path().string());
+    if (!entry.is_regular_file(statError)) return;
+    const std::string file = entry.path().string();
+    try {
+      // GDCM sizes buffers by element lengths: only files whose lengths fit reach it.
+      if (checkDicomStructure(file) == DicomStructure::Plausible) files.push_back(file);
+    } catch (const LoadError& e) {
+      std::error_code same;
+      if (!namedFile.empty() && fs::equivalent(file, namedFile, same)) throw;
+      unreadable.push_back(e.what());
+    }
   };
   if (below) {
     size_t entries = 0;
@@ -84,12 +94,15 @@ std::vector<double> dicomNumbers(const char* text) {
 }
 
 std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::string& namedFile,
-                                         std::string* fileSeries, bool below) {
+                                         std::string* fileSeries, bool below,
+                                         std::vector<std::string>* unreadable) {
   // GDCM reports on stderr by default; our errors are one line each, from us.
   gdcm::Trace::WarningOff();
   gdcm::Trace::ErrorOff();
   gdcm::Trace::DebugOff();
-  const std::vector<std::string> files = dicomCandidates(folder, below);
+  std::vector<std::string> problems;
+  const std::vector<std::string> files = dicomCandidates(folder, below, namedFile, problems);
+  if (unreadable) *unreadable = std::move(problems);
   std::error_code ec;
 
   gdcm::Scanner scanner;

@@ -35,10 +35,13 @@ struct DicomSeries {
 // Reads the headers of the regular files in `folder` (with `below`, in its subfolders too, as a
 // CD's DICOMDIR tree holds them: not through links to folders, at most kDicomMaxDepth levels
 // down and kDicomMaxEntries entries, else LoadError) and groups the images (files with Rows and
-// Columns) by SeriesInstanceUID, largest series first. Files that are not DICOM are skipped.
+// Columns) by SeriesInstanceUID, largest series first. Files that are not DICOM are skipped;
+// so are corrupt or cut short ones (a stray broken copy beside a series), each one's problem
+// added to `unreadable` as `path: problem`, but for `namedFile`, whose problem throws.
 // `fileSeries` gets the series of `namedFile` when that is one of them.
 std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::string& namedFile,
-                                         std::string* fileSeries, bool below = false);
+                                         std::string* fileSeries, bool below = false,
+                                         std::vector<std::string>* unreadable = nullptr);
 constexpr int kDicomMaxDepth = 8;
 constexpr size_t kDicomMaxEntries = 100000;
 

@@ -357,10 +357,11 @@ TEST(DicomFiles, BadSeriesFailWithOneLine) {
   const std::string twice = dicomSeries(dir, "twice", 3);
   std::filesystem::copy_file(twice + "/im0.dcm", twice + "/copy.dcm");
   expectVolumeLoadError(twice, "share one position");
-  // Truncated pixel data.
+  // Truncated pixel data in the file named (a folder skips it: below).
   const std::string cut = dicomSeries(dir, "cut", 3);
   std::filesystem::resize_file(cut + "/im1.dcm", std::filesystem::file_size(cut + "/im1.dcm") - 9);
-  expectLoadError([&] { loadVolume(cut); }, cut, "im1.dcm: ");
+  expectLoadError([&] { loadVolume(cut + "/im1.dcm"); }, cut + "/im1.dcm",
+                  "corrupt or truncated DICOM data");
   // Rows and Columns that claim far more pixels than the file holds: refused before any buffer.
   const std::string liar = dicomSeries(dir, "liar", 1);
   {
@@ -379,6 +380,61 @@ TEST(DicomFiles, BadSeriesFailWithOneLine) {
   expectLoadError([&] { loadVolume(liar); }, liar, "cannot hold a 40000 x 40000 image");
   // A file that is not DICOM but says .dcm.
   expectVolumeLoadError(dir.write("fake.dcm", std::string(200, 'x')), "not a DICOM file");
+}
+
+// A broken file beside a series (an interrupted copy, a truncated download) does not stop the
+// series from opening: it is left out with a warning naming it, as viewers do.
+TEST(DicomFiles, CorruptFilesBesideASeriesAreSkippedWithAWarning) {
+  TempDir dir;
+  const auto cutCopy = [](const std::string& from, const std::string& to, uintmax_t keep) {
+    std::filesystem::copy_file(from, to);
+    std::filesystem::resize_file(to, keep);
+  };
+  const auto noteWith = [](const Volume& v, const std::string& text) {
+    return std::count_if(v.notes().begin(), v.notes().end(), [&](const std::string& n) {
+      return n.rfind("warning: ", 0) == 0 && n.find(text) != std::string::npos;
+    });
+  };
+  // A cut short copy of a slice: the series is whole without it.
+  const std::string series = dicomSeries(dir, "copy", 5);
+  const Volume whole = loadVolume(series);
+  const uintmax_t size = std::filesystem::file_size(series + "/im2.dcm");
+  cutCopy(series + "/im2.dcm", series + "/im2 (copy).dcm", size - 9);
+  const Volume v = loadVolume(series);
+  EXPECT_EQ(v.bytes(), whole.bytes());
+  EXPECT_EQ(v.spacing(), whole.spacing());
+  EXPECT_EQ(noteWith(v, "skipped " + series + "/im2 (copy).dcm: corrupt or truncated"), 1)
+      << ::testing::PrintToString(v.notes());
+  // Opening another file of the series skips it too; naming the broken one fails on it.
+  EXPECT_EQ(loadVolume(series + "/im0.dcm").bytes(), whole.bytes());
+  expectLoadError([&] { loadVolume(series + "/im2 (copy).dcm"); }, series + "/im2 (copy).dcm",
+                  "corrupt or truncated DICOM data");
+  // A broken slice of the series itself: the rest opens, the gap it leaves is warned about.
+  const std::string holed = dicomSeries(dir, "holed", 5);
+  for (int n = 0; n < 5; ++n) {  // the file at z = 4, the middle
+    const std::string file = holed + "/im" + std::to_string(n) + ".dcm";
+    if ((n * 7) % 5 == 2) std::filesystem::resize_file(file, std::filesystem::file_size(file) - 9);
+  }
+  const Volume four = loadVolume(holed);
+  EXPECT_EQ(four.dims()[2], 4);
+  EXPECT_EQ(noteWith(four, "corrupt or truncated"), 1) << ::testing::PrintToString(four.notes());
+  EXPECT_EQ(noteWith(four, "missing slices"), 1) << ::testing::PrintToString(four.notes());
+  // Many broken files: three named, then a count, not a line each.
+  const std::string many = dicomSeries(dir, "many", 3);
+  for (int n = 0; n < 6; ++n)
+    cutCopy(many + "/im0.dcm", many + "/broken" + std::to_string(n) + ".dcm", size / 2);
+  const Volume three = loadVolume(many);
+  EXPECT_EQ(three.dims()[2], 3);
+  EXPECT_EQ(noteWith(three, "corrupt or truncated DICOM data"), 3);
+  EXPECT_EQ(noteWith(three, "skipped 3 more corrupt or truncated files"), 1)
+      << ::testing::PrintToString(three.notes());
+  // Nothing readable at all: one line naming the first broken file.
+  std::filesystem::create_directories(dir.path("none"));
+  for (int n = 0; n < 2; ++n)
+    cutCopy(many + "/im0.dcm", dir.path("none/b" + std::to_string(n) + ".dcm"), size / 2);
+  expectLoadError(
+      [&] { loadVolume(dir.path("none")); }, dir.path("none"),
+      "no readable DICOM image: " + dir.path("none/b0.dcm") + ": corrupt or truncated DICOM data");
 }
 
 TEST(DicomFiles, MissingSliceWarns) {
