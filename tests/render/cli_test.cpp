@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "ci_skip.h"
@@ -29,6 +30,31 @@ TEST(Cli, VersionAndHelpExitZero) {
         "--camera-view-angle", "--camera-orthographic", "--filter", "--cutoff", "--slab-thickness",
         "--tf", "--background", "--backend", "--info", "--synthetic", "--raw-dims"})
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt << " missing from --help";
+}
+
+// The README's options table lists what exists: every option --help prints is in it, written
+// as `--name` (a new option without a line there fails here).
+TEST(Cli, EveryOptionOfHelpIsInTheReadme) {
+  const CliRun r = ewaview("--help");
+  ASSERT_EQ(r.code, 0);
+  std::ifstream in(std::string(EWA_TEST_DIR) + "/../README.md");
+  ASSERT_TRUE(in) << "README.md not found beside tests/";
+  const std::string readme((std::istreambuf_iterator<char>(in)), {});
+  std::istringstream lines(r.out);
+  int options = 0;
+  for (std::string line; std::getline(lines, line);) {
+    // CLI11 prints an option as "  --name TYPE  description" (or "  -o,--name ...").
+    const size_t dashes = line.find("--");
+    if (line.rfind("  ", 0) != 0 || dashes == std::string::npos ||
+        line.find_first_not_of(" -ho,") < dashes)
+      continue;
+    const size_t end = line.find_first_of(" =", dashes);
+    const std::string name = line.substr(dashes, end - dashes);
+    if (name == "--help") continue;
+    ++options;
+    EXPECT_NE(readme.find("`" + name), std::string::npos) << name << " is not in the README";
+  }
+  EXPECT_GT(options, 40) << r.out;
 }
 
 TEST(Cli, UsageErrorsExitTwo) {
