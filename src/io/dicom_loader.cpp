@@ -69,8 +69,9 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid) {
   std::vector<std::string> unreadable;
   std::vector<DicomSeries> all =
       scanDicomFolder(dir, folder ? std::string() : path, &fileSeries, false, &unreadable);
-  // No image in the folder itself: the images of the folders below it (a CD's tree).
-  const bool below = folder && all.empty() && unreadable.empty();
+  // No image in the folder itself: the images of the folders below it (a CD's tree; its
+  // list of broken files, the folder's own among them, replaces the folder's).
+  const bool below = folder && all.empty();
   if (below) all = scanDicomFolder(dir, std::string(), nullptr, true, &unreadable);
   if (all.empty() && !unreadable.empty())
     failLoad(path, "no readable DICOM image: " + unreadable.front() +

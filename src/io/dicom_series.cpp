@@ -77,6 +77,7 @@ std::vector<std::string> dicomCandidates(const std::string& folder, bool below,
   }
   if (ec) failLoad(folder, "cannot list the folder (" + ec.message() + ")");
   std::sort(files.begin(), files.end());
+  std::sort(unreadable.begin(), unreadable.end());  // "path: problem": by path
   return files;
 }
 

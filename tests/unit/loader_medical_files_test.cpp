@@ -428,10 +428,17 @@ TEST(DicomFiles, CorruptFilesBesideASeriesAreSkippedWithAWarning) {
   EXPECT_EQ(noteWith(three, "corrupt or truncated DICOM data"), 3);
   EXPECT_EQ(noteWith(three, "skipped 3 more corrupt or truncated files"), 1)
       << ::testing::PrintToString(three.notes());
+  // A CD's tree with a broken file at its top: the series below still opens.
+  const std::string inCd = dicomSeries(dir, "cd/series", 3);
+  cutCopy(inCd + "/im0.dcm", dir.path("cd/stray.dcm"), size / 2);
+  const Volume cd = loadVolume(dir.path("cd"));
+  EXPECT_EQ(cd.dims()[2], 3);
+  EXPECT_EQ(noteWith(cd, "skipped " + dir.path("cd/stray.dcm")), 1)
+      << ::testing::PrintToString(cd.notes());
   // Nothing readable at all: one line naming the first broken file.
   std::filesystem::create_directories(dir.path("none"));
   for (int n = 0; n < 2; ++n)
-    cutCopy(many + "/im0.dcm", dir.path("none/b" + std::to_string(n) + ".dcm"), size / 2);
+    cutCopy(inCd + "/im0.dcm", dir.path("none/b" + std::to_string(n) + ".dcm"), size / 2);
   expectLoadError(
       [&] { loadVolume(dir.path("none")); }, dir.path("none"),
       "no readable DICOM image: " + dir.path("none/b0.dcm") + ": corrupt or truncated DICOM data");
