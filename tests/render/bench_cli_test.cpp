@@ -129,14 +129,18 @@ TEST(CompareCli, ImagesAreWrittenForEachMethod) {
 TEST(CompareCli, SkippedMethodsLeaveTheirColumnsEmpty) {
   const CliRun r = compare(std::string(kTiny) + " --skip tiles,tile-ewa,shearwarp --json");
   ASSERT_EQ(r.code, 0) << r.err;
-  const json row = json::parse(r.out)["rows"][0];
+  const json doc = json::parse(r.out);
+  EXPECT_EQ(doc["notes"].size(), 0u) << r.out;  // no note on a shear-warp not drawn
+  const json row = doc["rows"][0];
   for (const char* key : {"tiles_ms", "tile_bin_ms", "tile_ewa_ms", "shearwarp_ms"})
     EXPECT_TRUE(row[key].is_null()) << key << " " << row[key];
   for (const char* key : {"ewa_ms", "sprites_ms", "ewa_per_sprites"})
     EXPECT_GT(row[key].get<double>(), 0.0) << key;
   const CliRun s = compare(std::string(kTiny) + " --skip sprites --json");
   ASSERT_EQ(s.code, 0) << s.err;
-  const json other = json::parse(s.out)["rows"][0];
+  const json otherDoc = json::parse(s.out);
+  EXPECT_EQ(otherDoc["notes"].size(), 1u) << s.out;  // shear-warp's projection
+  const json other = otherDoc["rows"][0];
   EXPECT_TRUE(other["sprites_ms"].is_null());
   EXPECT_TRUE(other["ewa_per_sprites"].is_null());
   EXPECT_GT(other["tiles_ms"].get<double>(), 0.0);
