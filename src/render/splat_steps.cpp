@@ -1,0 +1,249 @@
+// SplatRenderer's budgeted steps: slabs drawn in timed chunks sized by a measured cost per
+// splat entry (the window's refinement), and the whole-volume passes (X-ray, MIP).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <future>
+
+#include "core/stopwatch.h"
+#include "render/splat_renderer.h"
+
+namespace ewa {
+
+bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
+  // Cost model, measured per chunk: msPerEntry_ per splat entry drawn and msPerSlabEnd_ per
+  // slab finished (clear, blend under the image, termination check: passes over the whole
+  // image). A chunk holds whole slabs while they fit; a slab too costly for the time left is
+  // drawn in ranges of entries over several steps (its sums are order-independent, so the
+  // picture is the same).
+  // Entries drawn before anything is measured, and the fewest a range holds; both fewer where
+  // the largest footprints are huge (a small volume filling the window: a few of its splats
+  // cost as much as thousands of an ordinary view's).
+  constexpr double kFirstFragments = 2.0e6;
+  const size_t kFirstChunk =
+      size_t(std::clamp(kFirstFragments / frame_.fragmentsPerEntry, 1.0, 2048.0));
+  const size_t kMinRange = std::min<size_t>(512, kFirstChunk);
+  constexpr size_t kFirstSlabEnds = 4;  // slabs finished before anything is measured
+  const size_t n = frame_.slabs.size();
+  const bool unlimited = !std::isfinite(budgetMs);
+  const auto finished = [&] { return frame_.nextSlab >= n || frame_.terminated; };
+  setSlabLoopState();
+  while (!finished()) {
+    // Milliseconds this chunk may take, and what it is expected to take so far.
+    const double allowed = unlimited ? budgetMs : budgetMs - millisecondsSince(start);
+    const bool measured = msPerEntry_ > 0.0;
+    const auto chunkStart = Clock::now();
+    size_t entries = 0, ends = 0;
+    double expected = 0.0;
+    while (!finished() && (entries + ends == 0 || expected < allowed)) {
+      const size_t s = frame_.nextSlab;
+      const size_t count = slabInOrder(s).count;
+      const double wholeMs = msPerEntry_ * double(count) + msPerSlabEnd_;
+      if (frame_.nextEntry == 0 &&
+          (unlimited || (measured && expected + wholeMs <= allowed) ||
+           (!measured && entries + count <= kFirstChunk && ends < kFirstSlabEnds))) {
+        drawCompositeSlab(s);
+        entries += count;
+        ++ends;
+        expected += wholeMs;
+        frame_.drawnWeight += double(count) + frame_.meanEntries;
+        ++frame_.nextSlab;
+        continue;
+      }
+      if (frame_.nextEntry == 0) beginCompositeSlab(s);
+      const double left = double(count - frame_.nextEntry);
+      const double fit =
+          measured ? (allowed - expected) / msPerEntry_ : double(kFirstChunk - entries);
+      const size_t take = size_t(std::clamp(fit, std::min(double(kMinRange), left), left));
+      drawSlabRange(s, frame_.nextEntry, take);
+      frame_.nextEntry += take;
+      entries += take;
+      expected += msPerEntry_ * double(take);
+      frame_.drawnWeight += double(take);
+      if (frame_.nextEntry == count) {
+        endCompositeSlab(s);
+        ++ends;
+        expected += msPerSlabEnd_;
+        frame_.drawnWeight += frame_.meanEntries;
+        frame_.nextEntry = 0;
+        ++frame_.nextSlab;
+      }
+      if (!measured) break;  // one measurement before planning more
+    }
+    if (unlimited) continue;
+    // llvmpipe does the GL work by glFinish: the chunk's time is only known after it.
+    glFinish();
+    updateCostModel(millisecondsSince(chunkStart), entries, ends);
+    const double nextMs = msPerEntry_ * double(kMinRange) + msPerSlabEnd_;
+    if (millisecondsSince(start) + nextMs > budgetMs) break;
+  }
+  endConditionalSlabs();  // the window draws between steps, the final pass after the last
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  return finished();
+}
+
+void SplatRenderer::updateCostModel(double ms, size_t entries, size_t slabEnds) {
+  // Up at once, down slowly: an overestimate costs a little speed, an underestimate a
+  // stalled window.
+  const auto blend = [](double old, double now) {
+    return old > 0.0 && now < old ? 0.5 * (old + now) : now;
+  };
+  if (slabEnds == 0 || msPerEntry_ <= 0.0) {
+    // Without a known per-entry cost the whole time is charged to the entries (safe: high).
+    msPerEntry_ = blend(msPerEntry_, ms / double(std::max<size_t>(entries, 1)));
+    return;
+  }
+  const double rest = std::max(0.0, ms - msPerEntry_ * double(entries));
+  msPerSlabEnd_ = blend(msPerSlabEnd_, rest / double(slabEnds));
+}
+
+bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point start) {
+  // X-ray and MIP: one pass over every splat with order-independent blending (sum or max),
+  // so the splat list may be drawn in ranges, as many entries per step as the budget allows.
+  const RenderSettings& settings = frame_.settings;
+  const bool unlimited = !std::isfinite(budgetMs);
+  Slab all = frame_.slabs.front();
+  const bool window = depthWindow_ && settings.mode == RenderMode::XRay;
+  if (window) {
+    all.nearDepth = depthWindow_->first;
+    all.farDepth = depthWindow_->second;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+  glBlendFunc(GL_ONE, GL_ONE);
+  if (settings.mode == RenderMode::Mip) glBlendEquation(GL_MAX);
+  // Entries drawn before anything is measured, and the fewest a step draws (cheap anywhere).
+  constexpr size_t kFirstChunk = 4096, kMinChunk = 1024;
+  if (frame_.indirect) {  // the whole single slab, its count on the GPU (budget unlimited)
+    setSlabUniforms(all, window, false, 0);
+    drawSplats(all, stats_.quadPass, 0);
+    frame_.nextEntry = all.count;
+  }
+  while (frame_.nextEntry < all.count) {
+    size_t count = all.count - frame_.nextEntry;
+    if (!unlimited) {
+      const double left = budgetMs - millisecondsSince(start);
+      const double fit = msPerEntry_ > 0.0 ? left / msPerEntry_ : double(kFirstChunk);
+      count = size_t(std::clamp(fit, double(std::min(kMinChunk, count)), double(count)));
+    }
+    Slab range = all;
+    range.first = all.first + uint32_t(frame_.nextEntry);
+    range.count = count;
+    const auto chunkStart = Clock::now();
+    setSlabUniforms(range, window, false);
+    drawSplats(range, stats_.quadPass);
+    frame_.nextEntry += count;
+    frame_.drawnWeight += double(count);
+    if (unlimited) continue;
+    glFinish();
+    updateCostModel(millisecondsSince(chunkStart), count, 0);
+    if (millisecondsSince(start) + msPerEntry_ * double(kMinChunk) > budgetMs) break;
+  }
+  glBlendEquation(GL_FUNC_ADD);
+  stats_.slabsDrawn = 1;
+  return frame_.indirect || frame_.nextEntry >= all.count;
+}
+
+bool SplatRenderer::stepFrame(double budgetMs) {
+  if (!frame_.active) return true;
+  const auto start = Clock::now();
+  if (frame_.partitionPending) {
+    // A budgeted step waits for the worker at most its budget; the window keeps its picture
+    // meanwhile. The upload and the first slabs then share what is left of the budget.
+    const auto budget = std::chrono::duration<double, std::milli>(std::min(budgetMs, 1e9));
+    if (std::isfinite(budgetMs) &&
+        pendingPartition_.wait_for(budget) != std::future_status::ready) {
+      stats_.renderMs += millisecondsSince(start);
+      return false;
+    }
+    takeCpuPartition(std::isfinite(budgetMs));
+  }
+  if (frame_.orderUploading && !uploadOrderPieces(budgetMs, start)) {
+    stats_.renderMs += millisecondsSince(start);
+    return false;  // more of the order list next step
+  }
+  if (frame_.gradientsPending) {
+    // Ray normals: the gradient texture, packed on a worker since beginFrame (or prepare). A
+    // budgeted step waits for it at most what is left of its budget; the wait counts with
+    // classification.
+    const auto waitStart = Clock::now();
+    const double left =
+        std::isfinite(budgetMs) ? std::max(0.0, budgetMs - millisecondsSince(start)) : budgetMs;
+    if (!gradients_.ready(left)) {
+      stats_.renderMs += millisecondsSince(start);
+      return false;
+    }
+    stats_.classifyMs += millisecondsSince(waitStart);
+    frame_.gradientsPending = false;
+  }
+  const auto drawStart = Clock::now();  // the splat stage's time leaves the partition out
+  // Drawing within a budget needs each slab's count: read the GPU's back (a short wait) before
+  // anything is drawn.
+  if (frame_.indirect && std::isfinite(budgetMs) && frame_.nextSlab == 0) takeGpuCounts();
+  // A whole frame drawn in this one step may be timed on the GPU: no wait between its stages.
+  frame_.timed = gpuTimers_ && !std::isfinite(budgetMs) && frame_.drawnWeight == 0.0;
+  if (frame_.timed) glQueryCounter(timers_[0], GL_TIMESTAMP);
+  // A whole composite frame in compute tiles, if asked for and they draw its settings (in a
+  // budgeted step: auto's choice, drawn whole where it fits a UI frame).
+  if (frame_.drawSplats && tilesFitStep(budgetMs) && tilesWanted(frame_.settings) &&
+      frame_.settings.mode == RenderMode::Composite && frame_.nextSlab == 0 && drawTiles()) {
+    frame_.drawSplats = false;
+    stats_.splatMs += millisecondsSince(drawStart);  // the tiles wait for their passes
+  }
+  if (frame_.drawSplats) {
+    // Another renderer sharing the programs drew since this frame set them up.
+    if (programs_->user != this) setFrameUniforms();
+    bindFrameState();
+    glEnable(GL_BLEND);
+    const bool done = frame_.settings.mode == RenderMode::Composite
+                          ? drawSlabChunks(budgetMs, start)
+                          : drawWholeVolumeChunks(budgetMs, start);
+    glDisable(GL_BLEND);
+    if (!done) {
+      // The window draws between steps: leave it the default framebuffer, as render() does.
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      glUseProgram(0);
+      stats_.splatMs += millisecondsSince(drawStart);
+      stats_.renderMs += millisecondsSince(start);
+      return false;
+    }
+    if (!frame_.timed) {
+      // The slab loop's GPU work (splats and the blends between slabs) ends here; waiting for
+      // it costs little, since the final pass below waits anyway.
+      glFinish();
+      stats_.splatMs += millisecondsSince(drawStart);
+    }
+  }
+  if (frame_.timed) glQueryCounter(timers_[1], GL_TIMESTAMP);
+  drawFinalPass();
+  if (frame_.occlusion) stats_.entriesCulled = occlusion_.readCount();  // the GPU is idle
+  if (frame_.indirect) {
+    // Statistics only: the GPU is idle after the final pass, so reading the counts costs
+    // little. Entries drawn: those of the slabs drawn before early termination.
+    gpuPartition_->readCounts();
+    size_t slabs = 0;
+    for (const Slab& slab : gpuPartition_->slabs()) slabs += slab.count > 0;
+    stats_.slabs = slabs;
+    frame_.slabs = gpuPartition_->slabs();
+    const bool composite = frame_.settings.mode == RenderMode::Composite;
+    const size_t drawn = composite && !frame_.tiles ? frame_.nextSlab : frame_.slabs.size();
+    for (size_t s = 0; s < drawn && s < frame_.slabs.size(); ++s)
+      stats_.slabEntries += slabInOrder(s).count;
+  }
+  // Auto passes: this frame's splat stage a slab entry, for the way it took (the GPU
+  // partition's entries are only counted above).
+  if (frame_.timed && frame_.quarters && frame_.settings.slabPasses == 0 && !frame_.tiles &&
+      stats_.slabEntries > 0)
+    passTuner_.report(frame_.slabPasses - 1, stats_.splatMs / double(stats_.slabEntries));
+  reportSplatterCost();
+  frame_.active = false;
+  stats_.renderMs += millisecondsSince(start);
+  return true;
+}
+
+double SplatRenderer::frameProgress() const {
+  if (!frame_.active) return 1.0;
+  return frame_.totalWeight > 0.0 ? std::min(1.0, frame_.drawnWeight / frame_.totalWeight) : 0.0;
+}
+
+}  // namespace ewa

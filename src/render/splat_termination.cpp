@@ -1,0 +1,113 @@
+// SplatRenderer's early termination: an occlusion query on the volume's box over the marked
+// (opaque) pixels, read at once or lagged under conditional rendering.
+#include <algorithm>
+#include <cmath>
+
+#include "core/kernel_reach.h"
+#include "render/splat_renderer.h"
+
+namespace ewa {
+
+namespace {
+
+// World to clip space for the pixel mapping of `proj`: x_pixel = principal + f u.xy / depth
+// (or ppu u.xy), and clip z inside [-w, w] for depths beyond `nearClip`.
+glm::mat4 clipMatrix(const Projection& proj, const glm::dmat4& view, double nearClip) {
+  glm::dmat4 p(0.0);
+  const double w = proj.width, h = proj.height;
+  const double ox = 2.0 * proj.principal.x / w - 1.0, oy = 2.0 * proj.principal.y / h - 1.0;
+  if (proj.orthographic) {
+    p[0][0] = 2.0 * proj.pixelsPerUnit / w;
+    p[1][1] = 2.0 * proj.pixelsPerUnit / h;
+    p[3][0] = ox;
+    p[3][1] = oy;
+    p[3][3] = 1.0;
+  } else {
+    p[0][0] = 2.0 * proj.focalPixels / w;
+    p[1][1] = 2.0 * proj.focalPixels / h;
+    p[2][0] = -ox;
+    p[2][1] = -oy;
+    p[2][2] = -1.0;
+    p[3][2] = -2.0 * nearClip;
+    p[2][3] = -1.0;
+  }
+  return glm::mat4(p * view);
+}
+
+}  // namespace
+
+bool SplatRenderer::issueOpaqueQuery(unsigned query) {
+  const Camera& camera = frame_.camera;
+  const Projection& proj = frame_.proj;
+  const glm::dvec3& sp = volume_->spacing();
+  const double maxSpacing = std::max({sp.x, sp.y, sp.z});
+  const KernelReach& reach = frame_.reach;
+  const glm::dvec3 lo = volume_->boundsMin(), hi = volume_->boundsMax();
+  const glm::dmat4 view = camera.viewMatrix();
+  const DepthRange box = boxDepthRange(view, lo, hi);
+  // A box reaching the eye plane would be clipped: not a safe bound for the test.
+  if (!proj.orthographic &&
+      box.nearest < 2.0 * std::max(maxSpacing, reach.maxSigma) * std::sqrt(reach.cutoff))
+    return false;
+  const double farDepth = std::max(0.0, box.farthest);
+  // Grow the box by what a kernel reaches beyond its centre at the farthest corner (reach
+  // grows with depth), plus a pixel for rasterization.
+  const double grow = worldReach(reach, farDepth) + worldPerPixel(reach, farDepth);
+  boxProgram_.setMat4("uClip", clipMatrix(proj, view, 0.5 * maxSpacing));
+  boxProgram_.setVec3("uBoxMin", glm::vec3(lo - grow));
+  boxProgram_.setVec3("uBoxMax", glm::vec3(hi + grow));
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glBeginQuery(GL_SAMPLES_PASSED, query);
+  glUseProgram(boxProgram_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 36);
+  glEndQuery(GL_SAMPLES_PASSED);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  return true;
+}
+
+bool SplatRenderer::terminationCheck() {
+  const int current = frame_.nextQuery, previous = current ^ 1;
+  endConditionalSlabs();  // the check's own query counts unconditionally
+  const bool issued = issueOpaqueQuery(queries_[current]);
+  if (!laggedTermination_) {
+    GLuint samples = 1;
+    if (issued) glGetQueryObjectuiv(queries_[current], GL_QUERY_RESULT, &samples);
+    return samples == 0;
+  }
+  bool done = false;
+  if (frame_.queryIssued[previous]) {
+    GLuint available = 0, samples = 1;
+    glGetQueryObjectuiv(queries_[previous], GL_QUERY_RESULT_AVAILABLE, &available);
+    if (available) {
+      glGetQueryObjectuiv(queries_[previous], GL_QUERY_RESULT, &samples);
+      frame_.queryIssued[previous] = false;
+      done = samples == 0;
+    }
+  }
+  if (frame_.queryIssued[previous] && !done) {
+    // The CPU has no answer yet: until the next check the GPU draws only if the last check
+    // counted an unmarked pixel. The GPU waits for that answer, a check's slabs back and so
+    // all but certainly there, and never the CPU; the stencil rejects what would be hidden
+    // anyway, so the picture is the same as without.
+    glBeginConditionalRender(queries_[previous], GL_QUERY_WAIT);
+    frame_.conditional = true;
+  }
+  frame_.queryIssued[current] = issued;
+  frame_.nextQuery = previous;
+  glFlush();  // so that the query's answer comes while the next slabs are drawn
+  return done;
+}
+
+void SplatRenderer::endConditionalSlabs() {
+  if (!frame_.conditional) return;
+  glEndConditionalRender();
+  frame_.conditional = false;
+}
+
+bool SplatRenderer::terminates() const {
+  const RenderSettings& settings = frame_.settings;
+  return settings.order == CompositeOrder::FrontToBack && settings.terminationOpacity < 1.0;
+}
+
+}  // namespace ewa
