@@ -122,7 +122,9 @@ bool TransferFunction::allTransparent(double lo, double hi) const {
 
 namespace {
 
-double finiteOr(double value, double fallback) { return std::isfinite(value) ? value : fallback; }
+double finiteOr(double value, double fallback) {
+  return std::isfinite(value) ? value : fallback;
+}
 
 glm::dvec3 clampColor(const glm::dvec3& rgb) {
   glm::dvec3 out;
@@ -249,6 +251,16 @@ int backgroundEnd(const std::vector<double>& s, int mode) {
   return valley;
 }
 
+// The share of the counts in bins below `bin`.
+double shareBelow(const std::vector<uint64_t>& h, int bin) {
+  double below = 0.0, total = 0.0;
+  for (size_t b = 0; b < h.size(); ++b) {
+    total += double(h[b]);
+    if (int(b) < bin) below += double(h[b]);
+  }
+  return total > 0.0 ? below / total : 0.0;
+}
+
 // Value below which `fraction` of the counts in bins [first, end) lie.
 double quantile(const std::vector<uint64_t>& h, int first, double fraction, double lo,
                 double width) {
@@ -287,6 +299,10 @@ TransferFunction defaultTransferFunction(const Volume& volume) {
   const int mode = int(std::max_element(h.begin(), h.end()) - h.begin());
   int end = backgroundEnd(s, mode);
   if (end >= int(h.size()) - 2) end = 0;  // the background fills the range: ramp over all of it
+  // A background (air, an empty field) is the low end of the values; a mode with most voxels
+  // below it is a material, in a volume cropped to its object (NiBabel's anatomical.nii, an MR
+  // with no air, was left with its upper 1% visible): ramp over the whole range.
+  if (shareBelow(h, mode) > 0.5) end = 0;
   const double threshold = lo + (end + 1) * width;
   const double median = quantile(h, end + 1, 0.5, lo, width);
   const double upper = quantile(h, end + 1, 0.95, lo, width);

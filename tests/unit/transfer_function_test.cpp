@@ -182,6 +182,26 @@ TEST(DefaultTransferFunction, HidesBackgroundShowsForeground) {
   EXPECT_FALSE(tf.allTransparent(volume.minValue(), volume.maxValue()));
 }
 
+// A volume cropped to its object (as NiBabel's anatomical.nii): no background, a material peak
+// at 200 (40% of the voxels) above a spread of lower values (55%, 40 to 188) and a few bright
+// ones. The histogram's mode is that peak, with most voxels below it.
+TEST(DefaultTransferFunction, AVolumeWithoutBackgroundShowsItsMainMaterial) {
+  const int n = 32;
+  std::vector<uint8_t> bytes(n * n * n);
+  for (int v = 0; v < n * n * n; ++v) {
+    const int r = (v * 37) % 100;
+    bytes[v] = uint8_t(r < 40 ? 200 + r % 3 : r < 95 ? 40 + (r - 40) * 27 / 10 : 250);
+  }
+  const Volume volume({n, n, n}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8, bytes);
+  const TransferFunction tf = defaultTransferFunction(volume);
+  EXPECT_NO_THROW(tf.validate());
+  // The peak at 200 is not taken for a background: it and the tail below show, the lowest
+  // value only stays clear.
+  for (double v : {100.0, 150.0, 199.0, 200.0, 202.0, 250.0}) EXPECT_GT(tf.alphaAt(v), 0.0) << v;
+  EXPECT_EQ(tf.alphaAt(40.0), 0.0);
+  EXPECT_LT(tf.alphaAt(150.0), tf.alphaAt(250.0));
+}
+
 TEST(DefaultTransferFunction, ConstantAndEmptyVolumesGiveValidFunctions) {
   const Volume constant({4, 4, 4}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8,
                         std::vector<uint8_t>(64, 7));
