@@ -52,7 +52,7 @@ std::string relativeFolder(const std::string& file, const std::string& root) {
 
 }  // namespace
 
-Volume loadDicom(const std::string& path, const std::string& seriesUid) {
+Volume loadDicom(const std::string& path, const std::string& seriesUid, int channel) {
   std::error_code ec;
   const std::filesystem::path named(path);
   // A CD's DICOMDIR names the images in the folders below it: opened as that folder is.
@@ -136,6 +136,10 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid) {
   const DicomSlice& base = slices.front();
   layout.dims = {base.columns, base.rows, int64_t(slices.size()) * base.frames};
   if (!base.hasSpacing) layout.notes.push_back("no PixelSpacing: 1 assumed");
+  if (base.samplesPerPixel > 1)
+    layout.notes.push_back("RGB: " + std::to_string(base.samplesPerPixel) +
+                           " channels; showing channel " + std::to_string(channel) +
+                           " (--channel N picks another)");
   layout.spacing = {base.columnSpacing, base.rowSpacing, 1.0};
   const glm::dvec3 row(base.orientation[0], base.orientation[1], base.orientation[2]);
   const glm::dvec3 column(base.orientation[3], base.orientation[4], base.orientation[5]);
@@ -159,7 +163,7 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid) {
   const std::vector<DicomSlice> wholeFile{whole};
   const std::vector<DicomSlice>& files = frames.empty() ? slices : wholeFile;
   for (size_t i = 0; i < files.size(); ++i) {
-    const SlicePixels px = readSlice(files[i]);
+    const SlicePixels px = readSlice(files[i], channel);
     const bool intType =
         px.type != gdcm::PixelFormat::FLOAT32 && px.type != gdcm::PixelFormat::FLOAT64;
     integral = integral && intType && px.slope == std::round(px.slope) &&

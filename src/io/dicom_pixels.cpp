@@ -21,11 +21,24 @@ namespace ewa {
 
 namespace {
 
+// Where the samples of one channel lie in a decoded buffer: every `samples`-th from `channel`
+// (colour-by-pixel), or the channel's plane in each frame (colour-by-plane, PlanarConfiguration
+// 1).
+struct ChannelLayout {
+  size_t samples = 1, channel = 0, plane = 1;
+  bool planar = false;
+  size_t index(size_t pixel) const {
+    if (!planar) return pixel * samples + channel;
+    return (pixel / plane) * plane * samples + channel * plane + pixel % plane;
+  }
+};
+
 template <typename T>
-void appendValues(const std::vector<char>& buffer, size_t count, std::vector<double>& out) {
+void appendValues(const std::vector<char>& buffer, size_t count, const ChannelLayout& layout,
+                  std::vector<double>& out) {
   for (size_t i = 0; i < count; ++i) {
     T v;
-    std::memcpy(&v, buffer.data() + i * sizeof(T), sizeof(T));
+    std::memcpy(&v, buffer.data() + layout.index(i) * sizeof(T), sizeof(T));
     out.push_back(double(v));
   }
 }
@@ -33,18 +46,23 @@ void appendValues(const std::vector<char>& buffer, size_t count, std::vector<dou
 // The pixel module must describe monochrome integer or float samples GDCM can decode; its
 // image reader asserts (aborts) on some impossible values instead of failing.
 void checkPixelModule(const DicomSlice& s) {
-  if (s.samplesPerPixel != 1)
-    failLoad(s.file, "colour or bad SamplesPerPixel " + std::to_string(s.samplesPerPixel) +
-                         " (monochrome images only)");
+  const bool colour = s.samplesPerPixel == 3;
+  if (s.samplesPerPixel != 1 && !colour)
+    failLoad(s.file,
+             "bad SamplesPerPixel " + std::to_string(s.samplesPerPixel) + " (1, or 3 for RGB)");
   const int64_t bits = s.bitsAllocated;
   if (bits != 8 && bits != 16 && bits != 32 && bits != 64)
     failLoad(s.file, "unsupported BitsAllocated " + std::to_string(bits) + " (8, 16, 32 or 64)");
   if (s.bitsStored < 1 || s.bitsStored > bits || s.highBit < s.bitsStored - 1 || s.highBit >= bits)
     failLoad(s.file, "inconsistent BitsStored " + std::to_string(s.bitsStored) + " and HighBit " +
                          std::to_string(s.highBit));
-  if (!s.photometric.empty() && s.photometric != "MONOCHROME1" && s.photometric != "MONOCHROME2")
-    failLoad(s.file, "PhotometricInterpretation " + quoteText(s.photometric, 20) +
-                         " (monochrome images only)");
+  // Colour: RGB only (YBR colour spaces would need converting; none of ours has them).
+  const bool mono =
+      s.photometric.empty() || s.photometric == "MONOCHROME1" || s.photometric == "MONOCHROME2";
+  if (colour ? s.photometric != "RGB" : !mono)
+    failLoad(s.file, "PhotometricInterpretation " + quoteText(s.photometric, 20) + " with " +
+                         std::to_string(s.samplesPerPixel) +
+                         " samples a pixel (MONOCHROME1 or MONOCHROME2 with 1, RGB with 3)");
   if (s.representation != 0 && s.representation != 1)
     failLoad(s.file, "bad PixelRepresentation " + std::to_string(s.representation));
 }
@@ -85,7 +103,7 @@ std::vector<double> rescaleOf(const gdcm::File& file) {
 
 }  // namespace
 
-SlicePixels readSlice(const DicomSlice& slice) {
+SlicePixels readSlice(const DicomSlice& slice, int channel) {
   checkPixelModule(slice);
   // The pixmap reader decodes without GDCM's geometry (ImageReader's spacing, origin and
   // direction code asserts on malformed functional groups; the geometry is ours anyway).
@@ -95,9 +113,13 @@ SlicePixels readSlice(const DicomSlice& slice) {
   const gdcm::Pixmap& image = reader.GetPixmap();
   const unsigned* dims = image.GetDimensions();
   const gdcm::PixelFormat& format = image.GetPixelFormat();
-  if (format.GetSamplesPerPixel() != 1)
-    failLoad(slice.file, "colour DICOM images (" + std::to_string(format.GetSamplesPerPixel()) +
-                             " samples per pixel) are not supported");
+  const int samples = format.GetSamplesPerPixel();
+  if (samples != slice.samplesPerPixel)
+    failLoad(slice.file, "SamplesPerPixel disagrees with the pixel data");
+  if (channel < 0 || channel >= samples)
+    failLoad(slice.file, "--channel " + std::to_string(channel) + " is out of range (" +
+                             std::to_string(samples) + " channel" + (samples == 1 ? "" : "s") +
+                             ")");
   if (int64_t(dims[0]) != slice.columns || int64_t(dims[1]) != slice.rows)
     failLoad(slice.file, "image size disagrees with Rows and Columns");
   const uint64_t count = uint64_t(dims[0]) * dims[1] *
@@ -125,30 +147,35 @@ SlicePixels readSlice(const DicomSlice& slice) {
   out.slope = rescale[1];
   out.type = format.GetScalarType();
   out.values.reserve(size_t(count));
+  ChannelLayout layout;
+  layout.samples = size_t(samples);
+  layout.channel = size_t(channel);
+  layout.plane = size_t(dims[0]) * dims[1];
+  layout.planar = samples > 1 && image.GetPlanarConfiguration() == 1;
   switch (format.GetScalarType()) {
     case gdcm::PixelFormat::UINT8:
-      appendValues<uint8_t>(buffer, count, out.values);
+      appendValues<uint8_t>(buffer, count, layout, out.values);
       break;
     case gdcm::PixelFormat::INT8:
-      appendValues<int8_t>(buffer, count, out.values);
+      appendValues<int8_t>(buffer, count, layout, out.values);
       break;
     case gdcm::PixelFormat::UINT16:
-      appendValues<uint16_t>(buffer, count, out.values);
+      appendValues<uint16_t>(buffer, count, layout, out.values);
       break;
     case gdcm::PixelFormat::INT16:
-      appendValues<int16_t>(buffer, count, out.values);
+      appendValues<int16_t>(buffer, count, layout, out.values);
       break;
     case gdcm::PixelFormat::UINT32:
-      appendValues<uint32_t>(buffer, count, out.values);
+      appendValues<uint32_t>(buffer, count, layout, out.values);
       break;
     case gdcm::PixelFormat::INT32:
-      appendValues<int32_t>(buffer, count, out.values);
+      appendValues<int32_t>(buffer, count, layout, out.values);
       break;
     case gdcm::PixelFormat::FLOAT32:
-      appendValues<float>(buffer, count, out.values);
+      appendValues<float>(buffer, count, layout, out.values);
       break;
     case gdcm::PixelFormat::FLOAT64:
-      appendValues<double>(buffer, count, out.values);
+      appendValues<double>(buffer, count, layout, out.values);
       break;
     default:
       failLoad(slice.file, std::string("unsupported pixel type ") + format.GetScalarTypeAsString());

@@ -19,9 +19,10 @@ struct SlicePixels {
   gdcm::PixelFormat::ScalarType type = gdcm::PixelFormat::UNKNOWN;
 };
 
-// Every frame of `slice`'s file, in stored order. Throws LoadError naming the file for pixel
-// modules GDCM would assert on, sizes the data cannot hold and data it cannot decode.
-SlicePixels readSlice(const DicomSlice& slice);
+// Every frame of `slice`'s file, in stored order; of an RGB image, channel `channel` (0 red, 1
+// green, 2 blue). Throws LoadError naming the file for pixel modules GDCM would assert on, sizes
+// the data cannot hold, data it cannot decode and a channel the image does not have.
+SlicePixels readSlice(const DicomSlice& slice, int channel = 0);
 // The narrowest volume type that holds every value exactly (`integral`: all are integers).
 FileScalar fittingType(const std::vector<double>& values, bool integral);
 // The values in `type`'s bytes (native order).

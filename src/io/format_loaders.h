@@ -15,8 +15,9 @@ Volume loadVti(const std::string& path);        // .vti (VTK XML ImageData)
 Volume loadNifti(const std::string& path, int frame);
 Volume loadSlc(const std::string& path);  // .slc (VTK SLC)
 // A DICOM series: `path` is a folder or one file of the series; `series` a SeriesInstanceUID
-// or empty (the named file's series, else the folder's series with the most slices).
-Volume loadDicom(const std::string& path, const std::string& series);
+// or empty (the named file's series, else the folder's series with the most slices);
+// `channel` of RGB images.
+Volume loadDicom(const std::string& path, const std::string& series, int channel);
 // A multi-page TIFF, or a folder of single-page TIFFs; `channel` of multi-channel data.
 Volume loadTiff(const std::string& path, int channel);
 

@@ -35,7 +35,7 @@ RawOptions parseRawOptions(const std::string& dims, const std::string& type,
 struct LoadOptions {
   std::string series;  // DICOM SeriesInstanceUID; empty: the named file's, else the largest
   int frame = 0;       // 4D NIfTI: the volume (time point) to open
-  int channel = 0;     // multi-channel TIFF: the channel to open
+  int channel = 0;     // multi-channel TIFF, RGB DICOM: the channel to open
 };
 
 // Loads by file extension (case-insensitive): .nrrd/.nhdr (NRRD), .mhd/.mha (MetaImage),
@@ -45,7 +45,6 @@ struct LoadOptions {
 // Volume has no type for) is widened to Int16; negative spacings keep their magnitude; the
 // direction is left a rotation (a reflected one reverses the slices, see volume_orientation.h).
 Volume loadVolume(const std::string& path, const LoadOptions& options = {});
-
 
 // Loads a headerless file laid out as `options` says. The file must hold at least the
 // voxels; extra trailing bytes are ignored. Throws LoadError.

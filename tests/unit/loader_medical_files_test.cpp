@@ -14,6 +14,8 @@
 namespace ewa {
 namespace {
 
+using testing::allNotes;
+using testing::dicomSeries;
 using testing::expectLoadError;
 using testing::expectVolumeLoadError;
 using testing::NiftiFields;
@@ -167,29 +169,10 @@ TEST(Directions, NrrdSpaceDirectionsAndMetaImageTransformMatrix) {
   EXPECT_EQ(plain.direction()[0], glm::dvec3(0, 1, 0));
 }
 
-// A volume's notes, one a line (to search for one).
-std::string allNotes(const Volume& v) {
-  std::string notes;
-  for (const std::string& n : v.notes()) notes += n + "\n";
-  return notes;
-}
-
 // A file's bytes (to cut or patch it).
 std::string fileBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-// A folder of `count` slices 2 apart along z, in shuffled file names.
-std::string dicomSeries(const TempDir& dir, const std::string& name, int count,
-                        testing::DicomSliceSpec spec = {}) {
-  std::filesystem::create_directories(dir.path(name));
-  for (int n = 0; n < count; ++n) {
-    spec.position = {10.0, 20.0, 2.0 * ((n * 7) % count)};
-    EXPECT_TRUE(
-        testing::writeDicomSlice(dir.path(name + "/im" + std::to_string(n) + ".dcm"), spec));
-  }
-  return dir.path(name);
 }
 
 TEST(DicomFiles, SeriesSortedByPositionWithRescale) {

@@ -65,7 +65,14 @@ struct DicomSliceSpec {
   double rowSpacing = 0.5, columnSpacing = 0.75;
   double slope = 1.0, intercept = 0.0;
   std::vector<int16_t> values;  // empty: i + 10 * j + 100 * slice index given by position z
+  // RGB instead: uint8 samples 40 c + i + 5 j + 20 z for channel c, by pixel or by plane.
+  bool rgb = false, planar = false;
 };
+
+// The sample of channel `c` at column i, row j of an RGB test slice at position z.
+inline int rgbTestSample(int c, int i, int j, int z) {
+  return 40 * c + i + 5 * j + 20 * z;
+}
 
 inline bool writeDicomSlice(const std::string& path, const DicomSliceSpec& s) {
   gdcm::ImageWriter writer;
@@ -73,23 +80,37 @@ inline bool writeDicomSlice(const std::string& path, const DicomSliceSpec& s) {
   image.SetNumberOfDimensions(2);
   image.SetDimension(0, s.columns);
   image.SetDimension(1, s.rows);
-  image.SetPhotometricInterpretation(gdcm::PhotometricInterpretation::MONOCHROME2);
-  image.SetPixelFormat(gdcm::PixelFormat::INT16);
   image.SetOrigin(s.position.data());
   image.SetDirectionCosines(s.orientation.data());
   image.SetSpacing(0, s.columnSpacing);
   image.SetSpacing(1, s.rowSpacing);
-  image.SetSlope(s.slope);
-  image.SetIntercept(s.intercept);
-  std::vector<int16_t> values = s.values;
-  if (values.empty()) {
-    for (unsigned j = 0; j < s.rows; ++j)
-      for (unsigned i = 0; i < s.columns; ++i)
-        values.push_back(int16_t(i + 10 * j + 100 * int(s.position[2])));
-  }
   gdcm::DataElement pixels(gdcm::Tag(0x7fe0, 0x0010));
-  pixels.SetByteValue(reinterpret_cast<const char*>(values.data()),
-                      uint32_t(values.size() * sizeof(int16_t)));
+  if (s.rgb) {
+    image.SetPhotometricInterpretation(gdcm::PhotometricInterpretation::RGB);
+    image.SetPixelFormat(gdcm::PixelFormat(3, 8, 8, 7, 0));
+    image.SetPlanarConfiguration(s.planar ? 1 : 0);
+    std::vector<uint8_t> samples;
+    const int z = int(s.position[2]);
+    for (int c = 0; c < (s.planar ? 3 : 1); ++c)
+      for (unsigned j = 0; j < s.rows; ++j)
+        for (unsigned i = 0; i < s.columns; ++i)
+          for (int k = 0; k < (s.planar ? 1 : 3); ++k)
+            samples.push_back(uint8_t(rgbTestSample(s.planar ? c : k, int(i), int(j), z)));
+    pixels.SetByteValue(reinterpret_cast<const char*>(samples.data()), uint32_t(samples.size()));
+  } else {
+    image.SetPhotometricInterpretation(gdcm::PhotometricInterpretation::MONOCHROME2);
+    image.SetPixelFormat(gdcm::PixelFormat::INT16);
+    image.SetSlope(s.slope);
+    image.SetIntercept(s.intercept);
+    std::vector<int16_t> values = s.values;
+    if (values.empty()) {
+      for (unsigned j = 0; j < s.rows; ++j)
+        for (unsigned i = 0; i < s.columns; ++i)
+          values.push_back(int16_t(i + 10 * j + 100 * int(s.position[2])));
+    }
+    pixels.SetByteValue(reinterpret_cast<const char*>(values.data()),
+                        uint32_t(values.size() * sizeof(int16_t)));
+  }
   image.SetDataElement(pixels);
   gdcm::File& file = writer.GetFile();
   gdcm::DataSet& ds = file.GetDataSet();
@@ -115,6 +136,24 @@ inline bool writeDicomSlice(const std::string& path, const DicomSliceSpec& s) {
   plain.SetFile(reader.GetFile());
   plain.SetFileName(path.c_str());
   return plain.Write();
+}
+
+// A folder of `count` slices 2 apart along z, in shuffled file names.
+inline std::string dicomSeries(const TempDir& dir, const std::string& name, int count,
+                               DicomSliceSpec spec = {}) {
+  std::filesystem::create_directories(dir.path(name));
+  for (int n = 0; n < count; ++n) {
+    spec.position = {10.0, 20.0, 2.0 * ((n * 7) % count)};
+    EXPECT_TRUE(writeDicomSlice(dir.path(name + "/im" + std::to_string(n) + ".dcm"), spec));
+  }
+  return dir.path(name);
+}
+
+// A volume's notes, one a line (to search for one).
+inline std::string allNotes(const Volume& v) {
+  std::string notes;
+  for (const std::string& n : v.notes()) notes += n + "\n";
+  return notes;
 }
 
 // An enhanced CT file of one frame a plane at each z of `frameZ` (in that stored order), int16
