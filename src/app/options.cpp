@@ -99,7 +99,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--series", o->load.series, "DICOM: open the series with this SeriesInstanceUID");
   app.add_option("--frame", o->load.frame, "4D NIfTI: open this frame (default 0)")
       ->check(CLI::Range(0, 1 << 30));
-  app.add_option("--channel", o->load.channel, "Multi-channel TIFF or RGB DICOM: open this channel (default 0)")
+  app.add_option("--channel", o->load.channel,
+                 "Multi-channel TIFF or RGB DICOM: open this channel (default 0)")
       ->check(CLI::Range(0, 1 << 20));
   std::vector<int> res;
   app.add_option("--resolution", res, "Image size W,H (default 800,600)")

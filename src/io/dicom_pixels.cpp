@@ -43,8 +43,8 @@ void appendValues(const std::vector<char>& buffer, size_t count, const ChannelLa
   }
 }
 
-// The pixel module must describe monochrome integer or float samples GDCM can decode; its
-// image reader asserts (aborts) on some impossible values instead of failing.
+// The pixel module must describe monochrome (or RGB) integer or float samples GDCM can decode;
+// its image reader asserts (aborts) on some impossible values instead of failing.
 void checkPixelModule(const DicomSlice& s) {
   const bool colour = s.samplesPerPixel == 3;
   if (s.samplesPerPixel != 1 && !colour)
