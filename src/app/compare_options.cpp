@@ -12,12 +12,10 @@
 
 namespace ewa {
 
-CompareOptions::CompareOptions()
-    : data(sharedDataDir()),
-      script(VtkRunner::defaultScript()),
-      classification(classificationModeName(settings.classification.mode)) {
+CompareOptions::CompareOptions() : data(sharedDataDir()), script(VtkRunner::defaultScript()) {
+  text.classification = classificationModeName(settings.classification.mode);
   // The EWA column is the rasterized frame; the tile_ewa column times the tiles beside it.
-  settings.splatter = Splatter::Raster;
+  text.splatter = splatterName(Splatter::Raster);
 }
 
 void addCompareOptions(CLI::App& app, CompareOptions& o) {
@@ -54,10 +52,10 @@ void addCompareOptions(CLI::App& app, CompareOptions& o) {
   app.add_option("--depth-cutoff", o.settings.depthCutoff,
                  "EWA kernels' depth extent in squared sigmas, or inf (default 1)")
       ->check(CLI::Range(0.25, double(INFINITY)));
-  app.add_option("--classification", o.classification,
+  app.add_option("--classification", o.text.classification,
                  "EWA: transfer function per pixel (post, default) or per voxel (pre)")
       ->check(CLI::IsMember({"pre", "post"}));
-  app.add_option("--slab-preintegration", o.pairs,
+  app.add_option("--slab-preintegration", o.text.slabPreintegration,
                  "EWA post-classification: slab value pairs through the pre-integration table "
                  "(on, default) or each slab's value alone (off)")
       ->check(CLI::IsMember({"on", "off"}));
@@ -67,25 +65,25 @@ void addCompareOptions(CLI::App& app, CompareOptions& o) {
   app.add_option("--slab-thickness", o.settings.slabThickness,
                  "EWA: slab thickness in voxels of the smallest spacing (default 2)")
       ->check(CLI::Range(0.25, 1000.0));
-  app.add_option("--slab-passes", o.slabPasses,
+  app.add_option("--slab-passes", o.text.slabPasses,
                  "EWA, 4 samples a slab: splat each slab once into both images (1) or once into "
                  "each (2); auto (default): 1 on software rasterizers, else the faster as timed")
       ->check(CLI::IsMember({"auto", "1", "2"}));
   app.add_option("--prefilter", o.settings.classification.prefilter,
                  "EWA post-classification: value prefilter strength (default 0.04)")
       ->check(CLI::Range(0.0, kMaxPrefilter));
-  app.add_option("--occlusion-culling", o.culling,
+  app.add_option("--occlusion-culling", o.text.occlusionCulling,
                  "EWA: occlusion culling auto (default: off on software rasterizers), on or off")
       ->check(CLI::IsMember({"auto", "on", "off"}));
   app.add_option("--slab-rects", o.slabRects,
                  "EWA: each slab's passes cut to the pixels its kernels reach (on, default) or "
                  "over the whole image (off)")
       ->check(CLI::IsMember({"on", "off"}));
-  app.add_option("--slab-resolution", o.slabResolution,
+  app.add_option("--slab-resolution", o.text.slabResolution,
                  "EWA: slabs splatted into images as coarse as their kernels allow (auto, "
                  "default) or at full resolution (full)")
       ->check(CLI::IsMember({"auto", "full"}));
-  app.add_option("--slab-precision", o.slabPrecision,
+  app.add_option("--slab-precision", o.text.slabPrecision,
                  "EWA: slab images of half floats (half) or floats (float); auto (default): "
                  "half for kernel widths up to 1 unless shaded and post-classified. The bare "
                  "sprites draw into the same")
@@ -94,8 +92,8 @@ void addCompareOptions(CLI::App& app, CompareOptions& o) {
                  "EWA: where the slab partition is built: auto (default: the CPU on software "
                  "rasterizers, the GPU elsewhere), gpu or cpu")
       ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
-  app.add_flag("--shading", o.shading, "EWA: Phong shading with a head light");
-  app.add_option("--post-normals", o.postNormals,
+  app.add_flag("--shading", o.settings.lighting.enabled, "EWA: Phong shading with a head light");
+  app.add_option("--post-normals", o.text.postNormals,
                  "EWA post-classified, with --shading: field, voxel or ray (default) normals")
       ->check(CLI::IsMember({"field", "voxel", "ray"}));
   app.add_option("--tile-size", o.tileSize,
@@ -108,43 +106,41 @@ void addCompareOptions(CLI::App& app, CompareOptions& o) {
 
 void applyCompareOptions(CompareOptions& o) {
   if (o.volumes.empty() && o.synthetic.empty()) o.volumes = {"engine", "bonsai", "cthead"};
-  parseClassificationMode(o.classification, &o.settings.classification.mode);
-  parseOcclusionCulling(o.culling, &o.settings.occlusionCulling);
-  o.settings.slabPreintegration = o.pairs == "on";
-  o.settings.coarseSlabs = o.slabResolution == "auto";
-  parseSlabPrecision(o.slabPrecision, &o.settings.slabPrecision);
-  parseSlabPasses(o.slabPasses, &o.settings.slabPasses);
-  o.settings.lighting.enabled = o.shading;
-  parsePostNormals(o.postNormals, &o.settings.postNormals);
+  // No surface options here, the only ones finishShadingOptions can refuse.
+  finishShadingOptions(o.text, &o.settings);
 }
 
 std::string ewaSettingsText(const CompareOptions& o, bool occlusionCulling, bool gpuPartition) {
   const std::string shadingText =
-      !o.shading ? ""
-      : o.classification == "pre"
+      !o.settings.lighting.enabled ? ""
+      : o.text.classification == "pre"
           ? ", shaded"
           : std::string(", shaded with ") + postNormalsName(o.settings.postNormals) + " normals";
   char ewaText[480], prefilterText[64];
   std::snprintf(prefilterText, sizeof prefilterText, ", prefilter %g%s",
                 o.settings.classification.prefilter,
-                o.pairs == "on" ? (o.settings.slabSamples < 4   ? ", 2 samples a slab"
-                                   : o.settings.slabPasses == 0 ? ", 4 samples a slab"
-                                   : o.settings.slabPasses == 1 ? ", 4 samples a slab in 1 pass"
-                                                                : ", 4 samples a slab in 2 passes")
-                                : "");
-  std::snprintf(
-      ewaText, sizeof ewaText,
-      "kernel width %.2f, cutoff %g, depth cutoff %g, slabs %g thick, "
-      "%s-classification%s%s, %s slab images, occlusion culling %s%s%s%s, "
-      "slab partition on the %s%s%s",
-      o.settings.kernelWidth, o.settings.cutoff, o.settings.depthCutoff, o.settings.slabThickness,
-      o.classification.c_str(),
-      o.classification == "post" && o.pairs == "off" ? " without slab pre-integration" : "",
-      o.classification == "post" ? prefilterText : "",
-      halfFloatSlabs(o.settings) ? "half-float" : "float", occlusionCulling ? "on" : "off",
-      o.culling == "auto" ? " (auto)" : "", o.slabRects == "on" ? "" : ", whole-image slab passes",
-      o.slabResolution == "auto" ? "" : ", full-resolution slabs", gpuPartition ? "GPU" : "CPU",
-      o.partition == "auto" ? " (auto)" : "", shadingText.c_str());
+                o.text.slabPreintegration == "on"
+                    ? (o.settings.slabSamples < 4   ? ", 2 samples a slab"
+                       : o.settings.slabPasses == 0 ? ", 4 samples a slab"
+                       : o.settings.slabPasses == 1 ? ", 4 samples a slab in 1 pass"
+                                                    : ", 4 samples a slab in 2 passes")
+                    : "");
+  std::snprintf(ewaText, sizeof ewaText,
+                "kernel width %.2f, cutoff %g, depth cutoff %g, slabs %g thick, "
+                "%s-classification%s%s, %s slab images, occlusion culling %s%s%s%s, "
+                "slab partition on the %s%s%s",
+                o.settings.kernelWidth, o.settings.cutoff, o.settings.depthCutoff,
+                o.settings.slabThickness, o.text.classification.c_str(),
+                o.text.classification == "post" && o.text.slabPreintegration == "off"
+                    ? " without slab pre-integration"
+                    : "",
+                o.text.classification == "post" ? prefilterText : "",
+                halfFloatSlabs(o.settings) ? "half-float" : "float",
+                occlusionCulling ? "on" : "off", o.text.occlusionCulling == "auto" ? " (auto)" : "",
+                o.slabRects == "on" ? "" : ", whole-image slab passes",
+                o.text.slabResolution == "auto" ? "" : ", full-resolution slabs",
+                gpuPartition ? "GPU" : "CPU", o.partition == "auto" ? " (auto)" : "",
+                shadingText.c_str());
   return ewaText;
 }
 

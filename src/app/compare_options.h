@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "app/render_options.h"
 #include "render/renderer.h"
 
 namespace ewa {
@@ -18,11 +19,10 @@ struct CompareOptions {
   int repeats = 5;
   bool csv = false, json = false, noVtk = false, orthographic = false;
   RenderSettings settings;  // EWA's: the defaults unless --kernel-width, --cutoff, ...
-  // As typed; applyCompareOptions turns them into `settings`.
-  std::string classification, culling = "auto", slabRects = "on", pairs = "on",
-                              slabResolution = "auto", slabPrecision = "auto", partition = "auto",
-                              slabPasses = "auto", postNormals = "ray";
-  bool shading = false;
+  // As typed; applyCompareOptions turns them into `settings` as ewaview's own options are
+  // (finishShadingOptions).
+  RenderOptionText text;
+  std::string slabRects = "on", partition = "auto";
   int tileSize = 16;
 };
 
