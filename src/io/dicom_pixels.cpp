@@ -116,10 +116,7 @@ SlicePixels readSlice(const DicomSlice& slice, int channel) {
   const int samples = format.GetSamplesPerPixel();
   if (samples != slice.samplesPerPixel)
     failLoad(slice.file, "SamplesPerPixel disagrees with the pixel data");
-  if (channel < 0 || channel >= samples)
-    failLoad(slice.file, "--channel " + std::to_string(channel) + " is out of range (" +
-                             std::to_string(samples) + " channel" + (samples == 1 ? "" : "s") +
-                             ")");
+  checkChannel(slice.file, channel, samples);
   if (int64_t(dims[0]) != slice.columns || int64_t(dims[1]) != slice.rows)
     failLoad(slice.file, "image size disagrees with Rows and Columns");
   const uint64_t count = uint64_t(dims[0]) * dims[1] *

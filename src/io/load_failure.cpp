@@ -21,4 +21,10 @@ void failLoad(const std::string& path, const std::string& problem) {
   throw LoadError(oneLine(path + ": " + problem));
 }
 
+void checkChannel(const std::string& path, int64_t channel, int64_t channels) {
+  if (channel >= 0 && channel < channels) return;
+  failLoad(path, "--channel " + std::to_string(channel) + " is out of range (" +
+                     std::to_string(channels) + " channel" + (channels == 1 ? "" : "s") + ")");
+}
+
 }  // namespace ewa

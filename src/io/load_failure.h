@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -15,5 +16,8 @@ std::string oneLine(std::string_view text);
 std::string quoteText(std::string_view text, size_t maxChars = 60);
 // Throws LoadError("<path>: <problem>").
 [[noreturn]] void failLoad(const std::string& path, const std::string& problem);
+// Throws "<path>: --channel C is out of range (N channels)" unless 0 <= channel < channels: the
+// one check of --channel for every multi-channel format (TIFF, RGB DICOM).
+void checkChannel(const std::string& path, int64_t channel, int64_t channels);
 
 }  // namespace ewa

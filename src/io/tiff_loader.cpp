@@ -260,10 +260,7 @@ Volume loadTiff(const std::string& path, int channel) {
         if (f.samples == 1 && parseInt64(imageJField(text, "channels"), imageJChannels) &&
             imageJChannels > 1 && imageJChannels < 1024)
           channels = pagesPerSlice = imageJChannels;  // ImageJ hyperstack: channels interleaved
-        if (channel < 0 || channel >= channels)
-          failLoad(path, "--channel " + std::to_string(channel) + " is out of range (" +
-                             std::to_string(channels) + " channel" + (channels == 1 ? "" : "s") +
-                             ")");
+        checkChannel(path, channel, channels);
         // Resolution tags give the pixel size only in ImageJ's files (its unit) or with no
         // unit; inch and centimetre resolutions are print sizes (72 dpi), not the sample's.
         uint16_t resolutionUnit = RESUNIT_INCH;
