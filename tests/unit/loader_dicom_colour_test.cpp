@@ -76,18 +76,11 @@ TEST(DicomColour, MissingChannelsAndOtherColourSpacesFailWithOneLine) {
   expectLoadError([&] { loadChannel(grey, 1); }, grey, "--channel 1 is out of range (1 channel)");
   // The same samples declared YBR_FULL: not converted, refused.
   const std::string ybr = dicomSeries(dir, "ybr", 1, spec);
-  {
-    gdcm::Reader reader;
-    reader.SetFileName((ybr + "/im0.dcm").c_str());
-    ASSERT_TRUE(reader.Read());
+  ASSERT_TRUE(testing::editDicom(ybr + "/im0.dcm", [](gdcm::DataSet& ds) {
     gdcm::Attribute<0x0028, 0x0004> photometric;
     photometric.SetValue("YBR_FULL");
-    reader.GetFile().GetDataSet().Replace(photometric.GetAsDataElement());
-    gdcm::Writer writer;
-    writer.SetFile(reader.GetFile());
-    writer.SetFileName((ybr + "/im0.dcm").c_str());
-    ASSERT_TRUE(writer.Write());
-  }
+    ds.Replace(photometric.GetAsDataElement());
+  }));
   expectLoadError([&] { loadVolume(ybr); }, ybr,
                   "im0.dcm: PhotometricInterpretation 'YBR_FULL' with 3 samples a pixel");
 }

@@ -242,20 +242,15 @@ TEST(DicomFiles, SeriesInFoldersBelowAFolderWithoutImages) {
   other.seriesUid = "1.2.826.0.1.3680043.2.1125.7";
   dicomSeries(dir, "cd/PAT1/STU1/SER2", 2, other);
   dir.write("cd/README.TXT", "a CD");
-  {
-    // The DICOMDIR: a DICOM file (the Part 10 preamble) that is no image.
-    gdcm::Reader reader;
-    reader.SetFileName((first + "/im0.dcm").c_str());
-    ASSERT_TRUE(reader.Read());
-    gdcm::DataSet& ds = reader.GetFile().GetDataSet();
-    for (const gdcm::Tag& tag :
-         {gdcm::Tag(0x0028, 0x0010), gdcm::Tag(0x0028, 0x0011), gdcm::Tag(0x7fe0, 0x0010)})
-      ds.Remove(tag);
-    gdcm::Writer writer;
-    writer.SetFile(reader.GetFile());
-    writer.SetFileName((cd + "/DICOMDIR").c_str());
-    ASSERT_TRUE(writer.Write());
-  }
+  // The DICOMDIR: a DICOM file (the Part 10 preamble) that is no image.
+  ASSERT_TRUE(testing::editDicom(
+      first + "/im0.dcm",
+      [](gdcm::DataSet& ds) {
+        for (const gdcm::Tag& tag :
+             {gdcm::Tag(0x0028, 0x0010), gdcm::Tag(0x0028, 0x0011), gdcm::Tag(0x7fe0, 0x0010)})
+          ds.Remove(tag);
+      },
+      cd + "/DICOMDIR"));
   const Volume v = loadVolume(cd);
   EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{5, 4, 5}));
   EXPECT_EQ(v.bytes(), loadVolume(first).bytes());
@@ -347,19 +342,12 @@ TEST(DicomFiles, BadSeriesFailWithOneLine) {
                   "corrupt or truncated DICOM data");
   // Rows and Columns that claim far more pixels than the file holds: refused before any buffer.
   const std::string liar = dicomSeries(dir, "liar", 1);
-  {
-    gdcm::Reader reader;
-    reader.SetFileName((liar + "/im0.dcm").c_str());
-    ASSERT_TRUE(reader.Read());
+  ASSERT_TRUE(testing::editDicom(liar + "/im0.dcm", [](gdcm::DataSet& ds) {
     gdcm::Attribute<0x0028, 0x0010> rows{40000};
     gdcm::Attribute<0x0028, 0x0011> columns{40000};
-    reader.GetFile().GetDataSet().Replace(rows.GetAsDataElement());
-    reader.GetFile().GetDataSet().Replace(columns.GetAsDataElement());
-    gdcm::Writer writer;
-    writer.SetFile(reader.GetFile());
-    writer.SetFileName((liar + "/im0.dcm").c_str());
-    ASSERT_TRUE(writer.Write());
-  }
+    ds.Replace(rows.GetAsDataElement());
+    ds.Replace(columns.GetAsDataElement());
+  }));
   expectLoadError([&] { loadVolume(liar); }, liar, "cannot hold a 40000 x 40000 image");
   // A file that is not DICOM but says .dcm.
   expectVolumeLoadError(dir.write("fake.dcm", std::string(200, 'x')), "not a DICOM file");

@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,20 @@ inline std::string niftiHeader(const NiftiFields& f, bool bigEndian = false) {
   for (int i = 0; i < 12; ++i) putFloat(280 + 4 * size_t(i), f.srow[size_t(i)]);
   put(344, std::string("n+1\0", 4));
   return h;
+}
+
+// Reads the DICOM file `from`, lets `edit` change its dataset and writes it to `to` (by
+// default back to `from`): how the tests patch what GDCM's image writer will not write.
+inline bool editDicom(const std::string& from, const std::function<void(gdcm::DataSet&)>& edit,
+                      const std::string& to = "") {
+  gdcm::Reader reader;
+  reader.SetFileName(from.c_str());
+  if (!reader.Read()) return false;
+  edit(reader.GetFile().GetDataSet());
+  gdcm::Writer writer;
+  writer.SetFile(reader.GetFile());
+  writer.SetFileName((to.empty() ? from : to).c_str());
+  return writer.Write();
 }
 
 // One CT slice written by GDCM: int16 pixels `values` (rows * columns), at `position` with
@@ -126,16 +141,11 @@ inline bool writeDicomSlice(const std::string& path, const DicomSliceSpec& s) {
   writer.SetFileName(path.c_str());
   if (!writer.Write()) return false;
   // The image writer keeps only x and y of a 2D image's origin: set the position afterwards.
-  gdcm::Reader reader;
-  reader.SetFileName(path.c_str());
-  if (!reader.Read()) return false;
-  gdcm::Attribute<0x0020, 0x0032> ipp;
-  ipp.SetValues(s.position.data(), 3);
-  reader.GetFile().GetDataSet().Replace(ipp.GetAsDataElement());
-  gdcm::Writer plain;
-  plain.SetFile(reader.GetFile());
-  plain.SetFileName(path.c_str());
-  return plain.Write();
+  return editDicom(path, [&](gdcm::DataSet& ds) {
+    gdcm::Attribute<0x0020, 0x0032> ipp;
+    ipp.SetValues(s.position.data(), 3);
+    ds.Replace(ipp.GetAsDataElement());
+  });
 }
 
 // A folder of `count` slices 2 apart along z, in shuffled file names.
@@ -211,53 +221,47 @@ inline bool writeEnhancedDicom(const std::string& path, const EnhancedDicomSpec&
   writer.SetFileName(path.c_str());
   if (!writer.Write()) return false;
   // Then the geometry moved into the functional groups, as enhanced files hold it.
-  gdcm::Reader reader;
-  reader.SetFileName(path.c_str());
-  if (!reader.Read()) return false;
-  gdcm::DataSet& ds = reader.GetFile().GetDataSet();
-  for (const gdcm::Tag& t :
-       {gdcm::Tag(0x0020, 0x0032), gdcm::Tag(0x0020, 0x0037), gdcm::Tag(0x0028, 0x0030),
-        gdcm::Tag(0x5200, 0x9229), gdcm::Tag(0x5200, 0x9230)})
-    ds.Remove(t);
-  gdcm::Attribute<0x0008, 0x0016> enhanced;
-  enhanced.SetValue("1.2.840.10008.5.1.4.1.1.2.1");  // Enhanced CT Image Storage
-  ds.Replace(enhanced.GetAsDataElement());
-  gdcm::DataSet measures, orientation, shared;
-  gdcm::Attribute<0x0028, 0x0030> spacing;
-  const double sp[2] = {s.rowSpacing, s.columnSpacing};
-  spacing.SetValues(sp, 2);
-  measures.Insert(spacing.GetAsDataElement());
-  gdcm::Attribute<0x0020, 0x0037> iop;
-  const double cosines[6] = {1, 0, 0, 0, 1, 0};
-  iop.SetValues(cosines, 6);
-  orientation.Insert(iop.GetAsDataElement());
-  shared.Insert(sequenceOf(gdcm::Tag(0x0028, 0x9110), {measures}));
-  shared.Insert(sequenceOf(gdcm::Tag(0x0020, 0x9116), {orientation}));
-  gdcm::DataSet transformation;
-  gdcm::Attribute<0x0028, 0x1052> intercept;
-  intercept.SetValue(s.intercept);
-  transformation.Insert(intercept.GetAsDataElement());
-  gdcm::Attribute<0x0028, 0x1053> slope;
-  slope.SetValue(s.slope);
-  transformation.Insert(slope.GetAsDataElement());
-  shared.Insert(sequenceOf(gdcm::Tag(0x0028, 0x9145), {transformation}));
-  ds.Insert(sequenceOf(gdcm::Tag(0x5200, 0x9229), {shared}));
-  std::vector<gdcm::DataSet> perFrame;
-  const int items = s.perFrameItems < 0 ? int(frames) : s.perFrameItems;
-  for (int f = 0; f < items; ++f) {
-    gdcm::DataSet position, item;
-    gdcm::Attribute<0x0020, 0x0032> ipp;
-    const double p[3] = {10.0, 20.0, s.frameZ[size_t(f) % frames]};
-    ipp.SetValues(p, 3);
-    position.Insert(ipp.GetAsDataElement());
-    item.Insert(sequenceOf(gdcm::Tag(0x0020, 0x9113), {position}));
-    perFrame.push_back(item);
-  }
-  ds.Insert(sequenceOf(gdcm::Tag(0x5200, 0x9230), perFrame));
-  gdcm::Writer plain;
-  plain.SetFile(reader.GetFile());
-  plain.SetFileName(path.c_str());
-  return plain.Write();
+  return editDicom(path, [&](gdcm::DataSet& ds) {
+    for (const gdcm::Tag& t :
+         {gdcm::Tag(0x0020, 0x0032), gdcm::Tag(0x0020, 0x0037), gdcm::Tag(0x0028, 0x0030),
+          gdcm::Tag(0x5200, 0x9229), gdcm::Tag(0x5200, 0x9230)})
+      ds.Remove(t);
+    gdcm::Attribute<0x0008, 0x0016> enhanced;
+    enhanced.SetValue("1.2.840.10008.5.1.4.1.1.2.1");  // Enhanced CT Image Storage
+    ds.Replace(enhanced.GetAsDataElement());
+    gdcm::DataSet measures, orientation, shared;
+    gdcm::Attribute<0x0028, 0x0030> spacing;
+    const double sp[2] = {s.rowSpacing, s.columnSpacing};
+    spacing.SetValues(sp, 2);
+    measures.Insert(spacing.GetAsDataElement());
+    gdcm::Attribute<0x0020, 0x0037> iop;
+    const double cosines[6] = {1, 0, 0, 0, 1, 0};
+    iop.SetValues(cosines, 6);
+    orientation.Insert(iop.GetAsDataElement());
+    shared.Insert(sequenceOf(gdcm::Tag(0x0028, 0x9110), {measures}));
+    shared.Insert(sequenceOf(gdcm::Tag(0x0020, 0x9116), {orientation}));
+    gdcm::DataSet transformation;
+    gdcm::Attribute<0x0028, 0x1052> intercept;
+    intercept.SetValue(s.intercept);
+    transformation.Insert(intercept.GetAsDataElement());
+    gdcm::Attribute<0x0028, 0x1053> slope;
+    slope.SetValue(s.slope);
+    transformation.Insert(slope.GetAsDataElement());
+    shared.Insert(sequenceOf(gdcm::Tag(0x0028, 0x9145), {transformation}));
+    ds.Insert(sequenceOf(gdcm::Tag(0x5200, 0x9229), {shared}));
+    std::vector<gdcm::DataSet> perFrame;
+    const int items = s.perFrameItems < 0 ? int(frames) : s.perFrameItems;
+    for (int f = 0; f < items; ++f) {
+      gdcm::DataSet position, item;
+      gdcm::Attribute<0x0020, 0x0032> ipp;
+      const double p[3] = {10.0, 20.0, s.frameZ[size_t(f) % frames]};
+      ipp.SetValues(p, 3);
+      position.Insert(ipp.GetAsDataElement());
+      item.Insert(sequenceOf(gdcm::Tag(0x0020, 0x9113), {position}));
+      perFrame.push_back(item);
+    }
+    ds.Insert(sequenceOf(gdcm::Tag(0x5200, 0x9230), perFrame));
+  });
 }
 
 // Rewrites the DICOM file at `path` in another transfer syntax (RLE or JPEG lossless, ...).
