@@ -8,6 +8,7 @@
 #include "app/heap_tuning.h"
 #include "app/one_line.h"
 #include "app/options.h"
+#include "app/pick_output.h"
 #include "app/scene.h"
 #include "app/turntable.h"
 #include "io/viewer_settings.h"
@@ -103,6 +104,10 @@ int main(int argc, char** argv) {
     ewa::Scene scene = ewa::loadScene(options);
     if (options.info) {
       std::cout << ewa::volumeInfoJson(scene.volume) << "\n";
+      return 0;
+    }
+    if (options.pick) {
+      std::cout << ewa::pickJson(scene, options) << "\n";
       return 0;
     }
     if (const std::string note = ewa::renderNote(options); !note.empty())

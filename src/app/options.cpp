@@ -40,6 +40,13 @@ void applyCloseUp(const CLI::App& app, RenderOptionText* text, RenderSettings* s
   if (app.count("--cutoff") == 0) settings->cutoff = closeUp.cutoff;
 }
 
+// A number as typed, without trailing zeros ("12", "3.5").
+std::string numberText(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
 }  // namespace
 
 std::string optionWithNan(int argc, const char* const* argv) {
@@ -96,6 +103,12 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                "gpu_bytes, gpu_bytes_per_splat, peak_rss)");
   app.add_flag("--info", o->info,
                "Print dims, spacing, type, value range, direction and notes as JSON and exit");
+  std::vector<double> pick;
+  app.add_option("--pick", pick,
+                 "Print what pixel X,Y (column, row from the top left) of the --resolution "
+                 "picture shows (world point, voxel, value) as JSON and exit")
+      ->delimiter(',')
+      ->expected(2);
   app.add_option("--series", o->load.series, "DICOM: open the series with this SeriesInstanceUID");
   app.add_option("--frame", o->load.frame, "4D NIfTI: open this frame (default 0)")
       ->check(CLI::Range(0, 1 << 30));
@@ -223,6 +236,15 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!res.empty()) {
     o->width = res[0];
     o->height = res[1];
+  }
+  if (!pick.empty()) {
+    if (o->info || !o->output.empty())
+      return usage("--pick prints JSON and exits: not with --info or --output");
+    if (pick[0] < 0.0 || pick[1] < 0.0 || pick[0] >= o->width || pick[1] >= o->height)
+      return usage("--pick " + numberText(pick[0]) + "," + numberText(pick[1]) +
+                   " lies outside the " + std::to_string(o->width) + "x" +
+                   std::to_string(o->height) + " picture");
+    o->pick = glm::dvec2(pick[0], pick[1]);
   }
   o->cameraPosition = toVec3(pos);
   o->cameraFocalPoint = toVec3(focal);

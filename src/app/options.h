@@ -1,10 +1,10 @@
 // Options: everything the command line can set, parsed with CLI11.
 #pragma once
 
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
-
-#include <glm/vec3.hpp>
 
 #include "io/volume_loader.h"
 #include "render/renderer.h"
@@ -12,17 +12,18 @@
 namespace ewa {
 
 struct Options {
-  std::string file;            // volume file; empty: --synthetic or the default asset
-  std::string synthetic;       // "sphere:64", ...
-  std::string output;          // PNG path: render headless and exit
-  int turntable = 0;           // > 0: that many frames over 360 degrees, --output a pattern or folder
-  int fps = 30;                // frames per second of a turntable written as a video
-  std::string configDir;       // the window's settings folder; empty: defaultConfigDir()
-  std::string recordCameraPath;  // the window writes every camera it draws to this file on exit
-  bool resolutionGiven = false;      // --resolution was given (overrides the saved window size)
-  bool renderOptionsGiven = false;   // a render option was given (overrides the saved ones)
-  bool info = false;           // print the volume's description as JSON and exit
-  bool stats = false;          // after --output, print the frame's statistics as one JSON line
+  std::string file;       // volume file; empty: --synthetic or the default asset
+  std::string synthetic;  // "sphere:64", ...
+  std::string output;     // PNG path: render headless and exit
+  int turntable = 0;      // > 0: that many frames over 360 degrees, --output a pattern or folder
+  int fps = 30;           // frames per second of a turntable written as a video
+  std::string configDir;  // the window's settings folder; empty: defaultConfigDir()
+  std::string recordCameraPath;     // the window writes every camera it draws to this file on exit
+  bool resolutionGiven = false;     // --resolution was given (overrides the saved window size)
+  bool renderOptionsGiven = false;  // a render option was given (overrides the saved ones)
+  bool info = false;                // print the volume's description as JSON and exit
+  bool stats = false;               // after --output, print the frame's statistics as one JSON line
+  std::optional<glm::dvec2> pick;   // --pick X,Y: print what that pixel shows as JSON and exit
   int width = 800;
   int height = 600;
   std::optional<glm::dvec3> cameraPosition;
@@ -33,8 +34,8 @@ struct Options {
   RenderSettings render;
   std::string tfFile;
   std::string backend = "osmesa";
-  std::string shaderDir;       // load shaders from this folder instead of the embedded ones
-  LoadOptions load;            // --series, --frame, --channel
+  std::string shaderDir;  // load shaders from this folder instead of the embedded ones
+  LoadOptions load;       // --series, --frame, --channel
   // Plain raw input.
   std::string rawDims, rawType, rawSpacing = "1,1,1", rawEndian = "little";
 };
