@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (options.pick) {
-      std::cout << ewa::pickJson(scene, options) << "\n";
+      std::cout << ewa::pickJson(scene.volume, scene.transferFunction, options) << "\n";
       return 0;
     }
     if (const std::string note = ewa::renderNote(options); !note.empty())

@@ -5,22 +5,18 @@
 
 namespace ewa {
 
-PickRule pickRuleFor(RenderMode mode) {
-  return mode == RenderMode::Mip ? PickRule::MaximumValue : PickRule::Opacity;
-}
-
-std::string pickJson(const Scene& scene, const Options& options) {
-  const Camera camera = initialCamera(scene.volume, options);
+std::string pickJson(const Volume& volume, const TransferFunction& tf, const Options& options) {
+  const Camera camera = initialCamera(volume, options);
   const glm::dvec2 pixel = *options.pick;
   const PickResult r =
-      pickVolume(scene.volume, scene.transferFunction, options.render.clip,
+      pickVolume(volume, tf, options.render.clip,
                  pickRay(camera, options.width, options.height, pixel + glm::dvec2(0.5)),
                  pickRuleFor(options.render.mode));
   nlohmann::ordered_json j;  // keeps the documented key order
   j["pixel"] = {pixel.x, pixel.y};
   j["hit"] = r.hit;
   if (r.hit) {
-    const glm::ivec3 voxel = nearestVoxel(scene.volume, r.index);
+    const glm::ivec3 voxel = nearestVoxel(volume, r.index);
     j["world"] = {r.world.x, r.world.y, r.world.z};
     j["index"] = {r.index.x, r.index.y, r.index.z};
     j["voxel"] = {voxel.x, voxel.y, voxel.z};

@@ -111,7 +111,7 @@ PickResult pickVolume(const Volume& volume, const TransferFunction& tf, const Cl
     double best = -std::numeric_limits<double>::infinity(), bestT = 0.0;
     for (int64_t n = 0; n <= steps; ++n) {
       const double t = span.near + double(n) * step, v = valueAt(t);
-      if (std::isfinite(v) && v > best) best = v, bestT = t;
+      if (std::isfinite(v) && v > best && tf.alphaAt(v) > 0.0) best = v, bestT = t;
     }
     return std::isfinite(best) ? hitAt(bestT) : none;
   }

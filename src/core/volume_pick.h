@@ -18,7 +18,8 @@ enum class PickRule {
   // total (the median depth of what the pixel shows: the surface of an opaque object, the
   // middle of a haze). Rays whose total opacity stays under kPickMinOpacity show nothing.
   Opacity,
-  // MIP: where the largest value along the ray lies.
+  // MIP: where the largest value along the ray lies, among those the transfer function shows
+  // (opacity > 0: the voxels MIP draws).
   MaximumValue,
 };
 

@@ -80,6 +80,14 @@ the histogram, as on the command line.)")
           py::arg("path"), py::arg("frames") = 36, py::arg("fps") = 30,
           "Writes `frames` pictures over 360 degrees about view-up like --turntable: a .mp4 or "
           ".webm video at `fps`, a %d pattern ending in .png, or a folder of PNGs.")
+      .def(
+          "pick",
+          [](PythonScene& s, double x, double y, py::kwargs overrides) {
+            return s.pick(x, y, overrides);
+          },
+          py::arg("x"), py::arg("y"),
+          "What pixel (x, y) (column, row from the top left) of render()'s picture shows, as "
+          "--pick prints it: a dict with hit, world, index, voxel, value, opacity, distance.")
       .def("_repr_png_", [](PythonScene& s) { return s.png(py::dict()); })
       .def_property_readonly("info", &PythonScene::info,
                              "dims, spacing, type, range (as --info prints) and name.")

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "app/headless.h"
+#include "app/pick_output.h"
 #include "app/scene.h"
 #include "core/camera_views.h"
 #include "core/transfer_function_presets.h"
@@ -226,6 +227,16 @@ py::array_t<uint8_t> PythonScene::render(const py::dict& overrides) {
 py::bytes PythonScene::png(const py::dict& overrides) {
   const std::string bytes = encodePng(renderImage(overrides));
   return py::bytes(bytes);
+}
+
+py::dict PythonScene::pick(double x, double y, const py::dict& overrides) {
+  Options o = renderOptions(overrides);
+  if (!(x >= 0.0 && y >= 0.0 && x < o.width && y < o.height))
+    throw UsageError("pick: pixel (" + py::str(py::float_(x)).cast<std::string>() + ", " +
+                     py::str(py::float_(y)).cast<std::string>() + ") lies outside the " +
+                     std::to_string(o.width) + "x" + std::to_string(o.height) + " picture");
+  o.pick = glm::dvec2(x, y);
+  return py::dict(fromJson(pickJson(*volume_, tf_, o)));
 }
 
 py::dict PythonScene::info() const {

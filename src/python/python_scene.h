@@ -43,6 +43,8 @@ class PythonScene {
   // The same picture as PNG bytes, for Jupyter.
   pybind11::bytes png(const pybind11::dict& overrides);
   pybind11::dict info() const;
+  // What pixel (x, y) of render(**overrides)'s picture shows, as --pick prints it, as a dict.
+  pybind11::dict pick(double x, double y, const pybind11::dict& overrides);
   // The voxels as loaded (scaled and flipped as the renderers see them), a new [z, y, x] array
   // of the volume's type.
   pybind11::array array() const;

@@ -14,9 +14,8 @@ constexpr NamedValue<OcclusionCulling> kOcclusionCulling[] = {
     {OcclusionCulling::Auto, "auto"}, {OcclusionCulling::On, "on"}, {OcclusionCulling::Off, "off"}};
 constexpr NamedValue<SlabPrecision> kSlabPrecision[] = {
     {SlabPrecision::Auto, "auto"}, {SlabPrecision::Half, "half"}, {SlabPrecision::Float, "float"}};
-constexpr NamedValue<PostNormals> kPostNormals[] = {{PostNormals::Field, "field"},
-                                                    {PostNormals::Voxel, "voxel"},
-                                                    {PostNormals::Ray, "ray"}};
+constexpr NamedValue<PostNormals> kPostNormals[] = {
+    {PostNormals::Field, "field"}, {PostNormals::Voxel, "voxel"}, {PostNormals::Ray, "ray"}};
 constexpr NamedValue<Splatter> kSplatter[] = {
     {Splatter::Raster, "raster"}, {Splatter::Tiles, "tiles"}, {Splatter::Auto, "auto"}};
 constexpr NamedValue<RenderMode> kRenderMode[] = {
@@ -68,6 +67,10 @@ bool parseSplatter(const std::string& text, Splatter* splatter) {
 
 const char* renderModeName(RenderMode mode) {
   return nameIn(kRenderMode, mode);
+}
+
+PickRule pickRuleFor(RenderMode mode) {
+  return mode == RenderMode::Mip ? PickRule::MaximumValue : PickRule::Opacity;
 }
 
 bool parseRenderMode(const std::string& text, RenderMode* mode) {

@@ -17,6 +17,7 @@
 #include "core/splat_attributes.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
+#include "core/volume_pick.h"
 
 namespace ewa {
 
@@ -28,6 +29,9 @@ enum class CompositeOrder { FrontToBack = 0, BackToFront = 1 };
 enum class XRayMap { Attenuation = 0, Sum = 1 };
 
 const char* renderModeName(RenderMode mode);
+// What a pick (--pick, the window's probe) looks for in this mode: MIP the brightest point shown,
+// composite and X-ray the median depth of the pixel's opacity.
+PickRule pickRuleFor(RenderMode mode);
 bool parseRenderMode(const std::string& text, RenderMode* mode);
 const char* compositeOrderName(CompositeOrder order);
 bool parseCompositeOrder(const std::string& text, CompositeOrder* order);

@@ -1,8 +1,10 @@
 // ViewerWindow's panels and commands: the control, session and file panels, key commands,
 // dropped files, bookmarks and the settings saved on exit.
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
@@ -36,6 +38,49 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   applySessionEdits(session_.draw(sessionView()), fb, screenshotNow);
   if (const auto chosen = fileDialog_.draw()) startLoad(*chosen);
   if (frameStats_.refineProgress >= 0.0) drawRefinementOverlay(frameStats_.refineProgress);
+  updateProbe();
+  probe_.draw(frameStats_.refineProgress >= 0.0);
+}
+
+void ViewerWindow::updateProbe() {
+  GLFWwindow* w = window_.window();
+  std::optional<glm::dvec2> cursor;
+  glm::ivec2 size(0);
+  glfwGetWindowSize(w, &size.x, &size.y);
+  // Over the picture only: not over a panel, not while a drag moves the camera.
+  if (!controller_.dragging() && !ImGui::GetIO().WantCaptureMouse &&
+      glfwGetWindowAttrib(w, GLFW_HOVERED)) {
+    glm::dvec2 at;
+    glfwGetCursorPos(w, &at.x, &at.y);
+    if (at.x >= 0.0 && at.y >= 0.0 && at.x < size.x && at.y < size.y) cursor = at;
+  }
+  const ProbeStamp stamp{current_.volume.get(), controller_.revision(), settingsRevision_,
+                         liveTf_.revision()};
+  probe_.update(*current_.volume, current_.tf, settings_, controller_.camera(), size, cursor,
+                stamp);
+  if (printLayout_ && probe_.changed()) {
+    std::printf("probe %s\n", probe_.text().c_str());
+    std::fflush(stdout);
+  }
+}
+
+void ViewerWindow::centreOnCursor() {
+  GLFWwindow* w = window_.window();
+  glm::ivec2 size(0);
+  glfwGetWindowSize(w, &size.x, &size.y);
+  const glm::dvec2 at(input_.doubleClickX(), input_.doubleClickY());
+  const PickResult pick =
+      pickVolume(*current_.volume, current_.tf, settings_.clip,
+                 pickRay(controller_.camera(), size.x, size.y, at), pickRuleFor(settings_.mode));
+  if (!pick.hit) {
+    info("nothing under the cursor to centre on");
+    return;
+  }
+  controller_.setCamera(centredOn(controller_.camera(), pick.world));
+  if (printLayout_) {
+    std::printf("centre %g %g %g\n", pick.world.x, pick.world.y, pick.world.z);
+    std::fflush(stdout);
+  }
 }
 
 // Window size, render settings, recent files and the panel layout, for the next run.
@@ -83,6 +128,9 @@ void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
         break;
       case KeyCommand::OpenFile:
         openDialog();
+        break;
+      case KeyCommand::CentreOnCursor:
+        centreOnCursor();
         break;
       default: {
         const int index = int(c) - int(KeyCommand::ViewPlusX);

@@ -19,6 +19,7 @@
 #include "render/lod_renderer.h"
 #include "ui/bookmark_store.h"
 #include "ui/control_panel.h"
+#include "ui/cursor_probe.h"
 #include "ui/file_dialog.h"
 #include "ui/image_presenter.h"
 #include "ui/imgui_layer.h"
@@ -97,6 +98,9 @@ class ViewerWindow {
   void drawPanels(const glm::ivec2& fb, bool* screenshotNow);
   void applyCommands(const glm::ivec2& fb, bool* screenshotNow);
   void showAxisView(AxisView v, const glm::ivec2& fb);
+  // The probe line under the cursor, and a double-click's new centre of rotation.
+  void updateProbe();
+  void centreOnCursor();
   void applySessionEdits(const SessionEdits& e, const glm::ivec2& fb, bool* screenshotNow);
   SessionView sessionView();
   void saveBookmarks();
@@ -121,6 +125,7 @@ class ViewerWindow {
   ImGuiLayer imgui_;
   ControlPanel panel_;
   SessionPanel session_;
+  CursorProbe probe_;
   LiveTransferFunction liveTf_;  // after current_ and lod_: its worker ends before they go
   FileDialog fileDialog_;
   StatusMessages messages_;

@@ -3,6 +3,7 @@
 
 #include <GLFW/glfw3.h>
 
+#include <cmath>
 #include <utility>
 
 #include "core/camera_controller.h"
@@ -56,9 +57,13 @@ bool WindowInput::takeActivity() {
   return any;
 }
 
-std::vector<KeyCommand> WindowInput::takeCommands() { return std::exchange(commands_, {}); }
+std::vector<KeyCommand> WindowInput::takeCommands() {
+  return std::exchange(commands_, {});
+}
 
-std::vector<std::string> WindowInput::takeDroppedPaths() { return std::exchange(dropped_, {}); }
+std::vector<std::string> WindowInput::takeDroppedPaths() {
+  return std::exchange(dropped_, {});
+}
 
 void WindowInput::onDrop(GLFWwindow* window, int count, const char** paths) {
   WindowInput& self = from(window);
@@ -75,10 +80,17 @@ void WindowInput::onMouseButton(GLFWwindow* window, int button, int action, int 
   self.activity_ = true;
   MouseButton which;
   switch (button) {
-    case GLFW_MOUSE_BUTTON_LEFT: which = MouseButton::Left; break;
-    case GLFW_MOUSE_BUTTON_MIDDLE: which = MouseButton::Middle; break;
-    case GLFW_MOUSE_BUTTON_RIGHT: which = MouseButton::Right; break;
-    default: return;
+    case GLFW_MOUSE_BUTTON_LEFT:
+      which = MouseButton::Left;
+      break;
+    case GLFW_MOUSE_BUTTON_MIDDLE:
+      which = MouseButton::Middle;
+      break;
+    case GLFW_MOUSE_BUTTON_RIGHT:
+      which = MouseButton::Right;
+      break;
+    default:
+      return;
   }
   if (action == GLFW_RELEASE) {
     self.controller_.releaseButton(which);  // always, so a drag never sticks
@@ -87,6 +99,20 @@ void WindowInput::onMouseButton(GLFWwindow* window, int button, int action, int 
   if (action != GLFW_PRESS || self.uiWantsMouse_) return;
   double x = 0.0, y = 0.0;
   glfwGetCursorPos(window, &x, &y);
+  if (which == MouseButton::Left && !(mods & GLFW_MOD_SHIFT)) {
+    const double t = glfwGetTime();
+    if (t - self.lastLeftPress_ <= kDoubleClickSeconds &&
+        std::hypot(x - self.lastLeftX_, y - self.lastLeftY_) <= kDoubleClickPixels) {
+      self.commands_.push_back(KeyCommand::CentreOnCursor);
+      self.doubleClickX_ = x;
+      self.doubleClickY_ = y;
+      self.lastLeftPress_ = -1e9;  // a third click starts a new pair
+    } else {
+      self.lastLeftPress_ = t;
+      self.lastLeftX_ = x;
+      self.lastLeftY_ = y;
+    }
+  }
   self.controller_.pressButton(which, (mods & GLFW_MOD_SHIFT) != 0, x, y);
 }
 
@@ -107,24 +133,45 @@ void WindowInput::onKey(GLFWwindow* window, int key, int scancode, int action, i
   self.activity_ = true;
   if (action != GLFW_PRESS || self.uiWantsKeyboard_) return;
   switch (key) {
-    case GLFW_KEY_R: self.controller_.reset(); break;
-    case GLFW_KEY_F12: self.commands_.push_back(KeyCommand::Screenshot); break;
+    case GLFW_KEY_R:
+      self.controller_.reset();
+      break;
+    case GLFW_KEY_F12:
+      self.commands_.push_back(KeyCommand::Screenshot);
+      break;
     case GLFW_KEY_O:
       if (mods & GLFW_MOD_CONTROL) self.commands_.push_back(KeyCommand::OpenFile);
       break;
     // 1..6: views along +X, -X, +Y, -Y, +Z, -Z (the order of the panel's buttons).
-    case GLFW_KEY_1: self.commands_.push_back(KeyCommand::ViewPlusX); break;
-    case GLFW_KEY_2: self.commands_.push_back(KeyCommand::ViewMinusX); break;
-    case GLFW_KEY_3: self.commands_.push_back(KeyCommand::ViewPlusY); break;
-    case GLFW_KEY_4: self.commands_.push_back(KeyCommand::ViewMinusY); break;
-    case GLFW_KEY_5: self.commands_.push_back(KeyCommand::ViewPlusZ); break;
-    case GLFW_KEY_6: self.commands_.push_back(KeyCommand::ViewMinusZ); break;
+    case GLFW_KEY_1:
+      self.commands_.push_back(KeyCommand::ViewPlusX);
+      break;
+    case GLFW_KEY_2:
+      self.commands_.push_back(KeyCommand::ViewMinusX);
+      break;
+    case GLFW_KEY_3:
+      self.commands_.push_back(KeyCommand::ViewPlusY);
+      break;
+    case GLFW_KEY_4:
+      self.commands_.push_back(KeyCommand::ViewMinusY);
+      break;
+    case GLFW_KEY_5:
+      self.commands_.push_back(KeyCommand::ViewPlusZ);
+      break;
+    case GLFW_KEY_6:
+      self.commands_.push_back(KeyCommand::ViewMinusZ);
+      break;
     case GLFW_KEY_ESCAPE:
-    case GLFW_KEY_Q: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
-    default: break;
+    case GLFW_KEY_Q:
+      glfwSetWindowShouldClose(window, GLFW_TRUE);
+      break;
+    default:
+      break;
   }
 }
 
-void WindowInput::onOtherEvent(GLFWwindow* window) { from(window).activity_ = true; }
+void WindowInput::onOtherEvent(GLFWwindow* window) {
+  from(window).activity_ = true;
+}
 
 }  // namespace ewa

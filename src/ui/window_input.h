@@ -8,9 +8,18 @@ struct GLFWwindow;
 
 namespace ewa {
 
-// Keys that ask the viewer (not the camera) to do something.
-enum class KeyCommand { Screenshot, OpenFile, ViewPlusX, ViewMinusX, ViewPlusY, ViewMinusY,
-                        ViewPlusZ, ViewMinusZ };
+// Keys (and a double-click) that ask the viewer, not the camera, to do something.
+enum class KeyCommand {
+  Screenshot,
+  OpenFile,
+  ViewPlusX,
+  ViewMinusX,
+  ViewPlusY,
+  ViewMinusY,
+  ViewPlusZ,
+  ViewMinusZ,
+  CentreOnCursor
+};
 
 class CameraController;
 
@@ -34,6 +43,13 @@ class WindowInput {
   // Key commands and dropped file paths since the last call, oldest first.
   std::vector<KeyCommand> takeCommands();
   std::vector<std::string> takeDroppedPaths();
+  // Where the last double-click on the picture was (window coordinates): CentreOnCursor's point.
+  double doubleClickX() const { return doubleClickX_; }
+  double doubleClickY() const { return doubleClickY_; }
+
+  // Two left presses at most this far apart in time and space make a double-click.
+  static constexpr double kDoubleClickSeconds = 0.35;
+  static constexpr double kDoubleClickPixels = 4.0;
 
  private:
   static WindowInput& from(GLFWwindow* window);
@@ -51,6 +67,9 @@ class WindowInput {
   bool activity_ = true;  // draw the first frames
   std::vector<KeyCommand> commands_;
   std::vector<std::string> dropped_;
+  double lastLeftPress_ = -1e9;  // glfwGetTime of the last left press on the picture
+  double lastLeftX_ = 0.0, lastLeftY_ = 0.0;
+  double doubleClickX_ = 0.0, doubleClickY_ = 0.0;
 };
 
 }  // namespace ewa

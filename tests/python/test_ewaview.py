@@ -184,6 +184,27 @@ def test_bad_input_raises_the_command_line_s_messages(cli, out_dir):
         ewaview.Scene(np.zeros((2, 2, 2), np.uint8), spacing=(1, 1))
 
 
+def test_pick_is_what_the_command_line_prints(cli):
+    scene = ewaview.Scene(synthetic="sphere:32", resolution=(80, 60),
+                          camera_focal_point=(27, 6, 15.5), camera_position=(27, 6, 110))
+    for x, y, extra in [(20, 15, {}), (70, 50, {}), (20, 15, dict(render_mode="mip"))]:
+        words = ["--synthetic", "sphere:32", "--resolution", "80,60", "--camera-focal-point",
+                 "27,6,15.5", "--camera-position", "27,6,110", "--pick", f"{x},{y}"]
+        run = cli.run(*words, *cli_words(extra))
+        assert run.returncode == 0, run.stderr
+        expected = json.loads(run.stdout)
+        got = scene.pick(x, y, **extra)
+        assert got == expected
+    # The ball is in the upper left, the background in the lower right.
+    assert scene.pick(20, 15)["hit"] and not scene.pick(70, 50)["hit"]
+    assert set(scene.pick(20, 15)) == {"pixel", "hit", "world", "index", "voxel", "value",
+                                       "opacity", "distance"}
+    with pytest.raises(ValueError, match="outside the 80x60 picture"):
+        scene.pick(80, 10)
+    with pytest.raises(ValueError, match="pick: not an option"):
+        scene.render(pick=(1, 1))
+
+
 @pytest.mark.filterwarnings("ignore:shear-warp renders parallel projection")
 def test_turntable_writes_what_the_command_line_writes(cli, out_dir):
     scene = ewaview.Scene(synthetic="marschner-lobb:24", resolution=(48, 40))

@@ -188,15 +188,24 @@ TEST(VolumePick, MaximumIntensityPicksTheBrightestPoint) {
     if (j == 16 && k == 16 && i == 25) return 60.0;
     return 5.0;
   });
-  // Along +x through row (16, 16): the brightest voxel is i = 7, whatever the opacity says.
-  TransferFunction clear;
-  clear.opacity = {{0.0, 0.0}, {255.0, 0.0}};
-  const PickResult r =
-      pickVolume(v, clear, ClipRegion(), PickRay{{-10.0, 16.0, 16.0}, {1.0, 0.0, 0.0}},
-                 PickRule::MaximumValue);
+  // Along +x through row (16, 16): the brightest voxel is i = 7, however opaque it is.
+  TransferFunction faint;
+  faint.opacity = {{0.0, 0.0}, {50.0, 0.001}, {255.0, 0.001}};
+  const PickRay row{{-10.0, 16.0, 16.0}, {1.0, 0.0, 0.0}};
+  const PickResult r = pickVolume(v, faint, ClipRegion(), row, PickRule::MaximumValue);
   ASSERT_TRUE(r.hit);
   EXPECT_NEAR(r.index.x, 7.0, 0.13);
   EXPECT_NEAR(r.value, 90.0, 5.0);
+  // Values the function hides are not drawn, so not picked: with 50 to 62 shown, 60 at i = 25 is
+  // the brightest (the samples around i = 7 step from 47.5 to 68.75).
+  TransferFunction band = faint;
+  band.opacity = {{0.0, 0.0}, {50.0, 0.001}, {62.0, 0.001}, {62.5, 0.0}, {255.0, 0.0}};
+  const PickResult shown = pickVolume(v, band, ClipRegion(), row, PickRule::MaximumValue);
+  ASSERT_TRUE(shown.hit);
+  EXPECT_NEAR(shown.index.x, 25.0, 0.13);
+  TransferFunction clear;
+  clear.opacity = {{0.0, 0.0}, {255.0, 0.0}};
+  EXPECT_FALSE(pickVolume(v, clear, ClipRegion(), row, PickRule::MaximumValue).hit);
 }
 
 TEST(VolumePick, NaNVoxelsAreTransparentAndHugeRaysStayBounded) {

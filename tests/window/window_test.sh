@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Scripted window test: starts the real ewaview under X, replays an orbit drag, a scroll zoom and
-# a transfer-function drag with xdotool, and checks the screenshots change as they should; then
+# Scripted window test: starts the real ewaview under X, replays an orbit drag, a scroll zoom, a
+# transfer-function drag and a double-click on the volume (the probe and the new centre) with
+# xdotool, and checks the screenshots change as they should; then
 # checks that an orbit drag is answered while a full-quality frame is being refined.
 # Usage: window_test.sh EWAVIEW_BINARY OUTPUT_DIR.  Exit 77 (CTest skip) without X tools, or
 # exit 1 when CI=true: CI must not pass by skipping.
@@ -157,6 +158,21 @@ greater "$m1" "$(awk -v a="$m0" 'BEGIN { print a * 1.2 }')" ||
 greater "$c1" "$c0" || fail "raising the opacity did not show more of the volume ($c0 -> $c1)"
 
 log "transfer-function edit checked"
+# Probe and double-click: with the cursor on the volume the viewer names the point it shows (a
+# "probe" line with its voxel and value, also drawn over the picture); a double-click there
+# makes that point the centre of the view (a "centre" line), so the picture moves.
+qx=$((415 + 85)); qy=250
+xdotool mousemove --window "$wid" $qx $qy; sleep 0.3
+xdotool mousemove --window "$wid" $((qx + 1)) $((qy + 1))
+probed() { grep -q '^probe x .* voxel .* value ' "$work/stdout"; }
+poll "a probe line naming the point under the cursor" probed
+shot "$work/probe.png"
+xdotool click --repeat 2 --delay 80 1
+centred() { grep -q '^centre ' "$work/stdout"; }
+poll "the double-click's centre line" centred
+settled "$out/7_centred.png" "$work/probe.png" "$volume_crop"
+
+log "probe and double-click checked"
 # Quit with Q: the process ends with status 0.
 xdotool key --window "$wid" q
 start=$SECONDS
