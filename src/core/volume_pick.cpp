@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 #include <limits>
@@ -152,6 +153,21 @@ glm::i64vec3 nearestVoxel(const Volume& volume, const glm::dvec3& index) {
     v[a] = int64_t(std::llround(std::clamp(index[a], 0.0, top)));
   }
   return v;
+}
+
+std::string describePick(const Volume& volume, const PickResult& pick,
+                         const std::optional<glm::dvec3>& mark) {
+  if (!pick.hit) return "";
+  const glm::i64vec3 voxel = nearestVoxel(volume, pick.index);
+  char text[200];
+  int n = std::snprintf(text, sizeof text,
+                        "x %.4g  y %.4g  z %.4g   voxel %lld, %lld, %lld   value %.6g",
+                        pick.world.x, pick.world.y, pick.world.z, (long long)voxel.x,
+                        (long long)voxel.y, (long long)voxel.z, pick.value);
+  if (mark && n > 0 && size_t(n) < sizeof text)
+    std::snprintf(text + n, sizeof text - size_t(n), "   %.4g from the mark",
+                  glm::length(pick.world - *mark));
+  return text;
 }
 
 Camera centredOn(const Camera& camera, const glm::dvec3& point) {

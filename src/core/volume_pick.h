@@ -4,6 +4,8 @@
 #include <glm/ext/vector_int3_sized.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
+#include <string>
 
 #include "core/camera.h"
 #include "core/clip_region.h"
@@ -59,6 +61,11 @@ double trilinearValue(const Volume& volume, const glm::dvec3& index);
 
 // The voxel nearest to continuous index coordinates, inside the grid.
 glm::i64vec3 nearestVoxel(const Volume& volume, const glm::dvec3& index);
+
+// One line naming a pick for people: "x 12.3  y -4.5  z 60.1   voxel 120, 88, 40   value
+// 87.25", with "   23.4 from the mark" when `mark` (a world point) is given; "" for a miss.
+std::string describePick(const Volume& volume, const PickResult& pick,
+                         const std::optional<glm::dvec3>& mark = std::nullopt);
 
 // The camera moved to orbit `point`: it becomes the focal point, in the middle of the view, at
 // the distance the eye had from it, looking the way the camera looked (view-up kept). What a

@@ -4,21 +4,12 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <glm/mat4x4.hpp>
 #include <utility>
 
 #include "render/renderer.h"
 
 namespace ewa {
-
-std::string probeText(const Volume& volume, const PickResult& pick) {
-  if (!pick.hit) return "";
-  const glm::i64vec3 voxel = nearestVoxel(volume, pick.index);
-  char text[160];
-  std::snprintf(text, sizeof text, "x %.4g  y %.4g  z %.4g   voxel %lld, %lld, %lld   value %.6g",
-                pick.world.x, pick.world.y, pick.world.z, (long long)voxel.x, (long long)voxel.y,
-                (long long)voxel.z, pick.value);
-  return text;
-}
 
 void CursorProbe::update(const Volume& volume, const TransferFunction& tf,
                          const RenderSettings& settings, const Camera& camera,
@@ -27,15 +18,16 @@ void CursorProbe::update(const Volume& volume, const TransferFunction& tf,
   changed_ = false;
   if (!cursor || windowSize.x <= 0 || windowSize.y <= 0) {
     shown_ = false;
+    last_ = PickResult();
     changed_ = !text_.empty();
     text_.clear();
     return;
   }
   if (shown_ && *cursor == cursor_ && stamp == stamp_) return;
-  const PickResult pick =
+  last_ =
       pickVolume(volume, tf, settings.clip, pickRay(camera, windowSize.x, windowSize.y, *cursor),
                  pickRuleFor(settings.mode));
-  std::string text = probeText(volume, pick);
+  std::string text = describePick(volume, last_, mark_);
   changed_ = text != text_;
   text_ = std::move(text);
   shown_ = true;
@@ -43,10 +35,28 @@ void CursorProbe::update(const Volume& volume, const TransferFunction& tf,
   stamp_ = stamp;
 }
 
-void CursorProbe::draw(bool lifted) const {
-  if (text_.empty()) return;
+void CursorProbe::setMark(std::optional<glm::dvec3> mark) {
+  mark_ = mark;
+  shown_ = false;  // the text changes with it
+}
+
+void CursorProbe::draw(bool lifted, const Camera& camera, glm::ivec2 windowSize) const {
   const ImGuiViewport* view = ImGui::GetMainViewport();
   ImDrawList* draw = ImGui::GetForegroundDrawList();
+  if (mark_ && windowSize.x > 0 && windowSize.y > 0) {
+    // The mark where the camera sees it, when it lies in front of the eye.
+    const glm::dvec3 c = glm::dvec3(camera.viewMatrix() * glm::dvec4(*mark_, 1.0));
+    const Projection p = camera.projection(windowSize.x, windowSize.y);
+    if (p.orthographic || c.z < 0.0) {
+      const glm::dvec2 lateral =
+          p.orthographic ? glm::dvec2(c) * p.pixelsPerUnit : glm::dvec2(c) / -c.z * p.focalPixels;
+      const ImVec2 at(view->Pos.x + float(p.principal.x + lateral.x),
+                      view->Pos.y + float(windowSize.y - (p.principal.y + lateral.y)));
+      draw->AddCircle(at, 6.0f, IM_COL32(0, 0, 0, 200), 16, 3.0f);
+      draw->AddCircle(at, 6.0f, IM_COL32(255, 220, 60, 255), 16, 1.5f);
+    }
+  }
+  if (text_.empty()) return;
   const ImVec2 size = ImGui::CalcTextSize(text_.c_str());
   // Bottom right, where the default layout leaves the picture uncovered; above the progress bar.
   const float lift = lifted ? size.y + 8.0f : 0.0f;

@@ -30,11 +30,16 @@ class CursorProbe {
   void update(const Volume& volume, const TransferFunction& tf, const RenderSettings& settings,
               const Camera& camera, glm::ivec2 windowSize, std::optional<glm::dvec2> cursor,
               const ProbeStamp& stamp);
-  // The line drawn over the picture's bottom-left corner; "" when nothing is under the cursor.
+  // The line drawn over the picture (describePick); "" when nothing is under the cursor.
   const std::string& text() const { return text_; }
-  // Draws text() over the picture's bottom-right corner (ImGui foreground), if any; `lifted`
-  // puts it a line higher, above the refinement's progress label.
-  void draw(bool lifted) const;
+  // The last pick (hit == false when nothing is under the cursor).
+  const PickResult& last() const { return last_; }
+  // A world point distances are measured from (the M key), or none.
+  void setMark(std::optional<glm::dvec3> mark);
+  const std::optional<glm::dvec3>& mark() const { return mark_; }
+  // Draws text() over the picture's bottom-right corner and the mark where `camera` sees it
+  // (ImGui foreground); `lifted` puts the text a line higher, above the refinement's label.
+  void draw(bool lifted, const Camera& camera, glm::ivec2 windowSize) const;
   // Whether text() changed in the last update (the layout log prints it then).
   bool changed() const { return changed_; }
 
@@ -43,10 +48,9 @@ class CursorProbe {
   bool changed_ = false;
   glm::dvec2 cursor_{-1.0};
   ProbeStamp stamp_;
+  PickResult last_;
+  std::optional<glm::dvec3> mark_;
   std::string text_;
 };
-
-// "x 12.3  y -4.5  z 60.1   voxel 120, 88, 40   value 87.25" for a hit, "" for a miss.
-std::string probeText(const Volume& volume, const PickResult& pick);
 
 }  // namespace ewa

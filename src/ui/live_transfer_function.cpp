@@ -75,8 +75,7 @@ std::string LiveTransferFunction::keep(const std::string& configDir, const std::
       return previous;
     }
   }
-  if (!editor_->lastFile().empty())
-    return std::filesystem::absolute(editor_->lastFile()).string();
+  if (!editor_->lastFile().empty()) return std::filesystem::absolute(editor_->lastFile()).string();
   return previous;
 }
 

@@ -1,10 +1,9 @@
 // SessionPanel: open/recent files, camera bookmarks, screenshot and turntable, progress, messages.
 #include "ui/session_panel.h"
 
-#include <algorithm>
-
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>

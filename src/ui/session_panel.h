@@ -31,7 +31,7 @@ struct SessionEdits {
   int applyBookmark = -1;
   int deleteBookmark = -1;
   bool screenshot = false;
-  int turntableFrames = 0;  // > 0: start a turntable of that many frames
+  int turntableFrames = 0;              // > 0: start a turntable of that many frames
   std::string turntableFormat = "png";  // "png" (a folder of frames), "mp4" or "webm"
   int turntableFps = 30;                // frames per second of a video
   bool cancelTurntable = false;

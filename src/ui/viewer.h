@@ -20,7 +20,7 @@ struct ViewerConfig {
   // empty: nothing is saved. `saved` holds what was read from it (recent files...).
   std::string configDir;
   ViewerSettings saved;
-  VolumeOpener opener;  // opens files from the dialog, drops and recent files
+  VolumeOpener opener;           // opens files from the dialog, drops and recent files
   std::string recordCameraPath;  // non-empty: every camera drawn is written here on exit
 };
 

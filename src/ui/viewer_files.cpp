@@ -27,6 +27,7 @@ void ViewerWindow::adopt(LoadedVolume loaded, bool newCamera) {
   refinement_.cancel();
   LoadedVolume old = std::move(current_);
   current_ = std::move(loaded);
+  probe_.setMark(std::nullopt);  // a point of the old volume
   lod_.setVolume(*current_.volume, current_.coarse);
   lod_.setTransferFunction(current_.tf);
   policy_.resetMeasurements();

@@ -39,7 +39,9 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   if (const auto chosen = fileDialog_.draw()) startLoad(*chosen);
   if (frameStats_.refineProgress >= 0.0) drawRefinementOverlay(frameStats_.refineProgress);
   updateProbe();
-  probe_.draw(frameStats_.refineProgress >= 0.0);
+  glm::ivec2 size(0);
+  glfwGetWindowSize(window_.window(), &size.x, &size.y);
+  probe_.draw(frameStats_.refineProgress >= 0.0, controller_.camera(), size);
 }
 
 void ViewerWindow::updateProbe() {
@@ -61,6 +63,28 @@ void ViewerWindow::updateProbe() {
   if (printLayout_ && probe_.changed()) {
     std::printf("probe %s\n", probe_.text().c_str());
     std::fflush(stdout);
+  }
+}
+
+void ViewerWindow::markUnderCursor() {
+  const PickResult& pick = probe_.last();
+  if (pick.hit) {
+    probe_.setMark(pick.world);
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "mark at %.4g, %.4g, %.4g: the probe line gives the distance from it (M on "
+                  "empty space clears it)",
+                  pick.world.x, pick.world.y, pick.world.z);
+    info(text);
+    if (printLayout_) {
+      std::printf("mark %g %g %g\n", pick.world.x, pick.world.y, pick.world.z);
+      std::fflush(stdout);
+    }
+  } else if (probe_.mark()) {
+    probe_.setMark(std::nullopt);
+    info("mark cleared");
+  } else {
+    info("nothing under the cursor to mark");
   }
 }
 
@@ -131,6 +155,9 @@ void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
         break;
       case KeyCommand::CentreOnCursor:
         centreOnCursor();
+        break;
+      case KeyCommand::MarkPoint:
+        markUnderCursor();
         break;
       default: {
         const int index = int(c) - int(KeyCommand::ViewPlusX);

@@ -101,6 +101,8 @@ class ViewerWindow {
   // The probe line under the cursor, and a double-click's new centre of rotation.
   void updateProbe();
   void centreOnCursor();
+  // The M key: the point under the cursor becomes the mark distances are measured from.
+  void markUnderCursor();
   void applySessionEdits(const SessionEdits& e, const glm::ivec2& fb, bool* screenshotNow);
   SessionView sessionView();
   void saveBookmarks();

@@ -18,7 +18,8 @@ enum class KeyCommand {
   ViewMinusY,
   ViewPlusZ,
   ViewMinusZ,
-  CentreOnCursor
+  CentreOnCursor,
+  MarkPoint
 };
 
 class CameraController;

@@ -224,6 +224,19 @@ TEST(VolumePick, NaNVoxelsAreTransparentAndHugeRaysStayBounded) {
   EXPECT_TRUE(far.hit);
 }
 
+TEST(VolumePick, DescriptionNamesThePointTheNearestVoxelTheValueAndTheMarksDistance) {
+  const Volume v = ball();
+  PickResult pick;
+  EXPECT_EQ(describePick(v, pick), "");  // a miss says nothing
+  pick.hit = true;
+  pick.world = {12.5, -3.25, 40.0};
+  pick.index = {16.4, 15.6, 40.7};  // past the grid's last slice: the nearest voxel is inside
+  pick.value = 87.25;
+  EXPECT_EQ(describePick(v, pick), "x 12.5  y -3.25  z 40   voxel 16, 16, 32   value 87.25");
+  EXPECT_EQ(describePick(v, pick, glm::dvec3(12.5, 0.75, 43.0)),
+            "x 12.5  y -3.25  z 40   voxel 16, 16, 32   value 87.25   5 from the mark");
+}
+
 TEST(VolumePick, CentringKeepsTheViewDirectionAndThePointsDepth) {
   Camera camera = lookingDownZ();
   camera.position = {20.0, 10.0, 90.0};

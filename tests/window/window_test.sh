@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Scripted window test: starts the real ewaview under X, replays an orbit drag, a scroll zoom, a
-# transfer-function drag and a double-click on the volume (the probe and the new centre) with
+# transfer-function drag, a double-click on the volume (the probe and the new centre) and a mark with
 # xdotool, and checks the screenshots change as they should; then
 # checks that an orbit drag is answered while a full-quality frame is being refined.
 # Usage: window_test.sh EWAVIEW_BINARY OUTPUT_DIR.  Exit 77 (CTest skip) without X tools, or
@@ -171,8 +171,20 @@ xdotool click --repeat 2 --delay 80 1
 centred() { grep -q '^centre ' "$work/stdout"; }
 poll "the double-click's centre line" centred
 settled "$out/7_centred.png" "$work/probe.png" "$volume_crop"
+# M marks the point under the cursor; moved elsewhere on the volume, the probe gives the
+# distance from the mark.
+xdotool mousemove --window "$wid" 560 300; sleep 0.3
+xdotool mousemove --window "$wid" 561 301
+poll "a probe line at the centre" probed
+xdotool key --window "$wid" m
+marked() { grep -q '^mark ' "$work/stdout"; }
+poll "the mark line" marked
+xdotool mousemove --window "$wid" 600 330; sleep 0.3
+xdotool mousemove --window "$wid" 601 331
+measured() { grep -q '^probe x .* from the mark$' "$work/stdout"; }
+poll "a probe line with the distance from the mark" measured
 
-log "probe and double-click checked"
+log "probe, double-click and mark checked"
 # Quit with Q: the process ends with status 0.
 xdotool key --window "$wid" q
 start=$SECONDS
