@@ -48,6 +48,16 @@ PickRay pickRay(const Camera& camera, int width, int height, const glm::dvec2& p
   return ray;
 }
 
+std::optional<glm::dvec2> windowPoint(const Camera& camera, int width, int height,
+                                      const glm::dvec3& p) {
+  const Projection proj = camera.projection(std::max(width, 1), std::max(height, 1));
+  const glm::dvec3 c = glm::dvec3(camera.viewMatrix() * glm::dvec4(p, 1.0));
+  if (!proj.orthographic && !(c.z < 0.0)) return std::nullopt;
+  const glm::dvec2 lateral = proj.orthographic ? glm::dvec2(c) * proj.pixelsPerUnit
+                                               : glm::dvec2(c) / -c.z * proj.focalPixels;
+  return glm::dvec2(proj.principal.x + lateral.x, proj.height - (proj.principal.y + lateral.y));
+}
+
 double trilinearValue(const Volume& volume, const glm::dvec3& index) {
   const auto& d = volume.dims();
   int64_t lo[3];

@@ -49,6 +49,11 @@ struct PickRay {
 // plane through the camera's position.
 PickRay pickRay(const Camera& camera, int width, int height, const glm::dvec2& point);
 
+// Where world point `p` appears in that picture, in the same window coordinates (the inverse of
+// pickRay); nullopt for a point at or behind the eye of a perspective camera.
+std::optional<glm::dvec2> windowPoint(const Camera& camera, int width, int height,
+                                      const glm::dvec3& p);
+
 // The point `ray` shows through the volume's field (trilinear between voxel centres, within the
 // data's box and `clip`), classified by `tf`, marched in steps of a quarter of the smallest
 // voxel spacing. A ray that misses the box, or shows nothing, gives hit == false.

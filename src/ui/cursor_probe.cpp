@@ -4,7 +4,6 @@
 #include <imgui.h>
 
 #include <cstdio>
-#include <glm/mat4x4.hpp>
 #include <utility>
 
 #include "render/renderer.h"
@@ -45,15 +44,10 @@ void CursorProbe::draw(bool lifted, const Camera& camera, glm::ivec2 windowSize)
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   if (mark_ && windowSize.x > 0 && windowSize.y > 0) {
     // The mark where the camera sees it, when it lies in front of the eye.
-    const glm::dvec3 c = glm::dvec3(camera.viewMatrix() * glm::dvec4(*mark_, 1.0));
-    const Projection p = camera.projection(windowSize.x, windowSize.y);
-    if (p.orthographic || c.z < 0.0) {
-      const glm::dvec2 lateral =
-          p.orthographic ? glm::dvec2(c) * p.pixelsPerUnit : glm::dvec2(c) / -c.z * p.focalPixels;
-      const ImVec2 at(view->Pos.x + float(p.principal.x + lateral.x),
-                      view->Pos.y + float(windowSize.y - (p.principal.y + lateral.y)));
-      draw->AddCircle(at, 6.0f, IM_COL32(0, 0, 0, 200), 16, 3.0f);
-      draw->AddCircle(at, 6.0f, IM_COL32(255, 220, 60, 255), 16, 1.5f);
+    if (const auto at = windowPoint(camera, windowSize.x, windowSize.y, *mark_)) {
+      const ImVec2 centre(view->Pos.x + float(at->x), view->Pos.y + float(at->y));
+      draw->AddCircle(centre, 6.0f, IM_COL32(0, 0, 0, 200), 16, 3.0f);
+      draw->AddCircle(centre, 6.0f, IM_COL32(255, 220, 60, 255), 16, 1.5f);
     }
   }
   if (text_.empty()) return;

@@ -49,8 +49,9 @@ Camera lookingDownZ(glm::dvec3 focal = glm::dvec3(16.0)) {
   return c;
 }
 
-// Where world point p lands in a width x height picture, in window coordinates (y down).
-glm::dvec2 windowPoint(const Camera& camera, int width, int height, const glm::dvec3& p) {
+// Where world point p lands in a width x height picture, in window coordinates (y down): the
+// test's own projection, independent of windowPoint.
+glm::dvec2 projectedByHand(const Camera& camera, int width, int height, const glm::dvec3& p) {
   const Projection proj = camera.projection(width, height);
   const glm::dvec3 c = glm::dvec3(camera.viewMatrix() * glm::dvec4(p, 1.0));
   const glm::dvec2 lateral = proj.orthographic ? glm::dvec2(c) * proj.pixelsPerUnit
@@ -76,12 +77,18 @@ TEST(VolumePick, PixelRaysPassThroughThePointsTheCameraProjectsThere) {
     const int w = 320, h = 200;
     for (const glm::dvec3 p :
          {glm::dvec3(2.0, 3.0, -1.0), glm::dvec3(-5.0, 8.0, 4.0), glm::dvec3(10.0, 0.0, -9.0)}) {
-      const glm::dvec2 at = windowPoint(camera, w, h, p);
+      const glm::dvec2 at = projectedByHand(camera, w, h, p);
       ASSERT_GT(at.x, 0.0);
       ASSERT_LT(at.y, double(h));
       EXPECT_LT(distanceToRay(pickRay(camera, w, h, at), p), 1e-9) << orthographic;
+      const std::optional<glm::dvec2> back = windowPoint(camera, w, h, p);  // the inverse
+      ASSERT_TRUE(back.has_value());
+      EXPECT_LT(glm::length(*back - at), 1e-9);
     }
     // The centre of the picture looks along the view direction; up in the picture is +view-up.
+    // Behind the eye a perspective camera sees nothing; a parallel one sees every point.
+    const glm::dvec3 behind = camera.position - camera.direction();
+    EXPECT_EQ(windowPoint(camera, w, h, behind).has_value(), orthographic);
     const PickRay centre = pickRay(camera, w, h, {w / 2.0, h / 2.0});
     EXPECT_LT(glm::length(centre.direction - camera.direction()), 1e-12);
     const PickRay top = pickRay(camera, w, h, {w / 2.0, 0.5});
