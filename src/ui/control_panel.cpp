@@ -64,6 +64,7 @@ PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& le
     ImGui::Separator();
     drawStats(stats);
     ImGui::TextDisabled("left: orbit  right/wheel: zoom  middle/shift+left: pan");
+    ImGui::TextDisabled("double-click: centre there  M: mark (probe gives distance)");
   }
   ImGui::End();
   return edits;
