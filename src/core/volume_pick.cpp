@@ -170,10 +170,11 @@ std::string describePick(const Volume& volume, const PickResult& pick,
   if (!pick.hit) return "";
   const glm::i64vec3 voxel = nearestVoxel(volume, pick.index);
   char text[200];
-  int n = std::snprintf(text, sizeof text,
-                        "x %.4g  y %.4g  z %.4g   voxel %lld, %lld, %lld   value %.6g",
-                        pick.world.x, pick.world.y, pick.world.z, (long long)voxel.x,
-                        (long long)voxel.y, (long long)voxel.z, pick.value);
+  // Patient axes say which way they point (DICOM's LPS: x to the left, y to the back, z up).
+  int n = std::snprintf(
+      text, sizeof text, "x %.4g  y %.4g  z %.4g%s   voxel %lld, %lld, %lld   value %.6g",
+      pick.world.x, pick.world.y, pick.world.z, volume.patientFrame() ? " (LPS)" : "",
+      (long long)voxel.x, (long long)voxel.y, (long long)voxel.z, pick.value);
   if (mark && n > 0 && size_t(n) < sizeof text)
     std::snprintf(text + n, sizeof text - size_t(n), "   %.4g from the mark",
                   glm::length(pick.world - *mark));

@@ -242,6 +242,11 @@ TEST(VolumePick, DescriptionNamesThePointTheNearestVoxelTheValueAndTheMarksDista
   EXPECT_EQ(describePick(v, pick), "x 12.5  y -3.25  z 40   voxel 16, 16, 32   value 87.25");
   EXPECT_EQ(describePick(v, pick, glm::dvec3(12.5, 0.75, 43.0)),
             "x 12.5  y -3.25  z 40   voxel 16, 16, 32   value 87.25   5 from the mark");
+  // Patient axes are named.
+  Volume patient = ball();
+  patient.setDirection(glm::dmat3(1.0), true);
+  EXPECT_EQ(describePick(patient, pick),
+            "x 12.5  y -3.25  z 40 (LPS)   voxel 16, 16, 32   value 87.25");
 }
 
 TEST(VolumePick, CentringKeepsTheViewDirectionAndThePointsDepth) {
