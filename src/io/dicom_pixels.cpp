@@ -65,6 +65,12 @@ void checkPixelModule(const DicomSlice& s) {
                          " samples a pixel (MONOCHROME1 or MONOCHROME2 with 1, RGB with 3)");
   if (s.representation != 0 && s.representation != 1)
     failLoad(s.file, "bad PixelRepresentation " + std::to_string(s.representation));
+  // GDCM's pixmap reader asserts on any other value (even for one sample a pixel).
+  if (s.planarConfiguration != 0 && s.planarConfiguration != 1)
+    failLoad(s.file, "bad PlanarConfiguration" +
+                         (s.planarConfiguration < 0 ? std::string(" (not a number)")
+                                                    : " " + std::to_string(s.planarConfiguration)) +
+                         " (0 or 1)");
 }
 
 // The classes whose rescale GDCM takes from the functional groups (its ImageHelper).

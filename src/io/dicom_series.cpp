@@ -32,6 +32,7 @@ const gdcm::Tag kBitsStored(0x0028, 0x0101);
 const gdcm::Tag kHighBit(0x0028, 0x0102);
 const gdcm::Tag kRepresentation(0x0028, 0x0103);
 const gdcm::Tag kPhotometric(0x0028, 0x0004);
+const gdcm::Tag kPlanarConfiguration(0x0028, 0x0006);
 
 int64_t integer(const char* text) {
   int64_t v = 0;
@@ -107,9 +108,10 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
   std::error_code ec;
 
   gdcm::Scanner scanner;
-  for (const gdcm::Tag& t : {kSeriesUid, kSeriesDescription, kPosition, kOrientation, kRows,
-                             kColumns, kPixelSpacing, kFrames, kSamplesPerPixel, kBitsAllocated,
-                             kBitsStored, kHighBit, kRepresentation, kPhotometric})
+  for (const gdcm::Tag& t :
+       {kSeriesUid, kSeriesDescription, kPosition, kOrientation, kRows, kColumns, kPixelSpacing,
+        kFrames, kSamplesPerPixel, kBitsAllocated, kBitsStored, kHighBit, kRepresentation,
+        kPhotometric, kPlanarConfiguration})
     scanner.AddTag(t);
   if (!files.empty() && !scanner.Scan(files)) failLoad(folder, "cannot read the DICOM headers");
 
@@ -136,6 +138,10 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
     s.bitsStored = integer(scanner.GetValue(file.c_str(), kBitsStored));
     s.highBit = integer(scanner.GetValue(file.c_str(), kHighBit));
     s.representation = integer(scanner.GetValue(file.c_str(), kRepresentation));
+    if (const char* pc = scanner.GetValue(file.c_str(), kPlanarConfiguration)) {
+      int64_t v = 0;
+      s.planarConfiguration = parseInt64(trim(std::string(pc)), v) ? v : -1;
+    }
     if (const char* pi = scanner.GetValue(file.c_str(), kPhotometric)) s.photometric = trim(pi);
     const char* uid = scanner.GetValue(file.c_str(), kSeriesUid);
     DicomSeries& series = byUid[uid ? trim(std::string(uid)) : std::string()];

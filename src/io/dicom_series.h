@@ -23,7 +23,8 @@ struct DicomSlice {
   int64_t frame = 0;   // of a multi-frame file opened frame by frame (dicom_frames.h): its frame
   // Pixel module values, checked before GDCM decodes (its reader asserts on some bad ones).
   int64_t samplesPerPixel = 1, bitsAllocated = 0, bitsStored = 0, highBit = 0, representation = 0;
-  std::string photometric;  // PhotometricInterpretation, trimmed; empty when absent
+  int64_t planarConfiguration = 0;  // 0 when absent; -1 when present but not a number
+  std::string photometric;          // PhotometricInterpretation, trimmed; empty when absent
 };
 
 struct DicomSeries {

@@ -83,6 +83,19 @@ TEST(DicomColour, MissingChannelsAndOtherColourSpacesFailWithOneLine) {
   }));
   expectLoadError([&] { loadVolume(ybr); }, ybr,
                   "im0.dcm: PhotometricInterpretation 'YBR_FULL' with 3 samples a pixel");
+  // A PlanarConfiguration other than 0 or 1 (GDCM's reader asserts on it, whatever the samples
+  // a pixel; found by fuzzing): refused before GDCM decodes, for colour and grey alike.
+  for (const bool colour : {true, false}) {
+    testing::DicomSliceSpec planarSpec;
+    planarSpec.rgb = colour;
+    const std::string bad = dicomSeries(dir, colour ? "planar_rgb" : "planar_grey", 1, planarSpec);
+    ASSERT_TRUE(testing::editDicom(bad + "/im0.dcm", [](gdcm::DataSet& ds) {
+      gdcm::Attribute<0x0028, 0x0006> planar;
+      planar.SetValue(388);
+      ds.Replace(planar.GetAsDataElement());
+    }));
+    expectLoadError([&] { loadVolume(bad); }, bad, "im0.dcm: bad PlanarConfiguration 388 (0 or 1)");
+  }
 }
 
 }  // namespace
