@@ -56,6 +56,10 @@ void checkPixelModule(const DicomSlice& s) {
   if (s.bitsStored < 1 || s.bitsStored > bits || s.highBit < s.bitsStored - 1 || s.highBit >= bits)
     failLoad(s.file, "inconsistent BitsStored " + std::to_string(s.bitsStored) + " and HighBit " +
                          std::to_string(s.highBit));
+  // GDCM's raw decoder asserts on 8 bits allocated with fewer stored (found by fuzzing).
+  if (bits == 8 && s.bitsStored != 8)
+    failLoad(s.file, "BitsStored " + std::to_string(s.bitsStored) +
+                         " with BitsAllocated 8 is not read (8 bits stored only)");
   // Colour: RGB only (YBR colour spaces would need converting; none of ours has them).
   const bool mono =
       s.photometric.empty() || s.photometric == "MONOCHROME1" || s.photometric == "MONOCHROME2";

@@ -96,6 +96,18 @@ TEST(DicomColour, MissingChannelsAndOtherColourSpacesFailWithOneLine) {
     }));
     expectLoadError([&] { loadVolume(bad); }, bad, "im0.dcm: bad PlanarConfiguration 388 (0 or 1)");
   }
+  // Eight bits allocated with fewer stored: GDCM's raw decoder asserts on it (found by fuzzing).
+  const std::string seven = dicomSeries(dir, "seven", 1, spec);
+  ASSERT_TRUE(testing::editDicom(seven + "/im0.dcm", [](gdcm::DataSet& ds) {
+    gdcm::Attribute<0x0028, 0x0101> stored;
+    stored.SetValue(7);
+    ds.Replace(stored.GetAsDataElement());
+    gdcm::Attribute<0x0028, 0x0102> high;
+    high.SetValue(6);
+    ds.Replace(high.GetAsDataElement());
+  }));
+  expectLoadError([&] { loadVolume(seven); }, seven,
+                  "im0.dcm: BitsStored 7 with BitsAllocated 8 is not read (8 bits stored only)");
 }
 
 }  // namespace
