@@ -12,8 +12,9 @@ namespace ewa::python {
 namespace {
 
 // What the module does itself (render() instead of --output and --turntable) or cannot do.
-const char* const kNotOptions[] = {"output", "turntable",          "fps",  "info", "help",
-                                   "version", "config_dir", "record_camera_path", "file", "pick"};
+const char* const kNotOptions[] = {"output", "turntable", "fps",        "info",
+                                   "help",   "version",   "config_dir", "record_camera_path",
+                                   "file",   "pick"};
 
 // Collects what parseCommandLine writes to std::cerr while it lives.
 class CerrCapture {
