@@ -52,7 +52,7 @@ std::optional<glm::dvec2> windowPoint(const Camera& camera, int width, int heigh
                                       const glm::dvec3& p) {
   const Projection proj = camera.projection(std::max(width, 1), std::max(height, 1));
   const glm::dvec3 c = glm::dvec3(camera.viewMatrix() * glm::dvec4(p, 1.0));
-  if (!proj.orthographic && !(c.z < 0.0)) return std::nullopt;
+  if (!proj.orthographic && !(-c.z > 1e-9)) return std::nullopt;  // at or behind the eye
   const glm::dvec2 lateral = proj.orthographic ? glm::dvec2(c) * proj.pixelsPerUnit
                                                : glm::dvec2(c) / -c.z * proj.focalPixels;
   return glm::dvec2(proj.principal.x + lateral.x, proj.height - (proj.principal.y + lateral.y));

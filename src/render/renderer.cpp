@@ -69,10 +69,6 @@ const char* renderModeName(RenderMode mode) {
   return nameIn(kRenderMode, mode);
 }
 
-PickRule pickRuleFor(RenderMode mode) {
-  return mode == RenderMode::Mip ? PickRule::MaximumValue : PickRule::Opacity;
-}
-
 bool parseRenderMode(const std::string& text, RenderMode* mode) {
   return parseIn(kRenderMode, text, mode);
 }
@@ -170,6 +166,13 @@ bool Renderer::stepFrame(double /*budgetMs*/) {
 
 double Renderer::frameProgress() const {
   return pending_ ? 0.0 : 1.0;
+}
+
+PickResult pickInPicture(const Volume& volume, const TransferFunction& tf,
+                         const RenderSettings& settings, const Camera& camera, int width,
+                         int height, const glm::dvec2& point) {
+  return pickVolume(volume, tf, settings.clip, pickRay(camera, width, height, point),
+                    settings.mode == RenderMode::Mip ? PickRule::MaximumValue : PickRule::Opacity);
 }
 
 }  // namespace ewa

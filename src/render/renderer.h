@@ -29,9 +29,6 @@ enum class CompositeOrder { FrontToBack = 0, BackToFront = 1 };
 enum class XRayMap { Attenuation = 0, Sum = 1 };
 
 const char* renderModeName(RenderMode mode);
-// What a pick (--pick, the window's probe) looks for in this mode: MIP the brightest point shown,
-// composite and X-ray the median depth of the pixel's opacity.
-PickRule pickRuleFor(RenderMode mode);
 bool parseRenderMode(const std::string& text, RenderMode* mode);
 const char* compositeOrderName(CompositeOrder order);
 bool parseCompositeOrder(const std::string& text, CompositeOrder* order);
@@ -164,6 +161,14 @@ struct RenderSettings {
   ShearWarpSettings shearWarp;   // read by the shear-warp renderer only
   ClipRegion clip;               // crop box and clipping planes (world space), every renderer
 };
+
+// What point (window coordinates, as pickRay takes them) of a width x height picture drawn with
+// `settings` shows: through their crop box and clipping planes, the brightest point shown in MIP,
+// else the median depth of the pixel's opacity. The one pick of --pick, the window's probe and
+// its double-click.
+PickResult pickInPicture(const Volume& volume, const TransferFunction& tf,
+                         const RenderSettings& settings, const Camera& camera, int width,
+                         int height, const glm::dvec2& point);
 
 // The close-up setting, which is also the default: post-classified and pre-integrated between
 // slabs, kernels 0.7 spacings wide at cutoff 5 (the narrowest whose lattice ripple stays under

@@ -8,27 +8,14 @@
 #include <glm/geometric.hpp>
 #include <optional>
 
+#include "core/volume_pick.h"
+
 namespace ewa {
 
 namespace {
 
 constexpr float kHandleSize = 14.0f;
 const char* const kAxisNames[] = {"x", "y", "z"};
-
-// Display position (ImGui: y down) of a world point, or nothing behind the eye.
-std::optional<ImVec2> toScreen(const Camera& camera, const Projection& proj,
-                               const glm::dvec3& world) {
-  const glm::dvec3 u(camera.viewMatrix() * glm::dvec4(world, 1.0));
-  glm::dvec2 pixel;
-  if (proj.orthographic) {
-    pixel = proj.principal + glm::dvec2(u) * proj.pixelsPerUnit;
-  } else {
-    const double depth = -u.z;
-    if (!(depth > 1e-9)) return std::nullopt;
-    pixel = proj.principal + glm::dvec2(u) * (proj.focalPixels / depth);
-  }
-  return ImVec2(float(pixel.x), float(proj.height - pixel.y));
-}
 
 }  // namespace
 
@@ -37,7 +24,12 @@ CropHandleEdits drawCropBoxHandles(ClipRegion& region, const Camera& camera, dou
   if (!region.cropEnabled) return edits;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   if (display.x < 1.0f || display.y < 1.0f) return edits;
-  const Projection proj = camera.projection(int(display.x), int(display.y));
+  // Display position (ImGui: y down) of a world point, or nothing behind the eye.
+  const auto toScreen = [&](const glm::dvec3& world) -> std::optional<ImVec2> {
+    const auto at = windowPoint(camera, int(display.x), int(display.y), world);
+    if (!at) return std::nullopt;
+    return ImVec2(float(at->x), float(at->y));
+  };
   const glm::dvec3 lo = region.cropMin, hi = region.cropMax;
   ImDrawList* lines = ImGui::GetBackgroundDrawList();
   const ImU32 edgeColour = IM_COL32(255, 220, 80, 160);
@@ -48,7 +40,7 @@ CropHandleEdits drawCropBoxHandles(ClipRegion& region, const Camera& camera, dou
       const auto corner = [&](int k) {
         return glm::dvec3((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
       };
-      const auto p = toScreen(camera, proj, corner(c)), q = toScreen(camera, proj, corner(d));
+      const auto p = toScreen(corner(c)), q = toScreen(corner(d));
       if (p && q) lines->AddLine(*p, *q, edgeColour, 1.5f);
     }
   const glm::dvec3 centre = 0.5 * (lo + hi);
@@ -57,13 +49,13 @@ CropHandleEdits drawCropBoxHandles(ClipRegion& region, const Camera& camera, dou
     const bool upper = face % 2 == 1;
     glm::dvec3 at = centre;
     at[axis] = upper ? hi[axis] : lo[axis];
-    const auto screen = toScreen(camera, proj, at);
+    const auto screen = toScreen(at);
     if (!screen) continue;
     // The face's axis on screen: a world step of `step` moves the handle by `along` pixels.
     const double step = std::max(hi[axis] - lo[axis], 1e-9) * 0.01;
     glm::dvec3 further = at;
     further[axis] += step;
-    const auto next = toScreen(camera, proj, further);
+    const auto next = toScreen(further);
     if (!next) continue;
     const ImVec2 along(next->x - screen->x, next->y - screen->y);
     const float alongSq = along.x * along.x + along.y * along.y;

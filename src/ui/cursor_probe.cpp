@@ -23,9 +23,7 @@ void CursorProbe::update(const Volume& volume, const TransferFunction& tf,
     return;
   }
   if (shown_ && *cursor == cursor_ && stamp == stamp_) return;
-  last_ =
-      pickVolume(volume, tf, settings.clip, pickRay(camera, windowSize.x, windowSize.y, *cursor),
-                 pickRuleFor(settings.mode));
+  last_ = pickInPicture(volume, tf, settings, camera, windowSize.x, windowSize.y, *cursor);
   std::string text = describePick(volume, last_, mark_);
   changed_ = text != text_;
   text_ = std::move(text);

@@ -38,17 +38,20 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   applySessionEdits(session_.draw(sessionView()), fb, screenshotNow);
   if (const auto chosen = fileDialog_.draw()) startLoad(*chosen);
   if (frameStats_.refineProgress >= 0.0) drawRefinementOverlay(frameStats_.refineProgress);
-  updateProbe();
-  glm::ivec2 size(0);
-  glfwGetWindowSize(window_.window(), &size.x, &size.y);
+  const glm::ivec2 size = windowSize();
+  updateProbe(size);
   probe_.draw(frameStats_.refineProgress >= 0.0, controller_.camera(), size);
 }
 
-void ViewerWindow::updateProbe() {
+glm::ivec2 ViewerWindow::windowSize() const {
+  glm::ivec2 size(0);
+  glfwGetWindowSize(window_.window(), &size.x, &size.y);
+  return size;
+}
+
+void ViewerWindow::updateProbe(glm::ivec2 size) {
   GLFWwindow* w = window_.window();
   std::optional<glm::dvec2> cursor;
-  glm::ivec2 size(0);
-  glfwGetWindowSize(w, &size.x, &size.y);
   // Over the picture only: not over a panel, not while a drag moves the camera.
   if (!controller_.dragging() && !ImGui::GetIO().WantCaptureMouse &&
       glfwGetWindowAttrib(w, GLFW_HOVERED)) {
@@ -89,13 +92,10 @@ void ViewerWindow::markUnderCursor() {
 }
 
 void ViewerWindow::centreOnCursor() {
-  GLFWwindow* w = window_.window();
-  glm::ivec2 size(0);
-  glfwGetWindowSize(w, &size.x, &size.y);
-  const glm::dvec2 at(input_.doubleClickX(), input_.doubleClickY());
+  const glm::ivec2 size = windowSize();
   const PickResult pick =
-      pickVolume(*current_.volume, current_.tf, settings_.clip,
-                 pickRay(controller_.camera(), size.x, size.y, at), pickRuleFor(settings_.mode));
+      pickInPicture(*current_.volume, current_.tf, settings_, controller_.camera(), size.x, size.y,
+                    glm::dvec2(input_.doubleClickX(), input_.doubleClickY()));
   if (!pick.hit) {
     info("nothing under the cursor to centre on");
     return;

@@ -98,8 +98,10 @@ class ViewerWindow {
   void drawPanels(const glm::ivec2& fb, bool* screenshotNow);
   void applyCommands(const glm::ivec2& fb, bool* screenshotNow);
   void showAxisView(AxisView v, const glm::ivec2& fb);
+  // The window's size in window coordinates (the cursor's; the framebuffer may be larger).
+  glm::ivec2 windowSize() const;
   // The probe line under the cursor, and a double-click's new centre of rotation.
-  void updateProbe();
+  void updateProbe(glm::ivec2 size);
   void centreOnCursor();
   // The M key: the point under the cursor becomes the mark distances are measured from.
   void markUnderCursor();
