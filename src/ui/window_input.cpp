@@ -147,22 +147,12 @@ void WindowInput::onKey(GLFWwindow* window, int key, int scancode, int action, i
       break;
     // 1..6: views along +X, -X, +Y, -Y, +Z, -Z (the order of the panel's buttons).
     case GLFW_KEY_1:
-      self.commands_.push_back(KeyCommand::ViewPlusX);
-      break;
     case GLFW_KEY_2:
-      self.commands_.push_back(KeyCommand::ViewMinusX);
-      break;
     case GLFW_KEY_3:
-      self.commands_.push_back(KeyCommand::ViewPlusY);
-      break;
     case GLFW_KEY_4:
-      self.commands_.push_back(KeyCommand::ViewMinusY);
-      break;
     case GLFW_KEY_5:
-      self.commands_.push_back(KeyCommand::ViewPlusZ);
-      break;
     case GLFW_KEY_6:
-      self.commands_.push_back(KeyCommand::ViewMinusZ);
+      self.commands_.push_back(KeyCommand(int(KeyCommand::ViewPlusX) + (key - GLFW_KEY_1)));
       break;
     case GLFW_KEY_ESCAPE:
     case GLFW_KEY_Q:

@@ -12,7 +12,7 @@ namespace ewa {
 enum class KeyCommand {
   Screenshot,
   OpenFile,
-  ViewPlusX,
+  ViewPlusX,  // the six views in the order of keys 1..6 (onKey counts on it)
   ViewMinusX,
   ViewPlusY,
   ViewMinusY,
