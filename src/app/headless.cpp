@@ -28,6 +28,7 @@ std::string renderNote(const Options& o) {
 void renderHeadless(const Scene& scene, const Options& o) {
   refuseToOverwriteInputs(o.output, o);
   HeadlessSession session(o.backend, o.shaderDir);
+  session.setAxes(o.axes);
   writePng(o.output, session.render(scene.volume, scene.transferFunction,
                                     initialCamera(scene.volume, o), o.render, o.width, o.height));
   if (const std::string note = session.takeNote(); !note.empty())

@@ -1,6 +1,7 @@
 // HeadlessSession: context first, then shaders and the factory's renderer; GL objects go first.
 #include "app/headless_session.h"
 
+#include "core/orientation_axes.h"
 #include "platform/headless_context.h"
 #include "render/renderer_factory.h"
 
@@ -40,7 +41,11 @@ Image8 HeadlessSession::render(const Volume& volume, const TransferFunction& tf,
   const std::string note = renderer_->stats().note;
   if (note != lastNote_) newNote_ = note;  // said once while it holds
   lastNote_ = note;
-  return renderer_->readImage();
+  Image8 image = renderer_->readImage();
+  if (axes_)
+    drawStrokes(image, orientationAxes(camera.rotation(), volume.patientFrame(),
+                                       axesPlacement(image.width, image.height)));
+  return image;
 }
 
 std::string HeadlessSession::takeNote() {

@@ -25,9 +25,12 @@ class HeadlessSession {
   HeadlessSession& operator=(const HeadlessSession&) = delete;
 
   // Renders `volume` (which must stay alive and unchanged while this session may render it)
-  // with `tf` from `camera`, and returns the RGB picture, top row first.
+  // with `tf` from `camera`, and returns the RGB picture, top row first; with the orientation
+  // axes in its corner after setAxes(true).
   Image8 render(const Volume& volume, const TransferFunction& tf, const Camera& camera,
                 const RenderSettings& settings, int width, int height);
+  // Whether render() draws the orientation axes (--axis).
+  void setAxes(bool on) { axes_ = on; }
   // The statistics of the last render (empty before the first).
   RenderStats stats() const { return renderer_ ? renderer_->stats() : RenderStats{}; }
   // The renderer's RenderStats::note (why a frame was not drawn as asked) when a render has
@@ -42,6 +45,7 @@ class HeadlessSession {
   const Volume* volume_ = nullptr;  // what renderer_ was given, to skip repeated uploads
   TransferFunction tf_;
   bool tfSet_ = false;
+  bool axes_ = false;
   std::string lastNote_;  // the last render's RenderStats::note
   std::string newNote_;   // one that appeared since takeNote last took it
 };

@@ -58,6 +58,7 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
           : "synthetic:" + scene.name;
   if (o.render.clip == ewa::ClipRegion{} && config.saved.clipVolume == clipKey)
     o.render.clip = config.saved.clip;
+  if (o.axes) config.saved.axes = true;
   if (!o.tfFile.empty())
     config.saved.lastTransferFunction = std::filesystem::absolute(o.tfFile).string();
   config.width = o.width;

@@ -130,6 +130,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                  "Vertical view angle in degrees (default 30)")
       ->check(CLI::Range(0.01, 179.0));
   app.add_flag("--camera-orthographic", o->orthographic, "Orthographic projection");
+  app.add_flag("--axis", o->axes,
+               "Draw the orientation axes in the picture's bottom-right corner (X, Y, Z; L, P, S "
+               "for patient axes); the window shows them unless switched off (X key)");
   std::string filter = "ewa", mode = "composite";
   app.add_option("--filter", filter, "Splat filter: ewa (default), swan, plain")
       ->check(CLI::IsMember({"ewa", "swan", "plain"}));

@@ -31,6 +31,7 @@ struct Options {
   std::optional<glm::dvec3> cameraViewUp;
   double cameraViewAngle = 30.0;
   bool orthographic = false;
+  bool axes = false;  // --axis: the orientation axes in the picture's corner
   RenderSettings render;
   std::string tfFile;
   std::string backend = "osmesa";

@@ -20,6 +20,7 @@ void renderTurntable(const Scene& scene, const Options& o) {
   // The sink checks or makes its folder or file first, so a bad path fails before rendering.
   const std::unique_ptr<FrameSink> sink = openFrameSink(o.output, count, o.fps);
   HeadlessSession session(o.backend, o.shaderDir);
+  session.setAxes(o.axes);
   const Camera start = initialCamera(scene.volume, o);
   TerminalProgress progress("ewaview: turntable");
   const auto begin = std::chrono::steady_clock::now();

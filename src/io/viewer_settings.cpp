@@ -65,7 +65,8 @@ std::string viewerSettingsToJson(const ViewerSettings& s) {
                  {"slab_thickness", s.slabThickness},
                  {"slab_resolution", s.coarseSlabs ? "auto" : "full"},
                  {"background", {s.background.r, s.background.g, s.background.b}},
-                 {"level_of_detail", s.levelOfDetail}};
+                 {"level_of_detail", s.levelOfDetail},
+                 {"axes", s.axes}};
   if (!s.clipVolume.empty()) {
     j["clip"] = clipRegionToJson(s.clip);
     j["clip"]["volume"] = s.clipVolume;
@@ -131,6 +132,7 @@ ViewerSettings viewerSettingsFromJson(const std::string& text, const std::string
                 std::isfinite(bg[size_t(c)]) ? std::clamp(bg[size_t(c)], 0.0, 1.0) : 0.0;
       }
       s.levelOfDetail = r.value("level_of_detail", true);
+      s.axes = r.value("axes", true);
     }
     if (j.contains("clip")) {
       // A bad clip entry only loses the clip, not the other settings.

@@ -34,6 +34,7 @@ struct ViewerSettings {
   bool coarseSlabs = true;               // RenderSettings' default (--slab-resolution auto)
   glm::dvec3 background{0.0};
   bool levelOfDetail = true;  // coarser level while moving
+  bool axes = true;           // the orientation axes in the corner (X key)
   // The crop box and planes of the last session and the volume they were for (its absolute
   // path, or "synthetic:NAME"): restored only when that volume opens again.
   ClipRegion clip;

@@ -184,6 +184,7 @@ Image8 PythonScene::renderImage(const py::dict& overrides) {
     py::gil_scoped_release released;
     std::lock_guard<std::mutex> lock(mutex_);
     HeadlessSession& s = session(o);
+    s.setAxes(o.axes);
     image = s.render(*volume_, tf_, camera, o.render, o.width, o.height);
     note = s.takeNote();
   }
@@ -202,6 +203,7 @@ void PythonScene::turntable(const std::string& path, int frames, int fps,
     std::lock_guard<std::mutex> lock(mutex_);
     const std::unique_ptr<FrameSink> sink = openFrameSink(path, frames, fps);
     HeadlessSession& s = session(o);
+    s.setAxes(o.axes);
     for (int f = 0; f < frames; ++f) {
       sink->add(
           s.render(*volume_, tf_, turntableCamera(start, f, frames), o.render, o.width, o.height),

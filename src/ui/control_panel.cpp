@@ -46,7 +46,7 @@ void ControlPanel::setVolume(std::string volumeName, const Volume& volume) {
 }
 
 PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& levelOfDetail,
-                              const FrameStats& stats) {
+                              bool& axes, const FrameStats& stats) {
   PanelEdits edits;
   ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.85f);
@@ -61,6 +61,8 @@ PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& le
     edits.resetCamera = ImGui::Button("Reset camera (R)");
     ImGui::SameLine();
     edits.levelOfDetail = ImGui::Checkbox("coarser while moving", &levelOfDetail);
+    ImGui::SameLine();
+    edits.axes = ImGui::Checkbox("axes (X)", &axes);
     ImGui::Separator();
     drawStats(stats);
     ImGui::TextDisabled("left: orbit  right/wheel: zoom  middle/shift+left: pan");

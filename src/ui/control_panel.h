@@ -38,6 +38,7 @@ struct PanelEdits {
   bool resetCamera = false;          // "Reset camera" was pressed
   std::optional<AxisView> axisView;  // a view along an axis was asked for
   bool levelOfDetail = false;        // the level-of-detail checkbox changed
+  bool axes = false;                 // the orientation axes checkbox changed
 };
 
 class ControlPanel {
@@ -47,8 +48,8 @@ class ControlPanel {
 
   // Builds the panel between ImGuiLayer::beginFrame and render, editing `settings` and
   // `camera` in place.
-  // `levelOfDetail` is the "coarser while moving" switch.
-  PanelEdits draw(RenderSettings& settings, Camera& camera, bool& levelOfDetail,
+  // `levelOfDetail` is the "coarser while moving" switch, `axes` the orientation axes'.
+  PanelEdits draw(RenderSettings& settings, Camera& camera, bool& levelOfDetail, bool& axes,
                   const FrameStats& stats);
   // A new volume was opened.
   void setVolume(std::string volumeName, const Volume& volume);

@@ -72,6 +72,7 @@ ViewerWindow::ViewerWindow(platform::GlfwWindowContext& window, LoadedVolume ini
   printLayout_ = envFlag("EWAVIEW_PRINT_LAYOUT");
   frameLog_ = envFlag("EWAVIEW_FRAME_LOG");
   levelOfDetail_ = saved_.levelOfDetail;
+  axes_ = saved_.axes;
   hasNvx_ = gl::queryGpuMemory().has_value();
   if (initial.coarse.levels.empty()) initial.coarse = buildLodVolumes(*initial.volume);
   adopt(std::move(initial), /*newCamera=*/false);

@@ -10,6 +10,7 @@
 
 #include "core/camera_views.h"
 #include "io/atomic_file.h"
+#include "ui/axes_overlay.h"
 #include "ui/clip_panel.h"
 #include "ui/crop_box_handles.h"
 #include "ui/viewer_window.h"
@@ -19,7 +20,8 @@ namespace ewa {
 void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   imgui_.beginFrame();
   Camera camera = controller_.camera();
-  const PanelEdits edits = panel_.draw(settings_, camera, levelOfDetail_, frameStats_);
+  const PanelEdits edits = panel_.draw(settings_, camera, levelOfDetail_, axes_, frameStats_);
+  if (edits.axes) axesSwitched();
   if (edits.camera) controller_.setCamera(camera);
   if (edits.resetCamera) controller_.reset();
   if (edits.axisView) showAxisView(*edits.axisView, fb);
@@ -41,6 +43,13 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   const glm::ivec2 size = windowSize();
   updateProbe(size);
   probe_.draw(frameStats_.refineProgress >= 0.0, controller_.camera(), size);
+  if (axes_) drawAxesOverlay(controller_.camera(), current_.volume->patientFrame(), size);
+}
+
+void ViewerWindow::axesSwitched() {
+  if (!printLayout_) return;
+  std::printf("axes %s\n", axes_ ? "on" : "off");
+  std::fflush(stdout);
 }
 
 glm::ivec2 ViewerWindow::windowSize() const {
@@ -130,6 +139,7 @@ void ViewerWindow::saveSettings() {
   saved_.coarseSlabs = settings_.coarseSlabs;
   saved_.background = settings_.background;
   saved_.levelOfDetail = levelOfDetail_;
+  saved_.axes = axes_;
   saved_.clip = settings_.clip;
   saved_.clipVolume = current_.path.empty() ? "synthetic:" + current_.name : current_.path;
   std::string problem;
@@ -158,6 +168,10 @@ void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
         break;
       case KeyCommand::MarkPoint:
         markUnderCursor();
+        break;
+      case KeyCommand::ToggleAxes:
+        axes_ = !axes_;
+        axesSwitched();
         break;
       default: {
         const int index = int(c) - int(KeyCommand::ViewPlusX);

@@ -105,6 +105,8 @@ class ViewerWindow {
   void centreOnCursor();
   // The M key: the point under the cursor becomes the mark distances are measured from.
   void markUnderCursor();
+  // The axes were switched on or off (the layout log says so).
+  void axesSwitched();
   void applySessionEdits(const SessionEdits& e, const glm::ivec2& fb, bool* screenshotNow);
   SessionView sessionView();
   void saveBookmarks();
@@ -140,6 +142,7 @@ class ViewerWindow {
 
   FrameStats frameStats_;
   bool levelOfDetail_ = true;
+  bool axes_ = true;          // the orientation axes in the corner
   bool printLayout_ = false;  // EWAVIEW_PRINT_LAYOUT=1: layout and frame lines on stdout
   bool frameLog_ = false;     // EWAVIEW_FRAME_LOG=1: every frame's time on stderr
   bool fullSplatsArrived_ = false;

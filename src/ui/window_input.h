@@ -19,7 +19,8 @@ enum class KeyCommand {
   ViewPlusZ,
   ViewMinusZ,
   CentreOnCursor,
-  MarkPoint
+  MarkPoint,
+  ToggleAxes
 };
 
 class CameraController;

@@ -205,6 +205,18 @@ def test_pick_is_what_the_command_line_prints(cli):
         scene.render(pick=(1, 1))
 
 
+def test_axis_is_the_command_line_s_and_only_paints_the_corner(cli):
+    options = dict(resolution=(96, 72), camera_position=(70, -40, 50), camera_view_up=(0, 0, 1))
+    scene = ewaview.Scene(synthetic="sphere:32", **options)
+    plain, axes = scene.render(), scene.render(axis=True)
+    expected = cli.picture("sphere_axis", "--synthetic", "sphere:32", "--axis",
+                           *cli_words(options))
+    assert_same_picture(axes, expected)
+    changed = np.argwhere((axes != plain).any(axis=2))
+    assert len(changed) > 60
+    assert changed[:, 0].min() >= 72 // 4 and changed[:, 1].min() >= 96 // 3  # bottom right
+
+
 @pytest.mark.filterwarnings("ignore:shear-warp renders parallel projection")
 def test_turntable_writes_what_the_command_line_writes(cli, out_dir):
     scene = ewaview.Scene(synthetic="marschner-lobb:24", resolution=(48, 40))

@@ -63,6 +63,7 @@ TEST_F(ViewerFiles, SettingsRoundTripAndDefaults) {
   s.prefilter = 0.125;
   s.background = {0.1, 0.2, 0.3};
   s.levelOfDetail = false;
+  s.axes = false;
   saveViewerSettings(p, s);
   const ViewerSettings r = loadViewerSettings(p);
   EXPECT_EQ(r.windowWidth, 640);
@@ -78,6 +79,7 @@ TEST_F(ViewerFiles, SettingsRoundTripAndDefaults) {
   EXPECT_EQ(r.prefilter, 0.125);
   EXPECT_EQ(r.background, s.background);
   EXPECT_FALSE(r.levelOfDetail);
+  EXPECT_FALSE(r.axes);
   EXPECT_EQ(r.depthCutoff, 1.0);
   EXPECT_EQ(r.postNormals, "ray");
   s.postNormals = "voxel";
@@ -121,6 +123,7 @@ TEST_F(ViewerFiles, SettingsDefaultsAreTheRenderersDefaults) {
   EXPECT_EQ(partial.renderMode, "mip");
   EXPECT_EQ(partial.slabThickness, render.slabThickness);
   EXPECT_EQ(partial.cutoff, render.cutoff);
+  EXPECT_TRUE(partial.axes);  // the window shows the axes unless switched off
 }
 
 TEST_F(ViewerFiles, SettingsClampOddValuesAndRejectBadJson) {

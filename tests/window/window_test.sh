@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Scripted window test: starts the real ewaview under X, replays an orbit drag, a scroll zoom, a
-# transfer-function drag, a double-click on the volume (the probe and the new centre) and a mark with
-# xdotool, and checks the screenshots change as they should; then
+# transfer-function drag, a double-click on the volume (the probe and the new centre), a mark and
+# the axes key with xdotool, and checks the screenshots change as they should; then
 # checks that an orbit drag is answered while a full-quality frame is being refined.
 # Usage: window_test.sh EWAVIEW_BINARY OUTPUT_DIR.  Exit 77 (CTest skip) without X tools, or
 # exit 1 when CI=true: CI must not pass by skipping.
@@ -185,6 +185,17 @@ measured() { grep -q '^probe x .* from the mark$' "$work/stdout"; }
 poll "a probe line with the distance from the mark" measured
 
 log "probe, double-click and mark checked"
+# X switches the orientation axes (on by default, bottom right above the probe line) off.
+axes_crop="110x110+985+440"
+shot "$work/axes_on.png"
+xdotool key --window "$wid" x
+axes_off() { grep -q '^axes off$' "$work/stdout"; }
+poll "the axes switched off" axes_off
+settled "$out/8_axes_off.png" "$work/axes_on.png" "$axes_crop"
+a0=$(coverage "$work/axes_on.png" "$axes_crop"); a1=$(coverage "$out/8_axes_off.png" "$axes_crop")
+greater "$a0" "$(awk -v a="$a1" 'BEGIN { print a + 0.02 }')" ||
+  fail "switching the axes off did not clear the corner (coverage $a0 -> $a1)"
+log "orientation axes checked"
 # Quit with Q: the process ends with status 0.
 xdotool key --window "$wid" q
 start=$SECONDS
