@@ -113,7 +113,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--frame", o->load.frame, "4D NIfTI: open this frame (default 0)")
       ->check(CLI::Range(0, 1 << 30));
   app.add_option("--channel", o->load.channel,
-                 "Multi-channel TIFF or RGB DICOM: open this channel (default 0)")
+                 "Multi-channel TIFF or colour DICOM (0 red, 1 green, 2 blue): open this channel "
+                 "(default 0)")
       ->check(CLI::Range(0, 1 << 20));
   std::vector<int> res;
   app.add_option("--resolution", res, "Image size W,H (default 800,600)")

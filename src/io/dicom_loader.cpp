@@ -137,9 +137,11 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   layout.dims = {base.columns, base.rows, int64_t(slices.size()) * base.frames};
   if (!base.hasSpacing) layout.notes.push_back("no PixelSpacing: 1 assumed");
   if (base.samplesPerPixel > 1)
-    layout.notes.push_back("RGB: " + std::to_string(base.samplesPerPixel) +
-                           " channels; showing channel " + std::to_string(channel) +
-                           " (--channel N picks another)");
+    layout.notes.push_back((base.photometric.rfind("YBR", 0) == 0
+                                ? "RGB (from " + base.photometric + "): "
+                                : std::string("RGB: ")) +
+                           std::to_string(base.samplesPerPixel) + " channels; showing channel " +
+                           std::to_string(channel) + " (--channel N picks another)");
   layout.spacing = {base.columnSpacing, base.rowSpacing, 1.0};
   const glm::dvec3 row(base.orientation[0], base.orientation[1], base.orientation[2]);
   const glm::dvec3 column(base.orientation[3], base.orientation[4], base.orientation[5]);

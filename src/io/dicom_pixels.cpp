@@ -43,13 +43,67 @@ void appendValues(const std::vector<char>& buffer, size_t count, const ChannelLa
   }
 }
 
-// The pixel module must describe monochrome (or RGB) integer or float samples GDCM can decode;
-// its image reader asserts (aborts) on some impossible values instead of failing.
+// Colour spaces of three samples a pixel: RGB, YBR_FULL (Y, Cb, Cr at full range; JPEG's
+// YBR_FULL_422 decodes to it) converted here, and JPEG 2000's YBR_RCT and YBR_ICT, which the
+// codec's inverse transform already returns as RGB.
+bool isYbrFull(const std::string& pi) {
+  return pi == "YBR_FULL" || pi == "YBR_FULL_422";
+}
+bool isColourSpace(const std::string& pi) {
+  return pi == "RGB" || isYbrFull(pi) || pi == "YBR_RCT" || pi == "YBR_ICT";
+}
+
+bool isJpeg(gdcm::TransferSyntax ts) {
+  using T = gdcm::TransferSyntax;
+  for (const T::TSType t :
+       {T::JPEGBaselineProcess1, T::JPEGExtendedProcess2_4, T::JPEGExtendedProcess3_5,
+        T::JPEGSpectralSelectionProcess6_8, T::JPEGFullProgressionProcess10_12,
+        T::JPEGLosslessProcess14, T::JPEGLosslessProcess14_1})
+    if (ts == t) return true;
+  return false;
+}
+
+bool isJpeg2000(gdcm::TransferSyntax ts) {
+  using T = gdcm::TransferSyntax;
+  return ts == T::JPEG2000Lossless || ts == T::JPEG2000 || ts == T::JPEG2000Part2Lossless ||
+         ts == T::JPEG2000Part2;
+}
+
+// The subsampled and transformed colour spaces exist only inside their codecs' streams; GDCM's
+// raw decoder asserts on them (YBR_ICT, YBR_RCT) or would need the chroma upsampled (422).
+void checkColourCoding(const DicomSlice& s, gdcm::TransferSyntax ts) {
+  const std::string& pi = s.photometric;
+  const bool ok = pi == "YBR_FULL_422"                 ? isJpeg(ts)
+                  : pi == "YBR_RCT" || pi == "YBR_ICT" ? isJpeg2000(ts)
+                                                       : true;
+  if (!ok)
+    failLoad(s.file,
+             "PhotometricInterpretation " + quoteText(pi, 20) +
+                 (ts.IsEncapsulated() ? " in transfer syntax " +
+                                            quoteText(gdcm::TransferSyntax::GetTSString(ts), 40)
+                                      : std::string(" uncompressed")) +
+                 " is not read (" + (pi == "YBR_FULL_422" ? "JPEG" : "JPEG 2000") + " only)");
+}
+
+// One RGB component (0 red, 1 green, 2 blue) of full-range Y, Cb, Cr (DICOM PS3.3 C.7.6.3.1.2,
+// the chroma offset half the range of `bits` bits), rounded and kept within that range.
+double rgbOfYbr(double y, double cb, double cr, int component, int64_t bits) {
+  const double half = std::ldexp(1.0, int(bits) - 1);
+  cb -= half;
+  cr -= half;
+  const double v = component == 0   ? y + 1.402 * cr
+                   : component == 1 ? y - 0.344136 * cb - 0.714136 * cr
+                                    : y + 1.772 * cb;
+  return std::clamp(std::round(v), 0.0, 2.0 * half - 1.0);
+}
+
+// The pixel module must describe monochrome (or colour) integer or float samples GDCM can
+// decode; its image reader asserts (aborts) on some impossible values instead of failing.
 void checkPixelModule(const DicomSlice& s) {
   const bool colour = s.samplesPerPixel == 3;
   if (s.samplesPerPixel != 1 && !colour)
     failLoad(s.file,
-             "bad SamplesPerPixel " + std::to_string(s.samplesPerPixel) + " (1, or 3 for RGB)");
+             "bad SamplesPerPixel " + std::to_string(s.samplesPerPixel) + " (1, or 3 for colour)");
   const int64_t bits = s.bitsAllocated;
   if (bits != 8 && bits != 16 && bits != 32 && bits != 64)
     failLoad(s.file, "unsupported BitsAllocated " + std::to_string(bits) + " (8, 16, 32 or 64)");
@@ -60,15 +114,18 @@ void checkPixelModule(const DicomSlice& s) {
   if (bits == 8 && s.bitsStored != 8)
     failLoad(s.file, "BitsStored " + std::to_string(s.bitsStored) +
                          " with BitsAllocated 8 is not read (8 bits stored only)");
-  // Colour: RGB only (YBR colour spaces would need converting; none of ours has them).
   const bool mono =
       s.photometric.empty() || s.photometric == "MONOCHROME1" || s.photometric == "MONOCHROME2";
-  if (colour ? s.photometric != "RGB" : !mono)
+  if (colour ? !isColourSpace(s.photometric) : !mono)
     failLoad(s.file, "PhotometricInterpretation " + quoteText(s.photometric, 20) + " with " +
                          std::to_string(s.samplesPerPixel) +
-                         " samples a pixel (MONOCHROME1 or MONOCHROME2 with 1, RGB with 3)");
+                         " samples a pixel (MONOCHROME1 or MONOCHROME2 with 1; RGB, YBR_FULL, "
+                         "YBR_FULL_422, YBR_RCT or YBR_ICT with 3)");
   if (s.representation != 0 && s.representation != 1)
     failLoad(s.file, "bad PixelRepresentation " + std::to_string(s.representation));
+  if (isYbrFull(s.photometric) && (s.representation != 0 || s.bitsAllocated > 16))
+    failLoad(s.file, "PhotometricInterpretation " + quoteText(s.photometric, 20) +
+                         " with signed or wider than 16-bit samples is not read");
   // GDCM's pixmap reader asserts on any other value (even for one sample a pixel).
   if (s.planarConfiguration != 0 && s.planarConfiguration != 1)
     failLoad(s.file, "bad PlanarConfiguration" +
@@ -111,6 +168,32 @@ std::vector<double> rescaleOf(const gdcm::File& file) {
   return {0.0, 1.0};
 }
 
+// Appends one channel's samples (as `layout` places them) of `buffer`'s pixel type.
+void appendChannel(const std::vector<char>& buffer, size_t count, const ChannelLayout& layout,
+                   const gdcm::PixelFormat& format, const std::string& file,
+                   std::vector<double>& out) {
+  switch (format.GetScalarType()) {
+    case gdcm::PixelFormat::UINT8:
+      return appendValues<uint8_t>(buffer, count, layout, out);
+    case gdcm::PixelFormat::INT8:
+      return appendValues<int8_t>(buffer, count, layout, out);
+    case gdcm::PixelFormat::UINT16:
+      return appendValues<uint16_t>(buffer, count, layout, out);
+    case gdcm::PixelFormat::INT16:
+      return appendValues<int16_t>(buffer, count, layout, out);
+    case gdcm::PixelFormat::UINT32:
+      return appendValues<uint32_t>(buffer, count, layout, out);
+    case gdcm::PixelFormat::INT32:
+      return appendValues<int32_t>(buffer, count, layout, out);
+    case gdcm::PixelFormat::FLOAT32:
+      return appendValues<float>(buffer, count, layout, out);
+    case gdcm::PixelFormat::FLOAT64:
+      return appendValues<double>(buffer, count, layout, out);
+    default:
+      failLoad(file, std::string("unsupported pixel type ") + format.GetScalarTypeAsString());
+  }
+}
+
 }  // namespace
 
 SlicePixels readSlice(const DicomSlice& slice, int channel) {
@@ -121,6 +204,7 @@ SlicePixels readSlice(const DicomSlice& slice, int channel) {
   reader.SetFileName(slice.file.c_str());
   if (!reader.Read()) failLoad(slice.file, "GDCM cannot read the image");
   const gdcm::Pixmap& image = reader.GetPixmap();
+  checkColourCoding(slice, image.GetTransferSyntax());
   const unsigned* dims = image.GetDimensions();
   const gdcm::PixelFormat& format = image.GetPixelFormat();
   const int samples = format.GetSamplesPerPixel();
@@ -159,33 +243,19 @@ SlicePixels readSlice(const DicomSlice& slice, int channel) {
   layout.channel = size_t(channel);
   layout.plane = size_t(dims[0]) * dims[1];
   layout.planar = samples > 1 && image.GetPlanarConfiguration() == 1;
-  switch (format.GetScalarType()) {
-    case gdcm::PixelFormat::UINT8:
-      appendValues<uint8_t>(buffer, count, layout, out.values);
-      break;
-    case gdcm::PixelFormat::INT8:
-      appendValues<int8_t>(buffer, count, layout, out.values);
-      break;
-    case gdcm::PixelFormat::UINT16:
-      appendValues<uint16_t>(buffer, count, layout, out.values);
-      break;
-    case gdcm::PixelFormat::INT16:
-      appendValues<int16_t>(buffer, count, layout, out.values);
-      break;
-    case gdcm::PixelFormat::UINT32:
-      appendValues<uint32_t>(buffer, count, layout, out.values);
-      break;
-    case gdcm::PixelFormat::INT32:
-      appendValues<int32_t>(buffer, count, layout, out.values);
-      break;
-    case gdcm::PixelFormat::FLOAT32:
-      appendValues<float>(buffer, count, layout, out.values);
-      break;
-    case gdcm::PixelFormat::FLOAT64:
-      appendValues<double>(buffer, count, layout, out.values);
-      break;
-    default:
-      failLoad(slice.file, std::string("unsupported pixel type ") + format.GetScalarTypeAsString());
+  if (isYbrFull(slice.photometric)) {
+    // Y, Cb and Cr (GDCM's JPEG decoder returns YBR_FULL_422 upsampled, unconverted) to RGB.
+    std::vector<double> ybr[3];
+    for (int c = 0; c < 3; ++c) {
+      layout.channel = size_t(c);
+      ybr[c].reserve(size_t(count));
+      appendChannel(buffer, count, layout, format, slice.file, ybr[c]);
+    }
+    for (size_t i = 0; i < size_t(count); ++i)
+      out.values.push_back(
+          rgbOfYbr(ybr[0][i], ybr[1][i], ybr[2][i], channel, format.GetBitsStored()));
+  } else {
+    appendChannel(buffer, count, layout, format, slice.file, out.values);
   }
   if (!std::isfinite(out.slope) || !std::isfinite(out.intercept) || out.slope == 0.0)
     failLoad(slice.file, "bad RescaleSlope or RescaleIntercept");

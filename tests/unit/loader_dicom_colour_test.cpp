@@ -2,6 +2,9 @@
 // compressed; channels that are not there and colour spaces that are not RGB fail in one line.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "io/volume_loader.h"
@@ -16,21 +19,38 @@ using testing::expectLoadError;
 using testing::rgbTestSample;
 using testing::TempDir;
 
+void setPhotometric(const std::string& file, const std::string& pi) {
+  ASSERT_TRUE(testing::editDicom(file, [&](gdcm::DataSet& ds) {
+    gdcm::Attribute<0x0028, 0x0004> photometric;
+    photometric.SetValue(pi);
+    ds.Replace(photometric.GetAsDataElement());
+  }));
+}
+
+// Full-range Y, Cb, Cr of an 8-bit RGB sample (JPEG's and DICOM's YBR_FULL), rounded.
+std::array<uint8_t, 3> ybrOf(double r, double g, double b) {
+  const double y = 0.299 * r + 0.587 * g + 0.114 * b;
+  const double cb = 128.0 - 0.168736 * r - 0.331264 * g + 0.5 * b;
+  const double cr = 128.0 + 0.5 * r - 0.418688 * g - 0.081312 * b;
+  return {uint8_t(std::lround(y)), uint8_t(std::lround(cb)), uint8_t(std::lround(cr))};
+}
+
 Volume loadChannel(const std::string& path, int channel) {
   LoadOptions options;
   options.channel = channel;
   return loadVolume(path, options);
 }
 
-// Every voxel of channel `c` holds the written sample of its column, row and slice.
-void expectChannel(const Volume& v, int c) {
+// Every voxel of channel `c` holds the written sample of its column, row and slice (within
+// `tolerance`: YBR samples are rounded, JPEG's lossy).
+void expectChannel(const Volume& v, int c, double tolerance = 0.0) {
   ASSERT_EQ(v.dims(), (std::array<int64_t, 3>{5, 4, 3}));
   EXPECT_EQ(v.type(), ScalarType::UInt8);
   EXPECT_EQ(v.spacing(), glm::dvec3(0.75, 0.5, 2.0));
   for (int k = 0; k < 3; ++k)
     for (int j = 0; j < 4; ++j)
       for (int i = 0; i < 5; ++i)
-        ASSERT_EQ(v.value(i, j, k), double(rgbTestSample(c, i, j, 2 * k)))
+        ASSERT_NEAR(v.value(i, j, k), double(rgbTestSample(c, i, j, 2 * k)), tolerance)
             << "channel " << c << " at " << i << "," << j << "," << k;
 }
 
@@ -66,6 +86,107 @@ TEST(DicomColour, CompressedRgbSlicesLoadLikeTheOthers) {
   for (int c = 0; c < 3; ++c) expectChannel(loadChannel(folder, c), c);
 }
 
+TEST(DicomColour, YbrFullSamplesAreConvertedToRgb) {
+  // An RGB series rewritten as the Y, Cb, Cr of its samples: each channel opens as the RGB one
+  // (within one level: the samples were rounded on the way there and back), by pixel and by
+  // plane, uncompressed and in RLE.
+  TempDir dir;
+  for (bool planar : {false, true}) {
+    SCOPED_TRACE(planar ? "by plane" : "by pixel");
+    testing::DicomSliceSpec spec;
+    spec.rgb = true;
+    spec.planar = planar;
+    const std::string folder = dicomSeries(dir, planar ? "planes" : "pixels", 3, spec);
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+      ASSERT_TRUE(testing::editDicom(entry.path().string(), [&](gdcm::DataSet& ds) {
+        const gdcm::ByteValue* bv = ds.GetDataElement(gdcm::Tag(0x7fe0, 0x0010)).GetByteValue();
+        std::vector<uint8_t> px(bv->GetPointer(), bv->GetPointer() + bv->GetLength());
+        const size_t n = px.size() / 3;
+        auto at = [&](size_t p, int c) -> uint8_t& { return px[planar ? c * n + p : 3 * p + c]; };
+        for (size_t p = 0; p < n; ++p) {
+          const auto ybr = ybrOf(at(p, 0), at(p, 1), at(p, 2));
+          for (int c = 0; c < 3; ++c) at(p, c) = ybr[size_t(c)];
+        }
+        gdcm::DataElement pixels(gdcm::Tag(0x7fe0, 0x0010));
+        pixels.SetVR(gdcm::VR::OB);
+        pixels.SetByteValue(reinterpret_cast<const char*>(px.data()), uint32_t(px.size()));
+        ds.Replace(pixels);
+        gdcm::Attribute<0x0028, 0x0004> photometric;
+        photometric.SetValue("YBR_FULL");
+        ds.Replace(photometric.GetAsDataElement());
+      }));
+    }
+    // RLE returns the samples it was given too.
+    ASSERT_TRUE(testing::recompressDicom(folder + "/im1.dcm", gdcm::TransferSyntax::RLELossless));
+    for (int c = 0; c < 3; ++c) {
+      const Volume v = loadChannel(folder, c);
+      expectChannel(v, c, 1.0);
+      EXPECT_NE(
+          allNotes(v).find("RGB (from YBR_FULL): 3 channels; showing channel " + std::to_string(c)),
+          std::string::npos)
+          << allNotes(v);
+    }
+  }
+}
+
+TEST(DicomColour, JpegYbrFull422IsDecodedAndConvertedToRgb) {
+  // GDCM's JPEG encoder stores an RGB image as YCbCr (and leaves the header saying RGB); said
+  // YBR_FULL_422, as colour JPEG DICOM files say, it decodes to Y, Cb, Cr that become RGB again.
+  TempDir dir;
+  testing::DicomSliceSpec spec;
+  spec.rgb = true;
+  spec.rows = 16;
+  spec.columns = 16;
+  const std::string folder = dicomSeries(dir, "jpeg", 3, spec);
+  for (int k = 0; k < 3; ++k) {
+    const std::string file = folder + "/im" + std::to_string(k) + ".dcm";
+    ASSERT_TRUE(testing::recompressDicom(file, gdcm::TransferSyntax::JPEGBaselineProcess1));
+    setPhotometric(file, "YBR_FULL_422");
+  }
+  for (int c = 0; c < 3; ++c) {
+    const Volume v = loadChannel(folder, c);
+    ASSERT_EQ(v.dims(), (std::array<int64_t, 3>{16, 16, 3}));
+    double worst = 0.0;
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 16; ++j)
+        for (int i = 0; i < 16; ++i)
+          worst = std::max(worst, std::abs(v.value(i, j, k) - rgbTestSample(c, i, j, 2 * k)));
+    EXPECT_LE(worst, 4.0) << "channel " << c;  // lossy JPEG of a smooth ramp
+  }
+}
+
+TEST(DicomColour, YbrColourSpacesOutsideTheirCodecsAreRefused) {
+  // YBR_FULL_422 uncompressed (its chroma would need upsampling) and JPEG 2000's YBR_ICT and
+  // YBR_RCT outside JPEG 2000 (GDCM's raw decoder asserts on them): one line, no abort.
+  TempDir dir;
+  testing::DicomSliceSpec spec;
+  spec.rgb = true;
+  for (const std::string pi : {"YBR_FULL_422", "YBR_ICT", "YBR_RCT"}) {
+    const std::string folder = dicomSeries(dir, pi, 1, spec);
+    setPhotometric(folder + "/im0.dcm", pi);
+    expectLoadError([&] { loadVolume(folder); }, folder,
+                    "im0.dcm: PhotometricInterpretation '" + pi + "' uncompressed is not read (" +
+                        (pi == "YBR_FULL_422" ? "JPEG" : "JPEG 2000") + " only)");
+  }
+  // In JPEG 2000 the codec's inverse transform returns RGB: read as RGB, exactly (lossless).
+  spec.rows = 16;  // OpenJPEG's encoder needs more than 4 rows for its resolution levels
+  spec.columns = 16;
+  const std::string j2k = dicomSeries(dir, "j2k", 3, spec);
+  for (int k = 0; k < 3; ++k) {
+    const std::string file = j2k + "/im" + std::to_string(k) + ".dcm";
+    ASSERT_TRUE(testing::recompressDicom(file, gdcm::TransferSyntax::JPEG2000Lossless));
+    setPhotometric(file, k == 1 ? "YBR_RCT" : "YBR_ICT");
+  }
+  for (int c = 0; c < 3; ++c) {
+    const Volume v = loadChannel(j2k, c);
+    ASSERT_EQ(v.dims(), (std::array<int64_t, 3>{16, 16, 3}));
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 16; ++j)
+        for (int i = 0; i < 16; ++i)
+          ASSERT_EQ(v.value(i, j, k), rgbTestSample(c, i, j, 2 * k)) << i << "," << j << "," << k;
+  }
+}
+
 TEST(DicomColour, MissingChannelsAndOtherColourSpacesFailWithOneLine) {
   TempDir dir;
   testing::DicomSliceSpec spec;
@@ -74,15 +195,12 @@ TEST(DicomColour, MissingChannelsAndOtherColourSpacesFailWithOneLine) {
   expectLoadError([&] { loadChannel(rgb, 3); }, rgb, "--channel 3 is out of range (3 channels)");
   const std::string grey = dicomSeries(dir, "grey", 2);
   expectLoadError([&] { loadChannel(grey, 1); }, grey, "--channel 1 is out of range (1 channel)");
-  // The same samples declared YBR_FULL: not converted, refused.
-  const std::string ybr = dicomSeries(dir, "ybr", 1, spec);
-  ASSERT_TRUE(testing::editDicom(ybr + "/im0.dcm", [](gdcm::DataSet& ds) {
-    gdcm::Attribute<0x0028, 0x0004> photometric;
-    photometric.SetValue("YBR_FULL");
-    ds.Replace(photometric.GetAsDataElement());
-  }));
-  expectLoadError([&] { loadVolume(ybr); }, ybr,
-                  "im0.dcm: PhotometricInterpretation 'YBR_FULL' with 3 samples a pixel");
+  // Colour spaces that are neither RGB nor YBR: refused.
+  const std::string other = dicomSeries(dir, "other", 1, spec);
+  setPhotometric(other + "/im0.dcm", "HSV");
+  expectLoadError([&] { loadVolume(other); }, other,
+                  "im0.dcm: PhotometricInterpretation 'HSV' with 3 samples a pixel (MONOCHROME1 "
+                  "or MONOCHROME2 with 1; RGB, YBR_FULL, YBR_FULL_422, YBR_RCT or YBR_ICT with 3)");
   // A PlanarConfiguration other than 0 or 1 (GDCM's reader asserts on it, whatever the samples
   // a pixel; found by fuzzing): refused before GDCM decodes, for colour and grey alike.
   for (const bool colour : {true, false}) {
