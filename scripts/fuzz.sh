@@ -18,6 +18,8 @@ if [ ${#names[@]} -eq 0 ]; then
   for src in fuzz/*_fuzzer.cpp; do n="$(basename "$src" .cpp)"; names+=("${n%_fuzzer}"); done
 fi
 mkdir -p "$build/crashes"
+# The sanitizer build's leak suppressions (libraries' own leaks, each with its reason).
+export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
 status=0
 for name in "${names[@]}"; do
   corpus="$build/corpus/$name"

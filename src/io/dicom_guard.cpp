@@ -10,6 +10,7 @@
 #include "io/byte_order.h"
 #include "io/file_bytes.h"
 #include "io/format_loaders.h"
+#include "io/jpeg_header_check.h"
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
 
@@ -39,7 +40,8 @@ bool isVr(const uint8_t* vr) {
 // compressed bytes), each ending at a byte offset or, with undefined length, at a delimiter.
 struct Container {
   enum Kind { Sequence, Item, Fragments } kind;
-  size_t end;  // kUndefined: ends at its delimiter
+  size_t end;        // kUndefined: ends at its delimiter
+  size_t items = 0;  // fragments: those walked (the first is the offset table)
 };
 constexpr size_t kUndefined = SIZE_MAX;
 
@@ -47,6 +49,7 @@ struct Walk {
   const std::vector<uint8_t>& bytes;
   std::string problem;  // empty while the walk is fine
   std::vector<Container> open;
+  bool jpeg = false;  // the transfer syntax is JPEG: each frame's header is checked
 
   // Walks elements from `pos` to the end (or, with `metaOnly`, while the group is 0002). Items
   // and delimiters must sit where they belong: GDCM asserts (aborts) on one out of place.
@@ -70,6 +73,11 @@ struct Walk {
         pos += 8;
         if (element == 0xe000 && top == Container::Fragments) {
           if (length > n - pos) return fail(pos, "a pixel data fragment is cut short");
+          // GDCM's JPEG codec aborts on headers libjpeg only warns about: checked first.
+          if (jpeg && open.back().items++ > 0) {
+            const std::string bad = jpegHeaderProblem(&bytes[pos], size_t(length));
+            if (!bad.empty()) return fail(pos, "the JPEG header of a pixel data fragment: " + bad);
+          }
           pos += size_t(length);
         } else if (element == 0xe000 && top == Container::Sequence) {
           if (length != 0xffffffffu && length > n - pos)
@@ -195,6 +203,7 @@ DicomStructure checkDicomStructure(const std::string& path) {
   const bool explicitVr = syntax != "1.2.840.10008.1.2";
   const bool bigEndian = syntax == "1.2.840.10008.1.2.2";
   if (bytes.size() - metaEnd < 8) failLoad(path, "no data set after the DICOM meta header");
+  walk.jpeg = isJpegTransferSyntax(syntax);
   walk.run(metaEnd, explicitVr, bigEndian, false);
   if (walk.problem.empty()) return DicomStructure::Plausible;
   failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);

@@ -2,8 +2,11 @@
 // ones.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <glm/matrix.hpp>
+#include <iterator>
 #include <string>
 #include <tuple>
 
@@ -203,6 +206,33 @@ TEST(DicomFiles, CompressedSlicesLoadLikeTheOthers) {
   EXPECT_NE(std::filesystem::file_size(folder + "/im1.dcm"),
             std::filesystem::file_size(folder + "/im0.dcm"));
   EXPECT_EQ(loadVolume(folder).bytes(), plain.bytes());
+}
+
+TEST(DicomFiles, JpegHeadersGdcmAbortsOnAreRefusedInOneLine) {
+  // A lossless JPEG slice whose frame header says 3 bits: GDCM 3.0's codec asserts (aborts the
+  // program) on it, so it is refused before GDCM reads the file; at 12 bits it loads.
+  TempDir dir;
+  testing::DicomSliceSpec spec;
+  spec.rows = spec.columns = 16;
+  const std::string folder = dicomSeries(dir, "p", 1, spec);
+  const std::string file = folder + "/im0.dcm";
+  ASSERT_TRUE(testing::recompressDicom(file, gdcm::TransferSyntax::JPEGLosslessProcess14_1));
+  auto withPrecision = [&](int bits) {
+    std::ifstream in(file, std::ios::binary);
+    std::vector<char> b((std::istreambuf_iterator<char>(in)), {});
+    const std::string sof = "\xFF\xC3";
+    const auto at = std::search(b.begin(), b.end(), sof.begin(), sof.end());
+    EXPECT_NE(at, b.end());
+    if (at == b.end()) return;
+    *(at + 4) = char(bits);
+    std::ofstream(file, std::ios::binary).write(b.data(), long(b.size()));
+  };
+  withPrecision(12);
+  EXPECT_EQ(loadVolume(file).dims(), (std::array<int64_t, 3>{16, 16, 1}));
+  withPrecision(3);
+  expectLoadError([&] { loadVolume(file); }, file,
+                  "im0.dcm: corrupt or truncated DICOM data: the JPEG header of a pixel data "
+                  "fragment: precision of 3 bits");
 }
 
 TEST(DicomFiles, GantryTiltWarnsAndSeveralSeriesAreListed) {
