@@ -49,7 +49,9 @@ struct Walk {
   const std::vector<uint8_t>& bytes;
   std::string problem;  // empty while the walk is fine
   std::vector<Container> open;
-  bool jpeg = false;  // the transfer syntax is JPEG: each frame's header is checked
+  bool jpeg = false;      // the transfer syntax is JPEG: each frame's header is checked
+  bool jpeg2000 = false;  // JPEG 2000: each codestream's image size against the header's
+  int64_t rows = 0, columns = 0, samples = 1;  // the data set's own (0028,0010), (0011), (0002)
 
   // Walks elements from `pos` to the end (or, with `metaOnly`, while the group is 0002). Items
   // and delimiters must sit where they belong: GDCM asserts (aborts) on one out of place.
@@ -74,9 +76,19 @@ struct Walk {
         if (element == 0xe000 && top == Container::Fragments) {
           if (length > n - pos) return fail(pos, "a pixel data fragment is cut short");
           // GDCM's JPEG codec aborts on headers libjpeg only warns about: checked first.
-          if (jpeg && open.back().items++ > 0) {
-            const std::string bad = jpegHeaderProblem(&bytes[pos], size_t(length));
-            if (!bad.empty()) return fail(pos, "the JPEG header of a pixel data fragment: " + bad);
+          // The image's own fragments (not an icon's, inside a sequence) after the offset table.
+          if (open.size() == 1 && open.back().items++ > 0) {
+            if (jpeg) {
+              const std::string bad = jpegHeaderProblem(&bytes[pos], size_t(length));
+              if (!bad.empty())
+                return fail(pos, "the JPEG header of a pixel data fragment: " + bad);
+            }
+            if (jpeg2000) {
+              const std::string bad =
+                  jpeg2000HeaderProblem(&bytes[pos], size_t(length), columns, rows, samples);
+              if (!bad.empty())
+                return fail(pos, "the JPEG 2000 header of a pixel data fragment: " + bad);
+            }
           }
           pos += size_t(length);
         } else if (element == 0xe000 && top == Container::Sequence) {
@@ -125,6 +137,12 @@ struct Walk {
       if (sequence) {
         open.push_back({Container::Sequence, pos + size_t(length)});
         continue;
+      }
+      if (group == 0x0028 && open.empty() && length == 2) {
+        const auto value = int64_t(readUnsigned(&bytes[pos], 2, big));
+        if (element == 0x0010) rows = value;
+        if (element == 0x0011) columns = value;
+        if (element == 0x0002) samples = value;
       }
       // GDCM asserts that a retired Recognition Code names ACR-NEMA or MIPS.
       if (group == 0x0008 && element == 0x0010 && open.empty() && !recognitionCodeOk(pos, length))
@@ -204,6 +222,7 @@ DicomStructure checkDicomStructure(const std::string& path) {
   const bool bigEndian = syntax == "1.2.840.10008.1.2.2";
   if (bytes.size() - metaEnd < 8) failLoad(path, "no data set after the DICOM meta header");
   walk.jpeg = isJpegTransferSyntax(syntax);
+  walk.jpeg2000 = isJpeg2000TransferSyntax(syntax);
   walk.run(metaEnd, explicitVr, bigEndian, false);
   if (walk.problem.empty()) return DicomStructure::Plausible;
   failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);

@@ -1,6 +1,8 @@
-// jpegHeaderProblem: the JPEG markers up to the first scan, checked as GDCM's codec needs them.
+// jpegHeaderProblem and jpeg2000HeaderProblem: JPEG markers up to the first scan, and a JPEG 2000
+// codestream's image and tile size, checked as GDCM's codecs need them.
 #include "io/jpeg_header_check.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace ewa {
@@ -11,6 +13,9 @@ constexpr uint8_t kSoi = 0xD8, kEoi = 0xD9, kSos = 0xDA, kApp0 = 0xE0, kApp14 = 
 
 unsigned be16(const uint8_t* p) {
   return unsigned(p[0]) << 8 | p[1];
+}
+uint64_t be32(const uint8_t* p) {
+  return uint64_t(be16(p)) << 16 | be16(p + 2);
 }
 
 // Start-of-frame markers: SOF0 to SOF15 but DHT (C4), JPG (C8) and DAC (CC).
@@ -78,6 +83,45 @@ std::string jpegHeaderProblem(const uint8_t* data, size_t size) {
                : precision != 8 && precision != 12 && precision != 16)
     return "precision of " + std::to_string(precision) + " bits";
   return "";
+}
+
+std::string jpeg2000HeaderProblem(const uint8_t* data, size_t size, int64_t columns, int64_t rows,
+                                  int64_t samples) {
+  if (size < 4 || be16(data) != 0xFF4F) return "";  // no SOC: a JP2 box or a later fragment
+  if (be16(data + 2) != 0xFF51) return "no SIZ marker after SOC";
+  if (size < 6) return "cut short";
+  const unsigned length = be16(data + 4);
+  if (size - 4 < length || length < 41) return "cut short";
+  const uint8_t* siz = data + 6;  // Rsiz, then the sizes
+  const uint64_t width = be32(siz + 2), height = be32(siz + 6), x0 = be32(siz + 10),
+                 y0 = be32(siz + 14), tileWidth = be32(siz + 18), tileHeight = be32(siz + 22),
+                 tileX0 = be32(siz + 26), tileY0 = be32(siz + 30);
+  const unsigned components = be16(siz + 34);
+  if (length != 38 + 3 * components) return "SIZ length disagrees with its components";
+  if (width <= x0 || height <= y0 || width - x0 != uint64_t(columns) ||
+      height - y0 != uint64_t(rows))
+    return "image of " + std::to_string(width - std::min(width, x0)) + " x " +
+           std::to_string(height - std::min(height, y0)) + " (the header says " +
+           std::to_string(columns) + " x " + std::to_string(rows) + ")";
+  if (tileWidth == 0 || tileHeight == 0 || tileX0 > x0 || tileY0 > y0 || tileX0 + tileWidth <= x0 ||
+      tileY0 + tileHeight <= y0)
+    return "tiles that do not cover the image";
+  if (int64_t(components) != samples)
+    return std::to_string(components) + " components (SamplesPerPixel " + std::to_string(samples) +
+           ")";
+  for (unsigned c = 0; c < components; ++c) {
+    const uint8_t* comp = siz + 36 + 3 * c;
+    if ((comp[0] & 0x7F) + 1 > 16) return std::to_string((comp[0] & 0x7F) + 1) + "-bit samples";
+    if (comp[1] != 1 || comp[2] != 1) return "subsampled components";
+  }
+  return "";
+}
+
+bool isJpeg2000TransferSyntax(const std::string& uid) {
+  for (const char* j2k : {"1.2.840.10008.1.2.4.90", "1.2.840.10008.1.2.4.91",
+                          "1.2.840.10008.1.2.4.92", "1.2.840.10008.1.2.4.93"})
+    if (uid == j2k) return true;
+  return false;
 }
 
 bool isJpegTransferSyntax(const std::string& uid) {

@@ -1,5 +1,5 @@
-// A JPEG stream's header (SOI to the first SOS) walked before GDCM's JPEG codec reads it: the
-// codec asserts (aborts) on headers libjpeg only warns about or that it did not plan for.
+// The headers of JPEG streams (SOI to the first SOS) and JPEG 2000 codestreams (SIZ) walked
+// before GDCM's codecs read them: they abort or crash on headers they did not plan for.
 #pragma once
 
 #include <cstddef>
@@ -18,8 +18,19 @@ namespace ewa {
 // lossy; 8 to 16 lossless).
 std::string jpegHeaderProblem(const uint8_t* data, size_t size);
 
+// What is wrong with the main header of the JPEG 2000 codestream at `data` (SOC, then SIZ) for
+// an image of `columns` x `rows` with `samples` samples a pixel, or "". GDCM 3.0 with OpenJPEG
+// 2.5 (Debian 12) crashes freeing its decoder after a codestream whose image size disagrees with
+// the DICOM header's (found by fuzzing). Refused: an image size or offset other than the DICOM
+// header's, tiles that do not cover it, other numbers of components, subsampled components and
+// more than 16 bits a sample. Bytes that start no codestream (a JP2 box, a later fragment) pass.
+std::string jpeg2000HeaderProblem(const uint8_t* data, size_t size, int64_t columns, int64_t rows,
+                                  int64_t samples);
+
 // Whether a DICOM transfer syntax UID is one of the JPEG (ISO 10918) ones GDCM decodes with
 // that codec (not JPEG-LS or JPEG 2000).
 bool isJpegTransferSyntax(const std::string& uid);
+// Whether it is a JPEG 2000 one (1.2.840.10008.1.2.4.90 to .93).
+bool isJpeg2000TransferSyntax(const std::string& uid);
 
 }  // namespace ewa

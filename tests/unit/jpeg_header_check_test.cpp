@@ -1,5 +1,5 @@
-// The JPEG header walk run before GDCM's JPEG codec: well-formed headers pass, and each kind of
-// header the codec aborts or crashes on is named.
+// The JPEG and JPEG 2000 header walks run before GDCM's codecs: well-formed headers pass, and
+// each kind of header the codecs abort or crash on is named.
 #include "io/jpeg_header_check.h"
 
 #include <gtest/gtest.h>
@@ -15,7 +15,7 @@ using Bytes = std::vector<uint8_t>;
 // bytes each) and the start of a scan.
 Bytes header(uint8_t sof = 0xC0, int precision = 8, int components = 3, Bytes extra = {}) {
   Bytes b = {0xFF, 0xD8, 0xFF, 0xE0, 0x00, 0x10, 'J', 'F', 'I', 'F', 0, 1, 1, 0, 0, 1, 0, 1, 0, 0};
-  b.insert(b.end(), extra.begin(), extra.end());
+  for (const uint8_t x : extra) b.push_back(x);
   const int length = 8 + 3 * components;
   Bytes frame = {0xFF, sof, 0,  uint8_t(length),    uint8_t(precision), 0,
                  16,   0,   16, uint8_t(components)};
@@ -78,6 +78,47 @@ TEST(JpegHeaderCheck, HeadersTheCodecAbortsOnAreNamed) {
   Bytes shortFrame = header(0xC0, 8, 3);
   shortFrame[23] = 8;  // the frame's length leaves no room for its three components
   EXPECT_NE(problem(shortFrame), "");
+}
+
+// A JPEG 2000 main header: SOC, SIZ for a `width` x `height` image at (x0, 0) in one tile of
+// `tile` pixels, `components` of 8 bits (XRsiz, YRsiz 1), then COD's start.
+Bytes codestream(uint32_t width, uint32_t height, int components = 1, uint32_t x0 = 0,
+                 uint32_t tile = 64, uint8_t subsampling = 1) {
+  Bytes b = {0xFF, 0x4F, 0xFF, 0x51};
+  auto u16 = [&](unsigned v) { b.push_back(uint8_t(v >> 8)), b.push_back(uint8_t(v)); };
+  auto u32 = [&](uint32_t v) { u16(v >> 16), u16(v & 0xFFFF); };
+  u16(38 + 3 * unsigned(components));
+  u16(0);  // Rsiz
+  u32(x0 + width), u32(height), u32(x0), u32(0), u32(tile), u32(tile), u32(0), u32(0);
+  u16(unsigned(components));
+  for (int c = 0; c < components; ++c) b.insert(b.end(), {7, subsampling, 1});
+  b.insert(b.end(), {0xFF, 0x52, 0, 12});
+  return b;
+}
+
+std::string problem2000(const Bytes& b, int64_t columns, int64_t rows, int64_t samples) {
+  return jpeg2000HeaderProblem(b.data(), b.size(), columns, rows, samples);
+}
+
+TEST(JpegHeaderCheck, Jpeg2000ImageSizeMustBeTheHeaders) {
+  EXPECT_EQ(problem2000(codestream(16, 12), 16, 12, 1), "");
+  EXPECT_EQ(problem2000(codestream(16, 12, 3), 16, 12, 3), "");
+  EXPECT_EQ(problem2000(codestream(16, 12, 1, 5, 8), 16, 12, 1), "");  // offset, 8-pixel tiles
+  // Found by fuzzing: a width of 41 in a 16-column image crashed GDCM with OpenJPEG.
+  EXPECT_EQ(problem2000(codestream(41, 16), 16, 16, 1),
+            "image of 41 x 16 (the header says 16 x 16)");
+  EXPECT_EQ(problem2000(codestream(16, 12, 3), 16, 12, 1), "3 components (SamplesPerPixel 1)");
+  EXPECT_EQ(problem2000(codestream(16, 12, 1, 0, 0), 16, 12, 1),
+            "tiles that do not cover the image");
+  EXPECT_EQ(problem2000(codestream(16, 12, 1, 0, 64, 2), 16, 12, 1), "subsampled components");
+  Bytes deep = codestream(16, 12);
+  deep[deep.size() - 7] = 16;  // 17-bit samples
+  EXPECT_EQ(problem2000(deep, 16, 12, 1), "17-bit samples");
+  const Bytes whole = codestream(16, 12);
+  EXPECT_EQ(problem2000(Bytes(whole.begin(), whole.begin() + 20), 16, 12, 1), "cut short");
+  EXPECT_EQ(problem2000({0xFF, 0x4F, 0xFF, 0x52}, 16, 12, 1), "no SIZ marker after SOC");
+  // Not a codestream's start (a JP2 box, a later fragment): not walked.
+  EXPECT_EQ(problem2000({0, 0, 0, 12, 'j', 'P', ' ', ' '}, 16, 12, 1), "");
 }
 
 TEST(JpegHeaderCheck, OnlyJpegTransferSyntaxesAreWalked) {
