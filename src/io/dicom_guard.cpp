@@ -73,6 +73,9 @@ struct Walk {
       if (group == 0xfffe) {
         const uint64_t length = readUnsigned(&bytes[pos + 4], 4, big);
         pos += 8;
+        // A delimiter's length is 0; GDCM allocates what it claims (found by fuzzing: 4 GiB).
+        if ((element == 0xe00d || element == 0xe0dd) && length != 0)
+          return fail(pos - 8, "a delimiter of length " + std::to_string(length));
         if (element == 0xe000 && top == Container::Fragments) {
           if (length > n - pos) return fail(pos, "a pixel data fragment is cut short");
           // GDCM's JPEG codec aborts on headers libjpeg only warns about: checked first.

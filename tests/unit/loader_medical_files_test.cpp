@@ -235,6 +235,38 @@ TEST(DicomFiles, JpegHeadersGdcmAbortsOnAreRefusedInOneLine) {
                   "fragment: precision of 3 bits");
 }
 
+TEST(DicomFiles, EncapsulatedPixelDataIsCheckedBeforeGdcmReadsIt) {
+  // A JPEG 2000 slice: its codestream's image size must be the header's (GDCM with OpenJPEG
+  // crashed on a wider one), and the delimiter ending its fragments must claim no bytes (GDCM
+  // allocated the 4 GiB one claimed). Both found by fuzzing; both refused in one line.
+  TempDir dir;
+  testing::DicomSliceSpec spec;
+  spec.rows = spec.columns = 16;
+  const std::string folder = dicomSeries(dir, "j", 1, spec);
+  const std::string file = folder + "/im0.dcm";
+  ASSERT_TRUE(testing::recompressDicom(file, gdcm::TransferSyntax::JPEG2000Lossless));
+  EXPECT_EQ(loadVolume(file).dims(), (std::array<int64_t, 3>{16, 16, 1}));
+  std::ifstream in(file, std::ios::binary);
+  const std::vector<char> good((std::istreambuf_iterator<char>(in)), {});
+  auto write = [&](const std::vector<char>& b) {
+    std::ofstream(file, std::ios::binary).write(b.data(), long(b.size()));
+  };
+  std::vector<char> bad = good;
+  ASSERT_EQ(std::string(bad.end() - 8, bad.end() - 4), "\xFE\xFF\xDD\xE0");
+  bad[bad.size() - 2] = bad[bad.size() - 1] = char(0xFF);
+  write(bad);
+  expectLoadError([&] { loadVolume(file); }, file, "a delimiter of length 4294901760");
+  bad = good;
+  const std::string siz = "\xFF\x4F\xFF\x51";
+  const auto at = std::search(bad.begin(), bad.end(), siz.begin(), siz.end());
+  ASSERT_NE(at, bad.end());
+  *(at + 11) = 41;  // Xsiz: 41 columns
+  write(bad);
+  expectLoadError([&] { loadVolume(file); }, file,
+                  "the JPEG 2000 header of a pixel data fragment: image of 41 x 16 (the header "
+                  "says 16 x 16)");
+}
+
 TEST(DicomFiles, GantryTiltWarnsAndSeveralSeriesAreListed) {
   TempDir dir;
   testing::DicomSliceSpec spec;
