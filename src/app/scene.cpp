@@ -2,11 +2,10 @@
 #include "app/scene.h"
 
 #include <filesystem>
-#include <iostream>
-#include <stdexcept>
-
 #include <glm/geometric.hpp>
+#include <iostream>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "core/camera_views.h"
 #include "core/synthetic_volume.h"
@@ -36,15 +35,16 @@ Scene loadScene(const Options& o) {
     scene.name = o.synthetic;
   } else {
     const std::string path = o.file.empty() ? defaultVolumePath() : o.file;
-    scene.volume = o.rawDims.empty()
-                       ? loadVolume(path, o.load)
-                       : loadRawVolume(path, parseRawOptions(o.rawDims, o.rawType, o.rawSpacing,
-                                                             o.rawEndian));
+    scene.volume =
+        o.rawDims.empty()
+            ? loadVolume(path, o.load)
+            : loadRawVolume(path, parseRawOptions(o.rawDims, o.rawType, o.rawSpacing, o.rawEndian));
     scene.name = std::filesystem::path(path).filename().string();
     sidecar = sidecarTransferFunctionPath(path);
     // Warnings (uneven slices, a sheared grid) are worth a line even when the load succeeds.
     for (const std::string& note : scene.volume.notes())
-      if (note.compare(0, 9, "warning: ") == 0) std::cerr << "ewaview: " << path << ": " << note << "\n";
+      if (note.compare(0, 9, "warning: ") == 0)
+        std::cerr << "ewaview: " << path << ": " << note << "\n";
   }
   if (!o.tfFile.empty()) {
     scene.transferFunction = loadTransferFunction(o.tfFile);
@@ -69,7 +69,8 @@ Camera initialCamera(const Volume& volume, const Options& o) {
   if (o.cameraPosition) cam.position = *o.cameraPosition;
   if (o.cameraViewUp) cam.viewUp = *o.cameraViewUp;
   if (!cam.valid())
-    throw std::runtime_error("camera: position and focal point must differ and view-up be non-zero");
+    throw std::runtime_error(
+        "camera: position and focal point must differ and view-up be non-zero");
   return cam;
 }
 
@@ -82,9 +83,11 @@ std::string volumeInfoJson(const Volume& v) {
   j["origin"] = {v.origin().x, v.origin().y, v.origin().z};
   // Rows of D: column a is the world direction of data axis a.
   const glm::dmat3& d = v.direction();
-  j["direction"] = {{d[0][0], d[1][0], d[2][0]}, {d[0][1], d[1][1], d[2][1]},
-                    {d[0][2], d[1][2], d[2][2]}};
+  j["direction"] = {
+      {d[0][0], d[1][0], d[2][0]}, {d[0][1], d[1][1], d[2][1]}, {d[0][2], d[1][2], d[2][2]}};
   j["space"] = v.patientFrame() ? "LPS" : "none";  // patient axes, or none
+  // The unit of spacing, origin and world lengths; null when the file does not say.
+  j["unit"] = v.unit().empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(v.unit());
   j["notes"] = v.notes();
   return j.dump();
 }

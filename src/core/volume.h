@@ -5,12 +5,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/mat3x3.hpp>
-#include <glm/vec3.hpp>
 
 namespace ewa {
 
@@ -60,6 +59,10 @@ class Volume {
   // NIfTI or a NRRD/MetaImage anatomical space: axis views are then labelled anatomically.
   bool patientFrame() const { return patientFrame_; }
   void setDirection(const glm::dmat3& direction, bool patientFrame);
+  // The unit of world lengths (spacing, origin, distances), as the file gives it: "mm" (DICOM,
+  // NIfTI), "µm", "m", a NRRD's "space units"; "" when the file does not say.
+  const std::string& unit() const { return unit_; }
+  void setUnit(std::string unit) { unit_ = std::move(unit); }
   // Remarks from the loader for --info and the user: frames in the file, conversions, the other
   // series in a folder. Warnings start with "warning: " and are printed when the file opens.
   const std::vector<std::string>& notes() const { return notes_; }
@@ -128,6 +131,7 @@ class Volume {
   glm::dvec3 origin_{0.0};
   glm::dmat3 direction_{1.0};
   bool patientFrame_ = false;
+  std::string unit_;
   std::vector<std::string> notes_;
   ScalarType type_ = ScalarType::UInt8;
   std::vector<uint8_t> bytes_;

@@ -52,6 +52,7 @@ Volume downsampleVolume(const Volume& v, int factor) {
   const glm::dvec3 origin = v.origin() + v.direction() * (0.5 * (scale - 1.0) * v.spacing());
   Volume coarse(out, v.spacing() * scale, origin, ScalarType::Float32, std::move(bytes));
   coarse.setDirection(v.direction(), v.patientFrame());
+  coarse.setUnit(v.unit());
   // The source's data box, in the coarse indices (fine index i is coarse (i - (f - 1) / 2) / f).
   const DataBox box = v.indexDataBox();
   coarse.setIndexDataBox(

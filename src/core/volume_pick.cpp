@@ -169,15 +169,17 @@ std::string describePick(const Volume& volume, const PickResult& pick,
                          const std::optional<glm::dvec3>& mark) {
   if (!pick.hit) return "";
   const glm::i64vec3 voxel = nearestVoxel(volume, pick.index);
-  char text[200];
-  // Patient axes say which way they point (DICOM's LPS: x to the left, y to the back, z up).
+  char text[240];
+  // Lengths in the file's unit when it names one; patient axes say which way they point
+  // (DICOM's LPS: x to the left, y to the back, z up).
+  const std::string unit = volume.unit().empty() ? "" : " " + volume.unit().substr(0, 16);
   int n = std::snprintf(
-      text, sizeof text, "x %.4g  y %.4g  z %.4g%s   voxel %lld, %lld, %lld   value %.6g",
-      pick.world.x, pick.world.y, pick.world.z, volume.patientFrame() ? " (LPS)" : "",
+      text, sizeof text, "x %.4g  y %.4g  z %.4g%s%s   voxel %lld, %lld, %lld   value %.6g",
+      pick.world.x, pick.world.y, pick.world.z, unit.c_str(), volume.patientFrame() ? " (LPS)" : "",
       (long long)voxel.x, (long long)voxel.y, (long long)voxel.z, pick.value);
   if (mark && n > 0 && size_t(n) < sizeof text)
-    std::snprintf(text + n, sizeof text - size_t(n), "   %.4g from the mark",
-                  glm::length(pick.world - *mark));
+    std::snprintf(text + n, sizeof text - size_t(n), "   %.4g%s from the mark",
+                  glm::length(pick.world - *mark), unit.c_str());
   return text;
 }
 

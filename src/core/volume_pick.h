@@ -68,8 +68,8 @@ double trilinearValue(const Volume& volume, const glm::dvec3& index);
 glm::i64vec3 nearestVoxel(const Volume& volume, const glm::dvec3& index);
 
 // One line naming a pick for people: "x 12.3  y -4.5  z 60.1   voxel 120, 88, 40   value
-// 87.25" (" (LPS)" after the coordinates for patient axes), with "   23.4 from the mark" when
-// `mark` (a world point) is given; "" for a miss.
+// 87.25" (the volume's unit, " mm", and " (LPS)" for patient axes after the coordinates), with
+// "   23.4 mm from the mark" when `mark` (a world point) is given; "" for a miss.
 std::string describePick(const Volume& volume, const PickResult& pick,
                          const std::optional<glm::dvec3>& mark = std::nullopt);
 

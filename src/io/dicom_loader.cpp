@@ -87,6 +87,7 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
 
   VolumeLayout layout;
   layout.patientFrame = true;
+  layout.unit = "mm";  // DICOM's lengths are millimetres
   noteUnreadable(unreadable, layout.notes);
   if (all.size() > 1 || below)  // below: where the series lies, even alone
     for (const DicomSeries& s : all)

@@ -66,6 +66,7 @@ NiftiHeader parseNiftiHeader(const std::string& path, const std::vector<uint8_t>
     h.voxOffset = r.f32(108);
     h.sclSlope = r.f32(112);
     h.sclInter = r.f32(116);
+    h.xyztUnits = bytes[123];
     h.qformCode = int(r.i16(252));
     h.sformCode = int(r.i16(254));
     for (int i = 0; i < 3; ++i) h.quatern[i] = r.f32(256 + 4 * i);
@@ -81,6 +82,7 @@ NiftiHeader parseNiftiHeader(const std::string& path, const std::vector<uint8_t>
     h.voxOffset = double(r.i64(168));
     h.sclSlope = r.f64(176);
     h.sclInter = r.f64(184);
+    h.xyztUnits = int(r.i32(500));
     h.qformCode = int(r.i32(344));
     h.sformCode = int(r.i32(348));
     for (int i = 0; i < 3; ++i) h.quatern[i] = r.f64(352 + 8 * i);
@@ -93,6 +95,8 @@ NiftiHeader parseNiftiHeader(const std::string& path, const std::vector<uint8_t>
 
 // NIfTI's world is RAS; the viewer's is LPS: x and y change sign.
 void placeNiftiInWorld(const NiftiHeader& h, VolumeLayout& layout) {
+  const int spaceUnit = h.xyztUnits & 7;
+  layout.unit = spaceUnit == 1 ? "m" : spaceUnit == 2 ? "mm" : spaceUnit == 3 ? "\xC2\xB5m" : "";
   const glm::dvec3 toLps(-1.0, -1.0, 1.0);
   if (h.sformCode > 0) {
     for (int a = 0; a < 3; ++a) {

@@ -23,6 +23,7 @@ struct NiftiHeader {
   double voxOffset = 0.0;
   double sclSlope = 0.0, sclInter = 0.0;
   int qformCode = 0, sformCode = 0;
+  int xyztUnits = 0;  // the spatial unit in its low 3 bits: 1 metre, 2 mm, 3 micron
   double quatern[3] = {}, qoffset[3] = {};
   double srow[3][4] = {};
 };
@@ -33,7 +34,7 @@ struct NiftiHeader {
 NiftiHeader parseNiftiHeader(const std::string& path, const std::vector<uint8_t>& bytes);
 
 // Spacing, origin, direction and frame from the sform (sform_code > 0), else the qform, else
-// pixdim alone; NIfTI's RAS turned into LPS.
+// pixdim alone; NIfTI's RAS turned into LPS; the unit from xyzt_units (none when unknown).
 void placeNiftiInWorld(const NiftiHeader& header, VolumeLayout& layout);
 
 }  // namespace ewa

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "io/file_bytes.h"
+#include "io/length_unit.h"
 #include "io/load_failure.h"
 #include "io/text_fields.h"
 
@@ -169,6 +170,22 @@ void applyNrrdSpace(const std::string& space, VolumeLayout& layout) {
   for (int a = 0; a < 3; ++a) layout.direction[a] *= sign;
 }
 
+// The one unit of `"mm" "mm" "mm"` (space units, or units per axis), or "" when they differ,
+// are missing or are not a unit.
+std::string quotedUnit(const std::string& value) {
+  std::vector<std::string> units;
+  for (size_t open = value.find('"'); open != std::string::npos;) {
+    const size_t close = value.find('"', open + 1);
+    if (close == std::string::npos) return "";
+    units.push_back(value.substr(open + 1, close - open - 1));
+    open = value.find('"', close + 1);
+  }
+  if (units.empty()) return "";
+  for (const std::string& u : units)
+    if (u != units[0]) return "";
+  return lengthUnitName(units[0]);
+}
+
 }  // namespace
 
 std::string formatNrrdPattern(const std::string& path, const std::string& pattern, int64_t index) {
@@ -299,6 +316,8 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
       directions = parseVectors(path, "space directions", value);
     } else if (key == "space") {
       space = toLower(value);
+    } else if (key == "spaceunits" || (key == "units" && h.layout.unit.empty())) {
+      h.layout.unit = quotedUnit(value);
     } else if (key == "spaceorigin") {
       origin = parseVectors(path, "space origin", value);
       if (origin.size() != 1 || origin[0].empty())
@@ -312,7 +331,7 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
     } else if (key == "datafile") {
       parseDataFile(path, value, h, listFollows);
     }
-    // Other fields (content, kinds, space, centers, units, ...) do not affect loading.
+    // Other fields (content, kinds, centers, ...) do not affect loading.
   }
   if (!ended) {
     if (h.dataFiles.empty() && !listFollows)

@@ -11,6 +11,7 @@
 #include "io/byte_order.h"
 #include "io/file_bytes.h"
 #include "io/format_loaders.h"
+#include "io/length_unit.h"
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
 #include "io/text_fields.h"
@@ -284,6 +285,7 @@ Volume loadTiff(const std::string& path, int channel) {
           layout.notes.push_back("no pixel size in the file: 1 assumed");
         const std::string unit = imageJField(text, "unit");
         if (!unit.empty()) layout.notes.push_back("spacing unit: " + quoteText(unit, 20));
+        layout.unit = lengthUnitName(unit);
         if (channels > 1)
           layout.notes.push_back(std::to_string(channels) + " channels; showing channel " +
                                  std::to_string(channel) + " (--channel N picks another)");

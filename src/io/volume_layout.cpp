@@ -132,12 +132,14 @@ Volume makeVolume(const std::string& path, const VolumeLayout& layout, std::vect
   for (int c = 0; c < 3; ++c)
     for (int r = 0; r < 3; ++r)
       if (!std::isfinite(layout.direction[c][r])) failLoad(path, "direction is not finite");
-  OrientedGrid grid{layout.dims, scalarSize(volumeScalarOf(layout.type)), &bytes, spacing,
+  OrientedGrid grid{layout.dims,   scalarSize(volumeScalarOf(layout.type)),
+                    &bytes,        spacing,
                     layout.origin, layout.direction};
   std::vector<std::string> notes = makeRotation(grid);
   try {
     Volume v(layout.dims, spacing, grid.origin, volumeScalarOf(layout.type), std::move(bytes));
     v.setDirection(grid.direction, layout.patientFrame);
+    v.setUnit(layout.unit);
     for (const std::string& note : layout.notes) v.addNote(note);
     for (std::string& note : notes) v.addNote(std::move(note));
     return v;

@@ -24,9 +24,10 @@ struct VolumeLayout {
   glm::dvec3 spacing{1.0};
   glm::dvec3 origin{0.0};
   FileScalar type = FileScalar::UInt8;
-  bool bigEndian = false;  // byte order of the file's data
+  bool bigEndian = false;     // byte order of the file's data
   glm::dmat3 direction{1.0};  // column a: world direction of axis a (any matrix; made a rotation)
   bool patientFrame = false;  // the world axes are LPS patient axes
+  std::string unit;           // of spacing and origin ("mm"); "" when the file does not say
   std::vector<std::string> notes;  // for Volume::notes
 };
 

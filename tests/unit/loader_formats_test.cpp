@@ -57,6 +57,22 @@ TEST(NrrdLoader, AttachedRawLittleEndianWithSpacingAndOrigin) {
   EXPECT_DOUBLE_EQ(v.maxValue(), 23007.0);
 }
 
+TEST(NrrdLoader, SpaceUnitsAndAxisUnitsNameTheUnit) {
+  TempDir dir;
+  auto unitOf = [&](const std::string& name, const std::string& fields) {
+    return loadVolume(dir.write(name, nrrdHead("uchar", "encoding: raw\n" + fields + "\n") +
+                                          std::string(24, '\0')))
+        .unit();
+  };
+  EXPECT_EQ(unitOf("a.nrrd", "space: LPS\nspace units: \"mm\" \"mm\" \"mm\"\n"), "mm");
+  EXPECT_EQ(unitOf("b.nrrd", "spacings: 1 1 1\nunits: \"micron\" \"micron\" \"micron\"\n"),
+            "\xC2\xB5m");
+  EXPECT_EQ(unitOf("c.nrrd", "space units: \"mm\" \"cm\" \"mm\"\n"), "");  // mixed: none
+  EXPECT_EQ(unitOf("d.nrrd", "space units: \"\\x01\" \"\\x01\" \"\\x01\"\n"), "");
+  EXPECT_EQ(unitOf("e.nrrd", "space units: \"mm\n"), "");  // unclosed
+  EXPECT_EQ(unitOf("f.nrrd", ""), "");
+}
+
 TEST(NrrdLoader, AttachedBigEndianSignedShortWithSpaceDirections) {
   TempDir dir;
   const std::string path =

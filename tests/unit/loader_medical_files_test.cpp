@@ -68,6 +68,21 @@ TEST(NiftiFiles, BothByteOrdersPairsAndScaling) {
   EXPECT_EQ(gz.value(1, 2, 3), 230);
 }
 
+TEST(NiftiFiles, TheSpatialUnitIsRead) {
+  // xyzt_units' low three bits: none, metre, millimetre, micron; the time unit above them is not
+  // a length.
+  TempDir dir;
+  const std::pair<uint8_t, std::string> cases[] = {
+      {0, ""}, {1, "m"}, {2, "mm"}, {3, "\xC2\xB5m"}, {2 | 8, "mm"}, {3 | 16, "\xC2\xB5m"}};
+  for (const auto& [code, unit] : cases) {
+    NiftiFields f;
+    f.xyztUnits = code;
+    const Volume v = loadVolume(
+        dir.write("u" + std::to_string(code) + ".nii", testing::niftiHeader(f) + kVoxels24));
+    EXPECT_EQ(v.unit(), unit) << int(code);
+  }
+}
+
 TEST(NiftiFiles, QformRotationAndReflection) {
   TempDir dir;
   // qform: quaternion (b,c,d) = (0,0,1): 180 degrees about z, so RAS x,y negate: LPS identity.
@@ -192,6 +207,7 @@ TEST(DicomFiles, SeriesSortedByPositionWithRescale) {
   // Slice k has z = 2k and raw values i + 10 j + 100 z.
   EXPECT_DOUBLE_EQ(v.value(3, 2, 4), 2.0 * (3 + 20 + 800) - 5.0);
   EXPECT_TRUE(v.patientFrame());
+  EXPECT_EQ(v.unit(), "mm");  // DICOM's lengths are millimetres
   EXPECT_EQ(loadVolume(folder + "/im3.dcm").bytes(), v.bytes());
 }
 

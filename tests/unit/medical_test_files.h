@@ -29,6 +29,7 @@ struct NiftiFields {
   std::array<float, 8> pixdim{1, 1, 1, 1, 0, 0, 0, 0};
   float voxOffset = 352, sclSlope = 0, sclInter = 0;
   int16_t qformCode = 0, sformCode = 0;
+  uint8_t xyztUnits = 0;
   std::array<float, 12> srow{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
 };
 
@@ -49,6 +50,7 @@ inline std::string niftiHeader(const NiftiFields& f, bool bigEndian = false) {
   putFloat(108, f.voxOffset);
   putFloat(112, f.sclSlope);
   putFloat(116, f.sclInter);
+  h[123] = char(f.xyztUnits);
   put(252, uintBytes(uint16_t(f.qformCode), 2, bigEndian));
   put(254, uintBytes(uint16_t(f.sformCode), 2, bigEndian));
   for (int i = 0; i < 12; ++i) putFloat(280 + 4 * size_t(i), f.srow[size_t(i)]);

@@ -247,6 +247,10 @@ TEST(VolumePick, DescriptionNamesThePointTheNearestVoxelTheValueAndTheMarksDista
   patient.setDirection(glm::dmat3(1.0), true);
   EXPECT_EQ(describePick(patient, pick),
             "x 12.5  y -3.25  z 40 (LPS)   voxel 16, 16, 32   value 87.25");
+  // Lengths in the file's unit, when it names one.
+  patient.setUnit("mm");
+  EXPECT_EQ(describePick(patient, pick, glm::dvec3(12.5, 0.75, 43.0)),
+            "x 12.5  y -3.25  z 40 mm (LPS)   voxel 16, 16, 32   value 87.25   5 mm from the mark");
 }
 
 TEST(VolumePick, CentringKeepsTheViewDirectionAndThePointsDepth) {
