@@ -112,9 +112,20 @@ struct Walk {
       if (top != Container::Item) return fail(pos, "an element outside any item");
       uint64_t length = 0;
       bool sequence = false;
+      const bool pixelData = group == 0x7fe0 && element == 0x0010;
       if (explicitVr || metaOnly) {
         const uint8_t* vr = &bytes[pos + 4];
         if (!isVr(vr)) return fail(pos, "an element has no valid VR");
+        const uint64_t declared =
+            longVr(vr) && n - pos >= 12 ? readUnsigned(&bytes[pos + 8], 4, big) : 0;
+        // GDCM asserts unless an undefined length is a sequence's, an unknown-VR element's or
+        // encapsulated pixel data's (OB or OW), and unless pixel data is no sequence.
+        const bool sq = vr[0] == 'S' && vr[1] == 'Q', un = vr[0] == 'U' && vr[1] == 'N';
+        const bool obow = vr[0] == 'O' && (vr[1] == 'B' || vr[1] == 'W');
+        if (pixelData && (sq || (declared == 0xffffffffu && !obow)))
+          return fail(pos, "pixel data (7FE0,0010) of VR " + std::string(vr, vr + 2));
+        if (declared == 0xffffffffu && !sq && !un && !pixelData)
+          return fail(pos, "an undefined length for VR " + std::string(vr, vr + 2));
         if (longVr(vr)) {
           if (n - pos < 12) return fail(pos, "an element header is cut short");
           length = readUnsigned(&bytes[pos + 8], 4, big);
