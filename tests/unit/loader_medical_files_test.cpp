@@ -224,28 +224,34 @@ TEST(DicomFiles, CompressedSlicesLoadLikeTheOthers) {
   EXPECT_EQ(loadVolume(folder).bytes(), plain.bytes());
 }
 
+// One 16 x 16 slice of a series in `syntax`: its path.
+std::string compressedSlice(TempDir& dir, const std::string& name,
+                            gdcm::TransferSyntax::TSType syntax) {
+  testing::DicomSliceSpec spec;
+  spec.rows = spec.columns = 16;
+  const std::string file = dicomSeries(dir, name, 1, spec) + "/im0.dcm";
+  EXPECT_TRUE(testing::recompressDicom(file, syntax));
+  return file;
+}
+
+// Writes `bytes` to `path` with the byte `offset` after the first `pattern` set to `value`.
+void writePatched(const std::string& path, std::string bytes, const std::string& pattern,
+                  size_t offset, char value) {
+  const auto at = std::search(bytes.begin(), bytes.end(), pattern.begin(), pattern.end());
+  ASSERT_NE(at, bytes.end()) << "pattern not in " << path;
+  *(at + long(offset)) = value;
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
 TEST(DicomFiles, JpegHeadersGdcmAbortsOnAreRefusedInOneLine) {
   // A lossless JPEG slice whose frame header says 3 bits: GDCM 3.0's codec asserts (aborts the
   // program) on it, so it is refused before GDCM reads the file; at 12 bits it loads.
   TempDir dir;
-  testing::DicomSliceSpec spec;
-  spec.rows = spec.columns = 16;
-  const std::string folder = dicomSeries(dir, "p", 1, spec);
-  const std::string file = folder + "/im0.dcm";
-  ASSERT_TRUE(testing::recompressDicom(file, gdcm::TransferSyntax::JPEGLosslessProcess14_1));
-  auto withPrecision = [&](int bits) {
-    std::ifstream in(file, std::ios::binary);
-    std::vector<char> b((std::istreambuf_iterator<char>(in)), {});
-    const std::string sof = "\xFF\xC3";
-    const auto at = std::search(b.begin(), b.end(), sof.begin(), sof.end());
-    EXPECT_NE(at, b.end());
-    if (at == b.end()) return;
-    *(at + 4) = char(bits);
-    std::ofstream(file, std::ios::binary).write(b.data(), long(b.size()));
-  };
-  withPrecision(12);
+  const std::string file = compressedSlice(dir, "p", gdcm::TransferSyntax::JPEGLosslessProcess14_1);
+  const std::string good = fileBytes(file);
+  writePatched(file, good, "\xFF\xC3", 4, 12);  // SOF3's precision
   EXPECT_EQ(loadVolume(file).dims(), (std::array<int64_t, 3>{16, 16, 1}));
-  withPrecision(3);
+  writePatched(file, good, "\xFF\xC3", 4, 3);
   expectLoadError([&] { loadVolume(file); }, file,
                   "im0.dcm: corrupt or truncated DICOM data: the JPEG header of a pixel data "
                   "fragment: precision of 3 bits");
@@ -253,42 +259,22 @@ TEST(DicomFiles, JpegHeadersGdcmAbortsOnAreRefusedInOneLine) {
 
 TEST(DicomFiles, EncapsulatedPixelDataIsCheckedBeforeGdcmReadsIt) {
   // A JPEG 2000 slice: its codestream's image size must be the header's (GDCM with OpenJPEG
-  // crashed on a wider one), and the delimiter ending its fragments must claim no bytes (GDCM
-  // allocated the 4 GiB one claimed). Found by fuzzing; refused in one line.
+  // crashed on a wider one), the delimiter ending its fragments must claim no bytes (GDCM
+  // allocated the 4 GiB one claimed), and only sequences, UN and pixel data may have an
+  // undefined length (GDCM asserts on the others). Found by fuzzing; refused in one line.
   TempDir dir;
-  testing::DicomSliceSpec spec;
-  spec.rows = spec.columns = 16;
-  const std::string folder = dicomSeries(dir, "j", 1, spec);
-  const std::string file = folder + "/im0.dcm";
-  ASSERT_TRUE(testing::recompressDicom(file, gdcm::TransferSyntax::JPEG2000Lossless));
+  const std::string file = compressedSlice(dir, "j", gdcm::TransferSyntax::JPEG2000Lossless);
   EXPECT_EQ(loadVolume(file).dims(), (std::array<int64_t, 3>{16, 16, 1}));
-  std::ifstream in(file, std::ios::binary);
-  const std::vector<char> good((std::istreambuf_iterator<char>(in)), {});
-  auto write = [&](const std::vector<char>& b) {
-    std::ofstream(file, std::ios::binary).write(b.data(), long(b.size()));
-  };
-  std::vector<char> bad = good;
-  ASSERT_EQ(std::string(bad.end() - 8, bad.end() - 4), "\xFE\xFF\xDD\xE0");
-  bad[bad.size() - 2] = bad[bad.size() - 1] = char(0xFF);
-  write(bad);
-  expectLoadError([&] { loadVolume(file); }, file, "a delimiter of length 4294901760");
-  bad = good;
-  const std::string siz = "\xFF\x4F\xFF\x51";
-  const auto at = std::search(bad.begin(), bad.end(), siz.begin(), siz.end());
-  ASSERT_NE(at, bad.end());
-  *(at + 11) = 41;  // Xsiz: 41 columns
-  write(bad);
+  const std::string good = fileBytes(file);
+  const std::string delimiter("\xFE\xFF\xDD\xE0", 4);
+  ASSERT_EQ(good.substr(good.size() - 8, 4), delimiter);
+  writePatched(file, good, delimiter + std::string(2, '\0'), 6, char(0xFF));
+  expectLoadError([&] { loadVolume(file); }, file, "a delimiter of length 16711680");
+  writePatched(file, good, "\xFF\x4F\xFF\x51", 11, 41);  // SIZ's Xsiz: 41 columns
   expectLoadError([&] { loadVolume(file); }, file,
                   "the JPEG 2000 header of a pixel data fragment: image of 41 x 16 (the header "
                   "says 16 x 16)");
-  // Undefined lengths only for sequences, UN and pixel data (GDCM asserts on the others; found
-  // by fuzzing): the encapsulated pixel data's tag one element on.
-  bad = good;
-  const std::string pixelData("\xE0\x7F\x10\x00OB", 6);
-  const auto tag = std::search(bad.begin(), bad.end(), pixelData.begin(), pixelData.end());
-  ASSERT_NE(tag, bad.end());
-  *(tag + 2) = 0x11;
-  write(bad);
+  writePatched(file, good, std::string("\xE0\x7F\x10\x00OB", 6), 2, 0x11);  // (7FE0,0011)
   expectLoadError([&] { loadVolume(file); }, file, "an undefined length for VR OB");
 }
 
