@@ -34,6 +34,32 @@ std::string hexByte(uint8_t v) {
   return std::string("0x") + kDigits[v >> 4] + kDigits[v & 15];
 }
 
+// GDCM's own walk over a codestream's markers (its parsej2k, to learn whether it is lossless)
+// skips each segment by its length without looking at the bytes left, and reads COD's tenth
+// byte: every segment it passes must lie inside the stream. It stops at the first SOD, or at a
+// COD saying the wavelet is irreversible.
+std::string jpeg2000MarkerProblem(const uint8_t* data, size_t size) {
+  for (size_t pos = 2; size - pos >= 2;) {
+    const unsigned marker = be16(&data[pos]);
+    pos += 2;
+    if (marker == 0xFF93) return "";  // SOD
+    const bool noLength = (marker >= 0xFF30 && marker <= 0xFF3F) || marker == 0xFF4F ||
+                          marker == 0xFFD9 || marker == 0xFF92;
+    if (noLength) continue;
+    if (size - pos < 2) return "";  // GDCM stops here too
+    const unsigned length = be16(&data[pos]);
+    pos += 2;
+    if (length < 2) return "";  // and here
+    if (length - 2 > size - pos) return "a marker segment longer than the stream";
+    if (marker == 0xFF52) {  // COD
+      if (length - 2 < 10) return "a coding style segment too short";
+      if (data[pos + 9] == 0) return "";  // irreversible: GDCM's walk ends
+    }
+    pos += length - 2;
+  }
+  return "";
+}
+
 }  // namespace
 
 std::string jpegHeaderProblem(const uint8_t* data, size_t size) {
@@ -114,7 +140,7 @@ std::string jpeg2000HeaderProblem(const uint8_t* data, size_t size, int64_t colu
     if ((comp[0] & 0x7F) + 1 > 16) return std::to_string((comp[0] & 0x7F) + 1) + "-bit samples";
     if (comp[1] != 1 || comp[2] != 1) return "subsampled components";
   }
-  return "";
+  return jpeg2000MarkerProblem(data, size);
 }
 
 bool isJpeg2000TransferSyntax(const std::string& uid) {

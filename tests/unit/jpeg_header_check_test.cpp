@@ -81,7 +81,7 @@ TEST(JpegHeaderCheck, HeadersTheCodecAbortsOnAreNamed) {
 }
 
 // A JPEG 2000 main header: SOC, SIZ for a `width` x `height` image at (x0, 0) in one tile of
-// `tile` pixels, `components` of 8 bits (XRsiz, YRsiz 1), then COD's start.
+// `tile` pixels, `components` of 8 bits (XRsiz, YRsiz 1), then COD, SOT and SOD (28 bytes).
 Bytes codestream(uint32_t width, uint32_t height, int components = 1, uint32_t x0 = 0,
                  uint32_t tile = 64, uint8_t subsampling = 1) {
   Bytes b = {0xFF, 0x4F, 0xFF, 0x51};
@@ -92,7 +92,9 @@ Bytes codestream(uint32_t width, uint32_t height, int components = 1, uint32_t x
   u32(x0 + width), u32(height), u32(x0), u32(0), u32(tile), u32(tile), u32(0), u32(0);
   u16(unsigned(components));
   for (int c = 0; c < components; ++c) b.insert(b.end(), {7, subsampling, 1});
-  b.insert(b.end(), {0xFF, 0x52, 0, 12});
+  // COD (reversible wavelet), SOT, SOD.
+  b.insert(b.end(), {0xFF, 0x52, 0, 12, 0, 0, 0, 1, 0, 1, 4, 4, 0, 1});
+  b.insert(b.end(), {0xFF, 0x90, 0, 10, 0, 0, 0, 0, 0, 0, 0, 1, 0xFF, 0x93});
   return b;
 }
 
@@ -112,11 +114,21 @@ TEST(JpegHeaderCheck, Jpeg2000ImageSizeMustBeTheHeaders) {
             "tiles that do not cover the image");
   EXPECT_EQ(problem2000(codestream(16, 12, 1, 0, 64, 2), 16, 12, 1), "subsampled components");
   Bytes deep = codestream(16, 12);
-  deep[deep.size() - 7] = 16;  // 17-bit samples
+  deep[deep.size() - 31] = 16;  // 17-bit samples (the last component, before COD, SOT, SOD)
   EXPECT_EQ(problem2000(deep, 16, 12, 1), "17-bit samples");
   const Bytes whole = codestream(16, 12);
   EXPECT_EQ(problem2000(Bytes(whole.begin(), whole.begin() + 20), 16, 12, 1), "cut short");
   EXPECT_EQ(problem2000({0xFF, 0x4F, 0xFF, 0x52}, 16, 12, 1), "no SIZ marker after SOC");
+  // GDCM's own walk skips segments by their lengths (found by fuzzing: an SOT claiming 16896
+  // bytes sent it reading past the fragment).
+  Bytes longSot = codestream(16, 12);
+  longSot[longSot.size() - 12] = 0x42;
+  EXPECT_EQ(problem2000(longSot, 16, 12, 1), "a marker segment longer than the stream");
+  Bytes shortCod = codestream(16, 12);
+  const size_t cod = shortCod.size() - 28;
+  ASSERT_EQ(shortCod[cod + 1], 0x52);
+  shortCod[cod + 3] = 4;  // COD of 2 bytes, its segment then followed by the rest as markers
+  EXPECT_EQ(problem2000(shortCod, 16, 12, 1), "a coding style segment too short");
   // Not a codestream's start (a JP2 box, a later fragment): not walked.
   EXPECT_EQ(problem2000({0, 0, 0, 12, 'j', 'P', ' ', ' '}, 16, 12, 1), "");
 }
