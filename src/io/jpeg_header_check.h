@@ -21,9 +21,11 @@ std::string jpegHeaderProblem(const uint8_t* data, size_t size);
 // What is wrong with the main header of the JPEG 2000 codestream at `data` (SOC, then SIZ) for
 // an image of `columns` x `rows` with `samples` samples a pixel, or "". GDCM 3.0 with OpenJPEG
 // 2.5 (Debian 12) crashes freeing its decoder after a codestream whose image size disagrees with
-// the DICOM header's (found by fuzzing). Refused: an image size or offset other than the DICOM
-// header's, tiles that do not cover it, other numbers of components, subsampled components and
-// more than 16 bits a sample. Bytes that start no codestream (a JP2 box, a later fragment) pass.
+// the DICOM header's, and GDCM's own walk over the markers reads past a segment longer than the
+// stream (both found by fuzzing). Refused: an image size or offset other than the DICOM
+// header's, tiles that do not cover it, other numbers of components, subsampled components,
+// more than 16 bits a sample, and marker segments (up to SOD) that overrun the stream. Bytes
+// that start no codestream (a JP2 box, a later fragment) pass.
 std::string jpeg2000HeaderProblem(const uint8_t* data, size_t size, int64_t columns, int64_t rows,
                                   int64_t samples);
 
