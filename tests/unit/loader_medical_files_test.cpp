@@ -278,6 +278,21 @@ TEST(DicomFiles, EncapsulatedPixelDataIsCheckedBeforeGdcmReadsIt) {
   expectLoadError([&] { loadVolume(file); }, file, "an undefined length for VR OB");
 }
 
+TEST(DicomFiles, PixelModuleElementsOfTheWrongVrAreRefused) {
+  // Columns written as SS instead of US: GDCM's typed attribute asserts on it (found by
+  // fuzzing), so the walk refuses group 0028 elements whose VR the dictionary does not allow.
+  TempDir dir;
+  testing::DicomSliceSpec spec;
+  const std::string file = dicomSeries(dir, "vr", 1, spec) + "/im0.dcm";
+  ASSERT_TRUE(testing::recompressDicom(file, gdcm::TransferSyntax::ExplicitVRLittleEndian));
+  const std::string good = fileBytes(file);
+  const std::string columns("\x28\x00\x11\x00US", 6);
+  writePatched(file, good, columns, 4, 'S');  // "SS"
+  expectLoadError([&] { loadVolume(file); }, file, "element (0028,0011) of VR SS");
+  writePatched(file, good, columns, 0, 0x28);  // unchanged: loads
+  EXPECT_EQ(loadVolume(file).dims()[0], 5);
+}
+
 TEST(DicomFiles, GantryTiltWarnsAndSeveralSeriesAreListed) {
   TempDir dir;
   testing::DicomSliceSpec spec;
