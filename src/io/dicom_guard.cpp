@@ -67,7 +67,9 @@ struct Walk {
   std::vector<Container> open;
   bool jpeg = false;      // the transfer syntax is JPEG: each frame's header is checked
   bool jpeg2000 = false;  // JPEG 2000: each codestream's image size against the header's
-  int64_t rows = 0, columns = 0, samples = 1;  // the data set's own (0028,0010), (0011), (0002)
+  bool jpegLs = false;    // JPEG-LS: each frame's size against the header's
+  // The data set's own (0028,0010), (0011), (0002), (0100).
+  int64_t rows = 0, columns = 0, samples = 1, bitsAllocated = 0;
 
   // Walks elements from `pos` to the end (or, with `metaOnly`, while the group is 0002). Items
   // and delimiters must sit where they belong: GDCM asserts (aborts) on one out of place.
@@ -101,6 +103,12 @@ struct Walk {
               const std::string bad = jpegHeaderProblem(&bytes[pos], size_t(length));
               if (!bad.empty())
                 return fail(pos, "the JPEG header of a pixel data fragment: " + bad);
+            }
+            if (jpegLs) {
+              const std::string bad = jpegLsHeaderProblem(&bytes[pos], size_t(length), columns,
+                                                          rows, samples, bitsAllocated);
+              if (!bad.empty())
+                return fail(pos, "the JPEG-LS header of a pixel data fragment: " + bad);
             }
             if (jpeg2000) {
               const std::string bad =
@@ -175,6 +183,7 @@ struct Walk {
         if (element == 0x0010) rows = value;
         if (element == 0x0011) columns = value;
         if (element == 0x0002) samples = value;
+        if (element == 0x0100) bitsAllocated = value;
       }
       // GDCM asserts that a retired Recognition Code names ACR-NEMA or MIPS.
       if (group == 0x0008 && element == 0x0010 && open.empty() && !recognitionCodeOk(pos, length))
@@ -255,6 +264,7 @@ DicomStructure checkDicomStructure(const std::string& path) {
   if (bytes.size() - metaEnd < 8) failLoad(path, "no data set after the DICOM meta header");
   walk.jpeg = isJpegTransferSyntax(syntax);
   walk.jpeg2000 = isJpeg2000TransferSyntax(syntax);
+  walk.jpegLs = isJpegLsTransferSyntax(syntax);
   walk.run(metaEnd, explicitVr, bigEndian, false);
   if (walk.problem.empty()) return DicomStructure::Plausible;
   failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);

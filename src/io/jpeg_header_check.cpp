@@ -111,6 +111,35 @@ std::string jpegHeaderProblem(const uint8_t* data, size_t size) {
   return "";
 }
 
+std::string jpegLsHeaderProblem(const uint8_t* data, size_t size, int64_t columns, int64_t rows,
+                                int64_t samples, int64_t bitsAllocated) {
+  if (size < 2 || data[0] != 0xFF || data[1] != kSoi) return "";
+  for (size_t pos = 2;;) {
+    if (size - pos < 4) return "cut short";
+    if (data[pos] != 0xFF) return "stray bytes between markers";
+    const uint8_t marker = data[pos + 1];
+    if (marker == kSos || marker == kEoi) return "a scan before the frame header";
+    const unsigned length = be16(&data[pos + 2]);
+    if (length < 2 || size - pos - 2 < length) return "cut short";
+    if (marker == 0xF7) {  // SOF55: precision, lines, columns, components
+      if (length < 8) return "frame header too short";
+      const uint8_t* f = &data[pos + 4];
+      const unsigned precision = f[0], lines = be16(f + 1), width = be16(f + 3), nc = f[5];
+      if (lines != rows || width != columns)
+        return "image of " + std::to_string(width) + " x " + std::to_string(lines) +
+               " (the header says " + std::to_string(columns) + " x " + std::to_string(rows) + ")";
+      if (int64_t(nc) != samples)
+        return std::to_string(nc) + " components (SamplesPerPixel " + std::to_string(samples) + ")";
+      // GDCM asserts when the decoded samples (1 byte up to 8 bits, else 2) overflow its buffer.
+      if (precision < 2 || precision > 16 || (precision > 8 && bitsAllocated < 16))
+        return "precision of " + std::to_string(precision) + " bits (BitsAllocated " +
+               std::to_string(bitsAllocated) + ")";
+      return "";
+    }
+    pos += 2 + length;
+  }
+}
+
 std::string jpeg2000HeaderProblem(const uint8_t* data, size_t size, int64_t columns, int64_t rows,
                                   int64_t samples) {
   if (size < 4 || be16(data) != 0xFF4F) return "";  // no SOC: a JP2 box or a later fragment
@@ -141,6 +170,10 @@ std::string jpeg2000HeaderProblem(const uint8_t* data, size_t size, int64_t colu
     if (comp[1] != 1 || comp[2] != 1) return "subsampled components";
   }
   return jpeg2000MarkerProblem(data, size);
+}
+
+bool isJpegLsTransferSyntax(const std::string& uid) {
+  return uid == "1.2.840.10008.1.2.4.80" || uid == "1.2.840.10008.1.2.4.81";
 }
 
 bool isJpeg2000TransferSyntax(const std::string& uid) {

@@ -18,6 +18,13 @@ namespace ewa {
 // lossy; 8 to 16 lossless).
 std::string jpegHeaderProblem(const uint8_t* data, size_t size);
 
+// What is wrong with the header of the JPEG-LS stream at `data` for an image of `columns` x
+// `rows` with `samples` samples a pixel of `bitsAllocated` bits, or "": its frame (SOF55) must
+// give the same size and components, and a precision whose decoded samples fit (GDCM 3.0
+// asserts when they overflow its buffer; found by fuzzing). Markers before it must be whole.
+std::string jpegLsHeaderProblem(const uint8_t* data, size_t size, int64_t columns, int64_t rows,
+                                int64_t samples, int64_t bitsAllocated);
+
 // What is wrong with the main header of the JPEG 2000 codestream at `data` (SOC, then SIZ) for
 // an image of `columns` x `rows` with `samples` samples a pixel, or "". GDCM 3.0 with OpenJPEG
 // 2.5 (Debian 12) crashes freeing its decoder after a codestream whose image size disagrees with
@@ -32,6 +39,8 @@ std::string jpeg2000HeaderProblem(const uint8_t* data, size_t size, int64_t colu
 // Whether a DICOM transfer syntax UID is one of the JPEG (ISO 10918) ones GDCM decodes with
 // that codec (not JPEG-LS or JPEG 2000).
 bool isJpegTransferSyntax(const std::string& uid);
+// Whether it is a JPEG-LS one (1.2.840.10008.1.2.4.80, .81).
+bool isJpegLsTransferSyntax(const std::string& uid);
 // Whether it is a JPEG 2000 one (1.2.840.10008.1.2.4.90 to .93).
 bool isJpeg2000TransferSyntax(const std::string& uid);
 

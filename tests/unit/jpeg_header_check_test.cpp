@@ -133,6 +133,41 @@ TEST(JpegHeaderCheck, Jpeg2000ImageSizeMustBeTheHeaders) {
   EXPECT_EQ(problem2000({0, 0, 0, 12, 'j', 'P', ' ', ' '}, 16, 12, 1), "");
 }
 
+// A JPEG-LS header: SOI, SOF55 for `width` x `height`, one component of `precision` bits, SOS.
+Bytes jpegLs(unsigned width, unsigned height, int precision = 12, int components = 1) {
+  Bytes b;
+  auto put = [&](std::initializer_list<unsigned> bytes) {
+    for (const unsigned x : bytes) b.push_back(uint8_t(x));  // (GCC 12 misjudges insert here)
+  };
+  put({0xFF, 0xD8, 0xFF, 0xF7, 0, 8 + 3 * unsigned(components), unsigned(precision), height >> 8,
+       height & 255, width >> 8, width & 255, unsigned(components)});
+  for (int c = 0; c < components; ++c) put({unsigned(c + 1), 0x11, 0});
+  put({0xFF, 0xDA, 0, 8, 1, 1, 0, 0, 0, 0});
+  return b;
+}
+
+std::string problemLs(const Bytes& b, int64_t columns, int64_t rows, int64_t samples,
+                      int64_t bits) {
+  return jpegLsHeaderProblem(b.data(), b.size(), columns, rows, samples, bits);
+}
+
+TEST(JpegHeaderCheck, JpegLsFrameMustBeTheHeaders) {
+  EXPECT_EQ(problemLs(jpegLs(16, 12), 16, 12, 1, 16), "");
+  EXPECT_EQ(problemLs(jpegLs(16, 12, 8, 3), 16, 12, 3, 8), "");
+  // Found by fuzzing: a frame smaller than Rows x Columns made GDCM assert on its buffer.
+  EXPECT_EQ(problemLs(jpegLs(8, 8), 8, 65528, 1, 16), "image of 8 x 8 (the header says 8 x 65528)");
+  EXPECT_EQ(problemLs(jpegLs(16, 12, 8, 3), 16, 12, 1, 8), "3 components (SamplesPerPixel 1)");
+  EXPECT_EQ(problemLs(jpegLs(16, 12, 12), 16, 12, 1, 8), "precision of 12 bits (BitsAllocated 8)");
+  EXPECT_EQ(problemLs(jpegLs(16, 12, 1), 16, 12, 1, 8), "precision of 1 bits (BitsAllocated 8)");
+  const Bytes whole = jpegLs(16, 12);
+  EXPECT_EQ(problemLs(Bytes(whole.begin(), whole.begin() + 8), 16, 12, 1, 16), "cut short");
+  EXPECT_EQ(problemLs({0xFF, 0xD8, 0xFF, 0xDA, 0, 8, 1, 1, 0, 0, 0, 0}, 16, 12, 1, 16),
+            "a scan before the frame header");
+  EXPECT_EQ(problemLs({1, 2, 3}, 16, 12, 1, 16), "");  // not a stream's start
+  EXPECT_TRUE(isJpegLsTransferSyntax("1.2.840.10008.1.2.4.80"));
+  EXPECT_FALSE(isJpegLsTransferSyntax("1.2.840.10008.1.2.4.50"));
+}
+
 TEST(JpegHeaderCheck, OnlyJpegTransferSyntaxesAreWalked) {
   for (const char* uid : {"1.2.840.10008.1.2.4.50", "1.2.840.10008.1.2.4.51",
                           "1.2.840.10008.1.2.4.57", "1.2.840.10008.1.2.4.70"})
