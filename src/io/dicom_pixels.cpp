@@ -14,6 +14,7 @@
 
 #include "io/dicom_items.h"
 #include "io/file_bytes.h"
+#include "io/jpeg_header_check.h"
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
 
@@ -53,28 +54,14 @@ bool isColourSpace(const std::string& pi) {
   return pi == "RGB" || isYbrFull(pi) || pi == "YBR_RCT" || pi == "YBR_ICT";
 }
 
-bool isJpeg(gdcm::TransferSyntax ts) {
-  using T = gdcm::TransferSyntax;
-  for (const T::TSType t :
-       {T::JPEGBaselineProcess1, T::JPEGExtendedProcess2_4, T::JPEGExtendedProcess3_5,
-        T::JPEGSpectralSelectionProcess6_8, T::JPEGFullProgressionProcess10_12,
-        T::JPEGLosslessProcess14, T::JPEGLosslessProcess14_1})
-    if (ts == t) return true;
-  return false;
-}
-
-bool isJpeg2000(gdcm::TransferSyntax ts) {
-  using T = gdcm::TransferSyntax;
-  return ts == T::JPEG2000Lossless || ts == T::JPEG2000 || ts == T::JPEG2000Part2Lossless ||
-         ts == T::JPEG2000Part2;
-}
-
 // The subsampled and transformed colour spaces exist only inside their codecs' streams; GDCM's
 // raw decoder asserts on them (YBR_ICT, YBR_RCT) or would need the chroma upsampled (422).
 void checkColourCoding(const DicomSlice& s, gdcm::TransferSyntax ts) {
   const std::string& pi = s.photometric;
-  const bool ok = pi == "YBR_FULL_422"                 ? isJpeg(ts)
-                  : pi == "YBR_RCT" || pi == "YBR_ICT" ? isJpeg2000(ts)
+  const char* uid = gdcm::TransferSyntax::GetTSString(ts);
+  const std::string syntax = uid ? uid : "";
+  const bool ok = pi == "YBR_FULL_422"                 ? isJpegTransferSyntax(syntax)
+                  : pi == "YBR_RCT" || pi == "YBR_ICT" ? isJpeg2000TransferSyntax(syntax)
                                                        : true;
   if (!ok)
     failLoad(s.file,
