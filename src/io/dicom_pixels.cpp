@@ -138,11 +138,23 @@ bool functionalGroupsRescale(const gdcm::MediaStorage& ms) {
 // (intercept, slope) as GDCM's image reader gives them; for the enhanced classes, from the
 // Pixel Value Transformation of the shared functional groups, else the first frame's, read here
 // (GDCM's own reading asserts on malformed sequences).
-std::vector<double> rescaleOf(const gdcm::File& file) {
+std::vector<double> rescaleOf(const gdcm::File& file, const std::string& path) {
   gdcm::MediaStorage ms;
   ms.SetFromFile(file);
-  if (!functionalGroupsRescale(ms)) return gdcm::ImageHelper::GetRescaleInterceptSlopeValue(file);
   const gdcm::DataSet& ds = file.GetDataSet();
+  if (!functionalGroupsRescale(ms)) {
+    // GDCM's helper asserts when it reads a slope of 0 (found by fuzzing, with an intercept of
+    // "S0"): each, where present, must be one finite number, the slope other than 0.
+    for (const auto& [tag, name] : {std::pair{gdcm::Tag(0x0028, 0x1052), "RescaleIntercept"},
+                                    std::pair{gdcm::Tag(0x0028, 0x1053), "RescaleSlope"}}) {
+      if (!ds.FindDataElement(tag) || ds.GetDataElement(tag).IsEmpty()) continue;
+      const std::vector<double> v = dicomElementNumbers(&ds, tag);
+      if (v.size() != 1 || !std::isfinite(v[0]) || (tag.GetElement() == 0x1053 && v[0] == 0.0))
+        failLoad(path, std::string("bad ") + name + " (one number" +
+                           (tag.GetElement() == 0x1053 ? ", not 0)" : ")"));
+    }
+    return gdcm::ImageHelper::GetRescaleInterceptSlopeValue(file);
+  }
   const gdcm::Tag transformation(0x0028, 0x9145);
   DicomItems items;
   for (const gdcm::Tag& groups : {kSharedFunctionalGroups, kPerFrameFunctionalGroups}) {
@@ -220,7 +232,7 @@ SlicePixels readSlice(const DicomSlice& slice, int channel) {
   if (buffer.size() < count * format.GetPixelSize() || !image.GetBuffer(buffer.data()))
     failLoad(slice.file, "pixel data are missing, truncated or cannot be decoded");
   SlicePixels out;
-  const std::vector<double> rescale = rescaleOf(reader.GetFile());
+  const std::vector<double> rescale = rescaleOf(reader.GetFile(), slice.file);
   out.intercept = rescale[0];
   out.slope = rescale[1];
   out.type = format.GetScalarType();

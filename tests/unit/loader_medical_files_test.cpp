@@ -278,6 +278,29 @@ TEST(DicomFiles, EncapsulatedPixelDataIsCheckedBeforeGdcmReadsIt) {
   expectLoadError([&] { loadVolume(file); }, file, "an undefined length for VR OB");
 }
 
+TEST(DicomFiles, RescaleValuesGdcmAssertsOnAreRefused) {
+  // GDCM's rescale helper asserts when it reads a slope of 0 (found by fuzzing with an
+  // intercept of "S0"): a slope of 0 and values that are not one number are refused in one line.
+  TempDir dir;
+  testing::DicomSliceSpec spec;
+  const std::pair<uint16_t, std::string> cases[] = {
+      {0x1053, "0"}, {0x1052, "S0"}, {0x1053, "1\\2"}, {0x1052, "nan"}};
+  int n = 0;
+  for (const auto& [element, text] : cases) {
+    const std::string file = dicomSeries(dir, "r" + std::to_string(n++), 1, spec) + "/im0.dcm";
+    ASSERT_TRUE(testing::editDicom(file, [&](gdcm::DataSet& ds) {
+      gdcm::DataElement de(gdcm::Tag(0x0028, element));
+      de.SetVR(gdcm::VR::DS);
+      const std::string padded = text.size() % 2 ? text + " " : text;
+      de.SetByteValue(padded.data(), uint32_t(padded.size()));
+      ds.Replace(de);
+    }));
+    expectLoadError([&] { loadVolume(file); }, file,
+                    element == 0x1053 ? "bad RescaleSlope (one number, not 0)"
+                                      : "bad RescaleIntercept (one number)");
+  }
+}
+
 TEST(DicomFiles, PixelModuleElementsOfTheWrongVrAreRefused) {
   // Columns written as SS instead of US: GDCM's typed attribute asserts on it (found by
   // fuzzing), so the walk refuses group 0028 elements whose VR the dictionary does not allow.
