@@ -5,17 +5,20 @@
 #include <algorithm>
 #include <cstring>
 
+#include "io/byte_order.h"
+
 namespace ewa {
 
 namespace {
 
 constexpr uint8_t kSoi = 0xD8, kEoi = 0xD9, kSos = 0xDA, kApp0 = 0xE0, kApp14 = 0xEE;
 
+// Codec headers are big-endian.
 unsigned be16(const uint8_t* p) {
-  return unsigned(p[0]) << 8 | p[1];
+  return unsigned(readUnsigned(p, 2, true));
 }
 uint64_t be32(const uint8_t* p) {
-  return uint64_t(be16(p)) << 16 | be16(p + 2);
+  return readUnsigned(p, 4, true);
 }
 
 // Start-of-frame markers: SOF0 to SOF15 but DHT (C4), JPG (C8) and DAC (CC).

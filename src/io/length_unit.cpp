@@ -1,19 +1,16 @@
 // lengthUnitName: the spellings NIfTI, NRRD and ImageJ files use for their length units.
 #include "io/length_unit.h"
 
-#include <algorithm>
 #include <cctype>
+
+#include "io/text_fields.h"
 
 namespace ewa {
 
 std::string lengthUnitName(const std::string& text) {
-  std::string t = text;
-  while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back()))) t.pop_back();
-  t.erase(0, t.find_first_not_of(" \t"));
+  const std::string t = trim(text);
   if (t.empty() || t.size() > 16) return "";
-  std::string lower = t;
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string lower = toLower(t);
   const std::string micro = "\xC2\xB5", mu = "\xCE\xBC";  // MICRO SIGN, GREEK SMALL LETTER MU
   if (lower == "mm" || lower == "millimeter" || lower == "millimeters" || lower == "millimetre" ||
       lower == "millimetres")

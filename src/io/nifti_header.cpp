@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "io/byte_order.h"
+#include "io/length_unit.h"
 #include "io/load_failure.h"
 
 namespace ewa {
@@ -95,8 +96,11 @@ NiftiHeader parseNiftiHeader(const std::string& path, const std::vector<uint8_t>
 
 // NIfTI's world is RAS; the viewer's is LPS: x and y change sign.
 void placeNiftiInWorld(const NiftiHeader& h, VolumeLayout& layout) {
-  const int spaceUnit = h.xyztUnits & 7;
-  layout.unit = spaceUnit == 1 ? "m" : spaceUnit == 2 ? "mm" : spaceUnit == 3 ? "\xC2\xB5m" : "";
+  const int spaceUnit = h.xyztUnits & 7;  // 1 metre, 2 millimetre, 3 micron
+  layout.unit = lengthUnitName(spaceUnit == 1   ? "m"
+                               : spaceUnit == 2 ? "mm"
+                               : spaceUnit == 3 ? "micron"
+                                                : "");
   const glm::dvec3 toLps(-1.0, -1.0, 1.0);
   if (h.sformCode > 0) {
     for (int a = 0; a < 3; ++a) {
