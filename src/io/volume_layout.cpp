@@ -2,9 +2,11 @@
 #include "io/volume_layout.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
+#include "core/shear_resample.h"
 #include "core/volume_orientation.h"
 #include "io/byte_order.h"
 #include "io/load_failure.h"
@@ -89,6 +91,30 @@ std::vector<uint8_t> widenInt8(const std::vector<uint8_t>& bytes) {
   return wide;
 }
 
+// A sheared grid (gantry tilt, skewed axes) resampled within each slice onto an upright one,
+// so every value is drawn where the file puts it; one too sheared for that keeps its voxels and
+// is drawn with the nearest rotation (makeRotation's warning). Returns the note saying which.
+std::vector<std::string> resampleIfSheared(const std::string& path, OrientedGrid& grid,
+                                           ScalarType type) {
+  if (isOrthonormal(grid.direction)) return {};
+  const ShearPlan plan = planShearResample(grid);
+  if (!plan.ok)
+    return {"the grid is sheared (gantry tilt or skewed axes) and not resampled: " + plan.problem};
+  uint64_t count = 1;
+  for (int64_t d : plan.dims) count *= uint64_t(d);
+  checkAllocation(path, count * scalarSize(type), "the upright grid of a sheared one");
+  *grid.bytes = resampleShear(plan, grid, type, smallestValue(*grid.bytes, type));
+  grid.dims = plan.dims;
+  grid.spacing = plan.spacing;
+  grid.origin = plan.origin;
+  grid.direction = plan.direction;
+  char angle[32];
+  std::snprintf(angle, sizeof angle, "%.1f", plan.skewDegrees);
+  return {"the grid is sheared " + std::string(angle) +
+          " degrees (gantry tilt or skewed axes): resampled within each slice onto " +
+          sizesText(plan.dims) + " upright voxels"};
+}
+
 }  // namespace
 
 uint64_t dataByteCount(const std::string& path, const std::array<int64_t, 3>& dims,
@@ -132,12 +158,13 @@ Volume makeVolume(const std::string& path, const VolumeLayout& layout, std::vect
   for (int c = 0; c < 3; ++c)
     for (int r = 0; r < 3; ++r)
       if (!std::isfinite(layout.direction[c][r])) failLoad(path, "direction is not finite");
-  OrientedGrid grid{layout.dims,   scalarSize(volumeScalarOf(layout.type)),
-                    &bytes,        spacing,
-                    layout.origin, layout.direction};
-  std::vector<std::string> notes = makeRotation(grid);
+  const ScalarType type = volumeScalarOf(layout.type);
+  OrientedGrid grid{layout.dims, scalarSize(type), &bytes,
+                    spacing,     layout.origin,    layout.direction};
+  std::vector<std::string> notes = resampleIfSheared(path, grid, type);
+  for (std::string& note : makeRotation(grid)) notes.push_back(std::move(note));
   try {
-    Volume v(layout.dims, spacing, grid.origin, volumeScalarOf(layout.type), std::move(bytes));
+    Volume v(grid.dims, grid.spacing, grid.origin, type, std::move(bytes));
     v.setDirection(grid.direction, layout.patientFrame);
     v.setUnit(layout.unit);
     for (const std::string& note : layout.notes) v.addNote(note);

@@ -38,7 +38,8 @@ uint64_t dataByteCount(const std::string& path, const std::array<int64_t, 3>& di
                        FileScalar type);
 
 // Builds the Volume from the file's data bytes: native byte order, Int8 widened to Int16,
-// negative spacing taken by magnitude, zero or non-finite spacing/origin rejected, the
+// negative spacing taken by magnitude, zero or non-finite spacing/origin rejected, a sheared
+// grid (gantry tilt) resampled within each slice onto an upright one (shear_resample.h), the
 // direction made a rotation (makeRotation: a reflection reverses the slices).
 Volume makeVolume(const std::string& path, const VolumeLayout& layout, std::vector<uint8_t> bytes);
 

@@ -73,12 +73,13 @@ TEST(NrrdLoader, SpaceUnitsAndAxisUnitsNameTheUnit) {
   EXPECT_EQ(unitOf("f.nrrd", ""), "");
 }
 
+// Orthogonal axes of lengths 2, 5 and 0.5 (a sheared grid would be resampled: shear_resample).
 TEST(NrrdLoader, AttachedBigEndianSignedShortWithSpaceDirections) {
   TempDir dir;
   const std::string path =
       dir.write("b.nrrd", nrrdHead("signed short",
                                    "endian: big\nencoding: raw\n"
-                                   "space directions: (0,2,0) (3,0,4) (0,0,-0.5)\n\n") +
+                                   "space directions: (0,2,0) (3,0,4) (0.4,0,-0.3)\n\n") +
                               bytesOf(ramp<int16_t>(-300.0, 100.0), true));
   const Volume v = loadVolume(path);
   EXPECT_EQ(v.type(), ScalarType::Int16);

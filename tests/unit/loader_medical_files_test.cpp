@@ -316,12 +316,17 @@ TEST(DicomFiles, PixelModuleElementsOfTheWrongVrAreRefused) {
   EXPECT_EQ(loadVolume(file).dims()[0], 5);
 }
 
-TEST(DicomFiles, GantryTiltWarnsAndSeveralSeriesAreListed) {
+// A tilted gantry: the slices step obliquely (half a millimetre along y for every 2 along z), so
+// a rod standing straight along z in the patient crosses each slice one row lower than the one
+// before. Resampled within each slice onto an upright grid, it stands in one column of voxels.
+TEST(DicomFiles, GantryTiltIsResampledAndSeveralSeriesAreListed) {
   TempDir dir;
   testing::DicomSliceSpec spec;
   std::filesystem::create_directories(dir.path("tilt"));
   for (int n = 0; n < 4; ++n) {
     spec.position = {0.0, 0.5 * n, 2.0 * n};  // slices step obliquely
+    spec.values.assign(spec.rows * spec.columns, 0);
+    spec.values[size_t(3 - n) * spec.columns + 2] = 100;  // the rod at y = 1.5: row 3 - n
     ASSERT_TRUE(testing::writeDicomSlice(dir.path("tilt/" + std::to_string(n) + ".dcm"), spec));
   }
   spec.seriesUid = "1.2.826.0.1.3680043.2.1125.2";
@@ -331,10 +336,19 @@ TEST(DicomFiles, GantryTiltWarnsAndSeveralSeriesAreListed) {
         testing::writeDicomSlice(dir.path("tilt/other" + std::to_string(n) + ".dcm"), spec));
   }
   const Volume v = loadVolume(dir.path("tilt"));
-  EXPECT_EQ(v.dims()[2], 4);
+  // Rows from y = 0 to 3 (0.5 apart), the slices 2 apart along the normal, not 2.06 along the
+  // oblique step; the direction is the patient's axes.
+  EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{5, 7, 4}));
+  EXPECT_DOUBLE_EQ(v.spacing().z, 2.0);
+  EXPECT_EQ(v.direction(), glm::dmat3(1.0));
+  for (int k = 0; k < 4; ++k)
+    for (int j = 0; j < 7; ++j) EXPECT_EQ(v.value(2, j, k), j == 3 ? 100.0 : 0.0) << j << k;
   const std::string notes = allNotes(v);
-  EXPECT_NE(notes.find("warning: the direction matrix is not orthonormal"), std::string::npos)
+  EXPECT_NE(notes.find("the grid is sheared 14.0 degrees (gantry tilt or skewed axes): "
+                       "resampled within each slice onto 5 x 7 x 4 upright voxels"),
+            std::string::npos)
       << notes;
+  EXPECT_EQ(notes.find("warning:"), std::string::npos) << notes;
   EXPECT_NE(notes.find("series 1.2.826.0.1.3680043.2.1125.2: 2 slices"), std::string::npos)
       << notes;
   const Volume other = loadVolume(dir.path("tilt"), {"1.2.826.0.1.3680043.2.1125.2", 0, 0});
