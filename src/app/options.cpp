@@ -109,7 +109,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                  "picture shows (world point, voxel, value) as JSON and exit")
       ->delimiter(',')
       ->expected(2);
-  app.add_option("--series", o->load.series, "DICOM: open the series with this SeriesInstanceUID");
+  app.add_option("--series", o->load.series,
+                 "DICOM: open the series with this SeriesInstanceUID (UID#2, ... a part of one "
+                 "that mixes sizes, orientations or multi-frame files)");
   app.add_option("--frame", o->load.frame, "4D NIfTI: open this frame (default 0)")
       ->check(CLI::Range(0, 1 << 30));
   app.add_option("--channel", o->load.channel,

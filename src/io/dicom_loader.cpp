@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <limits>
-#include <map>
 
 #include "io/byte_order.h"
 #include "io/dicom_frames.h"
@@ -73,6 +72,9 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   // list of broken files, the folder's own among them, replaces the folder's).
   const bool below = folder && all.empty();
   if (below) all = scanDicomFolder(dir, std::string(), nullptr, true, &unreadable);
+  // A series mixing sizes, orientations or multi-frame files: each volume a series of its own.
+  splitDicomSeries(all);
+  if (!fileSeries.empty()) fileSeries = namedSeries(all);
   if (all.empty() && !unreadable.empty())
     failLoad(path, "no readable DICOM image: " + unreadable.front() +
                        (unreadable.size() > 1
@@ -94,24 +96,11 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
       layout.notes.push_back(
           "series " + s.uid + ": " + std::to_string(s.slices.size()) + " slices" +
           (s.description.empty() ? "" : ", " + s.description) +
+          (s.partOf.empty() ? "" : " (" + s.partOf + ")") +
           (below ? " in " + quoteText(relativeFolder(s.slices.front().file, dir), 80) : "") +
           (&s == &chosen ? " (open)" : " (--series UID opens it)"));
+  // One size and orientation, or one multi-frame file (splitDicomSeries).
   std::vector<DicomSlice> slices = chosen.slices;
-  // The size most slices have is the series' size; the odd one out is named.
-  std::map<std::pair<int64_t, int64_t>, size_t> sizes;
-  for (const DicomSlice& s : slices) sizes[{s.columns, s.rows}]++;
-  const auto common =
-      std::max_element(sizes.begin(), sizes.end(), [](const auto& a, const auto& b) {
-        return a.second < b.second;
-      })->first;
-  for (const DicomSlice& s : slices) {
-    if (s.columns != common.first || s.rows != common.second)
-      failLoad(s.file, "slice of " + std::to_string(s.columns) + " x " + std::to_string(s.rows) +
-                           " in a series of " + std::to_string(common.first) + " x " +
-                           std::to_string(common.second));
-    if (s.frames != 1 && slices.size() > 1)
-      failLoad(s.file, "a multi-frame file inside a series of several files");
-  }
   // An enhanced multi-frame file: its frames as slices, ordered by their own positions (the
   // file is still read once; its frames are put in that order).
   const DicomSlice whole = slices.front();

@@ -148,8 +148,10 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
     series.uid = uid ? trim(std::string(uid)) : std::string();
     if (const char* d = scanner.GetValue(file.c_str(), kSeriesDescription))
       series.description = trim(std::string(d));
-    if (fileSeries && !namedFile.empty() && std::filesystem::equivalent(file, namedFile, ec))
-      *fileSeries = series.uid;
+    if (!namedFile.empty() && std::filesystem::equivalent(file, namedFile, ec)) {
+      s.named = true;
+      if (fileSeries) *fileSeries = series.uid;
+    }
     series.slices.push_back(std::move(s));
   }
   std::vector<DicomSeries> out;
@@ -158,6 +160,68 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
     return a.slices.size() > b.slices.size();
   });
   return out;
+}
+
+namespace {
+
+bool sameOrientation(const DicomSlice& a, const DicomSlice& b) {
+  for (size_t i = 0; i < 6; ++i)
+    if (std::fabs(a.orientation[i] - b.orientation[i]) > 1e-3) return false;
+  return true;
+}
+
+// Why `part` is not the series' main part `main`: its size, its orientation, its frames.
+std::string partReason(const DicomSlice& main, const DicomSlice& part) {
+  std::string why;
+  auto add = [&](const std::string& what) { why += (why.empty() ? "" : ", ") + what; };
+  if (part.columns != main.columns || part.rows != main.rows)
+    add(std::to_string(part.columns) + " x " + std::to_string(part.rows));
+  if (!sameOrientation(part, main)) add("another orientation");
+  if (part.frames > 1) add(main.frames > 1 ? "another multi-frame file" : "a multi-frame file");
+  return why.empty() ? std::string("another volume") : why;
+}
+
+}  // namespace
+
+void splitDicomSeries(std::vector<DicomSeries>& all) {
+  std::vector<DicomSeries> out;
+  for (DicomSeries& series : all) {
+    if (series.slices.empty()) continue;
+    std::vector<std::vector<DicomSlice>> parts;
+    for (DicomSlice& s : series.slices) {
+      auto fits = [&](const std::vector<DicomSlice>& part) {
+        const DicomSlice& f = part.front();
+        return s.frames == 1 && f.frames == 1 && s.columns == f.columns && s.rows == f.rows &&
+               sameOrientation(s, f);
+      };
+      const auto it = std::find_if(parts.begin(), parts.end(), fits);
+      const size_t n = size_t(it - parts.begin());  // it is invalid once parts grows
+      if (n == parts.size()) parts.emplace_back();
+      parts[n].push_back(std::move(s));
+    }
+    std::stable_sort(parts.begin(), parts.end(),
+                     [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    const DicomSlice main = parts.front().front();  // parts are moved out below
+    for (size_t n = 0; n < parts.size(); ++n) {
+      DicomSeries part;
+      part.uid = n == 0 ? series.uid : series.uid + "#" + std::to_string(n + 1);
+      part.description = series.description;
+      if (n > 0) part.partOf = "part of " + series.uid + ": " + partReason(main, parts[n].front());
+      part.slices = std::move(parts[n]);
+      out.push_back(std::move(part));
+    }
+  }
+  std::stable_sort(out.begin(), out.end(), [](const DicomSeries& a, const DicomSeries& b) {
+    return a.slices.size() > b.slices.size();
+  });
+  all = std::move(out);
+}
+
+std::string namedSeries(const std::vector<DicomSeries>& all) {
+  for (const DicomSeries& series : all)
+    for (const DicomSlice& s : series.slices)
+      if (s.named) return series.uid;
+  return {};
 }
 
 glm::dvec3 sortDicomSlices(const std::string& path, std::vector<DicomSlice>& slices,

@@ -25,11 +25,13 @@ struct DicomSlice {
   int64_t samplesPerPixel = 1, bitsAllocated = 0, bitsStored = 0, highBit = 0, representation = 0;
   int64_t planarConfiguration = 0;  // 0 when absent; -1 when present but not a number
   std::string photometric;          // PhotometricInterpretation, trimmed; empty when absent
+  bool named = false;               // the file the user named (scanDicomFolder's namedFile)
 };
 
 struct DicomSeries {
-  std::string uid;
+  std::string uid;  // SeriesInstanceUID; a part split off one (splitDicomSeries): UID#2, ...
   std::string description;
+  std::string partOf;  // the series a part was split off, and why ("64 x 64, another orientation")
   std::vector<DicomSlice> slices;
 };
 
@@ -45,6 +47,16 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
                                          std::vector<std::string>* unreadable = nullptr);
 constexpr int kDicomMaxDepth = 8;
 constexpr size_t kDicomMaxEntries = 100000;
+
+// Splits each series into the volumes it holds, as a series may mix a localizer's three planes,
+// images of another size or several multi-frame files: single-frame slices of one size and
+// orientation stack together, and each multi-frame file is a volume of its own. A series' largest
+// part keeps its UID, the others (largest first) are named UID#2, UID#3, ... (no UID holds a
+// '#'), with partOf saying why. Series stay largest first.
+void splitDicomSeries(std::vector<DicomSeries>& all);
+
+// The UID of the series holding the slice marked `named`; empty when none does.
+std::string namedSeries(const std::vector<DicomSeries>& all);
 
 // Numbers of a multi-valued DICOM string ("a\\b\\c"); empty when any is not a number.
 std::vector<double> dicomNumbers(const char* text);

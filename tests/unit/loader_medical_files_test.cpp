@@ -443,19 +443,75 @@ TEST(DicomFiles, EnhancedMultiFrameFilesTakeTheirFramesGeometry) {
   EXPECT_NE(notes.find("multi-frame file: slice spacing 1 assumed"), std::string::npos) << notes;
 }
 
-TEST(DicomFiles, BadSeriesFailWithOneLine) {
+// One SeriesInstanceUID holding several volumes: a stack, a localizer's slices in another
+// orientation, an image of another size; or two multi-frame files. Each opens as a series of its
+// own, the largest under the UID, the others as UID#2, UID#3, named in the notes.
+TEST(DicomFiles, SeriesMixingSizesOrientationsAndMultiFrameFilesAreSplit) {
   TempDir dir;
-  std::filesystem::create_directories(dir.path("empty"));
-  dir.write("empty/notes.txt", "no images here");
-  expectVolumeLoadError(dir.path("empty"), "no DICOM image");
-  // A slice of another size in the series.
+  const std::string uid = "1.2.826.0.1.3680043.2.1125.1";
   const std::string mixed = dicomSeries(dir, "mixed", 3);
   testing::DicomSliceSpec big;
   big.rows = 6;
   big.position = {10, 20, 10};
   ASSERT_TRUE(testing::writeDicomSlice(mixed + "/big.dcm", big));
-  expectLoadError([&] { loadVolume(mixed); }, mixed,
-                  "big.dcm: slice of 5 x 6 in a series of 5 x 4");
+  testing::DicomSliceSpec coronal;
+  coronal.orientation = {1, 0, 0, 0, 0, -1};
+  for (int n = 0; n < 2; ++n) {
+    coronal.position = {10.0, 3.0 * n, 40.0};
+    ASSERT_TRUE(testing::writeDicomSlice(mixed + "/loc" + std::to_string(n) + ".dcm", coronal));
+  }
+  const Volume stack = loadVolume(mixed);
+  EXPECT_EQ(stack.dims(), (std::array<int64_t, 3>{5, 4, 3}));
+  std::string notes = allNotes(stack);
+  for (const std::string& line :
+       {"series " + uid + ": 3 slices (open)",
+        "series " + uid + "#2: 2 slices (part of " + uid +
+            ": another orientation) (--series UID opens it)",
+        "series " + uid + "#3: 1 slices (part of " + uid + ": 5 x 6) (--series UID opens it)"})
+    EXPECT_NE(notes.find(line + "\n"), std::string::npos) << line << "\n" << notes;
+  // The file named opens its own part; --series opens any.
+  const Volume one = loadVolume(mixed + "/big.dcm");
+  EXPECT_EQ(one.dims(), (std::array<int64_t, 3>{5, 6, 1}));
+  EXPECT_NE(allNotes(one).find(uid + "#3: 1 slices (part of " + uid + ": 5 x 6) (open)"),
+            std::string::npos)
+      << allNotes(one);
+  const Volume localizer = loadVolume(mixed, {uid + "#2", 0, 0});
+  EXPECT_EQ(localizer.dims(), (std::array<int64_t, 3>{5, 4, 2}));
+  EXPECT_EQ(localizer.direction()[1], glm::dvec3(0, 0, -1));
+  expectLoadError(
+      [&] {
+        loadVolume(mixed, {uid + "#4", 0, 0});
+      },
+      mixed, "no series '" + uid + "#4' here");
+
+  // Two multi-frame files of one series: each a volume.
+  testing::EnhancedDicomSpec spec;
+  std::filesystem::create_directories(dir.path("frames"));
+  for (const char* name : {"a.dcm", "b.dcm"}) {
+    const std::string file = dir.path(std::string("frames/") + name);
+    ASSERT_TRUE(testing::writeEnhancedDicom(file, spec));
+    ASSERT_TRUE(testing::editDicom(file, [&](gdcm::DataSet& ds) {
+      gdcm::Attribute<0x0020, 0x000e> series;
+      series.SetValue(uid);
+      ds.Replace(series.GetAsDataElement());
+    }));
+    spec.frameZ = {0.0, 2.0, 4.0};
+  }
+  const Volume b = loadVolume(dir.path("frames/b.dcm"));
+  EXPECT_EQ(b.dims()[2], 3);
+  notes = allNotes(b);
+  EXPECT_NE(notes.find("series " + uid + "#2: 1 slices (part of " + uid +
+                       ": another multi-frame file) (open)"),
+            std::string::npos)
+      << notes;
+  EXPECT_EQ(loadVolume(dir.path("frames")).dims()[2], 2);
+}
+
+TEST(DicomFiles, BadSeriesFailWithOneLine) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path("empty"));
+  dir.write("empty/notes.txt", "no images here");
+  expectVolumeLoadError(dir.path("empty"), "no DICOM image");
   // Two slices at one place.
   const std::string twice = dicomSeries(dir, "twice", 3);
   std::filesystem::copy_file(twice + "/im0.dcm", twice + "/copy.dcm");
