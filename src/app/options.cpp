@@ -112,7 +112,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--series", o->load.series,
                  "DICOM: open the series with this SeriesInstanceUID (UID#2, ... a part of one "
                  "that mixes sizes, orientations or multi-frame files)");
-  app.add_option("--frame", o->load.frame, "4D NIfTI: open this frame (default 0)")
+  app.add_option("--frame", o->load.frame,
+                 "4D NIfTI, or a DICOM series of several volumes at the same positions: open "
+                 "this volume (default 0)")
       ->check(CLI::Range(0, 1 << 30));
   app.add_option("--channel", o->load.channel,
                  "Multi-channel TIFF or colour DICOM (0 red, 1 green, 2 blue): open this channel "

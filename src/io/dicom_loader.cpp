@@ -9,6 +9,7 @@
 #include "io/dicom_frames.h"
 #include "io/dicom_pixels.h"
 #include "io/dicom_series.h"
+#include "io/dicom_volumes.h"
 #include "io/file_bytes.h"
 #include "io/format_loaders.h"
 #include "io/load_failure.h"
@@ -51,7 +52,7 @@ std::string relativeFolder(const std::string& file, const std::string& root) {
 
 }  // namespace
 
-Volume loadDicom(const std::string& path, const std::string& seriesUid, int channel) {
+Volume loadDicom(const std::string& path, const std::string& seriesUid, int channel, int frame) {
   std::error_code ec;
   const std::filesystem::path named(path);
   // A CD's DICOMDIR names the images in the folders below it: opened as that folder is.
@@ -108,6 +109,8 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   if (slices.size() == 1 && whole.frames > 1) frames = dicomFrameSlices(whole);
   glm::dvec3 step(0.0);
   if (!frames.empty()) {
+    // An enhanced file of several volumes (diffusion, time points): the one asked for.
+    frames = selectDicomVolume(path, std::move(frames), frame, layout.notes);
     try {
       step = sortDicomSlices(path, frames, layout.notes);
       slices = frames;
@@ -121,6 +124,7 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
                              (colon == std::string::npos ? what : what.substr(colon + 2)));
     }
   } else {
+    slices = selectDicomVolume(path, std::move(slices), frame, layout.notes);
     step = sortDicomSlices(path, slices, layout.notes);
   }
   const DicomSlice& base = slices.front();

@@ -33,6 +33,7 @@ const gdcm::Tag kHighBit(0x0028, 0x0102);
 const gdcm::Tag kRepresentation(0x0028, 0x0103);
 const gdcm::Tag kPhotometric(0x0028, 0x0004);
 const gdcm::Tag kPlanarConfiguration(0x0028, 0x0006);
+const gdcm::Tag kInstance(0x0020, 0x0013);
 
 int64_t integer(const char* text) {
   int64_t v = 0;
@@ -111,7 +112,7 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
   for (const gdcm::Tag& t :
        {kSeriesUid, kSeriesDescription, kPosition, kOrientation, kRows, kColumns, kPixelSpacing,
         kFrames, kSamplesPerPixel, kBitsAllocated, kBitsStored, kHighBit, kRepresentation,
-        kPhotometric, kPlanarConfiguration})
+        kPhotometric, kPlanarConfiguration, kInstance})
     scanner.AddTag(t);
   if (!files.empty() && !scanner.Scan(files)) failLoad(folder, "cannot read the DICOM headers");
 
@@ -132,6 +133,7 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
     if (sp.size() == 2 && sp[0] > 0.0 && sp[1] > 0.0)
       s.rowSpacing = sp[0], s.columnSpacing = sp[1], s.hasSpacing = true;
     s.frames = std::max<int64_t>(1, integer(scanner.GetValue(file.c_str(), kFrames)));
+    s.instance = integer(scanner.GetValue(file.c_str(), kInstance));
     if (const char* spp = scanner.GetValue(file.c_str(), kSamplesPerPixel))
       s.samplesPerPixel = integer(spp);
     s.bitsAllocated = integer(scanner.GetValue(file.c_str(), kBitsAllocated));

@@ -19,8 +19,9 @@ struct DicomSlice {
   int64_t rows = 0, columns = 0;
   double rowSpacing = 1.0, columnSpacing = 1.0;  // PixelSpacing: between rows, between columns
   bool hasSpacing = false;
-  int64_t frames = 1;  // NumberOfFrames
-  int64_t frame = 0;   // of a multi-frame file opened frame by frame (dicom_frames.h): its frame
+  int64_t frames = 1;    // NumberOfFrames
+  int64_t frame = 0;     // of a multi-frame file opened frame by frame (dicom_frames.h): its frame
+  int64_t instance = 0;  // InstanceNumber (0 when absent): orders volumes at the same positions
   // Pixel module values, checked before GDCM decodes (its reader asserts on some bad ones).
   int64_t samplesPerPixel = 1, bitsAllocated = 0, bitsStored = 0, highBit = 0, representation = 0;
   int64_t planarConfiguration = 0;  // 0 when absent; -1 when present but not a number

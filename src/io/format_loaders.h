@@ -16,8 +16,9 @@ Volume loadNifti(const std::string& path, int frame);
 Volume loadSlc(const std::string& path);  // .slc (VTK SLC)
 // A DICOM series: `path` is a folder or one file of the series; `series` a SeriesInstanceUID
 // or empty (the named file's series, else the folder's series with the most slices);
-// `channel` of RGB images.
-Volume loadDicom(const std::string& path, const std::string& series, int channel);
+// `channel` of RGB images; `frame`, of a series holding several volumes at the same positions
+// (diffusion directions, echoes, time points: dicom_volumes.h), the volume to open.
+Volume loadDicom(const std::string& path, const std::string& series, int channel, int frame);
 // A multi-page TIFF, or a folder of single-page TIFFs; `channel` of multi-channel data.
 Volume loadTiff(const std::string& path, int channel);
 

@@ -23,7 +23,7 @@ Volume loadFolder(const std::string& path, const LoadOptions& options) {
   }
   if (ec) failLoad(path, "cannot list the folder (" + ec.message() + ")");
   if (tiff) return loadTiff(path, options.channel);
-  return loadDicom(path, options.series, options.channel);
+  return loadDicom(path, options.series, options.channel, options.frame);
 }
 
 Volume loadByExtension(const std::string& path, const LoadOptions& options) {
@@ -45,7 +45,7 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options) {
   if (ext == ".slc") return loadSlc(path);
   if (ext == ".tif" || ext == ".tiff") return loadTiff(path, options.channel);
   if (ext == ".dcm" || ext == ".ima" || looksLikeDicom(path))
-    return loadDicom(path, options.series, options.channel);
+    return loadDicom(path, options.series, options.channel, options.frame);
   failLoad(path, "unknown volume file extension " + quoteText(ext) +
                      " (supported: .nrrd .nhdr .mhd .mha .dat .vti .nii .nii.gz .hdr .img .dcm "
                      ".tif .tiff .slc, DICOM files and folders; raw files need their dimensions "

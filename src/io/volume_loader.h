@@ -34,7 +34,7 @@ RawOptions parseRawOptions(const std::string& dims, const std::string& type,
 // Choices inside files that hold more than one volume.
 struct LoadOptions {
   std::string series;  // DICOM SeriesInstanceUID; empty: the named file's, else the largest
-  int frame = 0;       // 4D NIfTI: the volume (time point) to open
+  int frame = 0;       // 4D NIfTI, a DICOM series of several volumes: the volume to open
   int channel = 0;     // multi-channel TIFF, RGB DICOM: the channel to open
 };
 

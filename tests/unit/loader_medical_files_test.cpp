@@ -507,6 +507,60 @@ TEST(DicomFiles, SeriesMixingSizesOrientationsAndMultiFrameFilesAreSplit) {
   EXPECT_EQ(loadVolume(dir.path("frames")).dims()[2], 2);
 }
 
+// A diffusion or multi-echo series: three volumes at the same four positions, InstanceNumbers
+// slice by slice (file names against that order), volume v's values 1000 v + 10 z. --frame
+// picks one; a position short of a slice fails in one line. An enhanced file of two volumes too.
+TEST(DicomFiles, SeveralVolumesAtTheSamePositionsOpenOneByOne) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path("dwi"));
+  testing::DicomSliceSpec spec;
+  for (int z = 0; z < 4; ++z)
+    for (int v = 0; v < 3; ++v) {
+      spec.position = {0.0, 0.0, 2.0 * z};
+      spec.values.assign(spec.rows * spec.columns, int16_t(1000 * v + 10 * z));
+      const std::string file = dir.path("dwi/f" + std::to_string(11 - (3 * z + v)) + ".dcm");
+      ASSERT_TRUE(testing::writeDicomSlice(file, spec));
+      ASSERT_TRUE(testing::editDicom(file, [&](gdcm::DataSet& ds) {
+        gdcm::Attribute<0x0020, 0x0013> instance;
+        instance.SetValue(3 * z + v + 1);
+        ds.Replace(instance.GetAsDataElement());
+      }));
+    }
+  const Volume first = loadVolume(dir.path("dwi"));
+  EXPECT_EQ(first.dims(), (std::array<int64_t, 3>{5, 4, 4}));
+  EXPECT_DOUBLE_EQ(first.spacing().z, 2.0);
+  for (int z = 0; z < 4; ++z) EXPECT_EQ(first.value(0, 0, z), 10 * z) << z;
+  EXPECT_NE(allNotes(first).find("3 volumes at the same 4 positions (diffusion directions, "
+                                 "echoes or time points): volume 0 open (--frame N opens "
+                                 "another, 0 to 2)"),
+            std::string::npos)
+      << allNotes(first);
+  const Volume third = loadVolume(dir.path("dwi/f5.dcm"), {"", 2, 0});
+  for (int z = 0; z < 4; ++z) EXPECT_EQ(third.value(1, 1, z), 2000 + 10 * z) << z;
+  expectLoadError(
+      [&] {
+        loadVolume(dir.path("dwi"), {"", 3, 0});
+      },
+      dir.path("dwi"), "--frame 3 is out of range (the series has 3 volumes at its positions)");
+  const std::string plain = dicomSeries(dir, "plain", 3);
+  expectLoadError(
+      [&] {
+        loadVolume(plain, {"", 1, 0});
+      },
+      plain, "--frame 1 is out of range (the series has 1 volume at its positions)");
+  std::filesystem::remove(dir.path("dwi/f0.dcm"));
+  expectVolumeLoadError(dir.path("dwi"), "4 slice positions holding 2 to 3 slices each (");
+
+  testing::EnhancedDicomSpec enhanced;
+  enhanced.frameZ = {0.0, 2.0, 4.0, 0.0, 2.0, 4.0};
+  ASSERT_TRUE(testing::writeEnhancedDicom(dir.path("two.dcm"), enhanced));
+  const Volume second = loadVolume(dir.path("two.dcm"), {"", 1, 0});
+  EXPECT_EQ(second.dims()[2], 3);
+  EXPECT_DOUBLE_EQ(second.spacing().z, 2.0);
+  EXPECT_NE(allNotes(second).find("2 volumes at the same 3 positions"), std::string::npos)
+      << allNotes(second);
+}
+
 TEST(DicomFiles, BadSeriesFailWithOneLine) {
   TempDir dir;
   std::filesystem::create_directories(dir.path("empty"));

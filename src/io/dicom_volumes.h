@@ -1,0 +1,22 @@
+// DICOM series holding several volumes at the same positions: picking one (--frame).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "io/dicom_series.h"
+
+namespace ewa {
+
+// The slices of volume `volume` of a series (or an enhanced file's frames) that holds several
+// volumes at the same slice positions: diffusion directions, echoes, time points. Slices are
+// grouped by their position along the slice normal; when there are at least two positions and
+// each holds the same number N of slices, the k-th of each (by InstanceNumber, then frame, then
+// file name) belongs to volume k, and a note says so. A series of one volume is returned as it
+// is; `volume` out of range, or positions holding unequal numbers of slices, throw LoadError
+// naming `path`. Slices at one position only, or without a position or a shared orientation,
+// are left for sortDicomSlices (and volume must be 0).
+std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<DicomSlice> slices,
+                                          int volume, std::vector<std::string>& notes);
+
+}  // namespace ewa
