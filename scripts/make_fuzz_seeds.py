@@ -97,6 +97,11 @@ def nrrd_seeds():
             write("nrrd", name, text + MARK + body[:half] + MARK + body[half:])
         else:
             write("nrrd", name, text + MARK + body)
+    # A tilted gantry's sheared axes: the loaders resample such a grid within each slice.
+    tilt = ("NRRD0004\ntype: short\ndimension: 3\nspace: left-posterior-superior\n"
+            "sizes: 4 3 2\nspace directions: (0.5,0,0) (0,0.5,0) (0,0.3,1.2)\n"
+            "space origin: (0,0,0)\nencoding: raw\nendian: little\n\n").encode()
+    write("nrrd", "tilt.nrrd", tilt + payload(n, 2, 7))
 
 
 def metaimage_seeds():

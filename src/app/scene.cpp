@@ -88,6 +88,8 @@ std::string volumeInfoJson(const Volume& v) {
   j["space"] = v.patientFrame() ? "LPS" : "none";  // patient axes, or none
   // The unit of spacing, origin and world lengths; null when the file does not say.
   j["unit"] = v.unit().empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(v.unit());
+  j["frame"] = v.frame();  // of frames: the file's volumes (--frame)
+  j["frames"] = v.frameCount();
   j["notes"] = v.notes();
   return j.dump();
 }

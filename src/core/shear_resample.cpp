@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -135,9 +136,10 @@ ShearPlan planShearResample(const OrientedGrid& g, double maxGrowth) {
   const double my = std::ceil((hi.y - lo.y) / t[1][1] - kSlack) + 1.0;
   const double growth = mx * my / (double(g.dims[0]) * double(g.dims[1]));
   if (!std::isfinite(growth) || growth > maxGrowth) {
+    char times[32];
+    std::snprintf(times, sizeof times, "%.3g", growth);  // any double: 1e+286 too
     p.problem = "the upright grid would hold " +
-                (std::isfinite(growth) ? std::to_string(int64_t(std::ceil(growth)))
-                                       : std::string("too many")) +
+                (std::isfinite(growth) ? std::string(times) : std::string("too many")) +
                 " times the voxels";
     return p;
   }

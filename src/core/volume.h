@@ -63,6 +63,11 @@ class Volume {
   // NIfTI), "µm", "m", a NRRD's "space units"; "" when the file does not say.
   const std::string& unit() const { return unit_; }
   void setUnit(std::string unit) { unit_ = std::move(unit); }
+  // Which of the file's volumes this is (a 4D NIfTI's time points, a DICOM series' volumes at
+  // the same positions: --frame): frame() of frameCount(), 0 of 1 for a file of one volume.
+  int frame() const { return frame_; }
+  int frameCount() const { return frameCount_; }
+  void setFrame(int frame, int count) { frame_ = frame, frameCount_ = count; }
   // Remarks from the loader for --info and the user: frames in the file, conversions, the other
   // series in a folder. Warnings start with "warning: " and are printed when the file opens.
   const std::vector<std::string>& notes() const { return notes_; }
@@ -132,6 +137,7 @@ class Volume {
   glm::dmat3 direction_{1.0};
   bool patientFrame_ = false;
   std::string unit_;
+  int frame_ = 0, frameCount_ = 1;
   std::vector<std::string> notes_;
   ScalarType type_ = ScalarType::UInt8;
   std::vector<uint8_t> bytes_;

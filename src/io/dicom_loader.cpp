@@ -110,7 +110,7 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   glm::dvec3 step(0.0);
   if (!frames.empty()) {
     // An enhanced file of several volumes (diffusion, time points): the one asked for.
-    frames = selectDicomVolume(path, std::move(frames), frame, layout.notes);
+    frames = selectDicomVolume(path, std::move(frames), frame, layout.notes, &layout.frameCount);
     try {
       step = sortDicomSlices(path, frames, layout.notes);
       slices = frames;
@@ -124,9 +124,10 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
                              (colon == std::string::npos ? what : what.substr(colon + 2)));
     }
   } else {
-    slices = selectDicomVolume(path, std::move(slices), frame, layout.notes);
+    slices = selectDicomVolume(path, std::move(slices), frame, layout.notes, &layout.frameCount);
     step = sortDicomSlices(path, slices, layout.notes);
   }
+  layout.frame = frame;  // in range: selectDicomVolume checked it
   const DicomSlice& base = slices.front();
   layout.dims = {base.columns, base.rows, int64_t(slices.size()) * base.frames};
   if (!base.hasSpacing) layout.notes.push_back("no PixelSpacing: 1 assumed");

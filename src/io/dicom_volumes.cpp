@@ -22,7 +22,8 @@ constexpr double kSamePosition = 1e-4;  // mm along the normal: repeated positio
 }  // namespace
 
 std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<DicomSlice> slices,
-                                          int volume, std::vector<std::string>& notes) {
+                                          int volume, std::vector<std::string>& notes, int* count) {
+  if (count) *count = 1;
   const bool placed =
       slices.size() > 1 && std::all_of(slices.begin(), slices.end(), [&](auto& s) {
         return s.hasPosition && s.hasOrientation && s.orientation == slices.front().orientation;
@@ -66,6 +67,7 @@ std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<D
                        "a missing file?)");
   }
   if (volume < 0 || size_t(volume) >= most) outOfRange(path, volume, most);
+  if (count) *count = int(most);
   std::vector<DicomSlice> picked;
   for (size_t p = 0; p < positions; ++p) picked.push_back(slices[starts[p] + size_t(volume)]);
   notes.push_back(std::to_string(most) + " volumes at the same " + std::to_string(positions) +

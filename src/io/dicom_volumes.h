@@ -16,7 +16,9 @@ namespace ewa {
 // is; `volume` out of range, or positions holding unequal numbers of slices, throw LoadError
 // naming `path`. Slices at one position only, or without a position or a shared orientation,
 // are left for sortDicomSlices (and volume must be 0).
+// `count`, when given, gets the number of volumes (1 for a series of one).
 std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<DicomSlice> slices,
-                                          int volume, std::vector<std::string>& notes);
+                                          int volume, std::vector<std::string>& notes,
+                                          int* count = nullptr);
 
 }  // namespace ewa

@@ -1,7 +1,9 @@
 // NIfTI-1 and NIfTI-2 (.nii, .nii.gz, .hdr/.img): sizes checked, one frame read, scaled or widened.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -184,6 +186,8 @@ Volume loadNifti(const std::string& path, int frame) {
   if (h.bigEndian != hostIsBigEndian()) swapBytes(raw.data(), raw.size(), type.size);
 
   placeNiftiInWorld(h, layout);
+  layout.frame = frame;
+  layout.frameCount = int(std::min<int64_t>(frames, std::numeric_limits<int>::max()));
   if (frames > 1)
     layout.notes.push_back("4D file with " + std::to_string(frames) + " frames; showing frame " +
                            std::to_string(frame) + " (--frame N picks another)");

@@ -167,6 +167,7 @@ Volume makeVolume(const std::string& path, const VolumeLayout& layout, std::vect
     Volume v(grid.dims, grid.spacing, grid.origin, type, std::move(bytes));
     v.setDirection(grid.direction, layout.patientFrame);
     v.setUnit(layout.unit);
+    v.setFrame(layout.frame, layout.frameCount);
     for (const std::string& note : layout.notes) v.addNote(note);
     for (std::string& note : notes) v.addNote(std::move(note));
     return v;

@@ -42,6 +42,8 @@ void ControlPanel::setVolume(std::string volumeName, const Volume& volume) {
   volumeText_ = text;
   valueRange_ = {volume.minValue(), volume.maxValue()};
   patientFrame_ = volume.patientFrame();
+  frame_ = volume.frame();
+  frameCount_ = volume.frameCount();
   if (volumeName_.empty()) volumeName_ = "(unnamed volume)";
 }
 
@@ -53,6 +55,13 @@ PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& le
   if (ImGui::Begin("ewaview", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::TextUnformatted(volumeName_.c_str());
     ImGui::TextDisabled("%s", volumeText_.c_str());
+    if (frameCount_ > 1) {  // a 4D file: page through its volumes
+      if (ImGui::ArrowButton("##previous frame", ImGuiDir_Left)) edits.frameStep = -1;
+      ImGui::SameLine();
+      if (ImGui::ArrowButton("##next frame", ImGuiDir_Right)) edits.frameStep = 1;
+      ImGui::SameLine();
+      ImGui::Text("frame %d of %d (Page Up, Page Down)", frame_, frameCount_);
+    }
     ImGui::Separator();
     edits.settings = drawSettings(settings);
     ImGui::Separator();

@@ -39,6 +39,7 @@ struct PanelEdits {
   std::optional<AxisView> axisView;  // a view along an axis was asked for
   bool levelOfDetail = false;        // the level-of-detail checkbox changed
   bool axes = false;                 // the orientation axes checkbox changed
+  int frameStep = 0;                 // -1 or +1: the file's previous or next volume
 };
 
 class ControlPanel {
@@ -62,7 +63,8 @@ class ControlPanel {
   void drawStats(const FrameStats& stats);
 
   std::string volumeName_;
-  std::string volumeText_;  // "64 x 64 x 64 uint8, spacing 1 1 1"
+  std::string volumeText_;          // "64 x 64 x 64 uint8, spacing 1 1 1"
+  int frame_ = 0, frameCount_ = 1;  // which of the file's volumes
   std::array<double, 2> valueRange_{0.0, 1.0};
   bool patientFrame_ = false;  // label the axis views anatomically (LPS)
 };

@@ -56,13 +56,21 @@ void ViewerWindow::adopt(LoadedVolume loaded, bool newCamera) {
   buildPending_ = true;  // one frame says so before the first (slow) render classifies
 }
 
-void ViewerWindow::startLoad(const std::string& path) {
+void ViewerWindow::startLoad(const std::string& path, int frame, bool keepView) {
   if (loadJob_.running()) {
     error("still loading " + loadJob_.path() + "; try again when it is done");
     return;
   }
-  std::cerr << "ewaview: loading " << path << "\n";
-  loadJob_.start(path, config_.opener);
+  std::cerr << "ewaview: loading " << path << (frame > 0 ? " frame " + std::to_string(frame) : "")
+            << "\n";
+  loadKeepsView_ = keepView;
+  loadJob_.start(path, frame, config_.opener);
+}
+
+void ViewerWindow::stepFrame(int step) {
+  const int count = current_.volume->frameCount();
+  if (count <= 1 || current_.path.empty()) return;
+  startLoad(current_.path, ((current_.volume->frame() + step) % count + count) % count, true);
 }
 
 void ViewerWindow::pollLoad() {
@@ -76,11 +84,20 @@ void ViewerWindow::pollLoad() {
   }
   char text[64];
   std::snprintf(text, sizeof text, " in %.1f s", seconds);
-  info("opened " + loaded->name + text);
+  const Volume& v = *loaded->volume;
+  const bool sameGrid = current_.volume && v.dims() == current_.volume->dims() &&
+                        v.spacing() == current_.volume->spacing();
+  const bool keepView = loadKeepsView_ && sameGrid;  // else a new volume after all
+  if (keepView) {
+    info("frame " + std::to_string(v.frame()) + " of " + std::to_string(v.frameCount()) + text);
+    loaded->tf = current_.tf;  // the one being edited, not the file's again
+  } else {
+    info("opened " + loaded->name + text);
+  }
   // Uneven slices, a sheared grid: on stderr already (loadScene), and in the panel.
-  for (const std::string& note : loaded->volume->notes())
+  for (const std::string& note : v.notes())
     if (note.rfind("warning: ", 0) == 0) messages_.post(StatusMessages::Kind::Info, note, now());
-  adopt(std::move(*loaded), /*newCamera=*/true);
+  adopt(std::move(*loaded), /*newCamera=*/!keepView);
 }
 
 // Every level's renderer is of the kind settings_.renderer names (the panel switches it).

@@ -22,6 +22,7 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   Camera camera = controller_.camera();
   const PanelEdits edits = panel_.draw(settings_, camera, levelOfDetail_, axes_, frameStats_);
   if (edits.axes) axesSwitched();
+  if (edits.frameStep != 0) stepFrame(edits.frameStep);
   if (edits.camera) controller_.setCamera(camera);
   if (edits.resetCamera) controller_.reset();
   if (edits.axisView) showAxisView(*edits.axisView, fb);
@@ -172,6 +173,10 @@ void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
       case KeyCommand::ToggleAxes:
         axes_ = !axes_;
         axesSwitched();
+        break;
+      case KeyCommand::NextFrame:
+      case KeyCommand::PreviousFrame:
+        stepFrame(c == KeyCommand::NextFrame ? 1 : -1);
         break;
       default: {
         const int index = int(c) - int(KeyCommand::ViewPlusX);

@@ -81,7 +81,11 @@ class ViewerWindow {
   void info(const std::string& text);
   void error(const std::string& text);
   void adopt(LoadedVolume loaded, bool newCamera);
-  void startLoad(const std::string& path);
+  // `keepView`: another volume of the same file (paging through frames): the camera, crop and
+  // transfer function stay.
+  void startLoad(const std::string& path, int frame = 0, bool keepView = false);
+  // The file's next (+1) or previous (-1) volume, round the end: 4D NIfTI, DICOM volumes.
+  void stepFrame(int step);
   void pollLoad();
   LodRenderer::Factory rendererFactory();
   void switchRendererIfAsked();
@@ -136,6 +140,7 @@ class ViewerWindow {
   FileDialog fileDialog_;
   StatusMessages messages_;
   VolumeLoadJob loadJob_;
+  bool loadKeepsView_ = false;  // the load running pages through the current file's frames
   BookmarkStore bookmarks_;
   WindowTurntable turntable_;
   std::string recorded_;  // camera path lines, when recording

@@ -24,13 +24,14 @@ struct LoadedVolume {
   std::string path;  // file it came from; empty for synthetic volumes
 };
 
-// Reads `path` and picks its transfer function; throws std::exception("path: problem").
-using VolumeOpener = std::function<LoadedVolume(const std::string& path)>;
+// Reads volume `frame` of `path` (--frame: 0 for a file of one volume) and picks its transfer
+// function; throws std::exception("path: problem").
+using VolumeOpener = std::function<LoadedVolume(const std::string& path, int frame)>;
 
 class VolumeLoadJob {
  public:
   // Starts loading `path` (opener, then the coarse levels) on a worker thread.
-  void start(const std::string& path, VolumeOpener opener);
+  void start(const std::string& path, int frame, VolumeOpener opener);
   bool running() const { return future_.valid(); }
   const std::string& path() const { return path_; }
   double elapsedSeconds() const;

@@ -139,6 +139,12 @@ void WindowInput::onKey(GLFWwindow* window, int key, int scancode, int action, i
     case GLFW_KEY_M:
       self.commands_.push_back(KeyCommand::MarkPoint);
       break;
+    case GLFW_KEY_PAGE_DOWN:
+      self.commands_.push_back(KeyCommand::NextFrame);
+      break;
+    case GLFW_KEY_PAGE_UP:
+      self.commands_.push_back(KeyCommand::PreviousFrame);
+      break;
     case GLFW_KEY_X:
       self.commands_.push_back(KeyCommand::ToggleAxes);
       break;

@@ -20,7 +20,9 @@ enum class KeyCommand {
   ViewMinusZ,
   CentreOnCursor,
   MarkPoint,
-  ToggleAxes
+  ToggleAxes,
+  NextFrame,  // Page Down: the file's next volume (4D NIfTI, DICOM volumes at one place)
+  PreviousFrame
 };
 
 class CameraController;

@@ -91,7 +91,7 @@ TEST(Cli, InfoPrintsOneJsonObject) {
       r.out,
       "{\"dims\":[400,400,1],\"spacing\":[1.0,1.0,1.0],\"type\":\"uint8\",\"range\":[1.0,2.0],"
       "\"origin\":[0.0,0.0,0.0],\"direction\":[[1.0,0.0,0.0],[0.0,1.0,0.0],[0.0,0.0,1.0]],"
-      "\"space\":\"none\",\"unit\":null,\"notes\":[]}\n");
+      "\"space\":\"none\",\"unit\":null,\"frame\":0,\"frames\":1,\"notes\":[]}\n");
   const std::string tooth = std::string(EWA_SHARED_DATA) + "/tooth/tooth.nrrd";
   if (!std::filesystem::exists(tooth)) GTEST_SKIP() << "shared data absent: " << tooth;
   r = ewaview(tooth + " --info");
@@ -102,7 +102,9 @@ TEST(Cli, InfoPrintsOneJsonObject) {
   const std::string nifti = std::string(EWA_SHARED_DATA) + "/nifti/functional.nii";
   r = ewaview(nifti + " --info --frame 19");
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("\"space\":\"LPS\",\"unit\":\"mm\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"space\":\"LPS\",\"unit\":\"mm\",\"frame\":19,\"frames\":20"),
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("20 frames; showing frame 19"), std::string::npos) << r.out;
   r = ewaview(nifti + " --info --frame 20");
   EXPECT_EQ(r.code, 1);
@@ -123,7 +125,9 @@ TEST(Cli, HeadlessOutputOnBothBackendsAndTheDefaultAsset) {
   EXPECT_EQ(ia.width, 64);
   EXPECT_EQ(ia.height, 48);
   r = ewaview("--synthetic sphere:16 --resolution 64,48 --backend egl --output " + b);
-  if (r.code != 0 && r.err.find("EGL") != std::string::npos) EWA_SKIP_UNLESS_CI() << r.err;
+  if (r.code != 0 && r.err.find("EGL") != std::string::npos) {
+    EWA_SKIP_UNLESS_CI() << r.err;
+  }
   ASSERT_EQ(r.code, 0) << r.err;
   const Image8 ib = readPng(b);
   ASSERT_EQ(ia.pixels.size(), ib.pixels.size());

@@ -133,6 +133,13 @@ TEST(ShearResample, RotationsAndHopelessShearsAreNotPlanned) {
   EXPECT_NE(steep.problem.find("times the voxels"), std::string::npos) << steep.problem;
   g.direction = glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1));
   EXPECT_FALSE(planShearResample(g).ok);  // two axes the same: degenerate
+  // Rows 1e-100 apart: the growth, 1.75e101, is no integer (found by fuzzing NRRD headers).
+  g.direction =
+      glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::normalize(glm::dvec3(0, 1, 1)));
+  g.spacing = {1.0, 1e-100, 1.0};
+  const ShearPlan huge = planShearResample(g);
+  EXPECT_FALSE(huge.ok);
+  EXPECT_NE(huge.problem.find("e+101 times the voxels"), std::string::npos) << huge.problem;
 }
 
 // Through makeVolume, where every loader's data becomes a Volume: resampled and said so, or

@@ -2,7 +2,8 @@
 # Scripted window test: starts the real ewaview under X, replays an orbit drag, a scroll zoom, a
 # transfer-function drag, a double-click on the volume (the probe and the new centre), a mark and
 # the axes key with xdotool, and checks the screenshots change as they should; then
-# checks that an orbit drag is answered while a full-quality frame is being refined.
+# checks that an orbit drag is answered while a full-quality frame is being refined, and that
+# Page Down and Page Up page through a 4D file's frames.
 # Usage: window_test.sh EWAVIEW_BINARY OUTPUT_DIR.  Exit 77 (CTest skip) without X tools, or
 # exit 1 when CI=true: CI must not pass by skipping.
 set -uo pipefail
@@ -256,4 +257,59 @@ done
 wait "$pid"; rc=$?; pid=""
 [ "$rc" -eq 0 ] || fail "the second ewaview exited with $rc"
 
-echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1; drag during refinement answered in ${answer_s}s ($moved_diff px)"
+# Frames: a 4D NIfTI of two volumes, a ball and a smaller one. Page Down opens the next frame
+# in place (the camera and transfer function kept), Page Up goes back round to the first.
+log "frames: starting a third window on a 4D file"
+python3 - "$work/frames.nii" <<'PY'
+import struct, sys
+n = 24
+header = bytearray(352)
+struct.pack_into("<i", header, 0, 348)
+struct.pack_into("<8h", header, 40, 4, n, n, n, 2, 1, 1, 1)
+struct.pack_into("<hh", header, 70, 2, 8)  # uint8
+struct.pack_into("<8f", header, 76, 1, 1, 1, 1, 1, 1, 1, 1)
+struct.pack_into("<f", header, 108, 352.0)
+header[344:348] = b"n+1\0"
+data = bytearray()
+for radius in (9, 5):
+    for z in range(n):
+        for y in range(n):
+            for x in range(n):
+                r2 = (x - 11.5) ** 2 + (y - 11.5) ** 2 + (z - 11.5) ** 2
+                data.append(200 if r2 < radius * radius else 0)
+open(sys.argv[1], "wb").write(bytes(header) + bytes(data))
+PY
+: >"$work/stdout"; : >"$work/stderr"
+mkdir -p "$work/config3"
+(cd "$work" && EWAVIEW_CONFIG_DIR="$work/config3" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" frames.nii \
+  --resolution "$width,$height" >stdout 2>stderr) &
+pid=$!
+# The panel, wider with its frame line, grows with its statistics: the ball's right half only,
+# clear of the panel, the editor (x >= 714) and the probe line.
+frames_crop="150x560+560+0"
+poll "the ewaview window" find_window
+settled "$out/9_frame0.png" "$black" "$frames_crop"
+f0=$(coverage "$out/9_frame0.png" "$frames_crop")
+xdotool key --window "$wid" Next
+on_frame() { grep -q "^ewaview: frame $1 of 2 in" "$work/stderr"; }
+poll "frame 1 of 2 on Page Down" on_frame 1
+settled "$out/10_frame1.png" "$out/9_frame0.png" "$frames_crop"
+f1=$(coverage "$out/10_frame1.png" "$frames_crop")
+greater "$(awk -v a="$f0" 'BEGIN { print a * 0.6 }')" "$f1" ||
+  fail "Page Down did not show the smaller ball of frame 1 (coverage $f0 -> $f1)"
+xdotool key --window "$wid" Prior
+poll "frame 0 of 2 on Page Up" on_frame 0
+settled "$out/11_frame0_again.png" "$out/10_frame1.png" "$frames_crop"
+back=$(differ "$out/9_frame0.png" "$out/11_frame0_again.png" "$frames_crop")
+[ "$back" -le $((150 * 560 / 200)) ] || fail "frame 0 looks different the second time ($back px)"
+log "frames paged: coverage $f0 -> $f1 -> back ($back px differ)"
+xdotool key --window "$wid" q
+start=$SECONDS
+while kill -0 "$pid" 2>/dev/null; do
+  [ $((SECONDS - start)) -ge 60 ] && fail "Q did not close the third window"
+  sleep 0.3
+done
+wait "$pid"; rc=$?; pid=""
+[ "$rc" -eq 0 ] || fail "the third ewaview exited with $rc"
+
+echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1"
