@@ -104,6 +104,18 @@ settled() {  # settled RESULT BEFORE CROP
   cp "$work/b.png" "$result"
 }
 
+# Quit with Q: the process must end, with status 0.
+quit_window() {  # quit_window NAME
+  xdotool key --window "$wid" q
+  local start=$SECONDS rc
+  while kill -0 "$pid" 2>/dev/null; do
+    [ $((SECONDS - start)) -ge 60 ] && fail "Q did not close the $1"
+    sleep 0.3
+  done
+  wait "$pid"; rc=$?; pid=""
+  [ "$rc" -eq 0 ] || fail "the $1's ewaview exited with $rc"
+}
+
 # First picture: wait until the volume is drawn and the window is still.
 black="$work/black.png"
 convert -size "${width}x${height}" xc:black "$black"
@@ -197,15 +209,7 @@ a0=$(coverage "$work/axes_on.png" "$axes_crop"); a1=$(coverage "$out/8_axes_off.
 greater "$a0" "$(awk -v a="$a1" 'BEGIN { print a + 0.02 }')" ||
   fail "switching the axes off did not clear the corner (coverage $a0 -> $a1)"
 log "orientation axes checked"
-# Quit with Q: the process ends with status 0.
-xdotool key --window "$wid" q
-start=$SECONDS
-while kill -0 "$pid" 2>/dev/null; do
-  [ $((SECONDS - start)) -ge 60 ] && fail "Q did not close the window"
-  sleep 0.3
-done
-wait "$pid"; rc=$?; pid=""
-[ "$rc" -eq 0 ] || fail "ewaview exited with $rc"
+quit_window "window"
 
 # Refinement: a heavier volume whose full-quality frame is drawn in many small steps
 # (EWAVIEW_REFINE_BUDGET_MS=1: about a millisecond of GL work per UI frame). An orbit drag while
@@ -248,14 +252,7 @@ greater "$moved_diff" $((290 * 600 / 50)) ||
 restarted() { tail -n +$((before_drag + 1)) "$work/stdout" | grep -q '^refine start'; }
 poll "the refinement to start again after the drag" restarted
 log "refinement answered the drag in ${answer_s}s ($moved_diff px)"
-xdotool key --window "$wid" q
-start=$SECONDS
-while kill -0 "$pid" 2>/dev/null; do
-  [ $((SECONDS - start)) -ge 60 ] && fail "Q did not close the second window"
-  sleep 0.3
-done
-wait "$pid"; rc=$?; pid=""
-[ "$rc" -eq 0 ] || fail "the second ewaview exited with $rc"
+quit_window "second window"
 
 # Frames: a 4D NIfTI of two volumes, a ball and a smaller one. Page Down opens the next frame
 # in place (the camera and transfer function kept), Page Up goes back round to the first.
@@ -303,13 +300,6 @@ settled "$out/11_frame0_again.png" "$out/10_frame1.png" "$frames_crop"
 back=$(differ "$out/9_frame0.png" "$out/11_frame0_again.png" "$frames_crop")
 [ "$back" -le $((150 * 560 / 200)) ] || fail "frame 0 looks different the second time ($back px)"
 log "frames paged: coverage $f0 -> $f1 -> back ($back px differ)"
-xdotool key --window "$wid" q
-start=$SECONDS
-while kill -0 "$pid" 2>/dev/null; do
-  [ $((SECONDS - start)) -ge 60 ] && fail "Q did not close the third window"
-  sleep 0.3
-done
-wait "$pid"; rc=$?; pid=""
-[ "$rc" -eq 0 ] || fail "the third ewaview exited with $rc"
+quit_window "third window"
 
 echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1"
