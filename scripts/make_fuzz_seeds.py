@@ -102,6 +102,14 @@ def nrrd_seeds():
             "sizes: 4 3 2\nspace directions: (0.5,0,0) (0,0.5,0) (0,0.3,1.2)\n"
             "space origin: (0,0,0)\nencoding: raw\nendian: little\n\n").encode()
     write("nrrd", "tilt.nrrd", tilt + payload(n, 2, 7))
+    # 4D: time points last (--frame) and colour first (--channel).
+    time = ("NRRD0004\ntype: uchar\ndimension: 4\nsizes: 4 3 2 3\n"
+            "space directions: (1,0,0) (0,1,0) (0,0,1) none\n"
+            "kinds: domain domain domain list\nencoding: raw\n\n").encode()
+    write("nrrd", "time4d.nrrd", time + payload(3 * n, 1, 8))
+    rgb = ("NRRD0004\ntype: uchar\ndimension: 4\nsizes: 3 4 3 2\n"
+           "kinds: RGB-color domain domain domain\nencoding: raw\n\n").encode()
+    write("nrrd", "rgb4d.nrrd", rgb + payload(3 * n, 1, 9))
 
 
 def metaimage_seeds():

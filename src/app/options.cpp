@@ -113,12 +113,12 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                  "DICOM: open the series with this SeriesInstanceUID (UID#2, ... a part of one "
                  "that mixes sizes, orientations or multi-frame files)");
   app.add_option("--frame", o->load.frame,
-                 "4D NIfTI, or a DICOM series of several volumes at the same positions: open "
-                 "this volume (default 0)")
+                 "4D NIfTI or NRRD, or a DICOM series of several volumes at the same positions: "
+                 "open this volume (default 0)")
       ->check(CLI::Range(0, 1 << 30));
   app.add_option("--channel", o->load.channel,
-                 "Multi-channel TIFF or colour DICOM (0 red, 1 green, 2 blue): open this channel "
-                 "(default 0)")
+                 "Multi-channel TIFF, colour DICOM (0 red, 1 green, 2 blue) or a 4D NRRD's "
+                 "colour or vector axis: open this channel (default 0)")
       ->check(CLI::Range(0, 1 << 20));
   std::vector<int> res;
   app.add_option("--resolution", res, "Image size W,H (default 800,600)")

@@ -7,7 +7,8 @@
 
 namespace ewa {
 
-Volume loadNrrd(const std::string& path);       // .nrrd, .nhdr
+// .nrrd, .nhdr; of a 4D file, `frame` (time, lists) or `channel` (colour, vector kinds).
+Volume loadNrrd(const std::string& path, int frame, int channel);
 Volume loadMetaImage(const std::string& path);  // .mhd, .mha
 Volume loadDat(const std::string& path);        // .dat (Voreen / Inviwo)
 Volume loadVti(const std::string& path);        // .vti (VTK XML ImageData)

@@ -263,6 +263,7 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
   std::vector<int64_t> sizes;
   std::vector<double> spacings;
   std::vector<std::vector<double>> directions, origin;
+  std::vector<std::string> kinds;
   std::string space;
   size_t pos = text.find('\n');
   pos = pos == std::string::npos ? text.size() : pos + 1;
@@ -295,8 +296,8 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
     const std::string value = trim(line.substr(colon + 1));
     if (key == "dimension") {
       const int64_t d = parseIntField(path, "dimension", value);
-      if (d < 1 || d > 3)
-        failLoad(path, "unsupported dimension " + quoteText(value) + " (need 1 to 3)");
+      if (d < 1 || d > 4)
+        failLoad(path, "unsupported dimension " + quoteText(value) + " (need 1 to 4)");
       h.dimension = static_cast<int>(d);
     } else if (key == "type") {
       h.layout.type = parseType(path, value);
@@ -308,6 +309,8 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
       const std::string e = toLower(value);
       if (e != "little" && e != "big") failLoad(path, "bad endian " + quoteText(value));
       h.layout.bigEndian = e == "big";
+    } else if (key == "kinds") {
+      kinds = splitWords(toLower(value));
     } else if (key == "sizes") {
       if (!parseInt64List(value, sizes)) failLoad(path, "bad sizes " + quoteText(value));
     } else if (key == "spacings") {
@@ -331,7 +334,7 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
     } else if (key == "datafile") {
       parseDataFile(path, value, h, listFollows);
     }
-    // Other fields (content, kinds, centers, ...) do not affect loading.
+    // Other fields (content, centers, ...) do not affect loading; kinds matter in 4D only.
   }
   if (!ended) {
     if (h.dataFiles.empty() && !listFollows)
@@ -354,9 +357,21 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
   if (listFollows && h.dataFiles.empty()) failLoad(path, "data file LIST names no files");
   if (h.gzip && h.byteSkip < 0) failLoad(path, "byte skip -1 is only allowed with raw encoding");
   if (h.subdim > h.dimension) failLoad(path, "data file subdimension exceeds the dimension");
+  h.sizes = sizes;
+  if (dim == 4) {
+    // The axis that is not spatial comes out: what is left is the 3D grid.
+    if (!kinds.empty() && kinds.size() != dim)
+      failLoad(path, "kinds count does not match dimension");
+    h.extra = pickNrrdExtraAxis(path, sizes, directions, kinds);
+    const auto cut = static_cast<ptrdiff_t>(h.extra.axis);
+    sizes.erase(sizes.begin() + cut);
+    if (!spacings.empty()) spacings.erase(spacings.begin() + cut);
+    if (!directions.empty()) directions.erase(directions.begin() + cut);
+  }
+  const size_t spatial = sizes.size();
 
   h.layout.dims = {1, 1, 1};
-  for (size_t a = 0; a < dim; ++a) {
+  for (size_t a = 0; a < spatial; ++a) {
     h.layout.dims[a] = sizes[a];
     if (!directions.empty() && !directions[a].empty()) {
       double len2 = 0.0;
@@ -369,7 +384,7 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
   if (!origin.empty()) {
     for (size_t a = 0; a < origin[0].size() && a < 3; ++a) h.layout.origin[a] = origin[0][a];
   }
-  for (size_t a = 0; a < dim; ++a) {
+  for (size_t a = 0; a < spatial; ++a) {
     if (directions.empty() || directions[a].empty()) continue;
     for (size_t c = 0; c < directions[a].size() && c < 3; ++c)
       h.layout.direction[a][c] = directions[a][c] / h.layout.spacing[a];

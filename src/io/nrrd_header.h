@@ -5,15 +5,18 @@
 #include <string>
 #include <vector>
 
+#include "io/nrrd_axes.h"
 #include "io/volume_layout.h"
 
 namespace ewa {
 
 struct NrrdHeader {
-  VolumeLayout layout;   // sizes padded to 3D, spacing, origin, type, endian
-  int dimension = 0;     // as written (1..3)
-  bool gzip = false;     // "gzip"/"gz" encoding, else raw
-  int64_t byteSkip = 0;  // -1: data ends at the end of the file (raw only)
+  VolumeLayout layout;         // the spatial sizes padded to 3D, spacing, origin, type, endian
+  int dimension = 0;           // as written (1..4)
+  std::vector<int64_t> sizes;  // as written, every axis (data file subdimensions count them)
+  NrrdExtraAxis extra;         // a 4D file's axis that is not spatial
+  bool gzip = false;           // "gzip"/"gz" encoding, else raw
+  int64_t byteSkip = 0;        // -1: data ends at the end of the file (raw only)
   int64_t lineSkip = 0;
   std::vector<std::string> dataFiles;  // paths resolved against the header; empty: attached
   int subdim = 0;                      // axes held by each data file; 0: split evenly

@@ -1,4 +1,6 @@
 // NRRD data reading: attached or detached, one or many data files, raw or gzip encoding.
+#include <algorithm>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -22,7 +24,7 @@ struct DataPiece {
 uint64_t bytesPerFile(const std::string& path, const NrrdHeader& h, uint64_t total, size_t files) {
   if (h.subdim > 0) {
     uint64_t per = fileScalarSize(h.layout.type);
-    for (int a = 0; a < h.subdim; ++a) per *= static_cast<uint64_t>(h.layout.dims[a]);
+    for (int a = 0; a < h.subdim; ++a) per *= static_cast<uint64_t>(h.sizes[size_t(a)]);
     if (per * files != total) {  // no overflow: per <= total and files <= total / per is checked
       failLoad(path, std::to_string(files) + " data files of subdimension " +
                          std::to_string(h.subdim) + " do not match the sizes");
@@ -90,11 +92,42 @@ std::vector<uint8_t> readGzip(const NrrdHeader& h, const std::vector<DataPiece>&
   return bytes;
 }
 
+// Which volume of a 4D file's extra axis to open (--frame, or --channel for colour and vector
+// kinds), checked against its size; the layout says which of how many, the notes why.
+int64_t pickVolume(const std::string& path, const NrrdHeader& h, int frame, int channel,
+                   VolumeLayout& layout) {
+  const NrrdExtraAxis& e = h.extra;
+  const std::string kind = e.kind.empty() ? std::string() : " (kind " + e.kind + ")";
+  if (e.channels) {
+    checkChannel(path, channel, e.size);
+    layout.notes.push_back("4D NRRD of " + std::to_string(e.size) + " channels" + kind +
+                           "; showing channel " + std::to_string(channel) +
+                           " (--channel N picks another)");
+    return channel;
+  }
+  if (frame < 0 || frame >= e.size)
+    failLoad(path, "--frame " + std::to_string(frame) + " is out of range (the file has " +
+                       std::to_string(e.size) + " frame" + (e.size == 1 ? "" : "s") + ")");
+  layout.frame = frame;
+  layout.frameCount = int(std::min<int64_t>(e.size, std::numeric_limits<int>::max()));
+  layout.notes.push_back("4D NRRD of " + std::to_string(e.size) + " frames" + kind +
+                         "; showing frame " + std::to_string(frame) + " (--frame N picks another)");
+  return frame;
+}
+
 }  // namespace
 
-Volume loadNrrd(const std::string& path) {
+Volume loadNrrd(const std::string& path, int frame, int channel) {
   const NrrdHeader h = parseNrrdHeader(path);
-  const uint64_t total = dataByteCount(path, h.layout.dims, h.layout.type);
+  VolumeLayout layout = h.layout;
+  const uint64_t volumeBytes = dataByteCount(path, layout.dims, layout.type);
+  int64_t index = 0;
+  uint64_t total = volumeBytes;
+  if (h.extra.axis >= 0) {
+    index = pickVolume(path, h, frame, channel, layout);
+    if (h.extra.size <= 0 || __builtin_mul_overflow(volumeBytes, uint64_t(h.extra.size), &total))
+      failLoad(path, "4D sizes overflow 64-bit byte counts");
+  }
   std::vector<DataPiece> pieces;
   if (h.dataFiles.empty()) {
     pieces.push_back({path, h.attachedOffset});
@@ -103,9 +136,20 @@ Volume loadNrrd(const std::string& path) {
     for (const std::string& f : h.dataFiles) pieces.push_back({f, 0});
   }
   const uint64_t perFile = bytesPerFile(path, h, total, pieces.size());
+  if (h.extra.axis == 3 && !h.gzip && pieces.size() == 1) {
+    // Time points last in one raw file: only the one asked for is read.
+    const uint64_t offset = rawDataOffset(h, pieces[0], total);
+    return makeVolume(path, layout,
+                      readFileRange(pieces[0].file, offset + uint64_t(index) * volumeBytes,
+                                    volumeBytes, "NRRD frame"));
+  }
+  if (h.extra.axis >= 0) checkAllocation(path, total, "4D NRRD data");
   std::vector<uint8_t> bytes =
       h.gzip ? readGzip(h, pieces, perFile) : readRaw(h, pieces, perFile, total);
-  return makeVolume(path, h.layout, std::move(bytes));
+  if (h.extra.axis >= 0)
+    bytes = nrrdVolumeOf(bytes, h.extra, index, volumeBytes / fileScalarSize(layout.type),
+                         fileScalarSize(layout.type));
+  return makeVolume(path, layout, std::move(bytes));
 }
 
 }  // namespace ewa

@@ -37,7 +37,7 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options) {
   const std::string inner =
       gz ? toLower(std::filesystem::path(name.substr(0, name.size() - 3)).extension().string())
          : ext;
-  if (ext == ".nrrd" || ext == ".nhdr") return loadNrrd(path);
+  if (ext == ".nrrd" || ext == ".nhdr") return loadNrrd(path, options.frame, options.channel);
   if (ext == ".mhd" || ext == ".mha") return loadMetaImage(path);
   if (ext == ".dat") return loadDat(path);
   if (ext == ".vti") return loadVti(path);

@@ -130,9 +130,9 @@ TEST(LoaderErrors, NrrdUnknownOrUnsupportedTypeAndEncoding) {
   expectVolumeLoadError(dir.write("e3.nrrd", nrrd("type: uchar\n" + tail + "\n") + kData24),
                         "missing encoding");
   expectVolumeLoadError(
-      dir.write("d4.nrrd",
-                nrrd("type: uchar\nencoding: raw\ndimension: 4\nsizes: 1 2 3 4\n\n") + kData24),
-      "dimension");
+      dir.write("d5.nrrd",
+                nrrd("type: uchar\nencoding: raw\ndimension: 5\nsizes: 1 2 3 4 1\n\n") + kData24),
+      "unsupported dimension '5'");
   expectVolumeLoadError(dir.write("en.nrrd", nrrd(kGoodFields + "endian: middle\n\n") + kData24),
                         "endian");
   expectVolumeLoadError(dir.write("bs.nrrd", nrrd(kGoodFields + "byte skip: -2\n\n") + kData24),
