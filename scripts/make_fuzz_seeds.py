@@ -353,6 +353,13 @@ def tiff_seeds():
     write("tiff", "uint16_imagej.tif",
           tiff_file(2, 16, 1, b"ImageJ=1.53\nimages=2\nslices=2\nunit=micron\nspacing=2.5\n"))
     write("tiff", "float32.tif", tiff_file(2, 32, 3))
+    # Channels and time points: an ImageJ hyperstack and an OME-TIFF (Z fastest).
+    write("tiff", "hyperstack.tif",
+          tiff_file(4, 8, 1, b"ImageJ=1.53\nimages=4\nchannels=2\nslices=1\nframes=2\n"))
+    write("tiff", "planes.ome.tif",
+          tiff_file(4, 16, 1, b'<OME><Image><Pixels DimensionOrder="XYZCT" SizeZ="2" SizeC="2" '
+                    b'SizeT="1" PhysicalSizeX="0.5" PhysicalSizeZ="2" PhysicalSizeZUnit="mm"/>'
+                    b'</Image></OME>'))
 
 
 def slc_seeds():

@@ -113,8 +113,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                  "DICOM: open the series with this SeriesInstanceUID (UID#2, ... a part of one "
                  "that mixes sizes, orientations or multi-frame files)");
   app.add_option("--frame", o->load.frame,
-                 "4D NIfTI or NRRD, or a DICOM series of several volumes at the same positions: "
-                 "open this volume (default 0)")
+                 "4D NIfTI or NRRD, an OME-TIFF's or ImageJ hyperstack's time point, or a DICOM "
+                 "series of several volumes at the same positions: open this volume (default 0)")
       ->check(CLI::Range(0, 1 << 30));
   app.add_option("--channel", o->load.channel,
                  "Multi-channel TIFF, colour DICOM (0 red, 1 green, 2 blue) or a 4D NRRD's "

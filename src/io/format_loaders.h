@@ -21,7 +21,8 @@ Volume loadSlc(const std::string& path);  // .slc (VTK SLC)
 // (diffusion directions, echoes, time points: dicom_volumes.h), the volume to open.
 Volume loadDicom(const std::string& path, const std::string& series, int channel, int frame);
 // A multi-page TIFF, or a folder of single-page TIFFs; `channel` of multi-channel data.
-Volume loadTiff(const std::string& path, int channel);
+// `frame`: an ImageJ hyperstack's or OME-TIFF's time point.
+Volume loadTiff(const std::string& path, int channel, int frame);
 
 // True when the file starts like DICOM Part 10 ("DICM" at byte 128).
 bool looksLikeDicom(const std::string& path);

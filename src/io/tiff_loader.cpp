@@ -15,6 +15,7 @@
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
 #include "io/text_fields.h"
+#include "io/tiff_planes.h"
 #include "io/volume_layout.h"
 
 namespace ewa {
@@ -213,17 +214,39 @@ void readPage(const TiffFile& file, const PageFormat& f, int channel, uint8_t* o
     readStrips(file, f, channel, out);
 }
 
-// ImageJ's description: "spacing=", "unit=", "channels=" lines.
-std::string imageJField(const std::string& description, const std::string& key) {
-  for (const std::string& line : splitWords(description, "\n")) {
-    if (line.compare(0, key.size() + 1, key + "=") == 0) return trim(line.substr(key.size() + 1));
+// The pixel size, slice spacing and unit: OME-XML's physical sizes; else, in ImageJ's files (its
+// unit) or with no unit, the resolution tags (inch and centimetre resolutions are print sizes,
+// 72 dpi, not the sample's) and ImageJ's spacing=.
+void placePixels(const TiffFile& tiff, const TiffPlaneOrder& order, VolumeLayout& layout) {
+  if (order.kind == "OME") {
+    if (order.sizeX > 0.0) layout.spacing.x = order.sizeX;
+    if (order.sizeY > 0.0) layout.spacing.y = order.sizeY;
+  } else {
+    uint16_t resolutionUnit = RESUNIT_INCH;
+    TIFFGetFieldDefaulted(tiff.get(), TIFFTAG_RESOLUTIONUNIT, &resolutionUnit);
+    float xres = 0.0f, yres = 0.0f;
+    if (order.kind == "ImageJ" || resolutionUnit == RESUNIT_NONE) {
+      if (TIFFGetField(tiff.get(), TIFFTAG_XRESOLUTION, &xres) && xres > 0.0f &&
+          std::isfinite(1.0 / xres))
+        layout.spacing.x = 1.0 / xres;
+      if (TIFFGetField(tiff.get(), TIFFTAG_YRESOLUTION, &yres) && yres > 0.0f &&
+          std::isfinite(1.0 / yres))
+        layout.spacing.y = 1.0 / yres;
+    }
   }
-  return "";
+  if (order.sizeZ > 0.0)
+    layout.spacing.z = order.sizeZ;
+  else
+    layout.notes.push_back("no slice spacing in the file: 1 assumed");
+  if (layout.spacing.x == 1.0 && layout.spacing.y == 1.0)
+    layout.notes.push_back("no pixel size in the file: 1 assumed");
+  if (!order.unit.empty()) layout.notes.push_back("spacing unit: " + quoteText(order.unit, 20));
+  layout.unit = lengthUnitName(order.unit);
 }
 
 }  // namespace
 
-Volume loadTiff(const std::string& path, int channel) {
+Volume loadTiff(const std::string& path, int channel, int frame) {
   std::error_code ec;
   std::vector<std::string> files;
   if (std::filesystem::is_directory(path, ec)) {
@@ -243,7 +266,8 @@ Volume loadTiff(const std::string& path, int channel) {
   VolumeLayout layout;
   PageFormat format;
   std::vector<uint8_t> bytes;
-  int64_t pages = 0, channels = 1, pagesPerSlice = 1;
+  int64_t pages = 0, pageChannel = 0;
+  TiffPlaneOrder order;
   size_t pageBytes = 0;
   for (const std::string& file : files) {
     TiffFile tiff(file);
@@ -256,51 +280,35 @@ Volume loadTiff(const std::string& path, int channel) {
         std::string text;
         if (TIFFGetField(tiff.get(), TIFFTAG_IMAGEDESCRIPTION, &description) && description)
           text = std::string(description).substr(0, 1 << 16);
-        channels = f.samples;
-        int64_t imageJChannels = 0;
-        if (f.samples == 1 && parseInt64(imageJField(text, "channels"), imageJChannels) &&
-            imageJChannels > 1 && imageJChannels < 1024)
-          channels = pagesPerSlice = imageJChannels;  // ImageJ hyperstack: channels interleaved
+        order = tiffPlaneOrder(file, text, f.samples);
+        // Channels are the samples of a pixel (RGB), or pages (an ImageJ hyperstack, OME-TIFF).
+        const int64_t channels = f.samples > 1 ? f.samples : order.channels;
         checkChannel(path, channel, channels);
-        // Resolution tags give the pixel size only in ImageJ's files (its unit) or with no
-        // unit; inch and centimetre resolutions are print sizes (72 dpi), not the sample's.
-        uint16_t resolutionUnit = RESUNIT_INCH;
-        TIFFGetFieldDefaulted(tiff.get(), TIFFTAG_RESOLUTIONUNIT, &resolutionUnit);
-        const bool imageJ = text.compare(0, 7, "ImageJ=") == 0;
-        float xres = 0.0f, yres = 0.0f;
-        if (imageJ || resolutionUnit == RESUNIT_NONE) {
-          if (TIFFGetField(tiff.get(), TIFFTAG_XRESOLUTION, &xres) && xres > 0.0f &&
-              std::isfinite(1.0 / xres))
-            layout.spacing.x = 1.0 / xres;
-          if (TIFFGetField(tiff.get(), TIFFTAG_YRESOLUTION, &yres) && yres > 0.0f &&
-              std::isfinite(1.0 / yres))
-            layout.spacing.y = 1.0 / yres;
-        }
-        double z = 0.0;
-        if (parseDouble(imageJField(text, "spacing"), z) && z > 0.0 && std::isfinite(z))
-          layout.spacing.z = z;
-        else
-          layout.notes.push_back("no slice spacing in the file: 1 assumed");
-        if (layout.spacing.x == 1.0 && layout.spacing.y == 1.0)
-          layout.notes.push_back("no pixel size in the file: 1 assumed");
-        const std::string unit = imageJField(text, "unit");
-        if (!unit.empty()) layout.notes.push_back("spacing unit: " + quoteText(unit, 20));
-        layout.unit = lengthUnitName(unit);
+        pageChannel = f.samples > 1 ? 0 : channel;
+        if (frame < 0 || frame >= order.frames)
+          failLoad(path, "--frame " + std::to_string(frame) + " is out of range (the file has " +
+                             std::to_string(order.frames) + " time point" +
+                             (order.frames == 1 ? "" : "s") + ")");
+        layout.frame = frame;
+        layout.frameCount = int(order.frames);
+        placePixels(tiff, order, layout);
         if (channels > 1)
           layout.notes.push_back(std::to_string(channels) + " channels; showing channel " +
                                  std::to_string(channel) + " (--channel N picks another)");
+        if (order.frames > 1)
+          layout.notes.push_back(std::to_string(order.frames) + " time points; showing frame " +
+                                 std::to_string(frame) + " (--frame N picks another)");
         pageBytes = size_t(f.width) * f.height * fileScalarSize(layout.type);
         dataByteCount(file, {int64_t(f.width), int64_t(f.height), 1}, layout.type);
       } else if (!(f == format)) {
         tiff.fail("page " + std::to_string(pages) + " is " + f.text() + ", the first " +
                   format.text() + ": all pages must agree");
       }
-      if (pagesPerSlice == 1 || pages % pagesPerSlice == channel) {
+      if (tiffSliceOfPage(order, pages, pageChannel, frame) >= 0) {
         const auto slices = int64_t(bytes.size() / std::max<size_t>(pageBytes, 1));
         dataByteCount(file, {int64_t(f.width), int64_t(f.height), slices + 1}, layout.type);
         bytes.resize(bytes.size() + pageBytes);
-        readPage(tiff, f, pagesPerSlice == 1 ? channel : 0,
-                 bytes.data() + bytes.size() - pageBytes);
+        readPage(tiff, f, f.samples > 1 ? channel : 0, bytes.data() + bytes.size() - pageBytes);
       }
       ++pages;
     } while (TIFFReadDirectory(tiff.get()));

@@ -22,7 +22,7 @@ Volume loadFolder(const std::string& path, const LoadOptions& options) {
     if (ext == ".tif" || ext == ".tiff") tiff = true;
   }
   if (ec) failLoad(path, "cannot list the folder (" + ec.message() + ")");
-  if (tiff) return loadTiff(path, options.channel);
+  if (tiff) return loadTiff(path, options.channel, options.frame);
   return loadDicom(path, options.series, options.channel, options.frame);
 }
 
@@ -43,7 +43,7 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options) {
   if (ext == ".vti") return loadVti(path);
   if (inner == ".nii" || inner == ".hdr" || inner == ".img") return loadNifti(path, options.frame);
   if (ext == ".slc") return loadSlc(path);
-  if (ext == ".tif" || ext == ".tiff") return loadTiff(path, options.channel);
+  if (ext == ".tif" || ext == ".tiff") return loadTiff(path, options.channel, options.frame);
   if (ext == ".dcm" || ext == ".ima" || looksLikeDicom(path))
     return loadDicom(path, options.series, options.channel, options.frame);
   failLoad(path, "unknown volume file extension " + quoteText(ext) +

@@ -1,0 +1,143 @@
+// TIFF plane orders: ImageJ's description lines and OME-XML's Pixels element, page to slice.
+#include "io/tiff_planes.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "io/length_unit.h"
+#include "io/load_failure.h"
+#include "io/text_fields.h"
+#include "io/xml_scanner.h"
+
+namespace ewa {
+
+namespace {
+
+constexpr int64_t kMaxPlanes = int64_t(1) << 30;  // per dimension: no product overflows
+
+// ImageJ's description: "key=value" lines.
+std::string imageJField(const std::string& description, const std::string& key) {
+  for (const std::string& line : splitWords(description, "\n")) {
+    if (line.compare(0, key.size() + 1, key + "=") == 0) return trim(line.substr(key.size() + 1));
+  }
+  return "";
+}
+
+// A count from 1 to kMaxPlanes, or `fallback`.
+int64_t count(const std::string& text, int64_t fallback) {
+  int64_t v = 0;
+  return parseInt64(trim(text), v) && v >= 1 && v <= kMaxPlanes ? v : fallback;
+}
+
+double positive(const std::string& text) {
+  double v = 0.0;
+  return parseDouble(trim(text), v) && v > 0.0 && std::isfinite(v) ? v : 0.0;
+}
+
+// Metres in one `unit` (OME's UnitsLength spellings), or 0 when it is not a length we know.
+double metres(const std::string& unit) {
+  const std::string name = lengthUnitName(unit);
+  if (name == "m") return 1.0;
+  if (name == "cm") return 1e-2;
+  if (name == "mm") return 1e-3;
+  if (name == "\xC2\xB5m") return 1e-6;
+  if (name == "nm") return 1e-9;
+  if (name == "pm") return 1e-12;
+  if (name == "\xC3\x85") return 1e-10;  // Å, OME's angstrom
+  return 0.0;
+}
+
+TiffPlaneOrder imageJOrder(const std::string& text) {
+  TiffPlaneOrder o;
+  o.kind = "ImageJ";
+  o.channels = count(imageJField(text, "channels"), 1);  // of pages; divided by samples below
+  o.frames = count(imageJField(text, "frames"), 1);
+  o.slices = count(imageJField(text, "slices"), o.frames > 1 ? 1 : 0);
+  o.sizeZ = positive(imageJField(text, "spacing"));
+  o.unit = imageJField(text, "unit");
+  return o;
+}
+
+TiffPlaneOrder omeOrder(const std::string& path, const std::string& text, int64_t samples) {
+  XmlScanner scanner(path, text);
+  XmlTag tag;
+  while (scanner.next(tag)) {
+    const size_t colon = tag.name.rfind(':');  // "ome:Pixels" in prefixed documents
+    if (tag.closing || tag.name.substr(colon == std::string::npos ? 0 : colon + 1) != "Pixels")
+      continue;
+    auto value = [&](const char* key) {
+      const std::string* v = tag.attribute(key);
+      return v ? *v : std::string();
+    };
+    TiffPlaneOrder o;
+    o.kind = "OME";
+    const std::string order = value("DimensionOrder");  // "XYZCT", ...
+    if (order.size() == 5 && order.compare(0, 2, "XY") == 0) {
+      std::string rest = order.substr(2);
+      std::string sorted = rest;
+      std::sort(sorted.begin(), sorted.end());
+      if (sorted == "CTZ") o.order = rest;
+    }
+    o.slices = count(value("SizeZ"), 1);
+    o.channels = std::max<int64_t>(1, count(value("SizeC"), 1) / std::max<int64_t>(samples, 1));
+    o.frames = count(value("SizeT"), 1);
+    // Each size in its own unit (micrometres by default, as the schema has it), all given in X's.
+    auto unitOf = [&](const char* key) {
+      const std::string u = value(key);
+      return u.empty() ? std::string("\xC2\xB5m") : u;
+    };
+    o.unit = unitOf("PhysicalSizeXUnit");
+    auto inXUnits = [&](const char* size, const char* unit) {
+      const double from = metres(unitOf(unit)), to = metres(o.unit);
+      const double v = positive(value(size));
+      return from > 0.0 && to > 0.0 ? v * (from / to) : v;
+    };
+    o.sizeX = positive(value("PhysicalSizeX"));
+    o.sizeY = inXUnits("PhysicalSizeY", "PhysicalSizeYUnit");
+    o.sizeZ = inXUnits("PhysicalSizeZ", "PhysicalSizeZUnit");
+    if (o.sizeY == 0.0) o.sizeY = o.sizeX;  // square pixels when only X is given
+    return o;
+  }
+  return {};
+}
+
+}  // namespace
+
+TiffPlaneOrder tiffPlaneOrder(const std::string& path, const std::string& description,
+                              int64_t samples) {
+  if (description.compare(0, 7, "ImageJ=") == 0) {
+    TiffPlaneOrder o = imageJOrder(description);
+    o.channels = std::max<int64_t>(1, o.channels / std::max<int64_t>(samples, 1));
+    return o;
+  }
+  // OME-XML, its elements plain or prefixed ("<ome:OME>"): read on to its Pixels element.
+  if (description.find("OME") == std::string::npos ||
+      description.find("Pixels") == std::string::npos)
+    return {};
+  try {
+    return omeOrder(path, description, samples);
+  } catch (const LoadError&) {
+    return {};  // unreadable XML: the pages as a plain stack
+  }
+}
+
+int64_t tiffSliceOfPage(const TiffPlaneOrder& o, int64_t page, int64_t channel, int64_t frame) {
+  int64_t index[3] = {0, 0, 0};  // z, c, t
+  int64_t rest = page;
+  for (size_t n = 0; n < o.order.size(); ++n) {
+    const int slot = o.order[n] == 'Z' ? 0 : o.order[n] == 'C' ? 1 : 2;
+    const int64_t size = slot == 0 ? o.slices : slot == 1 ? o.channels : o.frames;
+    // The slowest dimension, or one of unknown size (a plain stack's Z), takes what is left.
+    if (n + 1 == o.order.size() || size <= 0) {
+      index[slot] = rest;
+      rest = 0;
+    } else {
+      index[slot] = rest % size;
+      rest /= size;
+    }
+  }
+  if (index[1] != channel || index[2] != frame) return -1;
+  return o.slices > 0 && index[0] >= o.slices ? -1 : index[0];
+}
+
+}  // namespace ewa

@@ -1,0 +1,121 @@
+// Multi-dimensional TIFF: OME-TIFF's and ImageJ hyperstacks' channels and time points, in any
+// plane order, with OME's physical pixel sizes.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "io/tiff_planes.h"
+#include "io/volume_loader.h"
+#include "loader_test_files.h"
+#include "medical_test_files.h"
+
+namespace ewa {
+namespace {
+
+using testing::expectLoadError;
+using testing::TempDir;
+
+// 3 slices, 2 channels, 2 time points of 3 x 2 uint16 pixels; the plane (z, c, t) holds
+// 1000 t + 100 c + 10 z + pixel index. `order` (fastest first, "ZCT", "CZT", ...) lays the
+// planes out as pages.
+std::vector<std::vector<uint16_t>> planes(const std::string& order) {
+  std::vector<std::vector<uint16_t>> pages(12, std::vector<uint16_t>(6));
+  const int sizes[3] = {3, 2, 2};  // z, c, t
+  for (int p = 0; p < 12; ++p) {
+    int index[3] = {0, 0, 0}, rest = p;
+    for (char d : order) {
+      const int slot = d == 'Z' ? 0 : d == 'C' ? 1 : 2;
+      index[slot] = rest % sizes[slot];
+      rest /= sizes[slot];
+    }
+    for (int i = 0; i < 6; ++i)
+      pages[size_t(p)][size_t(i)] = uint16_t(1000 * index[2] + 100 * index[1] + 10 * index[0] + i);
+  }
+  return pages;
+}
+
+std::string omeXml(const std::string& order) {
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+         "<OME xmlns=\"http://www.openmicroscopy.org/Schemas/OME/2016-06\">"
+         "<Image ID=\"Image:0\" Name=\"cells\"><Pixels DimensionOrder=\"XY" +
+         order +
+         "\" ID=\"Pixels:0\" PhysicalSizeX=\"0.3\" PhysicalSizeY=\"0.6\" PhysicalSizeZ=\"1.5\" "
+         "SizeC=\"2\" SizeT=\"2\" SizeX=\"3\" SizeY=\"2\" SizeZ=\"3\" Type=\"uint16\">"
+         "<Channel ID=\"Channel:0:0\" SamplesPerPixel=\"1\"/><TiffData/></Pixels></Image></OME>";
+}
+
+void expectPlanes(const Volume& v, int channel, int frame) {
+  ASSERT_EQ(v.dims(), (std::array<int64_t, 3>{3, 2, 3}));
+  for (int z = 0; z < 3; ++z)
+    for (int i = 0; i < 6; ++i)
+      ASSERT_EQ(v.valueAt(6 * z + i), 1000 * frame + 100 * channel + 10 * z + i)
+          << "slice " << z << " pixel " << i;
+}
+
+TEST(TiffPlanes, OmeTiffInEveryOrderOpensAChannelAndATimePoint) {
+  TempDir dir;
+  for (const std::string order : {"ZCT", "CZT", "ZTC", "TZC"}) {
+    const std::string path = dir.path("cells_" + order + ".ome.tif");
+    ASSERT_TRUE(testing::writeTiff(path, 3, 2, planes(order), SAMPLEFORMAT_UINT, 1, omeXml(order)));
+    const Volume first = loadVolume(path);
+    expectPlanes(first, 0, 0);
+    // OME's physical sizes, not the resolution tags (which say 0.25 and 0.5 here).
+    EXPECT_EQ(first.spacing(), glm::dvec3(0.3, 0.6, 1.5)) << order;
+    EXPECT_EQ(first.unit(), "\xC2\xB5m");  // the schema's default
+    EXPECT_EQ(first.frameCount(), 2);
+    for (int c = 0; c < 2; ++c)
+      for (int t = 0; t < 2; ++t) expectPlanes(loadVolume(path, {"", t, c}), c, t);
+    expectLoadError([&] { loadVolume(path, {"", 0, 2}); }, path, "--channel 2 is out of range");
+    expectLoadError(
+        [&] {
+          loadVolume(path, {"", 2, 0});
+        },
+        path, "--frame 2 is out of range (the file has 2 time points)");
+  }
+}
+
+TEST(TiffPlanes, ImageJHyperstackWithTimePoints) {
+  TempDir dir;
+  const std::string path = dir.path("stack.tif");
+  ASSERT_TRUE(testing::writeTiff(
+      path, 3, 2, planes("CZT"), SAMPLEFORMAT_UINT, 1,
+      "ImageJ=1.53t\nimages=12\nchannels=2\nslices=3\nframes=2\nhyperstack=true\nunit=micron\n"
+      "spacing=2.5\n"));
+  const Volume v = loadVolume(path, {"", 1, 1});
+  expectPlanes(v, 1, 1);
+  EXPECT_EQ(v.spacing(), glm::dvec3(0.25, 0.5, 2.5));  // ImageJ: the resolution tags
+  std::string notes;
+  for (const std::string& n : v.notes()) notes += n + "\n";
+  EXPECT_NE(notes.find("2 time points; showing frame 1 (--frame N picks another)"),
+            std::string::npos)
+      << notes;
+}
+
+TEST(TiffPlanes, PlaneOrderOfDescriptions) {
+  // Unreadable or unknown descriptions leave a plain stack: every page a slice.
+  for (const std::string& text : {std::string("<OME><Pixels SizeZ=\"3"), std::string("scan 7"),
+                                  std::string("<OME><Image/></OME>")}) {
+    const TiffPlaneOrder o = tiffPlaneOrder("a.tif", text, 1);
+    EXPECT_EQ(o.kind, "") << text;
+    for (int p = 0; p < 5; ++p) EXPECT_EQ(tiffSliceOfPage(o, p, 0, 0), p);
+  }
+  // A prefixed OME document and its own unit; an RGB plane's samples are not pages.
+  const TiffPlaneOrder rgb = tiffPlaneOrder(
+      "b.tif",
+      "<ome:OME><ome:Pixels DimensionOrder=\"XYZCT\" SizeZ=\"4\" SizeC=\"3\" SizeT=\"1\" "
+      "PhysicalSizeZ=\"0.002\" PhysicalSizeZUnit=\"mm\" PhysicalSizeX=\"2\" "
+      "PhysicalSizeXUnit=\"nm\"/></ome:OME>",
+      3);
+  EXPECT_EQ(rgb.kind, "OME");
+  EXPECT_EQ(rgb.channels, 1);
+  EXPECT_EQ(rgb.slices, 4);
+  EXPECT_EQ(rgb.unit, "nm");
+  EXPECT_DOUBLE_EQ(rgb.sizeX, 2.0);
+  EXPECT_NEAR(rgb.sizeZ, 2000.0, 1e-9);  // 0.002 mm in nanometres
+  EXPECT_EQ(tiffSliceOfPage(rgb, 3, 0, 0), 3);
+  EXPECT_EQ(tiffSliceOfPage(rgb, 4, 0, 0), -1);  // past SizeZ
+}
+
+}  // namespace
+}  // namespace ewa
