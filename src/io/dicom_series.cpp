@@ -164,13 +164,13 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
   return out;
 }
 
-namespace {
-
-bool sameOrientation(const DicomSlice& a, const DicomSlice& b) {
+bool sameDicomOrientation(const DicomSlice& a, const DicomSlice& b) {
   for (size_t i = 0; i < 6; ++i)
     if (std::fabs(a.orientation[i] - b.orientation[i]) > 1e-3) return false;
   return true;
 }
+
+namespace {
 
 // Why `part` is not the series' main part `main`: its size, its orientation, its frames.
 std::string partReason(const DicomSlice& main, const DicomSlice& part) {
@@ -178,7 +178,7 @@ std::string partReason(const DicomSlice& main, const DicomSlice& part) {
   auto add = [&](const std::string& what) { why += (why.empty() ? "" : ", ") + what; };
   if (part.columns != main.columns || part.rows != main.rows)
     add(std::to_string(part.columns) + " x " + std::to_string(part.rows));
-  if (!sameOrientation(part, main)) add("another orientation");
+  if (!sameDicomOrientation(part, main)) add("another orientation");
   if (part.frames > 1) add(main.frames > 1 ? "another multi-frame file" : "a multi-frame file");
   return why.empty() ? std::string("another volume") : why;
 }
@@ -194,7 +194,7 @@ void splitDicomSeries(std::vector<DicomSeries>& all) {
       auto fits = [&](const std::vector<DicomSlice>& part) {
         const DicomSlice& f = part.front();
         return s.frames == 1 && f.frames == 1 && s.columns == f.columns && s.rows == f.rows &&
-               sameOrientation(s, f);
+               sameDicomOrientation(s, f);
       };
       const auto it = std::find_if(parts.begin(), parts.end(), fits);
       const size_t n = size_t(it - parts.begin());  // it is invalid once parts grows
@@ -235,9 +235,8 @@ glm::dvec3 sortDicomSlices(const std::string& path, std::vector<DicomSlice>& sli
       failLoad(s.file,
                "no ImagePositionPatient or ImageOrientationPatient: cannot order the "
                "slices of the series");
-    for (int i = 0; i < 6; ++i)
-      if (std::fabs(s.orientation[size_t(i)] - first.orientation[size_t(i)]) > 1e-3)
-        failLoad(s.file, "ImageOrientationPatient differs from the series' other slices");
+    if (!sameDicomOrientation(s, first))
+      failLoad(s.file, "ImageOrientationPatient differs from the series' other slices");
   }
   const glm::dvec3 row(first.orientation[0], first.orientation[1], first.orientation[2]);
   const glm::dvec3 column(first.orientation[3], first.orientation[4], first.orientation[5]);

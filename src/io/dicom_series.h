@@ -49,6 +49,9 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
 constexpr int kDicomMaxDepth = 8;
 constexpr size_t kDicomMaxEntries = 100000;
 
+// True when the ImageOrientationPatient cosines of `a` and `b` agree within 1e-3 each.
+bool sameDicomOrientation(const DicomSlice& a, const DicomSlice& b);
+
 // Splits each series into the volumes it holds, as a series may mix a localizer's three planes,
 // images of another size or several multi-frame files: single-frame slices of one size and
 // orientation stack together, and each multi-frame file is a volume of its own. A series' largest

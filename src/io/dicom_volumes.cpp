@@ -25,8 +25,8 @@ std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<D
                                           int volume, std::vector<std::string>& notes, int* count) {
   if (count) *count = 1;
   const bool placed =
-      slices.size() > 1 && std::all_of(slices.begin(), slices.end(), [&](auto& s) {
-        return s.hasPosition && s.hasOrientation && s.orientation == slices.front().orientation;
+      slices.size() > 1 && std::all_of(slices.begin(), slices.end(), [&](const DicomSlice& s) {
+        return s.hasPosition && s.hasOrientation && sameDicomOrientation(s, slices.front());
       });
   if (!placed) {
     if (volume != 0) outOfRange(path, volume, 1);
