@@ -67,14 +67,13 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
   config.settings = o.render;
   config.shaderDir = o.shaderDir;
   config.recordCameraPath = o.recordCameraPath;
-  config.opener = [base = o](const std::string& path, int frame) {
+  config.opener = [base = o](const std::string& path, const ewa::LoadOptions& load) {
     ewa::Options fileOptions = base;
     fileOptions.file = path;
     fileOptions.synthetic.clear();
     fileOptions.rawDims.clear();
-    fileOptions.tfFile.clear();      // --tf was for the first volume; others use their sidecar
-    fileOptions.load = {};           // so were --series, --frame and --channel
-    fileOptions.load.frame = frame;  // the window's own: paging through a 4D file's volumes
+    fileOptions.tfFile.clear();  // --tf was for the first volume; others use their sidecar
+    fileOptions.load = load;     // so were --series, --frame and --channel: the window's own
     ewa::Scene s = ewa::loadScene(fileOptions);
     ewa::LoadedVolume loaded;
     loaded.volume = std::make_shared<ewa::Volume>(std::move(s.volume));

@@ -15,6 +15,14 @@ namespace ewa {
 
 enum class ScalarType { UInt8, Int16, UInt16, Float32 };
 
+// One of the volumes a file or folder holds besides others (a DICOM folder's series and the
+// parts split off one): what --series names it, and a line to choose it by.
+struct SeriesChoice {
+  std::string id;     // the --series argument: a SeriesInstanceUID, or UID#2, ...
+  std::string label;  // "120 slices, AX T1 (open)"
+  bool open = false;  // the one this volume is
+};
+
 // Bytes per value of each scalar type. Inline (as valueAt is): classification calls them for
 // every voxel and its neighbours, and out of line the calls cost more than the reads.
 inline size_t scalarSize(ScalarType type) {
@@ -68,6 +76,9 @@ class Volume {
   int frame() const { return frame_; }
   int frameCount() const { return frameCount_; }
   void setFrame(int frame, int count) { frame_ = frame, frameCount_ = count; }
+  // The series the file's folder holds (DICOM), the open one marked; empty when it holds one.
+  const std::vector<SeriesChoice>& seriesChoices() const { return seriesChoices_; }
+  void setSeriesChoices(std::vector<SeriesChoice> choices) { seriesChoices_ = std::move(choices); }
   // Remarks from the loader for --info and the user: frames in the file, conversions, the other
   // series in a folder. Warnings start with "warning: " and are printed when the file opens.
   const std::vector<std::string>& notes() const { return notes_; }
@@ -138,6 +149,7 @@ class Volume {
   bool patientFrame_ = false;
   std::string unit_;
   int frame_ = 0, frameCount_ = 1;
+  std::vector<SeriesChoice> seriesChoices_;
   std::vector<std::string> notes_;
   ScalarType type_ = ScalarType::UInt8;
   std::vector<uint8_t> bytes_;

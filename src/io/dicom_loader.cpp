@@ -93,13 +93,16 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   layout.unit = "mm";  // DICOM's lengths are millimetres
   noteUnreadable(unreadable, layout.notes);
   if (all.size() > 1 || below)  // below: where the series lies, even alone
-    for (const DicomSeries& s : all)
-      layout.notes.push_back(
-          "series " + s.uid + ": " + std::to_string(s.slices.size()) + " slices" +
+    for (const DicomSeries& s : all) {
+      const std::string label =
+          std::to_string(s.slices.size()) + " slices" +
           (s.description.empty() ? "" : ", " + s.description) +
           (s.partOf.empty() ? "" : " (" + s.partOf + ")") +
-          (below ? " in " + quoteText(relativeFolder(s.slices.front().file, dir), 80) : "") +
-          (&s == &chosen ? " (open)" : " (--series UID opens it)"));
+          (below ? " in " + quoteText(relativeFolder(s.slices.front().file, dir), 80) : "");
+      layout.notes.push_back("series " + s.uid + ": " + label +
+                             (&s == &chosen ? " (open)" : " (--series UID opens it)"));
+      layout.seriesChoices.push_back({s.uid, label, &s == &chosen});
+    }
   // One size and orientation, or one multi-frame file (splitDicomSeries).
   std::vector<DicomSlice> slices = chosen.slices;
   // An enhanced multi-frame file: its frames as slices, ordered by their own positions (the

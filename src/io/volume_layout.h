@@ -28,8 +28,9 @@ struct VolumeLayout {
   glm::dmat3 direction{1.0};  // column a: world direction of axis a (any matrix; made a rotation)
   bool patientFrame = false;  // the world axes are LPS patient axes
   std::string unit;           // of spacing and origin ("mm"); "" when the file does not say
-  int frame = 0, frameCount = 1;   // which of the file's volumes (Volume::frame)
-  std::vector<std::string> notes;  // for Volume::notes
+  int frame = 0, frameCount = 1;            // which of the file's volumes (Volume::frame)
+  std::vector<SeriesChoice> seriesChoices;  // Volume::seriesChoices
+  std::vector<std::string> notes;           // for Volume::notes
 };
 
 // Bytes of data the dims describe, after checking that every size is positive and that the

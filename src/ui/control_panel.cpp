@@ -3,6 +3,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -44,6 +45,7 @@ void ControlPanel::setVolume(std::string volumeName, const Volume& volume) {
   patientFrame_ = volume.patientFrame();
   frame_ = volume.frame();
   frameCount_ = volume.frameCount();
+  series_ = volume.seriesChoices();
   if (volumeName_.empty()) volumeName_ = "(unnamed volume)";
 }
 
@@ -62,6 +64,7 @@ PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& le
       ImGui::SameLine();
       ImGui::Text("frame %d of %d (Page Up, Page Down)", frame_, frameCount_);
     }
+    if (series_.size() > 1) edits.series = drawSeries();
     ImGui::Separator();
     edits.settings = drawSettings(settings);
     ImGui::Separator();
@@ -248,6 +251,24 @@ bool ControlPanel::drawCamera(Camera& camera) {
   changed |= sliderDouble("view angle", &camera.viewAngleDeg, 5.0, 120.0, "%.1f deg");
   ImGui::PopItemWidth();
   return changed;
+}
+
+// The folder's series as a list: choosing another opens it (as --series does).
+std::optional<std::string> ControlPanel::drawSeries() {
+  std::optional<std::string> chosen;
+  const auto open = std::find_if(series_.begin(), series_.end(), [](auto& c) { return c.open; });
+  ImGui::SetNextItemWidth(320.0f);
+  if (ImGui::BeginCombo("series", open == series_.end() ? "" : open->label.c_str())) {
+    for (size_t i = 0; i < series_.size(); ++i) {
+      ImGui::PushID(int(i));  // labels may repeat
+      if (ImGui::Selectable(series_[i].label.c_str(), series_[i].open) && !series_[i].open)
+        chosen = series_[i].id;
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("--series %s", series_[i].id.c_str());
+      ImGui::PopID();
+    }
+    ImGui::EndCombo();
+  }
+  return chosen;
 }
 
 std::optional<AxisView> ControlPanel::drawAxisViews() {

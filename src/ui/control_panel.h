@@ -4,6 +4,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/camera.h"
 #include "core/camera_views.h"
@@ -33,13 +34,14 @@ void drawRefinementOverlay(double progress);
 
 // What the user changed this frame.
 struct PanelEdits {
-  bool settings = false;             // the RenderSettings were edited
-  bool camera = false;               // the Camera was edited (projection, view angle)
-  bool resetCamera = false;          // "Reset camera" was pressed
-  std::optional<AxisView> axisView;  // a view along an axis was asked for
-  bool levelOfDetail = false;        // the level-of-detail checkbox changed
-  bool axes = false;                 // the orientation axes checkbox changed
-  int frameStep = 0;                 // -1 or +1: the file's previous or next volume
+  bool settings = false;              // the RenderSettings were edited
+  bool camera = false;                // the Camera was edited (projection, view angle)
+  bool resetCamera = false;           // "Reset camera" was pressed
+  std::optional<AxisView> axisView;   // a view along an axis was asked for
+  bool levelOfDetail = false;         // the level-of-detail checkbox changed
+  bool axes = false;                  // the orientation axes checkbox changed
+  int frameStep = 0;                  // -1 or +1: the file's previous or next volume
+  std::optional<std::string> series;  // another series of the folder was chosen: its id
 };
 
 class ControlPanel {
@@ -60,11 +62,13 @@ class ControlPanel {
   bool drawShearWarp(ShearWarpSettings& settings);
   bool drawCamera(Camera& camera);
   std::optional<AxisView> drawAxisViews();
+  std::optional<std::string> drawSeries();
   void drawStats(const FrameStats& stats);
 
   std::string volumeName_;
-  std::string volumeText_;          // "64 x 64 x 64 uint8, spacing 1 1 1"
-  int frame_ = 0, frameCount_ = 1;  // which of the file's volumes
+  std::string volumeText_;            // "64 x 64 x 64 uint8, spacing 1 1 1"
+  int frame_ = 0, frameCount_ = 1;    // which of the file's volumes
+  std::vector<SeriesChoice> series_;  // the folder's series (DICOM), to choose from
   std::array<double, 2> valueRange_{0.0, 1.0};
   bool patientFrame_ = false;  // label the axis views anatomically (LPS)
 };

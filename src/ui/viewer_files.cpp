@@ -11,6 +11,17 @@
 
 namespace ewa {
 
+namespace {
+
+// The series the open volume is (so that paging keeps to it), or "" for the file's default.
+std::string openSeriesId(const Volume& v) {
+  for (const SeriesChoice& c : v.seriesChoices())
+    if (c.open) return c.id;
+  return {};
+}
+
+}  // namespace
+
 void ViewerWindow::info(const std::string& text) {
   messages_.post(StatusMessages::Kind::Info, text, now());
   std::cerr << "ewaview: " << text << "\n";
@@ -56,21 +67,31 @@ void ViewerWindow::adopt(LoadedVolume loaded, bool newCamera) {
   buildPending_ = true;  // one frame says so before the first (slow) render classifies
 }
 
-void ViewerWindow::startLoad(const std::string& path, int frame, bool keepView) {
+void ViewerWindow::startLoad(const std::string& path, const LoadOptions& load, bool keepView) {
   if (loadJob_.running()) {
     error("still loading " + loadJob_.path() + "; try again when it is done");
     return;
   }
-  std::cerr << "ewaview: loading " << path << (frame > 0 ? " frame " + std::to_string(frame) : "")
-            << "\n";
+  std::cerr << "ewaview: loading " << path << (load.series.empty() ? "" : " series " + load.series)
+            << (load.frame > 0 ? " frame " + std::to_string(load.frame) : "") << "\n";
   loadKeepsView_ = keepView;
-  loadJob_.start(path, frame, config_.opener);
+  loadJob_.start(path, load, config_.opener);
 }
 
 void ViewerWindow::stepFrame(int step) {
   const int count = current_.volume->frameCount();
   if (count <= 1 || current_.path.empty()) return;
-  startLoad(current_.path, ((current_.volume->frame() + step) % count + count) % count, true);
+  LoadOptions load;
+  load.series = openSeriesId(*current_.volume);
+  load.frame = ((current_.volume->frame() + step) % count + count) % count;
+  startLoad(current_.path, load, true);
+}
+
+void ViewerWindow::openSeries(const std::string& id) {
+  if (current_.path.empty() || id == openSeriesId(*current_.volume)) return;
+  LoadOptions load;
+  load.series = id;
+  startLoad(current_.path, load);
 }
 
 void ViewerWindow::pollLoad() {

@@ -23,6 +23,7 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   const PanelEdits edits = panel_.draw(settings_, camera, levelOfDetail_, axes_, frameStats_);
   if (edits.axes) axesSwitched();
   if (edits.frameStep != 0) stepFrame(edits.frameStep);
+  if (edits.series) openSeries(*edits.series);
   if (edits.camera) controller_.setCamera(camera);
   if (edits.resetCamera) controller_.reset();
   if (edits.axisView) showAxisView(*edits.axisView, fb);

@@ -83,9 +83,11 @@ class ViewerWindow {
   void adopt(LoadedVolume loaded, bool newCamera);
   // `keepView`: another volume of the same file (paging through frames): the camera, crop and
   // transfer function stay.
-  void startLoad(const std::string& path, int frame = 0, bool keepView = false);
+  void startLoad(const std::string& path, const LoadOptions& load = {}, bool keepView = false);
   // The file's next (+1) or previous (-1) volume, round the end: 4D NIfTI, DICOM volumes.
   void stepFrame(int step);
+  // Another series of the open DICOM folder (Volume::seriesChoices), as --series opens it.
+  void openSeries(const std::string& id);
   void pollLoad();
   LodRenderer::Factory rendererFactory();
   void switchRendererIfAsked();

@@ -3,11 +3,11 @@
 
 namespace ewa {
 
-void VolumeLoadJob::start(const std::string& path, int frame, VolumeOpener opener) {
+void VolumeLoadJob::start(const std::string& path, const LoadOptions& load, VolumeOpener opener) {
   path_ = path;
   started_ = std::chrono::steady_clock::now();
-  future_ = std::async(std::launch::async, [path, frame, opener = std::move(opener)] {
-    LoadedVolume loaded = opener(path, frame);
+  future_ = std::async(std::launch::async, [path, load, opener = std::move(opener)] {
+    LoadedVolume loaded = opener(path, load);
     if (loaded.coarse.levels.empty() && loaded.volume)
       loaded.coarse = buildLodVolumes(*loaded.volume);
     return loaded;

@@ -11,6 +11,7 @@
 
 #include "core/transfer_function.h"
 #include "core/volume.h"
+#include "io/volume_loader.h"
 #include "render/lod_renderer.h"
 
 namespace ewa {
@@ -24,14 +25,14 @@ struct LoadedVolume {
   std::string path;  // file it came from; empty for synthetic volumes
 };
 
-// Reads volume `frame` of `path` (--frame: 0 for a file of one volume) and picks its transfer
+// Reads `path` (with `load`'s series and frame: --series, --frame) and picks its transfer
 // function; throws std::exception("path: problem").
-using VolumeOpener = std::function<LoadedVolume(const std::string& path, int frame)>;
+using VolumeOpener = std::function<LoadedVolume(const std::string& path, const LoadOptions& load)>;
 
 class VolumeLoadJob {
  public:
   // Starts loading `path` (opener, then the coarse levels) on a worker thread.
-  void start(const std::string& path, int frame, VolumeOpener opener);
+  void start(const std::string& path, const LoadOptions& load, VolumeOpener opener);
   bool running() const { return future_.valid(); }
   const std::string& path() const { return path_; }
   double elapsedSeconds() const;

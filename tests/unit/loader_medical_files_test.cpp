@@ -469,6 +469,16 @@ TEST(DicomFiles, SeriesMixingSizesOrientationsAndMultiFrameFilesAreSplit) {
             ": another orientation) (--series UID opens it)",
         "series " + uid + "#3: 1 slices (part of " + uid + ": 5 x 6) (--series UID opens it)"})
     EXPECT_NE(notes.find(line + "\n"), std::string::npos) << line << "\n" << notes;
+  // The same as choices for the window's list: the --series argument, a label, the open one.
+  const std::vector<SeriesChoice>& choices = stack.seriesChoices();
+  ASSERT_EQ(choices.size(), 3u);
+  EXPECT_EQ(choices[0].id, uid);
+  EXPECT_EQ(choices[0].label, "3 slices");
+  EXPECT_TRUE(choices[0].open);
+  EXPECT_EQ(choices[2].id, uid + "#3");
+  EXPECT_EQ(choices[2].label, "1 slices (part of " + uid + ": 5 x 6)");
+  EXPECT_FALSE(choices[2].open);
+  EXPECT_TRUE(loadVolume(mixed + "/big.dcm").seriesChoices()[2].open);
   // The file named opens its own part; --series opens any.
   const Volume one = loadVolume(mixed + "/big.dcm");
   EXPECT_EQ(one.dims(), (std::array<int64_t, 3>{5, 6, 1}));
