@@ -56,6 +56,9 @@ class ControlPanel {
                   const FrameStats& stats);
   // A new volume was opened.
   void setVolume(std::string volumeName, const Volume& volume);
+  // EWAVIEW_PRINT_LAYOUT: the series list's place and its entries' on stdout, for the window
+  // test ("series-list X Y W H", "series-entry I X Y W H"), each once while it stays put.
+  void setPrintLayout(bool on) { printLayout_ = on; }
 
  private:
   bool drawSettings(RenderSettings& settings);
@@ -69,6 +72,8 @@ class ControlPanel {
   std::string volumeText_;            // "64 x 64 x 64 uint8, spacing 1 1 1"
   int frame_ = 0, frameCount_ = 1;    // which of the file's volumes
   std::vector<SeriesChoice> series_;  // the folder's series (DICOM), to choose from
+  bool printLayout_ = false;
+  std::string printed_;  // the last layout line printed
   std::array<double, 2> valueRange_{0.0, 1.0};
   bool patientFrame_ = false;  // label the axis views anatomically (LPS)
 };

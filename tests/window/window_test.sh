@@ -9,6 +9,7 @@
 set -uo pipefail
 binary="$(realpath "$1")"
 out="$2"
+fixture="${3:+$(realpath "$3")}"  # writes a DICOM folder of two series (ewa_window_fixture)
 here="$(cd "$(dirname "$0")" && pwd)"
 skip() {
   case "${CI:-}" in
@@ -302,4 +303,36 @@ back=$(differ "$out/9_frame0.png" "$out/11_frame0_again.png" "$frames_crop")
 log "frames paged: coverage $f0 -> $f1 -> back ($back px differ)"
 quit_window "third window"
 
-echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1"
+# Series: a DICOM folder of two (a ball of 30 slices, a box of 20). The panel lists them;
+# choosing the second in the list opens it (a box covers more of the picture than the ball).
+series_note="series not checked (no fixture writer given)"
+if [ -n "$fixture" ]; then
+  log "series: starting a fourth window on a DICOM folder of two series"
+  "$fixture" "$work/study" 2>/dev/null || fail "the fixture writer could not write the folder"
+  : >"$work/stdout"; : >"$work/stderr"
+  mkdir -p "$work/config4"
+  (cd "$work" && EWAVIEW_CONFIG_DIR="$work/config4" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" study \
+    --resolution "$width,$height" >stdout 2>stderr) &
+  pid=$!
+  poll "the ewaview window" find_window
+  have_list() { grep -q '^series-list ' "$work/stdout"; }
+  poll "the series list's layout line" have_list
+  settled "$out/12_series_ball.png" "$black" "$frames_crop"
+  s0=$(coverage "$out/12_series_ball.png" "$frames_crop")
+  read -r _ lx ly lw lh < <(grep '^series-list ' "$work/stdout" | tail -1)
+  xdotool mousemove --window "$wid" $((lx + lw / 3)) $((ly + lh / 2)); sleep 0.3; xdotool click 1
+  have_entry() { grep -q '^series-entry 1 ' "$work/stdout"; }
+  poll "the list's second entry" have_entry
+  read -r _ _ ex ey ew eh < <(grep '^series-entry 1 ' "$work/stdout" | tail -1)
+  xdotool mousemove --window "$wid" $((ex + ew / 3)) $((ey + eh / 2)); sleep 0.3; xdotool click 1
+  opened_box() { grep -q "^ewaview: loading .*study series 1.2.826.0.1.3680043.2.1125.9" "$work/stderr"; }
+  poll "the second series to load" opened_box
+  settled "$out/13_series_box.png" "$out/12_series_ball.png" "$frames_crop"
+  s1=$(coverage "$out/13_series_box.png" "$frames_crop")
+  [ "$s0" != "$s1" ] || fail "choosing the second series did not change the picture ($s0)"
+  series_note="series coverage $s0 -> $s1"
+  log "$series_note"
+  quit_window "fourth window"
+fi
+
+echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; $series_note"
