@@ -90,6 +90,10 @@ std::string volumeInfoJson(const Volume& v) {
   j["unit"] = v.unit().empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(v.unit());
   j["frame"] = v.frame();  // of frames: the file's volumes (--frame)
   j["frames"] = v.frameCount();
+  // A DICOM folder's series (--series ID opens one); empty for a folder of one, other formats.
+  j["series"] = nlohmann::ordered_json::array();
+  for (const SeriesChoice& c : v.seriesChoices())
+    j["series"].push_back({{"id", c.id}, {"label", c.label}, {"open", c.open}});
   j["notes"] = v.notes();
   return j.dump();
 }

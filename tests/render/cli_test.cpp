@@ -7,6 +7,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "app/scene.h"
 #include "ci_skip.h"
 #include "cli_run.h"
 #include "image_compare.h"
@@ -91,7 +92,7 @@ TEST(Cli, InfoPrintsOneJsonObject) {
       r.out,
       "{\"dims\":[400,400,1],\"spacing\":[1.0,1.0,1.0],\"type\":\"uint8\",\"range\":[1.0,2.0],"
       "\"origin\":[0.0,0.0,0.0],\"direction\":[[1.0,0.0,0.0],[0.0,1.0,0.0],[0.0,0.0,1.0]],"
-      "\"space\":\"none\",\"unit\":null,\"frame\":0,\"frames\":1,\"notes\":[]}\n");
+      "\"space\":\"none\",\"unit\":null,\"frame\":0,\"frames\":1,\"series\":[],\"notes\":[]}\n");
   const std::string tooth = std::string(EWA_SHARED_DATA) + "/tooth/tooth.nrrd";
   if (!std::filesystem::exists(tooth)) GTEST_SKIP() << "shared data absent: " << tooth;
   r = ewaview(tooth + " --info");
@@ -114,6 +115,20 @@ TEST(Cli, InfoPrintsOneJsonObject) {
   EXPECT_NE(r.err.find("dicom-pet: no series '9.9' here (series: 1.3.6.1.4.1.14519"),
             std::string::npos)
       << r.err;
+}
+
+// --info's series list: each series' id, label and whether it is the one open, in order.
+TEST(Cli, InfoListsTheSeriesOfAFolder) {
+  Volume v({2, 2, 2}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8,
+           std::vector<uint8_t>(8, 0));
+  v.setSeriesChoices(
+      {{"1.2.3", "30 slices, AX", true}, {"1.2.3#2", "1 slices (part of 1.2.3: 5 x 6)", false}});
+  const std::string json = volumeInfoJson(v);
+  EXPECT_NE(json.find("\"series\":[{\"id\":\"1.2.3\",\"label\":\"30 slices, AX\",\"open\":true},"
+                      "{\"id\":\"1.2.3#2\",\"label\":\"1 slices (part of 1.2.3: 5 x 6)\","
+                      "\"open\":false}],\"notes\""),
+            std::string::npos)
+      << json;
 }
 
 TEST(Cli, HeadlessOutputOnBothBackendsAndTheDefaultAsset) {
