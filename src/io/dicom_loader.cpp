@@ -128,7 +128,10 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
     }
   } else {
     slices = selectDicomVolume(path, std::move(slices), frame, layout.notes, &layout.frameCount);
-    step = sortDicomSlices(path, slices, layout.notes);
+    if (const auto cine = stackOnePosition(slices, layout.notes))
+      step = *cine;
+    else
+      step = sortDicomSlices(path, slices, layout.notes);
   }
   layout.frame = frame;  // in range: selectDicomVolume checked it
   const DicomSlice& base = slices.front();

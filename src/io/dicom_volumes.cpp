@@ -77,4 +77,24 @@ std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<D
   return picked;
 }
 
+std::optional<glm::dvec3> stackOnePosition(std::vector<DicomSlice>& slices,
+                                           std::vector<std::string>& notes) {
+  if (slices.size() < 2) return std::nullopt;
+  for (const DicomSlice& s : slices)
+    if (!s.hasPosition || !s.hasOrientation || s.frames != 1 ||
+        !sameDicomOrientation(s, slices.front()) ||
+        glm::length(s.position - slices.front().position) > kSamePosition)
+      return std::nullopt;
+  std::stable_sort(slices.begin(), slices.end(), [](const DicomSlice& a, const DicomSlice& b) {
+    return a.instance != b.instance ? a.instance < b.instance : a.file < b.file;
+  });
+  notes.push_back(std::to_string(slices.size()) +
+                  " images at one position (a cine or a time series): stacked in "
+                  "InstanceNumber order, 1 apart");
+  const auto& o = slices.front().orientation;
+  const glm::dvec3 normal = glm::cross(glm::dvec3(o[0], o[1], o[2]), glm::dvec3(o[3], o[4], o[5]));
+  const double length = glm::length(normal);
+  return length > 1e-6 ? normal / length : glm::dvec3(0, 0, 1);
+}
+
 }  // namespace ewa

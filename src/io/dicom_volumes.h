@@ -1,6 +1,8 @@
 // DICOM series holding several volumes at the same positions: picking one (--frame).
 #pragma once
 
+#include <glm/vec3.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,5 +22,12 @@ namespace ewa {
 std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<DicomSlice> slices,
                                           int volume, std::vector<std::string>& notes,
                                           int* count = nullptr);
+
+// A cine (or a time series of one slice): single-frame images that all lie at one position, at
+// least two of them. Stacks them in InstanceNumber order (then file name), adds a note saying
+// so and returns the step between them: 1 along the slice normal. Returns nullopt, leaving
+// `slices` alone, for anything else.
+std::optional<glm::dvec3> stackOnePosition(std::vector<DicomSlice>& slices,
+                                           std::vector<std::string>& notes);
 
 }  // namespace ewa

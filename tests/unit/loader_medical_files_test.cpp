@@ -573,6 +573,35 @@ TEST(DicomFiles, SeveralVolumesAtTheSamePositionsOpenOneByOne) {
       << allNotes(second);
 }
 
+// A cine: four images at one position, coronal, InstanceNumbers against the file names. They
+// stack in InstanceNumber order, 1 apart along the slice normal, with a note.
+TEST(DicomFiles, ImagesAtOnePositionStackAsACine) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path("cine"));
+  testing::DicomSliceSpec spec;
+  spec.orientation = {1, 0, 0, 0, 0, -1};
+  spec.position = {5.0, 7.0, 9.0};
+  for (int t = 0; t < 4; ++t) {
+    spec.values.assign(spec.rows * spec.columns, int16_t(10 * t));
+    const std::string file = dir.path("cine/im" + std::to_string(3 - t) + ".dcm");
+    ASSERT_TRUE(testing::writeDicomSlice(file, spec));
+    ASSERT_TRUE(testing::editDicom(file, [&](gdcm::DataSet& ds) {
+      gdcm::Attribute<0x0020, 0x0013> instance;
+      instance.SetValue(t + 1);
+      ds.Replace(instance.GetAsDataElement());
+    }));
+  }
+  const Volume v = loadVolume(dir.path("cine"));
+  ASSERT_EQ(v.dims()[2], 4);
+  for (int t = 0; t < 4; ++t) EXPECT_EQ(v.value(1, 1, t), 10 * t) << t;
+  EXPECT_DOUBLE_EQ(v.spacing().z, 1.0);
+  EXPECT_EQ(v.direction()[2], glm::dvec3(0, 1, 0));  // row x column: (1,0,0) x (0,0,-1)
+  EXPECT_NE(allNotes(v).find("4 images at one position (a cine or a time series): stacked in "
+                             "InstanceNumber order, 1 apart"),
+            std::string::npos)
+      << allNotes(v);
+}
+
 TEST(DicomFiles, BadSeriesFailWithOneLine) {
   TempDir dir;
   std::filesystem::create_directories(dir.path("empty"));
