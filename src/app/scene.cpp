@@ -90,6 +90,8 @@ std::string volumeInfoJson(const Volume& v) {
   j["unit"] = v.unit().empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(v.unit());
   j["frame"] = v.frame();  // of frames: the file's volumes (--frame)
   j["frames"] = v.frameCount();
+  j["channel"] = v.channel();  // of channels (--channel)
+  j["channels"] = v.channelCount();
   // A DICOM folder's series (--series ID opens one); empty for a folder of one, other formats.
   j["series"] = nlohmann::ordered_json::array();
   for (const SeriesChoice& c : v.seriesChoices())

@@ -76,6 +76,11 @@ class Volume {
   int frame() const { return frame_; }
   int frameCount() const { return frameCount_; }
   void setFrame(int frame, int count) { frame_ = frame, frameCount_ = count; }
+  // Which channel of a multi-channel file this is (RGB DICOM, TIFF samples or an OME-TIFF's or
+  // ImageJ hyperstack's channels, a 4D NRRD's colour axis: --channel): 0 of 1 for one channel.
+  int channel() const { return channel_; }
+  int channelCount() const { return channelCount_; }
+  void setChannel(int channel, int count) { channel_ = channel, channelCount_ = count; }
   // The series the file's folder holds (DICOM), the open one marked; empty when it holds one.
   const std::vector<SeriesChoice>& seriesChoices() const { return seriesChoices_; }
   void setSeriesChoices(std::vector<SeriesChoice> choices) { seriesChoices_ = std::move(choices); }
@@ -149,6 +154,7 @@ class Volume {
   bool patientFrame_ = false;
   std::string unit_;
   int frame_ = 0, frameCount_ = 1;
+  int channel_ = 0, channelCount_ = 1;
   std::vector<SeriesChoice> seriesChoices_;
   std::vector<std::string> notes_;
   ScalarType type_ = ScalarType::UInt8;

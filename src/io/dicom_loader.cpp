@@ -143,6 +143,10 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
                                 : std::string("RGB: ")) +
                            std::to_string(base.samplesPerPixel) + " channels; showing channel " +
                            std::to_string(channel) + " (--channel N picks another)");
+  if (base.samplesPerPixel > 1) {
+    layout.channel = channel;  // checked against the samples when the pixels are read
+    layout.channelCount = int(std::min<int64_t>(base.samplesPerPixel, 1 << 20));
+  }
   layout.spacing = {base.columnSpacing, base.rowSpacing, 1.0};
   const glm::dvec3 row(base.orientation[0], base.orientation[1], base.orientation[2]);
   const glm::dvec3 column(base.orientation[3], base.orientation[4], base.orientation[5]);

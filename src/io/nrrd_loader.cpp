@@ -100,6 +100,8 @@ int64_t pickVolume(const std::string& path, const NrrdHeader& h, int frame, int 
   const std::string kind = e.kind.empty() ? std::string() : " (kind " + e.kind + ")";
   if (e.channels) {
     checkChannel(path, channel, e.size);
+    layout.channel = channel;
+    layout.channelCount = int(std::min<int64_t>(e.size, std::numeric_limits<int>::max()));
     layout.notes.push_back("4D NRRD of " + std::to_string(e.size) + " channels" + kind +
                            "; showing channel " + std::to_string(channel) +
                            " (--channel N picks another)");

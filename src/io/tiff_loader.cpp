@@ -284,6 +284,8 @@ Volume loadTiff(const std::string& path, int channel, int frame) {
         // Channels are the samples of a pixel (RGB), or pages (an ImageJ hyperstack, OME-TIFF).
         const int64_t channels = f.samples > 1 ? f.samples : order.channels;
         checkChannel(path, channel, channels);
+        layout.channel = channel;
+        layout.channelCount = int(channels);
         pageChannel = f.samples > 1 ? 0 : channel;
         if (frame < 0 || frame >= order.frames)
           failLoad(path, "--frame " + std::to_string(frame) + " is out of range (the file has " +

@@ -168,6 +168,7 @@ Volume makeVolume(const std::string& path, const VolumeLayout& layout, std::vect
     v.setDirection(grid.direction, layout.patientFrame);
     v.setUnit(layout.unit);
     v.setFrame(layout.frame, layout.frameCount);
+    v.setChannel(layout.channel, layout.channelCount);
     v.setSeriesChoices(layout.seriesChoices);
     for (const std::string& note : layout.notes) v.addNote(note);
     for (std::string& note : notes) v.addNote(std::move(note));

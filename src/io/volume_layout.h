@@ -29,6 +29,7 @@ struct VolumeLayout {
   bool patientFrame = false;  // the world axes are LPS patient axes
   std::string unit;           // of spacing and origin ("mm"); "" when the file does not say
   int frame = 0, frameCount = 1;            // which of the file's volumes (Volume::frame)
+  int channel = 0, channelCount = 1;        // which of its channels (Volume::channel)
   std::vector<SeriesChoice> seriesChoices;  // Volume::seriesChoices
   std::vector<std::string> notes;           // for Volume::notes
 };

@@ -45,6 +45,8 @@ void ControlPanel::setVolume(std::string volumeName, const Volume& volume) {
   patientFrame_ = volume.patientFrame();
   frame_ = volume.frame();
   frameCount_ = volume.frameCount();
+  channel_ = volume.channel();
+  channelCount_ = volume.channelCount();
   series_ = volume.seriesChoices();
   printed_.clear();
   if (volumeName_.empty()) volumeName_ = "(unnamed volume)";
@@ -64,6 +66,13 @@ PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& le
       if (ImGui::ArrowButton("##next frame", ImGuiDir_Right)) edits.frameStep = 1;
       ImGui::SameLine();
       ImGui::Text("frame %d of %d (Page Up, Page Down)", frame_, frameCount_);
+    }
+    if (channelCount_ > 1) {  // RGB, a microscope's channels: one at a time
+      if (ImGui::ArrowButton("##previous channel", ImGuiDir_Left)) edits.channelStep = -1;
+      ImGui::SameLine();
+      if (ImGui::ArrowButton("##next channel", ImGuiDir_Right)) edits.channelStep = 1;
+      ImGui::SameLine();
+      ImGui::Text("channel %d of %d (C, Shift+C)", channel_, channelCount_);
     }
     if (series_.size() > 1) edits.series = drawSeries();
     ImGui::Separator();

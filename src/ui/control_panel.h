@@ -41,6 +41,7 @@ struct PanelEdits {
   bool levelOfDetail = false;         // the level-of-detail checkbox changed
   bool axes = false;                  // the orientation axes checkbox changed
   int frameStep = 0;                  // -1 or +1: the file's previous or next volume
+  int channelStep = 0;                // -1 or +1: its previous or next channel
   std::optional<std::string> series;  // another series of the folder was chosen: its id
 };
 
@@ -69,9 +70,10 @@ class ControlPanel {
   void drawStats(const FrameStats& stats);
 
   std::string volumeName_;
-  std::string volumeText_;            // "64 x 64 x 64 uint8, spacing 1 1 1"
-  int frame_ = 0, frameCount_ = 1;    // which of the file's volumes
-  std::vector<SeriesChoice> series_;  // the folder's series (DICOM), to choose from
+  std::string volumeText_;              // "64 x 64 x 64 uint8, spacing 1 1 1"
+  int frame_ = 0, frameCount_ = 1;      // which of the file's volumes
+  int channel_ = 0, channelCount_ = 1;  // which of its channels
+  std::vector<SeriesChoice> series_;    // the folder's series (DICOM), to choose from
   bool printLayout_ = false;
   std::string printed_;  // the last layout line printed
   std::array<double, 2> valueRange_{0.0, 1.0};

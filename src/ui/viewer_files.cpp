@@ -73,7 +73,8 @@ void ViewerWindow::startLoad(const std::string& path, const LoadOptions& load, b
     return;
   }
   std::cerr << "ewaview: loading " << path << (load.series.empty() ? "" : " series " + load.series)
-            << (load.frame > 0 ? " frame " + std::to_string(load.frame) : "") << "\n";
+            << (load.frame > 0 ? " frame " + std::to_string(load.frame) : "")
+            << (load.channel > 0 ? " channel " + std::to_string(load.channel) : "") << "\n";
   loadKeepsView_ = keepView;
   loadJob_.start(path, load, config_.opener);
 }
@@ -84,6 +85,17 @@ void ViewerWindow::stepFrame(int step) {
   LoadOptions load;
   load.series = openSeriesId(*current_.volume);
   load.frame = ((current_.volume->frame() + step) % count + count) % count;
+  load.channel = current_.volume->channel();
+  startLoad(current_.path, load, true);
+}
+
+void ViewerWindow::stepChannel(int step) {
+  const int count = current_.volume->channelCount();
+  if (count <= 1 || current_.path.empty()) return;
+  LoadOptions load;
+  load.series = openSeriesId(*current_.volume);
+  load.frame = current_.volume->frame();
+  load.channel = ((current_.volume->channel() + step) % count + count) % count;
   startLoad(current_.path, load, true);
 }
 
@@ -110,7 +122,10 @@ void ViewerWindow::pollLoad() {
                         v.spacing() == current_.volume->spacing();
   const bool keepView = loadKeepsView_ && sameGrid;  // else a new volume after all
   if (keepView) {
-    info("frame " + std::to_string(v.frame()) + " of " + std::to_string(v.frameCount()) + text);
+    info((v.channelCount() > 1 ? "channel " + std::to_string(v.channel()) + " of " +
+                                     std::to_string(v.channelCount()) + ", "
+                               : std::string()) +
+         "frame " + std::to_string(v.frame()) + " of " + std::to_string(v.frameCount()) + text);
     loaded->tf = current_.tf;  // the one being edited, not the file's again
   } else {
     info("opened " + loaded->name + text);

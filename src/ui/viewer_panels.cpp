@@ -23,6 +23,7 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   const PanelEdits edits = panel_.draw(settings_, camera, levelOfDetail_, axes_, frameStats_);
   if (edits.axes) axesSwitched();
   if (edits.frameStep != 0) stepFrame(edits.frameStep);
+  if (edits.channelStep != 0) stepChannel(edits.channelStep);
   if (edits.series) openSeries(*edits.series);
   if (edits.camera) controller_.setCamera(camera);
   if (edits.resetCamera) controller_.reset();
@@ -178,6 +179,10 @@ void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
       case KeyCommand::NextFrame:
       case KeyCommand::PreviousFrame:
         stepFrame(c == KeyCommand::NextFrame ? 1 : -1);
+        break;
+      case KeyCommand::NextChannel:
+      case KeyCommand::PreviousChannel:
+        stepChannel(c == KeyCommand::NextChannel ? 1 : -1);
         break;
       default: {
         const int index = int(c) - int(KeyCommand::ViewPlusX);

@@ -86,6 +86,8 @@ class ViewerWindow {
   void startLoad(const std::string& path, const LoadOptions& load = {}, bool keepView = false);
   // The file's next (+1) or previous (-1) volume, round the end: 4D NIfTI, DICOM volumes.
   void stepFrame(int step);
+  // The file's next (+1) or previous (-1) channel, round the end: RGB, OME-TIFF channels.
+  void stepChannel(int step);
   // Another series of the open DICOM folder (Volume::seriesChoices), as --series opens it.
   void openSeries(const std::string& id);
   void pollLoad();

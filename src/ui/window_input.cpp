@@ -145,6 +145,10 @@ void WindowInput::onKey(GLFWwindow* window, int key, int scancode, int action, i
     case GLFW_KEY_PAGE_UP:
       self.commands_.push_back(KeyCommand::PreviousFrame);
       break;
+    case GLFW_KEY_C:
+      self.commands_.push_back((mods & GLFW_MOD_SHIFT) ? KeyCommand::PreviousChannel
+                                                       : KeyCommand::NextChannel);
+      break;
     case GLFW_KEY_X:
       self.commands_.push_back(KeyCommand::ToggleAxes);
       break;

@@ -22,7 +22,9 @@ enum class KeyCommand {
   MarkPoint,
   ToggleAxes,
   NextFrame,  // Page Down: the file's next volume (4D NIfTI, DICOM volumes at one place)
-  PreviousFrame
+  PreviousFrame,
+  NextChannel,  // C: the file's next channel (RGB, OME-TIFF channels); Shift+C the previous
+  PreviousChannel
 };
 
 class CameraController;

@@ -92,7 +92,7 @@ TEST(Cli, InfoPrintsOneJsonObject) {
       r.out,
       "{\"dims\":[400,400,1],\"spacing\":[1.0,1.0,1.0],\"type\":\"uint8\",\"range\":[1.0,2.0],"
       "\"origin\":[0.0,0.0,0.0],\"direction\":[[1.0,0.0,0.0],[0.0,1.0,0.0],[0.0,0.0,1.0]],"
-      "\"space\":\"none\",\"unit\":null,\"frame\":0,\"frames\":1,\"series\":[],\"notes\":[]}\n");
+      "\"space\":\"none\",\"unit\":null,\"frame\":0,\"frames\":1,\"channel\":0,\"channels\":1,\"series\":[],\"notes\":[]}\n");
   const std::string tooth = std::string(EWA_SHARED_DATA) + "/tooth/tooth.nrrd";
   if (!std::filesystem::exists(tooth)) GTEST_SKIP() << "shared data absent: " << tooth;
   r = ewaview(tooth + " --info");

@@ -65,6 +65,8 @@ TEST(DicomColour, EachChannelOfAnRgbSeriesByPixelAndByPlane) {
       SCOPED_TRACE(planar ? "by plane" : "by pixel");
       const Volume v = loadChannel(folder, c);
       expectChannel(v, c);
+      EXPECT_EQ(v.channel(), c);  // the window pages through them
+      EXPECT_EQ(v.channelCount(), 3);
       EXPECT_NE(allNotes(v).find("RGB: 3 channels; showing channel " + std::to_string(c) +
                                  " (--channel N picks another)"),
                 std::string::npos)

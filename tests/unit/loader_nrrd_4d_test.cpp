@@ -81,6 +81,8 @@ TEST(Nrrd4d, ColourFirstOpensOneChannel) {
   const Volume green = loadVolume(path, {"", 0, 1});
   expectVolume(green, 10);
   EXPECT_EQ(green.frameCount(), 1);  // channels are not frames
+  EXPECT_EQ(green.channel(), 1);
+  EXPECT_EQ(green.channelCount(), 3);
   EXPECT_EQ(green.notes().at(0),
             "4D NRRD of 3 channels (kind rgb-color); showing channel 1 (--channel N picks "
             "another)");

@@ -64,6 +64,7 @@ TEST(TiffPlanes, OmeTiffInEveryOrderOpensAChannelAndATimePoint) {
     EXPECT_EQ(first.spacing(), glm::dvec3(0.3, 0.6, 1.5)) << order;
     EXPECT_EQ(first.unit(), "\xC2\xB5m");  // the schema's default
     EXPECT_EQ(first.frameCount(), 2);
+    EXPECT_EQ(first.channelCount(), 2);
     for (int c = 0; c < 2; ++c)
       for (int t = 0; t < 2; ++t) expectPlanes(loadVolume(path, {"", t, c}), c, t);
     expectLoadError([&] { loadVolume(path, {"", 0, 2}); }, path, "--channel 2 is out of range");

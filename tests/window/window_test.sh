@@ -303,6 +303,42 @@ back=$(differ "$out/9_frame0.png" "$out/11_frame0_again.png" "$frames_crop")
 log "frames paged: coverage $f0 -> $f1 -> back ($back px differ)"
 quit_window "third window"
 
+# Channels: a 4D NRRD whose first axis holds two channels (a ball, then a smaller one). C
+# opens the next channel in place, Shift+C goes back round.
+log "channels: starting a window on a two-channel NRRD"
+python3 - "$work/channels.nrrd" <<'PY'
+import sys
+n = 24
+data = bytearray()
+for z in range(n):
+    for y in range(n):
+        for x in range(n):
+            r2 = (x - 11.5) ** 2 + (y - 11.5) ** 2 + (z - 11.5) ** 2
+            data += bytes([200 if r2 < 81 else 0, 200 if r2 < 25 else 0])
+head = ("NRRD0004\ntype: uint8\ndimension: 4\nsizes: 2 %d %d %d\n"
+        "kinds: 2-vector domain domain domain\nencoding: raw\n\n" % (n, n, n))
+open(sys.argv[1], "wb").write(head.encode() + bytes(data))
+PY
+: >"$work/stdout"; : >"$work/stderr"
+mkdir -p "$work/config5"
+(cd "$work" && EWAVIEW_CONFIG_DIR="$work/config5" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" \
+  channels.nrrd --resolution "$width,$height" >stdout 2>stderr) &
+pid=$!
+poll "the ewaview window" find_window
+settled "$out/14_channel0.png" "$black" "$frames_crop"
+k0=$(coverage "$out/14_channel0.png" "$frames_crop")
+xdotool key --window "$wid" c
+on_channel() { grep -q "^ewaview: channel $1 of 2, frame 0 of 1 in" "$work/stderr"; }
+poll "channel 1 of 2 on C" on_channel 1
+settled "$out/15_channel1.png" "$out/14_channel0.png" "$frames_crop"
+k1=$(coverage "$out/15_channel1.png" "$frames_crop")
+greater "$(awk -v a="$k0" 'BEGIN { print a * 0.6 }')" "$k1" ||
+  fail "C did not show the smaller ball of channel 1 (coverage $k0 -> $k1)"
+xdotool key --window "$wid" shift+c
+poll "channel 0 of 2 on Shift+C" on_channel 0
+log "channels paged: coverage $k0 -> $k1"
+quit_window "channels window"
+
 # Series: a DICOM folder of two (a ball of 30 slices, a box of 20). The panel lists them;
 # choosing the second in the list opens it (a box covers more of the picture than the ball).
 series_note="series not checked (no fixture writer given)"
@@ -335,4 +371,4 @@ if [ -n "$fixture" ]; then
   quit_window "fourth window"
 fi
 
-echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; $series_note"
+echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1; $series_note"
