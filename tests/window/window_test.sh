@@ -117,6 +117,32 @@ quit_window() {  # quit_window NAME
   [ "$rc" -eq 0 ] || fail "the $1's ewaview exited with $rc"
 }
 
+# Starts ewaview on FILE (relative to the scratch folder) with its own settings folder NAME and
+# EWAVIEW_PRINT_LAYOUT, fresh stdout and stderr logs, and waits for its window.
+start_window() {  # start_window NAME FILE
+  : >"$work/stdout"; : >"$work/stderr"
+  mkdir -p "$work/$1"
+  (cd "$work" && EWAVIEW_CONFIG_DIR="$work/$1" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" "$2" \
+    --resolution "$width,$height" >stdout 2>stderr) &
+  pid=$!
+  poll "the ewaview window" find_window
+}
+
+# Presses KEY, waits for stderr to log LINE and for the picture to settle in RESULT (changed
+# from BEFORE in the ball's crop), which must show the ball shrunk below 0.6 times its coverage,
+# left in $shrunk.
+page_shrinks() {  # page_shrinks KEY LINE BEFORE RESULT
+  xdotool key --window "$wid" "$1"
+  logged() { grep -q "^ewaview: $1 in" "$work/stderr"; }
+  poll "'$2' on $1" logged "$2"
+  settled "$4" "$3" "$frames_crop"
+  local c0 c1
+  c0=$(coverage "$3" "$frames_crop"); c1=$(coverage "$4" "$frames_crop")
+  greater "$(awk -v a="$c0" 'BEGIN { print a * 0.6 }')" "$c1" ||
+    fail "$1 did not show the smaller ball ($2: coverage $c0 -> $c1)"
+  shrunk="$c1"
+}
+
 # First picture: wait until the volume is drawn and the window is still.
 black="$work/black.png"
 convert -size "${width}x${height}" xc:black "$black"
@@ -277,26 +303,16 @@ for radius in (9, 5):
                 data.append(200 if r2 < radius * radius else 0)
 open(sys.argv[1], "wb").write(bytes(header) + bytes(data))
 PY
-: >"$work/stdout"; : >"$work/stderr"
-mkdir -p "$work/config3"
-(cd "$work" && EWAVIEW_CONFIG_DIR="$work/config3" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" frames.nii \
-  --resolution "$width,$height" >stdout 2>stderr) &
-pid=$!
 # The panel, wider with its frame line, grows with its statistics: the ball's right half only,
 # clear of the panel, the editor (x >= 714) and the probe line.
 frames_crop="150x560+560+0"
-poll "the ewaview window" find_window
+start_window config3 frames.nii
 settled "$out/9_frame0.png" "$black" "$frames_crop"
 f0=$(coverage "$out/9_frame0.png" "$frames_crop")
-xdotool key --window "$wid" Next
-on_frame() { grep -q "^ewaview: frame $1 of 2 in" "$work/stderr"; }
-poll "frame 1 of 2 on Page Down" on_frame 1
-settled "$out/10_frame1.png" "$out/9_frame0.png" "$frames_crop"
-f1=$(coverage "$out/10_frame1.png" "$frames_crop")
-greater "$(awk -v a="$f0" 'BEGIN { print a * 0.6 }')" "$f1" ||
-  fail "Page Down did not show the smaller ball of frame 1 (coverage $f0 -> $f1)"
+page_shrinks Next "frame 1 of 2" "$out/9_frame0.png" "$out/10_frame1.png"; f1="$shrunk"
 xdotool key --window "$wid" Prior
-poll "frame 0 of 2 on Page Up" on_frame 0
+on_frame0() { grep -q "^ewaview: frame 0 of 2 in" "$work/stderr"; }
+poll "frame 0 of 2 on Page Up" on_frame0
 settled "$out/11_frame0_again.png" "$out/10_frame1.png" "$frames_crop"
 back=$(differ "$out/9_frame0.png" "$out/11_frame0_again.png" "$frames_crop")
 [ "$back" -le $((150 * 560 / 200)) ] || fail "frame 0 looks different the second time ($back px)"
@@ -319,23 +335,14 @@ head = ("NRRD0004\ntype: uint8\ndimension: 4\nsizes: 2 %d %d %d\n"
         "kinds: 2-vector domain domain domain\nencoding: raw\n\n" % (n, n, n))
 open(sys.argv[1], "wb").write(head.encode() + bytes(data))
 PY
-: >"$work/stdout"; : >"$work/stderr"
-mkdir -p "$work/config5"
-(cd "$work" && EWAVIEW_CONFIG_DIR="$work/config5" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" \
-  channels.nrrd --resolution "$width,$height" >stdout 2>stderr) &
-pid=$!
-poll "the ewaview window" find_window
+start_window config5 channels.nrrd
 settled "$out/14_channel0.png" "$black" "$frames_crop"
 k0=$(coverage "$out/14_channel0.png" "$frames_crop")
-xdotool key --window "$wid" c
-on_channel() { grep -q "^ewaview: channel $1 of 2, frame 0 of 1 in" "$work/stderr"; }
-poll "channel 1 of 2 on C" on_channel 1
-settled "$out/15_channel1.png" "$out/14_channel0.png" "$frames_crop"
-k1=$(coverage "$out/15_channel1.png" "$frames_crop")
-greater "$(awk -v a="$k0" 'BEGIN { print a * 0.6 }')" "$k1" ||
-  fail "C did not show the smaller ball of channel 1 (coverage $k0 -> $k1)"
+page_shrinks c "channel 1 of 2, frame 0 of 1" "$out/14_channel0.png" "$out/15_channel1.png"
+k1="$shrunk"
 xdotool key --window "$wid" shift+c
-poll "channel 0 of 2 on Shift+C" on_channel 0
+on_channel0() { grep -q "^ewaview: channel 0 of 2, frame 0 of 1 in" "$work/stderr"; }
+poll "channel 0 of 2 on Shift+C" on_channel0
 log "channels paged: coverage $k0 -> $k1"
 quit_window "channels window"
 
@@ -345,12 +352,7 @@ series_note="series not checked (no fixture writer given)"
 if [ -n "$fixture" ]; then
   log "series: starting a fourth window on a DICOM folder of two series"
   "$fixture" "$work/study" 2>/dev/null || fail "the fixture writer could not write the folder"
-  : >"$work/stdout"; : >"$work/stderr"
-  mkdir -p "$work/config4"
-  (cd "$work" && EWAVIEW_CONFIG_DIR="$work/config4" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" study \
-    --resolution "$width,$height" >stdout 2>stderr) &
-  pid=$!
-  poll "the ewaview window" find_window
+  start_window config4 study
   have_list() { grep -q '^series-list ' "$work/stdout"; }
   poll "the series list's layout line" have_list
   settled "$out/12_series_ball.png" "$black" "$frames_crop"
