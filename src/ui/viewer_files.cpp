@@ -79,24 +79,41 @@ void ViewerWindow::startLoad(const std::string& path, const LoadOptions& load, b
   loadJob_.start(path, load, config_.opener);
 }
 
+// Paging steps from the frame and channel last asked for while a page is loading (a held
+// Page Down goes on counting), else from the volume on screen.
+LoadOptions ViewerWindow::pageBase() const {
+  if (loadJob_.running() && loadKeepsView_) return pageTarget_;
+  LoadOptions load;
+  load.series = openSeriesId(*current_.volume);
+  load.frame = current_.volume->frame();
+  load.channel = current_.volume->channel();
+  return load;
+}
+
+// Opens that page of the current file now, or, while another page loads, right after it (the
+// latest request replacing any queued one), so no key press is refused.
+void ViewerWindow::requestPage(const LoadOptions& load) {
+  pageTarget_ = load;
+  if (loadJob_.running() && loadKeepsView_)
+    queuedPage_ = load;
+  else
+    startLoad(current_.path, load, true);
+}
+
 void ViewerWindow::stepFrame(int step) {
   const int count = current_.volume->frameCount();
   if (count <= 1 || current_.path.empty()) return;
-  LoadOptions load;
-  load.series = openSeriesId(*current_.volume);
-  load.frame = ((current_.volume->frame() + step) % count + count) % count;
-  load.channel = current_.volume->channel();
-  startLoad(current_.path, load, true);
+  LoadOptions load = pageBase();
+  load.frame = ((load.frame + step) % count + count) % count;
+  requestPage(load);
 }
 
 void ViewerWindow::stepChannel(int step) {
   const int count = current_.volume->channelCount();
   if (count <= 1 || current_.path.empty()) return;
-  LoadOptions load;
-  load.series = openSeriesId(*current_.volume);
-  load.frame = current_.volume->frame();
-  load.channel = ((current_.volume->channel() + step) % count + count) % count;
-  startLoad(current_.path, load, true);
+  LoadOptions load = pageBase();
+  load.channel = ((load.channel + step) % count + count) % count;
+  requestPage(load);
 }
 
 void ViewerWindow::openSeries(const std::string& id) {
@@ -113,6 +130,7 @@ void ViewerWindow::pollLoad() {
   if (!loadJob_.poll(&loaded, &problem)) return;
   if (!loaded) {
     error(problem);  // the old volume stays
+    queuedPage_.reset();
     return;
   }
   char text[64];
@@ -134,6 +152,14 @@ void ViewerWindow::pollLoad() {
   for (const std::string& note : v.notes())
     if (note.rfind("warning: ", 0) == 0) messages_.post(StatusMessages::Kind::Info, note, now());
   adopt(std::move(*loaded), /*newCamera=*/!keepView);
+  if (queuedPage_) {  // a page asked for while this one loaded, unless it is this one again
+    const LoadOptions next = *queuedPage_;
+    queuedPage_.reset();
+    const Volume& now = *current_.volume;
+    if (next.frame != now.frame() || next.channel != now.channel() ||
+        next.series != openSeriesId(now))
+      startLoad(current_.path, next, true);
+  }
 }
 
 // Every level's renderer is of the kind settings_.renderer names (the panel switches it).

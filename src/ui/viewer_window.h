@@ -88,6 +88,8 @@ class ViewerWindow {
   void stepFrame(int step);
   // The file's next (+1) or previous (-1) channel, round the end: RGB, OME-TIFF channels.
   void stepChannel(int step);
+  LoadOptions pageBase() const;
+  void requestPage(const LoadOptions& load);
   // Another series of the open DICOM folder (Volume::seriesChoices), as --series opens it.
   void openSeries(const std::string& id);
   void pollLoad();
@@ -145,6 +147,8 @@ class ViewerWindow {
   StatusMessages messages_;
   VolumeLoadJob loadJob_;
   bool loadKeepsView_ = false;  // the load running pages through the current file's frames
+  LoadOptions pageTarget_;      // the page last asked for
+  std::optional<LoadOptions> queuedPage_;  // asked for while another page loaded
   BookmarkStore bookmarks_;
   WindowTurntable turntable_;
   std::string recorded_;  // camera path lines, when recording
