@@ -144,9 +144,18 @@ void ViewerWindow::pollLoad() {
                                      std::to_string(v.channelCount()) + ", "
                                : std::string()) +
          "frame " + std::to_string(v.frame()) + " of " + std::to_string(v.frameCount()) + text);
-    loaded->tf = current_.tf;  // the one being edited, not the file's again
+    // Another frame keeps the function being edited. Another channel (another stain, another
+    // range) gets its own: the one it had when last shown, else the file's for that channel.
+    const int was = current_.volume->channel();
+    channelTfs_[was] = current_.tf;
+    const auto kept = channelTfs_.find(v.channel());
+    if (v.channel() == was)
+      loaded->tf = current_.tf;
+    else if (kept != channelTfs_.end())
+      loaded->tf = kept->second;
   } else {
     info("opened " + loaded->name + text);
+    channelTfs_.clear();  // another file
   }
   // Uneven slices, a sheared grid: on stderr already (loadScene), and in the panel.
   for (const std::string& note : v.notes())

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -148,7 +149,8 @@ class ViewerWindow {
   VolumeLoadJob loadJob_;
   bool loadKeepsView_ = false;  // the load running pages through the current file's frames
   LoadOptions pageTarget_;      // the page last asked for
-  std::optional<LoadOptions> queuedPage_;  // asked for while another page loaded
+  std::optional<LoadOptions> queuedPage_;       // asked for while another page loaded
+  std::map<int, TransferFunction> channelTfs_;  // each channel's function while paging
   BookmarkStore bookmarks_;
   WindowTurntable turntable_;
   std::string recorded_;  // camera path lines, when recording

@@ -319,8 +319,9 @@ back=$(differ "$out/9_frame0.png" "$out/11_frame0_again.png" "$frames_crop")
 log "frames paged: coverage $f0 -> $f1 -> back ($back px differ)"
 quit_window "third window"
 
-# Channels: a 4D NRRD whose first axis holds two channels (a ball, then a smaller one). C
-# opens the next channel in place, Shift+C goes back round.
+# Channels: a 4D NRRD whose first axis holds two channels: a ball of value 200, then a smaller
+# one of value 40 (another stain, another range). C opens the next channel in place with its own
+# transfer function (channel 0's would leave 40 all but transparent), Shift+C goes back round.
 log "channels: starting a window on a two-channel NRRD"
 python3 - "$work/channels.nrrd" <<'PY'
 import sys
@@ -330,7 +331,7 @@ for z in range(n):
     for y in range(n):
         for x in range(n):
             r2 = (x - 11.5) ** 2 + (y - 11.5) ** 2 + (z - 11.5) ** 2
-            data += bytes([200 if r2 < 81 else 0, 200 if r2 < 25 else 0])
+            data += bytes([200 if r2 < 81 else 0, 40 if r2 < 25 else 0])
 head = ("NRRD0004\ntype: uint8\ndimension: 4\nsizes: 2 %d %d %d\n"
         "kinds: 2-vector domain domain domain\nencoding: raw\n\n" % (n, n, n))
 open(sys.argv[1], "wb").write(head.encode() + bytes(data))
@@ -340,6 +341,7 @@ settled "$out/14_channel0.png" "$black" "$frames_crop"
 k0=$(coverage "$out/14_channel0.png" "$frames_crop")
 page_shrinks c "channel 1 of 2, frame 0 of 1" "$out/14_channel0.png" "$out/15_channel1.png"
 k1="$shrunk"
+greater "$k1" 0.02 || fail "channel 1's ball is not visible (coverage $k1): not its own transfer function?"
 xdotool key --window "$wid" shift+c
 on_channel0() { grep -q "^ewaview: channel 0 of 2, frame 0 of 1 in" "$work/stderr"; }
 poll "channel 0 of 2 on Shift+C" on_channel0
