@@ -2,11 +2,11 @@
 // This file must not include gl/gl_api.h (see imgui_layer.h).
 #include "ui/imgui_layer.h"
 
-#include <stdexcept>
-
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
+
+#include <stdexcept>
 
 namespace ewa {
 
@@ -28,7 +28,9 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) {
   }
 }
 
-ImGuiLayer::~ImGuiLayer() { shutdown(); }
+ImGuiLayer::~ImGuiLayer() {
+  shutdown();
+}
 
 void ImGuiLayer::shutdown() {
   if (!context_) return;
@@ -52,11 +54,17 @@ void ImGuiLayer::render() {
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
-void ImGuiLayer::endFrame() { ImGui::EndFrame(); }
+void ImGuiLayer::endFrame() {
+  ImGui::EndFrame();
+}
 
-bool ImGuiLayer::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
+bool ImGuiLayer::wantsMouse() const {
+  return ImGui::GetIO().WantCaptureMouse;
+}
 
-bool ImGuiLayer::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+bool ImGuiLayer::wantsKeyboard() const {
+  return ImGui::GetIO().WantCaptureKeyboard;
+}
 
 void ImGuiLayer::loadLayout(const std::string& iniText) {
   ImGui::SetCurrentContext(context_);
