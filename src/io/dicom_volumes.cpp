@@ -13,10 +13,9 @@ namespace {
 
 constexpr double kSamePosition = 1e-4;  // mm along the normal: repeated positions are equal text
 
-[[noreturn]] void outOfRange(const std::string& path, int volume, size_t count) {
-  failLoad(path, "--frame " + std::to_string(volume) + " is out of range (the series has " +
-                     std::to_string(count) + " volume" + (count == 1 ? "" : "s") +
-                     " at its positions)");
+// --frame against the series' volumes (1 when it holds one).
+void checkVolume(const std::string& path, int volume, size_t count) {
+  checkFrame(path, volume, int64_t(count), "the series has", "volume", " at its positions");
 }
 
 }  // namespace
@@ -29,7 +28,7 @@ std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<D
         return s.hasPosition && s.hasOrientation && sameDicomOrientation(s, slices.front());
       });
   if (!placed) {
-    if (volume != 0) outOfRange(path, volume, 1);
+    checkVolume(path, volume, 1);
     return slices;
   }
   const auto& o = slices.front().orientation;
@@ -54,7 +53,7 @@ std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<D
     most = std::max(most, starts[p + 1] - starts[p]);
   }
   if (positions < 2 || most == 1) {  // one place (a cine), or one volume
-    if (volume != 0) outOfRange(path, volume, 1);
+    checkVolume(path, volume, 1);
     return slices;
   }
   if (fewest != most) {
@@ -66,7 +65,7 @@ std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<D
                        " share one position): several volumes in the series, unevenly (a copy? "
                        "a missing file?)");
   }
-  if (volume < 0 || size_t(volume) >= most) outOfRange(path, volume, most);
+  checkVolume(path, volume, most);
   if (count) *count = int(most);
   std::vector<DicomSlice> picked;
   for (size_t p = 0; p < positions; ++p) picked.push_back(slices[starts[p] + size_t(volume)]);

@@ -27,4 +27,11 @@ void checkChannel(const std::string& path, int64_t channel, int64_t channels) {
                      std::to_string(channels) + " channel" + (channels == 1 ? "" : "s") + ")");
 }
 
+void checkFrame(const std::string& path, int64_t frame, int64_t frames, const std::string& holder,
+                const std::string& noun, const std::string& after) {
+  if (frame >= 0 && frame < frames) return;
+  failLoad(path, "--frame " + std::to_string(frame) + " is out of range (" + holder + " " +
+                     std::to_string(frames) + " " + noun + (frames == 1 ? "" : "s") + after + ")");
+}
+
 }  // namespace ewa

@@ -19,5 +19,11 @@ std::string quoteText(std::string_view text, size_t maxChars = 60);
 // Throws "<path>: --channel C is out of range (N channels)" unless 0 <= channel < channels: the
 // one check of --channel for every multi-channel format (TIFF, RGB DICOM).
 void checkChannel(const std::string& path, int64_t channel, int64_t channels);
+// Throws "<path>: --frame F is out of range (<holder> N <noun>s<after>)" unless
+// 0 <= frame < frames: the one check of --frame for every format of several volumes (4D NIfTI
+// and NRRD, TIFF time points, a DICOM series' volumes).
+void checkFrame(const std::string& path, int64_t frame, int64_t frames,
+                const std::string& holder = "the file has", const std::string& noun = "frame",
+                const std::string& after = "");
 
 }  // namespace ewa

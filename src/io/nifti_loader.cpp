@@ -139,9 +139,7 @@ Volume loadNifti(const std::string& path, int frame) {
   layout.dims = {1, 1, 1};
   for (int a = 0; a < 3 && a < ndim; ++a) layout.dims[a] = h.dim[a + 1];
   const int64_t frames = ndim >= 4 ? h.dim[4] : 1;
-  if (frame < 0 || frame >= frames)
-    failLoad(headerPath, "--frame " + std::to_string(frame) + " is out of range (the file has " +
-                             std::to_string(frames) + " frame" + (frames == 1 ? "" : "s") + ")");
+  checkFrame(headerPath, frame, frames);
 
   // Sizes in the file's type first (checked against overflow and memory before any read).
   const FileScalar sizeProxy = type.size == 1   ? FileScalar::UInt8

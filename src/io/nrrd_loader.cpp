@@ -107,9 +107,7 @@ int64_t pickVolume(const std::string& path, const NrrdHeader& h, int frame, int 
                            " (--channel N picks another)");
     return channel;
   }
-  if (frame < 0 || frame >= e.size)
-    failLoad(path, "--frame " + std::to_string(frame) + " is out of range (the file has " +
-                       std::to_string(e.size) + " frame" + (e.size == 1 ? "" : "s") + ")");
+  checkFrame(path, frame, e.size);
   layout.frame = frame;
   layout.frameCount = int(std::min<int64_t>(e.size, std::numeric_limits<int>::max()));
   layout.notes.push_back("4D NRRD of " + std::to_string(e.size) + " frames" + kind +

@@ -287,10 +287,7 @@ Volume loadTiff(const std::string& path, int channel, int frame) {
         layout.channel = channel;
         layout.channelCount = int(channels);
         pageChannel = f.samples > 1 ? 0 : channel;
-        if (frame < 0 || frame >= order.frames)
-          failLoad(path, "--frame " + std::to_string(frame) + " is out of range (the file has " +
-                             std::to_string(order.frames) + " time point" +
-                             (order.frames == 1 ? "" : "s") + ")");
+        checkFrame(path, frame, order.frames, "the file has", "time point");
         layout.frame = frame;
         layout.frameCount = int(order.frames);
         placePixels(tiff, order, layout);
