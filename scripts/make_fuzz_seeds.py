@@ -13,6 +13,9 @@ import struct
 import sys
 import zlib
 import gzip
+import io
+import tarfile
+import zipfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DATA = os.path.join(ROOT, "..", "shared", "data")
@@ -378,6 +381,41 @@ def slc_seeds():
     write("slc", "rle.slc", b"\n".join(lines[:3] + [b"1 6 0 1"]) + b"\n" + icon + rle)
 
 
+def zip_bytes(entries):
+    # Fixed dates, so the output stays deterministic.
+    out = io.BytesIO()
+    with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
+        for name, data in entries:
+            z.writestr(zipfile.ZipInfo(name, date_time=(2026, 1, 1, 0, 0, 0)), data,
+                       zipfile.ZIP_DEFLATED)
+    return out.getvalue()
+
+
+def tar_bytes(entries, gz):
+    out = io.BytesIO()
+    with tarfile.open(fileobj=out, mode="w", format=tarfile.USTAR_FORMAT) as t:
+        for name, data in entries:
+            info = tarfile.TarInfo(name)
+            info.size, info.mtime = len(data), 0
+            t.addfile(info, io.BytesIO(data))
+    data = out.getvalue()
+    return gzip.compress(data, mtime=0) if gz else data
+
+
+def archive_seeds():
+    # Archives as downloads come: a volume file with its header, a detached header and its data,
+    # a DICOM series in a folder; the harness writes each as in.zip (libarchive reads any format).
+    tooth = read_text(os.path.join(OUT, "nrrd", "tooth.nrrd"))
+    write("archive", "nrrd.zip", zip_bytes([("scan/", b""), ("scan/tooth.nrrd", tooth)]))
+    head = b"NRRD0004\ntype: uint8\ndimension: 3\nsizes: 4 3 2\nencoding: raw\ndata file: v.raw\n"
+    write("archive", "detached.tar",
+          tar_bytes([("v/v.nhdr", head), ("v/v.raw", payload(24, 1, 5))], gz=False))
+    pet = read_text(os.path.join(DATA, "dicom-pet", "000000.dcm"))
+    write("archive", "dicom.tar.gz",
+          tar_bytes([("series/a.dcm", small_dicom(pet, 0)), ("series/b.dcm", small_dicom(pet, 3.375))],
+                    gz=True))
+
+
 def main():
     if not os.path.isdir(DATA):
         sys.exit("make_fuzz_seeds.py: %s: no such folder (the shared data)" % DATA)
@@ -391,6 +429,7 @@ def main():
     dicom_seeds()
     tiff_seeds()
     slc_seeds()
+    archive_seeds()
 
 
 if __name__ == "__main__":

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "io/archive_extract.h"
+
 namespace ewa {
 
 namespace {
@@ -18,9 +20,14 @@ std::string lower(std::string s) {
 }  // namespace
 
 const std::vector<std::string>& volumeFileExtensions() {
-  static const std::vector<std::string> kExtensions = {
-      ".nrrd", ".nhdr", ".mhd", ".mha", ".dat", ".vti", ".nii", ".nii.gz",
-      ".hdr",  ".img",  ".dcm", ".ima", ".tif", ".tiff", ".slc"};
+  static const std::vector<std::string> kExtensions = [] {
+    std::vector<std::string> all = {".nrrd", ".nhdr", ".mhd",    ".mha",  ".dat",
+                                    ".vti",  ".nii",  ".nii.gz", ".hdr",  ".img",
+                                    ".dcm",  ".ima",  ".tif",    ".tiff", ".slc"};
+    const std::vector<std::string>& archives = archiveFileExtensions();
+    all.insert(all.end(), archives.begin(), archives.end());
+    return all;
+  }();
   return kExtensions;
 }
 

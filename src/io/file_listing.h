@@ -13,7 +13,7 @@ struct DirEntry {
   uintmax_t size = 0;  // bytes (files)
 };
 
-// Extensions loadVolume reads (lower case, with the dot).
+// Extensions loadVolume reads, archives included (lower case, with the dot).
 const std::vector<std::string>& volumeFileExtensions();
 // True when the file name of `path` ends in one of `extensions` (case-insensitive).
 bool hasExtension(const std::string& path, const std::vector<std::string>& extensions);

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <new>
 
+#include "io/archive_extract.h"
 #include "io/file_bytes.h"
 #include "io/format_loaders.h"
 #include "io/load_failure.h"
@@ -26,6 +27,25 @@ Volume loadFolder(const std::string& path, const LoadOptions& options) {
   return loadDicom(path, options.series, options.channel, options.frame);
 }
 
+Volume loadByExtension(const std::string& path, const LoadOptions& options);
+
+// An archive opens what it holds (archiveVolumePath); errors name the entry, not the scratch
+// folder, which is gone once the volume is in memory.
+Volume loadArchive(const std::string& path, const LoadOptions& options) {
+  const ExtractedArchive unpacked = extractArchive(path);
+  const std::string inside = archiveVolumePath(unpacked, path);
+  try {
+    Volume volume = loadByExtension(inside, options);
+    const std::string what = unpacked.relative(inside);
+    volume.addNote("unpacked " + std::to_string(unpacked.files) +
+                   " files from the archive and opened " +
+                   (what.empty() ? std::string("its top folder") : quoteText(what, 200)));
+    return volume;
+  } catch (const LoadError& e) {
+    failLoad(path, unpacked.relative(e.what()));
+  }
+}
+
 Volume loadByExtension(const std::string& path, const LoadOptions& options) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) return loadFolder(path, options);
@@ -44,12 +64,13 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options) {
   if (inner == ".nii" || inner == ".hdr" || inner == ".img") return loadNifti(path, options.frame);
   if (ext == ".slc") return loadSlc(path);
   if (ext == ".tif" || ext == ".tiff") return loadTiff(path, options.channel, options.frame);
+  if (isArchiveName(path)) return loadArchive(path, options);
   if (ext == ".dcm" || ext == ".ima" || looksLikeDicom(path))
     return loadDicom(path, options.series, options.channel, options.frame);
   failLoad(path, "unknown volume file extension " + quoteText(ext) +
                      " (supported: .nrrd .nhdr .mhd .mha .dat .vti .nii .nii.gz .hdr .img .dcm "
-                     ".tif .tiff .slc, DICOM files and folders; raw files need their dimensions "
-                     "and type given)");
+                     ".tif .tiff .slc, DICOM files and folders, archives of them: .zip .tar "
+                     ".tar.gz .7z ...; raw files need their dimensions and type given)");
 }
 
 // Errors about a data file named by the header still start with the path the caller gave.

@@ -32,7 +32,7 @@ std::vector<fs::path> filesIn(const fs::path& folder) {
 }
 
 TEST(FuzzReplay, EveryParserHasATargetWithSeeds) {
-  for (const char* name : {"nrrd", "metaimage", "dat", "vti", "raw", "tf_json"}) {
+  for (const char* name : {"nrrd", "metaimage", "dat", "vti", "raw", "tf_json", "archive"}) {
     ASSERT_TRUE(fuzzTargets().count(name)) << name;
     EXPECT_FALSE(filesIn(fs::path(EWA_FUZZ_DIR) / "corpus" / name).empty()) << name;
   }
@@ -56,8 +56,12 @@ TEST(FuzzReplay, SeedsAndKeptCrashesRunClean) {
 TEST(FuzzReplay, SeedsLoadAsVolumes) {
   // The seeds are valid files: a seed that fails to load would not exercise the data paths.
   ScratchFiles files;
-  for (const auto& [name, ext] : std::vector<std::pair<std::string, std::string>>{
-           {"nrrd", ".nrrd"}, {"metaimage", ".mha"}, {"dat", ".dat"}, {"vti", ".vti"}}) {
+  for (const auto& [name, ext] :
+       std::vector<std::pair<std::string, std::string>>{{"nrrd", ".nrrd"},
+                                                        {"metaimage", ".mha"},
+                                                        {"dat", ".dat"},
+                                                        {"vti", ".vti"},
+                                                        {"archive", ".zip"}}) {
     for (const fs::path& file : filesIn(fs::path(EWA_FUZZ_DIR) / "corpus" / name)) {
       const std::vector<uint8_t> input = readAll(file);
       const std::string path = files.write(input.data(), input.size(), "in" + ext);

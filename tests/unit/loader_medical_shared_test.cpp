@@ -157,6 +157,8 @@ TEST_F(MedicalData, DicomPetFolderAndAnyFileSortedByPosition) {
 }
 
 TEST_F(MedicalData, DicomMrStackFromTheZip) {
+  // Opened as it comes, and unpacked (by unzip, not our reader): the same volume.
+  const Volume zipped = loadVolume(data("dicom-mr-stack/data.zip"));
   testing::TempDir dir;
   const std::string command = "unzip -q -o '" + data("dicom-mr-stack/data.zip") + "' -d '" +
                               dir.path("mr") + "' >/dev/null 2>&1";
@@ -173,6 +175,12 @@ TEST_F(MedicalData, DicomMrStackFromTheZip) {
           {{-250 + 261 * 0.9765625, -250 + 274 * 0.9765625, 12}, 346},
           {{-250 + 250 * 0.9765625, -250 + 300 * 0.9765625, 0}, 93},
           {{-250 + 250 * 0.9765625, -250 + 300 * 0.9765625, -12}, 96}}});
+  const Volume unzipped = loadVolume(dir.path("mr/data"));
+  ASSERT_EQ(zipped.dims(), unzipped.dims());
+  EXPECT_EQ(zipped.spacing(), unzipped.spacing());
+  EXPECT_EQ(zipped.origin(), unzipped.origin());
+  for (int64_t n = 0; n < zipped.voxelCount(); ++n)
+    ASSERT_EQ(zipped.valueAt(n), unzipped.valueAt(n)) << "voxel " << n;
 }
 
 TEST_F(MedicalData, NeghipSlc) {

@@ -1,0 +1,61 @@
+// Archives of volumes (.zip, .tar and compressed tars, .7z): unpacked into a scratch folder.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ewa {
+
+// Archive file names loadVolume opens (lower case, with the dot; matched as suffixes).
+const std::vector<std::string>& archiveFileExtensions();
+// True when the file name of `path` ends in one of archiveFileExtensions().
+bool isArchiveName(const std::string& path);
+
+// Bounds on what one archive may unpack to, counted as it is written (the sizes its entries
+// declare are not trusted). 0 bytes: the machine's memory or the scratch disk's free space,
+// whichever is smaller (a volume unpacked must also fit in memory).
+struct ArchiveLimits {
+  uint64_t maxBytes = 0;
+  uint64_t maxFiles = 100000;
+};
+
+// A private folder (under the temporary directory) holding an archive's regular files; it and
+// everything in it are removed when this goes away. Move-only.
+class ExtractedArchive {
+ public:
+  explicit ExtractedArchive(std::string folder) : folder_(std::move(folder)) {}
+  ExtractedArchive(ExtractedArchive&& other) noexcept;
+  ExtractedArchive& operator=(ExtractedArchive&& other) noexcept;
+  ExtractedArchive(const ExtractedArchive&) = delete;
+  ExtractedArchive& operator=(const ExtractedArchive&) = delete;
+  ~ExtractedArchive();
+
+  const std::string& folder() const { return folder_; }
+  uint64_t files = 0;    // regular files written
+  uint64_t bytes = 0;    // their bytes
+  uint64_t skipped = 0;  // entries left out: links, devices, names leaving the folder
+
+  // `message` with the scratch folder's paths made relative to the archive, so errors name
+  // the entry ("data/1-1.dcm: ...") rather than a temporary path.
+  std::string relative(const std::string& message) const;
+
+ private:
+  void remove();
+  std::string folder_;
+};
+
+// Unpacks the regular files of the archive at `path` (zip, tar, cpio or 7z, compressed with
+// gzip, bzip2, xz or zstd). Entries are written only below the scratch folder: absolute names
+// and ".." are refused, links and devices skipped, as are macOS resource forks (__MACOSX/,
+// "._*"). Throws LoadError("<path>: problem") for an archive that cannot be read, an encrypted
+// entry, or one that unpacks beyond `limits`.
+ExtractedArchive extractArchive(const std::string& path, const ArchiveLimits& limits = {});
+
+// What in an unpacked archive to open: its one volume file with a header (.nrrd, .nhdr, .mhd,
+// .mha, .dat, .vti, .nii, .nii.gz, .hdr, .slc), else the folder (through folders that hold
+// nothing else) for its DICOM series or TIFF stack. Throws LoadError("<path>: problem") when it
+// holds no files or several volume files.
+std::string archiveVolumePath(const ExtractedArchive& archive, const std::string& path);
+
+}  // namespace ewa
