@@ -363,6 +363,13 @@ def tiff_seeds():
           tiff_file(4, 16, 1, b'<OME><Image><Pixels DimensionOrder="XYZCT" SizeZ="2" SizeC="2" '
                     b'SizeT="1" PhysicalSizeX="0.5" PhysicalSizeZ="2" PhysicalSizeZUnit="mm"/>'
                     b'</Image></OME>'))
+    # A dataset over two files: this one (the harness names it in.tif) holds time point 0, a
+    # file that is not there time point 1.
+    write("tiff", "files.ome.tif",
+          tiff_file(4, 16, 1, b'<OME><Image><Pixels DimensionOrder="XYZCT" SizeZ="2" SizeC="2" '
+                    b'SizeT="2"><TiffData PlaneCount="4"><UUID FileName="in.tif">urn:uuid:a'
+                    b'</UUID></TiffData><TiffData FirstT="1" IFD="0"><UUID FileName="t1.ome.tif"/>'
+                    b'</TiffData></Pixels></Image></OME>'))
 
 
 def slc_seeds():

@@ -6,6 +6,7 @@
 #include <cstdarg>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <memory>
 
 #include "io/byte_order.h"
@@ -56,6 +57,7 @@ class TiffFile {
   }
   TIFF* get() const { return tiff_.get(); }
   uint64_t size() const { return size_; }
+  const std::string& path() const { return path_; }
   [[noreturn]] void fail(const std::string& problem) const {
     failLoad(path_, problem + (error_.empty() ? "" : " (" + oneLine(error_) + ")"));
   }
@@ -244,6 +246,52 @@ void placePixels(const TiffFile& tiff, const TiffPlaneOrder& order, VolumeLayout
   layout.unit = lengthUnitName(order.unit);
 }
 
+// Pages in a file, or 0 when it is missing or not a TIFF file.
+int64_t tiffPageCount(const std::string& file) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) return 0;
+  try {
+    TiffFile tiff(file);
+    return int64_t(TIFFNumberOfDirectories(tiff.get()));
+  } catch (const LoadError&) {
+    return 0;
+  }
+}
+
+// An OME-TIFF dataset over several files (its XML in `xmlFile`): each slice of `planeChannel`
+// and `frame` from the file and page its TiffData names, every page like the first.
+std::vector<uint8_t> readOmeDataset(const std::string& path, const std::string& xmlFile,
+                                    const TiffPlaneOrder& order, const PageFormat& format,
+                                    int64_t planeChannel, int sample, int64_t frame,
+                                    VolumeLayout& layout) {
+  const auto sources = omePlaneSources(xmlFile, order, planeChannel, frame, &tiffPageCount);
+  const int64_t slices = std::max<int64_t>(order.slices, 1);
+  for (int64_t z = 0; z < slices; ++z)  // at most one past the slices found
+    if (!sources.count(z))
+      failLoad(path, "slice " + std::to_string(z) + " of channel " + std::to_string(planeChannel) +
+                         ", time point " + std::to_string(frame) +
+                         " is in none of the OME-TIFF dataset's files");
+  const size_t pageBytes = size_t(format.width) * format.height * fileScalarSize(layout.type);
+  dataByteCount(xmlFile, {int64_t(format.width), int64_t(format.height), slices}, layout.type);
+  std::vector<uint8_t> bytes(pageBytes * size_t(slices));
+  std::unique_ptr<TiffFile> open;
+  std::map<std::string, int> files;
+  for (const auto& [z, source] : sources) {
+    if (!open || open->path() != source.file) open = std::make_unique<TiffFile>(source.file);
+    ++files[source.file];
+    if (!TIFFSetDirectory(open->get(), tdir_t(source.ifd)))
+      open->fail("has no page " + std::to_string(source.ifd));
+    const PageFormat f = pageFormat(*open);
+    if (!(f == format))
+      open->fail("page " + std::to_string(source.ifd) + " is " + f.text() + ", the first " +
+                 format.text() + ": all pages must agree");
+    readPage(*open, f, sample, bytes.data() + size_t(z) * pageBytes);
+  }
+  layout.notes.push_back("an OME-TIFF dataset: " + std::to_string(slices) + " slices from " +
+                         std::to_string(files.size()) + " files");
+  return bytes;
+}
+
 }  // namespace
 
 Volume loadTiff(const std::string& path, int channel, int frame) {
@@ -279,7 +327,7 @@ Volume loadTiff(const std::string& path, int channel, int frame) {
         char* description = nullptr;
         std::string text;
         if (TIFFGetField(tiff.get(), TIFFTAG_IMAGEDESCRIPTION, &description) && description)
-          text = std::string(description).substr(0, 1 << 16);
+          text = std::string(description).substr(0, 1 << 24);  // OME-XML of many files
         order = tiffPlaneOrder(file, text, f.samples);
         // Channels are the samples of a pixel (RGB), or pages (an ImageJ hyperstack, OME-TIFF).
         const int64_t channels = f.samples > 1 ? f.samples : order.channels;
@@ -299,6 +347,11 @@ Volume loadTiff(const std::string& path, int channel, int frame) {
                                  std::to_string(frame) + " (--frame N picks another)");
         pageBytes = size_t(f.width) * f.height * fileScalarSize(layout.type);
         dataByteCount(file, {int64_t(f.width), int64_t(f.height), 1}, layout.type);
+        if (!order.blocks.empty()) {  // the XML names other files: read what it says, once
+          bytes = readOmeDataset(path, file, order, format, pageChannel,
+                                 f.samples > 1 ? channel : 0, frame, layout);
+          break;
+        }
       } else if (!(f == format)) {
         tiff.fail("page " + std::to_string(pages) + " is " + f.text() + ", the first " +
                   format.text() + ": all pages must agree");
@@ -311,6 +364,7 @@ Volume loadTiff(const std::string& path, int channel, int frame) {
       }
       ++pages;
     } while (TIFFReadDirectory(tiff.get()));
+    if (!order.blocks.empty()) break;
   }
   layout.dims = {int64_t(format.width), int64_t(format.height),
                  int64_t(bytes.size() / std::max<size_t>(pageBytes, 1))};

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <map>
 
 #include "io/length_unit.h"
 #include "io/load_failure.h"
@@ -14,6 +16,12 @@ namespace ewa {
 namespace {
 
 constexpr int64_t kMaxPlanes = int64_t(1) << 30;  // per dimension: no product overflows
+constexpr size_t kMaxBlocks = size_t(1) << 20;    // TiffData elements read
+
+std::string localName(const std::string& name) {  // "ome:Pixels" in prefixed documents
+  const size_t colon = name.rfind(':');
+  return name.substr(colon == std::string::npos ? 0 : colon + 1);
+}
 
 // ImageJ's description: "key=value" lines.
 std::string imageJField(const std::string& description, const std::string& key) {
@@ -27,6 +35,44 @@ std::string imageJField(const std::string& description, const std::string& key) 
 int64_t count(const std::string& text, int64_t fallback) {
   int64_t v = 0;
   return parseInt64(trim(text), v) && v >= 1 && v <= kMaxPlanes ? v : fallback;
+}
+
+// An index from 0 to kMaxPlanes, or `fallback`.
+int64_t index(const std::string* text, int64_t fallback) {
+  int64_t v = 0;
+  return text && parseInt64(trim(*text), v) && v >= 0 && v <= kMaxPlanes ? v : fallback;
+}
+
+// The TiffData elements after a Pixels tag, up to its end; kept when one names another file.
+std::vector<TiffDataBlock> tiffDataBlocks(XmlScanner& scanner, const std::string& path) {
+  std::vector<TiffDataBlock> blocks;
+  size_t open = SIZE_MAX;  // the TiffData whose UUID may follow
+  XmlTag tag;
+  while (blocks.size() < kMaxBlocks && scanner.next(tag)) {
+    const std::string name = localName(tag.name);
+    if (tag.closing) {
+      if (name == "Pixels") break;
+      if (name == "TiffData") open = SIZE_MAX;
+      continue;
+    }
+    if (name == "TiffData") {
+      TiffDataBlock b;
+      b.ifdGiven = tag.attribute("IFD") != nullptr;
+      b.ifd = index(tag.attribute("IFD"), 0);
+      b.firstZ = index(tag.attribute("FirstZ"), 0);
+      b.firstC = index(tag.attribute("FirstC"), 0);
+      b.firstT = index(tag.attribute("FirstT"), 0);
+      b.planeCount = index(tag.attribute("PlaneCount"), -1);
+      blocks.push_back(b);
+      open = tag.selfClosing ? SIZE_MAX : blocks.size() - 1;
+    } else if (name == "UUID" && open != SIZE_MAX) {
+      if (const std::string* file = tag.attribute("FileName")) blocks[open].file = *file;
+    }
+  }
+  const std::string self = std::filesystem::path(path).filename().string();
+  for (const TiffDataBlock& b : blocks)
+    if (!b.file.empty() && b.file != self) return blocks;
+  return {};
 }
 
 double positive(const std::string& text) {
@@ -62,9 +108,7 @@ TiffPlaneOrder omeOrder(const std::string& path, const std::string& text, int64_
   XmlScanner scanner(path, text);
   XmlTag tag;
   while (scanner.next(tag)) {
-    const size_t colon = tag.name.rfind(':');  // "ome:Pixels" in prefixed documents
-    if (tag.closing || tag.name.substr(colon == std::string::npos ? 0 : colon + 1) != "Pixels")
-      continue;
+    if (tag.closing || localName(tag.name) != "Pixels") continue;
     auto value = [&](const char* key) {
       const std::string* v = tag.attribute(key);
       return v ? *v : std::string();
@@ -96,6 +140,7 @@ TiffPlaneOrder omeOrder(const std::string& path, const std::string& text, int64_
     o.sizeY = inXUnits("PhysicalSizeY", "PhysicalSizeYUnit");
     o.sizeZ = inXUnits("PhysicalSizeZ", "PhysicalSizeZUnit");
     if (o.sizeY == 0.0) o.sizeY = o.sizeX;  // square pixels when only X is given
+    if (!tag.selfClosing) o.blocks = tiffDataBlocks(scanner, path);
     return o;
   }
   return {};
@@ -119,6 +164,81 @@ TiffPlaneOrder tiffPlaneOrder(const std::string& path, const std::string& descri
   } catch (const LoadError&) {
     return {};  // unreadable XML: the pages as a plain stack
   }
+}
+
+namespace {
+
+// Plane `plane` (in the dimension order) as z, c, t.
+void planeIndices(const TiffPlaneOrder& o, int64_t plane, int64_t index[3]) {
+  for (size_t n = 0; n < o.order.size(); ++n) {
+    const int slot = o.order[n] == 'Z' ? 0 : o.order[n] == 'C' ? 1 : 2;
+    const int64_t size = slot == 0 ? o.slices : slot == 1 ? o.channels : o.frames;
+    index[slot] = n + 1 == o.order.size() ? plane : plane % size;
+    plane /= size;
+  }
+}
+
+// The plane number of z, c, t in the dimension order (each size at most kMaxPlanes, the
+// planes of one file far fewer: callers only add counts of pages).
+int64_t planeNumber(const TiffPlaneOrder& o, int64_t z, int64_t c, int64_t t) {
+  int64_t plane = 0;
+  for (size_t n = o.order.size(); n-- > 0;) {
+    const int slot = o.order[n] == 'Z' ? 0 : o.order[n] == 'C' ? 1 : 2;
+    const int64_t size = slot == 0 ? o.slices : slot == 1 ? o.channels : o.frames;
+    const int64_t i = slot == 0 ? z : slot == 1 ? c : t;
+    if (i >= size) return -1;
+    if (plane > (INT64_MAX - i) / size) return -1;
+    plane = plane * size + i;
+  }
+  return plane;
+}
+
+}  // namespace
+
+std::map<int64_t, TiffPlaneSource> omePlaneSources(
+    const std::string& path, const TiffPlaneOrder& order, int64_t channel, int64_t frame,
+    const std::function<int64_t(const std::string&)>& pagesIn) {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::path(path).parent_path();
+  std::map<int64_t, TiffPlaneSource> out;  // not sized by SizeZ: only slices found
+  std::map<std::string, int64_t> pages;
+  auto pagesOf = [&](const std::string& file) {
+    auto it = pages.find(file);
+    if (it == pages.end()) it = pages.emplace(file, std::max<int64_t>(0, pagesIn(file))).first;
+    return it->second;
+  };
+  const int64_t slices = std::max<int64_t>(order.slices, 1);
+  for (const TiffDataBlock& b : order.blocks) {
+    std::string file = path;
+    if (!b.file.empty()) {
+      if (b.file.find_first_of("/\\") != std::string::npos || b.file == "." || b.file == "..")
+        failLoad(path, "a TiffData names " + quoteText(b.file) + ", not a file beside this one");
+      file = (folder / b.file).string();
+    }
+    const int64_t first = planeNumber(order, b.firstZ, b.firstC, b.firstT);
+    if (first < 0) continue;
+    // The pages it holds: PlaneCount, else 1 with an IFD, else the rest of the file.
+    int64_t count = b.planeCount >= 0 ? b.planeCount : b.ifdGiven ? 1 : -1;
+    int64_t firstIndex[3];
+    planeIndices(order, first, firstIndex);
+    const bool firstWanted = firstIndex[1] == channel && firstIndex[2] == frame;
+    if (count < 0 || firstWanted || count > 1) {
+      const int64_t have = pagesOf(file);
+      if (have == 0) {
+        if (!firstWanted) continue;  // a file this channel and time point do not need
+        failLoad(path, "the dataset's file " + quoteText(fs::path(file).filename().string()) +
+                           " is missing or not a TIFF file");
+      }
+      const int64_t available = std::max<int64_t>(0, have - b.ifd);
+      count = count < 0 ? available : std::min(count, available);
+    }
+    for (int64_t k = 0; k < count; ++k) {
+      int64_t i[3];
+      planeIndices(order, first + k, i);
+      if (i[1] == channel && i[2] == frame && i[0] < slices) out[i[0]] = {file, b.ifd + k};
+    }
+  }
+  return out;
 }
 
 int64_t tiffSliceOfPage(const TiffPlaneOrder& o, int64_t page, int64_t channel, int64_t frame) {
