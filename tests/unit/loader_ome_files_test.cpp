@@ -10,38 +10,16 @@
 #include "io/volume_loader.h"
 #include "loader_test_files.h"
 #include "medical_test_files.h"
+#include "tiff_plane_samples.h"
 
 namespace ewa {
 namespace {
 
 using testing::expectLoadError;
+using testing::expectPlanes;
+using testing::planeRange;
 using testing::TempDir;
-
-constexpr int kSizes[3] = {3, 2, 2};  // z, c, t
-
-// Plane `p` of `order` (fastest first) as z, c, t.
-std::array<int, 3> zctOf(const std::string& order, int p) {
-  std::array<int, 3> index{0, 0, 0};
-  for (char d : order) {
-    const int slot = d == 'Z' ? 0 : d == 'C' ? 1 : 2;
-    index[size_t(slot)] = p % kSizes[slot];
-    p /= kSizes[slot];
-  }
-  return index;
-}
-
-// Planes `from` to `to` - 1 of `order`, each 3 x 2 uint16 pixels holding
-// 1000 t + 100 c + 10 z + pixel index.
-std::vector<std::vector<uint16_t>> planeRange(const std::string& order, int from, int to) {
-  std::vector<std::vector<uint16_t>> pages;
-  for (int p = from; p < to; ++p) {
-    const auto [z, c, t] = zctOf(order, p);
-    std::vector<uint16_t> page(6);
-    for (int i = 0; i < 6; ++i) page[size_t(i)] = uint16_t(1000 * t + 100 * c + 10 * z + i);
-    pages.push_back(page);
-  }
-  return pages;
-}
+using testing::zctOf;
 
 std::string omeXml(const std::string& order, const std::string& tiffData, int sizeZ = 3) {
   return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
@@ -55,14 +33,6 @@ std::string omeXml(const std::string& order, const std::string& tiffData, int si
 std::string block(const std::string& attributes, const std::string& file) {
   return "<TiffData " + attributes + "><UUID FileName=\"" + file + "\">urn:uuid:" + file +
          "</UUID></TiffData>";
-}
-
-void expectPlanes(const Volume& v, int channel, int frame) {
-  ASSERT_EQ(v.dims(), (std::array<int64_t, 3>{3, 2, 3}));
-  for (int z = 0; z < 3; ++z)
-    for (int i = 0; i < 6; ++i)
-      ASSERT_EQ(v.valueAt(6 * z + i), 1000 * frame + 100 * channel + 10 * z + i)
-          << "channel " << channel << " frame " << frame << " slice " << z << " pixel " << i;
 }
 
 void expectEveryPlane(const std::string& path) {
@@ -152,8 +122,11 @@ TEST(OmeFiles, BadDatasetsFailInOneLine) {
       writeOme(c, planeRange("ZCT", 0, 6),
                omeXml("ZCT", block("", "c.ome.tif") + block("FirstT=\"1\"", "d.ome.tif"), 4)));
   EXPECT_EQ(loadVolume(c).dims()[2], 4);
-  expectLoadError([&] { loadVolume(c, {"", 0, 1}); }, c,
-                  "slice 2 of channel 1, time point 0 is in none of the OME-TIFF dataset's files");
+  expectLoadError(
+      [&] {
+        loadVolume(c, {"", 0, 1});
+      },
+      c, "slice 2 of channel 1, time point 0 is in none of the OME-TIFF dataset's files");
 
   // The second file's pages are another size.
   const std::string e = dir.path("e.ome.tif"), f = dir.path("f.ome.tif");

@@ -9,31 +9,15 @@
 #include "io/volume_loader.h"
 #include "loader_test_files.h"
 #include "medical_test_files.h"
+#include "tiff_plane_samples.h"
 
 namespace ewa {
 namespace {
 
 using testing::expectLoadError;
+using testing::expectPlanes;
+using testing::planeRange;
 using testing::TempDir;
-
-// 3 slices, 2 channels, 2 time points of 3 x 2 uint16 pixels; the plane (z, c, t) holds
-// 1000 t + 100 c + 10 z + pixel index. `order` (fastest first, "ZCT", "CZT", ...) lays the
-// planes out as pages.
-std::vector<std::vector<uint16_t>> planes(const std::string& order) {
-  std::vector<std::vector<uint16_t>> pages(12, std::vector<uint16_t>(6));
-  const int sizes[3] = {3, 2, 2};  // z, c, t
-  for (int p = 0; p < 12; ++p) {
-    int index[3] = {0, 0, 0}, rest = p;
-    for (char d : order) {
-      const int slot = d == 'Z' ? 0 : d == 'C' ? 1 : 2;
-      index[slot] = rest % sizes[slot];
-      rest /= sizes[slot];
-    }
-    for (int i = 0; i < 6; ++i)
-      pages[size_t(p)][size_t(i)] = uint16_t(1000 * index[2] + 100 * index[1] + 10 * index[0] + i);
-  }
-  return pages;
-}
 
 std::string omeXml(const std::string& order) {
   return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
@@ -45,19 +29,12 @@ std::string omeXml(const std::string& order) {
          "<Channel ID=\"Channel:0:0\" SamplesPerPixel=\"1\"/><TiffData/></Pixels></Image></OME>";
 }
 
-void expectPlanes(const Volume& v, int channel, int frame) {
-  ASSERT_EQ(v.dims(), (std::array<int64_t, 3>{3, 2, 3}));
-  for (int z = 0; z < 3; ++z)
-    for (int i = 0; i < 6; ++i)
-      ASSERT_EQ(v.valueAt(6 * z + i), 1000 * frame + 100 * channel + 10 * z + i)
-          << "slice " << z << " pixel " << i;
-}
-
 TEST(TiffPlanes, OmeTiffInEveryOrderOpensAChannelAndATimePoint) {
   TempDir dir;
   for (const std::string order : {"ZCT", "CZT", "ZTC", "TZC"}) {
     const std::string path = dir.path("cells_" + order + ".ome.tif");
-    ASSERT_TRUE(testing::writeTiff(path, 3, 2, planes(order), SAMPLEFORMAT_UINT, 1, omeXml(order)));
+    ASSERT_TRUE(
+        testing::writeTiff(path, 3, 2, planeRange(order), SAMPLEFORMAT_UINT, 1, omeXml(order)));
     const Volume first = loadVolume(path);
     expectPlanes(first, 0, 0);
     // OME's physical sizes, not the resolution tags (which say 0.25 and 0.5 here).
@@ -80,7 +57,7 @@ TEST(TiffPlanes, ImageJHyperstackWithTimePoints) {
   TempDir dir;
   const std::string path = dir.path("stack.tif");
   ASSERT_TRUE(testing::writeTiff(
-      path, 3, 2, planes("CZT"), SAMPLEFORMAT_UINT, 1,
+      path, 3, 2, planeRange("CZT"), SAMPLEFORMAT_UINT, 1,
       "ImageJ=1.53t\nimages=12\nchannels=2\nslices=3\nframes=2\nhyperstack=true\nunit=micron\n"
       "spacing=2.5\n"));
   const Volume v = loadVolume(path, {"", 1, 1});
