@@ -1,6 +1,8 @@
 // Standard axis views, framed like Camera::frame does.
 #include "core/camera_views.h"
 
+#include <algorithm>
+
 namespace ewa {
 
 const char* axisViewName(AxisView view) {
@@ -80,7 +82,23 @@ Camera cameraForAxisView(const Camera& camera, AxisView view, const glm::dvec3& 
 
 Camera initialVolumeView(const Camera& camera, const glm::dvec3& lo, const glm::dvec3& hi,
                          double aspect, bool patientFrame) {
-  if (patientFrame) return cameraForAxisView(camera, AxisView::PlusY, lo, hi, aspect, true);
+  // A slab (a few slices, a single image) seen edge on shows a line: look through its face.
+  const glm::dvec3 extent = hi - lo;
+  int thin = 0;
+  for (int k = 1; k < 3; ++k)
+    if (extent[k] < extent[thin]) thin = k;
+  const double largest = std::max(extent.x, std::max(extent.y, extent.z));
+  const bool slab = extent[thin] < kSlabRatio * largest;
+  if (patientFrame) {
+    // The anterior view, else axial slices from the feet and sagittal ones from the right.
+    const AxisView view = !slab || thin == 1 ? AxisView::PlusY
+                          : thin == 2        ? AxisView::PlusZ
+                                             : AxisView::PlusX;
+    return cameraForAxisView(camera, view, lo, hi, aspect, true);
+  }
+  if (slab && thin != 2)
+    return cameraForAxisView(camera, thin == 0 ? AxisView::MinusX : AxisView::MinusY, lo, hi,
+                             aspect);
   Camera out = camera;
   out.frame(lo, hi, glm::dvec3(0, 0, 1), glm::dvec3(0, 1, 0), aspect);
   return out;

@@ -34,8 +34,14 @@ const char* axisViewKeysHint(bool patientFrame);
 Camera cameraForAxisView(const Camera& camera, AxisView view, const glm::dvec3& lo,
                          const glm::dvec3& hi, double aspect, bool patientFrame = false);
 
+// A box thinner than this fraction of its longest side along one axis is a slab.
+constexpr double kSlabRatio = 0.25;
+
 // The first view of a volume with world bounds [lo, hi]: VTK's (from +Z, +Y up), or in a
-// patient frame the anterior view (superior up), so a patient is seen face on.
+// patient frame the anterior view (superior up), so a patient is seen face on. A slab (a few
+// slices: kSlabRatio) is seen through its face instead of edge on: along its thin axis (from
+// +X or +Y; in a patient frame axial slabs from the feet, anterior up, sagittal ones from the
+// patient's right).
 Camera initialVolumeView(const Camera& camera, const glm::dvec3& lo, const glm::dvec3& hi,
                          double aspect, bool patientFrame);
 

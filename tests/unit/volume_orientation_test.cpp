@@ -123,6 +123,30 @@ TEST(VolumeOrientation, PatientFramesGetAnatomicalAxisViews) {
   EXPECT_GT(plain.position.z, 0.0);
 }
 
+TEST(VolumeOrientation, SlabsAreSeenThroughTheirFace) {
+  // Three axial slices 12 mm apart over 500 mm: from the feet, anterior up, not edge on.
+  Camera c;
+  const glm::dvec3 lo(-250, -250, -18), hi(250, 250, 18);
+  const Camera axial = initialVolumeView(c, lo, hi, 1.0, true);
+  EXPECT_LT(axial.position.z, -100.0);
+  EXPECT_NEAR(axial.position.x, 0.0, 1e-9);
+  EXPECT_NEAR(axial.position.y, 0.0, 1e-9);
+  EXPECT_EQ(axial.viewUp, glm::dvec3(0, -1, 0));
+  // A sagittal slab from the patient's right (-X in LPS); a coronal one keeps the anterior view.
+  const Camera sagittal =
+      initialVolumeView(c, glm::dvec3(-5, -100, -100), glm::dvec3(5, 100, 100), 1.0, true);
+  EXPECT_LT(sagittal.position.x, -50.0);
+  EXPECT_NEAR(glm::length(glm::cross(sagittal.viewUp, glm::dvec3(0, 0, 1))), 0.0, 1e-12);
+  const Camera coronal =
+      initialVolumeView(c, glm::dvec3(-100, -5, -100), glm::dvec3(100, 5, 100), 1.0, true);
+  EXPECT_LT(coronal.position.y, -50.0);
+  // Without a patient frame: a slab thin in x is seen from +X; at a quarter it is no slab.
+  const Camera thinX = initialVolumeView(c, glm::dvec3(0), glm::dvec3(4, 100, 100), 1.0, false);
+  EXPECT_GT(thinX.position.x, 50.0);
+  const Camera block = initialVolumeView(c, glm::dvec3(0), glm::dvec3(25, 100, 100), 1.0, false);
+  EXPECT_GT(block.position.z, 50.0);
+}
+
 TEST(VolumeOrientation, OpenDialogListsTheNewFormats) {
   for (const char* name : {"a.nii", "b.NII.GZ", "c.hdr", "d.dcm", "e.tiff", "f.slc"})
     EXPECT_TRUE(hasExtension(name, volumeFileExtensions())) << name;
