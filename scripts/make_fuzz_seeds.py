@@ -370,6 +370,10 @@ def tiff_seeds():
                     b'SizeT="2"><TiffData PlaneCount="4"><UUID FileName="in.tif">urn:uuid:a'
                     b'</UUID></TiffData><TiffData FirstT="1" IFD="0"><UUID FileName="t1.ome.tif"/>'
                     b'</TiffData></Pixels></Image></OME>'))
+    # Bio-Formats' companion form: the metadata in another file, here not there.
+    write("tiff", "binary_only.ome.tif",
+          tiff_file(2, 8, 1, b'<OME><BinaryOnly MetadataFile="set.companion.ome" UUID="urn:uuid:a"/>'
+                    b'</OME>'))
 
 
 def slc_seeds():

@@ -140,7 +140,12 @@ ExtractedArchive extractArchive(const std::string& path, const ArchiveLimits& li
   ArchivePtr reader(archive_read_new(), &archive_read_free);
   if (!reader) failLoad(path, "out of memory");
   archive* a = reader.get();
-  archive_read_support_filter_all(a);
+  // Named filters, not "all": that one also runs external programs for formats it lacks.
+  archive_read_support_filter_gzip(a);
+  archive_read_support_filter_bzip2(a);
+  archive_read_support_filter_xz(a);
+  archive_read_support_filter_lzma(a);
+  archive_read_support_filter_zstd(a);
   // The formats volumes come in; not "all" (ISO images, RAR, ... are no use and more to trust).
   archive_read_support_format_zip(a);
   archive_read_support_format_tar(a);
@@ -186,8 +191,9 @@ std::string archiveVolumePath(const ExtractedArchive& archive, const std::string
     failLoad(path, "holds no files" + (archive.skipped ? " but " + std::to_string(archive.skipped) +
                                                              " links or names outside it"
                                                        : std::string()));
-  static const std::vector<std::string> kHeaders = {".nrrd", ".nhdr", ".mhd",    ".mha", ".dat",
-                                                    ".vti",  ".nii",  ".nii.gz", ".hdr", ".slc"};
+  static const std::vector<std::string> kHeaders = {".nrrd", ".nhdr", ".mhd", ".mha",
+                                                    ".dat",  ".vti",  ".nii", ".nii.gz",
+                                                    ".hdr",  ".slc",  ".ome", ".ome.xml"};
   std::vector<std::string> volumes;
   std::error_code ec;
   for (fs::recursive_directory_iterator it(archive.folder(), ec), end; !ec && it != end;

@@ -23,6 +23,8 @@ Volume loadDicom(const std::string& path, const std::string& series, int channel
 // A multi-page TIFF, or a folder of single-page TIFFs; `channel` of multi-channel data.
 // `frame`: an ImageJ hyperstack's or OME-TIFF's time point.
 Volume loadTiff(const std::string& path, int channel, int frame);
+// An OME-XML companion file (.companion.ome, .ome.xml) of an OME-TIFF dataset over several files.
+Volume loadOmeCompanion(const std::string& path, int channel, int frame);
 
 // True when the file starts like DICOM Part 10 ("DICM" at byte 128).
 bool looksLikeDicom(const std::string& path);

@@ -241,6 +241,21 @@ std::map<int64_t, TiffPlaneSource> omePlaneSources(
   return out;
 }
 
+std::string omeMetadataFile(const std::string& description) {
+  if (description.find("BinaryOnly") == std::string::npos) return "";
+  try {
+    XmlScanner scanner("", description);
+    XmlTag tag;
+    while (scanner.next(tag)) {
+      if (tag.closing || localName(tag.name) != "BinaryOnly") continue;
+      const std::string* file = tag.attribute("MetadataFile");
+      return file ? *file : "";
+    }
+  } catch (const LoadError&) {
+  }
+  return "";
+}
+
 int64_t tiffSliceOfPage(const TiffPlaneOrder& o, int64_t page, int64_t channel, int64_t frame) {
   int64_t index[3] = {0, 0, 0};  // z, c, t
   int64_t rest = page;

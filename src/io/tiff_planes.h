@@ -57,6 +57,10 @@ std::map<int64_t, TiffPlaneSource> omePlaneSources(
     const std::string& path, const TiffPlaneOrder& order, int64_t channel, int64_t frame,
     const std::function<int64_t(const std::string&)>& pagesIn);
 
+// The companion file an OME-TIFF's description names when it carries no metadata of its own
+// (`<BinaryOnly MetadataFile="x.companion.ome"/>`), else "". Throws nothing.
+std::string omeMetadataFile(const std::string& description);
+
 // The slice (z) page `page` holds when it belongs to `channel` and `frame`, else -1.
 int64_t tiffSliceOfPage(const TiffPlaneOrder& order, int64_t page, int64_t channel, int64_t frame);
 

@@ -6,6 +6,7 @@
 
 #include "io/archive_extract.h"
 #include "io/file_bytes.h"
+#include "io/file_listing.h"
 #include "io/format_loaders.h"
 #include "io/load_failure.h"
 #include "io/text_fields.h"
@@ -64,12 +65,14 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options) {
   if (inner == ".nii" || inner == ".hdr" || inner == ".img") return loadNifti(path, options.frame);
   if (ext == ".slc") return loadSlc(path);
   if (ext == ".tif" || ext == ".tiff") return loadTiff(path, options.channel, options.frame);
+  if (ext == ".ome" || hasExtension(path, {".ome.xml"}))
+    return loadOmeCompanion(path, options.channel, options.frame);
   if (isArchiveName(path)) return loadArchive(path, options);
   if (ext == ".dcm" || ext == ".ima" || looksLikeDicom(path))
     return loadDicom(path, options.series, options.channel, options.frame);
   failLoad(path, "unknown volume file extension " + quoteText(ext) +
                      " (supported: .nrrd .nhdr .mhd .mha .dat .vti .nii .nii.gz .hdr .img .dcm "
-                     ".tif .tiff .slc, DICOM files and folders, archives of them: .zip .tar "
+                     ".tif .tiff .ome .slc, DICOM files and folders, archives of them: .zip .tar "
                      ".tar.gz .7z ...; raw files need their dimensions and type given)");
 }
 

@@ -40,11 +40,13 @@ struct LoadOptions {
 
 // Loads by file extension (case-insensitive): .nrrd/.nhdr (NRRD), .mhd/.mha (MetaImage),
 // .dat (Voreen/Inviwo text header), .vti (VTK XML image data), .nii/.nii.gz/.hdr/.img
-// (NIfTI), .dcm or any DICOM file (its series), .tif/.tiff (TIFF stack), .slc (VTK SLC); a
+// (NIfTI), .dcm or any DICOM file (its series), .tif/.tiff (TIFF stack), .ome/.ome.xml (an
+// OME-TIFF dataset's companion metadata), .slc (VTK SLC); a
 // folder opens its DICOM series or its TIFF files; an archive (.zip, .tar, .tar.gz, .7z, ...)
-// opens the one volume file or the DICOM series or TIFF stack it holds (archive_extract.h). Throws LoadError. Signed 8-bit data (which
-// Volume has no type for) is widened to Int16; negative spacings keep their magnitude; the
-// direction is left a rotation (a reflected one reverses the slices, see volume_orientation.h).
+// opens the one volume file or the DICOM series or TIFF stack it holds (archive_extract.h). Throws
+// LoadError. Signed 8-bit data (which Volume has no type for) is widened to Int16; negative
+// spacings keep their magnitude; the direction is left a rotation (a reflected one reverses the
+// slices, see volume_orientation.h).
 Volume loadVolume(const std::string& path, const LoadOptions& options = {});
 
 // Loads a headerless file laid out as `options` says. The file must hold at least the

@@ -30,14 +30,27 @@ struct Entry {
   std::string linkTo;  // a symbolic link when not empty
 };
 
-// Writes `entries` as a zip (".zip") or gzip-compressed tar (".tar.gz") with libarchive.
+// Writes `entries` as a zip (".zip"), 7z (".7z") or tar compressed with xz (".tar.xz"),
+// bzip2 (".tar.bz2"), zstd (".tar.zst") or gzip (any other name) with libarchive.
 void writeArchive(const std::string& path, const std::vector<Entry>& entries) {
   archive* a = archive_write_new();
-  if (path.size() > 4 && path.compare(path.size() - 4, 4, ".zip") == 0) {
+  auto endsWith = [&](const std::string& end) {
+    return path.size() > end.size() && path.compare(path.size() - end.size(), end.size(), end) == 0;
+  };
+  if (endsWith(".zip")) {
     archive_write_set_format_zip(a);
+  } else if (endsWith(".7z")) {
+    archive_write_set_format_7zip(a);
   } else {
     archive_write_set_format_pax_restricted(a);
-    archive_write_add_filter_gzip(a);
+    if (endsWith(".tar.xz"))
+      archive_write_add_filter_xz(a);
+    else if (endsWith(".tar.bz2"))
+      archive_write_add_filter_bzip2(a);
+    else if (endsWith(".tar.zst"))
+      archive_write_add_filter_zstd(a);
+    else
+      archive_write_add_filter_gzip(a);
   }
   ASSERT_EQ(archive_write_open_filename(a, path.c_str()), ARCHIVE_OK);
   for (const Entry& e : entries) {
@@ -107,8 +120,9 @@ class ArchiveTest : public ::testing::Test {
   bool hadTmp_ = false;
 };
 
-TEST_F(ArchiveTest, ZipAndTarGzOpenTheirVolumeFile) {
-  for (const char* name : {"scan.zip", "scan.tar.gz", "SCAN.TGZ"}) {
+TEST_F(ArchiveTest, EveryKindOpensItsVolumeFile) {
+  for (const char* name : {"scan.zip", "scan.tar.gz", "SCAN.TGZ", "scan.tar.xz", "scan.tar.bz2",
+                           "scan.tar.zst", "scan.7z"}) {
     const std::string path = files_.path(name);
     writeArchive(path, {{"notes/README.txt", "not a volume"}, {"scan/volume.nrrd", nrrd(7)}});
     const Volume v = loadVolume(path);

@@ -108,6 +108,39 @@ TEST(OmeFiles, OneTiffDataAPlaneOneFileAChannel) {
   expectEveryPlane(dir.path("ch1.ome.tif"));
 }
 
+TEST(OmeFiles, CompanionMetadataFile) {
+  // Bio-Formats' companion form: the XML in cells.companion.ome, each TIFF naming it.
+  TempDir dir;
+  const std::string binaryOnly =
+      "<?xml version=\"1.0\"?><OME xmlns=\"http://www.openmicroscopy.org/Schemas/OME/2016-06\">"
+      "<BinaryOnly MetadataFile=\"cells.companion.ome\" UUID=\"urn:uuid:1\"/></OME>";
+  ASSERT_TRUE(writeOme(dir.path("t0.ome.tif"), planeRange("ZCT", 0, 6), binaryOnly));
+  ASSERT_TRUE(writeOme(dir.path("t1.ome.tif"), planeRange("ZCT", 6, 12), binaryOnly));
+  const std::string companion = dir.write(
+      "cells.companion.ome",
+      omeXml("ZCT", block("FirstT=\"0\" IFD=\"0\" PlaneCount=\"6\"", "t0.ome.tif") +
+                        block("FirstT=\"1\" IFD=\"0\" PlaneCount=\"6\"", "t1.ome.tif")));
+  expectEveryPlane(companion);
+  expectEveryPlane(dir.path("t1.ome.tif"));
+  const Volume v = loadVolume(dir.path(""), {"", 1, 1});
+  expectPlanes(v, 1, 1);
+  EXPECT_EQ(v.spacing(), glm::dvec3(0.5, 0.5, 2.0));
+  EXPECT_EQ(v.channelCount(), 2);
+
+  dir.write("cells.companion.ome", "<OME><Image/></OME>");
+  expectLoadError([&] { loadVolume(companion); }, companion, "no OME-XML Pixels element");
+  dir.write("cells.companion.ome", omeXml("ZCT", "<TiffData/>"));
+  expectLoadError([&] { loadVolume(companion); }, companion, "names no TIFF file");
+  std::filesystem::remove(companion);
+  const std::string t0 = dir.path("t0.ome.tif");
+  expectLoadError([&] { loadVolume(t0); }, t0,
+                  "its OME metadata file 'cells.companion.ome' is missing");
+  const std::string away = dir.path("away.ome.tif");
+  ASSERT_TRUE(writeOme(away, planeRange("ZCT", 0, 6),
+                       "<OME><BinaryOnly MetadataFile=\"../cells.companion.ome\"/></OME>"));
+  expectLoadError([&] { loadVolume(away); }, away, "not a file beside it");
+}
+
 TEST(OmeFiles, BadDatasetsFailInOneLine) {
   TempDir dir;
   const std::string a = dir.path("a.ome.tif");
