@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/byte_order.h"
+#include "io/dicom_colour.h"
 #include "io/file_bytes.h"
 #include "io/format_loaders.h"
 #include "io/jpeg_header_check.h"
@@ -70,6 +71,7 @@ struct Walk {
   bool jpegLs = false;    // JPEG-LS: each frame's size against the header's
   // The data set's own (0028,0010), (0011), (0002), (0100).
   int64_t rows = 0, columns = 0, samples = 1, bitsAllocated = 0;
+  std::string photometric{};  // (0028,0004), trimmed
 
   // Walks elements from `pos` to the end (or, with `metaOnly`, while the group is 0002). Items
   // and delimiters must sit where they belong: GDCM asserts (aborts) on one out of place.
@@ -185,6 +187,11 @@ struct Walk {
         if (element == 0x0002) samples = value;
         if (element == 0x0100) bitsAllocated = value;
       }
+      if (group == 0x0028 && element == 0x0004 && open.empty() && length <= 64) {
+        photometric.assign(reinterpret_cast<const char*>(&bytes[pos]), size_t(length));
+        while (!photometric.empty() && (photometric.back() == ' ' || photometric.back() == '\0'))
+          photometric.pop_back();
+      }
       // GDCM asserts that a retired Recognition Code names ACR-NEMA or MIPS.
       if (group == 0x0008 && element == 0x0010 && open.empty() && !recognitionCodeOk(pos, length))
         return fail(pos, "a Recognition Code (0008,0010) that is not ACR-NEMA");
@@ -266,8 +273,14 @@ DicomStructure checkDicomStructure(const std::string& path) {
   walk.jpeg2000 = isJpeg2000TransferSyntax(syntax);
   walk.jpegLs = isJpegLsTransferSyntax(syntax);
   walk.run(metaEnd, explicitVr, bigEndian, false);
-  if (walk.problem.empty()) return DicomStructure::Plausible;
-  failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
+  if (!walk.problem.empty()) failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
+  // GDCM's pixmap reader already decodes RLE to tell whether the image is lossy, and asserts
+  // when a colour space's size disagrees with the codec's (found with YBR_FULL_422 in RLE).
+  const bool encapsulated = syntax != "1.2.840.10008.1.2" && syntax != "1.2.840.10008.1.2.1" &&
+                            syntax != "1.2.840.10008.1.2.2";
+  const std::string problem = colourCodingProblem(walk.photometric, syntax, encapsulated);
+  if (!problem.empty()) failLoad(path, problem);
+  return DicomStructure::Plausible;
 }
 
 }  // namespace ewa

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <string>
 
+#include "io/dicom_colour.h"
 #include "io/dicom_items.h"
 #include "io/file_bytes.h"
 #include "io/jpeg_header_check.h"
@@ -42,46 +43,6 @@ void appendValues(const std::vector<char>& buffer, size_t count, const ChannelLa
     std::memcpy(&v, buffer.data() + layout.index(i) * sizeof(T), sizeof(T));
     out.push_back(double(v));
   }
-}
-
-// Colour spaces of three samples a pixel: RGB, YBR_FULL (Y, Cb, Cr at full range; JPEG's
-// YBR_FULL_422 decodes to it) converted here, and JPEG 2000's YBR_RCT and YBR_ICT, which the
-// codec's inverse transform already returns as RGB.
-bool isYbrFull(const std::string& pi) {
-  return pi == "YBR_FULL" || pi == "YBR_FULL_422";
-}
-bool isColourSpace(const std::string& pi) {
-  return pi == "RGB" || isYbrFull(pi) || pi == "YBR_RCT" || pi == "YBR_ICT";
-}
-
-// The subsampled and transformed colour spaces exist only inside their codecs' streams; GDCM's
-// raw decoder asserts on them (YBR_ICT, YBR_RCT) or would need the chroma upsampled (422).
-void checkColourCoding(const DicomSlice& s, gdcm::TransferSyntax ts) {
-  const std::string& pi = s.photometric;
-  const char* uid = gdcm::TransferSyntax::GetTSString(ts);
-  const std::string syntax = uid ? uid : "";
-  const bool ok = pi == "YBR_FULL_422"                 ? isJpegTransferSyntax(syntax)
-                  : pi == "YBR_RCT" || pi == "YBR_ICT" ? isJpeg2000TransferSyntax(syntax)
-                                                       : true;
-  if (!ok)
-    failLoad(s.file,
-             "PhotometricInterpretation " + quoteText(pi, 20) +
-                 (ts.IsEncapsulated() ? " in transfer syntax " +
-                                            quoteText(gdcm::TransferSyntax::GetTSString(ts), 40)
-                                      : std::string(" uncompressed")) +
-                 " is not read (" + (pi == "YBR_FULL_422" ? "JPEG" : "JPEG 2000") + " only)");
-}
-
-// One RGB component (0 red, 1 green, 2 blue) of full-range Y, Cb, Cr (DICOM PS3.3 C.7.6.3.1.2,
-// the chroma offset half the range of `bits` bits), rounded and kept within that range.
-double rgbOfYbr(double y, double cb, double cr, int component, int64_t bits) {
-  const double half = std::ldexp(1.0, int(bits) - 1);
-  cb -= half;
-  cr -= half;
-  const double v = component == 0   ? y + 1.402 * cr
-                   : component == 1 ? y - 0.344136 * cb - 0.714136 * cr
-                                    : y + 1.772 * cb;
-  return std::clamp(std::round(v), 0.0, 2.0 * half - 1.0);
 }
 
 // The pixel module must describe monochrome (or colour) integer or float samples GDCM can
@@ -216,9 +177,17 @@ SlicePixels readSlice(const DicomSlice& slice, int channel) {
                          uint64_t(std::max(1u, image.GetNumberOfDimensions() > 2 ? dims[2] : 1u));
   if (count != uint64_t(slice.rows) * uint64_t(slice.columns) * uint64_t(slice.frames))
     failLoad(slice.file, "pixel count disagrees with the header");
+  // Uncompressed 4:2:2 chroma is two bytes a pixel, which GDCM's raw decoder does not expand:
+  // read here (rgbOfYbr422).
+  const bool raw422 =
+      slice.photometric == "YBR_FULL_422" && !image.GetTransferSyntax().IsEncapsulated();
+  if (raw422 && format.GetBitsAllocated() != 8)
+    failLoad(slice.file, "uncompressed YBR_FULL_422 of " +
+                             std::to_string(format.GetBitsAllocated()) +
+                             " bits is not read (8 only)");
   // The stored pixel data must be able to hold the image before a buffer is sized by Rows and
   // Columns: all of it uncompressed; compressed, within a ratio no real image reaches.
-  const uint64_t need = count * format.GetPixelSize();
+  const uint64_t need = count * (raw422 ? 2 : format.GetPixelSize());
   uint64_t capacity = 0;
   if (const gdcm::ByteValue* raw = image.GetDataElement().GetByteValue())
     capacity = raw->GetLength();
@@ -228,9 +197,12 @@ SlicePixels readSlice(const DicomSlice& slice, int channel) {
     failLoad(slice.file, "pixel data cannot hold a " + std::to_string(slice.columns) + " x " +
                              std::to_string(slice.rows) + " image (truncated file?)");
   checkAllocation(slice.file, need, "DICOM image");
-  std::vector<char> buffer(image.GetBufferLength());
-  if (buffer.size() < count * format.GetPixelSize() || !image.GetBuffer(buffer.data()))
-    failLoad(slice.file, "pixel data are missing, truncated or cannot be decoded");
+  std::vector<char> buffer;
+  if (!raw422) {
+    buffer.resize(image.GetBufferLength());
+    if (buffer.size() < count * format.GetPixelSize() || !image.GetBuffer(buffer.data()))
+      failLoad(slice.file, "pixel data are missing, truncated or cannot be decoded");
+  }
   SlicePixels out;
   const std::vector<double> rescale = rescaleOf(reader.GetFile(), slice.file);
   out.intercept = rescale[0];
@@ -242,7 +214,11 @@ SlicePixels readSlice(const DicomSlice& slice, int channel) {
   layout.channel = size_t(channel);
   layout.plane = size_t(dims[0]) * dims[1];
   layout.planar = samples > 1 && image.GetPlanarConfiguration() == 1;
-  if (isYbrFull(slice.photometric)) {
+  if (raw422) {
+    const gdcm::ByteValue* raw = image.GetDataElement().GetByteValue();
+    out.values = rgbOfYbr422(slice.file, reinterpret_cast<const uint8_t*>(raw->GetPointer()),
+                             raw->GetLength(), slice.columns, count, channel);
+  } else if (isYbrFull(slice.photometric)) {
     // Y, Cb and Cr (GDCM's JPEG decoder returns YBR_FULL_422 upsampled, unconverted) to RGB.
     std::vector<double> ybr[3];
     for (int c = 0; c < 3; ++c) {

@@ -157,19 +157,76 @@ TEST(DicomColour, JpegYbrFull422IsDecodedAndConvertedToRgb) {
   }
 }
 
-TEST(DicomColour, YbrColourSpacesOutsideTheirCodecsAreRefused) {
-  // YBR_FULL_422 uncompressed (its chroma would need upsampling) and JPEG 2000's YBR_ICT and
-  // YBR_RCT outside JPEG 2000 (GDCM's raw decoder asserts on them): one line, no abort.
+TEST(DicomColour, UncompressedYbrFull422IsUpsampledAndConvertedToRgb) {
+  // Each two pixels of a row stored Y1 Y2 Cb Cr (PS3.5 8.2.1), as uncompressed ultrasound is:
+  // the pair's chroma (here the first pixel's) shared, each channel back within one level of
+  // the RGB written (the test slices' chroma is the same at every pixel).
   TempDir dir;
   testing::DicomSliceSpec spec;
   spec.rgb = true;
-  for (const std::string pi : {"YBR_FULL_422", "YBR_ICT", "YBR_RCT"}) {
+  spec.columns = 6;
+  const std::string folder = dicomSeries(dir, "ybr422", 3, spec);
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    ASSERT_TRUE(testing::editDicom(entry.path().string(), [&](gdcm::DataSet& ds) {
+      const gdcm::ByteValue* bv = ds.GetDataElement(gdcm::Tag(0x7fe0, 0x0010)).GetByteValue();
+      const std::vector<uint8_t> rgb(bv->GetPointer(), bv->GetPointer() + bv->GetLength());
+      std::vector<uint8_t> packed;
+      for (size_t p = 0; p + 1 < rgb.size() / 3; p += 2) {
+        const auto a = ybrOf(rgb[3 * p], rgb[3 * p + 1], rgb[3 * p + 2]);
+        const auto b = ybrOf(rgb[3 * p + 3], rgb[3 * p + 4], rgb[3 * p + 5]);
+        packed.insert(packed.end(), {a[0], b[0], a[1], a[2]});
+      }
+      gdcm::DataElement pixels(gdcm::Tag(0x7fe0, 0x0010));
+      pixels.SetVR(gdcm::VR::OB);
+      pixels.SetByteValue(reinterpret_cast<const char*>(packed.data()), uint32_t(packed.size()));
+      ds.Replace(pixels);
+    }));
+    setPhotometric(entry.path().string(), "YBR_FULL_422");
+  }
+  for (int c = 0; c < 3; ++c) {
+    const Volume v = loadChannel(folder, c);
+    ASSERT_EQ(v.dims(), (std::array<int64_t, 3>{6, 4, 3}));
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 6; ++i)
+          ASSERT_NEAR(v.value(i, j, k), double(rgbTestSample(c, i, j, 2 * k)), 1.0)
+              << "channel " << c << " at " << i << "," << j << "," << k;
+    EXPECT_NE(allNotes(v).find("RGB (from YBR_FULL_422)"), std::string::npos) << allNotes(v);
+  }
+  // Cut short: one line, not a read past the end.
+  ASSERT_TRUE(testing::editDicom(folder + "/im1.dcm", [](gdcm::DataSet& ds) {
+    gdcm::DataElement pixels(gdcm::Tag(0x7fe0, 0x0010));
+    pixels.SetVR(gdcm::VR::OB);
+    pixels.SetByteValue("\x10\x20\x80\x80", 4);
+    ds.Replace(pixels);
+  }));
+  expectLoadError([&] { loadVolume(folder + "/im1.dcm"); }, folder + "/im1.dcm",
+                  "pixel data cannot hold");
+}
+
+TEST(DicomColour, YbrColourSpacesOutsideTheirCodecsAreRefused) {
+  // JPEG 2000's YBR_ICT and YBR_RCT outside JPEG 2000 (GDCM's raw decoder asserts on them),
+  // YBR_FULL_422 in RLE or an odd number of columns: one line, no abort.
+  TempDir dir;
+  testing::DicomSliceSpec spec;
+  spec.rgb = true;
+  for (const std::string pi : {"YBR_ICT", "YBR_RCT"}) {
     const std::string folder = dicomSeries(dir, pi, 1, spec);
     setPhotometric(folder + "/im0.dcm", pi);
     expectLoadError([&] { loadVolume(folder); }, folder,
-                    "im0.dcm: PhotometricInterpretation '" + pi + "' uncompressed is not read (" +
-                        (pi == "YBR_FULL_422" ? "JPEG" : "JPEG 2000") + " only)");
+                    "im0.dcm: PhotometricInterpretation '" + pi +
+                        "' uncompressed is not read (JPEG 2000 only)");
   }
+  const std::string odd = dicomSeries(dir, "odd422", 1, spec);  // 5 columns
+  setPhotometric(odd + "/im0.dcm", "YBR_FULL_422");
+  expectLoadError([&] { loadVolume(odd); }, odd,
+                  "im0.dcm: YBR_FULL_422 with 5 columns (its pixels come in pairs");
+  const std::string rle = dicomSeries(dir, "rle422", 1, spec);
+  ASSERT_TRUE(testing::recompressDicom(rle + "/im0.dcm", gdcm::TransferSyntax::RLELossless));
+  setPhotometric(rle + "/im0.dcm", "YBR_FULL_422");
+  expectLoadError([&] { loadVolume(rle); }, rle,
+                  "im0.dcm: PhotometricInterpretation 'YBR_FULL_422' in transfer syntax "
+                  "'1.2.840.10008.1.2.5' is not read (JPEG or uncompressed only)");
   // In JPEG 2000 the codec's inverse transform returns RGB: read as RGB, exactly (lossless).
   spec.rows = 16;  // OpenJPEG's encoder needs more than 4 rows for its resolution levels
   spec.columns = 16;
