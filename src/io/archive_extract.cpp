@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "io/file_listing.h"
+#include "io/format_loaders.h"
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
 
@@ -60,6 +61,7 @@ void ExtractedArchive::remove() {
 }
 
 std::string ExtractedArchive::relative(const std::string& message) const {
+  if (folder_.empty()) return message;  // moved from
   std::string out = message;
   for (const std::string& from : {folder_ + "/", folder_ + ": ", folder_}) {
     for (size_t at = out.find(from); !from.empty() && at != std::string::npos;
@@ -112,9 +114,9 @@ fs::path makeScratchFolder(const std::string& path) {
   failLoad(path, what + (why ? " (" + oneLine(why) + ")" : std::string()));
 }
 
-// Copies the current entry's data to `target`, counting against `budget` bytes.
+// Copies the current entry's data to `target`; `used` bytes are written already, of `budget`.
 uint64_t writeEntry(const std::string& path, archive* a, const fs::path& target,
-                    const std::string& name, uint64_t budget) {
+                    const std::string& name, uint64_t used, uint64_t budget) {
   std::unique_ptr<FILE, decltype(&std::fclose)> out(std::fopen(target.c_str(), "wb"), &std::fclose);
   if (!out) failLoad(path, "cannot unpack " + quoteText(name) + " to the scratch folder");
   std::vector<char> buffer(1 << 18);
@@ -124,9 +126,11 @@ uint64_t writeEntry(const std::string& path, archive* a, const fs::path& target,
     if (got == 0) break;
     if (got < 0) failArchive(path, a, "a damaged archive: cannot read " + quoteText(name));
     written += uint64_t(got);
-    if (written > budget)
-      failLoad(path, "unpacks to more than " + std::to_string(budget >> 20) +
-                         " MiB (this machine's memory or the scratch disk's free space)");
+    if (written > budget - used)
+      failLoad(path, "unpacks to more than " +
+                         (budget >> 20 ? std::to_string(budget >> 20) + " MiB"
+                                       : std::to_string(budget) + " bytes") +
+                         " (this machine's memory or the scratch disk's free space)");
     if (std::fwrite(buffer.data(), 1, size_t(got), out.get()) != size_t(got))
       failLoad(path, "cannot unpack " + quoteText(name) + " (is the scratch disk full?)");
   }
@@ -180,7 +184,7 @@ ExtractedArchive extractArchive(const std::string& path, const ArchiveLimits& li
     std::error_code ec;
     fs::create_directories((root / name).parent_path(), ec);
     if (ec) failLoad(path, "cannot unpack " + quoteText(name.string()) + " (" + ec.message() + ")");
-    unpacked.bytes += writeEntry(path, a, root / name, name.string(), budget - unpacked.bytes);
+    unpacked.bytes += writeEntry(path, a, root / name, name.string(), unpacked.bytes, budget);
     ++unpacked.files;
   }
   return unpacked;
@@ -210,6 +214,14 @@ std::string archiveVolumePath(const ExtractedArchive& archive, const std::string
                        (volumes.size() > 3 ? ", ..." : "") + "): unpack it and open one");
   }
   // A DICOM series or TIFF stack, often inside a folder of its own.
+  bool images = false;
+  for (fs::recursive_directory_iterator it(archive.folder(), ec), end; !ec && it != end && !images;
+       it.increment(ec))
+    images = it->is_regular_file(ec) && (hasExtension(it->path().string(), {".tif", ".tiff"}) ||
+                                         looksLikeDicom(it->path().string()));
+  if (!images)
+    failLoad(path, "holds no volume file, DICOM image or TIFF file (" +
+                       std::to_string(archive.files) + " other files)");
   fs::path folder = archive.folder();
   for (;;) {
     fs::directory_iterator it(folder, ec), end;

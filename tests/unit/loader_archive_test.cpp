@@ -213,14 +213,18 @@ TEST_F(ArchiveTest, BadArchivesFailInOneLineNamingTheArchive) {
   }
   const std::string text = files_.path("text.zip");
   writeArchive(text, {{"README.txt", "hello"}});
-  expectVolumeLoadError(text, "no DICOM image or TIFF file");
+  expectVolumeLoadError(text, "holds no volume file, DICOM image or TIFF file (1 other files)");
   EXPECT_TRUE(leftInTemp().empty()) << "failed loads remove the scratch folder too";
 }
 
 TEST_F(ArchiveTest, UnpackingStopsAtTheLimitsWhateverTheEntriesDeclare) {
   const std::string path = files_.path("big.zip");
   writeArchive(path, {{"a.nrrd", nrrd(0)}, {"b.raw", std::string(5000, 'b')}, {"c.txt", "c"}});
-  expectLoadError([&] { extractArchive(path, {4096, 100}); }, path, "unpacks to more than");
+  expectLoadError(
+      [&] {
+        extractArchive(path, {4096, 100});
+      },
+      path, "unpacks to more than 4096 bytes");
   expectLoadError([&] { extractArchive(path, {0, 2}); }, path, "holds more than 2 files");
   ExtractedArchive all = extractArchive(path, {0, 3});
   EXPECT_EQ(all.files, 3u);
