@@ -11,6 +11,7 @@
 #include "app/pick_output.h"
 #include "app/scene.h"
 #include "app/turntable.h"
+#include "io/archive_cache.h"
 #include "io/viewer_settings.h"
 #include "ui/viewer.h"
 
@@ -67,13 +68,17 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
   config.settings = o.render;
   config.shaderDir = o.shaderDir;
   config.recordCameraPath = o.recordCameraPath;
-  config.opener = [base = o](const std::string& path, const ewa::LoadOptions& load) {
+  // The window keeps the last archive it opened unpacked while paging its frames and series.
+  const std::shared_ptr<ewa::ArchiveCache> archives =
+      o.archives ? o.archives : std::make_shared<ewa::ArchiveCache>();
+  config.opener = [base = o, archives](const std::string& path, const ewa::LoadOptions& load) {
     ewa::Options fileOptions = base;
     fileOptions.file = path;
     fileOptions.synthetic.clear();
     fileOptions.rawDims.clear();
     fileOptions.tfFile.clear();  // --tf was for the first volume; others use their sidecar
     fileOptions.load = load;     // so were --series, --frame and --channel: the window's own
+    fileOptions.archives = archives;
     ewa::Scene s = ewa::loadScene(fileOptions);
     ewa::LoadedVolume loaded;
     loaded.volume = std::make_shared<ewa::Volume>(std::move(s.volume));
@@ -101,6 +106,9 @@ int main(int argc, char** argv) {
   if (!parsed.run) return parsed.exitCode;
   ewa::askForHugePages(argv);  // returns here only without it; else main runs again
   ewa::keepFreedHeapForReuse();
+  // A window keeps an archive it opens unpacked (ArchiveCache), from the first volume on.
+  if (options.output.empty() && !options.info && !options.pick && options.turntable == 0)
+    options.archives = std::make_shared<ewa::ArchiveCache>();
   try {
     ewa::Scene scene = ewa::loadScene(options);
     if (options.info) {

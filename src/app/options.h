@@ -3,6 +3,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -37,6 +38,8 @@ struct Options {
   std::string backend = "osmesa";
   std::string shaderDir;  // load shaders from this folder instead of the embedded ones
   LoadOptions load;       // --series, --frame, --channel
+  // Where the window keeps an archive it opened unpacked (null headless: unpacked per load).
+  std::shared_ptr<ArchiveCache> archives;
   // Plain raw input.
   std::string rawDims, rawType, rawSpacing = "1,1,1", rawEndian = "little";
 };

@@ -37,7 +37,7 @@ Scene loadScene(const Options& o) {
     const std::string path = o.file.empty() ? defaultVolumePath() : o.file;
     scene.volume =
         o.rawDims.empty()
-            ? loadVolume(path, o.load)
+            ? loadVolume(path, o.load, o.archives.get())
             : loadRawVolume(path, parseRawOptions(o.rawDims, o.rawType, o.rawSpacing, o.rawEndian));
     scene.name = std::filesystem::path(path).filename().string();
     sidecar = sidecarTransferFunctionPath(path);

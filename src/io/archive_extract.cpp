@@ -3,10 +3,14 @@
 
 #include <archive.h>
 #include <archive_entry.h>
+#include <signal.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 
@@ -99,11 +103,29 @@ fs::path safeRelativeName(const char* name) {
   return out;
 }
 
+constexpr const char* kScratchPrefix = "ewaview-archive-";
+
+// Removes the scratch folders of ewaview processes that are gone (killed before they could),
+// told by the process id in the folder's name.
+void removeStaleScratchFolders(const fs::path& temp) {
+  std::error_code ec;
+  for (fs::directory_iterator it(temp, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(kScratchPrefix, 0) != 0) continue;
+    const long pid = std::strtol(name.c_str() + std::strlen(kScratchPrefix), nullptr, 10);
+    if (pid <= 0 || pid == long(getpid())) continue;
+    if (kill(pid_t(pid), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to ask
+    std::error_code ignored;
+    fs::remove_all(it->path(), ignored);
+  }
+}
+
 fs::path makeScratchFolder(const std::string& path) {
   std::error_code ec;
   const fs::path temp = fs::temp_directory_path(ec);
   if (ec) failLoad(path, "no temporary folder to unpack into (" + ec.message() + ")");
-  std::string pattern = (temp / "ewaview-archive-XXXXXX").string();
+  removeStaleScratchFolders(temp);
+  std::string pattern = (temp / (kScratchPrefix + std::to_string(getpid()) + "-XXXXXX")).string();
   if (!mkdtemp(pattern.data()))
     failLoad(path, "cannot make a folder to unpack into under " + temp.string());
   return pattern;

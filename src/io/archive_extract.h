@@ -20,8 +20,9 @@ struct ArchiveLimits {
   uint64_t maxFiles = 100000;
 };
 
-// A private folder (under the temporary directory) holding an archive's regular files; it and
-// everything in it are removed when this goes away. Move-only.
+// A private folder (under the temporary directory, ewaview-archive-PID-XXXXXX) holding an
+// archive's regular files; it and everything in it are removed when this goes away, or, when
+// the process was killed first, by the next ewaview that unpacks an archive. Move-only.
 class ExtractedArchive {
  public:
   explicit ExtractedArchive(std::string folder) : folder_(std::move(folder)) {}

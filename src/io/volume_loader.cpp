@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <new>
 
+#include "io/archive_cache.h"
 #include "io/archive_extract.h"
 #include "io/file_bytes.h"
 #include "io/file_listing.h"
@@ -28,15 +29,18 @@ Volume loadFolder(const std::string& path, const LoadOptions& options) {
   return loadDicom(path, options.series, options.channel, options.frame);
 }
 
-Volume loadByExtension(const std::string& path, const LoadOptions& options);
+Volume loadByExtension(const std::string& path, const LoadOptions& options, ArchiveCache* archives);
 
 // An archive opens what it holds (archiveVolumePath); errors name the entry, not the scratch
 // folder, which is gone once the volume is in memory.
-Volume loadArchive(const std::string& path, const LoadOptions& options) {
-  const ExtractedArchive unpacked = extractArchive(path);
+Volume loadArchive(const std::string& path, const LoadOptions& options, ArchiveCache* archives) {
+  const std::shared_ptr<const ExtractedArchive> held =
+      archives ? archives->unpack(path)
+               : std::make_shared<const ExtractedArchive>(extractArchive(path));
+  const ExtractedArchive& unpacked = *held;
   const std::string inside = archiveVolumePath(unpacked, path);
   try {
-    Volume volume = loadByExtension(inside, options);
+    Volume volume = loadByExtension(inside, options, nullptr);
     const std::string what = unpacked.relative(inside);
     volume.addNote("unpacked " + std::to_string(unpacked.files) +
                    " files from the archive and opened " +
@@ -47,7 +51,8 @@ Volume loadArchive(const std::string& path, const LoadOptions& options) {
   }
 }
 
-Volume loadByExtension(const std::string& path, const LoadOptions& options) {
+Volume loadByExtension(const std::string& path, const LoadOptions& options,
+                       ArchiveCache* archives) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) return loadFolder(path, options);
   // Missing files get the same message whatever their extension.
@@ -67,7 +72,7 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options) {
   if (ext == ".tif" || ext == ".tiff") return loadTiff(path, options.channel, options.frame);
   if (ext == ".ome" || hasExtension(path, {".ome.xml"}))
     return loadOmeCompanion(path, options.channel, options.frame);
-  if (isArchiveName(path)) return loadArchive(path, options);
+  if (isArchiveName(path)) return loadArchive(path, options, archives);
   if (ext == ".dcm" || ext == ".ima" || looksLikeDicom(path))
     return loadDicom(path, options.series, options.channel, options.frame);
   failLoad(path, "unknown volume file extension " + quoteText(ext) +
@@ -84,9 +89,9 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options) {
 
 }  // namespace
 
-Volume loadVolume(const std::string& path, const LoadOptions& options) {
+Volume loadVolume(const std::string& path, const LoadOptions& options, ArchiveCache* archives) {
   try {
-    return loadByExtension(path, options);
+    return loadByExtension(path, options, archives);
   } catch (const LoadError& e) {
     rethrowWithPath(path, e.what());
   } catch (const std::bad_alloc&) {

@@ -31,6 +31,8 @@ struct RawOptions {
 RawOptions parseRawOptions(const std::string& dims, const std::string& type,
                            const std::string& spacing, const std::string& endian);
 
+class ArchiveCache;
+
 // Choices inside files that hold more than one volume.
 struct LoadOptions {
   std::string series;  // DICOM SeriesInstanceUID; empty: the named file's, else the largest
@@ -47,7 +49,10 @@ struct LoadOptions {
 // LoadError. Signed 8-bit data (which Volume has no type for) is widened to Int16; negative
 // spacings keep their magnitude; the direction is left a rotation (a reflected one reverses the
 // slices, see volume_orientation.h).
-Volume loadVolume(const std::string& path, const LoadOptions& options = {});
+// `archives`: where the last archive unpacked is kept (the window's, so that paging its frames
+// does not unpack it again); null: an archive is unpacked for this load and removed after it.
+Volume loadVolume(const std::string& path, const LoadOptions& options = {},
+                  ArchiveCache* archives = nullptr);
 
 // Loads a headerless file laid out as `options` says. The file must hold at least the
 // voxels; extra trailing bytes are ignored. Throws LoadError.

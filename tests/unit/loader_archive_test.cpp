@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "io/archive_cache.h"
 #include "io/archive_extract.h"
 #include "io/volume_loader.h"
 #include "loader_test_files.h"
@@ -237,6 +239,53 @@ TEST_F(ArchiveTest, UnpackingStopsAtTheLimitsWhateverTheEntriesDeclare) {
     EXPECT_TRUE(fs::is_regular_file(folder + "/b.raw"));
   }
   EXPECT_FALSE(fs::exists(folder)) << "the folder goes with its last owner";
+}
+
+TEST_F(ArchiveTest, TheCacheUnpacksAnArchiveOnceWhileItStaysTheSame) {
+  // Two time points of a 4D NRRD: paging them unpacks once; a changed archive again.
+  const std::string path = files_.path("series.tar.gz");
+  const std::string head4d =
+      "NRRD0004\ntype: uint8\ndimension: 4\nsizes: 2 3 4 2\nencoding: raw\n"
+      "kinds: domain domain domain list\n\n";
+  writeArchive(path, {{"t.nrrd", head4d + voxels(0) + voxels(100)}});
+  auto cache = std::make_unique<ArchiveCache>();
+  LoadOptions options;
+  expectVoxels(loadVolume(path, options, cache.get()), 0);
+  options.frame = 1;
+  expectVoxels(loadVolume(path, options, cache.get()), 100);
+  EXPECT_EQ(cache->extractions(), 1u);
+  EXPECT_EQ(leftInTemp().size(), 1u) << "the kept folder";
+  // Rewritten (another size): unpacked again, the old folder gone.
+  writeArchive(path, {{"t.nrrd", head4d + voxels(0) + voxels(50) + "pad"}});
+  expectVoxels(loadVolume(path, options, cache.get()), 50);
+  EXPECT_EQ(cache->extractions(), 2u);
+  EXPECT_EQ(leftInTemp().size(), 1u);
+  // Another archive replaces it; a failed one keeps nothing.
+  const std::string other = files_.path("other.zip");
+  writeArchive(other, {{"v.nrrd", nrrd(9)}});
+  options.frame = 0;
+  expectVoxels(loadVolume(other, options, cache.get()), 9);
+  EXPECT_EQ(leftInTemp().size(), 1u);
+  expectLoadError([&] { loadVolume(files_.write("bad.zip", "nope"), options, cache.get()); },
+                  files_.path("bad.zip"), "not an archive");
+  EXPECT_TRUE(leftInTemp().empty());
+  expectVoxels(loadVolume(other, options, cache.get()), 9);
+  cache.reset();
+  EXPECT_TRUE(leftInTemp().empty()) << "the cache's folder goes with it";
+}
+
+TEST_F(ArchiveTest, FoldersOfKilledProcessesAreRemovedByTheNext) {
+  // A process id that is not running (the largest Linux allows, plus one), and a live one's.
+  const std::string temp = fs::temp_directory_path().string();
+  fs::create_directories(temp + "/ewaview-archive-4194305-abcdef/data");
+  fs::create_directories(temp + "/ewaview-archive-1-abcdef");  // init: alive, not ours
+  fs::create_directories(temp + "/other-folder");
+  const std::string path = files_.path("v.zip");
+  writeArchive(path, {{"v.nrrd", nrrd(3)}});
+  expectVoxels(loadVolume(path), 3);
+  std::vector<std::string> left = leftInTemp();
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"ewaview-archive-1-abcdef", "other-folder"}));
 }
 
 TEST(ArchiveNames, ByTheirSuffix) {
