@@ -14,9 +14,10 @@
 
 namespace ewa {
 
-std::string sidecarTransferFunctionPath(const std::string& volumePath) {
+std::string sidecarTransferFunctionPath(const std::string& volumePath, int channel) {
   std::filesystem::path p(volumePath);
-  return (p.parent_path() / (p.stem().string() + ".tf.json")).string();
+  const std::string own = channel > 0 ? ".c" + std::to_string(channel) : std::string();
+  return (p.parent_path() / (p.stem().string() + own + ".tf.json")).string();
 }
 
 std::string defaultVolumePath() {
@@ -40,7 +41,7 @@ Scene loadScene(const Options& o) {
             ? loadVolume(path, o.load, o.archives.get())
             : loadRawVolume(path, parseRawOptions(o.rawDims, o.rawType, o.rawSpacing, o.rawEndian));
     scene.name = std::filesystem::path(path).filename().string();
-    sidecar = sidecarTransferFunctionPath(path);
+    sidecar = sidecarTransferFunctionPath(path, o.load.channel);
     // Warnings (uneven slices, a sheared grid) are worth a line even when the load succeeds.
     for (const std::string& note : scene.volume.notes())
       if (note.compare(0, 9, "warning: ") == 0)

@@ -19,11 +19,13 @@ struct Scene {
 // Path of the volume opened when no FILE or --synthetic is given.
 std::string defaultVolumePath();
 
-// "dir/name.tf.json" beside "dir/name.ext": a transfer function kept with its volume.
-std::string sidecarTransferFunctionPath(const std::string& volumePath);
+// "dir/name.tf.json" beside "dir/name.ext": a transfer function kept with its volume; for
+// channel C > 0 of a multi-channel file "dir/name.cC.tf.json" (stains differ in range).
+std::string sidecarTransferFunctionPath(const std::string& volumePath, int channel = 0);
 
 // Loads the volume (file, raw or synthetic) and the transfer function: --tf, else a sidecar
-// file beside the volume, else the synthetic volume's own, else one made from the histogram. Throws std::runtime_error("<file>: problem").
+// file beside the volume, else the synthetic volume's own, else one made from the histogram. Throws
+// std::runtime_error("<file>: problem").
 Scene loadScene(const Options& options);
 
 // The starting camera: framing the volume from the front, then any --camera-* options.

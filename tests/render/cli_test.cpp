@@ -58,6 +58,42 @@ TEST(Cli, EveryOptionOfHelpIsInTheReadme) {
   EXPECT_GT(options, 40) << r.out;
 }
 
+TEST(Cli, EachChannelTakesItsOwnSidecarTransferFunction) {
+  EXPECT_EQ(sidecarTransferFunctionPath("/d/cells.ome.tif"), "/d/cells.ome.tf.json");
+  EXPECT_EQ(sidecarTransferFunctionPath("/d/cells.nrrd", 2), "/d/cells.c2.tf.json");
+  // Two channels (a ball of 200, one of 40): channel 0 red by cells.tf.json, channel 1 green
+  // by cells.c1.tf.json; each opaque over its own value only.
+  const std::string dir = testOutputDir() + "/sidecars";
+  std::filesystem::create_directories(dir);
+  std::string data;
+  const int n = 16;
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const double r2 = (x - 7.5) * (x - 7.5) + (y - 7.5) * (y - 7.5) + (z - 7.5) * (z - 7.5);
+        data += char(r2 < 36 ? 200 : 0);
+        data += char(r2 < 36 ? 40 : 0);
+      }
+  std::ofstream(dir + "/cells.nrrd", std::ios::binary)
+      << "NRRD0004\ntype: uint8\ndimension: 4\nsizes: 2 16 16 16\n"
+         "kinds: 2-vector domain domain domain\nencoding: raw\n\n"
+      << data;
+  std::ofstream(dir + "/cells.tf.json")
+      << R"({"opacity": [[0, 0], [150, 0], [200, 1], [255, 1]], "color": [[0, 1, 0, 0], [255, 1, 0, 0]]})";
+  std::ofstream(dir + "/cells.c1.tf.json")
+      << R"({"opacity": [[0, 0], [20, 0], [40, 1], [255, 1]], "color": [[0, 0, 1, 0], [255, 0, 1, 0]]})";
+  for (int channel : {0, 1}) {
+    const std::string png = dir + "/channel" + std::to_string(channel) + ".png";
+    const CliRun r = ewaview(dir + "/cells.nrrd --channel " + std::to_string(channel) +
+                             " --resolution 64,64 -o " + png);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const Image8 image = readPng(png);
+    const uint8_t* centre = &image.pixels[size_t((32 * 64 + 32) * image.channels)];
+    EXPECT_GT(centre[channel == 0 ? 0 : 1], 150) << "channel " << channel;
+    EXPECT_LT(centre[channel == 0 ? 1 : 0], 30) << "channel " << channel;
+  }
+}
+
 TEST(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(ewaview("--no-such-option").code, 2);
   EXPECT_EQ(ewaview("--synthetic sphere --filter blurry").code, 2);
@@ -92,7 +128,8 @@ TEST(Cli, InfoPrintsOneJsonObject) {
       r.out,
       "{\"dims\":[400,400,1],\"spacing\":[1.0,1.0,1.0],\"type\":\"uint8\",\"range\":[1.0,2.0],"
       "\"origin\":[0.0,0.0,0.0],\"direction\":[[1.0,0.0,0.0],[0.0,1.0,0.0],[0.0,0.0,1.0]],"
-      "\"space\":\"none\",\"unit\":null,\"frame\":0,\"frames\":1,\"channel\":0,\"channels\":1,\"series\":[],\"notes\":[]}\n");
+      "\"space\":\"none\",\"unit\":null,\"frame\":0,\"frames\":1,\"channel\":0,\"channels\":1,"
+      "\"series\":[],\"notes\":[]}\n");
   const std::string tooth = std::string(EWA_SHARED_DATA) + "/tooth/tooth.nrrd";
   if (!std::filesystem::exists(tooth)) GTEST_SKIP() << "shared data absent: " << tooth;
   r = ewaview(tooth + " --info");
