@@ -392,6 +392,33 @@ def slc_seeds():
     write("slc", "rle.slc", b"\n".join(lines[:3] + [b"1 6 0 1"]) + b"\n" + icon + rle)
 
 
+def mrc_file(mode, data, big=False, axes=(1, 2, 3), extended=b"", origin=(0.0, 0.0, 0.0),
+             imod=False):
+    # An MRC2014 header for SIZES voxels (cell = sizes: spacing 1), then `extended`, then `data`.
+    e = ">" if big else "<"
+    words = [0] * 256
+    words[0:4] = [SIZES[0], SIZES[1], SIZES[2], mode]
+    words[7:10] = list(SIZES)
+    words[16:19] = list(axes)
+    words[23] = len(extended)
+    if imod:
+        words[38] = 1146047817
+    head = bytearray(struct.pack(e + "256i", *words))
+    struct.pack_into(e + "3f", head, 40, *[float(s) for s in SIZES])
+    struct.pack_into(e + "3f", head, 196, *origin)
+    head[208:212] = b"MAP "
+    head[212:214] = b"\x11\x11" if big else b"\x44\x44"
+    return bytes(head) + extended + data
+
+
+def mrc_seeds():
+    n = SIZES[0] * SIZES[1] * SIZES[2]
+    write("mrc", "float32.mrc", mrc_file(2, payload(n, 4, 1)))
+    write("mrc", "int16_big.map", mrc_file(1, payload(n, 2, 2), big=True, origin=(5.0, -2.0, 1.5)))
+    write("mrc", "imod_bytes.rec", mrc_file(0, payload(n, 1, 3), imod=True, axes=(3, 1, 2)))
+    write("mrc", "half_extended.mrc", mrc_file(12, payload(n, 2, 4), extended=b"\0" * 16))
+
+
 def zip_bytes(entries):
     # Fixed dates, so the output stays deterministic.
     out = io.BytesIO()
@@ -441,6 +468,7 @@ def main():
     tiff_seeds()
     slc_seeds()
     archive_seeds()
+    mrc_seeds()
 
 
 if __name__ == "__main__":

@@ -81,7 +81,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.set_version_flag("--version", std::string("ewaview ") + versionString());
   app.add_option("file", o->file,
                  "Volume file (.nrrd .nhdr .mhd .mha .dat .vti .nii .nii.gz .hdr .img .dcm .tif "
-                 ".tiff .ome .slc), a DICOM or TIFF folder, an archive of one (.zip .tar .tar.gz "
+                 ".tiff .ome .slc .mrc .map .rec), a DICOM or TIFF folder, an archive of one (.zip "
+                 ".tar .tar.gz "
                  ".7z ...), or raw "
                  "with --raw-*");
   app.add_option("--synthetic", o->synthetic,

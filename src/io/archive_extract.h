@@ -54,8 +54,8 @@ class ExtractedArchive {
 ExtractedArchive extractArchive(const std::string& path, const ArchiveLimits& limits = {});
 
 // What in an unpacked archive to open: its one volume file with a header (.nrrd, .nhdr, .mhd,
-// .mha, .dat, .vti, .nii, .nii.gz, .hdr, .slc, an OME companion .ome or .ome.xml), else the folder
-// (through folders that hold nothing else) for its DICOM series or TIFF stack. Throws
+// .mha, .dat, .vti, .nii, .nii.gz, .hdr, .slc, an OME companion .ome or .ome.xml, MRC), else the
+// folder (through folders that hold nothing else) for its DICOM series or TIFF stack. Throws
 // LoadError("<path>: problem") when it holds no files or several volume files.
 std::string archiveVolumePath(const ExtractedArchive& archive, const std::string& path);
 

@@ -69,6 +69,8 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options,
   if (ext == ".vti") return loadVti(path);
   if (inner == ".nii" || inner == ".hdr" || inner == ".img") return loadNifti(path, options.frame);
   if (ext == ".slc") return loadSlc(path);
+  if (ext == ".mrc" || ext == ".mrcs" || ext == ".map" || ext == ".ccp4" || ext == ".rec")
+    return loadMrc(path);
   if (ext == ".tif" || ext == ".tiff") return loadTiff(path, options.channel, options.frame);
   if (ext == ".ome" || hasExtension(path, {".ome.xml"}))
     return loadOmeCompanion(path, options.channel, options.frame);
@@ -77,7 +79,8 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options,
     return loadDicom(path, options.series, options.channel, options.frame);
   failLoad(path, "unknown volume file extension " + quoteText(ext) +
                      " (supported: .nrrd .nhdr .mhd .mha .dat .vti .nii .nii.gz .hdr .img .dcm "
-                     ".tif .tiff .ome .slc, DICOM files and folders, archives of them: .zip .tar "
+                     ".tif .tiff .ome .slc .mrc .map .rec, DICOM files and folders, archives of "
+                     "them: .zip .tar "
                      ".tar.gz .7z ...; raw files need their dimensions and type given)");
 }
 

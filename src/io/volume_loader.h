@@ -43,7 +43,8 @@ struct LoadOptions {
 // Loads by file extension (case-insensitive): .nrrd/.nhdr (NRRD), .mhd/.mha (MetaImage),
 // .dat (Voreen/Inviwo text header), .vti (VTK XML image data), .nii/.nii.gz/.hdr/.img
 // (NIfTI), .dcm or any DICOM file (its series), .tif/.tiff (TIFF stack), .ome/.ome.xml (an
-// OME-TIFF dataset's companion metadata), .slc (VTK SLC); a
+// OME-TIFF dataset's companion metadata), .slc (VTK SLC), .mrc/.mrcs/.map/.ccp4/.rec (MRC2014
+// and CCP4 maps, cryo-EM and tomography); a
 // folder opens its DICOM series or its TIFF files; an archive (.zip, .tar, .tar.gz, .7z, ...)
 // opens the one volume file or the DICOM series or TIFF stack it holds (archive_extract.h). Throws
 // LoadError. Signed 8-bit data (which Volume has no type for) is widened to Int16; negative

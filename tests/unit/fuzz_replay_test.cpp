@@ -32,7 +32,7 @@ std::vector<fs::path> filesIn(const fs::path& folder) {
 }
 
 TEST(FuzzReplay, EveryParserHasATargetWithSeeds) {
-  for (const char* name : {"nrrd", "metaimage", "dat", "vti", "raw", "tf_json", "archive"}) {
+  for (const char* name : {"nrrd", "metaimage", "dat", "vti", "raw", "tf_json", "archive", "mrc"}) {
     ASSERT_TRUE(fuzzTargets().count(name)) << name;
     EXPECT_FALSE(filesIn(fs::path(EWA_FUZZ_DIR) / "corpus" / name).empty()) << name;
   }
@@ -61,7 +61,8 @@ TEST(FuzzReplay, SeedsLoadAsVolumes) {
                                                         {"metaimage", ".mha"},
                                                         {"dat", ".dat"},
                                                         {"vti", ".vti"},
-                                                        {"archive", ".zip"}}) {
+                                                        {"archive", ".zip"},
+                                                        {"mrc", ".mrc"}}) {
     for (const fs::path& file : filesIn(fs::path(EWA_FUZZ_DIR) / "corpus" / name)) {
       const std::vector<uint8_t> input = readAll(file);
       const std::string path = files.write(input.data(), input.size(), "in" + ext);
