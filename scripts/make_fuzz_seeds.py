@@ -419,6 +419,25 @@ def mrc_seeds():
     write("mrc", "half_extended.mrc", mrc_file(12, payload(n, 2, 4), extended=b"\0" * 16))
 
 
+def vtk_seeds():
+    # Legacy VTK structured points as VTK writes them: ASCII floats, big-endian binary shorts and
+    # doubles, and an unsigned char image as COLOR_SCALARS.
+    n = SIZES[0] * SIZES[1] * SIZES[2]
+    def head(encoding, scalars):
+        return (b"# vtk DataFile Version 5.1\nvtk output\n" + encoding +
+                b"\nDATASET STRUCTURED_POINTS\nDIMENSIONS %d %d %d\nSPACING 1 2 0.5\n"
+                b"ORIGIN 3 -1 0\nPOINT_DATA %d\n" % (SIZES + (n,)) + scalars + b"\n")
+    lut = b"\nLOOKUP_TABLE default"
+    write("vtk", "ascii_float.vtk",
+          head(b"ASCII", b"SCALARS v float" + lut) +
+          b" ".join(b"%g" % (0.5 * i) for i in range(n)) + b"\n")
+    write("vtk", "binary_short.vtk",
+          head(b"BINARY", b"SCALARS v short 1" + lut) + struct.pack(">%dh" % n, *range(-5, n - 5)))
+    write("vtk", "binary_double.vtk",
+          head(b"BINARY", b"SCALARS v double" + lut) + struct.pack(">%dd" % n, *[i * 0.25 for i in range(n)]))
+    write("vtk", "color_bytes.vtk", head(b"BINARY", b"COLOR_SCALARS ImageFile 1") + payload(n, 1, 5))
+
+
 def zip_bytes(entries):
     # Fixed dates, so the output stays deterministic.
     out = io.BytesIO()
@@ -469,6 +488,7 @@ def main():
     slc_seeds()
     archive_seeds()
     mrc_seeds()
+    vtk_seeds()
 
 
 if __name__ == "__main__":

@@ -79,12 +79,13 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       "Without --output it opens a window; with --output it renders headless and exits.",
       "ewaview"};
   app.set_version_flag("--version", std::string("ewaview ") + versionString());
-  app.add_option("file", o->file,
-                 "Volume file (.nrrd .nhdr .mhd .mha .dat .vti .nii .nii.gz .hdr .img .dcm .tif "
-                 ".tiff .ome .slc .mrc .map .rec), a DICOM or TIFF folder, an archive of one (.zip "
-                 ".tar .tar.gz "
-                 ".7z ...), or raw "
-                 "with --raw-*");
+  app.add_option(
+      "file", o->file,
+      "Volume file (.nrrd .nhdr .mhd .mha .dat .vti .vtk .nii .nii.gz .hdr .img .dcm .tif "
+      ".tiff .ome .slc .mrc .map .rec), a DICOM or TIFF folder, an archive of one (.zip "
+      ".tar .tar.gz "
+      ".7z ...), or raw "
+      "with --raw-*");
   app.add_option("--synthetic", o->synthetic,
                  "Synthetic volume: marschner-lobb[:N], sphere[:N], checkerboard, zebra[:RATIO]");
   app.add_option("-o,--output", o->output,

@@ -218,8 +218,8 @@ std::string archiveVolumePath(const ExtractedArchive& archive, const std::string
                                                              " links or names outside it"
                                                        : std::string()));
   static const std::vector<std::string> kHeaders = {
-      ".nrrd", ".nhdr", ".mhd",     ".mha", ".dat",  ".vti", ".nii",  ".nii.gz", ".hdr",
-      ".slc",  ".ome",  ".ome.xml", ".mrc", ".mrcs", ".map", ".ccp4", ".rec"};
+      ".nrrd", ".nhdr", ".mhd", ".mha",     ".dat", ".vti",  ".vtk", ".nii",  ".nii.gz",
+      ".hdr",  ".slc",  ".ome", ".ome.xml", ".mrc", ".mrcs", ".map", ".ccp4", ".rec"};
   std::vector<std::string> volumes;
   std::error_code ec;
   for (fs::recursive_directory_iterator it(archive.folder(), ec), end; !ec && it != end;

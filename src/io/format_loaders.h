@@ -15,7 +15,9 @@ Volume loadVti(const std::string& path);        // .vti (VTK XML ImageData)
 // .nii, .nii.gz, .hdr/.img (NIfTI-1 and -2); `frame` of a 4D file.
 Volume loadNifti(const std::string& path, int frame);
 Volume loadSlc(const std::string& path);  // .slc (VTK SLC)
-Volume loadMrc(const std::string& path);  // .mrc .mrcs .map .ccp4 .rec (MRC2014, CCP4)
+Volume loadMrc(const std::string& path);
+Volume loadVtkLegacy(const std::string& path);  // .vtk (legacy VTK, STRUCTURED_POINTS)  // .mrc
+                                                // .mrcs .map .ccp4 .rec (MRC2014, CCP4)
 // A DICOM series: `path` is a folder or one file of the series; `series` a SeriesInstanceUID
 // or empty (the named file's series, else the folder's series with the most slices);
 // `channel` of RGB images; `frame`, of a series holding several volumes at the same positions

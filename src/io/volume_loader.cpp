@@ -67,6 +67,7 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options,
   if (ext == ".mhd" || ext == ".mha") return loadMetaImage(path);
   if (ext == ".dat") return loadDat(path);
   if (ext == ".vti") return loadVti(path);
+  if (ext == ".vtk") return loadVtkLegacy(path);
   if (inner == ".nii" || inner == ".hdr" || inner == ".img") return loadNifti(path, options.frame);
   if (ext == ".slc") return loadSlc(path);
   if (ext == ".mrc" || ext == ".mrcs" || ext == ".map" || ext == ".ccp4" || ext == ".rec")
@@ -77,11 +78,12 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options,
   if (isArchiveName(path)) return loadArchive(path, options, archives);
   if (ext == ".dcm" || ext == ".ima" || looksLikeDicom(path))
     return loadDicom(path, options.series, options.channel, options.frame);
-  failLoad(path, "unknown volume file extension " + quoteText(ext) +
-                     " (supported: .nrrd .nhdr .mhd .mha .dat .vti .nii .nii.gz .hdr .img .dcm "
-                     ".tif .tiff .ome .slc .mrc .map .rec, DICOM files and folders, archives of "
-                     "them: .zip .tar "
-                     ".tar.gz .7z ...; raw files need their dimensions and type given)");
+  failLoad(path,
+           "unknown volume file extension " + quoteText(ext) +
+               " (supported: .nrrd .nhdr .mhd .mha .dat .vti .vtk .nii .nii.gz .hdr .img .dcm "
+               ".tif .tiff .ome .slc .mrc .map .rec, DICOM files and folders, archives of "
+               "them: .zip .tar "
+               ".tar.gz .7z ...; raw files need their dimensions and type given)");
 }
 
 // Errors about a data file named by the header still start with the path the caller gave.

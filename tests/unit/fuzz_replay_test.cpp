@@ -32,7 +32,7 @@ std::vector<fs::path> filesIn(const fs::path& folder) {
 }
 
 TEST(FuzzReplay, EveryParserHasATargetWithSeeds) {
-  for (const char* name : {"nrrd", "metaimage", "dat", "vti", "raw", "tf_json", "archive", "mrc"}) {
+  for (const char* name : {"nrrd", "metaimage", "dat", "vti", "raw", "tf_json", "archive", "mrc", "vtk"}) {
     ASSERT_TRUE(fuzzTargets().count(name)) << name;
     EXPECT_FALSE(filesIn(fs::path(EWA_FUZZ_DIR) / "corpus" / name).empty()) << name;
   }
@@ -62,7 +62,7 @@ TEST(FuzzReplay, SeedsLoadAsVolumes) {
                                                         {"dat", ".dat"},
                                                         {"vti", ".vti"},
                                                         {"archive", ".zip"},
-                                                        {"mrc", ".mrc"}}) {
+                                                        {"mrc", ".mrc"}, {"vtk", ".vtk"}}) {
     for (const fs::path& file : filesIn(fs::path(EWA_FUZZ_DIR) / "corpus" / name)) {
       const std::vector<uint8_t> input = readAll(file);
       const std::string path = files.write(input.data(), input.size(), "in" + ext);
