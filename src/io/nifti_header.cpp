@@ -7,6 +7,7 @@
 #include "io/byte_order.h"
 #include "io/length_unit.h"
 #include "io/load_failure.h"
+#include "io/text_fields.h"
 
 namespace ewa {
 
@@ -60,7 +61,13 @@ NiftiHeader parseNiftiHeader(const std::string& path, const std::vector<uint8_t>
   const FieldReader r(bytes, h.bigEndian);
   if (!h.nifti2) {
     const std::string magic(reinterpret_cast<const char*>(&bytes[344]), 3);
-    if (magic != "n+1" && magic != "ni1") failLoad(path, "bad NIfTI-1 magic " + quoteText(magic));
+    const std::string name = toLower(path);
+    const bool hdr =
+        name.size() > 4 && (name.compare(name.size() - 4, 4, ".hdr") == 0 ||
+                            (name.size() > 7 && name.compare(name.size() - 7, 7, ".hdr.gz") == 0));
+    h.analyze = magic != "n+1" && magic != "ni1" && hdr;
+    if (magic != "n+1" && magic != "ni1" && !h.analyze)
+      failLoad(path, "bad NIfTI-1 magic " + quoteText(magic));
     for (int i = 0; i < 8; ++i) h.dim[i] = r.i16(40 + 2 * i);
     for (int i = 0; i < 8; ++i) h.pixdim[i] = r.f32(76 + 4 * i);
     h.datatype = int(r.i16(70));
@@ -74,6 +81,12 @@ NiftiHeader parseNiftiHeader(const std::string& path, const std::vector<uint8_t>
     for (int i = 0; i < 3; ++i) h.qoffset[i] = r.f32(268 + 4 * i);
     for (int row = 0; row < 3; ++row)
       for (int c = 0; c < 4; ++c) h.srow[row][c] = r.f32(280 + 16 * row + 4 * c);
+    if (h.analyze) {
+      h.qformCode = h.sformCode = 0;  // those bytes are Analyze's orient and originator
+      h.sclSlope = h.sclInter = 0.0;
+      h.analyzeUnit.assign(reinterpret_cast<const char*>(&bytes[56]), 4);  // vox_units
+      h.analyzeUnit = h.analyzeUnit.substr(0, h.analyzeUnit.find('\0'));
+    }
   } else {
     const std::string magic(reinterpret_cast<const char*>(&bytes[4]), 3);
     if (magic != "n+2" && magic != "ni2") failLoad(path, "bad NIfTI-2 magic " + quoteText(magic));
@@ -97,10 +110,17 @@ NiftiHeader parseNiftiHeader(const std::string& path, const std::vector<uint8_t>
 // NIfTI's world is RAS; the viewer's is LPS: x and y change sign.
 void placeNiftiInWorld(const NiftiHeader& h, VolumeLayout& layout) {
   const int spaceUnit = h.xyztUnits & 7;  // 1 metre, 2 millimetre, 3 micron
-  layout.unit = lengthUnitName(spaceUnit == 1   ? "m"
+  layout.unit = lengthUnitName(h.analyze        ? h.analyzeUnit
+                               : spaceUnit == 1 ? "m"
                                : spaceUnit == 2 ? "mm"
                                : spaceUnit == 3 ? "micron"
                                                 : "");
+  if (h.analyze) {
+    for (int a = 0; a < 3; ++a) layout.spacing[a] = h.pixdim[a + 1];
+    layout.notes.push_back(
+        "Analyze 7.5 header (no NIfTI magic): spacing from pixdim, no orientation or scaling");
+    return;
+  }
   const glm::dvec3 toLps(-1.0, -1.0, 1.0);
   if (h.sformCode > 0) {
     for (int a = 0; a < 3; ++a) {

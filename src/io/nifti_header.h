@@ -16,6 +16,7 @@ constexpr size_t kNifti2Size = 540;
 // The fields of either header version, widened to the NIfTI-2 types.
 struct NiftiHeader {
   bool nifti2 = false;
+  bool analyze = false;  // an Analyze 7.5 .hdr (no NIfTI magic): no transforms, no scaling
   bool bigEndian = false;
   int64_t dim[8] = {};
   double pixdim[8] = {};
@@ -26,11 +27,15 @@ struct NiftiHeader {
   int xyztUnits = 0;  // the spatial unit in its low 3 bits: 1 metre, 2 mm, 3 micron
   double quatern[3] = {}, qoffset[3] = {};
   double srow[3][4] = {};
+  std::string analyzeUnit;  // Analyze's vox_units ("mm")
 };
 
 // Parses the first bytes of a file (at least kNifti2Size when the file has them): size field
-// (348 or 540, either byte order), magic, dims, type, scaling and both transforms. Throws
-// LoadError naming `path` for a file that is no NIfTI or is cut inside the header.
+// (348 or 540, either byte order), magic, dims, type, scaling and both transforms. A .hdr of
+// 348 bytes without the magic is Analyze 7.5, NIfTI-1's ancestor: dims, type and pixdim, its
+// vox_units as the unit, and no transform or scaling (its orientation field is ambiguous and
+// SPM's scale field is not the format's). Throws LoadError naming `path` for a file that is no
+// NIfTI or is cut inside the header.
 NiftiHeader parseNiftiHeader(const std::string& path, const std::vector<uint8_t>& bytes);
 
 // Spacing, origin, direction and frame from the sform (sform_code > 0), else the qform, else

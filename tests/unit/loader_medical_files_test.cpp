@@ -68,6 +68,35 @@ TEST(NiftiFiles, BothByteOrdersPairsAndScaling) {
   EXPECT_EQ(gz.value(1, 2, 3), 230);
 }
 
+TEST(NiftiFiles, AnalyzeHeadersWithoutTheMagicOpenWithTheirSpacing) {
+  // NIfTI-1's ancestor: the same 348 bytes without "ni1", its vox_units at byte 56, and bytes
+  // where NIfTI keeps qform_code, sform_code and scl_slope holding other things (here nonsense
+  // a NIfTI reader would turn into a transform and a scale).
+  TempDir dir;
+  NiftiFields f;
+  f.voxOffset = 0;
+  f.pixdim = {0, 0.5f, 2.0f, 3.0f, 0, 0, 0, 0};
+  f.qformCode = 1;
+  f.sformCode = 2;
+  f.sclSlope = 7.0f;
+  f.srow = {0, 3, 0, 9, 2, 0, 0, 9, 0, 0, 1, 9};
+  std::string header = testing::niftiHeader(f).substr(0, 348);
+  header.replace(344, 4, std::string(4, '\0'));
+  header.replace(56, 4, std::string("mm\0\0", 4));
+  dir.write("old.hdr", header);
+  dir.write("old.img", kVoxels24);
+  const Volume v = loadVolume(dir.path("old.img"));
+  EXPECT_EQ(v.value(1, 2, 3), 230);  // unscaled
+  EXPECT_EQ(v.spacing(), glm::dvec3(0.5, 2.0, 3.0));
+  EXPECT_EQ(v.origin(), glm::dvec3(0.0));
+  EXPECT_EQ(v.direction(), glm::dmat3(1.0));
+  EXPECT_FALSE(v.patientFrame());
+  EXPECT_EQ(v.unit(), "mm");
+  EXPECT_NE(testing::allNotes(v).find("Analyze 7.5 header"), std::string::npos);
+  // A single .nii without the magic is still no NIfTI file.
+  testing::expectVolumeLoadError(dir.write("bad.nii", header + kVoxels24), "bad NIfTI-1 magic");
+}
+
 TEST(NiftiFiles, TheSpatialUnitIsRead) {
   // xyzt_units' low three bits: none, metre, millimetre, micron; the time unit above them is not
   // a length.
