@@ -68,17 +68,15 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
   config.settings = o.render;
   config.shaderDir = o.shaderDir;
   config.recordCameraPath = o.recordCameraPath;
-  // The window keeps the last archive it opened unpacked while paging its frames and series.
-  const std::shared_ptr<ewa::ArchiveCache> archives =
-      o.archives ? o.archives : std::make_shared<ewa::ArchiveCache>();
-  config.opener = [base = o, archives](const std::string& path, const ewa::LoadOptions& load) {
+  // Every file the window opens shares `o.archives` (set in main), so the last archive stays
+  // unpacked while its frames and series are paged.
+  config.opener = [base = o](const std::string& path, const ewa::LoadOptions& load) {
     ewa::Options fileOptions = base;
     fileOptions.file = path;
     fileOptions.synthetic.clear();
     fileOptions.rawDims.clear();
     fileOptions.tfFile.clear();  // --tf was for the first volume; others use their sidecar
     fileOptions.load = load;     // so were --series, --frame and --channel: the window's own
-    fileOptions.archives = archives;
     ewa::Scene s = ewa::loadScene(fileOptions);
     ewa::LoadedVolume loaded;
     loaded.volume = std::make_shared<ewa::Volume>(std::move(s.volume));

@@ -220,12 +220,15 @@ std::string archiveVolumePath(const ExtractedArchive& archive, const std::string
   static const std::vector<std::string> kHeaders = {
       ".nrrd", ".nhdr", ".mhd", ".mha",     ".dat", ".vti",  ".vtk", ".nii",  ".nii.gz",
       ".hdr",  ".slc",  ".ome", ".ome.xml", ".mrc", ".mrcs", ".map", ".ccp4", ".rec"};
-  std::vector<std::string> volumes;
+  // One walk: the volume files with headers, and the other files, looked into only when there
+  // are none.
+  std::vector<std::string> volumes, others;
   std::error_code ec;
   for (fs::recursive_directory_iterator it(archive.folder(), ec), end; !ec && it != end;
        it.increment(ec))
-    if (it->is_regular_file(ec) && hasExtension(it->path().string(), kHeaders))
-      volumes.push_back(it->path().string());
+    if (it->is_regular_file(ec))
+      (hasExtension(it->path().string(), kHeaders) ? volumes : others)
+          .push_back(it->path().string());
   if (volumes.size() == 1) return volumes.front();
   if (volumes.size() > 1) {
     std::sort(volumes.begin(), volumes.end());
@@ -236,11 +239,9 @@ std::string archiveVolumePath(const ExtractedArchive& archive, const std::string
                        (volumes.size() > 3 ? ", ..." : "") + "): unpack it and open one");
   }
   // A DICOM series or TIFF stack, often inside a folder of its own.
-  bool images = false;
-  for (fs::recursive_directory_iterator it(archive.folder(), ec), end; !ec && it != end && !images;
-       it.increment(ec))
-    images = it->is_regular_file(ec) && (hasExtension(it->path().string(), {".tif", ".tiff"}) ||
-                                         looksLikeDicom(it->path().string()));
+  const bool images = std::any_of(others.begin(), others.end(), [](const std::string& file) {
+    return hasExtension(file, {".tif", ".tiff"}) || looksLikeDicom(file);
+  });
   if (!images)
     failLoad(path, "holds no volume file, DICOM image or TIFF file (" +
                        std::to_string(archive.files) + " other files)");

@@ -205,7 +205,7 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   else
     layout.type = fittingType(values, integral);
   layout.bigEndian = hostIsBigEndian();
-  return makeVolume(path, layout, encode(values, layout.type));
+  return makeVolume(path, layout, encodeValues(values, layout.type));
 }
 
 }  // namespace ewa

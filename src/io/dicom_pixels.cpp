@@ -250,32 +250,4 @@ FileScalar fittingType(const std::vector<double>& values, bool integral) {
   return FileScalar::Float32;
 }
 
-std::vector<uint8_t> encode(const std::vector<double>& values, FileScalar type) {
-  std::vector<uint8_t> out(values.size() * fileScalarSize(type));
-  for (size_t i = 0; i < values.size(); ++i) {
-    uint8_t* p = out.data() + i * fileScalarSize(type);
-    switch (type) {
-      case FileScalar::UInt8:
-        *p = uint8_t(values[i]);
-        break;
-      case FileScalar::Int16: {
-        const auto v = int16_t(values[i]);
-        std::memcpy(p, &v, 2);
-        break;
-      }
-      case FileScalar::UInt16: {
-        const auto v = uint16_t(values[i]);
-        std::memcpy(p, &v, 2);
-        break;
-      }
-      default: {
-        const auto v = float(values[i]);
-        std::memcpy(p, &v, 4);
-        break;
-      }
-    }
-  }
-  return out;
-}
-
 }  // namespace ewa

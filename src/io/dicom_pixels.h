@@ -25,7 +25,5 @@ struct SlicePixels {
 SlicePixels readSlice(const DicomSlice& slice, int channel = 0);
 // The narrowest volume type that holds every value exactly (`integral`: all are integers).
 FileScalar fittingType(const std::vector<double>& values, bool integral);
-// The values in `type`'s bytes (native order).
-std::vector<uint8_t> encode(const std::vector<double>& values, FileScalar type);
 
 }  // namespace ewa

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <glm/gtc/packing.hpp>
 #include <string>
 #include <vector>
 
@@ -45,21 +46,6 @@ class MrcHeader {
 bool knownMode(int32_t mode) {
   return mode == 0 || mode == 1 || mode == 2 || mode == 3 || mode == 4 || mode == 6 || mode == 12 ||
          mode == 101;
-}
-
-// IEEE half precision to float (mode 12), subnormals and infinities included.
-float halfToFloat(uint16_t h) {
-  const uint32_t sign = uint32_t(h & 0x8000u) << 16;
-  const int exponent = (h >> 10) & 0x1f;
-  const uint32_t mantissa = h & 0x3ffu;
-  float value;
-  if (exponent == 0)
-    value = std::ldexp(float(mantissa), -24);
-  else if (exponent == 31)
-    value = mantissa ? NAN : INFINITY;
-  else
-    value = std::ldexp(float(mantissa | 0x400u), exponent - 25);
-  return sign ? -value : value;
 }
 
 // The data's byte order: the machine stamp's (0x44 little-endian, 0x11 big-endian), else, for
@@ -157,18 +143,14 @@ Volume loadMrc(const std::string& path) {
   const uint64_t offset = kHeaderBytes + uint64_t(extended);
   const FileScalar stored = half ? FileScalar::Int16 : layout.type;  // 2 bytes a half float
   const uint64_t need = dataByteCount(path, layout.dims, stored);
-  if (need > size - offset)
-    failLoad(path, "file has " + std::to_string(size) + " bytes, but the data needs " +
-                       std::to_string(need) + " bytes at offset " + std::to_string(offset) +
-                       " (truncated file or wrong sizes?)");
-  std::vector<uint8_t> data = readFileRange(path, offset, need);
+  std::vector<uint8_t> data = readFileRange(path, offset, need);  // checks the file holds it
   if (half) {
     dataByteCount(path, layout.dims, FileScalar::Float32);  // the floats fit in memory too
     std::vector<uint8_t> floats(size_t(need) * 2);
     for (size_t i = 0; i < size_t(need / 2); ++i) {
       const uint16_t v = big ? uint16_t(data[2 * i] << 8 | data[2 * i + 1])
                              : uint16_t(data[2 * i + 1] << 8 | data[2 * i]);
-      const float f = halfToFloat(v);
+      const float f = glm::unpackHalf1x16(v);
       std::memcpy(&floats[4 * i], &f, 4);
     }
     data = std::move(floats);

@@ -74,13 +74,6 @@ int64_t describeStack(const std::string& path, const TiffFile& tiff, const PageF
   return f.samples > 1 ? 0 : channel;
 }
 
-// The name `name` as a file in the folder of `file`; names with folders in them are refused.
-std::string fileBeside(const std::string& path, const std::string& file, const std::string& name) {
-  if (name.find_first_of("/\\") != std::string::npos || name == "." || name == "..")
-    failLoad(path, "its OME metadata names " + quoteText(name) + ", not a file beside it");
-  return (std::filesystem::path(file).parent_path() / name).string();
-}
-
 // An OME-XML file (a companion, `.companion.ome`) whose TiffData name the TIFF files.
 Volume loadOmeXml(const std::string& path, const std::string& xmlFile, int channel, int frame) {
   constexpr uint64_t kMaxXml = uint64_t(64) << 20;
@@ -96,7 +89,7 @@ Volume loadOmeXml(const std::string& path, const std::string& xmlFile, int chann
   if (named == order.blocks.end())
     failLoad(xmlFile, "names no TIFF file (no TiffData with a UUID FileName)");
   // The first file named gives the pages' format; every other page must agree with it.
-  TiffFile tiff(fileBeside(xmlFile, xmlFile, named->file));
+  TiffFile tiff(omeFileBeside(xmlFile, xmlFile, named->file, "a TiffData"));
   if (!TIFFSetDirectory(tiff.get(), tdir_t(named->ifd)))
     tiff.fail("has no page " + std::to_string(named->ifd));
   const PageFormat f = pageFormat(tiff);
@@ -152,7 +145,7 @@ Volume loadTiff(const std::string& path, int channel, int frame) {
           text = std::string(description).substr(0, 1 << 24);  // OME-XML of many files
         const std::string metadata = omeMetadataFile(text);
         if (!metadata.empty()) {  // the XML is in a companion file beside it
-          const std::string companion = fileBeside(path, file, metadata);
+          const std::string companion = omeFileBeside(path, file, metadata, "its OME metadata");
           std::error_code missing;
           if (!std::filesystem::is_regular_file(companion, missing))
             failLoad(path, "its OME metadata file " + quoteText(metadata) + " is missing");

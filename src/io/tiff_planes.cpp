@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 
+#include "io/file_bytes.h"
 #include "io/length_unit.h"
 #include "io/load_failure.h"
 #include "io/text_fields.h"
@@ -195,11 +196,17 @@ int64_t planeNumber(const TiffPlaneOrder& o, int64_t z, int64_t c, int64_t t) {
 
 }  // namespace
 
+std::string omeFileBeside(const std::string& path, const std::string& xmlFile,
+                          const std::string& name, const std::string& namer) {
+  if (name.find_first_of("/\\") != std::string::npos || name == "." || name == "..")
+    failLoad(path, namer + " names " + quoteText(name) + ", not a file beside it");
+  return siblingPath(xmlFile, name);
+}
+
 std::map<int64_t, TiffPlaneSource> omePlaneSources(
     const std::string& path, const TiffPlaneOrder& order, int64_t channel, int64_t frame,
     const std::function<int64_t(const std::string&)>& pagesIn) {
   namespace fs = std::filesystem;
-  const fs::path folder = fs::path(path).parent_path();
   std::map<int64_t, TiffPlaneSource> out;  // not sized by SizeZ: only slices found
   std::map<std::string, int64_t> pages;
   auto pagesOf = [&](const std::string& file) {
@@ -211,9 +218,7 @@ std::map<int64_t, TiffPlaneSource> omePlaneSources(
   for (const TiffDataBlock& b : order.blocks) {
     std::string file = path;
     if (!b.file.empty()) {
-      if (b.file.find_first_of("/\\") != std::string::npos || b.file == "." || b.file == "..")
-        failLoad(path, "a TiffData names " + quoteText(b.file) + ", not a file beside this one");
-      file = (folder / b.file).string();
+      file = omeFileBeside(path, path, b.file, "a TiffData");
     }
     const int64_t first = planeNumber(order, b.firstZ, b.firstC, b.firstT);
     if (first < 0) continue;

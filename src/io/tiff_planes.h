@@ -49,6 +49,12 @@ struct TiffPlaneSource {
 TiffPlaneOrder tiffPlaneOrder(const std::string& path, const std::string& description,
                               int64_t samples);
 
+// `name` (a TiffData's FileName, a BinaryOnly's MetadataFile) as the path of a file beside
+// `xmlFile` (siblingPath). Names with folders in them, "." and ".." are refused:
+// LoadError("<path>: <namer> names 'NAME', not a file beside it").
+std::string omeFileBeside(const std::string& path, const std::string& xmlFile,
+                          const std::string& name, const std::string& namer);
+
 // The file and page of every slice of `channel` and `frame` by `order.blocks`, for the dataset
 // whose XML is in `path`. `pagesIn(file)` counts a file's pages (0 when it cannot be opened).
 // Throws LoadError("<path>: ...") for a file name leaving the folder, or a file missing that

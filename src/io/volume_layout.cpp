@@ -137,6 +137,38 @@ uint64_t dataByteCount(const std::string& path, const std::array<int64_t, 3>& di
   return bytes;
 }
 
+std::vector<uint8_t> encodeValues(const std::vector<double>& values, FileScalar type) {
+  std::vector<uint8_t> out(values.size() * fileScalarSize(type));
+  for (size_t i = 0; i < values.size(); ++i) {
+    uint8_t* p = out.data() + i * fileScalarSize(type);
+    const double v = values[i];
+    switch (type) {
+      case FileScalar::UInt8:
+        *p = uint8_t(std::fmin(std::fmax(std::round(v), 0.0), 255.0));
+        break;
+      case FileScalar::Int8:
+        *p = uint8_t(int8_t(std::fmin(std::fmax(std::round(v), -128.0), 127.0)));
+        break;
+      case FileScalar::Int16: {
+        const auto s = int16_t(std::fmin(std::fmax(std::round(v), -32768.0), 32767.0));
+        std::memcpy(p, &s, 2);
+        break;
+      }
+      case FileScalar::UInt16: {
+        const auto s = uint16_t(std::fmin(std::fmax(std::round(v), 0.0), 65535.0));
+        std::memcpy(p, &s, 2);
+        break;
+      }
+      case FileScalar::Float32: {
+        const auto f = float(v);
+        std::memcpy(p, &f, 4);
+        break;
+      }
+    }
+  }
+  return out;
+}
+
 Volume makeVolume(const std::string& path, const VolumeLayout& layout, std::vector<uint8_t> bytes) {
   const uint64_t expected = dataByteCount(path, layout.dims, layout.type);
   if (bytes.size() != expected) {

@@ -40,6 +40,10 @@ struct VolumeLayout {
 uint64_t dataByteCount(const std::string& path, const std::array<int64_t, 3>& dims,
                        FileScalar type);
 
+// `values` as `type`'s bytes (native order), integers rounded and clamped to the type's range:
+// values a loader computed or parsed as numbers (DICOM after rescale, ASCII legacy VTK).
+std::vector<uint8_t> encodeValues(const std::vector<double>& values, FileScalar type);
+
 // Builds the Volume from the file's data bytes: native byte order, Int8 widened to Int16,
 // negative spacing taken by magnitude, zero or non-finite spacing/origin rejected, a sheared
 // grid (gantry tilt) resampled within each slice onto an upright one (shear_resample.h), the

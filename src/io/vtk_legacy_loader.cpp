@@ -90,39 +90,6 @@ double binaryValue(const ScalarKind& kind, const uint8_t* p) {
   return double(int64_t(bits << shift) >> shift);
 }
 
-// `values` stored as `type` (native byte order), integers rounded and clamped to its range.
-std::vector<uint8_t> encodeValues(const std::vector<double>& values, FileScalar type) {
-  std::vector<uint8_t> out(values.size() * fileScalarSize(type));
-  for (size_t i = 0; i < values.size(); ++i) {
-    uint8_t* p = out.data() + i * fileScalarSize(type);
-    const double v = values[i];
-    switch (type) {
-      case FileScalar::UInt8:
-        *p = uint8_t(std::fmin(std::fmax(std::round(v), 0.0), 255.0));
-        break;
-      case FileScalar::Int8:
-        *p = uint8_t(int8_t(std::fmin(std::fmax(std::round(v), -128.0), 127.0)));
-        break;
-      case FileScalar::Int16: {
-        const auto s = int16_t(std::fmin(std::fmax(std::round(v), -32768.0), 32767.0));
-        std::memcpy(p, &s, 2);
-        break;
-      }
-      case FileScalar::UInt16: {
-        const auto s = uint16_t(std::fmin(std::fmax(std::round(v), 0.0), 65535.0));
-        std::memcpy(p, &s, 2);
-        break;
-      }
-      case FileScalar::Float32: {
-        const auto f = float(v);
-        std::memcpy(p, &f, 4);
-        break;
-      }
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 Volume loadVtkLegacy(const std::string& path) {
@@ -196,11 +163,7 @@ Volume loadVtkLegacy(const std::string& path) {
   const uint64_t offset = lines.offset();
   if (encoding == "binary") {
     const uint64_t need = voxels * kind.bytes;  // no overflow: checked as float32 above x2
-    if (need > size - offset)
-      failLoad(path, "file has " + std::to_string(size) + " bytes, but the data needs " +
-                         std::to_string(need) + " bytes at offset " + std::to_string(offset) +
-                         " (truncated file or wrong sizes?)");
-    const std::vector<uint8_t> data = readFileRange(path, offset, need);
+    const std::vector<uint8_t> data = readFileRange(path, offset, need);  // checks the range
     if (!kind.convert && kind.bytes > 1) {  // big-endian as VTK writes it
       layout.bigEndian = true;
       return makeVolume(path, layout, data);

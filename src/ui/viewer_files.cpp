@@ -100,20 +100,20 @@ void ViewerWindow::requestPage(const LoadOptions& load) {
     startLoad(current_.path, load, true);
 }
 
-void ViewerWindow::stepFrame(int step) {
-  const int count = current_.volume->frameCount();
+// Steps `which` (the frame or the channel) of the page by `step`, round the `count` there are.
+void ViewerWindow::stepPage(int LoadOptions::*which, int count, int step) {
   if (count <= 1 || current_.path.empty()) return;
   LoadOptions load = pageBase();
-  load.frame = ((load.frame + step) % count + count) % count;
+  load.*which = ((load.*which + step) % count + count) % count;
   requestPage(load);
 }
 
+void ViewerWindow::stepFrame(int step) {
+  stepPage(&LoadOptions::frame, current_.volume->frameCount(), step);
+}
+
 void ViewerWindow::stepChannel(int step) {
-  const int count = current_.volume->channelCount();
-  if (count <= 1 || current_.path.empty()) return;
-  LoadOptions load = pageBase();
-  load.channel = ((load.channel + step) % count + count) % count;
-  requestPage(load);
+  stepPage(&LoadOptions::channel, current_.volume->channelCount(), step);
 }
 
 void ViewerWindow::openSeries(const std::string& id) {

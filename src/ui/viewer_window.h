@@ -91,6 +91,7 @@ class ViewerWindow {
   void stepChannel(int step);
   LoadOptions pageBase() const;
   void requestPage(const LoadOptions& load);
+  void stepPage(int LoadOptions::*which, int count, int step);
   // Another series of the open DICOM folder (Volume::seriesChoices), as --series opens it.
   void openSeries(const std::string& id);
   void pollLoad();
