@@ -13,6 +13,7 @@
 
 #include "io/byte_order.h"
 #include "io/dicom_colour.h"
+#include "io/dicom_series.h"
 #include "io/file_bytes.h"
 #include "io/format_loaders.h"
 #include "io/jpeg_header_check.h"
@@ -152,8 +153,10 @@ struct Walk {
           return fail(pos, "pixel data (7FE0,0010) of VR " + std::string(vr, vr + 2));
         if (declared == 0xffffffffu && !sq && !un && !pixelData)
           return fail(pos, "an undefined length for VR " + std::string(vr, vr + 2));
-        if (group == 0x0028 && !metaOnly && !vrFitsDictionary(group, element, vr))
-          return fail(pos, "element (0028," + hex(element) + ") of VR " + std::string(vr, vr + 2));
+        if ((group == 0x0028 || isScannedDicomTag(group, element)) && !metaOnly &&
+            !vrFitsDictionary(group, element, vr))
+          return fail(pos, "element (" + hex(group) + "," + hex(element) + ") of VR " +
+                               std::string(vr, vr + 2));
         if (longVr(vr)) {
           if (n - pos < 12) return fail(pos, "an element header is cut short");
           length = readUnsigned(&bytes[pos + 8], 4, big);

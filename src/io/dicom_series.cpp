@@ -34,6 +34,12 @@ const gdcm::Tag kRepresentation(0x0028, 0x0103);
 const gdcm::Tag kPhotometric(0x0028, 0x0004);
 const gdcm::Tag kPlanarConfiguration(0x0028, 0x0006);
 const gdcm::Tag kInstance(0x0020, 0x0013);
+// What the scanner reads from every file (and dicom_guard checks first: isScannedDicomTag).
+const gdcm::Tag kScannedTags[] = {
+    kSeriesUid,  kSeriesDescription, kPosition,       kOrientation,     kRows,
+    kColumns,    kPixelSpacing,      kFrames,         kSamplesPerPixel, kBitsAllocated,
+    kBitsStored, kHighBit,           kRepresentation, kPhotometric,     kPlanarConfiguration,
+    kInstance};
 
 int64_t integer(const char* text) {
   int64_t v = 0;
@@ -85,6 +91,12 @@ std::vector<std::string> dicomCandidates(const std::string& folder, bool below,
 
 }  // namespace
 
+bool isScannedDicomTag(uint16_t group, uint16_t element) {
+  for (const gdcm::Tag& t : kScannedTags)
+    if (t.GetGroup() == group && t.GetElement() == element) return true;
+  return false;
+}
+
 std::vector<double> dicomNumbers(const char* text) {
   std::vector<double> out;
   if (!text) return out;
@@ -109,11 +121,7 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
   std::error_code ec;
 
   gdcm::Scanner scanner;
-  for (const gdcm::Tag& t :
-       {kSeriesUid, kSeriesDescription, kPosition, kOrientation, kRows, kColumns, kPixelSpacing,
-        kFrames, kSamplesPerPixel, kBitsAllocated, kBitsStored, kHighBit, kRepresentation,
-        kPhotometric, kPlanarConfiguration, kInstance})
-    scanner.AddTag(t);
+  for (const gdcm::Tag& t : kScannedTags) scanner.AddTag(t);
   if (!files.empty() && !scanner.Scan(files)) failLoad(folder, "cannot read the DICOM headers");
 
   std::map<std::string, DicomSeries> byUid;

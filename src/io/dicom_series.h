@@ -72,4 +72,9 @@ std::vector<double> dicomNumbers(const char* text);
 glm::dvec3 sortDicomSlices(const std::string& path, std::vector<DicomSlice>& slices,
                            std::vector<std::string>& notes);
 
+// Whether the series scanner (gdcm::Scanner) reads this tag from every file; its string filter
+// asserts on a VR it has no conversion for (UV, found by fuzzing), so dicom_guard checks these
+// tags' VRs against the dictionary before GDCM reads the file.
+bool isScannedDicomTag(uint16_t group, uint16_t element);
+
 }  // namespace ewa
