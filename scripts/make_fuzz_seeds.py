@@ -7,6 +7,7 @@ data.1, ...), so seeds are tiny and still reach the data-reading code. Run it ag
 shared data or the harness's input format changes; the output is deterministic.
 """
 import base64
+import bz2
 import os
 import re
 import struct
@@ -113,6 +114,18 @@ def nrrd_seeds():
     rgb = ("NRRD0004\ntype: uchar\ndimension: 4\nsizes: 3 4 3 2\n"
            "kinds: RGB-color domain domain domain\nencoding: raw\n\n").encode()
     write("nrrd", "rgb4d.nrrd", rgb + payload(3 * n, 1, 9))
+    # The other encodings (bzip2, ASCII, hex) and a wide type made float32.
+    def small(type_name, encoding, extra=""):
+        return ("NRRD0005\ntype: %s\ndimension: 3\nsizes: %d %d %d\nencoding: %s\n%s\n"
+                % ((type_name,) + SIZES + (encoding, extra))).encode()
+    write("nrrd", "bzip2.nrrd", small("ushort", "bzip2", "endian: big\n")
+          + bz2.compress(payload(n, 2, 10)))
+    write("nrrd", "ascii.nrrd", small("short", "ascii")
+          + " ".join(str((i * 37) % 500 - 250) for i in range(n)).encode() + b"\n")
+    write("nrrd", "hex.nrrd", small("float", "hex", "endian: little\n")
+          + payload(n, 4, 11).hex().encode() + b"\n")
+    write("nrrd", "double.nrrd", small("double", "raw", "endian: little\n")
+          + struct.pack("<%dd" % n, *[float(i * 3 - 10) for i in range(n)]))
 
 
 def metaimage_seeds():

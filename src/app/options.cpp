@@ -198,7 +198,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       ->check(CLI::IsMember({"osmesa", "egl"}));
   app.add_option("--shader-dir", o->shaderDir, "Load shaders from this folder (development)");
   auto* rawDims = app.add_option("--raw-dims", o->rawDims, "Raw input: dims X,Y,Z");
-  app.add_option("--raw-type", o->rawType, "Raw input: uint8, int16, uint16 or float32")
+  app.add_option(
+         "--raw-type", o->rawType,
+         "Raw input: int8, uint8, int16, uint16, int32, uint32, int64, uint64, float32 or float64")
       ->needs(rawDims);
   app.add_option("--raw-spacing", o->rawSpacing, "Raw input: spacing X,Y,Z (default 1,1,1)")
       ->needs(rawDims);

@@ -1,4 +1,4 @@
-// zlib/gzip inflation to an exactly known size, for compressed volume data.
+// zlib/gzip and bzip2 decompression to an exactly known size, for compressed volume data.
 #pragma once
 
 #include <cstddef>
@@ -21,5 +21,10 @@ std::vector<uint8_t> inflateExact(const std::string& path, const uint8_t* data, 
 // Throws LoadError for corrupt data; the caller checks that it got as many bytes as it needs.
 std::vector<uint8_t> inflatePrefix(const std::string& path, const uint8_t* data, size_t size,
                                    uint64_t maxBytes, const std::string& what);
+
+// Decompresses a bzip2 stream (streams that follow one another are joined, as pbzip2 writes
+// them) that must yield exactly `expectedSize` bytes; otherwise as inflateExact.
+std::vector<uint8_t> bunzip2Exact(const std::string& path, const uint8_t* data, size_t size,
+                                  uint64_t expectedSize, const std::string& what);
 
 }  // namespace ewa

@@ -32,15 +32,18 @@ size_t headerEnd(std::string_view text) {
 }
 
 FileScalar parseElementType(const std::string& path, const std::string& value) {
-  if (value == "MET_UCHAR") return FileScalar::UInt8;
-  if (value == "MET_CHAR") return FileScalar::Int8;
-  if (value == "MET_SHORT") return FileScalar::Int16;
-  if (value == "MET_USHORT") return FileScalar::UInt16;
-  if (value == "MET_FLOAT") return FileScalar::Float32;
-  if (value.compare(0, 4, "MET_") == 0) {
-    failLoad(path, "unsupported ElementType " + quoteText(value) +
-                       " (supported: MET_UCHAR, MET_CHAR, MET_SHORT, MET_USHORT, MET_FLOAT)");
-  }
+  // MetaIO's sizes: MET_LONG is 4 bytes, MET_LONG_LONG 8.
+  static const std::pair<const char*, FileScalar> kTypes[] = {
+      {"MET_UCHAR", FileScalar::UInt8},     {"MET_CHAR", FileScalar::Int8},
+      {"MET_SHORT", FileScalar::Int16},     {"MET_USHORT", FileScalar::UInt16},
+      {"MET_INT", FileScalar::Int32},       {"MET_UINT", FileScalar::UInt32},
+      {"MET_LONG", FileScalar::Int32},      {"MET_ULONG", FileScalar::UInt32},
+      {"MET_LONG_LONG", FileScalar::Int64}, {"MET_ULONG_LONG", FileScalar::UInt64},
+      {"MET_FLOAT", FileScalar::Float32},   {"MET_DOUBLE", FileScalar::Float64}};
+  for (const auto& [name, type] : kTypes)
+    if (value == name) return type;
+  if (value.compare(0, 4, "MET_") == 0)
+    failLoad(path, "unsupported ElementType " + quoteText(value) + " (scalar numbers only)");
   failLoad(path, "unknown ElementType " + quoteText(value));
 }
 

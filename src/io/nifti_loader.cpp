@@ -21,76 +21,34 @@ namespace ewa {
 
 namespace {
 
-// The file's voxel type: its size in bytes and how a value is read.
-struct NiftiType {
-  const char* name;
-  size_t size;
-};
-
-NiftiType niftiType(const std::string& path, int datatype) {
+// The file's voxel type: NIfTI's datatype codes of scalar numbers.
+FileScalar niftiType(const std::string& path, int datatype) {
   switch (datatype) {
     case 2:
-      return {"uint8", 1};
+      return FileScalar::UInt8;
     case 4:
-      return {"int16", 2};
+      return FileScalar::Int16;
     case 8:
-      return {"int32", 4};
+      return FileScalar::Int32;
     case 16:
-      return {"float32", 4};
+      return FileScalar::Float32;
     case 64:
-      return {"float64", 8};
+      return FileScalar::Float64;
     case 256:
-      return {"int8", 1};
+      return FileScalar::Int8;
     case 512:
-      return {"uint16", 2};
+      return FileScalar::UInt16;
     case 768:
-      return {"uint32", 4};
+      return FileScalar::UInt32;
+    case 1024:
+      return FileScalar::Int64;
+    case 1280:
+      return FileScalar::UInt64;
     default:
       failLoad(path, "unsupported NIfTI datatype " + std::to_string(datatype) +
-                         " (supported: uint8, int8, int16, uint16, int32, uint32, float32, "
-                         "float64)");
+                         " (supported: uint8, int8, int16, uint16, int32, uint32, int64, uint64, "
+                         "float32, float64)");
   }
-}
-
-// One value of the file's type at `p` (already in native byte order) as a double.
-double readValue(int datatype, const uint8_t* p) {
-  switch (datatype) {
-    case 2:
-      return *p;
-    case 256:
-      return int8_t(*p);
-    case 4: {
-      int16_t v;
-      std::memcpy(&v, p, 2);
-      return v;
-    }
-    case 512: {
-      uint16_t v;
-      std::memcpy(&v, p, 2);
-      return v;
-    }
-    case 8: {
-      int32_t v;
-      std::memcpy(&v, p, 4);
-      return v;
-    }
-    case 768: {
-      uint32_t v;
-      std::memcpy(&v, p, 4);
-      return v;
-    }
-    case 16: {
-      float v;
-      std::memcpy(&v, p, 4);
-      return v;
-    }
-    case 64: {
-      double v;
-      std::memcpy(&v, p, 8);
-      return v;
-    }
-  }
-  return 0.0;
 }
 
 bool endsWith(const std::string& text, const std::string& suffix) {
@@ -134,7 +92,8 @@ Volume loadNifti(const std::string& path, int frame) {
     if (h.dim[i] > 1)
       failLoad(headerPath, std::to_string(ndim) + "D NIfTI data (dim[" + std::to_string(i) +
                                "] = " + std::to_string(h.dim[i]) + ") is not supported (up to 4D)");
-  const NiftiType type = niftiType(headerPath, h.datatype);
+  const FileScalar type = niftiType(headerPath, h.datatype);
+  const size_t typeSize = fileScalarSize(type);
   VolumeLayout layout;
   layout.dims = {1, 1, 1};
   for (int a = 0; a < 3 && a < ndim; ++a) layout.dims[a] = h.dim[a + 1];
@@ -142,12 +101,7 @@ Volume loadNifti(const std::string& path, int frame) {
   checkFrame(headerPath, frame, frames);
 
   // Sizes in the file's type first (checked against overflow and memory before any read).
-  const FileScalar sizeProxy = type.size == 1   ? FileScalar::UInt8
-                               : type.size == 2 ? FileScalar::UInt16
-                                                : FileScalar::Float32;
-  uint64_t frameBytes = dataByteCount(headerPath, layout.dims, sizeProxy);
-  if (type.size == 8) frameBytes *= 2;  // float64: checked as float32, memory checked below
-  checkAllocation(headerPath, frameBytes, "NIfTI frame");
+  const uint64_t frameBytes = dataByteCount(headerPath, layout.dims, type);
   if (!std::isfinite(h.voxOffset) || h.voxOffset < 0.0 || h.voxOffset > 1e18)
     failLoad(headerPath, "bad vox_offset " + std::to_string(h.voxOffset));
   const auto offset = uint64_t(h.voxOffset);  // into the .img of a pair
@@ -181,7 +135,7 @@ Volume loadNifti(const std::string& path, int frame) {
                              " is beyond the end of the file (" + std::to_string(size) + " bytes)");
     raw = readFileRange(dataPath, start, frameBytes);
   }
-  if (h.bigEndian != hostIsBigEndian()) swapBytes(raw.data(), raw.size(), type.size);
+  if (h.bigEndian != hostIsBigEndian()) swapBytes(raw.data(), raw.size(), typeSize);
 
   placeNiftiInWorld(h, layout);
   layout.frame = frame;
@@ -189,34 +143,24 @@ Volume loadNifti(const std::string& path, int frame) {
   if (frames > 1)
     layout.notes.push_back("4D file with " + std::to_string(frames) + " frames; showing frame " +
                            std::to_string(frame) + " (--frame N picks another)");
-  // Scaling applies when scl_slope is set and not the identity; wide types become float32.
+  // Scaling applies when scl_slope is set and not the identity; makeVolume converts wide types.
   const bool scaled = h.sclSlope != 0.0 && std::isfinite(h.sclSlope) && std::isfinite(h.sclInter) &&
                       !(h.sclSlope == 1.0 && h.sclInter == 0.0);
-  const bool wide = h.datatype == 8 || h.datatype == 768 || h.datatype == 64;
-  if (!scaled && !wide) {
-    layout.type = h.datatype == 2     ? FileScalar::UInt8
-                  : h.datatype == 256 ? FileScalar::Int8
-                  : h.datatype == 4   ? FileScalar::Int16
-                  : h.datatype == 512 ? FileScalar::UInt16
-                                      : FileScalar::Float32;
-    layout.bigEndian = hostIsBigEndian();
-    return makeVolume(path, layout, std::move(raw));
-  }
-  const uint64_t count = frameBytes / type.size;
+  layout.bigEndian = hostIsBigEndian();
+  layout.type = type;
+  if (!scaled) return makeVolume(path, layout, std::move(raw));
+  const uint64_t count = frameBytes / typeSize;
   checkAllocation(headerPath, count * 4, "float32 volume");
   std::vector<uint8_t> out(size_t(count) * 4);
-  const double slope = scaled ? h.sclSlope : 1.0, inter = scaled ? h.sclInter : 0.0;
   for (uint64_t n = 0; n < count; ++n) {
-    const float v = float(readValue(h.datatype, &raw[size_t(n) * type.size]) * slope + inter);
+    const auto v =
+        float(fileScalarValue(type, &raw[size_t(n) * typeSize]) * h.sclSlope + h.sclInter);
     std::memcpy(&out[size_t(n) * 4], &v, 4);
   }
   layout.type = FileScalar::Float32;
-  layout.bigEndian = hostIsBigEndian();
-  layout.notes.push_back(std::string(type.name) + " data" +
-                         (scaled ? " scaled by scl_slope " + std::to_string(h.sclSlope) +
-                                       " and scl_inter " + std::to_string(h.sclInter)
-                                 : std::string()) +
-                         ", converted to float32");
+  layout.notes.push_back(std::string(fileScalarName(type)) + " data scaled by scl_slope " +
+                         std::to_string(h.sclSlope) + " and scl_inter " +
+                         std::to_string(h.sclInter) + ", converted to float32");
   return makeVolume(path, layout, std::move(out));
 }
 

@@ -28,57 +28,46 @@ size_t headerEnd(std::string_view text) {
 }
 
 FileScalar parseType(const std::string& path, const std::string& value) {
-  const std::string t = toLower(value);
-  std::string name;  // words joined by single spaces
-  for (const std::string& w : splitWords(t)) name += (name.empty() ? "" : " ") + w;
-  for (const char* n : {"uchar", "unsigned char", "uint8", "uint8_t"})
-    if (name == n) return FileScalar::UInt8;
-  for (const char* n : {"signed char", "int8", "int8_t"})
-    if (name == n) return FileScalar::Int8;
-  for (const char* n :
-       {"short", "short int", "signed short", "signed short int", "int16", "int16_t"})
-    if (name == n) return FileScalar::Int16;
-  for (const char* n : {"ushort", "unsigned short", "unsigned short int", "uint16", "uint16_t"})
-    if (name == n) return FileScalar::UInt16;
-  if (name == "float") return FileScalar::Float32;
-  for (const char* n : {"int",
-                        "signed int",
-                        "int32",
-                        "int32_t",
-                        "uint",
-                        "unsigned int",
-                        "uint32",
-                        "uint32_t",
-                        "longlong",
-                        "long long",
-                        "long long int",
-                        "signed long long",
-                        "signed long long int",
-                        "int64",
-                        "int64_t",
-                        "ulonglong",
-                        "unsigned long long",
-                        "unsigned long long int",
-                        "uint64",
-                        "uint64_t",
-                        "double",
-                        "block"}) {
-    if (name == n) {
-      failLoad(path, "unsupported type " + quoteText(value) +
-                         " (supported: uchar, signed char, short, ushort, float)");
-    }
-  }
+  struct Names {
+    FileScalar type;
+    std::vector<const char*> names;
+  };
+  // The type names NRRD's format definition allows, lowercased, words joined by one space.
+  static const std::vector<Names> kTypes = {
+      {FileScalar::UInt8, {"uchar", "unsigned char", "uint8", "uint8_t"}},
+      {FileScalar::Int8, {"signed char", "int8", "int8_t"}},
+      {FileScalar::Int16,
+       {"short", "short int", "signed short", "signed short int", "int16", "int16_t"}},
+      {FileScalar::UInt16,
+       {"ushort", "unsigned short", "unsigned short int", "uint16", "uint16_t"}},
+      {FileScalar::Int32, {"int", "signed int", "int32", "int32_t"}},
+      {FileScalar::UInt32, {"uint", "unsigned int", "uint32", "uint32_t"}},
+      {FileScalar::Int64,
+       {"longlong", "long long", "long long int", "signed long long", "signed long long int",
+        "int64", "int64_t"}},
+      {FileScalar::UInt64,
+       {"ulonglong", "unsigned long long", "unsigned long long int", "uint64", "uint64_t"}},
+      {FileScalar::Float32, {"float"}},
+      {FileScalar::Float64, {"double"}}};
+  std::string name;
+  for (const std::string& w : splitWords(toLower(value))) name += (name.empty() ? "" : " ") + w;
+  for (const Names& t : kTypes)
+    for (const char* n : t.names)
+      if (name == n) return t.type;
+  if (name == "block") failLoad(path, "unsupported type 'block' (numbers only)");
   failLoad(path, "unknown type " + quoteText(value));
 }
 
-bool parseGzipEncoding(const std::string& path, const std::string& value) {
+NrrdEncoding parseEncoding(const std::string& path, const std::string& value) {
   const std::string e = toLower(value);
-  if (e == "raw") return false;
-  if (e == "gzip" || e == "gz") return true;
-  if (e == "ascii" || e == "text" || e == "txt" || e == "hex" || e == "bzip2" || e == "bz2" ||
-      e == "zstd" || e == "zrl") {
-    failLoad(path, "unsupported encoding " + quoteText(value) + " (supported: raw, gzip)");
-  }
+  if (e == "raw") return NrrdEncoding::Raw;
+  if (e == "gzip" || e == "gz") return NrrdEncoding::Gzip;
+  if (e == "bzip2" || e == "bz2") return NrrdEncoding::Bzip2;
+  if (e == "ascii" || e == "text" || e == "txt") return NrrdEncoding::Ascii;
+  if (e == "hex") return NrrdEncoding::Hex;
+  if (e == "zstd" || e == "zrl")
+    failLoad(path, "unsupported encoding " + quoteText(value) +
+                       " (supported: raw, gzip, bzip2, ascii, hex)");
   failLoad(path, "unknown encoding " + quoteText(value));
 }
 
@@ -303,7 +292,7 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
       h.layout.type = parseType(path, value);
       haveType = true;
     } else if (key == "encoding") {
-      h.gzip = parseGzipEncoding(path, value);
+      h.encoding = parseEncoding(path, value);
       haveEncoding = true;
     } else if (key == "endian") {
       const std::string e = toLower(value);
@@ -355,7 +344,8 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
   if (!directions.empty() && directions.size() != dim)
     failLoad(path, "space directions count does not match dimension");
   if (listFollows && h.dataFiles.empty()) failLoad(path, "data file LIST names no files");
-  if (h.gzip && h.byteSkip < 0) failLoad(path, "byte skip -1 is only allowed with raw encoding");
+  if (h.encoding != NrrdEncoding::Raw && h.byteSkip < 0)
+    failLoad(path, "byte skip -1 is only allowed with raw encoding");
   if (h.subdim > h.dimension) failLoad(path, "data file subdimension exceeds the dimension");
   h.sizes = sizes;
   if (dim == 4) {

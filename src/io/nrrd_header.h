@@ -10,13 +10,17 @@
 
 namespace ewa {
 
+// How the data are written: bytes as they are, compressed, or as text (ascii: numbers between
+// white space; hex: two hex digits a byte).
+enum class NrrdEncoding { Raw, Gzip, Bzip2, Ascii, Hex };
+
 struct NrrdHeader {
   VolumeLayout layout;         // the spatial sizes padded to 3D, spacing, origin, type, endian
   int dimension = 0;           // as written (1..4)
   std::vector<int64_t> sizes;  // as written, every axis (data file subdimensions count them)
   NrrdExtraAxis extra;         // a 4D file's axis that is not spatial
-  bool gzip = false;           // "gzip"/"gz" encoding, else raw
-  int64_t byteSkip = 0;        // -1: data ends at the end of the file (raw only)
+  NrrdEncoding encoding = NrrdEncoding::Raw;
+  int64_t byteSkip = 0;  // -1: data ends at the end of the file (raw only)
   int64_t lineSkip = 0;
   std::vector<std::string> dataFiles;  // paths resolved against the header; empty: attached
   int subdim = 0;                      // axes held by each data file; 0: split evenly

@@ -1,15 +1,17 @@
-// NRRD data reading: attached or detached, one or many data files, raw or gzip encoding.
+// NRRD data reading: attached or detached, one or many data files, raw, compressed or text.
 #include <algorithm>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "io/byte_order.h"
 #include "io/decompress.h"
 #include "io/file_bytes.h"
 #include "io/format_loaders.h"
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
 #include "io/nrrd_header.h"
+#include "io/text_numbers.h"
 
 namespace ewa {
 
@@ -70,24 +72,42 @@ std::vector<uint8_t> readRaw(const NrrdHeader& h, const std::vector<DataPiece>& 
   return bytes;
 }
 
-std::vector<uint8_t> readGzip(const NrrdHeader& h, const std::vector<DataPiece>& pieces,
-                              uint64_t perFile) {
-  // In gzip files the line skip counts raw lines, the byte skip counts inflated bytes.
-  const uint64_t skip = static_cast<uint64_t>(h.byteSkip);
+// One data file's bytes, decoded. The line skip counts lines of the file; the byte skip counts
+// decompressed bytes in compressed data and characters in text. Text numbers come out in
+// native byte order, hex bytes in the header's.
+std::vector<uint8_t> readEncoded(const NrrdHeader& h, const DataPiece& piece, uint64_t bytes) {
+  const uint64_t offset = skipLines(piece.file, piece.start, h.lineSkip);
+  const auto skip = static_cast<uint64_t>(h.byteSkip);  // not -1: only raw data allow it
+  if (skip > UINT64_MAX - bytes - offset) failLoad(piece.file, "byte skip is too large");
+  switch (h.encoding) {
+    case NrrdEncoding::Ascii: {
+      const uint64_t count = bytes / fileScalarSize(h.layout.type);
+      return encodeValues(readTextNumbers(piece.file, offset + skip, count, "ASCII data"),
+                          h.layout.type);
+    }
+    case NrrdEncoding::Hex:
+      return readHexBytes(piece.file, offset + skip, bytes, "hex data");
+    default:
+      break;
+  }
+  const bool gzip = h.encoding == NrrdEncoding::Gzip;
+  const char* what = gzip ? "gzip data" : "bzip2 data";
+  const std::vector<uint8_t> packed =
+      readFileRange(piece.file, offset, regularFileSize(piece.file) - offset, what);
+  std::vector<uint8_t> data =
+      gzip ? inflateExact(piece.file, packed.data(), packed.size(), skip + bytes, what)
+           : bunzip2Exact(piece.file, packed.data(), packed.size(), skip + bytes, what);
+  data.erase(data.begin(), data.begin() + static_cast<std::ptrdiff_t>(skip));
+  return data;
+}
+
+std::vector<uint8_t> readDecoded(const NrrdHeader& h, const std::vector<DataPiece>& pieces,
+                                 uint64_t perFile) {
+  if (pieces.size() == 1) return readEncoded(h, pieces[0], perFile);  // the usual case: no copy
   std::vector<uint8_t> bytes;
   for (const DataPiece& piece : pieces) {
-    const uint64_t offset = skipLines(piece.file, piece.start, h.lineSkip);
-    const uint64_t size = regularFileSize(piece.file);
-    if (skip > UINT64_MAX - perFile) failLoad(piece.file, "byte skip is too large");
-    const std::vector<uint8_t> packed =
-        readFileRange(piece.file, offset, size - offset, "gzip data");
-    std::vector<uint8_t> data =
-        inflateExact(piece.file, packed.data(), packed.size(), skip + perFile, "gzip data");
-    if (pieces.size() == 1) {  // the usual case: no copy
-      data.erase(data.begin(), data.begin() + static_cast<std::ptrdiff_t>(skip));
-      return data;
-    }
-    bytes.insert(bytes.end(), data.begin() + static_cast<std::ptrdiff_t>(skip), data.end());
+    const std::vector<uint8_t> data = readEncoded(h, piece, perFile);
+    bytes.insert(bytes.end(), data.begin(), data.end());
   }
   return bytes;
 }
@@ -136,7 +156,8 @@ Volume loadNrrd(const std::string& path, int frame, int channel) {
     for (const std::string& f : h.dataFiles) pieces.push_back({f, 0});
   }
   const uint64_t perFile = bytesPerFile(path, h, total, pieces.size());
-  if (h.extra.axis == 3 && !h.gzip && pieces.size() == 1) {
+  const bool raw = h.encoding == NrrdEncoding::Raw;
+  if (h.extra.axis == 3 && raw && pieces.size() == 1) {
     // Time points last in one raw file: only the one asked for is read.
     const uint64_t offset = rawDataOffset(h, pieces[0], total);
     return makeVolume(path, layout,
@@ -145,7 +166,8 @@ Volume loadNrrd(const std::string& path, int frame, int channel) {
   }
   if (h.extra.axis >= 0) checkAllocation(path, total, "4D NRRD data");
   std::vector<uint8_t> bytes =
-      h.gzip ? readGzip(h, pieces, perFile) : readRaw(h, pieces, perFile, total);
+      raw ? readRaw(h, pieces, perFile, total) : readDecoded(h, pieces, perFile);
+  if (h.encoding == NrrdEncoding::Ascii) layout.bigEndian = hostIsBigEndian();
   if (h.extra.axis >= 0)
     bytes = nrrdVolumeOf(bytes, h.extra, index, volumeBytes / fileScalarSize(layout.type),
                          fileScalarSize(layout.type));

@@ -17,6 +17,26 @@ namespace {
   throw LoadError(oneLine(option + ": " + problem));
 }
 
+FileScalar rawType(const std::string& type) {
+  static const std::pair<const char*, FileScalar> kAliases[] = {
+      {"", FileScalar::UInt8},        {"char", FileScalar::Int8},
+      {"uchar", FileScalar::UInt8},   {"short", FileScalar::Int16},
+      {"ushort", FileScalar::UInt16}, {"int", FileScalar::Int32},
+      {"uint", FileScalar::UInt32},   {"float", FileScalar::Float32},
+      {"double", FileScalar::Float64}};
+  const std::string t = toLower(trim(type));
+  for (const auto& [name, scalar] : kAliases)
+    if (t == name) return scalar;
+  for (FileScalar scalar :
+       {FileScalar::Int8, FileScalar::UInt8, FileScalar::Int16, FileScalar::UInt16,
+        FileScalar::Int32, FileScalar::UInt32, FileScalar::Int64, FileScalar::UInt64,
+        FileScalar::Float32, FileScalar::Float64})
+    if (t == fileScalarName(scalar)) return scalar;
+  failOption("--raw-type", "unknown type " + quoteText(type) +
+                               " (expected int8, uint8, int16, uint16, int32, uint32, int64, "
+                               "uint64, float32 or float64)");
+}
+
 }  // namespace
 
 RawOptions parseRawOptions(const std::string& dims, const std::string& type,
@@ -38,18 +58,7 @@ RawOptions parseRawOptions(const std::string& dims, const std::string& type,
   }
   options.dims = {d[0], d[1], d[2]};
 
-  const std::string t = toLower(trim(type));
-  if (t.empty() || t == "uint8" || t == "uchar")
-    options.type = ScalarType::UInt8;
-  else if (t == "int16" || t == "short")
-    options.type = ScalarType::Int16;
-  else if (t == "uint16" || t == "ushort")
-    options.type = ScalarType::UInt16;
-  else if (t == "float32" || t == "float")
-    options.type = ScalarType::Float32;
-  else
-    failOption("--raw-type",
-               "unknown type " + quoteText(type) + " (expected uint8, int16, uint16 or float32)");
+  options.type = rawType(type);
 
   const std::string spacingText = trim(spacing);
   if (!spacingText.empty()) {
@@ -85,7 +94,7 @@ Volume loadRawVolume(const std::string& path, const RawOptions& options) {
   VolumeLayout layout;
   layout.dims = options.dims;
   layout.spacing = options.spacing;
-  layout.type = fileScalarOf(options.type);
+  layout.type = options.type;
   layout.bigEndian = options.bigEndian;
   try {
     const uint64_t total = dataByteCount(path, layout.dims, layout.type);

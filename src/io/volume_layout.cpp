@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "core/shear_resample.h"
 #include "core/volume_orientation.h"
@@ -23,7 +25,13 @@ size_t fileScalarSize(FileScalar type) {
     case FileScalar::UInt16:
       return 2;
     case FileScalar::Float32:
+    case FileScalar::Int32:
+    case FileScalar::UInt32:
       return 4;
+    case FileScalar::Int64:
+    case FileScalar::UInt64:
+    case FileScalar::Float64:
+      return 8;
   }
   return 1;
 }
@@ -40,8 +48,74 @@ const char* fileScalarName(FileScalar type) {
       return "uint16";
     case FileScalar::Float32:
       return "float32";
+    case FileScalar::Int32:
+      return "int32";
+    case FileScalar::UInt32:
+      return "uint32";
+    case FileScalar::Int64:
+      return "int64";
+    case FileScalar::UInt64:
+      return "uint64";
+    case FileScalar::Float64:
+      return "float64";
   }
   return "?";
+}
+
+bool isWideScalar(FileScalar type) {
+  return fileScalarSize(type) == 8 || type == FileScalar::Int32 || type == FileScalar::UInt32;
+}
+
+namespace {
+
+template <typename T>
+double valueAt(const uint8_t* p) {
+  T v;
+  std::memcpy(&v, p, sizeof v);
+  return double(v);
+}
+
+// `v` rounded and clamped to T's range (integers) or narrowed (reals), stored at `p`.
+template <typename T>
+void putValue(uint8_t* p, double v) {
+  T t;
+  if constexpr (std::is_integral_v<T>) {
+    // The clamp's upper end is the largest double below T's maximum, so the cast is defined.
+    const double lo = double(std::numeric_limits<T>::min());
+    const double hi = std::nextafter(double(std::numeric_limits<T>::max()) + 1.0, 0.0);
+    t = std::isnan(v) ? T(0) : T(std::fmin(std::fmax(std::round(v), lo), hi));
+  } else {
+    t = T(v);
+  }
+  std::memcpy(p, &t, sizeof t);
+}
+
+}  // namespace
+
+double fileScalarValue(FileScalar type, const uint8_t* p) {
+  switch (type) {
+    case FileScalar::Int8:
+      return valueAt<int8_t>(p);
+    case FileScalar::UInt8:
+      return valueAt<uint8_t>(p);
+    case FileScalar::Int16:
+      return valueAt<int16_t>(p);
+    case FileScalar::UInt16:
+      return valueAt<uint16_t>(p);
+    case FileScalar::Float32:
+      return valueAt<float>(p);
+    case FileScalar::Int32:
+      return valueAt<int32_t>(p);
+    case FileScalar::UInt32:
+      return valueAt<uint32_t>(p);
+    case FileScalar::Int64:
+      return valueAt<int64_t>(p);
+    case FileScalar::UInt64:
+      return valueAt<uint64_t>(p);
+    case FileScalar::Float64:
+      return valueAt<double>(p);
+  }
+  return 0.0;
 }
 
 FileScalar fileScalarOf(ScalarType type) {
@@ -69,10 +143,9 @@ ScalarType volumeScalarOf(FileScalar type) {
       return ScalarType::UInt8;
     case FileScalar::UInt16:
       return ScalarType::UInt16;
-    case FileScalar::Float32:
+    default:  // float32 and the wide types, which makeVolume converts to it
       return ScalarType::Float32;
   }
-  return ScalarType::UInt8;
 }
 
 std::string sizesText(const std::array<int64_t, 3>& dims) {
@@ -89,6 +162,31 @@ std::vector<uint8_t> widenInt8(const std::vector<uint8_t>& bytes) {
     std::memcpy(wide.data() + 2 * i, &u, 2);
   }
   return wide;
+}
+
+// Wide values as float32; the note says so, and when integers lie beyond float32's exact
+// range (2^24) or reals beyond its finite range, what that costs.
+std::vector<uint8_t> narrowToFloat32(const std::string& path, const std::vector<uint8_t>& bytes,
+                                     FileScalar type, std::vector<std::string>& notes) {
+  const size_t size = fileScalarSize(type), count = bytes.size() / size;
+  checkAllocation(path, uint64_t(count) * 4, "float32 volume");
+  std::vector<uint8_t> out(count * 4);
+  bool inexact = false, overflow = false;
+  const bool integral = type != FileScalar::Float64;
+  for (size_t i = 0; i < count; ++i) {
+    const double v = fileScalarValue(type, &bytes[i * size]);
+    const auto f = float(v);
+    if (integral)
+      inexact |= std::fabs(v) > 16777216.0;
+    else
+      overflow |= std::isfinite(v) && !std::isfinite(f);
+    std::memcpy(&out[i * 4], &f, 4);
+  }
+  std::string note = std::string(fileScalarName(type)) + " data converted to float32";
+  if (inexact) note += " (values beyond 16777216 are rounded)";
+  if (overflow) note += " (values beyond float32's range became infinite)";
+  notes.push_back(note);
+  return out;
 }
 
 // A sheared grid (gantry tilt, skewed axes) resampled within each slice onto an upright one,
@@ -138,32 +236,42 @@ uint64_t dataByteCount(const std::string& path, const std::array<int64_t, 3>& di
 }
 
 std::vector<uint8_t> encodeValues(const std::vector<double>& values, FileScalar type) {
-  std::vector<uint8_t> out(values.size() * fileScalarSize(type));
+  const size_t size = fileScalarSize(type);
+  std::vector<uint8_t> out(values.size() * size);
   for (size_t i = 0; i < values.size(); ++i) {
-    uint8_t* p = out.data() + i * fileScalarSize(type);
+    uint8_t* p = out.data() + i * size;
     const double v = values[i];
     switch (type) {
-      case FileScalar::UInt8:
-        *p = uint8_t(std::fmin(std::fmax(std::round(v), 0.0), 255.0));
-        break;
       case FileScalar::Int8:
-        *p = uint8_t(int8_t(std::fmin(std::fmax(std::round(v), -128.0), 127.0)));
+        putValue<int8_t>(p, v);
         break;
-      case FileScalar::Int16: {
-        const auto s = int16_t(std::fmin(std::fmax(std::round(v), -32768.0), 32767.0));
-        std::memcpy(p, &s, 2);
+      case FileScalar::UInt8:
+        putValue<uint8_t>(p, v);
         break;
-      }
-      case FileScalar::UInt16: {
-        const auto s = uint16_t(std::fmin(std::fmax(std::round(v), 0.0), 65535.0));
-        std::memcpy(p, &s, 2);
+      case FileScalar::Int16:
+        putValue<int16_t>(p, v);
         break;
-      }
-      case FileScalar::Float32: {
-        const auto f = float(v);
-        std::memcpy(p, &f, 4);
+      case FileScalar::UInt16:
+        putValue<uint16_t>(p, v);
         break;
-      }
+      case FileScalar::Float32:
+        putValue<float>(p, v);
+        break;
+      case FileScalar::Int32:
+        putValue<int32_t>(p, v);
+        break;
+      case FileScalar::UInt32:
+        putValue<uint32_t>(p, v);
+        break;
+      case FileScalar::Int64:
+        putValue<int64_t>(p, v);
+        break;
+      case FileScalar::UInt64:
+        putValue<uint64_t>(p, v);
+        break;
+      case FileScalar::Float64:
+        putValue<double>(p, v);
+        break;
     }
   }
   return out;
@@ -186,14 +294,16 @@ Volume makeVolume(const std::string& path, const VolumeLayout& layout, std::vect
   if (layout.bigEndian != hostIsBigEndian()) {
     swapBytes(bytes.data(), bytes.size(), fileScalarSize(layout.type));
   }
+  std::vector<std::string> notes;
   if (layout.type == FileScalar::Int8) bytes = widenInt8(bytes);
+  if (isWideScalar(layout.type)) bytes = narrowToFloat32(path, bytes, layout.type, notes);
   for (int c = 0; c < 3; ++c)
     for (int r = 0; r < 3; ++r)
       if (!std::isfinite(layout.direction[c][r])) failLoad(path, "direction is not finite");
   const ScalarType type = volumeScalarOf(layout.type);
   OrientedGrid grid{layout.dims, scalarSize(type), &bytes,
                     spacing,     layout.origin,    layout.direction};
-  std::vector<std::string> notes = resampleIfSheared(path, grid, type);
+  for (std::string& note : resampleIfSheared(path, grid, type)) notes.push_back(std::move(note));
   for (std::string& note : makeRotation(grid)) notes.push_back(std::move(note));
   try {
     Volume v(grid.dims, grid.spacing, grid.origin, type, std::move(bytes));

@@ -14,10 +14,26 @@
 namespace ewa {
 
 // The voxel types files may store. Int8 has no Volume type: it is widened to Int16 on load.
-enum class FileScalar { Int8, UInt8, Int16, UInt16, Float32 };
+// The wide types (32- and 64-bit integers, float64) are converted to float32 on load.
+enum class FileScalar {
+  Int8,
+  UInt8,
+  Int16,
+  UInt16,
+  Float32,
+  Int32,
+  UInt32,
+  Int64,
+  UInt64,
+  Float64
+};
 size_t fileScalarSize(FileScalar type);
 const char* fileScalarName(FileScalar type);
 FileScalar fileScalarOf(ScalarType type);
+// True for the types a Volume does not hold as they are (makeVolume makes them float32).
+bool isWideScalar(FileScalar type);
+// One value of `type` at `p`, in native byte order, as a double.
+double fileScalarValue(FileScalar type, const uint8_t* p);
 
 struct VolumeLayout {
   std::array<int64_t, 3> dims{0, 0, 0};
@@ -45,6 +61,7 @@ uint64_t dataByteCount(const std::string& path, const std::array<int64_t, 3>& di
 std::vector<uint8_t> encodeValues(const std::vector<double>& values, FileScalar type);
 
 // Builds the Volume from the file's data bytes: native byte order, Int8 widened to Int16,
+// wide types converted to float32 (with a note; another on integers float32 cannot hold exactly),
 // negative spacing taken by magnitude, zero or non-finite spacing/origin rejected, a sheared
 // grid (gantry tilt) resampled within each slice onto an upright one (shear_resample.h), the
 // direction made a rotation (makeRotation: a reflection reverses the slices).

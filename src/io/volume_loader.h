@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/volume.h"
+#include "io/volume_layout.h"
 
 namespace ewa {
 
@@ -20,13 +21,15 @@ class LoadError : public std::runtime_error {
 // How to read a headerless raw file (x fastest, no padding, data from the first byte).
 struct RawOptions {
   std::array<int64_t, 3> dims{0, 0, 0};
-  ScalarType type = ScalarType::UInt8;
+  FileScalar type = FileScalar::UInt8;  // the wide types become float32 (makeVolume)
   glm::dvec3 spacing{1.0};
   bool bigEndian = false;
 };
 
-// Parses the command-line strings "X,Y,Z", "uint8|int16|uint16|float32" (also "uchar", "short",
-// "ushort", "float"), "X,Y,Z" (or one value for all axes) and "little|big". An empty type,
+// Parses the command-line strings "X,Y,Z", a type ("int8", "uint8", "int16", "uint16", "int32",
+// "uint32", "int64", "uint64", "float32", "float64", or C's names "char", "uchar", "short",
+// "ushort", "int", "uint", "float", "double"), "X,Y,Z" (or one value for all axes) and
+// "little|big". An empty type,
 // spacing or endian string means the default. Throws LoadError("--raw-...: problem") on bad text.
 RawOptions parseRawOptions(const std::string& dims, const std::string& type,
                            const std::string& spacing, const std::string& endian);

@@ -59,13 +59,15 @@ glm::dvec3 parseTriple(const std::string& path, const char* what, const std::str
 
 FileScalar parseArrayType(const std::string& path, const std::string* type) {
   if (!type) failLoad(path, "DataArray has no type");
-  if (*type == "UInt8") return FileScalar::UInt8;
-  if (*type == "Int8") return FileScalar::Int8;
-  if (*type == "Int16") return FileScalar::Int16;
-  if (*type == "UInt16") return FileScalar::UInt16;
-  if (*type == "Float32") return FileScalar::Float32;
-  failLoad(path, "unsupported DataArray type " + quoteText(*type) +
-                     " (supported: Int8, UInt8, Int16, UInt16, Float32)");
+  static const std::pair<const char*, FileScalar> kTypes[] = {
+      {"UInt8", FileScalar::UInt8},     {"Int8", FileScalar::Int8},
+      {"Int16", FileScalar::Int16},     {"UInt16", FileScalar::UInt16},
+      {"Int32", FileScalar::Int32},     {"UInt32", FileScalar::UInt32},
+      {"Int64", FileScalar::Int64},     {"UInt64", FileScalar::UInt64},
+      {"Float32", FileScalar::Float32}, {"Float64", FileScalar::Float64}};
+  for (const auto& [name, t] : kTypes)
+    if (*type == name) return t;
+  failLoad(path, "unsupported DataArray type " + quoteText(*type) + " (scalar numbers only)");
 }
 
 void readFileAttributes(const std::string& path, const XmlTag& tag, VtiHeader& h) {

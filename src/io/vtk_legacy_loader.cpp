@@ -1,7 +1,5 @@
 // Legacy VTK files (.vtk) of STRUCTURED_POINTS: point scalars, ASCII or big-endian binary.
 #include <cmath>
-#include <cstdlib>
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -10,6 +8,7 @@
 #include "io/format_loaders.h"
 #include "io/load_failure.h"
 #include "io/text_fields.h"
+#include "io/text_numbers.h"
 #include "io/volume_layout.h"
 
 namespace ewa {
@@ -45,49 +44,28 @@ class HeaderLines {
   size_t pos_ = 0;
 };
 
-struct ScalarKind {
-  FileScalar stored = FileScalar::Float32;  // what the volume keeps
-  size_t bytes = 4;                         // of one value in the file
-  bool convert = false;                     // int, unsigned_int, long, double: to float32
-  bool isSigned = true, isReal = true;
-};
-
-ScalarKind scalarKind(const std::string& path, const std::string& name) {
+FileScalar scalarType(const std::string& path, const std::string& name) {
+  // "long" as VTK writes it on 64-bit Linux and macOS: 8 bytes.
+  static const std::pair<const char*, FileScalar> kTypes[] = {
+      {"unsigned_char", FileScalar::UInt8},
+      {"char", FileScalar::Int8},
+      {"signed_char", FileScalar::Int8},
+      {"unsigned_short", FileScalar::UInt16},
+      {"short", FileScalar::Int16},
+      {"float", FileScalar::Float32},
+      {"int", FileScalar::Int32},
+      {"unsigned_int", FileScalar::UInt32},
+      {"long", FileScalar::Int64},
+      {"vtktypeint64", FileScalar::Int64},
+      {"unsigned_long", FileScalar::UInt64},
+      {"vtktypeuint64", FileScalar::UInt64},
+      {"double", FileScalar::Float64}};
   const std::string t = toLower(name);
-  if (t == "unsigned_char") return {FileScalar::UInt8, 1, false, false, false};
-  if (t == "char" || t == "signed_char") return {FileScalar::Int8, 1, false, true, false};
-  if (t == "unsigned_short") return {FileScalar::UInt16, 2, false, false, false};
-  if (t == "short") return {FileScalar::Int16, 2, false, true, false};
-  if (t == "float") return {FileScalar::Float32, 4, false, true, true};
-  if (t == "int") return {FileScalar::Float32, 4, true, true, false};
-  if (t == "unsigned_int") return {FileScalar::Float32, 4, true, false, false};
-  if (t == "long" || t == "vtktypeint64") return {FileScalar::Float32, 8, true, true, false};
-  if (t == "unsigned_long" || t == "vtktypeuint64")
-    return {FileScalar::Float32, 8, true, false, false};
-  if (t == "double") return {FileScalar::Float32, 8, true, true, true};
+  for (const auto& [n, type] : kTypes)
+    if (t == n) return type;
   failLoad(path, "SCALARS of type " + quoteText(name) +
                      " are not read (unsigned_char, char, short, unsigned_short, int, "
                      "unsigned_int, long, unsigned_long, float, double)");
-}
-
-// One big-endian value of `kind` at `p` as a double.
-double binaryValue(const ScalarKind& kind, const uint8_t* p) {
-  uint64_t bits = 0;
-  for (size_t i = 0; i < kind.bytes; ++i) bits = (bits << 8) | p[i];
-  if (kind.isReal) {
-    if (kind.bytes == 8) {
-      double d;
-      std::memcpy(&d, &bits, 8);
-      return d;
-    }
-    const auto u = uint32_t(bits);
-    float f;
-    std::memcpy(&f, &u, 4);
-    return f;
-  }
-  if (!kind.isSigned) return double(bits);
-  const int shift = int(64 - 8 * kind.bytes);
-  return double(int64_t(bits << shift) >> shift);
 }
 
 }  // namespace
@@ -148,56 +126,27 @@ Volume loadVtkLegacy(const std::string& path) {
                           : "bad SCALARS line (SCALARS name type [components])");
   if (!colour && w.size() > 3 && w[3] != "1")
     failLoad(path, "SCALARS of " + quoteText(w[3]) + " components are not read (1 only)");
-  const std::string typeName = colour ? "unsigned_char" : w[2];
-  const ScalarKind kind = scalarKind(path, typeName);
+  const FileScalar type = scalarType(path, colour ? "unsigned_char" : w[2]);
   if (!colour) {
     w = lines.words("LOOKUP_TABLE");
     if (toLower(w[0]) != "lookup_table") failLoad(path, "no LOOKUP_TABLE line after SCALARS");
   }
-  layout.type = kind.stored;
+  layout.type = type;
   const uint64_t voxels = dataByteCount(path, layout.dims, FileScalar::UInt8);
   if (points < 0 || uint64_t(points) != voxels)
     failLoad(path, "POINT_DATA " + std::to_string(points) + " is not the " +
                        std::to_string(voxels) + " points of DIMENSIONS");
-  dataByteCount(path, layout.dims, kind.stored);  // the volume fits in memory
+  const uint64_t bytes = dataByteCount(path, layout.dims, type);  // fits in memory
   const uint64_t offset = lines.offset();
   if (encoding == "binary") {
-    const uint64_t need = voxels * kind.bytes;  // no overflow: checked as float32 above x2
-    const std::vector<uint8_t> data = readFileRange(path, offset, need);  // checks the range
-    if (!kind.convert && kind.bytes > 1) {  // big-endian as VTK writes it
-      layout.bigEndian = true;
-      return makeVolume(path, layout, data);
-    }
-    if (!kind.convert) return makeVolume(path, layout, data);
-    std::vector<uint8_t> floats(size_t(voxels) * 4);
-    for (size_t i = 0; i < size_t(voxels); ++i) {
-      const auto f = float(binaryValue(kind, &data[i * kind.bytes]));
-      std::memcpy(&floats[4 * i], &f, 4);
-    }
-    layout.notes.push_back("SCALARS of type " + quoteText(typeName) + " converted to float32");
-    return makeVolume(path, layout, std::move(floats));
+    layout.bigEndian = true;                                              // as VTK writes it
+    return makeVolume(path, layout, readFileRange(path, offset, bytes));  // checks the range
   }
-  {
-    // ASCII: each number takes at least one character and a separator: bound the count first.
-    if (voxels > (size - offset + 1) / 2)
-      failLoad(path, "the ASCII data cannot hold " + std::to_string(voxels) +
-                         " numbers (truncated file or wrong sizes?)");
-    std::vector<uint8_t> text = readFileRange(path, offset, size - offset);
-    text.push_back(0);
-    std::vector<double> values(static_cast<size_t>(voxels));
-    const char* p = reinterpret_cast<const char*>(text.data());
-    for (size_t i = 0; i < values.size(); ++i) {
-      char* end = nullptr;
-      values[i] = std::strtod(p, &end) * (colour ? 255.0 : 1.0);
-      if (end == p)
-        failLoad(path, "ASCII data has " + std::to_string(i) + " numbers, not " +
-                           std::to_string(voxels) + " (truncated file or not a number)");
-      p = end;
-    }
-    if (kind.convert)
-      layout.notes.push_back("SCALARS of type " + quoteText(typeName) + " converted to float32");
-    return makeVolume(path, layout, encodeValues(values, kind.stored));
-  }
+  std::vector<double> values = readTextNumbers(path, offset, voxels, "ASCII data");
+  if (colour)
+    for (double& v : values) v *= 255.0;
+  layout.bigEndian = hostIsBigEndian();
+  return makeVolume(path, layout, encodeValues(values, type));
 }
 
 }  // namespace ewa

@@ -44,7 +44,8 @@ PYBIND11_MODULE(ewaview, m) {
 Scene(path=None, **options): a volume file ewaview reads (.nrrd .nhdr .mhd .mha .dat .vti, raw
 with raw_dims=..., raw_type=...), or synthetic='sphere:64'; no path: the default volume.
 Scene(array, spacing=(1, 1, 1), origin=(0, 0, 0), **options): a NumPy array indexed [z, y, x]
-(uint8, int16, uint16, float32; float64 becomes float32).
+(uint8, int16, uint16, float32 as they are; int8 becomes int16, 32- and 64-bit
+integers and float64 become float32).
 The transfer function is tf=FILE's, else a FILE.tf.json beside the volume, else one made from
 the histogram, as on the command line.)")
       .def(py::init(

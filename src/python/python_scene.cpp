@@ -95,17 +95,18 @@ PythonScene::PythonScene(const py::array& data, const py::object& spacing, const
   const size_t size = size_t(data.itemsize());
   ScalarType type;
   std::vector<uint8_t> bytes;
+  // As the loaders do: int8 widened to int16, the 32- and 64-bit types made float32.
   if (kind == 'u' && size == 1) {
     type = ScalarType::UInt8, bytes = contiguousBytes<uint8_t>(data);
-  } else if (kind == 'i' && size == 2) {
+  } else if ((kind == 'i' && size == 1) || (kind == 'i' && size == 2)) {
     type = ScalarType::Int16, bytes = contiguousBytes<int16_t>(data);
   } else if (kind == 'u' && size == 2) {
     type = ScalarType::UInt16, bytes = contiguousBytes<uint16_t>(data);
-  } else if (kind == 'f' && (size == 4 || size == 8)) {
+  } else if ((kind == 'f' || kind == 'i' || kind == 'u') && (size == 4 || size == 8)) {
     type = ScalarType::Float32, bytes = contiguousBytes<float>(data);
   } else {
     throw UsageError("array: dtype " + py::str(data.dtype()).cast<std::string>() +
-                     " not supported (use uint8, int16, uint16, float32 or float64)");
+                     " not supported (use integers, float32 or float64)");
   }
   const std::array<int64_t, 3> dims{int64_t(data.shape(2)), int64_t(data.shape(1)),
                                     int64_t(data.shape(0))};

@@ -377,25 +377,54 @@ TEST(VtiLoader, InlineBinaryZlibInt8WidenedToInt16) {
   expectRamp(v, {2, 3, 4}, -3.0, 30.0);
 }
 
+TEST(VtiLoader, Float64AndInt32ArraysBecomeFloat32) {
+  TempDir dir;
+  const std::string doubles = bytesOf(ramp<double>(-0.125, 4.0), true);
+  const Volume d = loadVolume(
+      dir.write("d.vti", vtiFile("byte_order=\"BigEndian\" header_type=\"UInt64\"", "0 1 0 2 0 3",
+                                 "Float64", "format=\"appended\" offset=\"0\"", "",
+                                 uintBytes(doubles.size(), 8, true) + doubles)));
+  EXPECT_EQ(d.type(), ScalarType::Float32);
+  expectRamp(d, {2, 3, 4}, -0.125, 4.0);
+  EXPECT_EQ(d.notes().back(), "float64 data converted to float32");
+  const std::string ints = bytesOf(ramp<int32_t>(-40000.0, 3.0));
+  const Volume i = loadVolume(dir.write(
+      "i.vti", vtiFile("byte_order=\"LittleEndian\"", "0 1 0 2 0 3", "Int32", "format=\"binary\"",
+                       base64(uintBytes(ints.size(), 4) + ints), "")));
+  expectRamp(i, {2, 3, 4}, -40000.0, 3.0);
+}
+
 // ---- raw ----
 
 TEST(RawLoader, ParsesOptions) {
   RawOptions o = parseRawOptions("256,256,109", "ushort", "1,1,2", "big");
   EXPECT_EQ(o.dims, (std::array<int64_t, 3>{256, 256, 109}));
-  EXPECT_EQ(o.type, ScalarType::UInt16);
+  EXPECT_EQ(o.type, FileScalar::UInt16);
   EXPECT_EQ(o.spacing, glm::dvec3(1.0, 1.0, 2.0));
   EXPECT_TRUE(o.bigEndian);
   o = parseRawOptions(" 4x5x6 ", "FLOAT32", "0.5", "little");
   EXPECT_EQ(o.dims, (std::array<int64_t, 3>{4, 5, 6}));
-  EXPECT_EQ(o.type, ScalarType::Float32);
+  EXPECT_EQ(o.type, FileScalar::Float32);
   EXPECT_EQ(o.spacing, glm::dvec3(0.5));
   EXPECT_FALSE(o.bigEndian);
-  EXPECT_EQ(parseRawOptions("1,1,1", "uchar", "", "").type, ScalarType::UInt8);
-  EXPECT_EQ(parseRawOptions("1,1,1", "short", "", "").type, ScalarType::Int16);
-  EXPECT_EQ(parseRawOptions("1,1,1", "float", "", "").type, ScalarType::Float32);
-  EXPECT_EQ(parseRawOptions("1,1,1", "int16", "", "").type, ScalarType::Int16);
-  EXPECT_EQ(parseRawOptions("1,1,1", "uint16", "", "").type, ScalarType::UInt16);
-  EXPECT_EQ(parseRawOptions("1,1,1", "uint8", "", "").type, ScalarType::UInt8);
+  EXPECT_EQ(parseRawOptions("1,1,1", "uchar", "", "").type, FileScalar::UInt8);
+  EXPECT_EQ(parseRawOptions("1,1,1", "short", "", "").type, FileScalar::Int16);
+  EXPECT_EQ(parseRawOptions("1,1,1", "float", "", "").type, FileScalar::Float32);
+  EXPECT_EQ(parseRawOptions("1,1,1", "int16", "", "").type, FileScalar::Int16);
+  EXPECT_EQ(parseRawOptions("1,1,1", "uint16", "", "").type, FileScalar::UInt16);
+  EXPECT_EQ(parseRawOptions("1,1,1", "uint8", "", "").type, FileScalar::UInt8);
+  EXPECT_EQ(parseRawOptions("1,1,1", "char", "", "").type, FileScalar::Int8);
+  EXPECT_EQ(parseRawOptions("1,1,1", "int", "", "").type, FileScalar::Int32);
+  EXPECT_EQ(parseRawOptions("1,1,1", "UInt64", "", "").type, FileScalar::UInt64);
+  EXPECT_EQ(parseRawOptions("1,1,1", "double", "", "").type, FileScalar::Float64);
+}
+
+TEST(RawLoader, WideTypesBecomeFloat32) {
+  TempDir dir;
+  const std::string path = dir.write("d.raw", bytesOf(ramp<double>(-0.75, 12.0), true));
+  const Volume v = loadRawVolume(path, parseRawOptions("2,3,4", "float64", "", "big"));
+  EXPECT_EQ(v.type(), ScalarType::Float32);
+  expectRamp(v, {2, 3, 4}, -0.75, 12.0);
 }
 
 TEST(RawLoader, LittleAndBigEndian) {

@@ -1,6 +1,7 @@
-// Helpers for the loader tests: scratch folder, byte builders, zlib/gzip, LoadError checks.
+// Helpers for the loader tests: scratch folder, byte builders, zlib/gzip/bzip2, LoadError checks.
 #pragma once
 
+#include <bzlib.h>
 #include <gtest/gtest.h>
 #include <zlib.h>
 
@@ -88,6 +89,17 @@ inline std::string gzipBytes(const std::string& data) {
 }
 inline std::string zlibBytes(const std::string& data) {
   return compressBytes(data, false);
+}
+
+// One bzip2 stream of `data`.
+inline std::string bzip2Bytes(const std::string& data) {
+  auto size = static_cast<unsigned int>(data.size() + data.size() / 100 + 700);
+  std::string out(size, '\0');
+  if (BZ2_bzBuffToBuffCompress(out.data(), &size, const_cast<char*>(data.data()),
+                               static_cast<unsigned int>(data.size()), 9, 0, 0) != BZ_OK)
+    throw std::runtime_error("BZ2_bzBuffToBuffCompress failed");
+  out.resize(size);
+  return out;
 }
 
 // Little-endian (or big-endian) unsigned integer of `width` bytes.

@@ -67,7 +67,7 @@ TEST(VtkLegacy, AsciiAndBinaryScalarsOfEveryType) {
   const Volume d = loadVolume(dir.write(
       "d.vtk", header("BINARY", "SCALARS v double" + lut) + binaryRamp<double>(0.125, -1)));
   expectRamp(d, 0.125, -1, ScalarType::Float32);
-  EXPECT_EQ(d.notes().back(), "SCALARS of type 'double' converted to float32");
+  EXPECT_EQ(d.notes().back(), "float64 data converted to float32");
   expectRamp(loadVolume(dir.write("i.vtk", header("BINARY", "SCALARS v int" + lut) +
                                                binaryRamp<int32_t>(-100000, 7))),
              -100000, 7, ScalarType::Float32);
