@@ -56,6 +56,29 @@ bool bigEndianData(const std::vector<uint8_t>& h) {
   return !knownMode(MrcHeader(h, false).integer(4)) && knownMode(MrcHeader(h, true).integer(4));
 }
 
+// Unit vectors of the crystal axes a, b, c in Cartesian space (the PDB's orthogonalization: a
+// along x, b in the xy plane) from the cell angles CELLB (alpha between b and c, beta between a
+// and c, gamma between a and b, degrees). Angles all 0 (no cell) or all 90 give the identity;
+// angles that make no cell give it too, with a note.
+glm::dmat3 cellBasis(const MrcHeader& h, std::vector<std::string>& notes) {
+  const glm::dvec3 deg(h.real(14), h.real(15), h.real(16));
+  if (deg == glm::dvec3(0.0) || deg == glm::dvec3(90.0)) return glm::dmat3(1.0);
+  const glm::dvec3 rad = deg * (3.14159265358979323846 / 180.0);
+  const glm::dvec3 c(std::cos(rad.x), std::cos(rad.y), std::cos(rad.z));
+  const double sinGamma = std::sin(rad.z);
+  const double cy = (c.x - c.y * c.z) / sinGamma;
+  const double cz2 = 1.0 - c.y * c.y - cy * cy;
+  bool valid = cz2 > 1e-6;
+  for (int a = 0; a < 3; ++a) valid = valid && std::isfinite(deg[a]) && deg[a] > 0 && deg[a] < 180;
+  if (!valid) {
+    notes.push_back("cell angles " + std::to_string(deg.x) + ", " + std::to_string(deg.y) + ", " +
+                    std::to_string(deg.z) + " make no cell: axes taken as orthogonal");
+    return glm::dmat3(1.0);
+  }
+  return glm::dmat3(glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(c.z, sinGamma, 0.0),
+                    glm::dvec3(c.y, cy, std::sqrt(cz2)));
+}
+
 }  // namespace
 
 Volume loadMrc(const std::string& path) {
@@ -119,18 +142,18 @@ Volume loadMrc(const std::string& path) {
       sized = false;
   }
   if (!sized) layout.notes.push_back("no cell size for some axes: spacing 1 assumed there");
+  const glm::dmat3 basis = cellBasis(h, layout.notes);
   const glm::dvec3 origin(h.real(50), h.real(51), h.real(52));
   const bool placed = origin != glm::dvec3(0.0) && std::isfinite(origin.x) &&
                       std::isfinite(origin.y) && std::isfinite(origin.z);
+  // A skewed cell's grid is resampled onto an upright one by makeVolume, as a tilted gantry's.
+  layout.origin = placed ? origin : glm::dvec3(0.0);
   for (int i = 0; i < 3; ++i) {
     layout.spacing[i] = world[axis[i]];
-    glm::dvec3 column(0.0);
-    column[axis[i]] = 1.0;
-    layout.direction[i] = column;
+    layout.direction[i] = basis[int(axis[i])];
     // Without ORIGIN, the first voxel lies NXSTART, NYSTART, NZSTART samples along its axes.
-    if (!placed) layout.origin[axis[i]] = double(h.integer(5 + i)) * world[axis[i]];
+    if (!placed) layout.origin += double(h.integer(5 + i)) * world[axis[i]] * basis[int(axis[i])];
   }
-  if (placed) layout.origin = origin;
   if (axis[0] != 0 || axis[1] != 1 || axis[2] != 2)
     layout.notes.push_back("axis order MAPC, MAPR, MAPS " + std::to_string(axis[0] + 1) + ", " +
                            std::to_string(axis[1] + 1) + ", " + std::to_string(axis[2] + 1));

@@ -2,6 +2,7 @@
 // origin, the axis order and IMOD's unsigned bytes; bad headers fail in one line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <glm/geometric.hpp>
@@ -151,6 +152,52 @@ TEST(Mrc, OriginStartAndAxisOrderPlaceTheVoxels) {
         ++found;
       }
   EXPECT_EQ(found, 24);
+}
+
+// A crystal's skewed cell (monoclinic: beta; hexagonal: gamma) puts its voxels on oblique axes;
+// the loaded volume is upright and each voxel holds the (linear) field where it lies in world.
+TEST(Mrc, CellAnglesSkewTheAxesAndTheGridIsResampled) {
+  TempDir dir;
+  const auto field = [](const glm::dvec3& w) { return 3.0 * w.x + w.y - 0.5 * w.z; };
+  for (const glm::dvec3& angles : {glm::dvec3(90, 120, 90), glm::dvec3(90, 90, 120)}) {
+    SCOPED_TRACE(std::to_string(angles.y) + ", " + std::to_string(angles.z));
+    // 6 x 5 x 4 samples of a 6 x 10 x 8 cell: spacing 1, 2, 2 along a, b, c.
+    const double deg = 3.14159265358979323846 / 180.0;
+    const glm::dvec3 a(1, 0, 0), b(std::cos(angles.z * deg), std::sin(angles.z * deg), 0);
+    const glm::dvec3 c(std::cos(angles.y * deg), 0, std::sin(angles.y * deg));  // alpha 90
+    std::vector<float> data;
+    for (int k = 0; k < 4; ++k)
+      for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 6; ++i)
+          data.push_back(float(field(double(i) * a + 2.0 * j * b + 2.0 * k * c)));
+    MrcFile f;
+    f.ints = {{1, 6}, {2, 5}, {3, 4}, {4, 2}, {8, 6}, {9, 5}, {10, 4}, {17, 1}, {18, 2}, {19, 3}};
+    f.reals = {
+        {11, 6.0f},           {12, 10.0f}, {13, 8.0f}, {14, float(angles.x)}, {15, float(angles.y)},
+        {16, float(angles.z)}};
+    f.data = bytesOf(data);
+    const Volume v = loadVolume(dir.write("skew.mrc", f.bytes()));
+    std::string notes;
+    for (const std::string& n : v.notes()) notes += n + "\n";
+    EXPECT_NE(notes.find("sheared 30.0 degrees"), std::string::npos) << notes;
+    const double fill = *std::min_element(data.begin(), data.end());
+    int checked = 0;
+    for (int k = 0; k < v.dims()[2]; ++k)
+      for (int j = 0; j < v.dims()[1]; ++j)
+        for (int i = 0; i < v.dims()[0]; ++i) {
+          if (v.value(i, j, k) == fill) continue;  // a corner the oblique grid does not cover
+          ASSERT_NEAR(v.value(i, j, k), field(v.worldPosition(i, j, k)), 1e-3)
+              << i << "," << j << "," << k;
+          ++checked;
+        }
+    EXPECT_GE(checked, 60);
+  }
+  // Angles that make no cell are noted and the axes taken as orthogonal.
+  MrcFile bad = ramp(2, bytesOf(values<float>(1, 0)));
+  bad.reals.insert(bad.reals.end(), {{14, 10.0f}, {15, 10.0f}, {16, 170.0f}});
+  const Volume o = loadVolume(dir.write("bad.mrc", bad.bytes()));
+  expectRamp(o, 1, 0);
+  EXPECT_NE(o.notes().front().find("make no cell: axes taken as orthogonal"), std::string::npos);
 }
 
 TEST(Mrc, BadHeadersFailInOneLine) {
