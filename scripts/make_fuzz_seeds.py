@@ -218,6 +218,11 @@ def vti_seeds():
               '        <DataArray type="Int16" Name="s" format="binary">%s</DataArray>\n'
               '      </PointData>\n    </Piece>\n  </ImageData>\n</VTKFile>\n' % (extent, extent, b64))
     write("vti", "inline_base64.vti", inline.encode())
+    # Inline ASCII numbers, Float64 (made float32).
+    numbers = " ".join("%g" % (i * 0.5 - 3) for i in range(n))
+    ascii_text = inline.replace('type="Int16" Name="s" format="binary">%s' % b64,
+                                'type="Float64" Name="s" format="ascii">%s' % numbers)
+    write("vti", "inline_ascii.vti", ascii_text.encode())
 
 
 def raw_seeds():
@@ -226,7 +231,8 @@ def raw_seeds():
     for name, opts, width in [("uint8", [dims, "uint8", "", ""], 1),
                               ("uint16_big", [dims, "uint16", "1,1,2", "big"], 2),
                               ("float32", [dims, "float32", "0.5", "little"], 4),
-                              ("int16", [dims.replace(",", "x"), "short", "1 2 3", "le"], 2)]:
+                              ("int16", [dims.replace(",", "x"), "short", "1 2 3", "le"], 2),
+                              ("float64_big", [dims, "float64", "", "big"], 8)]:
         write("raw", name, "\n".join(opts).encode() + MARK + payload(n, width, 1))
 
 

@@ -1,4 +1,4 @@
-// Numbers and hex bytes read from text data, bounded by the file before anything is allocated.
+// Numbers and hex bytes read from text data, bounded by the text before anything is allocated.
 #include "io/text_numbers.h"
 
 #include <cstdlib>
@@ -11,15 +11,21 @@ namespace ewa {
 
 namespace {
 
-// The text from `offset` to the end of the file, NUL-terminated, after checking that it can
-// hold `count` items of at least `minChars` characters each (separators included but the last).
+// Fails unless `bytes` of text can hold `count` items of at least `minChars` characters each
+// (separators included but the last).
+void checkRoom(const std::string& path, uint64_t bytes, uint64_t count, uint64_t minChars,
+               const std::string& what) {
+  if (count > (bytes + 1) / minChars)
+    failLoad(path, what + " cannot hold " + std::to_string(count) + " values in its " +
+                       std::to_string(bytes) + " bytes (truncated file or wrong sizes?)");
+}
+
+// The text from `offset` to the end of the file, NUL-terminated, once checkRoom passed.
 std::vector<uint8_t> readText(const std::string& path, uint64_t offset, uint64_t count,
                               uint64_t minChars, const std::string& what) {
   const uint64_t size = regularFileSize(path);
   const uint64_t left = offset < size ? size - offset : 0;
-  if (count > (left + 1) / minChars)
-    failLoad(path, what + " cannot hold " + std::to_string(count) + " values in its " +
-                       std::to_string(left) + " bytes (truncated file or wrong sizes?)");
+  checkRoom(path, left, count, minChars, what);
   std::vector<uint8_t> text = readFileRange(path, offset, left, what);
   text.push_back(0);
   return text;
@@ -36,14 +42,11 @@ int hexDigit(char c) {
   return -1;
 }
 
-}  // namespace
-
-std::vector<double> readTextNumbers(const std::string& path, uint64_t offset, uint64_t count,
-                                    const std::string& what) {
-  const std::vector<uint8_t> text = readText(path, offset, count, 2, what);
-  checkAllocation(path, count * sizeof(double), what + " as numbers");  // count <= file size
+// `count` numbers from NUL-terminated text that checkRoom found room for.
+std::vector<double> parseNumbers(const std::string& path, const char* p, uint64_t count,
+                                 const std::string& what) {
+  checkAllocation(path, count * sizeof(double), what + " as numbers");  // count <= text size
   std::vector<double> values(static_cast<size_t>(count));
-  const char* p = reinterpret_cast<const char*>(text.data());
   for (size_t i = 0; i < values.size(); ++i) {
     while (isSpace(*p) || *p == ',') ++p;
     char* end = nullptr;
@@ -54,6 +57,21 @@ std::vector<double> readTextNumbers(const std::string& path, uint64_t offset, ui
     p = end;
   }
   return values;
+}
+
+}  // namespace
+
+std::vector<double> readTextNumbers(const std::string& path, uint64_t offset, uint64_t count,
+                                    const std::string& what) {
+  const std::vector<uint8_t> text = readText(path, offset, count, 2, what);
+  return parseNumbers(path, reinterpret_cast<const char*>(text.data()), count, what);
+}
+
+std::vector<double> parseTextNumbers(const std::string& path, std::string_view text, uint64_t count,
+                                     const std::string& what) {
+  checkRoom(path, text.size(), count, 2, what);
+  const std::string terminated(text);  // strtod needs the NUL
+  return parseNumbers(path, terminated.c_str(), count, what);
 }
 
 std::vector<uint8_t> readHexBytes(const std::string& path, uint64_t offset, uint64_t count,

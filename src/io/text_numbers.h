@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ewa {
@@ -12,6 +13,9 @@ namespace ewa {
 // LoadError("<path>: <what> ...") when the file holds fewer numbers or a word is not one.
 std::vector<double> readTextNumbers(const std::string& path, uint64_t offset, uint64_t count,
                                     const std::string& what);
+// The same for text already in memory (an XML element's content); `path` names it in errors.
+std::vector<double> parseTextNumbers(const std::string& path, std::string_view text, uint64_t count,
+                                     const std::string& what);
 
 // `count` bytes written as pairs of hex digits (white space anywhere) from `offset`.
 std::vector<uint8_t> readHexBytes(const std::string& path, uint64_t offset, uint64_t count,

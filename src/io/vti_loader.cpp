@@ -1,4 +1,4 @@
-// VTK XML ImageData (.vti): extent, origin, spacing and point scalars, appended or inline.
+// VTK XML ImageData (.vti): extent, origin, spacing and point scalars, appended, inline or ASCII.
 #include <array>
 #include <limits>
 #include <string>
@@ -6,10 +6,12 @@
 #include <vector>
 
 #include "io/base64.h"
+#include "io/byte_order.h"
 #include "io/file_bytes.h"
 #include "io/format_loaders.h"
 #include "io/load_failure.h"
 #include "io/text_fields.h"
+#include "io/text_numbers.h"
 #include "io/volume_layout.h"
 #include "io/vtk_binary_array.h"
 #include "io/xml_scanner.h"
@@ -224,8 +226,17 @@ Volume loadVti(const std::string& path) {
                       decoded))
       failLoad(path, "inline DataArray is not valid base64");
     bytes = decodeVtkBinaryArray(path, MemorySource(path, std::move(decoded)), h.format, total);
+  } else if (fmt == "ascii") {
+    // Numbers as text, in native order once encoded.
+    const std::string_view inlineText =
+        std::string_view(text).substr(h.inlineBegin, h.inlineEnd - h.inlineBegin);
+    bytes = encodeValues(
+        parseTextNumbers(path, inlineText, total / fileScalarSize(layout.type), "ASCII DataArray"),
+        layout.type);
+    layout.bigEndian = hostIsBigEndian();
   } else {
-    failLoad(path, "unsupported DataArray format " + quoteText(fmt) + " (need appended or binary)");
+    failLoad(path, "unsupported DataArray format " + quoteText(fmt) +
+                       " (need appended, binary or ascii)");
   }
   return makeVolume(path, layout, std::move(bytes));
 }

@@ -323,7 +323,9 @@ TEST(LoaderErrors, VtiProblems) {
   const std::string cut = vti("", ok, raw);
   expectVolumeLoadError(dir.write("h.vti", cut.substr(0, cut.find('_') + 1 + 4 + 10)), "truncated");
   expectVolumeLoadError(dir.write("i.vti", vti("", "type=\"UInt8\" format=\"ascii\"", "")),
-                        "format");
+                        "ASCII DataArray cannot hold 24 values in its 0 bytes");
+  expectVolumeLoadError(dir.write("i2.vti", vti("", "type=\"UInt8\" format=\"text\"", "")),
+                        "unsupported DataArray format 'text'");
   expectVolumeLoadError(dir.write("j.vti", "<VTKFile type=\"PolyData\"></VTKFile>"),
                         "not ImageData");
   expectVolumeLoadError(

@@ -394,6 +394,25 @@ TEST(VtiLoader, Float64AndInt32ArraysBecomeFloat32) {
   expectRamp(i, {2, 3, 4}, -40000.0, 3.0);
 }
 
+TEST(VtiLoader, AsciiArraysOfIntegersAndReals) {
+  TempDir dir;
+  std::string ints, reals;
+  for (int i = 0; i < 24; ++i) {
+    ints += std::to_string(-500 + 45 * i) + (i % 6 == 5 ? "\n          " : " ");
+    reals += std::to_string(0.5 * i - 2.0) + " ";
+  }
+  const Volume s = loadVolume(dir.write(
+      "s.vti", vtiFile("", "0 1 0 2 0 3", "Int16", "format=\"ascii\"", "\n          " + ints, "")));
+  EXPECT_EQ(s.type(), ScalarType::Int16);
+  expectRamp(s, {2, 3, 4}, 45.0, -500.0);
+  expectRamp(loadVolume(dir.write("d.vti", vtiFile("byte_order=\"BigEndian\"", "0 1 0 2 0 3",
+                                                   "Float64", "format=\"ascii\"", reals, ""))),
+             {2, 3, 4}, 0.5, -2.0);
+  testing::expectVolumeLoadError(
+      dir.write("short.vti", vtiFile("", "0 1 0 2 0 3", "UInt8", "format=\"ascii\"", "1 2 3", "")),
+      "ASCII DataArray cannot hold 24 values");
+}
+
 // ---- raw ----
 
 TEST(RawLoader, ParsesOptions) {
