@@ -112,13 +112,26 @@ PageFormat pageFormat(const TiffFile& file) {
 }
 
 FileScalar scalarOf(const TiffFile& file, const PageFormat& f) {
-  if (f.sampleFormat == SAMPLEFORMAT_IEEEFP && f.bits == 32) return FileScalar::Float32;
-  if (f.sampleFormat == SAMPLEFORMAT_UINT && f.bits == 8) return FileScalar::UInt8;
-  if (f.sampleFormat == SAMPLEFORMAT_INT && f.bits == 8) return FileScalar::Int8;
-  if (f.sampleFormat == SAMPLEFORMAT_UINT && f.bits == 16) return FileScalar::UInt16;
-  if (f.sampleFormat == SAMPLEFORMAT_INT && f.bits == 16) return FileScalar::Int16;
+  // (libtiff hands samples over in native byte order; makeVolume makes the wide ones float32.)
+  struct Kind {
+    uint16_t format, bits;
+    FileScalar type;
+  };
+  static const Kind kKinds[] = {{SAMPLEFORMAT_UINT, 8, FileScalar::UInt8},
+                                {SAMPLEFORMAT_INT, 8, FileScalar::Int8},
+                                {SAMPLEFORMAT_UINT, 16, FileScalar::UInt16},
+                                {SAMPLEFORMAT_INT, 16, FileScalar::Int16},
+                                {SAMPLEFORMAT_UINT, 32, FileScalar::UInt32},
+                                {SAMPLEFORMAT_INT, 32, FileScalar::Int32},
+                                {SAMPLEFORMAT_UINT, 64, FileScalar::UInt64},
+                                {SAMPLEFORMAT_INT, 64, FileScalar::Int64},
+                                {SAMPLEFORMAT_IEEEFP, 32, FileScalar::Float32},
+                                {SAMPLEFORMAT_IEEEFP, 64, FileScalar::Float64}};
+  for (const Kind& k : kKinds)
+    if (f.sampleFormat == k.format && f.bits == k.bits) return k.type;
   file.fail("unsupported TIFF samples (" + std::to_string(f.bits) + "-bit, format " +
-            std::to_string(f.sampleFormat) + "; supported: 8/16-bit integers, 32-bit float)");
+            std::to_string(f.sampleFormat) +
+            "; supported: 8- to 64-bit integers, 32- and 64-bit floats)");
 }
 
 namespace {

@@ -750,6 +750,16 @@ TEST(TiffFiles, MultiPageTypesChannelsAndImageJSpacing) {
   ASSERT_TRUE(testing::writeTiff(dir.path("f.tiff"), 2, 2, fpages, SAMPLEFORMAT_IEEEFP));
   EXPECT_EQ(loadVolume(dir.path("f.tiff")).type(), ScalarType::Float32);
   EXPECT_EQ(loadVolume(dir.path("f.tiff")).spacing(), glm::dvec3(1.0));
+  // 32- and 64-bit samples become float32.
+  std::vector<std::vector<int32_t>> ipages = {{-70000, 1, 2, 3}, {4, 5, 6, 70000}};
+  ASSERT_TRUE(testing::writeTiff(dir.path("i32.tif"), 2, 2, ipages, SAMPLEFORMAT_INT));
+  const Volume i32 = loadVolume(dir.path("i32.tif"));
+  EXPECT_EQ(i32.type(), ScalarType::Float32);
+  EXPECT_EQ(i32.value(0, 0, 0), -70000.0);
+  EXPECT_EQ(i32.value(1, 1, 1), 70000.0);
+  std::vector<std::vector<double>> dpages = {{0.5, 1.5, 2.5, 3.5}};
+  ASSERT_TRUE(testing::writeTiff(dir.path("f64.tif"), 2, 2, dpages, SAMPLEFORMAT_IEEEFP));
+  EXPECT_EQ(loadVolume(dir.path("f64.tif")).value(1, 1, 0), 3.5);
   // Three interleaved channels: channel 2 holds 100 + pixel index.
   std::vector<std::vector<uint8_t>> rgb(2, std::vector<uint8_t>(4 * 3));
   for (int p = 0; p < 2; ++p)
