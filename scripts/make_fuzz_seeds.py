@@ -492,6 +492,58 @@ def archive_seeds():
                     gz=True))
 
 
+def png_bytes(width, height, colour_type, bits, samples):
+    # Filter 0 rows of big-endian samples; the chunks' CRCs as PNG wants them.
+    per = {0: 1, 2: 3, 4: 2, 6: 4}[colour_type] * width
+    rows = b""
+    for y in range(height):
+        row = samples[y * per:(y + 1) * per]
+        rows += b"\0" + (struct.pack(">%dH" % per, *row) if bits == 16 else bytes(row))
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(
+            ">I", zlib.crc32(kind + data) & 0xffffffff)
+    ihdr = struct.pack(">IIBBBBB", width, height, bits, colour_type, 0, 0, 0)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(rows))
+            + chunk(b"IEND", b""))
+
+
+# Two JPEGs of 4 x 3 pixels made once with ImageMagick (grey baseline; colour progressive).
+JPEG_GREY = ("/9j/4AAQSkZJRgABAQAAAQABAAD/2wBDAAMCAgMCAgMDAwMEAwMEBQgFBQQEBQoHBwYIDAoMDAsKCwsNDhIQDQ4R"
+             "DgsLEBYQERMUFRUVDA8XGBYUGBIUFRT/wAALCAADAAQBAREA/8QAFAABAAAAAAAAAAAAAAAAAAAACP/EABsQAAAH"
+             "AQAAAAAAAAAAAAAAAAACBggYV5PS/9oACAEBAAA/AGnAFu9TJ/I/Q//Z")
+JPEG_COLOUR = ("/9j/4AAQSkZJRgABAQAAAQABAAD/2wBDAAMCAgMCAgMDAwMEAwMEBQgFBQQEBQoHBwYIDAoMDAsKCwsNDhIQDQ4R"
+               "DgsLEBYQERMUFRUVDA8XGBYUGBIUFRT/2wBDAQMEBAUEBQkFBQkUDQsNFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQU"
+               "FBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBT/wgARCAADAAQDAREAAhEBAxEB/8QAFAABAAAAAAAAAAAAAAAAAAAA"
+               "B//EABUBAQEAAAAAAAAAAAAAAAAAAAQH/9oADAMBAAIQAxAAAAEHv6f/xAAWEAADAAAAAAAAAAAAAAAAAAAAAxT/"
+               "2gAIAQEAAQUCrcf/xAAYEQACAwAAAAAAAAAAAAAAAAAAAgUWVP/aAAgBAwEBPwGyy+hj/8QAGBEAAgMAAAAAAAAA"
+               "AAAAAAAAAAIFFlT/2gAIAQIBAT8BqsJlU//EABYQAAMAAAAAAAAAAAAAAAAAAAABM//aAAgBAQAGPwKjP//EABQQ"
+               "AQAAAAAAAAAAAAAAAAAAAAD/2gAIAQEAAT8hT//aAAwDAQACAAMAAAAQH//EABcRAAMBAAAAAAAAAAAAAAAAAAAB"
+               "0fH/2gAIAQMBAT8Q1lD/xAAXEQADAQAAAAAAAAAAAAAAAAAAAdHx/9oACAECAQE/EMh0/8QAFhAAAwAAAAAAAAAA"
+               "AAAAAAAAAAHx/9oACAEBAAE/ELiP/9k=")
+
+
+def image_seeds():
+    # One slice each (the harness names the input .png; stb_image goes by content).
+    w, h = 4, 3
+    grey = [(i * 37) % 256 for i in range(w * h)]
+    write("image", "grey8.png", png_bytes(w, h, 0, 8, grey))
+    write("image", "grey16.png", png_bytes(w, h, 0, 16, [g * 257 for g in grey]))
+    write("image", "rgb8.png", png_bytes(w, h, 2, 8, [(i * 53) % 256 for i in range(3 * w * h)]))
+    write("image", "grey_alpha.png", png_bytes(w, h, 4, 8, [(i * 29) % 256 for i in range(2 * w * h)]))
+    write("image", "grey.pgm", b"P5 4 3 255\n" + bytes(grey))
+    write("image", "rgb.ppm", b"P6 4 3 255\n" + bytes((i * 11) % 256 for i in range(3 * w * h)))
+    # A 24-bit BMP: rows bottom up, padded to 4 bytes.
+    row = 3 * w + (-(3 * w) % 4)
+    pixels = b"".join(bytes((x * 60 + y * 20) % 256 for x in range(3 * w)) + b"\0" * (row - 3 * w)
+                      for y in range(h))
+    header = struct.pack("<2sIHHI", b"BM", 54 + len(pixels), 0, 0, 54)
+    info = struct.pack("<IiiHHIIiiII", 40, w, h, 1, 24, 0, len(pixels), 2835, 2835, 0, 0)
+    write("image", "rgb.bmp", header + info + pixels)
+    write("image", "grey.jpg", base64.b64decode(JPEG_GREY))
+    write("image", "colour_progressive.jpg", base64.b64decode(JPEG_COLOUR))
+
+
 def main():
     if not os.path.isdir(DATA):
         sys.exit("make_fuzz_seeds.py: %s: no such folder (the shared data)" % DATA)
@@ -508,6 +560,7 @@ def main():
     archive_seeds()
     mrc_seeds()
     vtk_seeds()
+    image_seeds()
 
 
 if __name__ == "__main__":

@@ -77,6 +77,10 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
     fileOptions.rawDims.clear();
     fileOptions.tfFile.clear();  // --tf was for the first volume; others use their sidecar
     fileOptions.load = load;     // so were --series, --frame and --channel: the window's own
+    std::error_code ec;          // and --spacing, unless this is that file again (paged)
+    if (base.file.empty() ||
+        !std::filesystem::equivalent(std::filesystem::path(path), base.file, ec))
+      fileOptions.spacing.reset();
     ewa::Scene s = ewa::loadScene(fileOptions);
     ewa::LoadedVolume loaded;
     loaded.volume = std::make_shared<ewa::Volume>(std::move(s.volume));

@@ -40,14 +40,13 @@ void applyCloseUp(const CLI::App& app, RenderOptionText* text, RenderSettings* s
   if (app.count("--cutoff") == 0) settings->cutoff = closeUp.cutoff;
 }
 
-// A number as typed, without trailing zeros ("12", "3.5").
+}  // namespace
+
 std::string numberText(double v) {
   std::ostringstream out;
   out << v;
   return out.str();
 }
-
-}  // namespace
 
 std::string optionWithNan(int argc, const char* const* argv) {
   for (int i = 1; i < argc; ++i) {
@@ -129,7 +128,12 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       ->delimiter(',')
       ->expected(2)
       ->check(CLI::Range(1, 16384));
-  std::vector<double> pos, focal, up, bg;
+  std::vector<double> pos, focal, up, bg, spacing;
+  app.add_option("--spacing", spacing,
+                 "Voxel spacing X,Y,Z replacing the file's (image stacks have none; raw files: "
+                 "--raw-spacing)")
+      ->delimiter(',')
+      ->expected(3);
   app.add_option("--camera-position", pos, "Camera position X,Y,Z")->delimiter(',')->expected(3);
   app.add_option("--camera-focal-point", focal, "Camera focal point X,Y,Z")
       ->delimiter(',')
@@ -260,6 +264,11 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                    std::to_string(o->height) + " picture");
     o->pick = glm::dvec2(pick[0], pick[1]);
   }
+  for (double s : spacing)
+    if (!(s > 0.0) || !std::isfinite(s) || s > 1e300)
+      return usage("--spacing " + numberText(spacing[0]) + "," + numberText(spacing[1]) + "," +
+                   numberText(spacing[2]) + ": each must be a positive number");
+  o->spacing = toVec3(spacing);
   o->cameraPosition = toVec3(pos);
   o->cameraFocalPoint = toVec3(focal);
   o->cameraViewUp = toVec3(up);

@@ -38,11 +38,17 @@ struct Options {
   std::string backend = "osmesa";
   std::string shaderDir;  // load shaders from this folder instead of the embedded ones
   LoadOptions load;       // --series, --frame, --channel
+  // --spacing X,Y,Z: replaces the spacing of the volume named here (and of its frames and
+  // channels in the window), for files without one (image stacks) or with a wrong one.
+  std::optional<glm::dvec3> spacing;
   // Where the window keeps an archive it opened unpacked (null headless: unpacked per load).
   std::shared_ptr<ArchiveCache> archives;
   // Plain raw input.
   std::string rawDims, rawType, rawSpacing = "1,1,1", rawEndian = "little";
 };
+
+// A number as typed, without trailing zeros ("12", "3.5"), for messages.
+std::string numberText(double v);
 
 // Outcome of parsing: run, or exit at once with `exitCode` (0 for --help/--version, 2 for
 // a usage error, whose message has been printed to stderr).

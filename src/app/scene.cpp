@@ -42,6 +42,13 @@ Scene loadScene(const Options& o) {
             : loadRawVolume(path, parseRawOptions(o.rawDims, o.rawType, o.rawSpacing, o.rawEndian));
     scene.name = std::filesystem::path(path).filename().string();
     sidecar = sidecarTransferFunctionPath(path, o.load.channel);
+    if (o.spacing) {
+      const glm::dvec3 file = scene.volume.spacing(), s = *o.spacing;
+      scene.volume.setSpacing(s);
+      scene.volume.addNote("spacing " + numberText(s.x) + ", " + numberText(s.y) + ", " +
+                           numberText(s.z) + " from --spacing (the file's: " + numberText(file.x) +
+                           ", " + numberText(file.y) + ", " + numberText(file.z) + ")");
+    }
     // Warnings (uneven slices, a sheared grid) are worth a line even when the load succeeds.
     for (const std::string& note : scene.volume.notes())
       if (note.compare(0, 9, "warning: ") == 0)

@@ -33,14 +33,19 @@ Volume::Volume(std::array<int64_t, 3> dims, glm::dvec3 spacing, glm::dvec3 origi
   for (int64_t d : dims_) {
     if (d <= 0) throw std::invalid_argument("volume dimensions must be positive");
   }
-  for (int a = 0; a < 3; ++a) {
-    if (!(spacing_[a] > 0.0) || !std::isfinite(spacing_[a]))
-      throw std::invalid_argument("volume spacing must be positive and finite");
-  }
+  setSpacing(spacing);
   const auto count = static_cast<uint64_t>(voxelCount());
   if (bytes_.size() / scalarSize(type_) != count || bytes_.size() % scalarSize(type_) != 0)
     throw std::invalid_argument("volume data size does not match its dimensions");
   computeStatistics();
+}
+
+void Volume::setSpacing(const glm::dvec3& spacing) {
+  for (int a = 0; a < 3; ++a) {
+    if (!(spacing[a] > 0.0) || !std::isfinite(spacing[a]))
+      throw std::invalid_argument("volume spacing must be positive and finite");
+  }
+  spacing_ = spacing;
 }
 
 void Volume::setDirection(const glm::dmat3& direction, bool patientFrame) {

@@ -58,6 +58,9 @@ class Volume {
 
   const std::array<int64_t, 3>& dims() const { return dims_; }
   const glm::dvec3& spacing() const { return spacing_; }
+  // Replaces the spacing (a file without one, or a wrong one: --spacing). Throws
+  // std::invalid_argument unless every component is positive and finite.
+  void setSpacing(const glm::dvec3& spacing);
   const glm::dvec3& origin() const { return origin_; }
   // Direction cosines: column a is the world direction of data axis a (identity by default).
   // Loaders leave it a rotation (see volume_orientation.h), so renderers can draw the volume in

@@ -238,12 +238,13 @@ std::string archiveVolumePath(const ExtractedArchive& archive, const std::string
     failLoad(path, "holds " + std::to_string(volumes.size()) + " volume files (" + names +
                        (volumes.size() > 3 ? ", ..." : "") + "): unpack it and open one");
   }
-  // A DICOM series or TIFF stack, often inside a folder of its own.
+  // A DICOM series or a stack of TIFF or other images, often inside a folder of its own.
   const bool images = std::any_of(others.begin(), others.end(), [](const std::string& file) {
-    return hasExtension(file, {".tif", ".tiff"}) || looksLikeDicom(file);
+    return hasExtension(file, {".tif", ".tiff"}) || hasExtension(file, sliceImageExtensions()) ||
+           looksLikeDicom(file);
   });
   if (!images)
-    failLoad(path, "holds no volume file, DICOM image or TIFF file (" +
+    failLoad(path, "holds no volume file, DICOM image, TIFF file or slice image (" +
                        std::to_string(archive.files) + " other files)");
   fs::path folder = archive.folder();
   for (;;) {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "io/archive_extract.h"
+#include "io/format_loaders.h"
 
 namespace ewa {
 
@@ -27,6 +28,8 @@ const std::vector<std::string>& volumeFileExtensions() {
                                     ".mrc",  ".mrcs", ".map",    ".ccp4", ".rec"};
     const std::vector<std::string>& archives = archiveFileExtensions();
     all.insert(all.end(), archives.begin(), archives.end());
+    const std::vector<std::string>& images = sliceImageExtensions();
+    all.insert(all.end(), images.begin(), images.end());
     return all;
   }();
   return kExtensions;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/volume.h"
 
@@ -14,10 +15,9 @@ Volume loadDat(const std::string& path);        // .dat (Voreen / Inviwo)
 Volume loadVti(const std::string& path);        // .vti (VTK XML ImageData)
 // .nii, .nii.gz, .hdr/.img (NIfTI-1 and -2); `frame` of a 4D file.
 Volume loadNifti(const std::string& path, int frame);
-Volume loadSlc(const std::string& path);  // .slc (VTK SLC)
-Volume loadMrc(const std::string& path);
-Volume loadVtkLegacy(const std::string& path);  // .vtk (legacy VTK, STRUCTURED_POINTS)  // .mrc
-                                                // .mrcs .map .ccp4 .rec (MRC2014, CCP4)
+Volume loadSlc(const std::string& path);        // .slc (VTK SLC)
+Volume loadMrc(const std::string& path);        // .mrc .mrcs .map .ccp4 .rec (MRC2014, CCP4)
+Volume loadVtkLegacy(const std::string& path);  // .vtk (legacy VTK, STRUCTURED_POINTS)
 // A DICOM series: `path` is a folder or one file of the series; `series` a SeriesInstanceUID
 // or empty (the named file's series, else the folder's series with the most slices);
 // `channel` of RGB images; `frame`, of a series holding several volumes at the same positions
@@ -28,6 +28,12 @@ Volume loadDicom(const std::string& path, const std::string& series, int channel
 Volume loadTiff(const std::string& path, int channel, int frame);
 // An OME-XML companion file (.companion.ome, .ome.xml) of an OME-TIFF dataset over several files.
 Volume loadOmeCompanion(const std::string& path, int channel, int frame);
+
+// Ordinary images as slices (PNG, 8 or 16 bits; JPEG; BMP; PGM/PPM): the images of a folder, or
+// of the named image's folder, in natural name order; `channel` of colour images.
+Volume loadImageStack(const std::string& path, int channel);
+// The file names loadImageStack reads.
+const std::vector<std::string>& sliceImageExtensions();
 
 // True when the file starts like DICOM Part 10 ("DICM" at byte 128).
 bool looksLikeDicom(const std::string& path);

@@ -16,16 +16,39 @@ namespace ewa {
 
 namespace {
 
-// A folder holds a DICOM series or a TIFF stack.
+// True when a file of the folder that is no slice image is DICOM (or a CD's DICOMDIR); the first
+// thousand such files are looked into.
+bool holdsDicom(const std::string& folder) {
+  std::error_code ec;
+  int looked = 0;
+  for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end && looked < 1000;
+       it.increment(ec)) {
+    const std::string file = it->path().string();
+    std::error_code statError;
+    if (!it->is_regular_file(statError) || hasExtension(file, sliceImageExtensions())) continue;
+    ++looked;
+    if (toLower(it->path().filename().string()) == "dicomdir" || looksLikeDicom(file)) return true;
+  }
+  return false;
+}
+
+// A folder holds a TIFF stack, a stack of other images (PNG, JPEG, ...) or a DICOM series (also
+// a CD's tree of folders, which may hold a viewer's images beside it: any DICOM file wins).
 Volume loadFolder(const std::string& path, const LoadOptions& options) {
   std::error_code ec;
-  bool tiff = false;
+  bool tiff = false, images = false, others = false;
   for (std::filesystem::directory_iterator it(path, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string ext = toLower(it->path().extension().string());
-    if (ext == ".tif" || ext == ".tiff") tiff = true;
+    const std::string file = it->path().string();
+    if (hasExtension(file, {".tif", ".tiff"}))
+      tiff = true;
+    else if (hasExtension(file, sliceImageExtensions()))
+      images = true;
+    else
+      others = true;
   }
   if (ec) failLoad(path, "cannot list the folder (" + ec.message() + ")");
   if (tiff) return loadTiff(path, options.channel, options.frame);
+  if (images && !(others && holdsDicom(path))) return loadImageStack(path, options.channel);
   return loadDicom(path, options.series, options.channel, options.frame);
 }
 
@@ -73,6 +96,7 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options,
   if (ext == ".mrc" || ext == ".mrcs" || ext == ".map" || ext == ".ccp4" || ext == ".rec")
     return loadMrc(path);
   if (ext == ".tif" || ext == ".tiff") return loadTiff(path, options.channel, options.frame);
+  if (hasExtension(path, sliceImageExtensions())) return loadImageStack(path, options.channel);
   if (ext == ".ome" || hasExtension(path, {".ome.xml"}))
     return loadOmeCompanion(path, options.channel, options.frame);
   if (isArchiveName(path)) return loadArchive(path, options, archives);
@@ -81,9 +105,9 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options,
   failLoad(path,
            "unknown volume file extension " + quoteText(ext) +
                " (supported: .nrrd .nhdr .mhd .mha .dat .vti .vtk .nii .nii.gz .hdr .img .dcm "
-               ".tif .tiff .ome .slc .mrc .map .rec, DICOM files and folders, archives of "
-               "them: .zip .tar "
-               ".tar.gz .7z ...; raw files need their dimensions and type given)");
+               ".tif .tiff .ome .slc .mrc .map .rec, DICOM files and folders, folders of .png "
+               ".jpg .bmp .pgm slices, archives of them: .zip .tar .tar.gz .7z ...; raw files "
+               "need their dimensions and type given)");
 }
 
 // Errors about a data file named by the header still start with the path the caller gave.

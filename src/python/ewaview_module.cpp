@@ -41,23 +41,28 @@ PYBIND11_MODULE(ewaview, m) {
 
   py::class_<PythonScene>(m, "Scene", R"(A volume, its transfer function and render options.
 
-Scene(path=None, **options): a volume file ewaview reads (.nrrd .nhdr .mhd .mha .dat .vti, raw
-with raw_dims=..., raw_type=...), or synthetic='sphere:64'; no path: the default volume.
+Scene(path=None, spacing=None, **options): a volume file or folder ewaview reads (.nrrd .nhdr
+.mhd .mha .dat .vti .nii .dcm .tif .png ..., raw with raw_dims=..., raw_type=...), or
+synthetic='sphere:64'; no path: the default volume. spacing=(sx, sy, sz) replaces the file's.
 Scene(array, spacing=(1, 1, 1), origin=(0, 0, 0), **options): a NumPy array indexed [z, y, x]
 (uint8, int16, uint16, float32 as they are; int8 becomes int16, 32- and 64-bit
 integers and float64 become float32).
 The transfer function is tf=FILE's, else a FILE.tf.json beside the volume, else one made from
 the histogram, as on the command line.)")
-      .def(py::init(
-               [](py::object source, py::object spacing, py::object origin, py::kwargs options) {
-                 if (py::isinstance<py::array>(source))
-                   return std::make_unique<PythonScene>(source.cast<py::array>(), spacing, origin,
-                                                        options);
-                 if (!spacing.is_none() || !origin.is_none())
-                   throw ewa::python::UsageError("spacing and origin go with an array volume");
-                 if (source.is_none()) return std::make_unique<PythonScene>("", options);
-                 return std::make_unique<PythonScene>(py::str(source).cast<std::string>(), options);
-               }),
+      .def(py::init([](py::object source, py::object spacing, py::object origin,
+                       py::kwargs options) {
+             if (py::isinstance<py::array>(source))
+               return std::make_unique<PythonScene>(source.cast<py::array>(), spacing, origin,
+                                                    options);
+             if (!origin.is_none())
+               throw ewa::python::UsageError("origin goes with an array volume");
+             // A file's spacing replaced, as --spacing does.
+             py::dict fileOptions;
+             for (const auto& [key, value] : options) fileOptions[key] = value;
+             if (!spacing.is_none()) fileOptions["spacing"] = spacing;
+             if (source.is_none()) return std::make_unique<PythonScene>("", fileOptions);
+             return std::make_unique<PythonScene>(py::str(source).cast<std::string>(), fileOptions);
+           }),
            py::arg("source") = py::none(), py::arg("spacing") = py::none(),
            py::arg("origin") = py::none())
       .def(

@@ -53,7 +53,7 @@ std::string valueWord(const py::handle& value) {
 }  // namespace
 
 bool isLoadOption(const std::string& key) {
-  return key == "synthetic" || key == "tf" || key.rfind("raw_", 0) == 0;
+  return key == "synthetic" || key == "tf" || key == "spacing" || key.rfind("raw_", 0) == 0;
 }
 
 std::vector<std::string> optionWords(const py::dict& options) {

@@ -82,6 +82,15 @@ def test_numpy_array_equals_the_same_voxels_read_as_raw(cli, out_dir):
     image = scene.render(**SMALL)
     assert_same_picture(image, expected)
     assert image.max() > 40
+    # A file's spacing replaced, as --spacing does: the raw file read with spacing 1 becomes the
+    # same picture.
+    plain = ewaview.Scene(raw, raw_dims="28,24,20", raw_type="uint16", spacing=(1, 1.5, 2))
+    assert plain.info["spacing"] == [1, 1.5, 2]
+    assert_same_picture(plain.render(**SMALL), expected)
+    with pytest.raises(ValueError, match="spacing: give it when the scene is made"):
+        plain.set(spacing="1,1,1")
+    with pytest.raises(ValueError, match="origin goes with an array volume"):
+        ewaview.Scene(raw, origin=(0, 0, 0))
     # float64 arrays become float32 volumes; non-contiguous views are copied in [z, y, x] order.
     assert ewaview.Scene(data.astype(np.float64)).info["type"] == "float32"
     flipped = ewaview.Scene(data[:, :, ::-1].copy()).render(**SMALL)

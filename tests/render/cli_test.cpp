@@ -154,6 +154,30 @@ TEST(Cli, InfoPrintsOneJsonObject) {
       << r.err;
 }
 
+// A folder of image slices opens as a volume; --spacing replaces the spacing they lack.
+TEST(Cli, SpacingReplacesTheFilesForAFolderOfImageSlices) {
+  const std::string dir = testOutputDir() + "/slices";
+  std::filesystem::create_directories(dir);
+  for (int z = 0; z < 3; ++z)
+    std::ofstream(dir + "/s" + std::to_string(z) + ".pgm", std::ios::binary)
+        << "P5 4 2 255\n"
+        << std::string(8, char(10 * z));
+  CliRun r = ewaview(dir + " --info");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"dims\":[4,2,3],\"spacing\":[1.0,1.0,1.0]"), std::string::npos) << r.out;
+  r = ewaview(dir + "/s1.pgm --info --spacing 0.5,0.25,2");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"spacing\":[0.5,0.25,2.0]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("spacing 0.5, 0.25, 2 from --spacing (the file's: 1, 1, 1)"),
+            std::string::npos)
+      << r.out;
+  r = ewaview(dir + " --info --spacing 1,-1,1");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("--spacing 1,-1,1: each must be a positive number"), std::string::npos)
+      << r.err;
+}
+
 // --info's series list: each series' id, label and whether it is the one open, in order.
 TEST(Cli, InfoListsTheSeriesOfAFolder) {
   Volume v({2, 2, 2}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8,

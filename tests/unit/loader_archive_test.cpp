@@ -165,6 +165,21 @@ TEST_F(ArchiveTest, DicomSeriesInAFolderOfTheZipEqualsTheFolder) {
   EXPECT_TRUE(leftInTemp().empty());
 }
 
+TEST_F(ArchiveTest, ImageSlicesInAFolderOfTheZipOpenAsAStack) {
+  std::vector<Entry> entries = {{"scan/readme.txt", "slices of a scan"}};
+  for (int z : {1, 2, 10})  // natural order: z10 last
+    entries.push_back(
+        {"scan/z" + std::to_string(z) + ".pgm", "P5 2 2 255\n" + std::string(4, char(z))});
+  const std::string path = files_.path("slices.zip");
+  writeArchive(path, entries);
+  const Volume v = loadVolume(path);
+  EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{2, 2, 3}));
+  EXPECT_EQ(v.value(1, 1, 2), 10);
+  EXPECT_EQ(v.value(0, 0, 1), 2);
+  EXPECT_NE(testing::allNotes(v).find("opened 'scan'"), std::string::npos);
+  EXPECT_TRUE(leftInTemp().empty());
+}
+
 TEST_F(ArchiveTest, NamesLeavingTheFolderAndLinksAreLeftOut) {
   const std::string path = files_.path("hostile.tar.gz");
   writeArchive(path, {{"../escape.nrrd", nrrd(1)},
@@ -215,7 +230,8 @@ TEST_F(ArchiveTest, BadArchivesFailInOneLineNamingTheArchive) {
   }
   const std::string text = files_.path("text.zip");
   writeArchive(text, {{"README.txt", "hello"}});
-  expectVolumeLoadError(text, "holds no volume file, DICOM image or TIFF file (1 other files)");
+  expectVolumeLoadError(
+      text, "holds no volume file, DICOM image, TIFF file or slice image (1 other files)");
   EXPECT_TRUE(leftInTemp().empty()) << "failed loads remove the scratch folder too";
 }
 

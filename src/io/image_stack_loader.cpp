@@ -1,0 +1,163 @@
+// Slices from ordinary images (PNG, JPEG, BMP, PGM/PPM) through stb_image, as scanners and
+// microscopes export them: one image a slice, in natural name order.
+#include <stb_image.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/byte_order.h"
+#include "io/file_bytes.h"
+#include "io/file_listing.h"
+#include "io/format_loaders.h"
+#include "io/load_failure.h"
+#include "io/text_fields.h"
+#include "io/volume_layout.h"
+
+namespace ewa {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr size_t kMaxSlices = 100000;
+
+// What stb_image says an image holds, before decoding it.
+struct ImageShape {
+  int width = 0, height = 0, components = 0;
+  bool sixteen = false;
+  bool operator==(const ImageShape& o) const {
+    return width == o.width && height == o.height && components == o.components &&
+           sixteen == o.sixteen;
+  }
+  std::string text() const {
+    static const char* kKinds[] = {"", "grey", "grey and alpha", "RGB", "RGBA"};
+    return std::to_string(width) + " x " + std::to_string(height) + " " +
+           kKinds[std::clamp(components, 0, 4)] + (sixteen ? " 16-bit" : " 8-bit");
+  }
+};
+
+ImageShape shapeOf(const std::string& file, const std::vector<uint8_t>& bytes) {
+  if (bytes.size() > size_t(INT32_MAX)) failLoad(file, "image file is too large");
+  ImageShape s;
+  const auto* data = bytes.data();
+  const int size = int(bytes.size());
+  if (!stbi_info_from_memory(data, size, &s.width, &s.height, &s.components))
+    failLoad(file, std::string("not an image stb_image reads (") +
+                       (stbi_failure_reason() ? stbi_failure_reason() : "unknown format") + ")");
+  s.sixteen = stbi_is_16_bit_from_memory(data, size) != 0;
+  if (s.width <= 0 || s.height <= 0 || s.components < 1 || s.components > 4)
+    failLoad(file, "bad image size or components");
+  return s;
+}
+
+// The images of the folder `path` is or lies in, in natural order.
+std::vector<std::string> sliceFiles(const std::string& path, bool folder) {
+  const fs::path dir = folder ? fs::path(path) : fs::path(path).parent_path();
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir.empty() ? fs::path(".") : dir, ec), end; !ec && it != end;
+       it.increment(ec)) {
+    std::error_code statError;
+    if (it->is_regular_file(statError) &&
+        hasExtension(it->path().string(), sliceImageExtensions())) {
+      if (files.size() == kMaxSlices)
+        failLoad(path, "more than " + std::to_string(kMaxSlices) + " images in the folder");
+      files.push_back(it->path().string());
+    }
+  }
+  if (ec) failLoad(path, "cannot list the folder (" + ec.message() + ")");
+  if (files.empty()) failLoad(path, "no PNG, JPEG, BMP or PGM/PPM image in the folder");
+  std::sort(files.begin(), files.end(), naturalLess);
+  return files;
+}
+
+// One component of every pixel of a decoded image, appended to `out`; false when the image's
+// colour components differ somewhere (it is not grey stored as colour).
+bool appendComponent(const uint8_t* pixels, const ImageShape& s, int component,
+                     std::vector<uint8_t>& out) {
+  const size_t bytes = s.sixteen ? 2 : 1, stride = bytes * size_t(s.components);
+  const size_t count = size_t(s.width) * size_t(s.height);
+  const size_t at = out.size();
+  out.resize(at + count * bytes);
+  bool grey = true;
+  for (size_t i = 0; i < count; ++i) {
+    const uint8_t* p = pixels + i * stride;
+    if (s.components >= 3)
+      grey = grey && std::equal(p, p + bytes, p + bytes) && std::equal(p, p + bytes, p + 2 * bytes);
+    std::copy(p + component * bytes, p + (component + 1) * bytes, out.data() + at + i * bytes);
+  }
+  return grey;
+}
+
+}  // namespace
+
+const std::vector<std::string>& sliceImageExtensions() {
+  static const std::vector<std::string> kExtensions = {".png", ".jpg", ".jpeg",
+                                                       ".bmp", ".pgm", ".ppm"};
+  return kExtensions;
+}
+
+Volume loadImageStack(const std::string& path, int channel) {
+  std::error_code ec;
+  const bool folder = fs::is_directory(path, ec);
+  const std::vector<std::string> files = sliceFiles(path, folder);
+  VolumeLayout layout;
+  ImageShape first;
+  std::vector<uint8_t> bytes;
+  bool grey = true;
+  for (size_t n = 0; n < files.size(); ++n) {
+    const std::string& file = files[n];
+    const std::vector<uint8_t> data = readFileRange(file, 0, regularFileSize(file), "image");
+    const ImageShape s = shapeOf(file, data);
+    if (n == 0) {
+      first = s;
+      // Colour: one component a volume (alpha is not one); grey and alpha: the grey.
+      checkChannel(path, channel, s.components >= 3 ? 3 : 1);
+      layout.type = s.sixteen ? FileScalar::UInt16 : FileScalar::UInt8;
+      layout.dims = {s.width, s.height, int64_t(files.size())};
+      dataByteCount(path, layout.dims, layout.type);  // the whole stack fits, before decoding
+      bytes.reserve(size_t(s.width) * size_t(s.height) * files.size() * (s.sixteen ? 2 : 1));
+    } else if (!(s == first)) {
+      failLoad(file, "is " + s.text() + ", the first image (" +
+                         fs::path(files[0]).filename().string() + ") " + first.text() +
+                         ": all slices must agree");
+    }
+    int w = 0, h = 0, c = 0;
+    // stb_image keeps its last reason, set by whichever format it tried; a decoder may fail
+    // without setting one, so a reason unchanged by decoding is not shown.
+    const char* before = stbi_failure_reason();
+    const auto* in = data.data();
+    const int size = int(data.size());
+    std::unique_ptr<void, void (*)(void*)> pixels(
+        s.sixteen ? static_cast<void*>(stbi_load_16_from_memory(in, size, &w, &h, &c, 0))
+                  : static_cast<void*>(stbi_load_from_memory(in, size, &w, &h, &c, 0)),
+        stbi_image_free);
+    if (!pixels) {
+      const char* why = stbi_failure_reason();
+      failLoad(file, std::string("cannot decode the image (") +
+                         (why && why != before ? why : "corrupt or truncated data") + ")");
+    }
+    if (w != s.width || h != s.height || c != s.components)
+      failLoad(file, "decodes to another size than its header says");
+    grey = appendComponent(static_cast<const uint8_t*>(pixels.get()), s, channel, bytes) && grey;
+  }
+  layout.bigEndian = hostIsBigEndian();  // stb_image gives native order
+  layout.notes.push_back((files.size() == 1
+                              ? std::string("1 image as a slice")
+                              : std::to_string(files.size()) + " images as slices, in name order") +
+                         "; images carry no slice spacing: 1 assumed");
+  if (first.components >= 3 && !grey) {
+    layout.channel = channel;
+    layout.channelCount = 3;
+    layout.notes.push_back("colour images; showing channel " + std::to_string(channel) +
+                           " (--channel N picks another of 3)");
+  } else if (first.components >= 3) {
+    layout.notes.push_back("grey images stored as colour: one channel read");
+  }
+  return makeVolume(path, layout, std::move(bytes));
+}
+
+}  // namespace ewa

@@ -1,0 +1,156 @@
+// Image stacks: folders of PNG (8 and 16 bits, grey, grey and alpha, colour), PGM/PPM and BMP
+// slices in natural name order; colour channels; bad and mismatched images fail in one line.
+#include <gtest/gtest.h>
+#include <zlib.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/volume_loader.h"
+#include "loader_test_files.h"
+
+namespace ewa {
+namespace {
+
+using testing::expectLoadError;
+using testing::expectVolumeLoadError;
+using testing::TempDir;
+
+std::string bigEndian32(uint32_t v) {
+  return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+}
+
+std::string pngChunk(const std::string& type, const std::string& data) {
+  const std::string body = type + data;
+  const auto crc =
+      uint32_t(crc32(0, reinterpret_cast<const Bytef*>(body.data()), uInt(body.size())));
+  return bigEndian32(uint32_t(data.size())) + body + bigEndian32(crc);
+}
+
+// A PNG of `width` x `height` pixels of `components` samples (1 grey, 2 grey and alpha, 3 RGB),
+// `bits` 8 or 16 (stored big-endian, as PNG does), from `samples` row by row.
+std::string pngBytes(int width, int height, int components, int bits,
+                     const std::vector<uint16_t>& samples) {
+  static const char kColourType[] = {0, 0, 4, 2, 6};
+  std::string header = bigEndian32(uint32_t(width)) + bigEndian32(uint32_t(height));
+  header += {char(bits), kColourType[components], 0, 0, 0};
+  std::string rows;
+  size_t at = 0;
+  for (int y = 0; y < height; ++y) {
+    rows += '\0';  // filter: none
+    for (int x = 0; x < width * components; ++x, ++at) {
+      if (bits == 16) rows += char(samples[at] >> 8);
+      rows += char(samples[at] & 0xff);
+    }
+  }
+  return "\x89PNG\r\n\x1a\n" + pngChunk("IHDR", header) +
+         pngChunk("IDAT", testing::zlibBytes(rows)) + pngChunk("IEND", "");
+}
+
+// A binary PGM (components 1) or PPM (3) of 8-bit samples.
+std::string pnmBytes(int width, int height, int components, const std::vector<uint16_t>& samples) {
+  std::string out = std::string(components == 1 ? "P5" : "P6") + " " + std::to_string(width) + " " +
+                    std::to_string(height) + " 255\n";
+  for (uint16_t s : samples) out += char(s);
+  return out;
+}
+
+// 3 x 2 pixels of slice z: sample c of pixel i is 40 z + 10 i + c (times 300 for 16 bits).
+std::vector<uint16_t> slice(int z, int components, int scale = 1) {
+  std::vector<uint16_t> v;
+  for (int i = 0; i < 6; ++i)
+    for (int c = 0; c < components; ++c) v.push_back(uint16_t(scale * (40 * z + 10 * i + c)));
+  return v;
+}
+
+TEST(ImageStack, PngSlicesInNaturalOrderFromTheFolderOrAnyOfItsImages) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path("s"));
+  const int order[] = {2, 0, 1};  // written as z1, z10, z2: natural order puts z10 last
+  const char* names[] = {"s/z10.png", "s/z1.png", "s/z2.png"};
+  for (int n = 0; n < 3; ++n) dir.write(names[n], pngBytes(3, 2, 1, 8, slice(order[n], 1)));
+  dir.write("s/notes.txt", "not a slice");
+  for (const std::string& path : {dir.path("s"), dir.path("s/z2.png")}) {
+    const Volume v = loadVolume(path);
+    EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{3, 2, 3}));
+    EXPECT_EQ(v.type(), ScalarType::UInt8);
+    for (int z = 0; z < 3; ++z)
+      for (int i = 0; i < 6; ++i) ASSERT_EQ(v.value(i % 3, i / 3, z), 40 * z + 10 * i) << path;
+    EXPECT_EQ(v.spacing(), glm::dvec3(1.0));
+    EXPECT_EQ(v.notes().front(),
+              "3 images as slices, in name order; images carry no slice spacing: 1 assumed");
+  }
+}
+
+TEST(ImageStack, SixteenBitGreyAndAlphaAndGreyStoredAsColour) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path("a"));
+  for (int z = 0; z < 2; ++z)
+    dir.write("a/" + std::to_string(z) + ".png", pngBytes(3, 2, 1, 16, slice(z, 1, 300)));
+  const Volume a = loadVolume(dir.path("a"));
+  EXPECT_EQ(a.type(), ScalarType::UInt16);
+  EXPECT_EQ(a.value(2, 1, 1), 300 * (40 + 50));
+  // Grey and alpha: the grey.
+  std::filesystem::create_directories(dir.path("b"));
+  dir.write("b/0.png", pngBytes(3, 2, 2, 8, slice(1, 2)));
+  EXPECT_EQ(loadVolume(dir.path("b")).value(1, 0, 0), 40 + 10);
+  // Colour images whose channels agree everywhere: grey, one channel.
+  std::vector<uint16_t> grey;
+  for (uint16_t s : slice(2, 1)) grey.insert(grey.end(), {s, s, s});
+  std::filesystem::create_directories(dir.path("c"));
+  dir.write("c/0.ppm", pnmBytes(3, 2, 3, grey));
+  const Volume c = loadVolume(dir.path("c"));
+  EXPECT_EQ(c.channelCount(), 1);
+  EXPECT_EQ(c.value(0, 1, 0), 80 + 30);
+  EXPECT_EQ(c.notes().back(), "grey images stored as colour: one channel read");
+}
+
+TEST(ImageStack, ColourImagesOpenOneChannelAtATime) {
+  TempDir dir;
+  for (int z = 0; z < 2; ++z)
+    dir.write("rgb" + std::to_string(z) + ".ppm", pnmBytes(3, 2, 3, slice(z, 3)));
+  for (int c = 0; c < 3; ++c) {
+    const Volume v = loadVolume(dir.path("rgb0.ppm"), {"", 0, c});
+    EXPECT_EQ(v.channelCount(), 3);
+    EXPECT_EQ(v.channel(), c);
+    EXPECT_EQ(v.value(1, 1, 1), 40 + 40 + c);
+  }
+  expectLoadError(
+      [&] {
+        loadVolume(dir.path("rgb0.ppm"), {"", 0, 3});
+      },
+      dir.path("rgb0.ppm"), "--channel 3 is out of range (3 channels)");
+}
+
+TEST(ImageStack, MismatchedBrokenAndForeignImagesFailInOneLine) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path("m"));
+  dir.write("m/1.png", pngBytes(3, 2, 1, 8, slice(0, 1)));
+  dir.write("m/2.png", pngBytes(2, 3, 1, 8, slice(1, 1)));
+  expectVolumeLoadError(dir.path("m"),
+                        "is 2 x 3 grey 8-bit, the first image (1.png) 3 x 2 grey "
+                        "8-bit: all slices must agree");
+  std::filesystem::create_directories(dir.path("d"));
+  dir.write("d/1.png", pngBytes(3, 2, 1, 16, slice(0, 1)));
+  dir.write("d/2.png", pngBytes(3, 2, 1, 8, slice(1, 1)));
+  expectVolumeLoadError(dir.path("d"), "all slices must agree");
+  std::filesystem::create_directories(dir.path("x"));
+  dir.write("x/a.png", "this is not a PNG at all");
+  expectVolumeLoadError(dir.path("x/a.png"), "not an image stb_image reads");
+  std::string cut = pngBytes(3, 2, 1, 8, slice(0, 1));
+  cut.replace(cut.find("IDAT") + 6, 4, "\xff\xff\xff\xff");  // corrupt the deflate stream
+  std::filesystem::create_directories(dir.path("y"));
+  dir.write("y/a.png", cut);
+  expectVolumeLoadError(dir.path("y/a.png"), "cannot decode the image");
+  // Headers promising more pixels than this machine's memory are refused before decoding:
+  // 200 slices of 32768 x 32768 (stb_image's own limit is 2^30 pixels an image).
+  std::filesystem::create_directories(dir.path("z"));
+  std::string huge = pngBytes(3, 2, 1, 8, slice(0, 1));
+  huge.replace(16, 8, bigEndian32(1u << 15) + bigEndian32(1u << 15));
+  for (int n = 0; n < 200; ++n) dir.write("z/" + std::to_string(n) + ".png", huge);
+  expectVolumeLoadError(dir.path("z"), "more than this machine's memory");
+}
+
+}  // namespace
+}  // namespace ewa
