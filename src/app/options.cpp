@@ -120,8 +120,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                  "series of several volumes at the same positions: open this volume (default 0)")
       ->check(CLI::Range(0, 1 << 30));
   app.add_option("--channel", o->load.channel,
-                 "Multi-channel TIFF, colour DICOM (0 red, 1 green, 2 blue) or a 4D NRRD's "
-                 "colour or vector axis: open this channel (default 0)")
+                 "Colour or vector data (TIFF, DICOM, image slices and NIfTI: 0 red, 1 green, 2 "
+                 "blue; MetaImage channels, VTK components and vectors, a 4D NRRD's colour or "
+                 "vector axis): open this channel (default 0)")
       ->check(CLI::Range(0, 1 << 20));
   std::vector<int> res;
   app.add_option("--resolution", res, "Image size W,H (default 800,600)")

@@ -10,14 +10,17 @@ namespace ewa {
 
 // .nrrd, .nhdr; of a 4D file, `frame` (time, lists) or `channel` (colour, vector kinds).
 Volume loadNrrd(const std::string& path, int frame, int channel);
-Volume loadMetaImage(const std::string& path);  // .mhd, .mha
-Volume loadDat(const std::string& path);        // .dat (Voreen / Inviwo)
-Volume loadVti(const std::string& path);        // .vti (VTK XML ImageData)
-// .nii, .nii.gz, .hdr/.img (NIfTI-1 and -2); `frame` of a 4D file.
-Volume loadNifti(const std::string& path, int frame);
-Volume loadSlc(const std::string& path);        // .slc (VTK SLC)
-Volume loadMrc(const std::string& path);        // .mrc .mrcs .map .ccp4 .rec (MRC2014, CCP4)
-Volume loadVtkLegacy(const std::string& path);  // .vtk (legacy VTK, STRUCTURED_POINTS)
+// .mhd, .mha; `channel` of ElementNumberOfChannels interleaved.
+Volume loadMetaImage(const std::string& path, int channel);
+Volume loadDat(const std::string& path);  // .dat (Voreen / Inviwo)
+// .vti (VTK XML ImageData); `channel` of an array's NumberOfComponents.
+Volume loadVti(const std::string& path, int channel);
+// .nii, .nii.gz, .hdr/.img (NIfTI-1 and -2); `frame` of a 4D file, `channel` of RGB and RGBA.
+Volume loadNifti(const std::string& path, int frame, int channel);
+Volume loadSlc(const std::string& path);  // .slc (VTK SLC)
+Volume loadMrc(const std::string& path);  // .mrc .mrcs .map .ccp4 .rec (MRC2014, CCP4)
+// .vtk (legacy VTK, STRUCTURED_POINTS); `channel` of SCALARS' components.
+Volume loadVtkLegacy(const std::string& path, int channel);
 // A DICOM series: `path` is a folder or one file of the series; `series` a SeriesInstanceUID
 // or empty (the named file's series, else the folder's series with the most slices);
 // `channel` of RGB images; `frame`, of a series holding several volumes at the same positions

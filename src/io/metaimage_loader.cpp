@@ -66,7 +66,7 @@ void parseAxes(const std::string& path, const std::string& key, const std::strin
 
 }  // namespace
 
-Volume loadMetaImage(const std::string& path) {
+Volume loadMetaImage(const std::string& path, int channel) {
   const uint64_t fileSize = regularFileSize(path);
   const std::string text = readFilePrefix(path, kMaxHeaderBytes, [](std::string_view t) {
     return headerEnd(t) != std::string_view::npos;
@@ -142,8 +142,9 @@ Volume loadMetaImage(const std::string& path) {
     }
   }
   layout.patientFrame = field("anatomicalorientation") != nullptr;
-  if (const std::string* v = field("elementnumberofchannels"); v && trim(*v) != "1")
-    failLoad(path, "unsupported ElementNumberOfChannels " + quoteText(*v) + " (need 1)");
+  int64_t channels = 1;  // interleaved in each voxel (colour, vectors)
+  if (const std::string* v = field("elementnumberofchannels"); v && !parseInt64(trim(*v), channels))
+    failLoad(path, "bad ElementNumberOfChannels " + quoteText(*v));
   if (const std::string* v = field("binarydata"); v && !parseBool(path, "BinaryData", *v))
     failLoad(path, "unsupported text (BinaryData = False) data");
   for (const char* key : {"binarydatabyteordermsb", "elementbyteordermsb"}) {
@@ -163,7 +164,7 @@ Volume loadMetaImage(const std::string& path) {
     failLoad(path,
              "unsupported ElementDataFile " + quoteText(dataName) + " (need one file or LOCAL)");
   const std::string dataPath = local ? path : siblingPath(path, dataName);
-  const uint64_t total = dataByteCount(path, layout.dims, layout.type);
+  const uint64_t total = componentDataByteCount(path, layout.dims, layout.type, channels);
   const uint64_t dataFileSize = regularFileSize(dataPath);
 
   uint64_t start = local ? dataOffset : static_cast<uint64_t>(std::max<int64_t>(headerSize, 0));
@@ -195,6 +196,7 @@ Volume loadMetaImage(const std::string& path) {
     }
     bytes = readFileRange(dataPath, start, total);
   }
+  bytes = pickComponent(path, std::move(bytes), channels, channel, layout);
   return makeVolume(path, layout, std::move(bytes));
 }
 

@@ -21,9 +21,13 @@ namespace ewa {
 
 namespace {
 
-// The file's voxel type: NIfTI's datatype codes of scalar numbers.
-FileScalar niftiType(const std::string& path, int datatype) {
+// The file's voxel type: NIfTI's datatype codes of scalar numbers, and RGB24 and RGBA32 (bytes
+// interleaved in each voxel: `components`).
+FileScalar niftiType(const std::string& path, int datatype, int64_t* components) {
+  *components = datatype == 128 ? 3 : datatype == 2304 ? 4 : 1;
   switch (datatype) {
+    case 128:
+    case 2304:
     case 2:
       return FileScalar::UInt8;
     case 4:
@@ -47,7 +51,7 @@ FileScalar niftiType(const std::string& path, int datatype) {
     default:
       failLoad(path, "unsupported NIfTI datatype " + std::to_string(datatype) +
                          " (supported: uint8, int8, int16, uint16, int32, uint32, int64, uint64, "
-                         "float32, float64)");
+                         "float32, float64, RGB24, RGBA32)");
   }
 }
 
@@ -58,7 +62,7 @@ bool endsWith(const std::string& text, const std::string& suffix) {
 
 }  // namespace
 
-Volume loadNifti(const std::string& path, int frame) {
+Volume loadNifti(const std::string& path, int frame, int channel) {
   const std::string lower = toLower(path);
   const bool gzip = endsWith(lower, ".gz");
   const bool pair = endsWith(lower, ".hdr") || endsWith(lower, ".img") ||
@@ -92,7 +96,8 @@ Volume loadNifti(const std::string& path, int frame) {
     if (h.dim[i] > 1)
       failLoad(headerPath, std::to_string(ndim) + "D NIfTI data (dim[" + std::to_string(i) +
                                "] = " + std::to_string(h.dim[i]) + ") is not supported (up to 4D)");
-  const FileScalar type = niftiType(headerPath, h.datatype);
+  int64_t components = 1;
+  const FileScalar type = niftiType(headerPath, h.datatype, &components);
   const size_t typeSize = fileScalarSize(type);
   VolumeLayout layout;
   layout.dims = {1, 1, 1};
@@ -101,7 +106,7 @@ Volume loadNifti(const std::string& path, int frame) {
   checkFrame(headerPath, frame, frames);
 
   // Sizes in the file's type first (checked against overflow and memory before any read).
-  const uint64_t frameBytes = dataByteCount(headerPath, layout.dims, type);
+  const uint64_t frameBytes = componentDataByteCount(headerPath, layout.dims, type, components);
   if (!std::isfinite(h.voxOffset) || h.voxOffset < 0.0 || h.voxOffset > 1e18)
     failLoad(headerPath, "bad vox_offset " + std::to_string(h.voxOffset));
   const auto offset = uint64_t(h.voxOffset);  // into the .img of a pair
@@ -143,11 +148,13 @@ Volume loadNifti(const std::string& path, int frame) {
   if (frames > 1)
     layout.notes.push_back("4D file with " + std::to_string(frames) + " frames; showing frame " +
                            std::to_string(frame) + " (--frame N picks another)");
-  // Scaling applies when scl_slope is set and not the identity; makeVolume converts wide types.
+  // Scaling applies when scl_slope is set and not the identity, never to colour (the standard);
+  // makeVolume converts wide types.
   const bool scaled = h.sclSlope != 0.0 && std::isfinite(h.sclSlope) && std::isfinite(h.sclInter) &&
-                      !(h.sclSlope == 1.0 && h.sclInter == 0.0);
+                      !(h.sclSlope == 1.0 && h.sclInter == 0.0) && components == 1;
   layout.bigEndian = hostIsBigEndian();
   layout.type = type;
+  raw = pickComponent(headerPath, std::move(raw), components, channel, layout);
   if (!scaled) return makeVolume(path, layout, std::move(raw));
   const uint64_t count = frameBytes / typeSize;
   checkAllocation(headerPath, count * 4, "float32 volume");

@@ -235,6 +235,33 @@ uint64_t dataByteCount(const std::string& path, const std::array<int64_t, 3>& di
   return bytes;
 }
 
+uint64_t componentDataByteCount(const std::string& path, const std::array<int64_t, 3>& dims,
+                                FileScalar type, int64_t components) {
+  if (components < 1 || components > 4096)
+    failLoad(path, std::to_string(components) + " components a voxel (1 to 4096 are read)");
+  const uint64_t one = dataByteCount(path, dims, type);
+  uint64_t all = 0;
+  if (__builtin_mul_overflow(one, uint64_t(components), &all) || all > uint64_t{INT64_MAX} / 2)
+    failLoad(path, "volume sizes with " + std::to_string(components) + " components are too large");
+  checkAllocation(path, all, "volume of " + std::to_string(components) + " components a voxel");
+  return all;
+}
+
+std::vector<uint8_t> pickComponent(const std::string& path, std::vector<uint8_t> bytes,
+                                   int64_t components, int channel, VolumeLayout& layout) {
+  checkChannel(path, channel, components);
+  if (components == 1) return bytes;
+  layout.channel = channel;
+  layout.channelCount = int(components);
+  layout.notes.push_back(std::to_string(components) + " components a voxel; showing component " +
+                         std::to_string(channel) + " (--channel N picks another)");
+  const size_t size = fileScalarSize(layout.type), stride = size * size_t(components);
+  std::vector<uint8_t> out(bytes.size() / size_t(components));
+  for (size_t v = 0, n = out.size() / size; v < n; ++v)
+    std::memcpy(&out[v * size], &bytes[v * stride + size_t(channel) * size], size);
+  return out;
+}
+
 std::vector<uint8_t> encodeValues(const std::vector<double>& values, FileScalar type) {
   const size_t size = fileScalarSize(type);
   std::vector<uint8_t> out(values.size() * size);

@@ -60,6 +60,17 @@ uint64_t dataByteCount(const std::string& path, const std::array<int64_t, 3>& di
 // values a loader computed or parsed as numbers (DICOM after rescale, ASCII legacy VTK).
 std::vector<uint8_t> encodeValues(const std::vector<double>& values, FileScalar type);
 
+// Bytes of data of `components` values a voxel (interleaved, as colour and vector images store
+// them), after the same checks as dataByteCount; components must be 1 to 4096.
+uint64_t componentDataByteCount(const std::string& path, const std::array<int64_t, 3>& dims,
+                                FileScalar type, int64_t components);
+
+// One component of interleaved data: `channel` of `components` values of `size` bytes a voxel.
+// With one component the bytes come back as they are. Also picks the layout's channel: checks
+// `channel` (checkChannel), sets layout.channel and channelCount and notes which it shows.
+std::vector<uint8_t> pickComponent(const std::string& path, std::vector<uint8_t> bytes,
+                                   int64_t components, int channel, VolumeLayout& layout);
+
 // Builds the Volume from the file's data bytes: native byte order, Int8 widened to Int16,
 // wide types converted to float32 (with a note; another on integers float32 cannot hold exactly),
 // negative spacing taken by magnitude, zero or non-finite spacing/origin rejected, a sheared

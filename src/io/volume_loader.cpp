@@ -87,11 +87,12 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options,
       gz ? toLower(std::filesystem::path(name.substr(0, name.size() - 3)).extension().string())
          : ext;
   if (ext == ".nrrd" || ext == ".nhdr") return loadNrrd(path, options.frame, options.channel);
-  if (ext == ".mhd" || ext == ".mha") return loadMetaImage(path);
+  if (ext == ".mhd" || ext == ".mha") return loadMetaImage(path, options.channel);
   if (ext == ".dat") return loadDat(path);
-  if (ext == ".vti") return loadVti(path);
-  if (ext == ".vtk") return loadVtkLegacy(path);
-  if (inner == ".nii" || inner == ".hdr" || inner == ".img") return loadNifti(path, options.frame);
+  if (ext == ".vti") return loadVti(path, options.channel);
+  if (ext == ".vtk") return loadVtkLegacy(path, options.channel);
+  if (inner == ".nii" || inner == ".hdr" || inner == ".img")
+    return loadNifti(path, options.frame, options.channel);
   if (ext == ".slc") return loadSlc(path);
   if (ext == ".mrc" || ext == ".mrcs" || ext == ".map" || ext == ".ccp4" || ext == ".rec")
     return loadMrc(path);

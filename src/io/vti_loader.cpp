@@ -188,7 +188,7 @@ std::array<int64_t, 3> dimsOfExtent(const std::string& path, const std::array<in
 
 }  // namespace
 
-Volume loadVti(const std::string& path) {
+Volume loadVti(const std::string& path, int channel) {
   const std::string text =
       readFilePrefix(path, std::numeric_limits<uint64_t>::max(), headerComplete);
   const VtiHeader h = scanHeader(path, text);
@@ -202,9 +202,11 @@ Volume loadVti(const std::string& path) {
       glm::dvec3(double(h.extent[0]), double(h.extent[2]), double(h.extent[4])) * h.spacing;
   layout.type = parseArrayType(path, h.array.attribute("type"));
   layout.bigEndian = h.format.bigEndian;
-  if (const std::string* c = h.array.attribute("NumberOfComponents"); c && trim(*c) != "1")
-    failLoad(path, "DataArray has " + quoteText(*c) + " components; only scalars are supported");
-  const uint64_t total = dataByteCount(path, layout.dims, layout.type);
+  int64_t components = 1;  // interleaved in each point (colour, vectors)
+  if (const std::string* c = h.array.attribute("NumberOfComponents");
+      c && !parseInt64(trim(*c), components))
+    failLoad(path, "bad NumberOfComponents " + quoteText(*c));
+  const uint64_t total = componentDataByteCount(path, layout.dims, layout.type, components);
 
   const std::string* format = h.array.attribute("format");
   const std::string fmt = format ? *format : "";
@@ -238,6 +240,7 @@ Volume loadVti(const std::string& path) {
     failLoad(path, "unsupported DataArray format " + quoteText(fmt) +
                        " (need appended, binary or ascii)");
   }
+  bytes = pickComponent(path, std::move(bytes), components, channel, layout);
   return makeVolume(path, layout, std::move(bytes));
 }
 

@@ -70,7 +70,7 @@ FileScalar scalarType(const std::string& path, const std::string& name) {
 
 }  // namespace
 
-Volume loadVtkLegacy(const std::string& path) {
+Volume loadVtkLegacy(const std::string& path, int channel) {
   const uint64_t size = regularFileSize(path);
   const std::vector<uint8_t> head = readFileRange(path, 0, std::min(size, kMaxHeaderBytes));
   HeaderLines lines(path, std::string(head.begin(), head.end()));
@@ -116,18 +116,26 @@ Volume loadVtkLegacy(const std::string& path) {
   int64_t points = 0;
   if (w.size() < 2 || !parseInt64(w[1], points)) failLoad(path, "bad POINT_DATA count");
   w = lines.words("SCALARS");
-  // COLOR_SCALARS of one value a point: gray, bytes in binary files and 0..1 in ASCII ones
-  // (how VTK writes an unsigned char image).
-  const bool colour = toLower(w[0]) == "color_scalars";
-  if (toLower(w[0]) != "scalars" && !colour)
-    failLoad(path, quoteText(w[0]) + " point data is not read (SCALARS only)");
-  if (colour ? w.size() != 3 || w[2] != "1" : w.size() < 3)
-    failLoad(path, colour ? "COLOR_SCALARS of other than 1 value a point are not read"
-                          : "bad SCALARS line (SCALARS name type [components])");
-  if (!colour && w.size() > 3 && w[3] != "1")
-    failLoad(path, "SCALARS of " + quoteText(w[3]) + " components are not read (1 only)");
+  // SCALARS of 1 to 4 components; COLOR_SCALARS of 1 to 4 values a point: bytes in binary
+  // files and 0..1 in ASCII ones (how VTK writes an unsigned char image); VECTORS: three.
+  // Several components a point are interleaved: --channel picks one.
+  const std::string kind = toLower(w[0]);
+  const bool colour = kind == "color_scalars", vectors = kind == "vectors";
+  if (kind != "scalars" && !colour && !vectors)
+    failLoad(path, quoteText(w[0]) + " point data is not read (SCALARS, COLOR_SCALARS, VECTORS)");
+  if (w.size() < 3)
+    failLoad(path, "bad " + w[0] + " line (" + w[0] +
+                       (colour    ? " name values)"
+                        : vectors ? " name type)"
+                                  : " name type [components])"));
+  int64_t components = vectors ? 3 : 1;
+  if ((colour || w.size() > 3) && !vectors) {
+    const std::string& count = colour ? w[2] : w[3];
+    if (!parseInt64(count, components) || components < 1 || components > 4)
+      failLoad(path, w[0] + " of " + quoteText(count) + " components are not read (1 to 4)");
+  }
   const FileScalar type = scalarType(path, colour ? "unsigned_char" : w[2]);
-  if (!colour) {
+  if (kind == "scalars") {
     w = lines.words("LOOKUP_TABLE");
     if (toLower(w[0]) != "lookup_table") failLoad(path, "no LOOKUP_TABLE line after SCALARS");
   }
@@ -136,17 +144,23 @@ Volume loadVtkLegacy(const std::string& path) {
   if (points < 0 || uint64_t(points) != voxels)
     failLoad(path, "POINT_DATA " + std::to_string(points) + " is not the " +
                        std::to_string(voxels) + " points of DIMENSIONS");
-  const uint64_t bytes = dataByteCount(path, layout.dims, type);  // fits in memory
+  // Fits in memory, all components.
+  const uint64_t bytes = componentDataByteCount(path, layout.dims, type, components);
   const uint64_t offset = lines.offset();
+  std::vector<uint8_t> data;
   if (encoding == "binary") {
-    layout.bigEndian = true;                                              // as VTK writes it
-    return makeVolume(path, layout, readFileRange(path, offset, bytes));  // checks the range
+    layout.bigEndian = true;                    // as VTK writes it
+    data = readFileRange(path, offset, bytes);  // checks the range
+  } else {
+    std::vector<double> values =
+        readTextNumbers(path, offset, voxels * uint64_t(components), "ASCII data");
+    if (colour)
+      for (double& v : values) v *= 255.0;
+    layout.bigEndian = hostIsBigEndian();
+    data = encodeValues(values, type);
   }
-  std::vector<double> values = readTextNumbers(path, offset, voxels, "ASCII data");
-  if (colour)
-    for (double& v : values) v *= 255.0;
-  layout.bigEndian = hostIsBigEndian();
-  return makeVolume(path, layout, encodeValues(values, type));
+  return makeVolume(path, layout,
+                    pickComponent(path, std::move(data), components, channel, layout));
 }
 
 }  // namespace ewa

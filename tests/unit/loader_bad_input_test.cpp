@@ -313,7 +313,9 @@ TEST(LoaderErrors, VtiProblems) {
   expectVolumeLoadError(dir.write("c.vti", vti("compressor=\"vtkLZ4DataCompressor\"", ok, raw)),
                         "compressor");
   expectVolumeLoadError(dir.write("d.vti", vti("", ok + " NumberOfComponents=\"3\"", raw)),
-                        "components");
+                        "the extent needs 72");  // three components of 24 points
+  expectVolumeLoadError(dir.write("d2.vti", vti("", ok + " NumberOfComponents=\"0\"", raw)),
+                        "0 components a voxel (1 to 4096 are read)");
   expectVolumeLoadError(dir.write("e.vti", vti("", ok, raw, "0 1 5 2 0 3")), "extent");
   expectVolumeLoadError(
       dir.write("f.vti", vti("", "type=\"UInt8\" format=\"appended\" offset=\"999999\"", raw)),

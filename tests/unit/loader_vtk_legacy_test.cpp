@@ -106,10 +106,12 @@ TEST(VtkLegacy, OtherDatasetsAndBadHeadersFailInOneLine) {
       dir.write("n.vtk", header("ASCII", "SCALARS v float" + lut, "2 3 4", "25") + asciiRamp(1, 0)),
       "POINT_DATA 25 is not the 24 points of DIMENSIONS");
   expectVolumeLoadError(
-      dir.write("v.vtk", header("ASCII", "SCALARS v float 3" + lut) + asciiRamp(1, 0)),
-      "SCALARS of '3' components are not read");
+      dir.write("v.vtk", header("ASCII", "SCALARS v float 5" + lut) + asciiRamp(1, 0)),
+      "SCALARS of '5' components are not read (1 to 4)");
   expectVolumeLoadError(dir.write("vec.vtk", header("ASCII", "VECTORS v float") + asciiRamp(1, 0)),
-                        "'VECTORS' point data is not read");
+                        "ASCII data has 24 numbers, not 72");
+  expectVolumeLoadError(dir.write("ten.vtk", header("ASCII", "TENSORS v float") + asciiRamp(1, 0)),
+                        "'TENSORS' point data is not read");
   expectVolumeLoadError(dir.write("t.vtk", header("ASCII", "SCALARS v bit" + lut) + "0 1\n"),
                         "SCALARS of type 'bit' are not read");
   expectVolumeLoadError(dir.write("cut.vtk", header("BINARY", "SCALARS v float" + lut) +
