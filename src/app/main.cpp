@@ -72,17 +72,18 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
   // unpacked while its frames and series are paged.
   config.opener = [base = o](const std::string& path, const ewa::LoadOptions& load) {
     ewa::Options fileOptions = base;
+    // The command line's raw file, opened again with another spacing, keeps its raw options.
+    std::error_code ec;
+    if (base.file.empty() || !std::filesystem::equivalent(path, base.file, ec))
+      fileOptions.rawDims.clear();
     fileOptions.file = path;
     fileOptions.synthetic.clear();
-    fileOptions.rawDims.clear();
     fileOptions.tfFile.clear();  // --tf was for the first volume; others use their sidecar
-    fileOptions.load = load;     // so were --series, --frame and --channel: the window's own
-    std::error_code ec;          // and --spacing, unless this is that file again (paged)
-    if (base.file.empty() ||
-        !std::filesystem::equivalent(std::filesystem::path(path), base.file, ec))
-      fileOptions.spacing.reset();
+    fileOptions.load = load;     // so were --series, --frame, --channel and --spacing: the
+                                 // window's own
     ewa::Scene s = ewa::loadScene(fileOptions);
     ewa::LoadedVolume loaded;
+    loaded.spacing = load.spacing;
     loaded.volume = std::make_shared<ewa::Volume>(std::move(s.volume));
     loaded.tf = std::move(s.transferFunction);
     loaded.name = s.name;
@@ -93,6 +94,7 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
   initial.volume = std::make_shared<ewa::Volume>(std::move(scene.volume));
   initial.tf = std::move(scene.transferFunction);
   initial.name = scene.name;
+  initial.spacing = o.load.spacing;
   if (options.synthetic.empty())
     initial.path =
         std::filesystem::absolute(options.file.empty() ? ewa::defaultVolumePath() : options.file)

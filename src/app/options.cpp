@@ -269,7 +269,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
     if (!(s > 0.0) || !std::isfinite(s) || s > 1e300)
       return usage("--spacing " + numberText(spacing[0]) + "," + numberText(spacing[1]) + "," +
                    numberText(spacing[2]) + ": each must be a positive number");
-  o->spacing = toVec3(spacing);
+  o->load.spacing = toVec3(spacing);
   o->cameraPosition = toVec3(pos);
   o->cameraFocalPoint = toVec3(focal);
   o->cameraViewUp = toVec3(up);

@@ -38,9 +38,6 @@ struct Options {
   std::string backend = "osmesa";
   std::string shaderDir;  // load shaders from this folder instead of the embedded ones
   LoadOptions load;       // --series, --frame, --channel
-  // --spacing X,Y,Z: replaces the spacing of the volume named here (and of its frames and
-  // channels in the window), for files without one (image stacks) or with a wrong one.
-  std::optional<glm::dvec3> spacing;
   // Where the window keeps an archive it opened unpacked (null headless: unpacked per load).
   std::shared_ptr<ArchiveCache> archives;
   // Plain raw input.

@@ -36,19 +36,15 @@ Scene loadScene(const Options& o) {
     scene.name = o.synthetic;
   } else {
     const std::string path = o.file.empty() ? defaultVolumePath() : o.file;
-    scene.volume =
-        o.rawDims.empty()
-            ? loadVolume(path, o.load, o.archives.get())
-            : loadRawVolume(path, parseRawOptions(o.rawDims, o.rawType, o.rawSpacing, o.rawEndian));
+    if (o.rawDims.empty()) {
+      scene.volume = loadVolume(path, o.load, o.archives.get());
+    } else {
+      scene.volume =
+          loadRawVolume(path, parseRawOptions(o.rawDims, o.rawType, o.rawSpacing, o.rawEndian));
+      if (o.load.spacing) overrideSpacing(path, scene.volume, *o.load.spacing);
+    }
     scene.name = std::filesystem::path(path).filename().string();
     sidecar = sidecarTransferFunctionPath(path, o.load.channel);
-    if (o.spacing) {
-      const glm::dvec3 file = scene.volume.spacing(), s = *o.spacing;
-      scene.volume.setSpacing(s);
-      scene.volume.addNote("spacing " + numberText(s.x) + ", " + numberText(s.y) + ", " +
-                           numberText(s.z) + " from --spacing (the file's: " + numberText(file.x) +
-                           ", " + numberText(file.y) + ", " + numberText(file.z) + ")");
-    }
     // Warnings (uneven slices, a sheared grid) are worth a line even when the load succeeds.
     for (const std::string& note : scene.volume.notes())
       if (note.compare(0, 9, "warning: ") == 0)

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <new>
+#include <sstream>
 
 #include "io/archive_cache.h"
 #include "io/archive_extract.h"
@@ -119,9 +120,26 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options,
 
 }  // namespace
 
+void overrideSpacing(const std::string& path, Volume& volume, const glm::dvec3& spacing) {
+  const glm::dvec3 file = volume.spacing();
+  try {
+    volume.setSpacing(spacing);
+  } catch (const std::invalid_argument&) {
+    failLoad(path, "--spacing must be positive and finite");
+  }
+  const auto text = [](const glm::dvec3& v) {
+    std::ostringstream out;
+    out << v.x << ", " << v.y << ", " << v.z;
+    return out.str();
+  };
+  volume.addNote("spacing " + text(spacing) + " from --spacing (the file's: " + text(file) + ")");
+}
+
 Volume loadVolume(const std::string& path, const LoadOptions& options, ArchiveCache* archives) {
   try {
-    return loadByExtension(path, options, archives);
+    Volume volume = loadByExtension(path, options, archives);
+    if (options.spacing) overrideSpacing(path, volume, *options.spacing);
+    return volume;
   } catch (const LoadError& e) {
     rethrowWithPath(path, e.what());
   } catch (const std::bad_alloc&) {

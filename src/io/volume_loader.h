@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -41,7 +42,13 @@ struct LoadOptions {
   std::string series;  // DICOM SeriesInstanceUID; empty: the named file's, else the largest
   int frame = 0;       // 4D NIfTI, a DICOM series of several volumes: the volume to open
   int channel = 0;     // multi-channel TIFF, RGB DICOM: the channel to open
+  // Replaces the file's spacing (--spacing: image slices have none, some files a wrong one).
+  std::optional<glm::dvec3> spacing;
 };
+
+// Sets `spacing` (positive and finite; throws LoadError naming `path` otherwise) with a note
+// saying what the file had: what LoadOptions::spacing does, for raw files too.
+void overrideSpacing(const std::string& path, Volume& volume, const glm::dvec3& spacing);
 
 // Loads by file extension (case-insensitive): .nrrd/.nhdr (NRRD), .mhd/.mha (MetaImage),
 // .dat (Voreen/Inviwo text header), .vti (VTK XML image data), .nii/.nii.gz/.hdr/.img

@@ -32,7 +32,7 @@ ControlPanel::ControlPanel(std::string volumeName, const Volume& volume) {
   setVolume(std::move(volumeName), volume);
 }
 
-void ControlPanel::setVolume(std::string volumeName, const Volume& volume) {
+void ControlPanel::setVolume(std::string volumeName, const Volume& volume, bool fromFile) {
   volumeName_ = std::move(volumeName);
   char text[256];
   const auto& d = volume.dims();
@@ -48,8 +48,31 @@ void ControlPanel::setVolume(std::string volumeName, const Volume& volume) {
   channel_ = volume.channel();
   channelCount_ = volume.channelCount();
   series_ = volume.seriesChoices();
+  spacing_ = volume.spacing();
+  spacingEdit_ = {spacing_.x, spacing_.y, spacing_.z};
+  fromFile_ = fromFile;
   printed_.clear();
   if (volumeName_.empty()) volumeName_ = "(unnamed volume)";
+}
+
+// The voxel spacing, to type in (image slices have none; some files a wrong one): "Set"
+// opens the file again with it, as --spacing does.
+std::optional<glm::dvec3> ControlPanel::drawSpacing() {
+  ImGui::SetNextItemWidth(220.0f);
+  ImGui::InputScalarN("##spacing", ImGuiDataType_Double, spacingEdit_.data(), 3, nullptr, nullptr,
+                      "%g");
+  const glm::dvec3 asked(spacingEdit_[0], spacingEdit_[1], spacingEdit_[2]);
+  bool valid = true;
+  for (int a = 0; a < 3; ++a) valid = valid && asked[a] > 0.0 && asked[a] < 1e300;
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!valid || asked == spacing_);
+  const bool set = ImGui::Button("Set spacing");
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(valid ? "Open the file again with this voxel spacing (as --spacing does)"
+                            : "Each spacing must be a positive number");
+  if (!set) return std::nullopt;
+  return asked;
 }
 
 PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& levelOfDetail,
@@ -75,6 +98,7 @@ PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& le
       ImGui::Text("channel %d of %d (C, Shift+C)", channel_, channelCount_);
     }
     if (series_.size() > 1) edits.series = drawSeries();
+    if (fromFile_) edits.spacing = drawSpacing();
     ImGui::Separator();
     edits.settings = drawSettings(settings);
     ImGui::Separator();

@@ -43,6 +43,7 @@ struct PanelEdits {
   int frameStep = 0;                  // -1 or +1: the file's previous or next volume
   int channelStep = 0;                // -1 or +1: its previous or next channel
   std::optional<std::string> series;  // another series of the folder was chosen: its id
+  std::optional<glm::dvec3> spacing;  // the file to be opened again with this voxel spacing
 };
 
 class ControlPanel {
@@ -55,8 +56,8 @@ class ControlPanel {
   // `levelOfDetail` is the "coarser while moving" switch, `axes` the orientation axes'.
   PanelEdits draw(RenderSettings& settings, Camera& camera, bool& levelOfDetail, bool& axes,
                   const FrameStats& stats);
-  // A new volume was opened.
-  void setVolume(std::string volumeName, const Volume& volume);
+  // A new volume was opened; `fromFile`: it has a file to open again with another spacing.
+  void setVolume(std::string volumeName, const Volume& volume, bool fromFile = false);
   // EWAVIEW_PRINT_LAYOUT: the series list's place and its entries' on stdout, for the window
   // test ("series-list X Y W H", "series-entry I X Y W H"), each once while it stays put.
   void setPrintLayout(bool on) { printLayout_ = on; }
@@ -67,13 +68,17 @@ class ControlPanel {
   bool drawCamera(Camera& camera);
   std::optional<AxisView> drawAxisViews();
   std::optional<std::string> drawSeries();
+  std::optional<glm::dvec3> drawSpacing();
   void drawStats(const FrameStats& stats);
 
   std::string volumeName_;
-  std::string volumeText_;              // "64 x 64 x 64 uint8, spacing 1 1 1"
-  int frame_ = 0, frameCount_ = 1;      // which of the file's volumes
-  int channel_ = 0, channelCount_ = 1;  // which of its channels
-  std::vector<SeriesChoice> series_;    // the folder's series (DICOM), to choose from
+  std::string volumeText_;                            // "64 x 64 x 64 uint8, spacing 1 1 1"
+  int frame_ = 0, frameCount_ = 1;                    // which of the file's volumes
+  int channel_ = 0, channelCount_ = 1;                // which of its channels
+  std::vector<SeriesChoice> series_;                  // the folder's series (DICOM), to choose from
+  glm::dvec3 spacing_{1.0};                           // the volume's
+  std::array<double, 3> spacingEdit_{1.0, 1.0, 1.0};  // as typed in the panel
+  bool fromFile_ = false;
   bool printLayout_ = false;
   std::string printed_;  // the last layout line printed
   std::array<double, 2> valueRange_{0.0, 1.0};

@@ -42,7 +42,7 @@ void ViewerWindow::adopt(LoadedVolume loaded, bool newCamera) {
   lod_.setVolume(*current_.volume, current_.coarse);
   lod_.setTransferFunction(current_.tf);
   policy_.resetMeasurements();
-  panel_.setVolume(current_.name, *current_.volume);
+  panel_.setVolume(current_.name, *current_.volume, !current_.path.empty());
   liveTf_.reset(
       *current_.volume, current_.tf,
       saved_.lastTransferFunction.empty() ? "transfer_function.json" : saved_.lastTransferFunction,
@@ -67,16 +67,27 @@ void ViewerWindow::adopt(LoadedVolume loaded, bool newCamera) {
   buildPending_ = true;  // one frame says so before the first (slow) render classifies
 }
 
-void ViewerWindow::startLoad(const std::string& path, const LoadOptions& load, bool keepView) {
+bool ViewerWindow::startLoad(const std::string& path, const LoadOptions& load, bool keepView) {
   if (loadJob_.running()) {
     error("still loading " + loadJob_.path() + "; try again when it is done");
-    return;
+    return false;
   }
   std::cerr << "ewaview: loading " << path << (load.series.empty() ? "" : " series " + load.series)
             << (load.frame > 0 ? " frame " + std::to_string(load.frame) : "")
             << (load.channel > 0 ? " channel " + std::to_string(load.channel) : "") << "\n";
   loadKeepsView_ = keepView;
+  loadKeepsTf_ = false;
   loadJob_.start(path, load, config_.opener);
+  return true;
+}
+
+// The file opened again with another voxel spacing (the panel's "Set spacing"): the same page
+// and transfer function, framed anew (the volume's shape changed).
+void ViewerWindow::respace(const glm::dvec3& spacing) {
+  if (current_.path.empty()) return;
+  LoadOptions load = pageBase();
+  load.spacing = spacing;
+  if (startLoad(current_.path, load)) loadKeepsTf_ = true;
 }
 
 // Paging steps from the frame and channel last asked for while a page is loading (a held
@@ -87,6 +98,7 @@ LoadOptions ViewerWindow::pageBase() const {
   load.series = openSeriesId(*current_.volume);
   load.frame = current_.volume->frame();
   load.channel = current_.volume->channel();
+  load.spacing = current_.spacing;
   return load;
 }
 
@@ -153,6 +165,12 @@ void ViewerWindow::pollLoad() {
       loaded->tf = current_.tf;
     else if (kept != channelTfs_.end())
       loaded->tf = kept->second;
+  } else if (loadKeepsTf_) {
+    char spacing[96];
+    std::snprintf(spacing, sizeof spacing, "spacing %g %g %g", v.spacing().x, v.spacing().y,
+                  v.spacing().z);
+    info(std::string(spacing) + text);
+    loaded->tf = current_.tf;  // the same data: the function being edited stays
   } else {
     info("opened " + loaded->name + text);
     channelTfs_.clear();  // another file

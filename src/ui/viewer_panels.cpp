@@ -25,6 +25,7 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   if (edits.frameStep != 0) stepFrame(edits.frameStep);
   if (edits.channelStep != 0) stepChannel(edits.channelStep);
   if (edits.series) openSeries(*edits.series);
+  if (edits.spacing) respace(*edits.spacing);
   if (edits.camera) controller_.setCamera(camera);
   if (edits.resetCamera) controller_.reset();
   if (edits.axisView) showAxisView(*edits.axisView, fb);

@@ -84,7 +84,8 @@ class ViewerWindow {
   void adopt(LoadedVolume loaded, bool newCamera);
   // `keepView`: another volume of the same file (paging through frames): the camera, crop and
   // transfer function stay.
-  void startLoad(const std::string& path, const LoadOptions& load = {}, bool keepView = false);
+  // False when another load is still running (the user is told).
+  bool startLoad(const std::string& path, const LoadOptions& load = {}, bool keepView = false);
   // The file's next (+1) or previous (-1) volume, round the end: 4D NIfTI, DICOM volumes.
   void stepFrame(int step);
   // The file's next (+1) or previous (-1) channel, round the end: RGB, OME-TIFF channels.
@@ -94,6 +95,7 @@ class ViewerWindow {
   void stepPage(int LoadOptions::*which, int count, int step);
   // Another series of the open DICOM folder (Volume::seriesChoices), as --series opens it.
   void openSeries(const std::string& id);
+  void respace(const glm::dvec3& spacing);
   void pollLoad();
   LodRenderer::Factory rendererFactory();
   void switchRendererIfAsked();
@@ -149,6 +151,7 @@ class ViewerWindow {
   StatusMessages messages_;
   VolumeLoadJob loadJob_;
   bool loadKeepsView_ = false;  // the load running pages through the current file's frames
+  bool loadKeepsTf_ = false;    // the load running opens the current file with a new spacing
   LoadOptions pageTarget_;      // the page last asked for
   std::optional<LoadOptions> queuedPage_;       // asked for while another page loaded
   std::map<int, TransferFunction> channelTfs_;  // each channel's function while paging

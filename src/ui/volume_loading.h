@@ -21,8 +21,9 @@ struct LoadedVolume {
   std::shared_ptr<const Volume> volume;
   LodVolumes coarse;  // levels of detail for moving views
   TransferFunction tf;
-  std::string name;  // shown in the panel
-  std::string path;  // file it came from; empty for synthetic volumes
+  std::string name;                   // shown in the panel
+  std::string path;                   // file it came from; empty for synthetic volumes
+  std::optional<glm::dvec3> spacing;  // the spacing it was opened with in place of the file's
 };
 
 // Reads `path` (with `load`'s series and frame: --series, --frame) and picks its transfer

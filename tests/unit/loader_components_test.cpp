@@ -30,7 +30,7 @@ std::vector<T> interleaved(int components) {
 void expectComponents(const std::string& path, int components) {
   for (int c = 0; c < components; ++c) {
     SCOPED_TRACE(path + " component " + std::to_string(c));
-    const Volume v = loadVolume(path, {"", 0, c});
+    const Volume v = loadVolume(path, {"", 0, c, {}});
     ASSERT_EQ(v.dims(), (std::array<int64_t, 3>{2, 3, 4}));
     EXPECT_EQ(v.channel(), c);
     EXPECT_EQ(v.channelCount(), components);
@@ -41,7 +41,7 @@ void expectComponents(const std::string& path, int components) {
   }
   expectLoadError(
       [&] {
-        loadVolume(path, {"", 0, components});
+        loadVolume(path, {"", 0, components, {}});
       },
       path,
       "--channel " + std::to_string(components) + " is out of range (" +

@@ -111,14 +111,14 @@ TEST(ImageStack, ColourImagesOpenOneChannelAtATime) {
   for (int z = 0; z < 2; ++z)
     dir.write("rgb" + std::to_string(z) + ".ppm", pnmBytes(3, 2, 3, slice(z, 3)));
   for (int c = 0; c < 3; ++c) {
-    const Volume v = loadVolume(dir.path("rgb0.ppm"), {"", 0, c});
+    const Volume v = loadVolume(dir.path("rgb0.ppm"), {"", 0, c, {}});
     EXPECT_EQ(v.channelCount(), 3);
     EXPECT_EQ(v.channel(), c);
     EXPECT_EQ(v.value(1, 1, 1), 40 + 40 + c);
   }
   expectLoadError(
       [&] {
-        loadVolume(dir.path("rgb0.ppm"), {"", 0, 3});
+        loadVolume(dir.path("rgb0.ppm"), {"", 0, 3, {}});
       },
       dir.path("rgb0.ppm"), "--channel 3 is out of range (3 channels)");
 }

@@ -177,7 +177,7 @@ TEST(NiftiFiles, BadFilesFailWithOneLine) {
                         "truncated");
   expectLoadError(
       [&] {
-        loadVolume(dir.path("trunc.nii"), {"", 3, 0});
+        loadVolume(dir.path("trunc.nii"), {"", 3, 0, {}});
       },
       dir.path("trunc.nii"), "--frame 3 is out of range");
 }
@@ -380,7 +380,7 @@ TEST(DicomFiles, GantryTiltIsResampledAndSeveralSeriesAreListed) {
   EXPECT_EQ(notes.find("warning:"), std::string::npos) << notes;
   EXPECT_NE(notes.find("series 1.2.826.0.1.3680043.2.1125.2: 2 slices"), std::string::npos)
       << notes;
-  const Volume other = loadVolume(dir.path("tilt"), {"1.2.826.0.1.3680043.2.1125.2", 0, 0});
+  const Volume other = loadVolume(dir.path("tilt"), {"1.2.826.0.1.3680043.2.1125.2", 0, 0, {}});
   EXPECT_EQ(other.dims()[2], 2);
   EXPECT_DOUBLE_EQ(other.spacing().z, 3.0);
 }
@@ -415,7 +415,7 @@ TEST(DicomFiles, SeriesInFoldersBelowAFolderWithoutImages) {
       << notes;
   EXPECT_NE(notes.find("5 slices in 'PAT1/STU1/SER1' (open)"), std::string::npos) << notes;
   EXPECT_EQ(loadVolume(cd + "/DICOMDIR").bytes(), v.bytes());
-  EXPECT_EQ(loadVolume(cd, {other.seriesUid, 0, 0}).dims()[2], 2);
+  EXPECT_EQ(loadVolume(cd, {other.seriesUid, 0, 0, {}}).dims()[2], 2);
   // Images of its own: the folder's, not those below.
   const std::string own = dicomSeries(dir, "own", 3);
   dicomSeries(dir, "own/sub", 6);
@@ -514,12 +514,12 @@ TEST(DicomFiles, SeriesMixingSizesOrientationsAndMultiFrameFilesAreSplit) {
   EXPECT_NE(allNotes(one).find(uid + "#3: 1 slices (part of " + uid + ": 5 x 6) (open)"),
             std::string::npos)
       << allNotes(one);
-  const Volume localizer = loadVolume(mixed, {uid + "#2", 0, 0});
+  const Volume localizer = loadVolume(mixed, {uid + "#2", 0, 0, {}});
   EXPECT_EQ(localizer.dims(), (std::array<int64_t, 3>{5, 4, 2}));
   EXPECT_EQ(localizer.direction()[1], glm::dvec3(0, 0, -1));
   expectLoadError(
       [&] {
-        loadVolume(mixed, {uid + "#4", 0, 0});
+        loadVolume(mixed, {uid + "#4", 0, 0, {}});
       },
       mixed, "no series '" + uid + "#4' here");
 
@@ -576,17 +576,17 @@ TEST(DicomFiles, SeveralVolumesAtTheSamePositionsOpenOneByOne) {
                                  "another, 0 to 2)"),
             std::string::npos)
       << allNotes(first);
-  const Volume third = loadVolume(dir.path("dwi/f5.dcm"), {"", 2, 0});
+  const Volume third = loadVolume(dir.path("dwi/f5.dcm"), {"", 2, 0, {}});
   for (int z = 0; z < 4; ++z) EXPECT_EQ(third.value(1, 1, z), 2000 + 10 * z) << z;
   expectLoadError(
       [&] {
-        loadVolume(dir.path("dwi"), {"", 3, 0});
+        loadVolume(dir.path("dwi"), {"", 3, 0, {}});
       },
       dir.path("dwi"), "--frame 3 is out of range (the series has 3 volumes at its positions)");
   const std::string plain = dicomSeries(dir, "plain", 3);
   expectLoadError(
       [&] {
-        loadVolume(plain, {"", 1, 0});
+        loadVolume(plain, {"", 1, 0, {}});
       },
       plain, "--frame 1 is out of range (the series has 1 volume at its positions)");
   std::filesystem::remove(dir.path("dwi/f0.dcm"));
@@ -595,7 +595,7 @@ TEST(DicomFiles, SeveralVolumesAtTheSamePositionsOpenOneByOne) {
   testing::EnhancedDicomSpec enhanced;
   enhanced.frameZ = {0.0, 2.0, 4.0, 0.0, 2.0, 4.0};
   ASSERT_TRUE(testing::writeEnhancedDicom(dir.path("two.dcm"), enhanced));
-  const Volume second = loadVolume(dir.path("two.dcm"), {"", 1, 0});
+  const Volume second = loadVolume(dir.path("two.dcm"), {"", 1, 0, {}});
   EXPECT_EQ(second.dims()[2], 3);
   EXPECT_DOUBLE_EQ(second.spacing().z, 2.0);
   EXPECT_NE(allNotes(second).find("2 volumes at the same 3 positions"), std::string::npos)
@@ -766,10 +766,10 @@ TEST(TiffFiles, MultiPageTypesChannelsAndImageJSpacing) {
     for (int i = 0; i < 4; ++i)
       for (int c = 0; c < 3; ++c) rgb[size_t(p)][size_t(3 * i + c)] = uint8_t(50 * c + i + p);
   ASSERT_TRUE(testing::writeTiff(dir.path("rgb.tif"), 2, 2, rgb, SAMPLEFORMAT_UINT, 3));
-  EXPECT_EQ(loadVolume(dir.path("rgb.tif"), {"", 0, 2}).value(1, 1, 1), 100 + 3 + 1);
+  EXPECT_EQ(loadVolume(dir.path("rgb.tif"), {"", 0, 2, {}}).value(1, 1, 1), 100 + 3 + 1);
   expectLoadError(
       [&] {
-        loadVolume(dir.path("rgb.tif"), {"", 0, 3});
+        loadVolume(dir.path("rgb.tif"), {"", 0, 3, {}});
       },
       dir.path("rgb.tif"), "--channel 3 is out of range (3 channels)");
 }
@@ -811,8 +811,8 @@ TEST(TiffFiles, TiledPagesReadAsStripsDo) {
     ASSERT_TRUE(testing::writeTiledTiff(dir.path(name), width, height, pages, SAMPLEFORMAT_UINT,
                                         samples, 16, planar, uint16_t(compression)));
     for (int channel = 0; channel < samples; ++channel) {
-      const Volume strips = loadVolume(dir.path("strips.tif"), {"", 0, channel});
-      const Volume tiles = loadVolume(dir.path(name), {"", 0, channel});
+      const Volume strips = loadVolume(dir.path("strips.tif"), {"", 0, channel, {}});
+      const Volume tiles = loadVolume(dir.path(name), {"", 0, channel, {}});
       ASSERT_EQ(tiles.dims(), (std::array<int64_t, 3>{width, height, 2}));
       EXPECT_EQ(tiles.bytes(), strips.bytes()) << "channel " << channel;
       // One value by hand: the last pixel of the second page, past the last tile's seam.

@@ -97,11 +97,11 @@ TEST_F(MedicalData, Nifti4dObliqueFramesAndNifti2) {
   check(v, first);
   // The oblique sform: a tilt of about 9.3 degrees about x survives as the direction.
   EXPECT_NEAR(v.direction()[1].z, 0.3232076168060303 / 2.0, 1e-6);
-  EXPECT_EQ(loadVolume(data("nifti/example4d.nii.gz"), {"", 1, 0}).dims(), first.dims);
-  EXPECT_NE(loadVolume(data("nifti/example4d.nii.gz"), {"", 1, 0}).bytes(), v.bytes());
+  EXPECT_EQ(loadVolume(data("nifti/example4d.nii.gz"), {"", 1, 0, {}}).dims(), first.dims);
+  EXPECT_NE(loadVolume(data("nifti/example4d.nii.gz"), {"", 1, 0, {}}).bytes(), v.bytes());
   testing::expectLoadError(
       [] {
-        loadVolume(data("nifti/example4d.nii.gz"), {"", 2, 0});
+        loadVolume(data("nifti/example4d.nii.gz"), {"", 2, 0, {}});
       },
       data("nifti/example4d.nii.gz"), "out of range (the file has 2 frames)");
   check(loadVolume(data("nifti/example_nifti2.nii.gz")),
@@ -151,7 +151,7 @@ TEST_F(MedicalData, DicomPetFolderAndAnyFileSortedByPosition) {
   EXPECT_EQ(one.bytes(), folder.bytes());
   testing::expectLoadError(
       [] {
-        loadVolume(data("dicom-pet"), {"1.2.3", 0, 0});
+        loadVolume(data("dicom-pet"), {"1.2.3", 0, 0, {}});
       },
       data("dicom-pet"), "no series '1.2.3'");
 }

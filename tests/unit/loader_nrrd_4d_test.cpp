@@ -47,7 +47,7 @@ TEST(Nrrd4d, TimeLastOpensOneFrameAtATime) {
   EXPECT_EQ(first.frameCount(), 3);
   EXPECT_DOUBLE_EQ(first.spacing().z, 2.0);
   EXPECT_TRUE(first.patientFrame());
-  const Volume last = loadVolume(path, {"", 2, 0});
+  const Volume last = loadVolume(path, {"", 2, 0, {}});
   expectVolume(last, 200);
   EXPECT_EQ(last.frame(), 2);
   ASSERT_FALSE(last.notes().empty());
@@ -55,14 +55,14 @@ TEST(Nrrd4d, TimeLastOpensOneFrameAtATime) {
             "4D NRRD of 3 frames (kind list); showing frame 2 (--frame N picks another)");
   expectLoadError(
       [&] {
-        loadVolume(path, {"", 3, 0});
+        loadVolume(path, {"", 3, 0, {}});
       },
       path, "--frame 3 is out of range (the file has 3 frames)");
   // Gzip, detached: the whole file inflated, the frame cut out.
   dir.write("t.raw.gz", gzipBytes(timeData()));
   const std::string detached =
       dir.write("t.nhdr", head4d("2 3 4 3", kTimeFields + "encoding: gzip\ndata file: t.raw.gz\n"));
-  expectVolume(loadVolume(detached, {"", 1, 0}), 100);
+  expectVolume(loadVolume(detached, {"", 1, 0, {}}), 100);
   // One frame short: refused before reading, whichever frame is asked for.
   const std::string cut =
       dir.write("cut.nrrd", head4d("2 3 4 3", kTimeFields + "encoding: raw\n\n") + timeData(2));
@@ -78,7 +78,7 @@ TEST(Nrrd4d, ColourFirstOpensOneChannel) {
       "rgb.nrrd",
       head4d("3 2 3 4", "kinds: RGB-color domain domain domain\nencoding: raw\n\n") + bytes);
   expectVolume(loadVolume(path), 0);
-  const Volume green = loadVolume(path, {"", 0, 1});
+  const Volume green = loadVolume(path, {"", 0, 1, {}});
   expectVolume(green, 10);
   EXPECT_EQ(green.frameCount(), 1);  // channels are not frames
   EXPECT_EQ(green.channel(), 1);
@@ -86,7 +86,7 @@ TEST(Nrrd4d, ColourFirstOpensOneChannel) {
   EXPECT_EQ(green.notes().at(0),
             "4D NRRD of 3 channels (kind rgb-color); showing channel 1 (--channel N picks "
             "another)");
-  expectLoadError([&] { loadVolume(path, {"", 0, 3}); }, path, "--channel 3 is out of range");
+  expectLoadError([&] { loadVolume(path, {"", 0, 3, {}}); }, path, "--channel 3 is out of range");
 }
 
 TEST(Nrrd4d, HeadersThatDoNotNameOneOuterNonSpatialAxisFail) {

@@ -37,7 +37,7 @@ std::string block(const std::string& attributes, const std::string& file) {
 
 void expectEveryPlane(const std::string& path) {
   for (int c = 0; c < 2; ++c)
-    for (int t = 0; t < 2; ++t) expectPlanes(loadVolume(path, {"", t, c}), c, t);
+    for (int t = 0; t < 2; ++t) expectPlanes(loadVolume(path, {"", t, c, {}}), c, t);
 }
 
 bool writeOme(const std::string& path, const std::vector<std::vector<uint16_t>>& pages,
@@ -55,7 +55,7 @@ TEST(OmeFiles, OneFileATimePoint) {
   // Either file opens the whole dataset, and so does their folder.
   expectEveryPlane(dir.path("t0.ome.tif"));
   expectEveryPlane(dir.path("t1.ome.tif"));
-  const Volume v = loadVolume(dir.path(""), {"", 1, 0});
+  const Volume v = loadVolume(dir.path(""), {"", 1, 0, {}});
   expectPlanes(v, 0, 1);
   EXPECT_EQ(v.spacing(), glm::dvec3(0.5, 0.5, 2.0));
   EXPECT_EQ(v.frameCount(), 2);
@@ -66,10 +66,10 @@ TEST(OmeFiles, OneFileATimePoint) {
   // A time point whose file is missing fails naming it; the other still opens.
   std::filesystem::remove(dir.path("t1.ome.tif"));
   const std::string path = dir.path("t0.ome.tif");
-  expectPlanes(loadVolume(path, {"", 0, 1}), 1, 0);
+  expectPlanes(loadVolume(path, {"", 0, 1, {}}), 1, 0);
   expectLoadError(
       [&] {
-        loadVolume(path, {"", 1, 0});
+        loadVolume(path, {"", 1, 0, {}});
       },
       path, "the dataset's file 't1.ome.tif' is missing or not a TIFF file");
 }
@@ -84,7 +84,7 @@ TEST(OmeFiles, SplitBySizeTheRestOfEachFile) {
   ASSERT_TRUE(writeOme(dir.path("a.ome.tif"), planeRange("CZT", 0, 7), xml));
   ASSERT_TRUE(writeOme(dir.path("b.ome.tif"), planeRange("CZT", 7, 12), ""));
   expectEveryPlane(dir.path("a.ome.tif"));
-  EXPECT_NE(testing::allNotes(loadVolume(dir.path("a.ome.tif"), {"", 1, 0}))
+  EXPECT_NE(testing::allNotes(loadVolume(dir.path("a.ome.tif"), {"", 1, 0, {}}))
                 .find("3 slices from 2 files"),
             std::string::npos);
 }
@@ -122,7 +122,7 @@ TEST(OmeFiles, CompanionMetadataFile) {
                         block("FirstT=\"1\" IFD=\"0\" PlaneCount=\"6\"", "t1.ome.tif")));
   expectEveryPlane(companion);
   expectEveryPlane(dir.path("t1.ome.tif"));
-  const Volume v = loadVolume(dir.path(""), {"", 1, 1});
+  const Volume v = loadVolume(dir.path(""), {"", 1, 1, {}});
   expectPlanes(v, 1, 1);
   EXPECT_EQ(v.spacing(), glm::dvec3(0.5, 0.5, 2.0));
   EXPECT_EQ(v.channelCount(), 2);
@@ -157,7 +157,7 @@ TEST(OmeFiles, BadDatasetsFailInOneLine) {
   EXPECT_EQ(loadVolume(c).dims()[2], 4);
   expectLoadError(
       [&] {
-        loadVolume(c, {"", 0, 1});
+        loadVolume(c, {"", 0, 1, {}});
       },
       c, "slice 2 of channel 1, time point 0 is in none of the OME-TIFF dataset's files");
 
@@ -167,7 +167,7 @@ TEST(OmeFiles, BadDatasetsFailInOneLine) {
       omeXml("ZCT", block("PlaneCount=\"6\"", "e.ome.tif") + block("FirstT=\"1\"", "f.ome.tif"));
   ASSERT_TRUE(writeOme(e, planeRange("ZCT", 0, 6), xml));
   ASSERT_TRUE(testing::writeTiff(f, 2, 3, planeRange("ZCT", 6, 12), SAMPLEFORMAT_UINT, 1, xml));
-  expectLoadError([&] { loadVolume(e, {"", 1, 0}); }, e, "all pages must agree");
+  expectLoadError([&] { loadVolume(e, {"", 1, 0, {}}); }, e, "all pages must agree");
 }
 
 TEST(OmeFiles, PlaneSourcesAreBoundedByThePagesFilesHold) {

@@ -43,11 +43,11 @@ TEST(TiffPlanes, OmeTiffInEveryOrderOpensAChannelAndATimePoint) {
     EXPECT_EQ(first.frameCount(), 2);
     EXPECT_EQ(first.channelCount(), 2);
     for (int c = 0; c < 2; ++c)
-      for (int t = 0; t < 2; ++t) expectPlanes(loadVolume(path, {"", t, c}), c, t);
-    expectLoadError([&] { loadVolume(path, {"", 0, 2}); }, path, "--channel 2 is out of range");
+      for (int t = 0; t < 2; ++t) expectPlanes(loadVolume(path, {"", t, c, {}}), c, t);
+    expectLoadError([&] { loadVolume(path, {"", 0, 2, {}}); }, path, "--channel 2 is out of range");
     expectLoadError(
         [&] {
-          loadVolume(path, {"", 2, 0});
+          loadVolume(path, {"", 2, 0, {}});
         },
         path, "--frame 2 is out of range (the file has 2 time points)");
   }
@@ -60,7 +60,7 @@ TEST(TiffPlanes, ImageJHyperstackWithTimePoints) {
       path, 3, 2, planeRange("CZT"), SAMPLEFORMAT_UINT, 1,
       "ImageJ=1.53t\nimages=12\nchannels=2\nslices=3\nframes=2\nhyperstack=true\nunit=micron\n"
       "spacing=2.5\n"));
-  const Volume v = loadVolume(path, {"", 1, 1});
+  const Volume v = loadVolume(path, {"", 1, 1, {}});
   expectPlanes(v, 1, 1);
   EXPECT_EQ(v.spacing(), glm::dvec3(0.25, 0.5, 2.5));  // ImageJ: the resolution tags
   std::string notes;
