@@ -50,6 +50,16 @@ ImageShape shapeOf(const std::string& file, const std::vector<uint8_t>& bytes) {
   s.sixteen = stbi_is_16_bit_from_memory(data, size) != 0;
   if (s.width <= 0 || s.height <= 0 || s.components < 1 || s.components > 4)
     failLoad(file, "bad image size or components");
+  // stb_image fills what a cut file lacks, so a header alone could make a huge image: the
+  // pixels must fit in the file's bytes, or their compression stay within deflate's 1032:1
+  // (JPEG's flattest blocks compress less far). BMP and PNM are not compressed (1-bit BMP
+  // rows: 8 pixels a byte).
+  const bool plain = (bytes.size() >= 2 && bytes[0] == 'B' && bytes[1] == 'M') ||
+                     (bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '1' && bytes[1] <= '6');
+  const double pixels = double(s.width) * double(s.height) * s.components * (s.sixteen ? 2 : 1);
+  if (pixels > double(bytes.size() + 1024) * (plain ? 24.0 : 1032.0))
+    failLoad(file, "its header promises " + s.text() + " pixels, more than its " +
+                       std::to_string(bytes.size()) + " bytes can hold (truncated or corrupt?)");
   return s;
 }
 

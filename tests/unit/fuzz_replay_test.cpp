@@ -32,7 +32,8 @@ std::vector<fs::path> filesIn(const fs::path& folder) {
 }
 
 TEST(FuzzReplay, EveryParserHasATargetWithSeeds) {
-  for (const char* name : {"nrrd", "metaimage", "dat", "vti", "raw", "tf_json", "archive", "mrc", "vtk"}) {
+  for (const char* name :
+       {"nrrd", "metaimage", "dat", "vti", "raw", "tf_json", "archive", "mrc", "vtk", "image"}) {
     ASSERT_TRUE(fuzzTargets().count(name)) << name;
     EXPECT_FALSE(filesIn(fs::path(EWA_FUZZ_DIR) / "corpus" / name).empty()) << name;
   }
@@ -62,7 +63,9 @@ TEST(FuzzReplay, SeedsLoadAsVolumes) {
                                                         {"dat", ".dat"},
                                                         {"vti", ".vti"},
                                                         {"archive", ".zip"},
-                                                        {"mrc", ".mrc"}, {"vtk", ".vtk"}}) {
+                                                        {"mrc", ".mrc"},
+                                                        {"vtk", ".vtk"},
+                                                        {"image", ".png"}}) {
     for (const fs::path& file : filesIn(fs::path(EWA_FUZZ_DIR) / "corpus" / name)) {
       const std::vector<uint8_t> input = readAll(file);
       const std::string path = files.write(input.data(), input.size(), "in" + ext);
