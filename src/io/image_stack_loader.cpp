@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/parallel_chunks.h"
 #include "io/byte_order.h"
 #include "io/file_bytes.h"
 #include "io/file_listing.h"
@@ -84,22 +85,48 @@ std::vector<std::string> sliceFiles(const std::string& path, bool folder) {
   return files;
 }
 
-// One component of every pixel of a decoded image, appended to `out`; false when the image's
+// One component of every pixel of a decoded image, written to `out`; false when the image's
 // colour components differ somewhere (it is not grey stored as colour).
-bool appendComponent(const uint8_t* pixels, const ImageShape& s, int component,
-                     std::vector<uint8_t>& out) {
+bool copyComponent(const uint8_t* pixels, const ImageShape& s, int component, uint8_t* out) {
   const size_t bytes = s.sixteen ? 2 : 1, stride = bytes * size_t(s.components);
   const size_t count = size_t(s.width) * size_t(s.height);
-  const size_t at = out.size();
-  out.resize(at + count * bytes);
   bool grey = true;
   for (size_t i = 0; i < count; ++i) {
     const uint8_t* p = pixels + i * stride;
     if (s.components >= 3)
       grey = grey && std::equal(p, p + bytes, p + bytes) && std::equal(p, p + bytes, p + 2 * bytes);
-    std::copy(p + component * bytes, p + (component + 1) * bytes, out.data() + at + i * bytes);
+    std::copy(p + component * bytes, p + (component + 1) * bytes, out + i * bytes);
   }
   return grey;
+}
+
+// Reads and decodes one slice into `out` (its place in the volume), after checking that it
+// agrees with the first; returns whether it is grey (copyComponent).
+bool readSlice(const std::string& file, const ImageShape& first, const std::string& firstName,
+               int channel, uint8_t* out) {
+  const std::vector<uint8_t> data = readFileRange(file, 0, regularFileSize(file), "image");
+  const ImageShape s = shapeOf(file, data);
+  if (!(s == first))
+    failLoad(file, "is " + s.text() + ", the first image (" + firstName + ") " + first.text() +
+                       ": all slices must agree");
+  int w = 0, h = 0, c = 0;
+  // stb_image keeps its last reason, set by whichever format it tried; a decoder may fail
+  // without setting one, so a reason unchanged by decoding is not shown.
+  const char* before = stbi_failure_reason();
+  const auto* in = data.data();
+  const int size = int(data.size());
+  std::unique_ptr<void, void (*)(void*)> pixels(
+      s.sixteen ? static_cast<void*>(stbi_load_16_from_memory(in, size, &w, &h, &c, 0))
+                : static_cast<void*>(stbi_load_from_memory(in, size, &w, &h, &c, 0)),
+      stbi_image_free);
+  if (!pixels) {
+    const char* why = stbi_failure_reason();
+    failLoad(file, std::string("cannot decode the image (") +
+                       (why && why != before ? why : "corrupt or truncated data") + ")");
+  }
+  if (w != s.width || h != s.height || c != s.components)
+    failLoad(file, "decodes to another size than its header says");
+  return copyComponent(static_cast<const uint8_t*>(pixels.get()), s, channel, out);
 }
 
 }  // namespace
@@ -114,46 +141,25 @@ Volume loadImageStack(const std::string& path, int channel) {
   std::error_code ec;
   const bool folder = fs::is_directory(path, ec);
   const std::vector<std::string> files = sliceFiles(path, folder);
+  // The first image says what every slice must be.
+  const ImageShape first =
+      shapeOf(files[0], readFileRange(files[0], 0, regularFileSize(files[0]), "image"));
+  checkChannel(path, channel, first.components >= 3 ? 3 : 1);  // alpha is no channel
   VolumeLayout layout;
-  ImageShape first;
-  std::vector<uint8_t> bytes;
-  bool grey = true;
-  for (size_t n = 0; n < files.size(); ++n) {
-    const std::string& file = files[n];
-    const std::vector<uint8_t> data = readFileRange(file, 0, regularFileSize(file), "image");
-    const ImageShape s = shapeOf(file, data);
-    if (n == 0) {
-      first = s;
-      // Colour: one component a volume (alpha is not one); grey and alpha: the grey.
-      checkChannel(path, channel, s.components >= 3 ? 3 : 1);
-      layout.type = s.sixteen ? FileScalar::UInt16 : FileScalar::UInt8;
-      layout.dims = {s.width, s.height, int64_t(files.size())};
-      dataByteCount(path, layout.dims, layout.type);  // the whole stack fits, before decoding
-      bytes.reserve(size_t(s.width) * size_t(s.height) * files.size() * (s.sixteen ? 2 : 1));
-    } else if (!(s == first)) {
-      failLoad(file, "is " + s.text() + ", the first image (" +
-                         fs::path(files[0]).filename().string() + ") " + first.text() +
-                         ": all slices must agree");
-    }
-    int w = 0, h = 0, c = 0;
-    // stb_image keeps its last reason, set by whichever format it tried; a decoder may fail
-    // without setting one, so a reason unchanged by decoding is not shown.
-    const char* before = stbi_failure_reason();
-    const auto* in = data.data();
-    const int size = int(data.size());
-    std::unique_ptr<void, void (*)(void*)> pixels(
-        s.sixteen ? static_cast<void*>(stbi_load_16_from_memory(in, size, &w, &h, &c, 0))
-                  : static_cast<void*>(stbi_load_from_memory(in, size, &w, &h, &c, 0)),
-        stbi_image_free);
-    if (!pixels) {
-      const char* why = stbi_failure_reason();
-      failLoad(file, std::string("cannot decode the image (") +
-                         (why && why != before ? why : "corrupt or truncated data") + ")");
-    }
-    if (w != s.width || h != s.height || c != s.components)
-      failLoad(file, "decodes to another size than its header says");
-    grey = appendComponent(static_cast<const uint8_t*>(pixels.get()), s, channel, bytes) && grey;
-  }
+  layout.type = first.sixteen ? FileScalar::UInt16 : FileScalar::UInt8;
+  layout.dims = {first.width, first.height, int64_t(files.size())};
+  // The whole stack fits, before any image is decoded; slices are decoded on every core.
+  const auto sliceBytes = size_t(dataByteCount(path, {first.width, first.height, 1}, layout.type));
+  std::vector<uint8_t> bytes(size_t(dataByteCount(path, layout.dims, layout.type)));
+  const std::string firstName = fs::path(files[0]).filename().string();
+  const std::vector<char> greyChunks =
+      parallelChunkResults<char>(files.size(), 1, 0, [&](size_t begin, size_t end) {
+        bool grey = true;
+        for (size_t n = begin; n < end; ++n)
+          grey = readSlice(files[n], first, firstName, channel, &bytes[n * sliceBytes]) && grey;
+        return char(grey);
+      });
+  const bool grey = std::all_of(greyChunks.begin(), greyChunks.end(), [](char g) { return g; });
   layout.bigEndian = hostIsBigEndian();  // stb_image gives native order
   layout.notes.push_back((files.size() == 1
                               ? std::string("1 image as a slice")
