@@ -12,6 +12,7 @@
 #include "app/scene.h"
 #include "app/turntable.h"
 #include "io/archive_cache.h"
+#include "io/nrrd_writer.h"
 #include "io/viewer_settings.h"
 #include "ui/viewer.h"
 
@@ -111,10 +112,15 @@ int main(int argc, char** argv) {
   ewa::askForHugePages(argv);  // returns here only without it; else main runs again
   ewa::keepFreedHeapForReuse();
   // A window keeps an archive it opens unpacked (ArchiveCache), from the first volume on.
-  if (options.output.empty() && !options.info && !options.pick && options.turntable == 0)
+  if (options.output.empty() && !options.info && !options.pick && options.turntable == 0 &&
+      options.saveVolume.empty())
     options.archives = std::make_shared<ewa::ArchiveCache>();
   try {
     ewa::Scene scene = ewa::loadScene(options);
+    if (!options.saveVolume.empty()) {
+      ewa::writeNrrd(options.saveVolume, scene.volume);
+      if (!options.info) return 0;
+    }
     if (options.info) {
       std::cout << ewa::volumeInfoJson(scene.volume) << "\n";
       return 0;

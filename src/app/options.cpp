@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <vector>
@@ -81,10 +82,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option(
       "file", o->file,
       "Volume file (.nrrd .nhdr .mhd .mha .dat .vti .vtk .nii .nii.gz .hdr .img .dcm .tif "
-      ".tiff .ome .slc .mrc .map .rec), a DICOM or TIFF folder, an archive of one (.zip "
-      ".tar .tar.gz "
-      ".7z ...), or raw "
-      "with --raw-*");
+      ".tiff .ome .slc .mrc .map .rec), a folder of DICOM, TIFF or .png .jpg .bmp .pgm slices, "
+      "an archive of one (.zip .tar .tar.gz .7z ...), or raw with --raw-*");
   app.add_option("--synthetic", o->synthetic,
                  "Synthetic volume: marschner-lobb[:N], sphere[:N], checkerboard, zebra[:RATIO]");
   app.add_option("-o,--output", o->output,
@@ -106,6 +105,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                "gpu_bytes, gpu_bytes_per_splat, peak_rss)");
   app.add_flag("--info", o->info,
                "Print dims, spacing, type, value range, direction and notes as JSON and exit");
+  app.add_option("--save-volume", o->saveVolume,
+                 "Write the volume as opened (any format, after --frame, --channel, --series, "
+                 "--spacing) to this .nrrd file (gzip) and exit");
   std::vector<double> pick;
   app.add_option("--pick", pick,
                  "Print what pixel X,Y (column, row from the top left) of the --resolution "
@@ -255,6 +257,15 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!res.empty()) {
     o->width = res[0];
     o->height = res[1];
+  }
+  if (!o->saveVolume.empty()) {
+    if (!o->output.empty() || o->turntable > 0 || !pick.empty())
+      return usage(
+          "--save-volume writes the volume and exits: not with --output, --turntable "
+          "or --pick");
+    const std::string name = std::filesystem::path(o->saveVolume).filename().string();
+    if (name.size() < 6 || name.compare(name.size() - 5, 5, ".nrrd") != 0)
+      return usage("--save-volume " + o->saveVolume + ": the file must end in .nrrd");
   }
   if (!pick.empty()) {
     if (o->info || !o->output.empty())

@@ -23,6 +23,7 @@ struct Options {
   bool resolutionGiven = false;     // --resolution was given (overrides the saved window size)
   bool renderOptionsGiven = false;  // a render option was given (overrides the saved ones)
   bool info = false;                // print the volume's description as JSON and exit
+  std::string saveVolume;           // --save-volume FILE.nrrd: write the volume as NRRD and exit
   bool stats = false;               // after --output, print the frame's statistics as one JSON line
   std::optional<glm::dvec2> pick;   // --pick X,Y: print what that pixel shows as JSON and exit
   int width = 800;

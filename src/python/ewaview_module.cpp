@@ -100,5 +100,8 @@ the histogram, as on the command line.)")
       .def_property_readonly("array", &PythonScene::array,
                              "The voxels as loaded: a new array indexed [z, y, x] of the volume's "
                              "type (uint8, int16, uint16 or float32).")
+      .def("save_volume", &PythonScene::saveVolume, py::arg("path"),
+           "Writes the volume (as loaded, after spacing=) to a gzip NRRD file, as --save-volume "
+           "does.")
       .def("__repr__", &PythonScene::repr);
 }

@@ -14,7 +14,7 @@ namespace {
 // What the module does itself (render() instead of --output and --turntable) or cannot do.
 const char* const kNotOptions[] = {"output", "turntable", "fps",        "info",
                                    "help",   "version",   "config_dir", "record_camera_path",
-                                   "file",   "pick"};
+                                   "file",   "pick",      "save_volume"};
 
 // Collects what parseCommandLine writes to std::cerr while it lives.
 class CerrCapture {

@@ -11,6 +11,7 @@
 #include "core/camera_views.h"
 #include "core/transfer_function_presets.h"
 #include "io/frame_sink.h"
+#include "io/nrrd_writer.h"
 #include "io/png_io.h"
 #include "io/transfer_function_io.h"
 #include "python/python_options.h"
@@ -246,6 +247,12 @@ py::dict PythonScene::info() const {
   py::dict d = fromJson(volumeInfoJson(*volume_));
   d["name"] = name_;
   return d;
+}
+
+void PythonScene::saveVolume(const std::string& path) const {
+  if (path.size() < 6 || path.compare(path.size() - 5, 5, ".nrrd") != 0)
+    throw UsageError("save_volume: " + path + ": the file must end in .nrrd");
+  writeNrrd(path, *volume_);
 }
 
 py::array PythonScene::array() const {

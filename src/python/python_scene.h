@@ -49,6 +49,8 @@ class PythonScene {
   // of the volume's type.
   pybind11::array array() const;
   std::string repr() const;
+  // --save-volume: the volume as a gzip NRRD file (a path not ending in .nrrd: ValueError).
+  void saveVolume(const std::string& path) const;
 
  private:
   Options renderOptions(const pybind11::dict& overrides);

@@ -91,6 +91,13 @@ def test_numpy_array_equals_the_same_voxels_read_as_raw(cli, out_dir):
         plain.set(spacing="1,1,1")
     with pytest.raises(ValueError, match="origin goes with an array volume"):
         ewaview.Scene(raw, origin=(0, 0, 0))
+    # save_volume writes what --save-volume writes: the same voxels and spacing read back.
+    saved = out_dir / "ball.nrrd"
+    plain.save_volume(str(saved))
+    again = ewaview.Scene(saved)
+    assert again.info["spacing"] == [1, 1.5, 2] and np.array_equal(again.array, data)
+    with pytest.raises(ValueError, match="must end in .nrrd"):
+        plain.save_volume(str(out_dir / "ball.png"))
     # float64 arrays become float32 volumes; non-contiguous views are copied in [z, y, x] order.
     assert ewaview.Scene(data.astype(np.float64)).info["type"] == "float32"
     flipped = ewaview.Scene(data[:, :, ::-1].copy()).render(**SMALL)

@@ -171,6 +171,17 @@ TEST(Cli, SpacingReplacesTheFilesForAFolderOfImageSlices) {
   EXPECT_NE(r.out.find("spacing 0.5, 0.25, 2 from --spacing (the file's: 1, 1, 1)"),
             std::string::npos)
       << r.out;
+  // --save-volume writes it as NRRD, which reads back with that spacing and the same voxels.
+  r = ewaview(dir + " --spacing 0.5,0.25,2 --save-volume " + dir + "/../slices.nrrd");
+  EXPECT_EQ(r.code, 0) << r.err;
+  r = ewaview(dir + "/../slices.nrrd --info");
+  EXPECT_NE(r.out.find("\"dims\":[4,2,3],\"spacing\":[0.5,0.25,2.0],\"type\":\"uint8\",\"range\":"
+                       "[0.0,20.0]"),
+            std::string::npos)
+      << r.out;
+  r = ewaview(dir + " --save-volume " + dir + "/v.png");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("the file must end in .nrrd"), std::string::npos) << r.err;
   r = ewaview(dir + " --info --spacing 1,-1,1");
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
