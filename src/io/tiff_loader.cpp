@@ -2,9 +2,12 @@
 #include <tiffio.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
+#include "core/parallel_chunks.h"
 #include "io/byte_order.h"
 #include "io/file_bytes.h"
 #include "io/format_loaders.h"
@@ -104,6 +107,51 @@ Volume loadOmeXml(const std::string& path, const std::string& xmlFile, int chann
   return makeVolume(path, layout, std::move(bytes));
 }
 
+// A folder of one-page files (the usual stack: a scanner's or microscope's slices), each file
+// read and decoded on its own core; nullopt when a file holds several pages or OME-XML, or the
+// first describes channels or time points over pages, which the general reading handles.
+std::optional<Volume> loadSinglePages(const std::string& path,
+                                      const std::vector<std::string>& files, int channel,
+                                      int frame) {
+  VolumeLayout layout;
+  PageFormat format;
+  {
+    TiffFile first(files[0]);
+    if (TIFFNumberOfDirectories(first.get()) != 1) return std::nullopt;
+    format = pageFormat(first);
+    char* description = nullptr;
+    std::string text;
+    if (TIFFGetField(first.get(), TIFFTAG_IMAGEDESCRIPTION, &description) && description)
+      text = std::string(description).substr(0, 1 << 24);
+    if (!omeMetadataFile(text).empty()) return std::nullopt;
+    const TiffPlaneOrder order = tiffPlaneOrder(files[0], text, format.samples);
+    if (order.kind == "OME" || order.channels > 1 || order.frames > 1) return std::nullopt;
+    describeStack(path, first, format, order, channel, frame, layout);
+  }
+  layout.dims = {int64_t(format.width), int64_t(format.height), int64_t(files.size())};
+  const auto pageBytes =
+      size_t(dataByteCount(path, {layout.dims[0], layout.dims[1], 1}, layout.type));
+  std::vector<uint8_t> bytes(size_t(dataByteCount(path, layout.dims, layout.type)));
+  std::atomic<bool> severalPages{false};
+  parallelChunks(files.size(), 1, 0, [&](size_t begin, size_t end, size_t) {
+    for (size_t n = begin; n < end && !severalPages; ++n) {
+      TiffFile tiff(files[n]);
+      if (TIFFNumberOfDirectories(tiff.get()) != 1) {
+        severalPages = true;
+        return;
+      }
+      const PageFormat f = pageFormat(tiff);
+      if (!(f == format))
+        tiff.fail("page " + std::to_string(n) + " is " + f.text() + ", the first " + format.text() +
+                  ": all pages must agree");
+      readPage(tiff, f, f.samples > 1 ? channel : 0, bytes.data() + n * pageBytes);
+    }
+  });
+  if (severalPages) return std::nullopt;
+  layout.bigEndian = hostIsBigEndian();  // libtiff gives native order
+  return makeVolume(path, layout, std::move(bytes));
+}
+
 }  // namespace
 
 Volume loadOmeCompanion(const std::string& path, int channel, int frame) {
@@ -125,6 +173,9 @@ Volume loadTiff(const std::string& path, int channel, int frame) {
   } else {
     files.push_back(path);
   }
+  if (files.size() > 1)
+    if (std::optional<Volume> volume = loadSinglePages(path, files, channel, frame))
+      return std::move(*volume);
 
   // Pages in order: every page of every file.
   VolumeLayout layout;

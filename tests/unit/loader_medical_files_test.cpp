@@ -787,6 +787,25 @@ TEST(TiffFiles, FolderInNaturalOrder) {
   EXPECT_EQ(v.value(0, 0, 0), 1);
   EXPECT_EQ(v.value(0, 0, 1), 2);
   EXPECT_EQ(v.value(0, 0, 2), 10);
+  // One-page files are read on every core; a file of two pages among them is read the general
+  // way, every page of every file in turn, to the same result.
+  std::vector<std::vector<uint8_t>> two = {std::vector<uint8_t>(4, 20),
+                                           std::vector<uint8_t>(4, 21)};
+  ASSERT_TRUE(testing::writeTiff(dir.path("stack/z20.tif"), 2, 2, two, SAMPLEFORMAT_UINT));
+  const Volume mixed = loadVolume(dir.path("stack"));
+  ASSERT_EQ(mixed.dims()[2], 5);
+  EXPECT_EQ(mixed.value(1, 1, 3), 20);
+  EXPECT_EQ(mixed.value(1, 1, 4), 21);
+  // Many one-page files (more than cores): each slice in its place.
+  std::filesystem::create_directories(dir.path("many"));
+  for (int n = 0; n < 40; ++n) {
+    std::vector<std::vector<uint16_t>> page(1, std::vector<uint16_t>(4, uint16_t(1000 + n)));
+    ASSERT_TRUE(testing::writeTiff(dir.path("many/s" + std::to_string(n) + ".tif"), 2, 2, page,
+                                   SAMPLEFORMAT_UINT));
+  }
+  const Volume many = loadVolume(dir.path("many"));
+  ASSERT_EQ(many.dims()[2], 40);
+  for (int n = 0; n < 40; ++n) ASSERT_EQ(many.value(1, 0, n), 1000 + n) << n;
 }
 
 // Tiled pages (microscopy's big planes): tiles overhanging the page's right and bottom edges,
