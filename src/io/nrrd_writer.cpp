@@ -14,18 +14,9 @@ namespace ewa {
 
 namespace {
 
+// NRRD's name of the type: the volume's own ("uint8", "int16", "uint16"), but "float".
 const char* nrrdType(ScalarType type) {
-  switch (type) {
-    case ScalarType::UInt8:
-      return "uint8";
-    case ScalarType::Int16:
-      return "int16";
-    case ScalarType::UInt16:
-      return "uint16";
-    case ScalarType::Float32:
-      return "float";
-  }
-  return "uint8";
+  return type == ScalarType::Float32 ? "float" : scalarName(type);
 }
 
 // Shortest text that reads back as the same double.
