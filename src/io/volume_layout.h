@@ -10,30 +10,9 @@
 #include <vector>
 
 #include "core/volume.h"
+#include "io/file_scalar.h"
 
 namespace ewa {
-
-// The voxel types files may store. Int8 has no Volume type: it is widened to Int16 on load.
-// The wide types (32- and 64-bit integers, float64) are converted to float32 on load.
-enum class FileScalar {
-  Int8,
-  UInt8,
-  Int16,
-  UInt16,
-  Float32,
-  Int32,
-  UInt32,
-  Int64,
-  UInt64,
-  Float64
-};
-size_t fileScalarSize(FileScalar type);
-const char* fileScalarName(FileScalar type);
-FileScalar fileScalarOf(ScalarType type);
-// True for the types a Volume does not hold as they are (makeVolume makes them float32).
-bool isWideScalar(FileScalar type);
-// One value of `type` at `p`, in native byte order, as a double.
-double fileScalarValue(FileScalar type, const uint8_t* p);
 
 struct VolumeLayout {
   std::array<int64_t, 3> dims{0, 0, 0};
@@ -55,10 +34,6 @@ struct VolumeLayout {
 // or allocating anything for the data. Throws LoadError.
 uint64_t dataByteCount(const std::string& path, const std::array<int64_t, 3>& dims,
                        FileScalar type);
-
-// `values` as `type`'s bytes (native order), integers rounded and clamped to the type's range:
-// values a loader computed or parsed as numbers (DICOM after rescale, ASCII legacy VTK).
-std::vector<uint8_t> encodeValues(const std::vector<double>& values, FileScalar type);
 
 // Bytes of data of `components` values a voxel (interleaved, as colour and vector images store
 // them), after the same checks as dataByteCount; components must be 1 to 4096.
