@@ -72,7 +72,8 @@ std::vector<std::string> sliceFiles(const std::string& path, bool folder) {
   for (fs::directory_iterator it(dir.empty() ? fs::path(".") : dir, ec), end; !ec && it != end;
        it.increment(ec)) {
     std::error_code statError;
-    if (it->is_regular_file(statError) &&
+    // Hidden files are left out: macOS leaves "._NAME.png" beside each slice it copies.
+    if (it->is_regular_file(statError) && it->path().filename().string()[0] != '.' &&
         hasExtension(it->path().string(), sliceImageExtensions())) {
       if (files.size() == kMaxSlices)
         failLoad(path, "more than " + std::to_string(kMaxSlices) + " images in the folder");

@@ -165,7 +165,9 @@ Volume loadTiff(const std::string& path, int channel, int frame) {
     for (std::filesystem::directory_iterator it(path, ec), end; !ec && it != end;
          it.increment(ec)) {
       const std::string ext = toLower(it->path().extension().string());
-      if ((ext == ".tif" || ext == ".tiff") && it->is_regular_file(ec))
+      // Hidden files are left out: macOS leaves "._NAME.tif" beside each file it copies.
+      if ((ext == ".tif" || ext == ".tiff") && it->is_regular_file(ec) &&
+          it->path().filename().string()[0] != '.')
         files.push_back(it->path().string());
     }
     if (files.empty()) failLoad(path, "no TIFF file in the folder");

@@ -71,6 +71,7 @@ TEST(ImageStack, PngSlicesInNaturalOrderFromTheFolderOrAnyOfItsImages) {
   const char* names[] = {"s/z10.png", "s/z1.png", "s/z2.png"};
   for (int n = 0; n < 3; ++n) dir.write(names[n], pngBytes(3, 2, 1, 8, slice(order[n], 1)));
   dir.write("s/notes.txt", "not a slice");
+  dir.write("s/._z1.png", "macOS's resource fork of z1.png, not an image");
   for (const std::string& path : {dir.path("s"), dir.path("s/z2.png")}) {
     const Volume v = loadVolume(path);
     EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{3, 2, 3}));

@@ -782,6 +782,7 @@ TEST(TiffFiles, FolderInNaturalOrder) {
     ASSERT_TRUE(testing::writeTiff(dir.path("stack/z" + std::to_string(n) + ".tif"), 2, 2, page,
                                    SAMPLEFORMAT_UINT));
   }
+  dir.write("stack/._z1.tif", "macOS's resource fork of z1.tif, not a TIFF");
   const Volume v = loadVolume(dir.path("stack"));
   EXPECT_EQ(v.dims()[2], 3);
   EXPECT_EQ(v.value(0, 0, 0), 1);
