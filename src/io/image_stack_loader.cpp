@@ -13,6 +13,7 @@
 #include "io/file_bytes.h"
 #include "io/file_listing.h"
 #include "io/format_loaders.h"
+#include "io/jpeg_header_check.h"
 #include "io/load_failure.h"
 #include "io/text_fields.h"
 #include "io/volume_layout.h"
@@ -40,8 +41,27 @@ struct ImageShape {
   }
 };
 
+enum class ImageKind { Png, Jpeg, Bmp, Pnm };
+
+// The format by its first bytes. Only the four named are given to stb_image, which would
+// otherwise pick any of its decoders (GIF, PSD, HDR, PIC, TGA) by the content.
+ImageKind imageKind(const std::string& file, const std::vector<uint8_t>& b) {
+  static const uint8_t kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (b.size() >= 8 && std::equal(kPng, kPng + 8, b.begin())) return ImageKind::Png;
+  if (b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) return ImageKind::Jpeg;
+  if (b.size() >= 2 && b[0] == 'B' && b[1] == 'M') return ImageKind::Bmp;
+  if (b.size() >= 2 && b[0] == 'P' && (b[1] == '5' || b[1] == '6')) return ImageKind::Pnm;
+  failLoad(file, "not a PNG, JPEG, BMP or binary PGM/PPM image (by its first bytes)");
+}
+
 ImageShape shapeOf(const std::string& file, const std::vector<uint8_t>& bytes) {
   if (bytes.size() > size_t(INT32_MAX)) failLoad(file, "image file is too large");
+  const ImageKind kind = imageKind(file, bytes);
+  // stb_image asserts on a scan whose tables no segment defined (found by fuzzing).
+  if (kind == ImageKind::Jpeg)
+    if (const std::string problem = jpegScanTablesProblem(bytes.data(), bytes.size());
+        !problem.empty())
+      failLoad(file, "corrupt JPEG: " + problem);
   ImageShape s;
   const auto* data = bytes.data();
   const int size = int(bytes.size());
@@ -55,8 +75,7 @@ ImageShape shapeOf(const std::string& file, const std::vector<uint8_t>& bytes) {
   // pixels must fit in the file's bytes, or their compression stay within deflate's 1032:1
   // (JPEG's flattest blocks compress less far). BMP and PNM are not compressed (1-bit BMP
   // rows: 8 pixels a byte).
-  const bool plain = (bytes.size() >= 2 && bytes[0] == 'B' && bytes[1] == 'M') ||
-                     (bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '1' && bytes[1] <= '6');
+  const bool plain = kind == ImageKind::Bmp || kind == ImageKind::Pnm;
   const double pixels = double(s.width) * double(s.height) * s.components * (s.sixteen ? 2 : 1);
   if (pixels > double(bytes.size() + 1024) * (plain ? 24.0 : 1032.0))
     failLoad(file, "its header promises " + s.text() + " pixels, more than its " +

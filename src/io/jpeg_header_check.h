@@ -18,6 +18,14 @@ namespace ewa {
 // lossy; 8 to 16 lossless).
 std::string jpegHeaderProblem(const uint8_t* data, size_t size);
 
+// What makes the JPEG stream at `data` unsafe for stb_image (image slices), or "": a scan whose
+// components use a Huffman table (DC in a first DC or baseline scan, AC in an AC or baseline
+// scan) or a quantization table that no segment before it defined. stb_image decodes with the
+// uninitialized table then and asserts (Debian 12's libstb: found by fuzzing). Markers are found
+// as stb_image finds them (fill bytes and stray bytes skipped; a scan's data ends at a marker
+// that is not a restart); a stream cut short or without SOI passes, for stb_image to refuse.
+std::string jpegScanTablesProblem(const uint8_t* data, size_t size);
+
 // What is wrong with the header of the JPEG-LS stream at `data` for an image of `columns` x
 // `rows` with `samples` samples a pixel of `bitsAllocated` bits, or "": its frame (SOF55) must
 // give the same size and components, and a precision whose decoded samples fit (GDCM 3.0

@@ -4,6 +4,8 @@
 #include <zlib.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -138,6 +140,12 @@ TEST(ImageStack, MismatchedBrokenAndForeignImagesFailInOneLine) {
   expectVolumeLoadError(dir.path("d"), "all slices must agree");
   std::filesystem::create_directories(dir.path("x"));
   dir.write("x/a.png", "this is not a PNG at all");
+  expectVolumeLoadError(dir.path("x/a.png"), "not a PNG, JPEG, BMP or binary PGM/PPM image");
+  // A GIF (which stb_image would decode too) is not one of the four.
+  dir.write("x/a.png", "GIF89a\x04\x00\x03\x00\x00\x00\x00;");
+  expectVolumeLoadError(dir.path("x/a.png"), "not a PNG, JPEG, BMP or binary PGM/PPM image");
+  // A PNG signature over a header stb_image cannot read.
+  dir.write("x/a.png", std::string("\x89PNG\r\n\x1a\n", 8) + "garbage");
   expectVolumeLoadError(dir.path("x/a.png"), "not an image stb_image reads");
   std::string cut = pngBytes(3, 2, 1, 8, slice(0, 1));
   cut.replace(cut.find("IDAT") + 6, 4, "\xff\xff\xff\xff");  // corrupt the deflate stream
@@ -162,6 +170,31 @@ TEST(ImageStack, MismatchedBrokenAndForeignImagesFailInOneLine) {
   std::filesystem::create_directories(dir.path("w"));
   dir.write("w/b.bmp", bmp);
   expectVolumeLoadError(dir.path("w/b.bmp"), "4000 x 3000 RGB 8-bit pixels, more than its 118");
+}
+
+// stb_image asserts on a scan that uses a table no segment defined (Debian 12's libstb: found by
+// fuzzing, the input kept in tests/data/fuzz/image): such JPEGs are refused before it decodes.
+TEST(ImageStack, JpegScansWithUndefinedTablesAreRefused) {
+  TempDir dir;
+  std::ifstream in(std::string(EWA_FUZZ_DIR) + "/corpus/image/grey.jpg", std::ios::binary);
+  const std::string jpeg((std::istreambuf_iterator<char>(in)), {});
+  ASSERT_GT(jpeg.size(), 160u);
+  // Its segments: APP0, DQT, SOF0, DHT DC 0 at byte 102 (22 bytes), DHT AC 0 at 124 (29), SOS.
+  ASSERT_EQ(jpeg.substr(124, 2), "\xFF\xC4");
+  std::filesystem::create_directories(dir.path("ok"));
+  dir.write("ok/a.jpg", jpeg);
+  EXPECT_EQ(loadVolume(dir.path("ok")).dims(), (std::array<int64_t, 3>{4, 3, 1}));
+  std::filesystem::create_directories(dir.path("ac"));
+  dir.write("ac/a.jpg", jpeg.substr(0, 124) + jpeg.substr(124 + 29));
+  expectVolumeLoadError(dir.path("ac"),
+                        "corrupt JPEG: a scan uses AC Huffman table 0 before any "
+                        "defines it");
+  std::filesystem::create_directories(dir.path("dc"));
+  dir.write("dc/a.jpg", jpeg.substr(0, 102) + jpeg.substr(102 + 22));
+  expectVolumeLoadError(dir.path("dc"), "DC Huffman table 0 before any defines it");
+  std::filesystem::create_directories(dir.path("q"));
+  dir.write("q/a.jpg", jpeg.substr(0, 20) + jpeg.substr(20 + 69));
+  expectVolumeLoadError(dir.path("q"), "quantization table 0 before any defines it");
 }
 
 }  // namespace
