@@ -124,6 +124,10 @@ FileScalar fileScalarOf(ScalarType type) {
   return FileScalar::UInt8;
 }
 
+void copyInterleaved(const uint8_t* src, size_t stride, size_t bytes, size_t count, uint8_t* dst) {
+  for (size_t x = 0; x < count; ++x) std::memcpy(dst + x * bytes, src + x * stride * bytes, bytes);
+}
+
 std::vector<uint8_t> encodeValues(const std::vector<double>& values, FileScalar type) {
   const size_t size = fileScalarSize(type);
   std::vector<uint8_t> out(values.size() * size);

@@ -31,6 +31,10 @@ bool isWideScalar(FileScalar type);
 // One value of `type` at `p`, in native byte order, as a double.
 double fileScalarValue(FileScalar type, const uint8_t* p);
 
+// Copies one value (`bytes` wide) of each of `count` groups from `src`, the groups `stride`
+// values apart, to `dst` (contiguous): one channel of interleaved samples or components.
+void copyInterleaved(const uint8_t* src, size_t stride, size_t bytes, size_t count, uint8_t* dst);
+
 // `values` as `type`'s bytes (native order), integers rounded and clamped to the type's range:
 // values a loader computed or parsed as numbers (DICOM after rescale, ASCII legacy VTK).
 std::vector<uint8_t> encodeValues(const std::vector<double>& values, FileScalar type);

@@ -3,6 +3,7 @@
 
 #include <cstring>
 
+#include "io/file_scalar.h"
 #include "io/load_failure.h"
 
 namespace ewa {
@@ -45,10 +46,8 @@ std::vector<uint8_t> nrrdVolumeOf(const std::vector<uint8_t>& bytes, const NrrdE
     std::memcpy(out.data(), bytes.data() + size_t(index) * out.size(), out.size());
     return out;
   }
-  const size_t stride = size_t(extra.size) * elementSize;
-  const uint8_t* in = bytes.data() + size_t(index) * elementSize;
-  for (size_t v = 0; v < size_t(voxels); ++v)
-    std::memcpy(out.data() + v * elementSize, in + v * stride, elementSize);
+  copyInterleaved(bytes.data() + size_t(index) * elementSize, size_t(extra.size), elementSize,
+                  size_t(voxels), out.data());
   return out;
 }
 

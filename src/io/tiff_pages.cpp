@@ -136,13 +136,6 @@ FileScalar scalarOf(const TiffFile& file, const PageFormat& f) {
 
 namespace {
 
-// Copies one sample (`bytes` wide) of each of `count` pixels from `src`, `stride` samples a
-// pixel apart, to `dst` (contiguous).
-void copyChannel(const uint8_t* src, size_t stride, size_t bytes, uint32_t count, uint8_t* dst) {
-  for (uint32_t x = 0; x < count; ++x)
-    std::memcpy(dst + x * bytes, src + x * stride * bytes, bytes);
-}
-
 // Copies channel `channel` of the current page, stored in strips, into `out`.
 void readStrips(const TiffFile& file, const PageFormat& f, int channel, uint8_t* out) {
   TIFF* t = file.get();
@@ -155,8 +148,8 @@ void readStrips(const TiffFile& file, const PageFormat& f, int channel, uint8_t*
   for (uint32_t y = 0; y < f.height; ++y) {
     if (TIFFReadScanline(t, line.data(), y, planar ? uint16_t(channel) : 0) < 0)
       file.fail("cannot read row " + std::to_string(y) + " (truncated or corrupt file?)");
-    copyChannel(line.data() + (planar ? 0 : size_t(channel) * bytes), planar ? 1 : f.samples, bytes,
-                f.width, out + size_t(y) * f.width * bytes);
+    copyInterleaved(line.data() + (planar ? 0 : size_t(channel) * bytes), planar ? 1 : f.samples,
+                    bytes, f.width, out + size_t(y) * f.width * bytes);
   }
 }
 
@@ -181,9 +174,10 @@ void readTiles(const TiffFile& file, const PageFormat& f, int channel, uint8_t* 
       const uint32_t w = std::min(f.tileWidth, f.width - x0);
       const uint32_t h = std::min(f.tileHeight, f.height - y0);
       for (uint32_t r = 0; r < h; ++r)
-        copyChannel(tile.data() +
-                        (size_t(r) * f.tileWidth * stride + (planar ? 0 : size_t(channel))) * bytes,
-                    stride, bytes, w, out + (size_t(y0 + r) * f.width + x0) * bytes);
+        copyInterleaved(
+            tile.data() +
+                (size_t(r) * f.tileWidth * stride + (planar ? 0 : size_t(channel))) * bytes,
+            stride, bytes, w, out + (size_t(y0 + r) * f.width + x0) * bytes);
     }
 }
 

@@ -137,10 +137,10 @@ std::vector<uint8_t> pickComponent(const std::string& path, std::vector<uint8_t>
   layout.channelCount = int(components);
   layout.notes.push_back(std::to_string(components) + " components a voxel; showing component " +
                          std::to_string(channel) + " (--channel N picks another)");
-  const size_t size = fileScalarSize(layout.type), stride = size * size_t(components);
+  const size_t size = fileScalarSize(layout.type);
   std::vector<uint8_t> out(bytes.size() / size_t(components));
-  for (size_t v = 0, n = out.size() / size; v < n; ++v)
-    std::memcpy(&out[v * size], &bytes[v * stride + size_t(channel) * size], size);
+  copyInterleaved(bytes.data() + size_t(channel) * size, size_t(components), size,
+                  out.size() / size, out.data());
   return out;
 }
 
