@@ -8,6 +8,7 @@
 
 #include "io/archive_extract.h"
 #include "io/format_loaders.h"
+#include "io/text_fields.h"
 
 namespace ewa {
 
@@ -67,6 +68,15 @@ std::vector<DirEntry> listDirectory(const std::string& dir,
   std::sort(files.begin(), files.end(), byName);
   dirs.insert(dirs.end(), files.begin(), files.end());
   return dirs;
+}
+
+std::vector<std::string> sliceFilesIn(const std::string& dir,
+                                      const std::vector<std::string>& extensions) {
+  std::vector<std::string> paths;
+  for (const DirEntry& e : listDirectory(dir, extensions))
+    if (!e.directory) paths.push_back((std::filesystem::path(dir) / e.name).string());
+  std::sort(paths.begin(), paths.end(), naturalLess);
+  return paths;
 }
 
 }  // namespace ewa

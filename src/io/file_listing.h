@@ -26,4 +26,10 @@ std::vector<DirEntry> listDirectory(const std::string& dir,
                                     const std::vector<std::string>& extensions,
                                     bool showHidden = false);
 
+// The paths of the files in `dir` whose extension is in `extensions`, in natural name order
+// ("z2" before "z10"): a stack's slices. Hidden files are left out (macOS leaves "._NAME"
+// beside each file it copies). Throws as listDirectory does.
+std::vector<std::string> sliceFilesIn(const std::string& dir,
+                                      const std::vector<std::string>& extensions);
+
 }  // namespace ewa

@@ -15,7 +15,6 @@
 #include "io/format_loaders.h"
 #include "io/jpeg_header_check.h"
 #include "io/load_failure.h"
-#include "io/text_fields.h"
 #include "io/volume_layout.h"
 
 namespace ewa {
@@ -86,22 +85,11 @@ ImageShape shapeOf(const std::string& file, const std::vector<uint8_t>& bytes) {
 // The images of the folder `path` is or lies in, in natural order.
 std::vector<std::string> sliceFiles(const std::string& path, bool folder) {
   const fs::path dir = folder ? fs::path(path) : fs::path(path).parent_path();
-  std::vector<std::string> files;
-  std::error_code ec;
-  for (fs::directory_iterator it(dir.empty() ? fs::path(".") : dir, ec), end; !ec && it != end;
-       it.increment(ec)) {
-    std::error_code statError;
-    // Hidden files are left out: macOS leaves "._NAME.png" beside each slice it copies.
-    if (it->is_regular_file(statError) && it->path().filename().string()[0] != '.' &&
-        hasExtension(it->path().string(), sliceImageExtensions())) {
-      if (files.size() == kMaxSlices)
-        failLoad(path, "more than " + std::to_string(kMaxSlices) + " images in the folder");
-      files.push_back(it->path().string());
-    }
-  }
-  if (ec) failLoad(path, "cannot list the folder (" + ec.message() + ")");
+  const std::vector<std::string> files =
+      sliceFilesIn(dir.empty() ? "." : dir.string(), sliceImageExtensions());
+  if (files.size() > kMaxSlices)
+    failLoad(path, "more than " + std::to_string(kMaxSlices) + " images in the folder");
   if (files.empty()) failLoad(path, "no PNG, JPEG, BMP or PGM/PPM image in the folder");
-  std::sort(files.begin(), files.end(), naturalLess);
   return files;
 }
 

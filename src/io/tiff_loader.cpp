@@ -10,10 +10,10 @@
 #include "core/parallel_chunks.h"
 #include "io/byte_order.h"
 #include "io/file_bytes.h"
+#include "io/file_listing.h"
 #include "io/format_loaders.h"
 #include "io/length_unit.h"
 #include "io/load_failure.h"
-#include "io/text_fields.h"
 #include "io/tiff_ome_dataset.h"
 #include "io/tiff_pages.h"
 #include "io/tiff_planes.h"
@@ -162,16 +162,8 @@ Volume loadTiff(const std::string& path, int channel, int frame) {
   std::error_code ec;
   std::vector<std::string> files;
   if (std::filesystem::is_directory(path, ec)) {
-    for (std::filesystem::directory_iterator it(path, ec), end; !ec && it != end;
-         it.increment(ec)) {
-      const std::string ext = toLower(it->path().extension().string());
-      // Hidden files are left out: macOS leaves "._NAME.tif" beside each file it copies.
-      if ((ext == ".tif" || ext == ".tiff") && it->is_regular_file(ec) &&
-          it->path().filename().string()[0] != '.')
-        files.push_back(it->path().string());
-    }
+    files = sliceFilesIn(path, {".tif", ".tiff"});
     if (files.empty()) failLoad(path, "no TIFF file in the folder");
-    std::sort(files.begin(), files.end(), naturalLess);
   } else {
     files.push_back(path);
   }
