@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <vector>
@@ -14,6 +13,7 @@
 #include "app/render_options.h"
 #include "app/version.h"
 #include "core/kernel_lattice.h"
+#include "io/nrrd_writer.h"
 #include "platform/headless_context.h"
 
 namespace ewa {
@@ -263,8 +263,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       return usage(
           "--save-volume writes the volume and exits: not with --output, --turntable "
           "or --pick");
-    const std::string name = std::filesystem::path(o->saveVolume).filename().string();
-    if (name.size() < 6 || name.compare(name.size() - 5, 5, ".nrrd") != 0)
+    if (!isNrrdFileName(o->saveVolume))
       return usage("--save-volume " + o->saveVolume + ": the file must end in .nrrd");
   }
   if (!pick.empty()) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 #include "io/atomic_file.h"
@@ -84,6 +85,11 @@ std::string encodeNrrd(const Volume& volume) {
   std::vector<uint8_t> bytes = volume.bytes();
   if (hostIsBigEndian()) swapBytes(bytes.data(), bytes.size(), scalarSize(volume.type()));
   return h + gzipBytes(bytes);
+}
+
+bool isNrrdFileName(const std::string& path) {
+  const std::string name = std::filesystem::path(path).filename().string();
+  return name.size() > 5 && name.compare(name.size() - 5, 5, ".nrrd") == 0;
 }
 
 void writeNrrd(const std::string& path, const Volume& volume) {

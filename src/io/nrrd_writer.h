@@ -13,6 +13,10 @@ namespace ewa {
 // reads back is the same volume.
 std::string encodeNrrd(const Volume& volume);
 
+// True when the file name of `path` ends in ".nrrd" (with a name before it): what
+// --save-volume and Python's save_volume accept.
+bool isNrrdFileName(const std::string& path);
+
 // encodeNrrd written to `path` atomically. Throws std::runtime_error("<path>: ...").
 void writeNrrd(const std::string& path, const Volume& volume);
 

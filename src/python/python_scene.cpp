@@ -99,7 +99,7 @@ PythonScene::PythonScene(const py::array& data, const py::object& spacing, const
   // As the loaders do: int8 widened to int16, the 32- and 64-bit types made float32.
   if (kind == 'u' && size == 1) {
     type = ScalarType::UInt8, bytes = contiguousBytes<uint8_t>(data);
-  } else if ((kind == 'i' && size == 1) || (kind == 'i' && size == 2)) {
+  } else if (kind == 'i' && size <= 2) {
     type = ScalarType::Int16, bytes = contiguousBytes<int16_t>(data);
   } else if (kind == 'u' && size == 2) {
     type = ScalarType::UInt16, bytes = contiguousBytes<uint16_t>(data);
@@ -250,7 +250,7 @@ py::dict PythonScene::info() const {
 }
 
 void PythonScene::saveVolume(const std::string& path) const {
-  if (path.size() < 6 || path.compare(path.size() - 5, 5, ".nrrd") != 0)
+  if (!isNrrdFileName(path))
     throw UsageError("save_volume: " + path + ": the file must end in .nrrd");
   writeNrrd(path, *volume_);
 }
