@@ -14,12 +14,6 @@
 
 namespace ewa {
 
-std::string sidecarTransferFunctionPath(const std::string& volumePath, int channel) {
-  std::filesystem::path p(volumePath);
-  const std::string own = channel > 0 ? ".c" + std::to_string(channel) : std::string();
-  return (p.parent_path() / (p.stem().string() + own + ".tf.json")).string();
-}
-
 std::string defaultVolumePath() {
   // Beside the executable's source tree when built; an installed copy would set this too.
   return std::string(EWA_ASSET_DIR) + "/default.nrrd";

@@ -7,6 +7,7 @@
 #include "core/camera.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
+#include "io/transfer_function_io.h"  // sidecarTransferFunctionPath
 
 namespace ewa {
 
@@ -18,10 +19,6 @@ struct Scene {
 
 // Path of the volume opened when no FILE or --synthetic is given.
 std::string defaultVolumePath();
-
-// "dir/name.tf.json" beside "dir/name.ext": a transfer function kept with its volume; for
-// channel C > 0 of a multi-channel file "dir/name.cC.tf.json" (stains differ in range).
-std::string sidecarTransferFunctionPath(const std::string& volumePath, int channel = 0);
 
 // Loads the volume (file, raw or synthetic) and the transfer function: --tf, else a sidecar
 // file beside the volume, else the synthetic volume's own, else one made from the histogram. Throws

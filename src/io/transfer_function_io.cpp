@@ -153,4 +153,10 @@ void saveTransferFunction(const std::string& path, const TransferFunction& unsor
   writeFileAtomically(path, transferFunctionToJson(tf));
 }
 
+std::string sidecarTransferFunctionPath(const std::string& volumePath, int channel) {
+  std::filesystem::path p(volumePath);
+  const std::string own = channel > 0 ? ".c" + std::to_string(channel) : std::string();
+  return (p.parent_path() / (p.stem().string() + own + ".tf.json")).string();
+}
+
 }  // namespace ewa

@@ -26,4 +26,8 @@ std::string transferFunctionToJson(const TransferFunction& tf);
 // into place, so a crash never leaves half a file. Throws std::runtime_error("<path>: <problem>").
 void saveTransferFunction(const std::string& path, const TransferFunction& tf);
 
+// "dir/name.tf.json" beside "dir/name.ext": a transfer function kept with its volume; for
+// channel C > 0 of a multi-channel file "dir/name.cC.tf.json" (stains differ in range).
+std::string sidecarTransferFunctionPath(const std::string& volumePath, int channel = 0);
+
 }  // namespace ewa

@@ -1,4 +1,4 @@
-// FileDialog: the open-volume window built from ImGui widgets.
+// FileDialog: the open-volume and save-volume window built from ImGui widgets.
 #include "ui/file_dialog.h"
 
 #include <imgui.h>
@@ -7,17 +7,24 @@
 #include <cstring>
 #include <filesystem>
 
+#include "io/nrrd_writer.h"
+
 namespace ewa {
 
 namespace fs = std::filesystem;
 
-void FileDialog::open(const std::string& folder) {
+void FileDialog::open(const std::string& folder, Purpose purpose, const std::string& fileName) {
   open_ = true;
   justOpened_ = true;
+  purpose_ = purpose;
+  replacing_.clear();
   std::error_code ec;
   const std::string start =
       !folder.empty() && fs::is_directory(folder, ec) ? folder : fs::current_path(ec).string();
   changeFolder(start);
+  if (purpose_ == Purpose::SaveVolume && !fileName.empty())
+    std::snprintf(pathBuffer_, sizeof pathBuffer_, "%s",
+                  (fs::path(folder_) / fileName).string().c_str());
 }
 
 void FileDialog::changeFolder(const std::string& folder) {
@@ -25,8 +32,10 @@ void FileDialog::changeFolder(const std::string& folder) {
   fs::path canonical = fs::weakly_canonical(folder, ec);
   if (ec) canonical = folder;
   try {
-    entries_ = listDirectory(canonical.string(),
-                             allFiles_ ? std::vector<std::string>{} : volumeFileExtensions());
+    const std::vector<std::string> kinds = purpose_ == Purpose::SaveVolume
+                                               ? std::vector<std::string>{".nrrd"}
+                                               : volumeFileExtensions();
+    entries_ = listDirectory(canonical.string(), allFiles_ ? std::vector<std::string>{} : kinds);
     folder_ = canonical.string();
     error_.clear();
   } catch (const std::exception& e) {
@@ -36,28 +45,69 @@ void FileDialog::changeFolder(const std::string& folder) {
   selected_ = -1;
 }
 
+std::optional<std::string> FileDialog::accept() {
+  error_.clear();
+  std::error_code ec;
+  fs::path path(pathBuffer_);
+  if (path.is_relative()) path = fs::path(folder_) / path;  // a name typed in the folder shown
+  if (fs::is_directory(path, ec)) {
+    changeFolder(path.string());
+    return std::nullopt;
+  }
+  if (purpose_ == Purpose::Open) return path.string();
+  if (path.extension().empty()) path += ".nrrd";
+  if (!isNrrdFileName(path.string())) {
+    error_ = "volumes are saved as NRRD: name the file NAME.nrrd";
+    return std::nullopt;
+  }
+  if (!fs::is_directory(path.parent_path(), ec)) {
+    error_ = "no such folder: " + path.parent_path().string();
+    return std::nullopt;
+  }
+  if (fs::exists(path, ec)) {
+    replacing_ = path.string();
+    askReplace_ = true;  // the popup opens at the window's level, not inside the list
+    return std::nullopt;
+  }
+  return path.string();
+}
+
+std::optional<std::string> FileDialog::drawReplacePrompt() {
+  std::optional<std::string> chosen;
+  if (askReplace_) ImGui::OpenPopup("Replace file?");
+  askReplace_ = false;
+  if (ImGui::BeginPopupModal("Replace file?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("%s exists.", fs::path(replacing_).filename().c_str());
+    if (ImGui::Button("Replace")) {
+      chosen = replacing_;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Keep it")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+  return chosen;
+}
+
 std::optional<std::string> FileDialog::draw() {
   if (!open_) return std::nullopt;
+  const bool saving = purpose_ == Purpose::SaveVolume;
   std::optional<std::string> chosen;
   ImGui::SetNextWindowSize(ImVec2(560.0f, 420.0f), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(1.0f);
   const bool focusPath = justOpened_;
   if (justOpened_) ImGui::SetNextWindowFocus();
   justOpened_ = false;
-  if (ImGui::Begin("Open volume", &open_)) {
+  // One window (one place on screen) under either title.
+  if (ImGui::Begin(saving ? "Save volume as NRRD###files" : "Open volume###files", &open_)) {
     if (ImGui::Button("Up")) changeFolder(fs::path(folder_).parent_path().string());
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
     if (focusPath) ImGui::SetKeyboardFocusHere();  // type a path at once
-    // Enter on a folder goes there; on a file opens it.
+    // Enter on a folder goes there; on a file chooses it.
     if (ImGui::InputText("##path", pathBuffer_, sizeof pathBuffer_,
-                         ImGuiInputTextFlags_EnterReturnsTrue)) {
-      std::error_code ec;
-      if (fs::is_directory(pathBuffer_, ec))
-        changeFolder(pathBuffer_);
-      else
-        chosen = std::string(pathBuffer_);
-    }
+                         ImGuiInputTextFlags_EnterReturnsTrue))
+      chosen = accept();
     if (!error_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error_.c_str());
     const float footer = ImGui::GetFrameHeightWithSpacing() * 1.3f;
     if (ImGui::BeginChild("entries", ImVec2(0.0f, -footer), true)) {
@@ -76,28 +126,26 @@ std::optional<std::string> FileDialog::draw() {
             break;  // entries_ changed under the loop
           }
           std::snprintf(pathBuffer_, sizeof pathBuffer_, "%s", full.c_str());
-          if (!e.directory && ImGui::IsMouseDoubleClicked(0)) chosen = full;
+          if (!e.directory && ImGui::IsMouseDoubleClicked(0)) chosen = accept();
         }
       }
     }
     ImGui::EndChild();
     if (ImGui::Checkbox("all files", &allFiles_)) changeFolder(folder_);
     ImGui::SameLine();
-    ImGui::TextDisabled(allFiles_ ? "(raw files need --raw-* on the command line)"
-                                  : "volumes, DICOM, NIfTI, TIFF, SLC");
+    if (saving)
+      ImGui::TextDisabled("NRRD (gzip), with its transfer function beside it");
+    else
+      ImGui::TextDisabled(allFiles_ ? "(raw files need --raw-* on the command line)"
+                                    : "volumes, DICOM, NIfTI, TIFF, SLC");
+    ImGui::SameLine(ImGui::GetWindowWidth() - (saving ? 130.0f : 240.0f));
     // A DICOM series or a TIFF stack is a folder: open the one shown.
-    ImGui::SameLine(ImGui::GetWindowWidth() - 240.0f);
-    if (ImGui::Button("Open folder")) chosen = folder_;
-    ImGui::SameLine();
-    if (ImGui::Button("Open")) {
-      std::error_code ec;
-      if (fs::is_directory(pathBuffer_, ec))
-        changeFolder(pathBuffer_);
-      else
-        chosen = std::string(pathBuffer_);
-    }
+    if (!saving && ImGui::Button("Open folder")) chosen = folder_;
+    if (!saving) ImGui::SameLine();
+    if (ImGui::Button(saving ? "Save" : "Open")) chosen = accept();
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) open_ = false;
+    if (const auto replace = drawReplacePrompt()) chosen = replace;
   }
   ImGui::End();
   if (chosen) open_ = false;

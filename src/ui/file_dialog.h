@@ -1,4 +1,5 @@
-// FileDialog: an ImGui window to pick a volume file: folder listing, extension filter, path box.
+// FileDialog: an ImGui window to pick a volume to open or a file to save it as: folder listing,
+// extension filter, path box.
 #pragma once
 
 #include <optional>
@@ -11,21 +12,35 @@ namespace ewa {
 
 class FileDialog {
  public:
-  // Shows the dialog at `folder` (the current folder when empty or unreadable).
-  void open(const std::string& folder);
+  // What the chosen path is for: a volume (or folder) to open, or a .nrrd file to write.
+  enum class Purpose { Open, SaveVolume };
+
+  // Shows the dialog at `folder` (the current folder when empty or unreadable); for SaveVolume
+  // the path field starts at `fileName` in that folder.
+  void open(const std::string& folder, Purpose purpose = Purpose::Open,
+            const std::string& fileName = {});
   bool isOpen() const { return open_; }
-  // Draws the dialog (between ImGui frames); returns the chosen file once, and closes.
+  Purpose purpose() const { return purpose_; }
+  // Draws the dialog (between ImGui frames); returns the chosen path once, and closes. Saving,
+  // a name without an extension gets ".nrrd", any other is refused in the dialog, and an
+  // existing file is replaced only once confirmed.
   std::optional<std::string> draw();
 
  private:
   void changeFolder(const std::string& folder);
+  // Enter or the Open/Save button on the typed path: a folder is entered, a file chosen.
+  std::optional<std::string> accept();
+  std::optional<std::string> drawReplacePrompt();
 
   bool open_ = false;
   bool justOpened_ = false;
   bool allFiles_ = false;  // show every file, not only volume extensions
+  Purpose purpose_ = Purpose::Open;
   std::string folder_;
   std::vector<DirEntry> entries_;
   std::string error_;
+  std::string replacing_;  // an existing file waiting for "Replace"
+  bool askReplace_ = false;
   char pathBuffer_[1024] = {};
   int selected_ = -1;
 };

@@ -52,7 +52,8 @@ void SessionPanel::drawFiles(const SessionView& view, SessionEdits& edits) {
   if (!ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) return;
   edits.openDialog = ImGui::Button("Open... (Ctrl+O)");
   ImGui::SameLine();
-  ImGui::TextDisabled("or drop a file on the window");
+  edits.saveDialog = ImGui::Button("Save volume... (Ctrl+S)");
+  ImGui::TextDisabled("or drop a file on the window to open it");
   if (view.recentFiles && !view.recentFiles->empty() && ImGui::TreeNode("Recent files")) {
     for (const std::string& f : *view.recentFiles) {
       if (ImGui::Selectable(f.c_str())) edits.openPath = f;

@@ -26,6 +26,7 @@ struct SessionView {
 // What the user asked for this frame.
 struct SessionEdits {
   bool openDialog = false;
+  bool saveDialog = false;                 // save the volume on screen as NRRD
   std::optional<std::string> openPath;     // a recent file
   std::optional<std::string> addBookmark;  // name of the bookmark to add at the current view
   int applyBookmark = -1;

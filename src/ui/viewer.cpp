@@ -278,6 +278,7 @@ bool ViewerWindow::drawFrame(bool activity) {
   if (fb.x <= 0 || fb.y <= 0) return false;  // minimised
 
   pollLoad();
+  pollSave();
   bool screenshotNow = false;
   applyCommands(fb, &screenshotNow);
   drawPanels(fb, &screenshotNow);

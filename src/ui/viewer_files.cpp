@@ -1,4 +1,4 @@
-// ViewerWindow's volumes: opening files on a worker thread, adopting a loaded volume, the
+// ViewerWindow's volumes: opening and saving files on worker threads, adopting a loaded volume, the
 // renderers of the chosen kind and the full level's splat sets built elsewhere.
 #include <cstdio>
 #include <filesystem>
@@ -226,6 +226,42 @@ void ViewerWindow::openDialog() {
   const std::string folder =
       current_.path.empty() ? "" : std::filesystem::path(current_.path).parent_path().string();
   fileDialog_.open(folder);
+}
+
+// Offered as NAME.nrrd (NAME-fF-cC.nrrd for a page of a file of several) in the file's folder.
+void ViewerWindow::saveDialog() {
+  namespace fs = std::filesystem;
+  const Volume& v = *current_.volume;
+  std::string name =
+      current_.path.empty() ? current_.name : fs::path(current_.path).stem().string();
+  if (name.size() > 4 && name.compare(name.size() - 4, 4, ".nii") == 0)
+    name.resize(name.size() - 4);
+  if (v.frameCount() > 1) name += "-f" + std::to_string(v.frame());
+  if (v.channelCount() > 1) name += "-c" + std::to_string(v.channel());
+  for (char& c : name)
+    if (c == ':' || c == '/') c = '_';  // a synthetic volume's "sphere:64"
+  const std::string folder =
+      current_.path.empty() ? "" : fs::path(current_.path).parent_path().string();
+  fileDialog_.open(folder, FileDialog::Purpose::SaveVolume, name + ".nrrd");
+}
+
+void ViewerWindow::startSave(const std::string& path) {
+  if (saveJob_.running()) {
+    error("still saving " + saveJob_.path() + "; try again when it is done");
+    return;
+  }
+  std::cerr << "ewaview: saving " << path << "\n";
+  saveJob_.start(current_.volume, current_.tf, path);
+}
+
+void ViewerWindow::pollSave() {
+  std::string text;
+  bool failed = false;
+  if (!saveJob_.poll(&text, &failed)) return;
+  if (failed)
+    error(text);
+  else
+    info(text);
 }
 
 }  // namespace ewa

@@ -42,7 +42,12 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
     current_.tf = *tf;
   switchRendererIfAsked();
   applySessionEdits(session_.draw(sessionView()), fb, screenshotNow);
-  if (const auto chosen = fileDialog_.draw()) startLoad(*chosen);
+  if (const auto chosen = fileDialog_.draw()) {
+    if (fileDialog_.purpose() == FileDialog::Purpose::SaveVolume)
+      startSave(*chosen);
+    else
+      startLoad(*chosen);
+  }
   if (frameStats_.refineProgress >= 0.0) drawRefinementOverlay(frameStats_.refineProgress);
   const glm::ivec2 size = windowSize();
   updateProbe(size);
@@ -167,6 +172,9 @@ void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
       case KeyCommand::OpenFile:
         openDialog();
         break;
+      case KeyCommand::SaveVolume:
+        saveDialog();
+        break;
       case KeyCommand::CentreOnCursor:
         centreOnCursor();
         break;
@@ -207,6 +215,7 @@ void ViewerWindow::showAxisView(AxisView v, const glm::ivec2& fb) {
 void ViewerWindow::applySessionEdits(const SessionEdits& e, const glm::ivec2& fb,
                                      bool* screenshotNow) {
   if (e.openDialog) openDialog();
+  if (e.saveDialog) saveDialog();
   if (e.openPath) startLoad(*e.openPath);
   if (e.addBookmark) {
     bookmarks_.list().push_back({*e.addBookmark, controller_.camera(), settings_.clip});
@@ -243,6 +252,11 @@ SessionView ViewerWindow::sessionView() {
   v.loadingPath = loadJob_.path();
   v.loadingSeconds = loadJob_.elapsedSeconds();
   if (buildPending_) v.busyText = "building splats for " + current_.name + "...";
+  if (saveJob_.running()) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, " (%.1f s)", saveJob_.elapsedSeconds());
+    v.busyText = "saving " + std::filesystem::path(saveJob_.path()).filename().string() + seconds;
+  }
   v.turntableDone = turntable_.done;
   v.turntableTotal = turntable_.total;
   v.messages = &messages_.current(now());

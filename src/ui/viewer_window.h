@@ -29,6 +29,7 @@
 #include "ui/session_panel.h"
 #include "ui/status_messages.h"
 #include "ui/viewer.h"
+#include "ui/volume_save_job.h"
 #include "ui/window_input.h"
 
 namespace ewa {
@@ -101,6 +102,10 @@ class ViewerWindow {
   void switchRendererIfAsked();
   bool takeBuiltSplats();
   void openDialog();
+  // The file dialog to save the volume on screen, and the save it starts (viewer_files.cpp).
+  void saveDialog();
+  void startSave(const std::string& path);
+  void pollSave();
 
   // viewer_capture.cpp: pictures written to files.
   void screenshot(const glm::ivec2& fb);
@@ -150,6 +155,7 @@ class ViewerWindow {
   FileDialog fileDialog_;
   StatusMessages messages_;
   VolumeLoadJob loadJob_;
+  VolumeSaveJob saveJob_;
   bool loadKeepsView_ = false;  // the load running pages through the current file's frames
   bool loadKeepsTf_ = false;    // the load running opens the current file with a new spacing
   LoadOptions pageTarget_;      // the page last asked for

@@ -158,6 +158,9 @@ void WindowInput::onKey(GLFWwindow* window, int key, int scancode, int action, i
     case GLFW_KEY_O:
       if (mods & GLFW_MOD_CONTROL) self.commands_.push_back(KeyCommand::OpenFile);
       break;
+    case GLFW_KEY_S:
+      if (mods & GLFW_MOD_CONTROL) self.commands_.push_back(KeyCommand::SaveVolume);
+      break;
     // 1..6: views along +X, -X, +Y, -Y, +Z, -Z (the order of the panel's buttons).
     case GLFW_KEY_1:
     case GLFW_KEY_2:

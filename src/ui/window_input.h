@@ -12,7 +12,8 @@ namespace ewa {
 enum class KeyCommand {
   Screenshot,
   OpenFile,
-  ViewPlusX,  // the six views in the order of keys 1..6 (onKey counts on it)
+  SaveVolume,  // Ctrl+S: the volume on screen as NRRD
+  ViewPlusX,   // the six views in the order of keys 1..6 (onKey counts on it)
   ViewMinusX,
   ViewPlusY,
   ViewMinusY,

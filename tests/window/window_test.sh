@@ -346,6 +346,19 @@ xdotool key --window "$wid" shift+c
 on_channel0() { grep -q "^ewaview: channel 0 of 2, frame 0 of 1 in" "$work/stderr"; }
 poll "channel 0 of 2 on Shift+C" on_channel0
 log "channels paged: coverage $k0 -> $k1"
+# Ctrl+S offers the page on screen as channels-c0.nrrd beside the file; Enter saves it there
+# with its transfer function, and it reads back as that channel alone.
+xdotool key --window "$wid" ctrl+s; sleep 0.5
+xdotool key --window "$wid" Return
+saved_it() { grep -q "^ewaview: saved .*/channels-c0.nrrd (.*channels-c0.tf.json" "$work/stderr"; }
+poll "the volume saved with Ctrl+S" saved_it
+saved_info=$("$binary" --info "$work/channels-c0.nrrd") || fail "the saved volume does not open"
+case "$saved_info" in
+  *'"dims":[24,24,24]'*'"range":[0.0,200.0]'*'"channels":1'*) ;;
+  *) fail "the saved volume is not channel 0: $saved_info" ;;
+esac
+[ -s "$work/channels-c0.tf.json" ] || fail "no transfer function beside the saved volume"
+log "saved channel 0 as channels-c0.nrrd"
 quit_window "channels window"
 
 # Series: a DICOM folder of two (a ball of 30 slices, a box of 20). The panel lists them;
@@ -375,4 +388,4 @@ if [ -n "$fixture" ]; then
   quit_window "fourth window"
 fi
 
-echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1; $series_note"
+echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1, saved; $series_note"

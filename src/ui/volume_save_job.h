@@ -1,0 +1,34 @@
+// VolumeSaveJob: writes the volume on screen as NRRD, with its transfer function beside it, on a
+// worker thread, so the window keeps drawing while a large volume is compressed.
+#pragma once
+
+#include <chrono>
+#include <future>
+#include <memory>
+#include <string>
+
+#include "core/transfer_function.h"
+#include "core/volume.h"
+
+namespace ewa {
+
+class VolumeSaveJob {
+ public:
+  // Starts writing `volume` to `path` (writeNrrd, atomically) and then `tf` to the sidecar
+  // the file is opened with again (sidecarTransferFunctionPath), so it reopens looking the same.
+  void start(std::shared_ptr<const Volume> volume, TransferFunction tf, const std::string& path);
+  bool running() const { return future_.valid(); }
+  const std::string& path() const { return path_; }
+  double elapsedSeconds() const;
+  // Once the work is done: true, with `text` saying what was written ("saved PATH (N MB) and
+  // its transfer function in T s"), or the one-line problem with `failed` set. False while still
+  // running (or when nothing was started).
+  bool poll(std::string* text, bool* failed);
+
+ private:
+  std::future<std::string> future_;
+  std::string path_;
+  std::chrono::steady_clock::time_point started_;
+};
+
+}  // namespace ewa
