@@ -118,6 +118,10 @@ int main(int argc, char** argv) {
   try {
     ewa::Scene scene = ewa::loadScene(options);
     if (!options.saveVolume.empty()) {
+      // With --crop, the box's voxels only; --info then describes what was written.
+      if (auto cropped = ewa::croppedForSaving(scene.volume, options.render.clip,
+                                               options.file.empty() ? scene.name : options.file))
+        scene.volume = std::move(*cropped);
       ewa::writeNrrd(options.saveVolume, scene.volume);
       if (!options.info) return 0;
     }

@@ -105,9 +105,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                "gpu_bytes, gpu_bytes_per_splat, peak_rss)");
   app.add_flag("--info", o->info,
                "Print dims, spacing, type, value range, direction and notes as JSON and exit");
-  app.add_option("--save-volume", o->saveVolume,
-                 "Write the volume as opened (any format, after --frame, --channel, --series, "
-                 "--spacing) to this .nrrd file (gzip) and exit");
+  app.add_option(
+      "--save-volume", o->saveVolume,
+      "Write the volume as opened (any format, after --frame, --channel, --series, "
+      "--spacing; with --crop only the box's voxels) to this .nrrd file (gzip) and exit");
   std::vector<double> pick;
   app.add_option("--pick", pick,
                  "Print what pixel X,Y (column, row from the top left) of the --resolution "
@@ -291,6 +292,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
     return usage(e);
   if (const std::string e = finishClipOptions(clipText, &o->render.clip); !e.empty())
     return usage(e);
+  if (!o->saveVolume.empty() && !o->render.clip.planes.empty())
+    return usage(
+        "--save-volume cuts the volume to --crop's box; a clipping plane cannot cut a grid: "
+        "leave --clip-plane out");
   if (lowPassText != "auto") o->render.lowPass = std::stod(lowPassText);  // checked above
   parseRendererKind(rendererName, &o->render.renderer);
   parseTableLookup(lookup, &o->render.shearWarp.lookup);

@@ -1,6 +1,7 @@
 // Scene loading, the default camera and the --info description.
 #include "app/scene.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <iostream>
@@ -9,6 +10,7 @@
 
 #include "core/camera_views.h"
 #include "core/synthetic_volume.h"
+#include "core/volume_crop.h"
 #include "io/transfer_function_io.h"
 #include "io/volume_loader.h"
 
@@ -70,6 +72,20 @@ Camera initialCamera(const Volume& volume, const Options& o) {
     throw std::runtime_error(
         "camera: position and focal point must differ and view-up be non-zero");
   return cam;
+}
+
+std::optional<Volume> croppedForSaving(const Volume& volume, const ClipRegion& clip,
+                                       const std::string& name) {
+  if (!clip.cropEnabled) return std::nullopt;
+  const std::optional<VoxelRange> range = voxelsInBox(volume, clip.cropMin, clip.cropMax);
+  if (!range) {
+    const glm::dvec3 lo = volume.worldBoundsMin(), hi = volume.worldBoundsMax();
+    char bounds[160];
+    std::snprintf(bounds, sizeof bounds, "%g,%g,%g,%g,%g,%g", lo.x, hi.x, lo.y, hi.y, lo.z, hi.z);
+    throw std::runtime_error(
+        name + ": the crop box keeps no voxel of the volume (its centres lie in " + bounds + ")");
+  }
+  return cropVolume(volume, *range);
 }
 
 std::string volumeInfoJson(const Volume& v) {

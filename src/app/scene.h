@@ -1,10 +1,12 @@
 // Scene: the volume, transfer function and starting camera that the options describe.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "app/options.h"
 #include "core/camera.h"
+#include "core/clip_region.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
 #include "io/transfer_function_io.h"  // sidecarTransferFunctionPath
@@ -27,6 +29,12 @@ Scene loadScene(const Options& options);
 
 // The starting camera: framing the volume from the front, then any --camera-* options.
 Camera initialCamera(const Volume& volume, const Options& options);
+
+// The volume --save-volume (and Python's save_volume) writes: `volume` cut to the crop box
+// when `clip` has one (cropVolume), else nothing (the volume as it is). Throws
+// std::runtime_error("<name>: the crop box keeps no voxel ...") when the box misses every voxel.
+std::optional<Volume> croppedForSaving(const Volume& volume, const ClipRegion& clip,
+                                       const std::string& name);
 
 // --info: {"dims":[x,y,z],"spacing":[x,y,z],"type":"uint8","range":[lo,hi]}.
 std::string volumeInfoJson(const Volume& volume);

@@ -100,8 +100,9 @@ the histogram, as on the command line.)")
       .def_property_readonly("array", &PythonScene::array,
                              "The voxels as loaded: a new array indexed [z, y, x] of the volume's "
                              "type (uint8, int16, uint16 or float32).")
-      .def("save_volume", &PythonScene::saveVolume, py::arg("path"),
+      .def("save_volume", &PythonScene::saveVolume, py::arg("path"), py::arg("crop") = py::none(),
            "Writes the volume (as loaded, after spacing=) to a gzip NRRD file, as --save-volume "
-           "does.")
+           "does; with crop=(x0, x1, y0, y1, z0, z1) (world units, as render()'s crop=) only "
+           "the voxels whose centres lie in that box.")
       .def("__repr__", &PythonScene::repr);
 }

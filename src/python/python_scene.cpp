@@ -249,10 +249,20 @@ py::dict PythonScene::info() const {
   return d;
 }
 
-void PythonScene::saveVolume(const std::string& path) const {
+void PythonScene::saveVolume(const std::string& path, const py::object& crop) const {
   if (!isNrrdFileName(path))
     throw UsageError("save_volume: " + path + ": the file must end in .nrrd");
-  writeNrrd(path, *volume_);
+  if (crop.is_none()) return writeNrrd(path, *volume_);
+  py::dict box;
+  box["crop"] = crop;  // read as --crop reads it, with its messages
+  const Options options = parseOptionWords(optionWords(box));
+  std::optional<Volume> cropped;
+  try {
+    cropped = croppedForSaving(*volume_, options.render.clip, name_);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(e.what());  // a box beside the volume: the argument is wrong
+  }
+  writeNrrd(path, cropped ? *cropped : *volume_);
 }
 
 py::array PythonScene::array() const {

@@ -50,7 +50,8 @@ class PythonScene {
   pybind11::array array() const;
   std::string repr() const;
   // --save-volume: the volume as a gzip NRRD file (a path not ending in .nrrd: ValueError).
-  void saveVolume(const std::string& path) const;
+  // `crop`: None, or a box as render()'s crop= takes it: only its voxels are written.
+  void saveVolume(const std::string& path, const pybind11::object& crop) const;
 
  private:
   Options renderOptions(const pybind11::dict& overrides);

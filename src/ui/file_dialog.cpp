@@ -13,8 +13,11 @@ namespace ewa {
 
 namespace fs = std::filesystem;
 
-void FileDialog::open(const std::string& folder, Purpose purpose, const std::string& fileName) {
+void FileDialog::open(const std::string& folder, Purpose purpose, const std::string& fileName,
+                      const std::string& optionLabel) {
   open_ = true;
+  optionLabel_ = optionLabel;
+  optionChecked_ = true;
   justOpened_ = true;
   purpose_ = purpose;
   replacing_.clear();
@@ -109,7 +112,7 @@ std::optional<std::string> FileDialog::draw() {
                          ImGuiInputTextFlags_EnterReturnsTrue))
       chosen = accept();
     if (!error_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error_.c_str());
-    const float footer = ImGui::GetFrameHeightWithSpacing() * 1.3f;
+    const float footer = ImGui::GetFrameHeightWithSpacing() * (optionLabel_.empty() ? 1.3f : 2.3f);
     if (ImGui::BeginChild("entries", ImVec2(0.0f, -footer), true)) {
       for (int n = 0; n < int(entries_.size()); ++n) {
         const DirEntry& e = entries_[size_t(n)];
@@ -131,10 +134,11 @@ std::optional<std::string> FileDialog::draw() {
       }
     }
     ImGui::EndChild();
+    if (!optionLabel_.empty()) ImGui::Checkbox(optionLabel_.c_str(), &optionChecked_);
     if (ImGui::Checkbox("all files", &allFiles_)) changeFolder(folder_);
     ImGui::SameLine();
     if (saving)
-      ImGui::TextDisabled("NRRD (gzip), with its transfer function beside it");
+      ImGui::TextDisabled("NRRD (gzip) and NAME.tf.json");
     else
       ImGui::TextDisabled(allFiles_ ? "(raw files need --raw-* on the command line)"
                                     : "volumes, DICOM, NIfTI, TIFF, SLC");

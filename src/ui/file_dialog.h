@@ -16,11 +16,13 @@ class FileDialog {
   enum class Purpose { Open, SaveVolume };
 
   // Shows the dialog at `folder` (the current folder when empty or unreadable); for SaveVolume
-  // the path field starts at `fileName` in that folder.
+  // the path field starts at `fileName` in that folder, and a non-empty `optionLabel` adds a
+  // checkbox (ticked at first) read back by optionChecked.
   void open(const std::string& folder, Purpose purpose = Purpose::Open,
-            const std::string& fileName = {});
+            const std::string& fileName = {}, const std::string& optionLabel = {});
   bool isOpen() const { return open_; }
   Purpose purpose() const { return purpose_; }
+  bool optionChecked() const { return !optionLabel_.empty() && optionChecked_; }
   // Draws the dialog (between ImGui frames); returns the chosen path once, and closes. Saving,
   // a name without an extension gets ".nrrd", any other is refused in the dialog, and an
   // existing file is replaced only once confirmed.
@@ -41,6 +43,8 @@ class FileDialog {
   std::string error_;
   std::string replacing_;  // an existing file waiting for "Replace"
   bool askReplace_ = false;
+  std::string optionLabel_;
+  bool optionChecked_ = true;
   char pathBuffer_[1024] = {};
   int selected_ = -1;
 };

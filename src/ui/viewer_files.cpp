@@ -228,7 +228,8 @@ void ViewerWindow::openDialog() {
   fileDialog_.open(folder);
 }
 
-// Offered as NAME.nrrd (NAME-fF-cC.nrrd for a page of a file of several) in the file's folder.
+// Offered as NAME.nrrd (NAME-fF-cC.nrrd for a page of a file of several; NAME-2.nrrd... when
+// taken) in the file's folder.
 void ViewerWindow::saveDialog() {
   namespace fs = std::filesystem;
   const Volume& v = *current_.volume;
@@ -242,7 +243,23 @@ void ViewerWindow::saveDialog() {
     if (c == ':' || c == '/') c = '_';  // a synthetic volume's "sphere:64"
   const std::string folder =
       current_.path.empty() ? "" : fs::path(current_.path).parent_path().string();
-  fileDialog_.open(folder, FileDialog::Purpose::SaveVolume, name + ".nrrd");
+  // With a crop box on, the dialog offers to write only its voxels (ticked at first).
+  saveCrop_.reset();
+  if (settings_.clip.cropEnabled)
+    saveCrop_ = voxelsInBox(v, settings_.clip.cropMin, settings_.clip.cropMax);
+  std::string option;
+  if (saveCrop_) {
+    const auto d = saveCrop_->dims();
+    option = "only the crop box (" + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
+             std::to_string(d[2]) + " voxels)";
+  }
+  // Never the file on screen or another already there: NAME-2.nrrd, NAME-3.nrrd... as
+  // screenshots are named.
+  std::string file = name + ".nrrd";
+  std::error_code ec;
+  for (int n = 2; fs::exists(fs::path(folder.empty() ? "." : folder) / file, ec) && n < 1000; ++n)
+    file = name + "-" + std::to_string(n) + ".nrrd";
+  fileDialog_.open(folder, FileDialog::Purpose::SaveVolume, file, option);
 }
 
 void ViewerWindow::startSave(const std::string& path) {
@@ -251,7 +268,8 @@ void ViewerWindow::startSave(const std::string& path) {
     return;
   }
   std::cerr << "ewaview: saving " << path << "\n";
-  saveJob_.start(current_.volume, current_.tf, path);
+  saveJob_.start(current_.volume, current_.tf, path,
+                 fileDialog_.optionChecked() ? saveCrop_ : std::nullopt);
 }
 
 void ViewerWindow::pollSave() {

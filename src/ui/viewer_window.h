@@ -156,9 +156,10 @@ class ViewerWindow {
   StatusMessages messages_;
   VolumeLoadJob loadJob_;
   VolumeSaveJob saveJob_;
-  bool loadKeepsView_ = false;  // the load running pages through the current file's frames
-  bool loadKeepsTf_ = false;    // the load running opens the current file with a new spacing
-  LoadOptions pageTarget_;      // the page last asked for
+  std::optional<VoxelRange> saveCrop_;  // the crop box's voxels when the save dialog opened
+  bool loadKeepsView_ = false;          // the load running pages through the current file's frames
+  bool loadKeepsTf_ = false;  // the load running opens the current file with a new spacing
+  LoadOptions pageTarget_;    // the page last asked for
   std::optional<LoadOptions> queuedPage_;       // asked for while another page loaded
   std::map<int, TransferFunction> channelTfs_;  // each channel's function while paging
   BookmarkStore bookmarks_;

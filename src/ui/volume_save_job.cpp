@@ -10,21 +10,25 @@
 namespace ewa {
 
 void VolumeSaveJob::start(std::shared_ptr<const Volume> volume, TransferFunction tf,
-                          const std::string& path) {
+                          const std::string& path, std::optional<VoxelRange> crop) {
   path_ = path;
   started_ = std::chrono::steady_clock::now();
   // The volume is shared, not copied: the window may open another meanwhile.
-  future_ = std::async(std::launch::async, [volume = std::move(volume), tf = std::move(tf), path] {
-    writeNrrd(path, *volume);
-    const std::string sidecar = sidecarTransferFunctionPath(path);
-    saveTransferFunction(sidecar, tf);
-    std::error_code ec;
-    const auto bytes = std::filesystem::file_size(path, ec);
-    char size[48];
-    std::snprintf(size, sizeof size, " (%.1f MB)", ec ? 0.0 : double(bytes) / 1e6);
-    return "saved " + path + size + " and its transfer function " +
-           std::filesystem::path(sidecar).filename().string();
-  });
+  future_ =
+      std::async(std::launch::async, [volume = std::move(volume), tf = std::move(tf), path, crop] {
+        if (crop)
+          writeNrrd(path, cropVolume(*volume, *crop));
+        else
+          writeNrrd(path, *volume);  // not copied
+        const std::string sidecar = sidecarTransferFunctionPath(path);
+        saveTransferFunction(sidecar, tf);
+        std::error_code ec;
+        const auto bytes = std::filesystem::file_size(path, ec);
+        char size[48];
+        std::snprintf(size, sizeof size, " (%.1f MB)", ec ? 0.0 : double(bytes) / 1e6);
+        return "saved " + path + size + " and its transfer function " +
+               std::filesystem::path(sidecar).filename().string();
+      });
 }
 
 double VolumeSaveJob::elapsedSeconds() const {

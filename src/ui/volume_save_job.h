@@ -5,18 +5,22 @@
 #include <chrono>
 #include <future>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "core/transfer_function.h"
 #include "core/volume.h"
+#include "core/volume_crop.h"
 
 namespace ewa {
 
 class VolumeSaveJob {
  public:
-  // Starts writing `volume` to `path` (writeNrrd, atomically) and then `tf` to the sidecar
-  // the file is opened with again (sidecarTransferFunctionPath), so it reopens looking the same.
-  void start(std::shared_ptr<const Volume> volume, TransferFunction tf, const std::string& path);
+  // Starts writing `volume` (only `crop`'s voxels when given: cropVolume) to `path` (writeNrrd,
+  // atomically) and then `tf` to the sidecar the file is opened with again
+  // (sidecarTransferFunctionPath), so it reopens looking the same.
+  void start(std::shared_ptr<const Volume> volume, TransferFunction tf, const std::string& path,
+             std::optional<VoxelRange> crop = std::nullopt);
   bool running() const { return future_.valid(); }
   const std::string& path() const { return path_; }
   double elapsedSeconds() const;

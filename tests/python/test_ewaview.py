@@ -96,6 +96,16 @@ def test_numpy_array_equals_the_same_voxels_read_as_raw(cli, out_dir):
     plain.save_volume(str(saved))
     again = ewaview.Scene(saved)
     assert again.info["spacing"] == [1, 1.5, 2] and np.array_equal(again.array, data)
+    # crop= keeps the voxels whose centres lie in the box: x 2..5, y 3..9 (rows 2..6 at 1.5 a
+    # row), z -1..4.5 (slices 0..2 at 2 a slice), where they were.
+    plain.save_volume(str(out_dir / "part.nrrd"), crop=(2, 5, 3, 9, -1, 4.5))
+    part = ewaview.Scene(out_dir / "part.nrrd")
+    assert part.info["dims"] == [4, 5, 3] and part.info["origin"] == [2, 3, 0]
+    assert np.array_equal(part.array, data[0:3, 2:7, 2:6])
+    with pytest.raises(ValueError, match="keeps no voxel"):
+        plain.save_volume(str(out_dir / "none.nrrd"), crop=(40, 50, 0, 1, 0, 1))
+    with pytest.raises(ValueError, match="--crop"):
+        plain.save_volume(str(out_dir / "none.nrrd"), crop=(5, 2, 0, 1, 0, 1))
     with pytest.raises(ValueError, match="must end in .nrrd"):
         plain.save_volume(str(out_dir / "ball.png"))
     # float64 arrays become float32 volumes; non-contiguous views are copied in [z, y, x] order.

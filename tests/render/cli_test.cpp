@@ -189,6 +189,31 @@ TEST(Cli, SpacingReplacesTheFilesForAFolderOfImageSlices) {
       << r.err;
 }
 
+// --save-volume with --crop writes only the voxels whose centres lie in the box, where they were.
+TEST(Cli, SaveVolumeWithACropBoxWritesItsVoxels) {
+  const std::string dir = testOutputDir() + "/save_crop";
+  std::filesystem::create_directories(dir);
+  // sphere:32 has its voxels at 0..31 on every axis; the box keeps x 4..10, y 0..31, z 20..31.
+  CliRun r = ewaview("--synthetic sphere:32 --crop 3.5,10.2,-9,99,20,40 --save-volume " + dir +
+                     "/part.nrrd --info");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"dims\":[7,32,12],\"spacing\":[1.0,1.0,1.0]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"origin\":[4.0,0.0,20.0]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("cropped to voxels 4-10, 0-31, 20-31 of 32 x 32 x 32"), std::string::npos)
+      << r.out;
+  r = ewaview("--synthetic sphere:32 --crop 40,50,0,9,0,9 --save-volume " + dir + "/none.nrrd");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("sphere:32: the crop box keeps no voxel of the volume (its centres lie in "
+                       "0,31,0,31,0,31)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/none.nrrd"));
+  r = ewaview("--synthetic sphere:32 --clip-plane 1,1,1,0,0,1 --save-volume " + dir + "/p.nrrd");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("a clipping plane cannot cut a grid"), std::string::npos) << r.err;
+}
+
 // --info's series list: each series' id, label and whether it is the one open, in order.
 TEST(Cli, InfoListsTheSeriesOfAFolder) {
   Volume v({2, 2, 2}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8,

@@ -63,6 +63,16 @@ TEST(VolumeSaveJob, WritesTheVolumeAndItsTransferFunctionBesideIt) {
   const std::string sidecar = sidecarTransferFunctionPath(path.string());
   EXPECT_EQ(sidecar, (path.parent_path() / "sphere.tf.json").string());
   EXPECT_EQ(loadTransferFunction(sidecar), tf);
+
+  // Only a crop box's voxels: the range of them, at their places.
+  const fs::path part = path.parent_path() / "part.nrrd";
+  job.start(volume, tf, part.string(), VoxelRange{{2, 3, 4}, {20, 9, 4}});
+  ASSERT_TRUE(waitFor(job, &text, &failed));
+  EXPECT_FALSE(failed) << text;
+  const Volume cut = loadVolume(part.string());
+  ASSERT_EQ(cut.dims(), (std::array<int64_t, 3>{19, 7, 1}));
+  EXPECT_EQ(cut.value(5, 6, 0), volume->value(7, 9, 4));
+  EXPECT_EQ(cut.origin(), volume->worldPosition(2, 3, 4));
 }
 
 TEST(VolumeSaveJob, AFolderThatIsNotThereIsOneLineNamingTheFile) {
