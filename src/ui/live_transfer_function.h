@@ -36,6 +36,10 @@ class LiveTransferFunction {
   // Waits for a running build and throws its result away (the renderers are replaced).
   void dropBuild();
   bool building() const { return builder_.busy(); }
+  // Undo (step < 0) or redo (step > 0) an edit of the function in the next drawAndApply.
+  void stepHistory(int step) {
+    if (editor_) editor_->requestHistoryStep(step);
+  }
   uint64_t revision() const { return revision_; }
 
   // The transfer function for the settings file: the file last saved or loaded in the

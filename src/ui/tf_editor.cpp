@@ -29,7 +29,7 @@ ImU32 rgba(const glm::dvec3& c, float alpha = 1.0f) {
 }  // namespace
 
 TfEditor::TfEditor(const Volume& volume, TransferFunction tf, std::string savePath)
-    : volume_(volume), tf_(std::move(tf)) {
+    : volume_(volume), tf_(std::move(tf)), history_(tf_) {
   std::snprintf(path_, sizeof path_, "%s", savePath.c_str());
   for (uint64_t count : volume.histogram()) histogram_.push_back(float(count));
   canvas_.lo = volume.minValue();
@@ -52,12 +52,18 @@ bool TfEditor::draw() {
     changed |= drawOpacityPlot();
     changed |= drawColorBar();
     ImGui::TextDisabled("click: add   drag: move   right-click: remove");
+    // Undo and redo beside the histogram switch: the window keeps its height.
+    ImGui::Checkbox("log histogram", &logHistogram_);
+    ImGui::SameLine(0.0f, 40.0f);
+    changed |= drawHistory();
     changed |= drawSelectedPoint();
     ImGui::Separator();
     changed |= drawPresets();
     changed |= drawFiles();
     if (changed) editedSinceFile_ = !justLoaded_;
     justLoaded_ = false;
+    // An edit ends when nothing is held: a drag of many frames becomes one step.
+    if (!dragging() && !ImGui::IsAnyItemActive()) history_.settle(tf_);
     if (!status_.empty()) {
       if (statusIsError_) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.4f, 0.35f, 1.0f));
@@ -209,9 +215,33 @@ bool TfEditor::drawColorBar() {
   return changed;
 }
 
+bool TfEditor::drawHistory() {
+  int step = pendingStep_;
+  pendingStep_ = 0;
+  ImGui::BeginDisabled(!history_.canUndo(tf_));
+  if (ImGui::Button("Undo")) step = -1;
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("Ctrl+Z: undo the last edit (%zu kept)", history_.undoSteps());
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!history_.canRedo(tf_));
+  if (ImGui::Button("Redo")) step = 1;
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("Ctrl+Y or Ctrl+Shift+Z: redo what was undone");
+  if (step == 0) return false;
+  const std::optional<TransferFunction> back = step < 0 ? history_.undo(tf_) : history_.redo(tf_);
+  if (!back) return false;
+  tf_ = *back;
+  // Indices of another function's points.
+  dragOpacity_ = dragColor_ = selectedOpacity_ = selectedColor_ = -1;
+  status_ = step < 0 ? "undone" : "redone";
+  statusIsError_ = false;
+  return true;
+}
+
 bool TfEditor::drawSelectedPoint() {
   bool changed = false;
-  ImGui::Checkbox("log histogram", &logHistogram_);
   ImGui::PushItemWidth(120.0f);
   if (selectedOpacity_ >= 0 && selectedOpacity_ < int(tf_.opacity.size())) {
     OpacityPoint p = tf_.opacity[size_t(selectedOpacity_)];

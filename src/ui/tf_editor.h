@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/transfer_function.h"
+#include "core/undo_history.h"
 #include "core/volume.h"
 #include "io/paraview_colormap.h"
 #include "ui/tf_canvas.h"
@@ -21,6 +22,10 @@ class TfEditor {
   bool draw();
 
   const TransferFunction& transferFunction() const { return tf_; }
+  // Undo (step < 0) or redo (step > 0) an edit in the next draw (Ctrl+Z, Ctrl+Y from the
+  // window's keys; the editor's own buttons do the same). Every kind of edit is a step: a drag
+  // or a typed value once it ends, a point added or removed, a preset, a loaded file.
+  void requestHistoryStep(int step) { pendingStep_ = step; }
   // True while a point is being dragged (a viewer may draw a coarser level meanwhile).
   bool dragging() const { return dragOpacity_ >= 0 || dragColor_ >= 0; }
   // Set by EWAVIEW_PRINT_LAYOUT=1 in the environment: prints "tf-canvas X Y W H" (window
@@ -37,11 +42,14 @@ class TfEditor {
   bool drawSelectedPoint();
   bool drawPresets();
   bool drawFiles();
+  bool drawHistory();
   void reportError(const std::string& message);
 
   const Volume& volume_;
   TransferFunction tf_;
   TfCanvas canvas_;
+  UndoHistory<TransferFunction> history_;
+  int pendingStep_ = 0;
   bool logHistogram_ = true;
   int dragOpacity_ = -1, dragColor_ = -1;          // point under the mouse drag, or -1
   int selectedOpacity_ = -1, selectedColor_ = -1;  // last point clicked, or -1

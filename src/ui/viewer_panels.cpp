@@ -175,6 +175,10 @@ void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
       case KeyCommand::SaveVolume:
         saveDialog();
         break;
+      case KeyCommand::Undo:
+      case KeyCommand::Redo:
+        liveTf_.stepHistory(c == KeyCommand::Undo ? -1 : 1);
+        break;
       case KeyCommand::CentreOnCursor:
         centreOnCursor();
         break;

@@ -161,6 +161,13 @@ void WindowInput::onKey(GLFWwindow* window, int key, int scancode, int action, i
     case GLFW_KEY_S:
       if (mods & GLFW_MOD_CONTROL) self.commands_.push_back(KeyCommand::SaveVolume);
       break;
+    case GLFW_KEY_Z:
+      if (mods & GLFW_MOD_CONTROL)
+        self.commands_.push_back((mods & GLFW_MOD_SHIFT) ? KeyCommand::Redo : KeyCommand::Undo);
+      break;
+    case GLFW_KEY_Y:
+      if (mods & GLFW_MOD_CONTROL) self.commands_.push_back(KeyCommand::Redo);
+      break;
     // 1..6: views along +X, -X, +Y, -Y, +Z, -Z (the order of the panel's buttons).
     case GLFW_KEY_1:
     case GLFW_KEY_2:

@@ -13,6 +13,8 @@ enum class KeyCommand {
   Screenshot,
   OpenFile,
   SaveVolume,  // Ctrl+S: the volume on screen as NRRD
+  Undo,        // Ctrl+Z: the last transfer-function edit
+  Redo,        // Ctrl+Y, Ctrl+Shift+Z
   ViewPlusX,   // the six views in the order of keys 1..6 (onKey counts on it)
   ViewMinusX,
   ViewPlusY,

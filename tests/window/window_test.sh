@@ -196,8 +196,22 @@ c0=$(coverage "$out/3_zoom.png" "$volume_crop"); c1=$(coverage "$out/6_tf.png" "
 greater "$m1" "$(awk -v a="$m0" 'BEGIN { print a * 1.2 }')" ||
   fail "raising the opacity did not brighten the volume (mean $m0 -> $m1)"
 greater "$c1" "$c0" || fail "raising the opacity did not show more of the volume ($c0 -> $c1)"
+# Ctrl+Z undoes the whole drag (one step): the picture before it (the press, before the point
+# moved); Ctrl+Y brings the edit back. Compared right of the panel, whose statistics change.
+near() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 0.02 * b + 1e-6) }'; }
+picture_crop="220x600+470+0"
+xdotool key --window "$wid" ctrl+z
+settled "$out/6_undo.png" "$out/6_tf.png" "$volume_crop"
+mp=$(mean "$out/4_press.png" "$picture_crop"); mu=$(mean "$out/6_undo.png" "$picture_crop")
+cp_=$(coverage "$out/4_press.png" "$picture_crop"); cu=$(coverage "$out/6_undo.png" "$picture_crop")
+near "$mu" "$mp" && near "$cu" "$cp_" ||
+  fail "Ctrl+Z did not bring back the picture before the edit (mean $mp -> $mu, coverage $cp_ -> $cu)"
+xdotool key --window "$wid" ctrl+y
+settled "$out/6_redo.png" "$out/6_undo.png" "$volume_crop"
+mt=$(mean "$out/6_tf.png" "$picture_crop"); mr=$(mean "$out/6_redo.png" "$picture_crop")
+near "$mr" "$mt" || fail "Ctrl+Y did not redo the edit (mean $mt -> $mu -> $mr)"
 
-log "transfer-function edit checked"
+log "transfer-function edit, undo and redo checked"
 # Probe and double-click: with the cursor on the volume the viewer names the point it shows (a
 # "probe" line with its voxel and value, also drawn over the picture); a double-click there
 # makes that point the centre of the view (a "centre" line), so the picture moves.
@@ -388,4 +402,4 @@ if [ -n "$fixture" ]; then
   quit_window "fourth window"
 fi
 
-echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1, saved; $series_note"
+echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1, undone $mp -> $mu, redone $mt -> $mr; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1, saved; $series_note"
