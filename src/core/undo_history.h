@@ -33,27 +33,21 @@ class UndoHistory {
 
   // The value before the last step (an edit not yet settled counts as one), `current` kept
   // to redo; nothing when there is nothing to undo.
-  std::optional<T> undo(const T& current) {
-    settle(current);
-    if (undo_.empty()) return std::nullopt;
-    redo_.push_back(std::move(settled_));
-    settled_ = std::move(undo_.back());
-    undo_.pop_back();
-    return settled_;
-  }
-
+  std::optional<T> undo(const T& current) { return step(undo_, redo_, current); }
   // The value the last undo left, `current` kept to undo; nothing when there is none or
   // `current` was edited since (an edit after an undo drops the redo steps, as editors do).
-  std::optional<T> redo(const T& current) {
-    settle(current);
-    if (redo_.empty()) return std::nullopt;
-    undo_.push_back(std::move(settled_));
-    settled_ = std::move(redo_.back());
-    redo_.pop_back();
+  std::optional<T> redo(const T& current) { return step(redo_, undo_, current); }
+
+ private:
+  std::optional<T> step(std::deque<T>& from, std::deque<T>& to, const T& current) {
+    settle(current);  // may drop the redo steps
+    if (from.empty()) return std::nullopt;
+    to.push_back(std::move(settled_));
+    settled_ = std::move(from.back());
+    from.pop_back();
     return settled_;
   }
 
- private:
   std::deque<T> undo_, redo_;
   T settled_;
   size_t limit_;
