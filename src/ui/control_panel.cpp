@@ -104,6 +104,12 @@ PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& le
     ImGui::Separator();
     edits.camera = drawCamera(camera);
     edits.axisView = drawAxisViews();
+    ImGui::SameLine();
+    edits.copyView = ImGui::SmallButton("copy view");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "Ctrl+C: the camera, picture size and crop as command-line options, to render this "
+          "view headless");
     edits.resetCamera = ImGui::Button("Reset camera (R)");
     ImGui::SameLine();
     edits.levelOfDetail = ImGui::Checkbox("coarser while moving", &levelOfDetail);

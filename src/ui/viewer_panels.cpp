@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "core/camera_views.h"
+#include "core/view_options_text.h"
 #include "io/atomic_file.h"
 #include "ui/axes_overlay.h"
 #include "ui/clip_panel.h"
@@ -28,6 +29,7 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   if (edits.spacing) respace(*edits.spacing);
   if (edits.camera) controller_.setCamera(camera);
   if (edits.resetCamera) controller_.reset();
+  if (edits.copyView) copyView();
   if (edits.axisView) showAxisView(*edits.axisView, fb);
   if (edits.settings) ++settingsRevision_;
   // A dragged crop box or plane renders like a moving camera: coarse levels until it stops.
@@ -53,6 +55,15 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   updateProbe(size);
   probe_.draw(frameStats_.refineProgress >= 0.0, controller_.camera(), size);
   if (axes_) drawAxesOverlay(controller_.camera(), current_.volume->patientFrame(), size);
+}
+
+// The view as options on the clipboard (and in the panel and on stderr, where a script or a
+// person without a clipboard finds them).
+void ViewerWindow::copyView() {
+  const std::string text =
+      viewOptionsText(controller_.camera(), window_.framebufferSize(), settings_.clip);
+  glfwSetClipboardString(window_.window(), text.c_str());
+  info("view copied: " + text);
 }
 
 void ViewerWindow::axesSwitched() {
@@ -174,6 +185,9 @@ void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
         break;
       case KeyCommand::SaveVolume:
         saveDialog();
+        break;
+      case KeyCommand::CopyView:
+        copyView();
         break;
       case KeyCommand::Undo:
       case KeyCommand::Redo:

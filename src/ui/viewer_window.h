@@ -126,6 +126,7 @@ class ViewerWindow {
   void markUnderCursor();
   // The axes were switched on or off (the layout log says so).
   void axesSwitched();
+  void copyView();
   void applySessionEdits(const SessionEdits& e, const glm::ivec2& fb, bool* screenshotNow);
   SessionView sessionView();
   void saveBookmarks();

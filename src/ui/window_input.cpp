@@ -145,10 +145,6 @@ void WindowInput::onKey(GLFWwindow* window, int key, int scancode, int action, i
     case GLFW_KEY_PAGE_UP:
       self.commands_.push_back(KeyCommand::PreviousFrame);
       break;
-    case GLFW_KEY_C:
-      self.commands_.push_back((mods & GLFW_MOD_SHIFT) ? KeyCommand::PreviousChannel
-                                                       : KeyCommand::NextChannel);
-      break;
     case GLFW_KEY_X:
       self.commands_.push_back(KeyCommand::ToggleAxes);
       break;
@@ -167,6 +163,13 @@ void WindowInput::onKey(GLFWwindow* window, int key, int scancode, int action, i
       break;
     case GLFW_KEY_Y:
       if (mods & GLFW_MOD_CONTROL) self.commands_.push_back(KeyCommand::Redo);
+      break;
+    case GLFW_KEY_C:
+      if (mods & GLFW_MOD_CONTROL)
+        self.commands_.push_back(KeyCommand::CopyView);
+      else
+        self.commands_.push_back((mods & GLFW_MOD_SHIFT) ? KeyCommand::PreviousChannel
+                                                         : KeyCommand::NextChannel);
       break;
     // 1..6: views along +X, -X, +Y, -Y, +Z, -Z (the order of the panel's buttons).
     case GLFW_KEY_1:

@@ -15,6 +15,7 @@ enum class KeyCommand {
   SaveVolume,  // Ctrl+S: the volume on screen as NRRD
   Undo,        // Ctrl+Z: the last transfer-function edit
   Redo,        // Ctrl+Y, Ctrl+Shift+Z
+  CopyView,    // Ctrl+C: the view as command-line options, to the clipboard
   ViewPlusX,   // the six views in the order of keys 1..6 (onKey counts on it)
   ViewMinusX,
   ViewPlusY,

@@ -178,6 +178,20 @@ greater "$before" "$(awk -v a="$after" 'BEGIN { print a * 1.15 }')" ||
   fail "zooming out did not shrink the volume (coverage $before -> $after)"
 
 log "zoom checked"
+# Ctrl+C copies the view as options (the panel and stderr show them): rendered headless with
+# them, the picture is the one in the window, right of the panel.
+picture_crop="220x600+470+0"
+xdotool key --window "$wid" ctrl+c
+copied() { grep -q '^ewaview: view copied: ' "$work/stderr"; }
+poll "the view copied with Ctrl+C" copied
+view_options=$(grep '^ewaview: view copied: ' "$work/stderr" | tail -1 | sed 's/^ewaview: view copied: //')
+# shellcheck disable=SC2086  # the options are words
+"$binary" --synthetic marschner-lobb:32 --tf "$here/ml_test.tf.json" --slab-thickness 4 \
+  $view_options -o "$out/3_headless.png" 2>>"$work/stderr" || fail "the copied view ($view_options) does not render"
+view_diff=$(differ "$out/3_zoom.png" "$out/3_headless.png" "$picture_crop")
+[ "$view_diff" -le $((220 * 600 / 100)) ] ||
+  fail "the copied view renders another picture ($view_diff px differ; $view_options)"
+log "copied view checked ($view_diff px differ)"
 # Transfer function: drag the opacity point at value 0.5 (alpha 0: the plot's bottom edge, half
 # way across) up to alpha 0.6. Values between 0 and 0.5 become visible: more and brighter pixels.
 px=$((cx + cw / 2)); py=$((cy + ch - 2)); ty=$((cy + ch * 4 / 10))
@@ -199,7 +213,6 @@ greater "$c1" "$c0" || fail "raising the opacity did not show more of the volume
 # Ctrl+Z undoes the whole drag (one step): the picture before it (the press, before the point
 # moved); Ctrl+Y brings the edit back. Compared right of the panel, whose statistics change.
 near() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 0.02 * b + 1e-6) }'; }
-picture_crop="220x600+470+0"
 xdotool key --window "$wid" ctrl+z
 settled "$out/6_undo.png" "$out/6_tf.png" "$volume_crop"
 mp=$(mean "$out/4_press.png" "$picture_crop"); mu=$(mean "$out/6_undo.png" "$picture_crop")
@@ -402,4 +415,4 @@ if [ -n "$fixture" ]; then
   quit_window "fourth window"
 fi
 
-echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; TF mean $m0 -> $m1, coverage $c0 -> $c1, undone $mp -> $mu, redone $mt -> $mr; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1, saved; $series_note"
+echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; copied view $view_diff px; TF mean $m0 -> $m1, coverage $c0 -> $c1, undone $mp -> $mu, redone $mt -> $mr; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1, saved; $series_note"
