@@ -69,6 +69,7 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
   config.settings = o.render;
   config.shaderDir = o.shaderDir;
   config.recordCameraPath = o.recordCameraPath;
+  config.watch = o.watch;
   // Every file the window opens shares `o.archives` (set in main), so the last archive stays
   // unpacked while its frames and series are paged.
   config.opener = [base = o](const std::string& path, const ewa::LoadOptions& load) {

@@ -97,6 +97,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--config-dir", o->configDir,
                  "Window settings folder (default $EWAVIEW_CONFIG_DIR, else "
                  "$XDG_CONFIG_HOME/ewaview or ~/.config/ewaview)");
+  app.add_flag("--watch", o->watch,
+               "Window: reload the volume, keeping the view and transfer function, whenever its "
+               "file changes (a simulation or scanner writing it; also F5 and the panel)");
   app.add_option("--record-camera-path", o->recordCameraPath,
                  "Window: write the cameras of the session to this file on exit, for "
                  "ewaview-interact-bench --path");

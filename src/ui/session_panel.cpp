@@ -54,6 +54,12 @@ void SessionPanel::drawFiles(const SessionView& view, SessionEdits& edits) {
   ImGui::SameLine();
   edits.saveDialog = ImGui::Button("Save volume... (Ctrl+S)");
   ImGui::TextDisabled("or drop a file on the window to open it");
+  if (view.fromFile) {
+    edits.reload = ImGui::Button("Reload (F5)");
+    ImGui::SameLine();
+    bool watching = view.watching;
+    if (ImGui::Checkbox("reload when the file changes", &watching)) edits.watch = watching;
+  }
   if (view.recentFiles && !view.recentFiles->empty() && ImGui::TreeNode("Recent files")) {
     for (const std::string& f : *view.recentFiles) {
       if (ImGui::Selectable(f.c_str())) edits.openPath = f;

@@ -15,6 +15,8 @@ struct SessionView {
   const std::vector<std::string>* recentFiles = nullptr;
   const std::vector<CameraBookmark>* bookmarks = nullptr;
   std::string bookmarksPath;  // where they are saved
+  bool fromFile = false;      // the volume came from a file (not synthetic): it can be reloaded
+  bool watching = false;      // reloaded whenever its file changes
   bool loading = false;       // a volume is being opened
   std::string loadingPath;
   double loadingSeconds = 0.0;
@@ -27,6 +29,8 @@ struct SessionView {
 struct SessionEdits {
   bool openDialog = false;
   bool saveDialog = false;                 // save the volume on screen as NRRD
+  bool reload = false;                     // read the volume's file again
+  std::optional<bool> watch;               // "reload when the file changes" switched
   std::optional<std::string> openPath;     // a recent file
   std::optional<std::string> addBookmark;  // name of the bookmark to add at the current view
   int applyBookmark = -1;

@@ -74,6 +74,7 @@ ViewerWindow::ViewerWindow(platform::GlfwWindowContext& window, LoadedVolume ini
   frameLog_ = envFlag("EWAVIEW_FRAME_LOG");
   levelOfDetail_ = saved_.levelOfDetail;
   axes_ = saved_.axes;
+  watchFile_ = config.watch;
   hasNvx_ = gl::queryGpuMemory().has_value();
   if (initial.coarse.levels.empty()) initial.coarse = buildLodVolumes(*initial.volume);
   adopt(std::move(initial), /*newCamera=*/false);
@@ -100,6 +101,8 @@ void ViewerWindow::run() {
     const Clock::time_point start = Clock::now();
     // `|`, not `||`: both must run (take the flag and swap in a finished splat set).
     const bool active = input_.takeActivity() | takeBuiltSplats();
+    // An idle window wakes every kIdleWaitSeconds, often enough to see its file change.
+    if (watchFile_ && !loadJob_.running() && fileWatch_.changed(now())) reload();
     const bool due = busy() || refineDue() || refinement_.active() || fullSplatsArrived_ ||
                      warmUp || !messages_.current(now()).empty();
     if (!active && !due && quietFrames >= kFramesAfterActivity) continue;

@@ -22,6 +22,7 @@ struct ViewerConfig {
   ViewerSettings saved;
   VolumeOpener opener;           // opens files from the dialog, drops and recent files
   std::string recordCameraPath;  // non-empty: every camera drawn is written here on exit
+  bool watch = false;            // reload the volume whenever its file changes (--watch)
 };
 
 // Opens a window, renders `initial` with settings.renderer (switchable in the panel) and runs

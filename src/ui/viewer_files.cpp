@@ -60,6 +60,7 @@ void ViewerWindow::adopt(LoadedVolume loaded, bool newCamera) {
     controller_.restart(camera);
   }
   if (!current_.path.empty()) addRecentFile(saved_.recentFiles, current_.path);
+  fileWatch_.watch(current_.path);  // what is on screen now; a later change reloads it
   const std::string problem = bookmarks_.open(current_.path, current_.name, config_.configDir);
   if (!problem.empty()) error(problem);
   hasImage_ = false;
@@ -77,8 +78,18 @@ bool ViewerWindow::startLoad(const std::string& path, const LoadOptions& load, b
             << (load.channel > 0 ? " channel " + std::to_string(load.channel) : "") << "\n";
   loadKeepsView_ = keepView;
   loadKeepsTf_ = false;
+  loadIsReload_ = false;
   loadJob_.start(path, load, config_.opener);
   return true;
+}
+
+void ViewerWindow::reload() {
+  if (current_.path.empty()) {
+    info(current_.name + " is made here, not read from a file: nothing to reload");
+    return;
+  }
+  if (loadJob_.running()) return;  // the file is being read already
+  if (startLoad(current_.path, pageBase(), true)) loadKeepsTf_ = loadIsReload_ = true;
 }
 
 // The file opened again with another voxel spacing (the panel's "Set spacing"): the same page
@@ -151,7 +162,10 @@ void ViewerWindow::pollLoad() {
   const bool sameGrid = current_.volume && v.dims() == current_.volume->dims() &&
                         v.spacing() == current_.volume->spacing();
   const bool keepView = loadKeepsView_ && sameGrid;  // else a new volume after all
-  if (keepView) {
+  if (keepView && loadIsReload_) {
+    info("reloaded " + loaded->name + text);
+    loaded->tf = current_.tf;  // the function being edited stays
+  } else if (keepView) {
     info((v.channelCount() > 1 ? "channel " + std::to_string(v.channel()) + " of " +
                                      std::to_string(v.channelCount()) + ", "
                                : std::string()) +

@@ -189,6 +189,9 @@ void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
       case KeyCommand::CopyView:
         copyView();
         break;
+      case KeyCommand::Reload:
+        reload();
+        break;
       case KeyCommand::Undo:
       case KeyCommand::Redo:
         liveTf_.stepHistory(c == KeyCommand::Undo ? -1 : 1);
@@ -234,6 +237,12 @@ void ViewerWindow::applySessionEdits(const SessionEdits& e, const glm::ivec2& fb
                                      bool* screenshotNow) {
   if (e.openDialog) openDialog();
   if (e.saveDialog) saveDialog();
+  if (e.reload) reload();
+  if (e.watch) {
+    watchFile_ = *e.watch;
+    info(watchFile_ ? "reloading " + current_.name + " whenever its file changes"
+                    : "no longer watching " + current_.name);
+  }
   if (e.openPath) startLoad(*e.openPath);
   if (e.addBookmark) {
     bookmarks_.list().push_back({*e.addBookmark, controller_.camera(), settings_.clip});
@@ -265,6 +274,8 @@ SessionView ViewerWindow::sessionView() {
   SessionView v;
   v.recentFiles = &saved_.recentFiles;
   v.bookmarks = &bookmarks_.list();
+  v.fromFile = !current_.path.empty();
+  v.watching = watchFile_;
   v.bookmarksPath = bookmarks_.path();
   v.loading = loadJob_.running();
   v.loadingPath = loadJob_.path();

@@ -13,6 +13,7 @@
 #include "core/camera_controller.h"
 #include "core/lod_policy.h"
 #include "gl/shader_library.h"
+#include "io/file_watch.h"
 #include "io/frame_names.h"
 #include "io/frame_sink.h"
 #include "io/terminal_progress.h"
@@ -106,6 +107,9 @@ class ViewerWindow {
   void saveDialog();
   void startSave(const std::string& path);
   void pollSave();
+  // The volume's file read again (F5, "Reload", a change seen while watching): the same page,
+  // camera and transfer function, unless the grid changed.
+  void reload();
 
   // viewer_capture.cpp: pictures written to files.
   void screenshot(const glm::ivec2& fb);
@@ -158,6 +162,9 @@ class ViewerWindow {
   VolumeLoadJob loadJob_;
   VolumeSaveJob saveJob_;
   std::optional<VoxelRange> saveCrop_;  // the crop box's voxels when the save dialog opened
+  FileWatch fileWatch_;                 // the stamp of the file on screen
+  bool watchFile_ = false;              // reload when it changes (--watch, the panel)
+  bool loadIsReload_ = false;           // the load running reads the file on screen again
   bool loadKeepsView_ = false;          // the load running pages through the current file's frames
   bool loadKeepsTf_ = false;  // the load running opens the current file with a new spacing
   LoadOptions pageTarget_;    // the page last asked for

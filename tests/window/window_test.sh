@@ -119,11 +119,13 @@ quit_window() {  # quit_window NAME
 
 # Starts ewaview on FILE (relative to the scratch folder) with its own settings folder NAME and
 # EWAVIEW_PRINT_LAYOUT, fresh stdout and stderr logs, and waits for its window.
-start_window() {  # start_window NAME FILE
+start_window() {  # start_window NAME FILE [OPTION...]
   : >"$work/stdout"; : >"$work/stderr"
   mkdir -p "$work/$1"
-  (cd "$work" && EWAVIEW_CONFIG_DIR="$work/$1" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" "$2" \
-    --resolution "$width,$height" >stdout 2>stderr) &
+  local config="$work/$1" file="$2"
+  shift 2
+  (cd "$work" && EWAVIEW_CONFIG_DIR="$config" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" "$file" \
+    --resolution "$width,$height" "$@" >stdout 2>stderr) &
   pid=$!
   poll "the ewaview window" find_window
 }
@@ -388,6 +390,38 @@ esac
 log "saved channel 0 as channels-c0.nrrd"
 quit_window "channels window"
 
+# Watching: with --watch, a file rewritten (a simulation's next step) is read again in place,
+# keeping the view: the ball shrinks. F5 reads it again by hand.
+log "watch: starting a window on a NRRD file with --watch"
+ball_nrrd() {  # ball_nrrd FILE RADIUS
+  python3 - "$1" "$2" <<'PY'
+import sys
+n, r = 24, float(sys.argv[2])
+data = bytearray(200 if (x - 11.5) ** 2 + (y - 11.5) ** 2 + (z - 11.5) ** 2 < r * r else 0
+                 for z in range(n) for y in range(n) for x in range(n))
+head = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: %d %d %d\nencoding: raw\n\n" % (n, n, n)
+open(sys.argv[1] + ".part", "wb").write(head.encode() + bytes(data))
+PY
+  mv "$1.part" "$1"  # written whole, then renamed into place, as careful writers do
+}
+ball_nrrd "$work/ball.nrrd" 9
+start_window config6 ball.nrrd --watch
+settled "$out/16_watch_big.png" "$black" "$frames_crop"
+ball_nrrd "$work/ball.nrrd" 5
+reloads() { grep -c '^ewaview: reloaded ball.nrrd in' "$work/stderr"; }
+reloaded_once() { [ "$(reloads)" -ge 1 ]; }
+poll "the rewritten file to be reloaded" reloaded_once
+settled "$out/17_watch_small.png" "$out/16_watch_big.png" "$frames_crop"
+w0=$(coverage "$out/16_watch_big.png" "$frames_crop"); w1=$(coverage "$out/17_watch_small.png" "$frames_crop")
+greater "$(awk -v a="$w0" 'BEGIN { print a * 0.6 }')" "$w1" ||
+  fail "the reloaded file does not show the smaller ball (coverage $w0 -> $w1)"
+[ "$(reloads)" -eq 1 ] || fail "the rewritten file was read $(reloads) times, not once"
+xdotool key --window "$wid" F5
+reloaded_twice() { [ "$(reloads)" -ge 2 ]; }
+poll "a second reload on F5" reloaded_twice
+log "watched file reloaded: coverage $w0 -> $w1; F5 reloads"
+quit_window "watch window"
+
 # Series: a DICOM folder of two (a ball of 30 slices, a box of 20). The panel lists them;
 # choosing the second in the list opens it (a box covers more of the picture than the ball).
 series_note="series not checked (no fixture writer given)"
@@ -415,4 +449,4 @@ if [ -n "$fixture" ]; then
   quit_window "fourth window"
 fi
 
-echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; copied view $view_diff px; TF mean $m0 -> $m1, coverage $c0 -> $c1, undone $mp -> $mu, redone $mt -> $mr; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1, saved; $series_note"
+echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; copied view $view_diff px; TF mean $m0 -> $m1, coverage $c0 -> $c1, undone $mp -> $mu, redone $mt -> $mr; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1, saved; watched file reloaded ($w0 -> $w1), F5; $series_note"
