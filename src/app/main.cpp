@@ -81,8 +81,9 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
     fileOptions.file = path;
     fileOptions.synthetic.clear();
     fileOptions.tfFile.clear();  // --tf was for the first volume; others use their sidecar
-    fileOptions.load = load;     // so were --series, --frame, --channel and --spacing: the
-                                 // window's own
+    fileOptions.tfPresets.clear();
+    fileOptions.load = load;  // so were --series, --frame, --channel and --spacing: the
+                              // window's own
     ewa::Scene s = ewa::loadScene(fileOptions);
     ewa::LoadedVolume loaded;
     loaded.spacing = load.spacing;

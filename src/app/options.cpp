@@ -13,6 +13,7 @@
 #include "app/render_options.h"
 #include "app/version.h"
 #include "core/kernel_lattice.h"
+#include "core/transfer_function_presets.h"
 #include "io/nrrd_writer.h"
 #include "platform/headless_context.h"
 
@@ -200,6 +201,16 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                  "intermediate-image-sized)")
       ->check(CLI::IsMember({"slice", "image"}));
   app.add_option("--tf", o->tfFile, "Transfer function JSON file");
+  std::vector<std::string> presetKeys;
+  for (const TransferFunctionPresetInfo& p : transferFunctionPresets()) presetKeys.push_back(p.key);
+  app.add_option("--tf-preset", o->tfPresets,
+                 "Apply a preset to the transfer function (--tf's, the sidecar's or the "
+                 "histogram's): ct-bone, ct-soft-tissue, mr, grayscale-ramp replace it; the colour "
+                 "maps viridis, inferno, cool-to-warm, rainbow recolour it (repeat: in order)")
+      ->check(CLI::IsMember(presetKeys))
+      ->expected(1)  // one a time, so a file named after it is not taken for a preset
+      ->allow_extra_args(false)
+      ->take_all();
   app.add_option("--background", bg, "Background colour R,G,B in [0,1] (default 0,0,0)")
       ->delimiter(',')
       ->expected(3)

@@ -19,7 +19,8 @@ struct Options {
   int turntable = 0;      // > 0: that many frames over 360 degrees, --output a pattern or folder
   int fps = 30;           // frames per second of a turntable written as a video
   std::string configDir;  // the window's settings folder; empty: defaultConfigDir()
-  bool watch = false;     // the window reloads the volume when its file changes
+  std::vector<std::string> tfPresets;  // --tf-preset keys, applied in order to the function
+  bool watch = false;                  // the window reloads the volume when its file changes
   std::string recordCameraPath;     // the window writes every camera it draws to this file on exit
   bool resolutionGiven = false;     // --resolution was given (overrides the saved window size)
   bool renderOptionsGiven = false;  // a render option was given (overrides the saved ones)

@@ -10,6 +10,7 @@
 
 #include "core/camera_views.h"
 #include "core/synthetic_volume.h"
+#include "core/transfer_function_presets.h"
 #include "core/volume_crop.h"
 #include "io/transfer_function_io.h"
 #include "io/volume_loader.h"
@@ -55,7 +56,16 @@ Scene loadScene(const Options& o) {
   } else {
     scene.transferFunction = defaultTransferFunction(scene.volume);
   }
+  scene.transferFunction =
+      withPresets(std::move(scene.transferFunction), o.tfPresets, scene.volume);
   return scene;
+}
+
+TransferFunction withPresets(TransferFunction tf, const std::vector<std::string>& keys,
+                             const Volume& volume) {
+  for (const std::string& key : keys)
+    tf = applyTransferFunctionPreset(tf, key, volume.minValue(), volume.maxValue());
+  return tf;
 }
 
 Camera initialCamera(const Volume& volume, const Options& o) {

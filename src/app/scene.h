@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/options.h"
 #include "core/camera.h"
@@ -26,6 +27,10 @@ std::string defaultVolumePath();
 // file beside the volume, else the synthetic volume's own, else one made from the histogram. Throws
 // std::runtime_error("<file>: problem").
 Scene loadScene(const Options& options);
+
+// `tf` with the --tf-preset keys applied in order, over the volume's value range.
+TransferFunction withPresets(TransferFunction tf, const std::vector<std::string>& keys,
+                             const Volume& volume);
 
 // The starting camera: framing the volume from the front, then any --camera-* options.
 Camera initialCamera(const Volume& volume, const Options& options);

@@ -2,6 +2,7 @@
 #include "core/transfer_function_presets.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
@@ -110,12 +111,19 @@ double place(const Preset& p, double at, double lo, double hi) {
   return std::clamp(lo + (at + 1000.0) / 3000.0 * (hi - lo), lo, hi);
 }
 
+// "Cool to warm (colour map)" -> "cool-to-warm": lower case, words joined by '-'.
+std::string keyOf(const std::string& name) {
+  std::string key = name.substr(0, name.find(" ("));
+  for (char& c : key) c = c == ' ' ? '-' : char(std::tolower(static_cast<unsigned char>(c)));
+  return key;
+}
+
 }  // namespace
 
 const std::vector<TransferFunctionPresetInfo>& transferFunctionPresets() {
   static const std::vector<TransferFunctionPresetInfo> infos = [] {
     std::vector<TransferFunctionPresetInfo> out;
-    for (const Preset& p : presets()) out.push_back({p.name, p.opacity.empty()});
+    for (const Preset& p : presets()) out.push_back({p.name, p.opacity.empty(), keyOf(p.name)});
     return out;
   }();
   return infos;
@@ -126,8 +134,9 @@ TransferFunction applyTransferFunctionPreset(const TransferFunction& current,
   if (!std::isfinite(lo) || !std::isfinite(hi) || hi < lo)
     throw std::invalid_argument("preset: value range must be finite with lo <= hi");
   const auto& table = presets();
-  const auto it =
-      std::find_if(table.begin(), table.end(), [&](const Preset& p) { return name == p.name; });
+  const auto it = std::find_if(table.begin(), table.end(), [&](const Preset& p) {
+    return name == p.name || name == keyOf(p.name);
+  });
   if (it == table.end())
     throw std::invalid_argument("unknown transfer-function preset \"" + name + "\"");
   TransferFunction tf = current;

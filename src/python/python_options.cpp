@@ -53,7 +53,8 @@ std::string valueWord(const py::handle& value) {
 }  // namespace
 
 bool isLoadOption(const std::string& key) {
-  return key == "synthetic" || key == "tf" || key == "spacing" || key.rfind("raw_", 0) == 0;
+  return key == "synthetic" || key == "tf" || key == "tf_preset" || key == "spacing" ||
+         key.rfind("raw_", 0) == 0;
 }
 
 std::vector<std::string> optionWords(const py::dict& options) {
@@ -71,6 +72,12 @@ std::vector<std::string> optionWords(const py::dict& options) {
       if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value))
         throw UsageError("clip_planes: a list of (px, py, pz, nx, ny, nz) planes");
       for (const py::handle plane : value) words.push_back("--clip-plane=" + valueWord(plane));
+      continue;
+    }
+    if (key == "tf_preset" && !py::isinstance<py::str>(value) &&
+        py::isinstance<py::sequence>(value)) {
+      // A list of presets, applied in order: one --tf-preset each.
+      for (const py::handle preset : value) words.push_back("--tf-preset=" + valueWord(preset));
       continue;
     }
     std::string name = "--" + key;

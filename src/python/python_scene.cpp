@@ -114,7 +114,9 @@ PythonScene::PythonScene(const py::array& data, const py::object& spacing, const
   volume_ = std::make_shared<Volume>(dims, vec3Argument(spacing, glm::dvec3(1.0), "spacing"),
                                      vec3Argument(origin, glm::dvec3(0.0), "origin"), type,
                                      std::move(bytes));
-  tf_ = o.tfFile.empty() ? defaultTransferFunction(*volume_) : loadTransferFunction(o.tfFile);
+  tf_ = withPresets(
+      o.tfFile.empty() ? defaultTransferFunction(*volume_) : loadTransferFunction(o.tfFile),
+      o.tfPresets, *volume_);
   name_ = "array";
   options_ = renderOptionsOf(options);
 }

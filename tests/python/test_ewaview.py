@@ -164,6 +164,22 @@ def test_presets_change_the_picture():
     assert differs(before, after)
     with pytest.raises(ValueError, match="no such"):
         scene.transfer_function = "no such preset"
+    # The command line's keys name them too.
+    scene.transfer_function = "viridis"
+    assert_same_picture(scene.render(), after)
+
+
+def test_tf_preset_list_is_the_command_line_s_in_order(cli, shared_data):
+    bonsai = shared_data / "bonsai" / "bonsai.nhdr"
+    if not bonsai.exists():
+        pytest.skip("shared data absent")
+    expected = cli.picture("tf_presets", bonsai, "--tf-preset", "mr", "--tf-preset", "inferno",
+                           "--resolution", "96,72")
+    image = ewaview.Scene(bonsai, tf_preset=["mr", "inferno"]).render(**SMALL)
+    assert_same_picture(image, expected)
+    assert differs(image, ewaview.Scene(bonsai, tf_preset="mr").render(**SMALL))
+    with pytest.raises(ValueError, match="--tf-preset: bone not in"):
+        ewaview.Scene(bonsai, tf_preset="bone")
 
 
 def test_repr_png_is_the_rendered_picture():

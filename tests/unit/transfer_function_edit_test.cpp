@@ -82,6 +82,19 @@ TEST(TransferFunctionEdit, RemoveDropsThePointAndReinterpolates) {
   EXPECT_THROW(tf.removeColorPoint(1), std::out_of_range);
 }
 
+TEST(TransferFunctionPresets, KeysNameThePresetsOnTheCommandLine) {
+  std::vector<std::string> keys;
+  for (const auto& info : transferFunctionPresets()) keys.push_back(info.key);
+  EXPECT_EQ(keys, (std::vector<std::string>{"ct-bone", "ct-soft-tissue", "mr", "grayscale-ramp",
+                                            "viridis", "inferno", "cool-to-warm", "rainbow"}));
+  const TransferFunction current = threePoints();
+  for (const auto& info : transferFunctionPresets())
+    EXPECT_EQ(applyTransferFunctionPreset(current, info.key, 0.0, 255.0),
+              applyTransferFunctionPreset(current, info.name, 0.0, 255.0))
+        << info.key;
+  EXPECT_THROW(applyTransferFunctionPreset(current, "CT-bone", 0.0, 255.0), std::invalid_argument);
+}
+
 TEST(TransferFunctionPresets, EveryPresetIsValidAndScaledToTheRange) {
   TransferFunction current = threePoints();
   current.opacityUnitDistance = 0.5;
