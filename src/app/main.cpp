@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
   ewa::keepFreedHeapForReuse();
   // A window keeps an archive it opens unpacked (ArchiveCache), from the first volume on.
   if (options.output.empty() && !options.info && !options.pick && options.turntable == 0 &&
-      options.saveVolume.empty())
+      options.tour == 0 && options.saveVolume.empty())
     options.archives = std::make_shared<ewa::ArchiveCache>();
   try {
     ewa::Scene scene = ewa::loadScene(options);
@@ -139,6 +139,10 @@ int main(int argc, char** argv) {
       std::cerr << "ewaview: note: " << note << "\n";
     if (options.turntable > 0) {
       ewa::renderTurntable(scene, options);
+      return 0;
+    }
+    if (options.tour > 0) {
+      ewa::renderTour(scene, options);
       return 0;
     }
     if (!options.output.empty()) {

@@ -87,13 +87,21 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       "an archive of one (.zip .tar .tar.gz .7z ...), or raw with --raw-*");
   app.add_option("--synthetic", o->synthetic,
                  "Synthetic volume: marschner-lobb[:N], sphere[:N], checkerboard, zebra[:RATIO]");
-  app.add_option("-o,--output", o->output,
-                 "Render headless to this PNG and exit (with --turntable: frames or a video)");
+  app.add_option(
+      "-o,--output", o->output,
+      "Render headless to this PNG and exit (with --turntable or --tour: frames or a video)");
   app.add_option("--turntable", o->turntable,
                  "Render N frames over 360 degrees about view-up; --output is a pattern with one "
                  "%d (frame_%03d.png), a folder, or a video (.mp4: H.264, .webm: VP9)")
       ->check(CLI::Range(1, 100000));
-  app.add_option("--fps", o->fps, "Frames per second of a --turntable video (default 30)")
+  app.add_option("--tour", o->tour,
+                 "Render N frames flying through the camera bookmarks in order (the window's, "
+                 "with their crop boxes and planes), resting at each; --output as --turntable")
+      ->check(CLI::Range(2, 100000));
+  app.add_option("--bookmarks", o->bookmarks,
+                 "The camera bookmarks --tour flies through (default: the volume's "
+                 "NAME.bookmarks.json, which the window writes)");
+  app.add_option("--fps", o->fps, "Frames per second of a --turntable or --tour video (default 30)")
       ->check(CLI::Range(1, 240));
   app.add_option("--config-dir", o->configDir,
                  "Window settings folder (default $EWAVIEW_CONFIG_DIR, else "
@@ -132,9 +140,12 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                  "vector axis): open this channel (default 0)")
       ->check(CLI::Range(0, 1 << 20));
   std::vector<int> res;
+  // Given twice (a copied view pasted after one's own options), the last one counts.
+  constexpr auto kLast = CLI::MultiOptionPolicy::TakeLast;
   app.add_option("--resolution", res, "Image size W,H (default 800,600)")
       ->delimiter(',')
       ->expected(2)
+      ->multi_option_policy(kLast)
       ->check(CLI::Range(1, 16384));
   std::vector<double> pos, focal, up, bg, spacing;
   app.add_option("--spacing", spacing,
@@ -142,13 +153,21 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                  "--raw-spacing)")
       ->delimiter(',')
       ->expected(3);
-  app.add_option("--camera-position", pos, "Camera position X,Y,Z")->delimiter(',')->expected(3);
+  app.add_option("--camera-position", pos, "Camera position X,Y,Z")
+      ->delimiter(',')
+      ->expected(3)
+      ->multi_option_policy(kLast);
   app.add_option("--camera-focal-point", focal, "Camera focal point X,Y,Z")
       ->delimiter(',')
-      ->expected(3);
-  app.add_option("--camera-view-up", up, "Camera view-up X,Y,Z")->delimiter(',')->expected(3);
+      ->expected(3)
+      ->multi_option_policy(kLast);
+  app.add_option("--camera-view-up", up, "Camera view-up X,Y,Z")
+      ->delimiter(',')
+      ->expected(3)
+      ->multi_option_policy(kLast);
   app.add_option("--camera-view-angle", o->cameraViewAngle,
                  "Vertical view angle in degrees (default 30)")
+      ->multi_option_policy(kLast)
       ->check(CLI::Range(0.01, 179.0));
   app.add_flag("--camera-orthographic", o->orthographic, "Orthographic projection");
   app.add_flag("--axis", o->axes,
@@ -245,6 +264,20 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
     std::cerr << "ewaview: " << message << " (see --help)\n";
     return ParseResult{false, 2};
   };
+  // The last of several counts, but each must hold its own number of values ("10,10,5" is
+  // wrong, not the last two of three). CLI11 keeps every value; the words say how many times.
+  for (const auto& [name, values] : {std::pair<std::string, size_t>{"--resolution", 2},
+                                     {"--camera-position", 3},
+                                     {"--camera-focal-point", 3},
+                                     {"--camera-view-up", 3}}) {
+    size_t given = 0;
+    for (int a = 1; a < argc; ++a) {
+      const std::string word = argv[a];
+      given += word == name || word.rfind(name + "=", 0) == 0;
+    }
+    if (app.get_option(name)->results().size() != given * values)
+      return usage(name + ": give " + std::to_string(values) + " numbers, comma-separated");
+  }
   if (app.count("--backend") == 0) {
     try {
       o->backend = platform::defaultHeadlessBackend();
@@ -257,8 +290,11 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   if (!o->rawDims.empty() && o->rawType.empty()) return usage("--raw-dims needs --raw-type");
   if (!o->rawDims.empty() && o->file.empty()) return usage("--raw-dims needs a FILE");
   if (o->turntable > 0 && o->output.empty()) return usage("--turntable needs --output");
-  if (o->stats && (o->output.empty() || o->turntable > 0))
-    return usage("--stats needs --output (one picture, no --turntable)");
+  if (o->tour > 0 && (o->output.empty() || o->turntable > 0))
+    return usage("--tour needs --output and is not a --turntable");
+  if (!o->bookmarks.empty() && o->tour == 0) return usage("--bookmarks goes with --tour");
+  if (o->stats && (o->output.empty() || o->turntable > 0 || o->tour > 0))
+    return usage("--stats needs --output (one picture, no --turntable or --tour)");
   // "series/" and "series" are one folder (and name one bookmarks file beside it).
   while (o->file.size() > 1 && o->file.back() == '/') o->file.pop_back();
   o->resolutionGiven = !res.empty();
@@ -274,7 +310,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
     o->height = res[1];
   }
   if (!o->saveVolume.empty()) {
-    if (!o->output.empty() || o->turntable > 0 || !pick.empty())
+    if (!o->output.empty() || o->turntable > 0 || o->tour > 0 || !pick.empty())
       return usage(
           "--save-volume writes the volume and exits: not with --output, --turntable "
           "or --pick");
@@ -306,6 +342,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
     return usage(e);
   if (const std::string e = finishClipOptions(clipText, &o->render.clip); !e.empty())
     return usage(e);
+  if (o->tour > 0 && o->render.clip.active())
+    return usage(
+        "--tour takes the crop box and planes of its bookmarks: leave --crop and "
+        "--clip-plane out");
   if (!o->saveVolume.empty() && !o->render.clip.planes.empty())
     return usage(
         "--save-volume cuts the volume to --crop's box; a clipping plane cannot cut a grid: "

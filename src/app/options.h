@@ -18,6 +18,8 @@ struct Options {
   std::string output;     // PNG path: render headless and exit
   int turntable = 0;      // > 0: that many frames over 360 degrees, --output a pattern or folder
   int fps = 30;           // frames per second of a turntable written as a video
+  int tour = 0;           // > 0: that many frames through the camera bookmarks (--tour)
+  std::string bookmarks;  // --bookmarks: the tour's file (default: NAME.bookmarks.json beside)
   std::string configDir;  // the window's settings folder; empty: defaultConfigDir()
   std::vector<std::string> tfPresets;  // --tf-preset keys, applied in order to the function
   bool watch = false;                  // the window reloads the volume when its file changes

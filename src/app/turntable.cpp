@@ -1,34 +1,45 @@
-// Headless turntables: one HeadlessSession (the --renderer's renderer), N cameras, one sink.
+// Headless turntables and tours: one HeadlessSession (the --renderer's renderer), N views, one
+// sink.
 #include "app/turntable.h"
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "app/headless.h"
 #include "app/headless_session.h"
+#include "core/camera_tour.h"
+#include "io/camera_bookmarks.h"
 #include "io/frame_sink.h"
 #include "io/terminal_progress.h"
 
 namespace ewa {
 
-void renderTurntable(const Scene& scene, const Options& o) {
-  const int count = o.turntable;
+namespace {
+
+// Renders `count` frames, frame f seen as `view(f)` says, into the sink --output names.
+void renderFrames(const Scene& scene, const Options& o, int count, const char* what,
+                  const std::function<TourStop(int)>& view) {
   refuseToOverwriteInputs(o.output, o);
   // The sink checks or makes its folder or file first, so a bad path fails before rendering.
   const std::unique_ptr<FrameSink> sink = openFrameSink(o.output, count, o.fps);
   HeadlessSession session(o.backend, o.shaderDir);
   session.setAxes(o.axes);
-  const Camera start = initialCamera(scene.volume, o);
-  TerminalProgress progress("ewaview: turntable");
+  TerminalProgress progress(std::string("ewaview: ") + what);
   const auto begin = std::chrono::steady_clock::now();
   std::vector<std::string> notes;  // said after the progress line, not through it
+  RenderSettings settings = o.render;
   for (int f = 0; f < count; ++f) {
     progress.update(f + 1, count, sink->fileOf(f));
-    sink->add(session.render(scene.volume, scene.transferFunction, turntableCamera(start, f, count),
-                             o.render, o.width, o.height),
+    const TourStop stop = view(f);
+    settings.clip = stop.clip;
+    sink->add(session.render(scene.volume, scene.transferFunction, stop.camera, settings, o.width,
+                             o.height),
               f);
     if (std::string note = session.takeNote(); !note.empty()) notes.push_back(std::move(note));
   }
@@ -38,6 +49,35 @@ void renderTurntable(const Scene& scene, const Options& o) {
   std::snprintf(note, sizeof note, "%d frames in %.1f s", count, s);
   progress.finish(note);
   for (const std::string& line : notes) std::fprintf(stderr, "ewaview: %s\n", line.c_str());
+}
+
+}  // namespace
+
+void renderTurntable(const Scene& scene, const Options& o) {
+  const Camera start = initialCamera(scene.volume, o);
+  renderFrames(scene, o, o.turntable, "turntable", [&](int f) {
+    return TourStop{turntableCamera(start, f, o.turntable), o.render.clip};
+  });
+}
+
+void renderTour(const Scene& scene, const Options& o) {
+  const std::string path = !o.bookmarks.empty() ? o.bookmarks
+                           : o.file.empty()     ? std::string()
+                                                : bookmarksPathFor(o.file);
+  if (path.empty())
+    throw std::runtime_error(scene.name +
+                             ": --tour needs --bookmarks FILE (a volume made here "
+                             "has no bookmarks beside it)");
+  if (!std::filesystem::exists(path))
+    throw std::runtime_error(path +
+                             ": no such bookmarks file (add views in the window's "
+                             "\"Camera bookmarks\", or give --bookmarks FILE)");
+  std::vector<TourStop> stops;
+  for (const CameraBookmark& b : loadBookmarks(path)) stops.push_back({b.camera, b.clip});
+  if (stops.size() < 2)
+    throw std::runtime_error(path + ": a tour needs two bookmarks or more (it holds " +
+                             std::to_string(stops.size()) + ")");
+  renderFrames(scene, o, o.tour, "tour", [&](int f) { return tourFrame(stops, f, o.tour); });
 }
 
 }  // namespace ewa

@@ -1,4 +1,5 @@
-// Headless turntables: N frames over 360 degrees about the view-up axis, as PNGs or a video.
+// Headless turntables and tours: N frames over 360 degrees about the view-up axis, or through
+// the camera bookmarks, as PNGs or a video.
 #pragma once
 
 #include <functional>
@@ -15,5 +16,11 @@ namespace ewa {
 // video at options.fps), with the renderer --renderer names. Progress goes to
 // the terminal. Throws on failure ("path: problem").
 void renderTurntable(const Scene& scene, const Options& options);
+
+// Renders options.tour frames through the camera bookmarks (options.bookmarks, else the
+// volume's NAME.bookmarks.json; tourFrame), each with its bookmark's crop box and planes, and
+// writes them as renderTurntable does. Throws "path: problem" for a missing or bad bookmarks
+// file or one of fewer than two bookmarks.
+void renderTour(const Scene& scene, const Options& options);
 
 }  // namespace ewa

@@ -119,10 +119,21 @@ void SessionPanel::drawCapture(const SessionView& view, SessionEdits& edits) {
     turntableFps_ = std::clamp(turntableFps_, 1, 240);
   }
   ImGui::SameLine();
-  if (ImGui::Button("Turntable")) {
+  const bool turntable = ImGui::Button("Turntable");
+  ImGui::SameLine();
+  // A tour flies through the camera bookmarks in order, resting at each (--tour).
+  const bool canTour = view.bookmarks && view.bookmarks->size() >= 2;
+  ImGui::BeginDisabled(!canTour);
+  const bool tour = ImGui::Button("Tour");
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(canTour ? "fly through the camera bookmarks in order"
+                              : "add two camera bookmarks or more for a tour");
+  if (turntable || tour) {
     edits.turntableFrames = turntableFrames_;
     edits.turntableFormat = kFormats[turntableFormat_];
     edits.turntableFps = turntableFps_;
+    edits.tour = tour;
   }
 }
 

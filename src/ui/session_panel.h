@@ -39,6 +39,7 @@ struct SessionEdits {
   int turntableFrames = 0;              // > 0: start a turntable of that many frames
   std::string turntableFormat = "png";  // "png" (a folder of frames), "mp4" or "webm"
   int turntableFps = 30;                // frames per second of a video
+  bool tour = false;                    // the frames fly through the bookmarks instead
   bool cancelTurntable = false;
 };
 

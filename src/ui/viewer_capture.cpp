@@ -40,13 +40,21 @@ void ViewerWindow::screenshot(const glm::ivec2& fb) {
   }
 }
 
-void ViewerWindow::startTurntable(int frames, const std::string& format, int fps) {
+void ViewerWindow::startTurntable(int frames, const std::string& format, int fps, bool tour) {
+  std::vector<TourStop> stops;
+  if (tour) {
+    for (const CameraBookmark& b : bookmarks_.list()) stops.push_back({b.camera, b.clip});
+    if (stops.size() < 2) {
+      error("a tour needs two camera bookmarks or more");
+      return;
+    }
+  }
   std::string folder =
       std::filesystem::absolute(
           screenshotFileName(saved_.screenshotDir, current_.name, std::time(nullptr)))
           .lexically_normal()
           .string();
-  folder = folder.substr(0, folder.size() - 4) + "-turntable";
+  folder = folder.substr(0, folder.size() - 4) + (tour ? "-tour" : "-turntable");
   try {
     turntable_.sink = openFrameSink(format == "png" ? folder : folder + "." + format, frames, fps);
   } catch (const std::exception& e) {
@@ -56,7 +64,9 @@ void ViewerWindow::startTurntable(int frames, const std::string& format, int fps
   turntable_.total = frames;
   turntable_.done = 0;
   turntable_.start = controller_.camera();
-  turntable_.progress = std::make_unique<TerminalProgress>("ewaview: turntable");
+  turntable_.tour = std::move(stops);
+  turntable_.progress =
+      std::make_unique<TerminalProgress>(tour ? "ewaview: tour" : "ewaview: turntable");
 }
 
 // One turntable frame; ends the turntable after the last one.
@@ -64,7 +74,21 @@ void ViewerWindow::turntableFrame(const glm::ivec2& fb) {
   WindowTurntable& t = turntable_;
   const std::string file = t.sink->fileOf(t.done);
   try {
-    renderLevel(0, turntableCamera(t.start, t.done, t.total), fb);
+    if (t.tour.empty()) {
+      renderLevel(0, turntableCamera(t.start, t.done, t.total), fb);
+    } else {
+      // The stop's crop box and planes for this frame only; the panel's come back after.
+      const TourStop stop = tourFrame(t.tour, t.done, t.total);
+      const ClipRegion own = settings_.clip;
+      settings_.clip = stop.clip;
+      try {
+        renderLevel(0, stop.camera, fb);
+      } catch (...) {
+        settings_.clip = own;
+        throw;
+      }
+      settings_.clip = own;
+    }
     renderedCamera_ = ~uint64_t(0);  // the view on screen is not the controller's camera
     t.sink->add(lod_.last().readImage(), t.done);
     if (t.done + 1 == t.total) t.sink->finish();

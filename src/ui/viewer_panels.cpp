@@ -176,6 +176,10 @@ void ViewerWindow::saveSettings() {
 
 void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
   for (KeyCommand c : input_.takeCommands()) {
+    if (printLayout_) {  // the scripted window test's log: which key commands arrived
+      std::printf("command %d\n", int(c));
+      std::fflush(stdout);
+    }
     switch (c) {
       case KeyCommand::Screenshot:
         *screenshotNow = true;
@@ -262,7 +266,7 @@ void ViewerWindow::applySessionEdits(const SessionEdits& e, const glm::ivec2& fb
   }
   if (e.screenshot) *screenshotNow = true;
   if (e.turntableFrames > 0 && turntable_.total == 0)
-    startTurntable(e.turntableFrames, e.turntableFormat, e.turntableFps);
+    startTurntable(e.turntableFrames, e.turntableFormat, e.turntableFps, e.tour);
   if (e.cancelTurntable && turntable_.total > 0) {
     turntable_.progress->finish("cancelled");
     turntable_ = WindowTurntable{};

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/camera_controller.h"
+#include "core/camera_tour.h"
 #include "core/lod_policy.h"
 #include "gl/shader_library.h"
 #include "io/file_watch.h"
@@ -42,6 +43,7 @@ struct WindowTurntable {
   int total = 0;  // 0: none running
   int done = 0;
   Camera start;
+  std::vector<TourStop> tour;       // a tour through these stops instead of a turn about `start`
   std::unique_ptr<FrameSink> sink;  // PNG frames in a folder, or a video
   std::unique_ptr<TerminalProgress> progress;
 };
@@ -114,7 +116,8 @@ class ViewerWindow {
   // viewer_capture.cpp: pictures written to files.
   void screenshot(const glm::ivec2& fb);
   // `format`: "png" (a folder of frames), "mp4" or "webm" (a video at `fps`).
-  void startTurntable(int frames, const std::string& format, int fps);
+  // `tour`: through the camera bookmarks (with their clip regions) instead of about view-up.
+  void startTurntable(int frames, const std::string& format, int fps, bool tour = false);
   void turntableFrame(const glm::ivec2& fb);
 
   // viewer_panels.cpp: the panels, key commands and bookmarks.

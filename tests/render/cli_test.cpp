@@ -98,6 +98,10 @@ TEST(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(ewaview("--no-such-option").code, 2);
   EXPECT_EQ(ewaview("--synthetic sphere --filter blurry").code, 2);
   EXPECT_EQ(ewaview("--synthetic sphere --resolution 10").code, 2);
+  // Given twice the last counts, but each must be whole: not the last two of three numbers.
+  EXPECT_EQ(ewaview("--synthetic sphere --resolution 10,10,5 -o x.png").code, 2);
+  EXPECT_EQ(ewaview("--synthetic sphere --resolution 8,8 --resolution=10,10,5 -o x.png").code, 2);
+  EXPECT_EQ(ewaview("--synthetic sphere --camera-position=1,2,3,4 -o x.png").code, 2);
   const CliRun r = ewaview("--synthetic sphere --cutoff -1");
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(lineCount(r.err), 1) << r.err;

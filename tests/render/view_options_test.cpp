@@ -62,6 +62,14 @@ TEST(ViewOptions, ReadBackAsTheSameViewThroughTheCommandLine) {
   expectNear(o.render.clip.planes[0].point, clip.planes[0].point);
   expectNear(o.render.clip.planes[0].normal, clip.planes[0].normal);
 
+  // Pasted after one's own view options, the copied ones count (the last of each).
+  const Options pasted =
+      parsed("--resolution 32,32 --camera-position=1,2,3 --camera-view-angle=50 " + text);
+  EXPECT_EQ(pasted.width, 640);
+  const Camera again = initialCamera(makeSyntheticVolume("sphere:16").volume, pasted);
+  expectNear(again.position, cam.position);
+  EXPECT_NEAR(again.viewAngleDeg, 22.5, 1e-12);
+
   // A perspective view without clipping says only the camera and the size.
   cam.orthographic = false;
   const std::string plain = viewOptionsText(cam, {100, 80}, ClipRegion{});
