@@ -60,14 +60,15 @@ void renderTurntable(const Scene& scene, const Options& o) {
   });
 }
 
-void renderTour(const Scene& scene, const Options& o) {
-  const std::string path = !o.bookmarks.empty() ? o.bookmarks
-                           : o.file.empty()     ? std::string()
-                                                : bookmarksPathFor(o.file);
+std::vector<TourStop> loadTourStops(const std::string& bookmarks, const std::string& volumeFile,
+                                    const std::string& name) {
+  const std::string path = !bookmarks.empty()   ? bookmarks
+                           : volumeFile.empty() ? std::string()
+                                                : bookmarksPathFor(volumeFile);
   if (path.empty())
-    throw std::runtime_error(scene.name +
-                             ": --tour needs --bookmarks FILE (a volume made here "
-                             "has no bookmarks beside it)");
+    throw std::runtime_error(name +
+                             ": --tour needs --bookmarks FILE (a volume made here has no "
+                             "bookmarks beside it)");
   if (!std::filesystem::exists(path))
     throw std::runtime_error(path +
                              ": no such bookmarks file (add views in the window's "
@@ -77,6 +78,11 @@ void renderTour(const Scene& scene, const Options& o) {
   if (stops.size() < 2)
     throw std::runtime_error(path + ": a tour needs two bookmarks or more (it holds " +
                              std::to_string(stops.size()) + ")");
+  return stops;
+}
+
+void renderTour(const Scene& scene, const Options& o) {
+  const std::vector<TourStop> stops = loadTourStops(o.bookmarks, o.file, scene.name);
   renderFrames(scene, o, o.tour, "tour", [&](int f) { return tourFrame(stops, f, o.tour); });
 }
 

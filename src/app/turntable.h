@@ -4,9 +4,11 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "app/options.h"
 #include "app/scene.h"
+#include "core/camera_tour.h"
 #include "core/camera_views.h"
 
 namespace ewa {
@@ -16,6 +18,12 @@ namespace ewa {
 // video at options.fps), with the renderer --renderer names. Progress goes to
 // the terminal. Throws on failure ("path: problem").
 void renderTurntable(const Scene& scene, const Options& options);
+
+// The stops of a tour: the bookmarks in `bookmarks`, else in the volume file's
+// NAME.bookmarks.json (`volumeFile`; `name` names a volume made here, which has none). Throws
+// "path: problem" for a missing or bad file or one of fewer than two bookmarks.
+std::vector<TourStop> loadTourStops(const std::string& bookmarks, const std::string& volumeFile,
+                                    const std::string& name);
 
 // Renders options.tour frames through the camera bookmarks (options.bookmarks, else the
 // volume's NAME.bookmarks.json; tourFrame), each with its bookmark's crop box and planes, and

@@ -87,6 +87,17 @@ the histogram, as on the command line.)")
           "Writes `frames` pictures over 360 degrees about view-up like --turntable: a .mp4 or "
           ".webm video at `fps`, a %d pattern ending in .png, or a folder of PNGs.")
       .def(
+          "tour",
+          [](PythonScene& s, const std::filesystem::path& path, int frames, int fps,
+             const std::optional<std::filesystem::path>& bookmarks, py::kwargs overrides) {
+            s.tour(path.string(), frames, fps, bookmarks ? bookmarks->string() : std::string(),
+                   overrides);
+          },
+          py::arg("path"), py::arg("frames") = 120, py::arg("fps") = 30,
+          py::arg("bookmarks") = py::none(),
+          "Writes `frames` pictures flying through the camera bookmarks like --tour (the file "
+          "`bookmarks`, else NAME.bookmarks.json beside the volume), as turntable() writes them.")
+      .def(
           "pick",
           [](PythonScene& s, double x, double y, py::kwargs overrides) {
             return s.pick(x, y, overrides);

@@ -12,9 +12,10 @@ namespace ewa::python {
 namespace {
 
 // What the module does itself (render() instead of --output and --turntable) or cannot do.
-const char* const kNotOptions[] = {"output", "turntable", "fps",        "info",
-                                   "help",   "version",   "config_dir", "record_camera_path",
-                                   "file",   "pick",      "save_volume"};
+const char* const kNotOptions[] = {"output",    "turntable", "fps",         "info",
+                                   "help",      "version",   "config_dir",  "record_camera_path",
+                                   "file",      "pick",      "save_volume", "tour",
+                                   "bookmarks", "watch"};
 
 // Collects what parseCommandLine writes to std::cerr while it lives.
 class CerrCapture {

@@ -8,6 +8,7 @@
 #include "app/headless.h"
 #include "app/pick_output.h"
 #include "app/scene.h"
+#include "app/turntable.h"
 #include "core/camera_views.h"
 #include "core/transfer_function_presets.h"
 #include "io/frame_sink.h"
@@ -80,6 +81,7 @@ PythonScene::PythonScene(const std::string& path, const py::dict& options) {
   volume_ = std::make_shared<Volume>(std::move(scene.volume));
   tf_ = std::move(scene.transferFunction);
   name_ = scene.name;
+  file_ = o.file;
   options_ = renderOptionsOf(options);
 }
 
@@ -87,7 +89,8 @@ PythonScene::PythonScene(const py::array& data, const py::object& spacing, const
                          const py::dict& options) {
   for (const auto& [k, v] : options) {
     const std::string key = py::str(k).cast<std::string>();
-    if (key != "tf" && isLoadOption(key)) throw UsageError(key + ": not with an array volume");
+    if (key != "tf" && key != "tf_preset" && isLoadOption(key))
+      throw UsageError(key + ": not with an array volume");
   }
   const Options o = parseOptionWords(optionWords(options));
   if (data.ndim() != 3)
@@ -196,11 +199,9 @@ Image8 PythonScene::renderImage(const py::dict& overrides) {
   return image;
 }
 
-void PythonScene::turntable(const std::string& path, int frames, int fps,
-                            const py::dict& overrides) {
-  const Options o = renderOptions(overrides);
+void PythonScene::writeFrames(const std::string& path, int frames, int fps, const Options& o,
+                              const std::function<TourStop(int)>& view) {
   warnAboutNote(o);
-  const Camera start = initialCamera(*volume_, o);
   std::string notes;
   {
     py::gil_scoped_release released;
@@ -208,16 +209,38 @@ void PythonScene::turntable(const std::string& path, int frames, int fps,
     const std::unique_ptr<FrameSink> sink = openFrameSink(path, frames, fps);
     HeadlessSession& s = session(o);
     s.setAxes(o.axes);
+    RenderSettings settings = o.render;
     for (int f = 0; f < frames; ++f) {
-      sink->add(
-          s.render(*volume_, tf_, turntableCamera(start, f, frames), o.render, o.width, o.height),
-          f);
+      const TourStop stop = view(f);
+      settings.clip = stop.clip;
+      sink->add(s.render(*volume_, tf_, stop.camera, settings, o.width, o.height), f);
       const std::string note = s.takeNote();
       if (!note.empty()) notes += (notes.empty() ? "" : "; ") + note;
     }
     sink->finish();
   }
   warn(notes);
+}
+
+void PythonScene::turntable(const std::string& path, int frames, int fps,
+                            const py::dict& overrides) {
+  const Options o = renderOptions(overrides);
+  const Camera start = initialCamera(*volume_, o);
+  writeFrames(path, frames, fps, o, [&](int f) {
+    return TourStop{turntableCamera(start, f, frames), o.render.clip};
+  });
+}
+
+void PythonScene::tour(const std::string& path, int frames, int fps, const std::string& bookmarks,
+                       const py::dict& overrides) {
+  const Options o = renderOptions(overrides);
+  if (frames < 2) throw UsageError("tour: frames must be 2 or more");
+  if (o.render.clip.active())
+    throw UsageError(
+        "tour: takes the crop box and planes of its bookmarks: leave crop and "
+        "clip_planes out");
+  const std::vector<TourStop> stops = loadTourStops(bookmarks, file_, name_);
+  writeFrames(path, frames, fps, o, [&](int f) { return tourFrame(stops, f, frames); });
 }
 
 py::array_t<uint8_t> PythonScene::render(const py::dict& overrides) {

@@ -5,12 +5,14 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
 
 #include "app/headless_session.h"
 #include "app/options.h"
+#include "core/camera_tour.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
 
@@ -40,6 +42,10 @@ class PythonScene {
   // `frames` pictures over 360 degrees about view-up, written as --turntable writes them to
   // `path` (a .mp4/.webm video at `fps`, a %d pattern or a folder).
   void turntable(const std::string& path, int frames, int fps, const pybind11::dict& overrides);
+  // `frames` pictures through the camera bookmarks, as --tour writes them (`bookmarks`: a
+  // NAME.bookmarks.json file; "": the one beside the scene's volume file).
+  void tour(const std::string& path, int frames, int fps, const std::string& bookmarks,
+            const pybind11::dict& overrides);
   // The same picture as PNG bytes, for Jupyter.
   pybind11::bytes png(const pybind11::dict& overrides);
   pybind11::dict info() const;
@@ -57,10 +63,14 @@ class PythonScene {
   Options renderOptions(const pybind11::dict& overrides);
   HeadlessSession& session(const Options& options);
   Image8 renderImage(const pybind11::dict& overrides);
+  // `frames` pictures, frame f seen as `view(f)` says, written to `path` as a FrameSink.
+  void writeFrames(const std::string& path, int frames, int fps, const Options& options,
+                   const std::function<TourStop(int)>& view);
 
   std::shared_ptr<Volume> volume_;
   TransferFunction tf_;
   std::string name_;
+  std::string file_;        // the volume's file ("" for arrays and synthetic volumes)
   pybind11::dict options_;  // render options in Python form, in the order given
   std::unique_ptr<HeadlessSession> session_;
   // Renders run without the GIL; this keeps one scene's renders and edits apart.

@@ -281,6 +281,32 @@ def test_turntable_writes_what_the_command_line_writes(cli, out_dir):
         scene.turntable(str(out_dir / "x.avi"), frames=2)
 
 
+def test_tour_writes_what_the_command_line_writes(cli, out_dir):
+    marks = {"bookmarks": [
+        {"name": "front", "position": [11.5, 11.5, 80], "focal_point": [11.5, 11.5, 11.5],
+         "view_up": [0, 1, 0], "view_angle": 30, "orthographic": False},
+        {"name": "side", "position": [70, 11.5, 11.5], "focal_point": [11.5, 11.5, 11.5],
+         "view_up": [0, 1, 0], "view_angle": 30, "orthographic": False,
+         "clip": {"crop": {"enabled": True, "min": [0, 0, 0], "max": [23, 23, 11]}}}]}
+    bookmarks = out_dir / "ml.bookmarks.json"
+    bookmarks.write_text(json.dumps(marks))
+    scene = ewaview.Scene(synthetic="marschner-lobb:24", resolution=(48, 40))
+    scene.tour(out_dir / "py_tour", frames=3, bookmarks=bookmarks)
+    run = cli.run("--synthetic", "marschner-lobb:24", "--resolution", "48,40", "--tour", 3,
+                  "--bookmarks", bookmarks, "--output", out_dir / "cli_tour")
+    assert run.returncode == 0, run.stderr
+    frames = []
+    for f in range(3):
+        name = f"frame_{f:03d}.png"
+        frames.append(read_png((out_dir / "py_tour" / name).read_bytes()))
+        assert_same_picture(frames[-1], read_png((out_dir / "cli_tour" / name).read_bytes()))
+    assert differs(frames[0], frames[1]) and differs(frames[1], frames[2])
+    with pytest.raises(RuntimeError, match="a volume made here has no bookmarks"):
+        scene.tour(out_dir / "none", frames=3)
+    with pytest.raises(ValueError, match="takes the crop box and planes of its bookmarks"):
+        scene.tour(out_dir / "none", frames=3, bookmarks=bookmarks, crop=(0, 5, 0, 5, 0, 5))
+
+
 def test_write_png_round_trips(out_dir):
     image = (np.arange(5 * 7 * 3) % 256).astype(np.uint8).reshape(5, 7, 3)
     ewaview.write_png(str(out_dir / "array.png"), image)
