@@ -11,6 +11,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/transfer_function_io.h"
+
 namespace ewa {
 namespace {
 
@@ -136,6 +138,25 @@ TransferFunction applyImportedColorMap(const TransferFunction& current, const Im
   }
   tf.sortPoints();
   return tf;
+}
+
+TransferFunction loadTransferFunctionOrPreset(const std::string& path,
+                                              const TransferFunction& current, double lo, double hi,
+                                              std::string* what) {
+  try {
+    TransferFunction tf = loadTransferFunction(path);
+    *what = "loaded " + path;
+    return tf;
+  } catch (const std::runtime_error& own) {
+    std::vector<ImportedColorMap> maps;
+    try {
+      maps = loadParaViewPresets(path);
+    } catch (const std::runtime_error&) {
+      throw own;  // neither: say what is wrong for ewaview's own format
+    }
+    *what = "imported \"" + maps.front().name + "\" from " + path;
+    return applyImportedColorMap(current, maps.front(), lo, hi, true);
+  }
 }
 
 }  // namespace ewa

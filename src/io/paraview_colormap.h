@@ -32,4 +32,12 @@ std::vector<ImportedColorMap> loadParaViewPresets(const std::string& path);
 TransferFunction applyImportedColorMap(const TransferFunction& current, const ImportedColorMap& map,
                                        double lo, double hi, bool rescale);
 
+// A JSON file dropped on the window: ewaview's transfer function, else a ParaView preset file
+// (its first preset applied to `current`, rescaled onto [lo, hi]). `*what` says which
+// ("loaded PATH", "imported "NAME" from PATH"). Throws std::runtime_error("path: problem") with
+// the transfer-function reader's problem when neither reads it.
+TransferFunction loadTransferFunctionOrPreset(const std::string& path,
+                                              const TransferFunction& current, double lo, double hi,
+                                              std::string* what);
+
 }  // namespace ewa

@@ -40,6 +40,10 @@ class LiveTransferFunction {
   void stepHistory(int step) {
     if (editor_) editor_->requestHistoryStep(step);
   }
+  // A transfer-function (or ParaView preset) file to load in the next drawAndApply.
+  void loadFile(const std::string& path) {
+    if (editor_) editor_->requestFile(path);
+  }
   uint64_t revision() const { return revision_; }
 
   // The transfer function for the settings file: the file last saved or loaded in the

@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "core/transfer_function_presets.h"
+#include "io/paraview_colormap.h"
 #include "io/transfer_function_io.h"
 
 namespace ewa {
@@ -56,6 +57,7 @@ bool TfEditor::draw() {
     ImGui::Checkbox("log histogram", &logHistogram_);
     ImGui::SameLine(0.0f, 40.0f);
     changed |= drawHistory();
+    changed |= loadPendingFile();
     changed |= drawSelectedPoint();
     ImGui::Separator();
     changed |= drawPresets();
@@ -213,6 +215,29 @@ bool TfEditor::drawColorBar() {
   }
   draw->PopClipRect();
   return changed;
+}
+
+bool TfEditor::loadPendingFile() {
+  if (pendingFile_.empty()) return false;
+  const std::string path = std::move(pendingFile_);
+  pendingFile_.clear();
+  try {
+    std::string what;
+    tf_ = loadTransferFunctionOrPreset(path, tf_, volume_.minValue(), volume_.maxValue(), &what);
+    selectedOpacity_ = selectedColor_ = dragOpacity_ = dragColor_ = -1;
+    status_ = what;
+    statusIsError_ = false;
+    if (what.rfind("loaded ", 0) == 0) {  // ewaview's own file: Save writes it back there
+      lastFile_ = path;
+      justLoaded_ = true;
+      std::snprintf(path_, sizeof path_, "%s", path.c_str());
+    }
+    std::cerr << "ewaview: " << what << "\n";
+    return true;
+  } catch (const std::exception& e) {
+    reportError(e.what());
+    return false;
+  }
 }
 
 bool TfEditor::drawHistory() {

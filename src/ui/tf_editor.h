@@ -26,6 +26,9 @@ class TfEditor {
   // window's keys; the editor's own buttons do the same). Every kind of edit is a step: a drag
   // or a typed value once it ends, a point added or removed, a preset, a loaded file.
   void requestHistoryStep(int step) { pendingStep_ = step; }
+  // Loads a transfer function (or a ParaView preset file's first map) in the next draw: a JSON
+  // file dropped on the window.
+  void requestFile(const std::string& path) { pendingFile_ = path; }
   // True while a point is being dragged (a viewer may draw a coarser level meanwhile).
   bool dragging() const { return dragOpacity_ >= 0 || dragColor_ >= 0; }
   // Set by EWAVIEW_PRINT_LAYOUT=1 in the environment: prints "tf-canvas X Y W H" (window
@@ -43,6 +46,7 @@ class TfEditor {
   bool drawPresets();
   bool drawFiles();
   bool drawHistory();
+  bool loadPendingFile();
   void reportError(const std::string& message);
 
   const Volume& volume_;
@@ -50,6 +54,7 @@ class TfEditor {
   TfCanvas canvas_;
   UndoHistory<TransferFunction> history_;
   int pendingStep_ = 0;
+  std::string pendingFile_;
   bool logHistogram_ = true;
   int dragOpacity_ = -1, dragColor_ = -1;          // point under the mouse drag, or -1
   int selectedOpacity_ = -1, selectedColor_ = -1;  // last point clicked, or -1

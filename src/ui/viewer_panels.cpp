@@ -11,6 +11,7 @@
 #include "core/camera_views.h"
 #include "core/view_options_text.h"
 #include "io/atomic_file.h"
+#include "io/file_listing.h"
 #include "ui/axes_overlay.h"
 #include "ui/clip_panel.h"
 #include "ui/crop_box_handles.h"
@@ -225,6 +226,11 @@ void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
     }
   }
   for (const std::string& path : input_.takeDroppedPaths()) {
+    // A .json file is a transfer function (or a ParaView preset), never a volume.
+    if (hasExtension(path, {".json"})) {
+      liveTf_.loadFile(path);
+      continue;
+    }
     startLoad(path);  // one volume at a time: the first drop wins, others say "still loading"
     break;
   }

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "io/transfer_function_io.h"
+
 namespace ewa {
 namespace {
 
@@ -103,8 +105,8 @@ TEST(ParaViewImport, MissingFileAndDirectoryNameThePath) {
 }
 
 TEST(ParaViewImport, ShippedExampleLoadsAndGivesValidFunctions) {
-  const auto maps = loadParaViewPresets(std::string(EWA_TEST_DIR) +
-                                        "/../assets/presets/paraview_example.json");
+  const auto maps =
+      loadParaViewPresets(std::string(EWA_TEST_DIR) + "/../assets/presets/paraview_example.json");
   ASSERT_EQ(maps.size(), 3u);
   EXPECT_EQ(maps[1].name, "Black-Body Radiation");
   EXPECT_EQ(maps[2].opacity.size(), 3u);
@@ -114,6 +116,41 @@ TEST(ParaViewImport, ShippedExampleLoadsAndGivesValidFunctions) {
     EXPECT_DOUBLE_EQ(tf.color.front().value, -1024.0);
     EXPECT_DOUBLE_EQ(tf.color.back().value, 3071.0);
   }
+}
+
+// A JSON file dropped on the window: ewaview's own format first, else a ParaView preset file.
+TEST(ParaViewImport, ADroppedFileIsOurFunctionOrAParaViewPreset) {
+  const std::string dir = ::testing::TempDir();
+  TransferFunction current;
+  current.addOpacityPoint(0.0, 0.0);
+  current.addOpacityPoint(100.0, 0.5);
+  TransferFunction own = current;
+  own.addColorPoint(50.0, {1.0, 0.0, 0.0});
+  const std::string ownPath = dir + "/ewa_dropped.tf.json";
+  saveTransferFunction(ownPath, own);
+  std::string what;
+  EXPECT_EQ(loadTransferFunctionOrPreset(ownPath, current, 0.0, 100.0, &what), own);
+  EXPECT_EQ(what, "loaded " + ownPath);
+
+  const std::string paraview = dir + "/ewa_dropped_pv.json";
+  std::ofstream(paraview) << kTwoPresets;
+  const TransferFunction imported =
+      loadTransferFunctionOrPreset(paraview, current, 0.0, 100.0, &what);
+  EXPECT_EQ(imported, applyImportedColorMap(current, parseParaViewPresets(kTwoPresets, "x")[0], 0.0,
+                                            100.0, true));
+  EXPECT_EQ(what, "imported \"Cool to Warm\" from " + paraview);
+
+  // Neither: the error is our own format's, naming the file.
+  const std::string bad = dir + "/ewa_dropped_bad.json";
+  std::ofstream(bad) << "{\"opacity\": 3}";
+  try {
+    loadTransferFunctionOrPreset(bad, current, 0.0, 100.0, &what);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(bad + ": ", 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("opacity"), std::string::npos) << e.what();
+  }
+  for (const std::string& f : {ownPath, paraview, bad}) std::filesystem::remove(f);
 }
 
 }  // namespace
