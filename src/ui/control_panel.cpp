@@ -117,7 +117,10 @@ PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& le
     edits.axes = ImGui::Checkbox("axes (X)", &axes);
     ImGui::Separator();
     drawStats(stats);
-    ImGui::TextDisabled("left: orbit  right/wheel: zoom  middle/shift+left: pan");
+    // Short, so the button beside it keeps the panel's width; F1 lists the rest.
+    ImGui::TextDisabled("left: orbit  right/wheel: zoom  middle: pan");
+    ImGui::SameLine();
+    edits.keysHelp = ImGui::SmallButton("keys (F1)");
     ImGui::TextDisabled("double-click: centre there  M: mark (probe gives distance)");
   }
   ImGui::End();

@@ -38,6 +38,7 @@ struct PanelEdits {
   bool camera = false;                // the Camera was edited (projection, view angle)
   bool resetCamera = false;           // "Reset camera" was pressed
   bool copyView = false;              // "Copy view": the view as command-line options
+  bool keysHelp = false;              // "keys (F1)": the keys window shown or hidden
   std::optional<AxisView> axisView;   // a view along an axis was asked for
   bool levelOfDetail = false;         // the level-of-detail checkbox changed
   bool axes = false;                  // the orientation axes checkbox changed

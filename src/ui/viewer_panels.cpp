@@ -15,6 +15,7 @@
 #include "ui/axes_overlay.h"
 #include "ui/clip_panel.h"
 #include "ui/crop_box_handles.h"
+#include "ui/keys_help.h"
 #include "ui/viewer_window.h"
 
 namespace ewa {
@@ -31,6 +32,7 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   if (edits.camera) controller_.setCamera(camera);
   if (edits.resetCamera) controller_.reset();
   if (edits.copyView) copyView();
+  if (edits.keysHelp) keysHelp_ = !keysHelp_;
   if (edits.axisView) showAxisView(*edits.axisView, fb);
   if (edits.settings) ++settingsRevision_;
   // A dragged crop box or plane renders like a moving camera: coarse levels until it stops.
@@ -45,6 +47,12 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
     current_.tf = *tf;
   switchRendererIfAsked();
   applySessionEdits(session_.draw(sessionView()), fb, screenshotNow);
+  drawKeysHelp(&keysHelp_);
+  if (printLayout_ && keysPrinted_ != keysHelp_) {  // F1, the button or the window's close box
+    keysPrinted_ = keysHelp_;
+    std::printf("keys %s\n", keysHelp_ ? "on" : "off");
+    std::fflush(stdout);
+  }
   if (const auto chosen = fileDialog_.draw()) {
     if (fileDialog_.purpose() == FileDialog::Purpose::SaveVolume)
       startSave(*chosen);
@@ -196,6 +204,9 @@ void ViewerWindow::applyCommands(const glm::ivec2& fb, bool* screenshotNow) {
         break;
       case KeyCommand::Reload:
         reload();
+        break;
+      case KeyCommand::KeysHelp:
+        keysHelp_ = !keysHelp_;
         break;
       case KeyCommand::Undo:
       case KeyCommand::Redo:

@@ -168,6 +168,8 @@ class ViewerWindow {
   FileWatch fileWatch_;                 // the stamp of the file on screen
   bool watchFile_ = false;              // reload when it changes (--watch, the panel)
   bool loadIsReload_ = false;           // the load running reads the file on screen again
+  bool keysHelp_ = false;               // the keys window is shown (F1)
+  bool keysPrinted_ = false;            // what the layout log last said of it
   bool loadKeepsView_ = false;          // the load running pages through the current file's frames
   bool loadKeepsTf_ = false;  // the load running opens the current file with a new spacing
   LoadOptions pageTarget_;    // the page last asked for

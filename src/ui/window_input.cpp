@@ -148,6 +148,9 @@ void WindowInput::onKey(GLFWwindow* window, int key, int scancode, int action, i
     case GLFW_KEY_X:
       self.commands_.push_back(KeyCommand::ToggleAxes);
       break;
+    case GLFW_KEY_F1:
+      self.commands_.push_back(KeyCommand::KeysHelp);
+      break;
     case GLFW_KEY_F5:
       self.commands_.push_back(KeyCommand::Reload);
       break;

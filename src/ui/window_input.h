@@ -17,6 +17,7 @@ enum class KeyCommand {
   Redo,        // Ctrl+Y, Ctrl+Shift+Z
   CopyView,    // Ctrl+C: the view as command-line options, to the clipboard
   Reload,      // F5: the volume's file read again, keeping the view
+  KeysHelp,    // F1: the list of keys
   ViewPlusX,   // the six views in the order of keys 1..6 (onKey counts on it)
   ViewMinusX,
   ViewPlusY,

@@ -265,6 +265,17 @@ a0=$(coverage "$work/axes_on.png" "$axes_crop"); a1=$(coverage "$out/8_axes_off.
 greater "$a0" "$(awk -v a="$a1" 'BEGIN { print a + 0.02 }')" ||
   fail "switching the axes off did not clear the corner (coverage $a0 -> $a1)"
 log "orientation axes checked"
+# F1 shows the list of keys in the middle of the window, and F1 again hides it.
+keys_crop="300x200+400+200"
+shot "$work/keys_before.png"
+xdotool key --window "$wid" F1
+keys_on() { grep -q '^keys on$' "$work/stdout"; }
+poll "the keys window" keys_on
+settled "$out/8_keys.png" "$work/keys_before.png" "$keys_crop"
+xdotool key --window "$wid" F1
+keys_off() { grep -q '^keys off$' "$work/stdout"; }
+poll "the keys window closed" keys_off
+log "keys window checked"
 quit_window "window"
 
 # Refinement: a heavier volume whose full-quality frame is drawn in many small steps
