@@ -52,6 +52,7 @@ std::string viewerSettingsToJson(const ViewerSettings& s) {
   j["recent_files"] = s.recentFiles;
   j["last_transfer_function"] = s.lastTransferFunction;
   j["screenshot_dir"] = s.screenshotDir;
+  j["capture_scale"] = s.captureScale;
   j["render"] = {{"filter", filterModeName(s.filter)},
                  {"mode", s.renderMode},
                  {"cutoff", s.cutoff},
@@ -93,6 +94,7 @@ ViewerSettings viewerSettingsFromJson(const std::string& text, const std::string
     }
     s.lastTransferFunction = j.value("last_transfer_function", std::string());
     s.screenshotDir = j.value("screenshot_dir", std::string());
+    s.captureScale = std::clamp(j.value("capture_scale", 1), 1, 4);
     if (j.contains("render")) {
       const json& r = j.at("render");
       FilterMode filter;

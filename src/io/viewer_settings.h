@@ -19,6 +19,7 @@ struct ViewerSettings {
   std::vector<std::string> recentFiles;  // most recent first
   std::string lastTransferFunction;      // path of the last transfer function loaded or saved
   std::string screenshotDir;             // empty: the current folder
+  int captureScale = 1;                  // screenshots and turntables at 1 to 4 times the window
   // Render settings (kept here as plain values: this file is read before any GL exists).
   FilterMode filter = FilterMode::Ewa;
   std::string renderMode = "composite";

@@ -94,6 +94,15 @@ void SessionPanel::drawBookmarks(const SessionView& view, SessionEdits& edits) {
 void SessionPanel::drawCapture(const SessionView& view, SessionEdits& edits) {
   if (!ImGui::CollapsingHeader("Capture")) return;
   edits.screenshot = ImGui::Button("Screenshot (F12)");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(110.0f);
+  int scale = view.captureScale - 1;
+  if (ImGui::Combo("size", &scale,
+                   "window size\0"
+                   "2x window\0"
+                   "3x window\0"
+                   "4x window\0"))
+    edits.captureScale = scale + 1;
   if (view.turntableTotal > 0) {
     char label[48];
     std::snprintf(label, sizeof label, "turntable %d / %d", view.turntableDone,

@@ -23,6 +23,7 @@ struct SessionView {
   std::string busyText;                       // other long work ("building splats"), or empty
   int turntableDone = 0, turntableTotal = 0;  // a turntable in progress when total > 0
   const std::vector<StatusMessages::Message>* messages = nullptr;
+  int captureScale = 1;  // screenshots and turntables at this many times the window's size
 };
 
 // What the user asked for this frame.
@@ -41,6 +42,7 @@ struct SessionEdits {
   int turntableFps = 30;                // frames per second of a video
   bool tour = false;                    // the frames fly through the bookmarks instead
   bool cancelTurntable = false;
+  std::optional<int> captureScale;  // the size of pictures written changed (1 to 4 windows)
 };
 
 class SessionPanel {

@@ -24,10 +24,28 @@ void ViewerWindow::saveRecording() {
   }
 }
 
+// The size of pictures written: the window's times the panel's "size" (capture_scale), each
+// side at most kMaxCaptureSide.
+glm::ivec2 ViewerWindow::captureSize(const glm::ivec2& fb) const {
+  constexpr int kMaxCaptureSide = 16384;
+  return glm::min(fb * saved_.captureScale, glm::ivec2(kMaxCaptureSide));
+}
+
 void ViewerWindow::screenshot(const glm::ivec2& fb) {
   try {
-    // Always the full-quality picture, even if a coarse one is on screen.
-    if (!hasImage_ || lod_.lastLevel() != 0) renderLevel(0, controller_.camera(), fb);
+    const glm::ivec2 size = captureSize(fb);
+    // Always the full-quality picture, even if a coarse one is on screen; a larger one is
+    // drawn for the file, and the window's drawn again after it.
+    if (size != fb) {
+      renderLevel(0, controller_.camera(), size);
+      renderedCamera_ = ~uint64_t(0);
+    } else if (!hasImage_ || lod_.lastLevel() != 0) {
+      renderLevel(0, controller_.camera(), fb);
+    }
+    if (!renderError_.empty()) {  // shown in the window already: no stale picture written
+      error("no screenshot: " + renderError_);
+      return;
+    }
     const std::string path =
         std::filesystem::absolute(
             screenshotFileName(saved_.screenshotDir, current_.name, std::time(nullptr)))
@@ -74,15 +92,16 @@ void ViewerWindow::turntableFrame(const glm::ivec2& fb) {
   WindowTurntable& t = turntable_;
   const std::string file = t.sink->fileOf(t.done);
   try {
+    const glm::ivec2 size = captureSize(fb);
     if (t.tour.empty()) {
-      renderLevel(0, turntableCamera(t.start, t.done, t.total), fb);
+      renderLevel(0, turntableCamera(t.start, t.done, t.total), size);
     } else {
       // The stop's crop box and planes for this frame only; the panel's come back after.
       const TourStop stop = tourFrame(t.tour, t.done, t.total);
       const ClipRegion own = settings_.clip;
       settings_.clip = stop.clip;
       try {
-        renderLevel(0, stop.camera, fb);
+        renderLevel(0, stop.camera, size);
       } catch (...) {
         settings_.clip = own;
         throw;

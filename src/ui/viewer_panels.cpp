@@ -282,6 +282,7 @@ void ViewerWindow::applySessionEdits(const SessionEdits& e, const glm::ivec2& fb
     saveBookmarks();
   }
   if (e.screenshot) *screenshotNow = true;
+  if (e.captureScale) saved_.captureScale = *e.captureScale;
   if (e.turntableFrames > 0 && turntable_.total == 0)
     startTurntable(e.turntableFrames, e.turntableFormat, e.turntableFps, e.tour);
   if (e.cancelTurntable && turntable_.total > 0) {
@@ -296,6 +297,7 @@ SessionView ViewerWindow::sessionView() {
   v.recentFiles = &saved_.recentFiles;
   v.bookmarks = &bookmarks_.list();
   v.fromFile = !current_.path.empty();
+  v.captureScale = saved_.captureScale;
   v.watching = watchFile_;
   v.bookmarksPath = bookmarks_.path();
   v.loading = loadJob_.running();

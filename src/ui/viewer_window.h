@@ -115,6 +115,7 @@ class ViewerWindow {
 
   // viewer_capture.cpp: pictures written to files.
   void screenshot(const glm::ivec2& fb);
+  glm::ivec2 captureSize(const glm::ivec2& fb) const;
   // `format`: "png" (a folder of frames), "mp4" or "webm" (a video at `fps`).
   // `tour`: through the camera bookmarks (with their clip regions) instead of about view-up.
   void startTurntable(int frames, const std::string& format, int fps, bool tour = false);

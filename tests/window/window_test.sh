@@ -416,6 +416,9 @@ PY
   mv "$1.part" "$1"  # written whole, then renamed into place, as careful writers do
 }
 ball_nrrd "$work/ball.nrrd" 9
+# Its settings ask for screenshots at twice the window's size, in a folder of their own.
+mkdir -p "$work/config6" "$work/shots"
+printf '{"capture_scale": 2, "screenshot_dir": "%s"}\n' "$work/shots" >"$work/config6/settings.json"
 start_window config6 ball.nrrd --watch
 settled "$out/16_watch_big.png" "$black" "$frames_crop"
 ball_nrrd "$work/ball.nrrd" 5
@@ -430,7 +433,14 @@ greater "$(awk -v a="$w0" 'BEGIN { print a * 0.6 }')" "$w1" ||
 xdotool key --window "$wid" F5
 reloaded_twice() { [ "$(reloads)" -ge 2 ]; }
 poll "a second reload on F5" reloaded_twice
-log "watched file reloaded: coverage $w0 -> $w1; F5 reloads"
+xdotool key --window "$wid" F12
+shot_saved() { grep -q '^ewaview: saved screenshot ' "$work/stderr"; }
+poll "the screenshot at twice the size" shot_saved
+shot_file=$(grep '^ewaview: saved screenshot ' "$work/stderr" | tail -1 | sed 's/^ewaview: saved screenshot //')
+shot_size=$(identify -format '%wx%h' "$shot_file") || fail "no screenshot at $shot_file"
+[ "$shot_size" = "$((2 * width))x$((2 * height))" ] ||
+  fail "the screenshot is $shot_size, not twice the window ($width x $height)"
+log "watched file reloaded: coverage $w0 -> $w1; F5 reloads; screenshot $shot_size"
 quit_window "watch window"
 
 # Series: a DICOM folder of two (a ball of 30 slices, a box of 20). The panel lists them;
@@ -460,4 +470,4 @@ if [ -n "$fixture" ]; then
   quit_window "fourth window"
 fi
 
-echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; copied view $view_diff px; TF mean $m0 -> $m1, coverage $c0 -> $c1, undone $mp -> $mu, redone $mt -> $mr; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1, saved; watched file reloaded ($w0 -> $w1), F5; $series_note"
+echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; copied view $view_diff px; TF mean $m0 -> $m1, coverage $c0 -> $c1, undone $mp -> $mu, redone $mt -> $mr; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1, saved; watched file reloaded ($w0 -> $w1), F5, screenshot $shot_size; $series_note"
