@@ -64,8 +64,10 @@ TEST_F(ViewerFiles, SettingsRoundTripAndDefaults) {
   s.background = {0.1, 0.2, 0.3};
   s.levelOfDetail = false;
   s.axes = false;
+  s.captureScale = 3;
   saveViewerSettings(p, s);
   const ViewerSettings r = loadViewerSettings(p);
+  EXPECT_EQ(r.captureScale, 3);
   EXPECT_EQ(r.windowWidth, 640);
   EXPECT_EQ(r.windowHeight, 480);
   EXPECT_EQ(r.recentFiles, s.recentFiles);
@@ -133,6 +135,8 @@ TEST_F(ViewerFiles, SettingsClampOddValuesAndRejectBadJson) {
       "s.json");
   EXPECT_EQ(s.windowWidth, 64);
   EXPECT_EQ(s.windowHeight, 16384);
+  EXPECT_EQ(viewerSettingsFromJson(R"({"capture_scale": 9})", "s.json").captureScale, 4);
+  EXPECT_EQ(viewerSettingsFromJson(R"({"capture_scale": 0})", "s.json").captureScale, 1);
   EXPECT_EQ(s.cutoff, 64.0);
   EXPECT_EQ(s.depthCutoff, 0.25);
   EXPECT_EQ(s.kernelWidth, 0.3);
