@@ -99,8 +99,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                  "with their crop boxes and planes), resting at each; --output as --turntable")
       ->check(CLI::Range(2, 100000));
   app.add_option("--bookmarks", o->bookmarks,
-                 "The camera bookmarks --tour flies through (default: the volume's "
-                 "NAME.bookmarks.json, which the window writes)");
+                 "The camera bookmarks --tour flies through (default: the window's for the "
+                 "volume, NAME.bookmarks.json beside it or under the settings folder)");
   app.add_option("--fps", o->fps, "Frames per second of a --turntable or --tour video (default 30)")
       ->check(CLI::Range(1, 240));
   app.add_option("--config-dir", o->configDir,

@@ -2,6 +2,7 @@
 // sink.
 #include "app/turntable.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "io/camera_bookmarks.h"
 #include "io/frame_sink.h"
 #include "io/terminal_progress.h"
+#include "io/viewer_settings.h"
 
 namespace ewa {
 
@@ -61,18 +63,28 @@ void renderTurntable(const Scene& scene, const Options& o) {
 }
 
 std::vector<TourStop> loadTourStops(const std::string& bookmarks, const std::string& volumeFile,
-                                    const std::string& name) {
-  const std::string path = !bookmarks.empty()   ? bookmarks
-                           : volumeFile.empty() ? std::string()
-                                                : bookmarksPathFor(volumeFile);
-  if (path.empty())
+                                    const std::string& name, const std::string& configDir) {
+  std::vector<std::string> tried{bookmarks};
+  if (bookmarks.empty()) {
+    tried.clear();
+    if (!volumeFile.empty()) tried.push_back(bookmarksPathFor(volumeFile));
+    // The window keeps a synthetic volume's under the settings folder, named after it.
+    if (!configDir.empty())
+      tried.push_back(
+          fallbackBookmarksPath(volumeFile.empty() ? "synthetic-" + name : volumeFile, configDir));
+  }
+  if (tried.empty())
     throw std::runtime_error(name +
-                             ": --tour needs --bookmarks FILE (a volume made here has no "
-                             "bookmarks beside it)");
-  if (!std::filesystem::exists(path))
-    throw std::runtime_error(path +
-                             ": no such bookmarks file (add views in the window's "
-                             "\"Camera bookmarks\", or give --bookmarks FILE)");
+                             ": --tour needs --bookmarks FILE (no settings folder to "
+                             "find the window's bookmarks in)");
+  const auto found = std::find_if(tried.begin(), tried.end(),
+                                  [](const std::string& p) { return std::filesystem::exists(p); });
+  if (found == tried.end())
+    throw std::runtime_error(tried.front() + ": no such bookmarks file" +
+                             (tried.size() > 1 ? " (nor " + tried.back() + ")" : std::string()) +
+                             "; add views in the window's \"Camera bookmarks\", or give "
+                             "--bookmarks FILE");
+  const std::string path = *found;
   std::vector<TourStop> stops;
   for (const CameraBookmark& b : loadBookmarks(path)) stops.push_back({b.camera, b.clip});
   if (stops.size() < 2)
@@ -82,7 +94,8 @@ std::vector<TourStop> loadTourStops(const std::string& bookmarks, const std::str
 }
 
 void renderTour(const Scene& scene, const Options& o) {
-  const std::vector<TourStop> stops = loadTourStops(o.bookmarks, o.file, scene.name);
+  const std::vector<TourStop> stops = loadTourStops(
+      o.bookmarks, o.file, scene.name, o.configDir.empty() ? defaultConfigDir() : o.configDir);
   renderFrames(scene, o, o.tour, "tour", [&](int f) { return tourFrame(stops, f, o.tour); });
 }
 

@@ -19,11 +19,12 @@ namespace ewa {
 // the terminal. Throws on failure ("path: problem").
 void renderTurntable(const Scene& scene, const Options& options);
 
-// The stops of a tour: the bookmarks in `bookmarks`, else in the volume file's
-// NAME.bookmarks.json (`volumeFile`; `name` names a volume made here, which has none). Throws
+// The stops of a tour: the bookmarks in `bookmarks`, else where the window keeps the volume
+// file's: NAME.bookmarks.json beside it, else (a read-only folder) under `configDir`'s
+// bookmarks/ (a volume made here, named `name`: only there, as the window keeps it). Throws
 // "path: problem" for a missing or bad file or one of fewer than two bookmarks.
 std::vector<TourStop> loadTourStops(const std::string& bookmarks, const std::string& volumeFile,
-                                    const std::string& name);
+                                    const std::string& name, const std::string& configDir);
 
 // Renders options.tour frames through the camera bookmarks (options.bookmarks, else the
 // volume's NAME.bookmarks.json; tourFrame), each with its bookmark's crop box and planes, and

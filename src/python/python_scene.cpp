@@ -15,6 +15,7 @@
 #include "io/nrrd_writer.h"
 #include "io/png_io.h"
 #include "io/transfer_function_io.h"
+#include "io/viewer_settings.h"
 #include "python/python_options.h"
 
 namespace py = pybind11;
@@ -239,7 +240,7 @@ void PythonScene::tour(const std::string& path, int frames, int fps, const std::
     throw UsageError(
         "tour: takes the crop box and planes of its bookmarks: leave crop and "
         "clip_planes out");
-  const std::vector<TourStop> stops = loadTourStops(bookmarks, file_, name_);
+  const std::vector<TourStop> stops = loadTourStops(bookmarks, file_, name_, defaultConfigDir());
   writeFrames(path, frames, fps, o, [&](int f) { return tourFrame(stops, f, frames); });
 }
 

@@ -92,6 +92,13 @@ class Cli:
         return read_png(path.read_bytes())[:, :, :3]
 
 
+@pytest.fixture(scope="session", autouse=True)
+def scratch_settings(tmp_path_factory):
+    """A settings folder of the tests' own: nothing of the user's (window bookmarks a tour
+    would find) comes in, and the command line run beside the module sees the same one."""
+    os.environ["EWAVIEW_CONFIG_DIR"] = str(tmp_path_factory.mktemp("config"))
+
+
 @pytest.fixture(scope="session")
 def out_dir():
     path = Path(os.environ.get("EWA_TEST_OUT", "build/test-output/python"))

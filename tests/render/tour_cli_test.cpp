@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "cli_run.h"
 #include "core/view_options_text.h"
@@ -61,6 +62,34 @@ TEST(TourCli, StopsAreTheBookmarksPicturesAndTheLegsOtherViews) {
   EXPECT_GT(maxDifference(frames[1], frames[2]), 40);
 }
 
+// A volume in a read-only folder has its window bookmarks under the settings folder: --tour
+// finds them there when none lie beside it.
+TEST(TourCli, FindsTheWindowsBookmarksUnderTheSettingsFolder) {
+  const fs::path dir = fs::path(testOutputDir()) / "tour_config";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "data");
+  const std::string volume = (dir / "data" / "cube.nrrd").string();
+  std::ofstream(volume, std::ios::binary) << "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 8 8 8\n"
+                                             "encoding: raw\n\n"
+                                          << std::string(512, char(200));
+  const std::string config = (dir / "config").string();
+  const std::string out = " --resolution 24,24 -o " + (dir / "f_%d.png").string();
+  CliRun r = runEwaview(volume + " --tour 3 --config-dir " + config + out, "tour");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(
+      r.err.find("cube.bookmarks.json: no such bookmarks file (nor " + config + "/bookmarks/cube."),
+      std::string::npos)
+      << r.err;
+  saveBookmarks(fallbackBookmarksPath(volume, config),
+                {{"a", cameraAt({3.5, 3.5, 40}, {0, 1, 0}), {}},
+                 {"b", cameraAt({40, 3.5, 3.5}, {0, 1, 0}), {}}},
+                true);
+  r = runEwaview(volume + " --tour 3 --config-dir " + config + out, "tour");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "f_2.png"));
+}
+
 TEST(TourCli, BadBookmarksAndOptionsAreOneLine) {
   const fs::path dir = fs::path(testOutputDir()) / "tour_bad";
   fs::create_directories(dir);
@@ -73,9 +102,13 @@ TEST(TourCli, BadBookmarksAndOptionsAreOneLine) {
   EXPECT_NE(r.err.find(one + ": a tour needs two bookmarks or more (it holds 1)"),
             std::string::npos)
       << r.err;
-  r = runEwaview("--synthetic sphere:16 --tour 4" + out, "tour");
+  // A synthetic volume's bookmarks are only where the window keeps them: the settings folder.
+  const std::string config = (dir / "config").string();
+  r = runEwaview("--synthetic sphere:16 --tour 4 --config-dir " + config + out, "tour");
   EXPECT_EQ(r.code, 1);
-  EXPECT_NE(r.err.find("sphere:16: --tour needs --bookmarks FILE"), std::string::npos) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(config + "/bookmarks/synthetic-sphere:16."), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no such bookmarks file"), std::string::npos) << r.err;
   r = runEwaview("--synthetic sphere:16 --tour 4 --bookmarks " + (dir / "none.json").string() + out,
                  "tour");
   EXPECT_EQ(r.code, 1);
