@@ -2,7 +2,6 @@
 // sink.
 #include "app/turntable.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -64,29 +63,20 @@ void renderTurntable(const Scene& scene, const Options& o) {
 
 std::vector<TourStop> loadTourStops(const std::string& bookmarks, const std::string& volumeFile,
                                     const std::string& name, const std::string& configDir) {
-  std::vector<std::string> tried{bookmarks};
-  if (bookmarks.empty()) {
-    tried.clear();
-    if (!volumeFile.empty()) tried.push_back(bookmarksPathFor(volumeFile));
-    // The window keeps a synthetic volume's under the settings folder, named after it.
-    if (!configDir.empty())
-      tried.push_back(
-          fallbackBookmarksPath(volumeFile.empty() ? "synthetic-" + name : volumeFile, configDir));
-  }
-  if (tried.empty())
+  const BookmarkPlaces places = bookmarkPlaces(volumeFile, name, configDir);
+  const std::string path = !bookmarks.empty() ? bookmarks : places.read();
+  if (path.empty())
     throw std::runtime_error(name +
                              ": --tour needs --bookmarks FILE (no settings folder to "
                              "find the window's bookmarks in)");
-  const auto found = std::find_if(tried.begin(), tried.end(),
-                                  [](const std::string& p) { return std::filesystem::exists(p); });
-  if (found == tried.end())
-    throw std::runtime_error(tried.front() + ": no such bookmarks file" +
-                             (tried.size() > 1 ? " (nor " + tried.back() + ")" : std::string()) +
+  if (!std::filesystem::exists(path)) {
+    const bool both = bookmarks.empty() && !places.beside.empty() && !places.fallback.empty();
+    throw std::runtime_error(path + ": no such bookmarks file" +
+                             (both ? " (nor " + places.fallback + ")" : std::string()) +
                              "; add views in the window's \"Camera bookmarks\", or give "
                              "--bookmarks FILE");
-  const std::string path = *found;
-  std::vector<TourStop> stops;
-  for (const CameraBookmark& b : loadBookmarks(path)) stops.push_back({b.camera, b.clip});
+  }
+  const std::vector<TourStop> stops = tourStopsOf(loadBookmarks(path));
   if (stops.size() < 2)
     throw std::runtime_error(path + ": a tour needs two bookmarks or more (it holds " +
                              std::to_string(stops.size()) + ")");

@@ -53,6 +53,31 @@ std::string fallbackBookmarksPath(const std::string& volumePath, const std::stri
       .string();
 }
 
+std::string BookmarkPlaces::read() const {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  return !beside.empty() &&
+                 (fs::exists(beside, ec) || fallback.empty() || !fs::exists(fallback, ec))
+             ? beside
+             : fallback;
+}
+
+BookmarkPlaces bookmarkPlaces(const std::string& volumePath, const std::string& name,
+                              const std::string& configDir) {
+  BookmarkPlaces places;
+  if (!volumePath.empty()) places.beside = bookmarksPathFor(volumePath);
+  if (!configDir.empty())
+    places.fallback =
+        fallbackBookmarksPath(volumePath.empty() ? "synthetic-" + name : volumePath, configDir);
+  return places;
+}
+
+std::vector<TourStop> tourStopsOf(const std::vector<CameraBookmark>& bookmarks) {
+  std::vector<TourStop> stops;
+  for (const CameraBookmark& b : bookmarks) stops.push_back({b.camera, b.clip});
+  return stops;
+}
+
 std::string bookmarksToJson(const std::vector<CameraBookmark>& bookmarks) {
   json list = json::array();
   for (const CameraBookmark& b : bookmarks) {

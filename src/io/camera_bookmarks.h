@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "core/camera_tour.h"
 #include "core/clip_region.h"
 
 namespace ewa {
@@ -20,6 +21,20 @@ std::string bookmarksPathFor(const std::string& volumePath);
 // Where bookmarks go when the volume's folder is not writable (shared, read-only data):
 // "configDir/bookmarks/name.HASH.bookmarks.json", HASH from the volume's absolute path.
 std::string fallbackBookmarksPath(const std::string& volumePath, const std::string& configDir);
+
+// Where the window keeps the bookmarks of a volume (`volumePath`, or "" for a synthetic one
+// named `name`): beside its file, and in the settings folder (keyed by the path, or
+// "synthetic-NAME"); each empty where there is none (no file; no `configDir`).
+struct BookmarkPlaces {
+  std::string beside, fallback;
+  // The one read: beside, unless only the fallback exists.
+  std::string read() const;
+};
+BookmarkPlaces bookmarkPlaces(const std::string& volumePath, const std::string& name,
+                              const std::string& configDir);
+
+// The bookmarks' views as the stops of a camera tour, in order.
+std::vector<TourStop> tourStopsOf(const std::vector<CameraBookmark>& bookmarks);
 
 // {"bookmarks": [{"name": "...", "position": [x,y,z], "focal_point": [...], "view_up": [...],
 //   "view_angle": deg, "orthographic": false, "clip": {...} (see clip_region_json.h)}, ...]}

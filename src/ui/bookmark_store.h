@@ -23,11 +23,9 @@ class BookmarkStore {
   const std::string& path() const { return path_; }
 
  private:
-  std::string key() const { return volumePath_.empty() ? "synthetic-" + name_ : volumePath_; }
-
   std::vector<CameraBookmark> bookmarks_;
-  std::string path_;  // where they are read from and written to; empty: nowhere
-  std::string volumePath_, name_, configDir_;
+  std::string path_;       // where they are read from and written to; empty: nowhere
+  BookmarkPlaces places_;  // beside the volume and in the settings folder
 };
 
 }  // namespace ewa

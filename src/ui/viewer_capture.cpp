@@ -61,7 +61,7 @@ void ViewerWindow::screenshot(const glm::ivec2& fb) {
 void ViewerWindow::startTurntable(int frames, const std::string& format, int fps, bool tour) {
   std::vector<TourStop> stops;
   if (tour) {
-    for (const CameraBookmark& b : bookmarks_.list()) stops.push_back({b.camera, b.clip});
+    stops = tourStopsOf(bookmarks_.list());
     if (stops.size() < 2) {
       error("a tour needs two camera bookmarks or more");
       return;

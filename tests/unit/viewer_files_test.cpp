@@ -211,6 +211,33 @@ TEST_F(ViewerFiles, BookmarksBesideTheVolumeRoundTrip) {
   EXPECT_EQ(r[1].name, "side");
 }
 
+// Where the window (and --tour) reads a volume's bookmarks: beside it unless only the settings
+// folder's copy exists; a synthetic volume's only there, named after it.
+TEST_F(ViewerFiles, BookmarkPlacesPreferBesideUnlessOnlyTheFallbackExists) {
+  const std::string volume = path("places.nrrd"), config = path("cfg_places");
+  const BookmarkPlaces places = bookmarkPlaces(volume, "places.nrrd", config);
+  EXPECT_EQ(places.beside, bookmarksPathFor(volume));
+  EXPECT_EQ(places.fallback, fallbackBookmarksPath(volume, config));
+  EXPECT_EQ(places.read(), places.beside);  // neither exists: beside, where they are written
+  CameraBookmark mark{"m", Camera{}, ClipRegion{}};
+  saveBookmarks(places.fallback, {mark}, true);
+  EXPECT_EQ(places.read(), places.fallback);  // only the fallback exists
+  saveBookmarks(places.beside, {mark, mark});
+  EXPECT_EQ(places.read(), places.beside);  // both: beside
+  const BookmarkPlaces synthetic = bookmarkPlaces("", "sphere:16", config);
+  EXPECT_TRUE(synthetic.beside.empty());
+  EXPECT_EQ(synthetic.fallback, fallbackBookmarksPath("synthetic-sphere:16", config));
+  EXPECT_EQ(synthetic.read(), synthetic.fallback);
+  EXPECT_TRUE(bookmarkPlaces("", "sphere:16", "").read().empty());  // nowhere to keep them
+  // As tour stops: the views and clip regions in order.
+  mark.camera.position = {7, 8, 9};
+  mark.clip.cropEnabled = true;
+  const std::vector<TourStop> stops = tourStopsOf({CameraBookmark{}, mark});
+  ASSERT_EQ(stops.size(), 2u);
+  EXPECT_EQ(stops[1].camera.position, glm::dvec3(7, 8, 9));
+  EXPECT_TRUE(stops[1].clip.cropEnabled);
+}
+
 TEST_F(ViewerFiles, BadBookmarksThrowNamingTheFile) {
   EXPECT_THROW(bookmarksFromJson("[]", "b.json"), std::runtime_error);
   const std::string degenerate =
