@@ -73,11 +73,15 @@ std::string screenshotFileName(const std::string& dir, const std::string& volume
   localtime_r(&when, &local);
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
-  const std::string base = "ewaview-" + safeStem(volumeName) + "-" + stamp;
+  return unusedFileName(dir, "ewaview-" + safeStem(volumeName) + "-" + stamp, ".png");
+}
+
+std::string unusedFileName(const std::string& dir, const std::string& base,
+                           const std::string& extension) {
   const std::filesystem::path folder(dir.empty() ? "." : dir);
-  std::filesystem::path path = folder / (base + ".png");
+  std::filesystem::path path = folder / (base + extension);
   for (int n = 2; std::filesystem::exists(path) && n < 10000; ++n)
-    path = folder / (base + "-" + std::to_string(n) + ".png");
+    path = folder / (base + "-" + std::to_string(n) + extension);
   return path.string();
 }
 

@@ -20,8 +20,13 @@ FrameNaming parseFrameNaming(const std::string& output);
 // folder/frame_NNN.png with at least 3 digits (more when count needs them).
 std::string frameFileName(const FrameNaming& naming, int index, int count);
 
+// "dir/BASE.EXT" (dir empty: the current folder, `extension` with its dot); when that file
+// exists, "dir/BASE-2.EXT", "-3"...: a name nothing is written to yet.
+std::string unusedFileName(const std::string& dir, const std::string& base,
+                           const std::string& extension);
+
 // "dir/ewaview-STEM-YYYYMMDD-HHMMSS.png" (dir empty: the current folder); when that file
-// exists, "-2", "-3"... is added before ".png".
+// exists, "-2", "-3"... is added before ".png" (unusedFileName).
 std::string screenshotFileName(const std::string& dir, const std::string& volumeName,
                                std::time_t when);
 

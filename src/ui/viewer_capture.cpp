@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 #include <system_error>
+#include <utility>
 
 #include "core/camera_path.h"
 #include "io/atomic_file.h"
@@ -96,16 +97,11 @@ void ViewerWindow::turntableFrame(const glm::ivec2& fb) {
     if (t.tour.empty()) {
       renderLevel(0, turntableCamera(t.start, t.done, t.total), size);
     } else {
-      // The stop's crop box and planes for this frame only; the panel's come back after.
+      // The stop's crop box and planes for this frame only; the panel's come back after
+      // (renderLevel reports a failed render itself, it does not throw).
       const TourStop stop = tourFrame(t.tour, t.done, t.total);
-      const ClipRegion own = settings_.clip;
-      settings_.clip = stop.clip;
-      try {
-        renderLevel(0, stop.camera, size);
-      } catch (...) {
-        settings_.clip = own;
-        throw;
-      }
+      const ClipRegion own = std::exchange(settings_.clip, stop.clip);
+      renderLevel(0, stop.camera, size);
       settings_.clip = own;
     }
     renderedCamera_ = ~uint64_t(0);  // the view on screen is not the controller's camera

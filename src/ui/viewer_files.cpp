@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/camera_views.h"
+#include "io/frame_names.h"
 #include "render/renderer_factory.h"
 #include "ui/viewer_window.h"
 
@@ -269,10 +270,7 @@ void ViewerWindow::saveDialog() {
   }
   // Never the file on screen or another already there: NAME-2.nrrd, NAME-3.nrrd... as
   // screenshots are named.
-  std::string file = name + ".nrrd";
-  std::error_code ec;
-  for (int n = 2; fs::exists(fs::path(folder.empty() ? "." : folder) / file, ec) && n < 1000; ++n)
-    file = name + "-" + std::to_string(n) + ".nrrd";
+  const std::string file = fs::path(unusedFileName(folder, name, ".nrrd")).filename().string();
   fileDialog_.open(folder, FileDialog::Purpose::SaveVolume, file, option);
 }
 

@@ -297,6 +297,11 @@ TEST_F(ViewerFiles, ScreenshotNamesAreTimestampedAndNeverOverwrite) {
   std::ofstream(first) << "x";
   EXPECT_EQ(screenshotFileName(dir_.string(), "my vol.nhdr", when),
             path("ewaview-my_vol-20261121-170509-2.png"));
+  // The same rule for any name: the window's "Save volume" offers NAME.nrrd, else NAME-2.nrrd...
+  EXPECT_EQ(unusedFileName(dir_.string(), "head", ".nrrd"), path("head.nrrd"));
+  std::ofstream(path("head.nrrd")) << "x";
+  std::ofstream(path("head-2.nrrd")) << "x";
+  EXPECT_EQ(unusedFileName(dir_.string(), "head", ".nrrd"), path("head-3.nrrd"));
 }
 
 }  // namespace
