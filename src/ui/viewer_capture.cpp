@@ -2,6 +2,7 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 #include <system_error>
 #include <utility>
 
@@ -105,6 +106,9 @@ void ViewerWindow::turntableFrame(const glm::ivec2& fb) {
       settings_.clip = own;
     }
     renderedCamera_ = ~uint64_t(0);  // the view on screen is not the controller's camera
+    // A failed frame ends the turntable, as a failed screenshot writes nothing: never the
+    // picture before it in its place.
+    if (!renderError_.empty()) throw std::runtime_error("turntable stopped: " + renderError_);
     t.sink->add(lod_.last().readImage(), t.done);
     if (t.done + 1 == t.total) t.sink->finish();
   } catch (const std::exception& e) {
