@@ -33,18 +33,10 @@ void renderFrames(const Scene& scene, const Options& o, int count, const char* w
   session.setAxes(o.axes);
   TerminalProgress progress(std::string("ewaview: ") + what);
   const auto begin = std::chrono::steady_clock::now();
-  std::vector<std::string> notes;  // said after the progress line, not through it
-  RenderSettings settings = o.render;
-  for (int f = 0; f < count; ++f) {
-    progress.update(f + 1, count, sink->fileOf(f));
-    const TourStop stop = view(f);
-    settings.clip = stop.clip;
-    sink->add(session.render(scene.volume, scene.transferFunction, stop.camera, settings, o.width,
-                             o.height),
-              f);
-    if (std::string note = session.takeNote(); !note.empty()) notes.push_back(std::move(note));
-  }
-  sink->finish();
+  // Notes are said after the progress line, not through it.
+  const std::vector<std::string> notes =
+      renderViews(session, *sink, scene.volume, scene.transferFunction, o, count, view,
+                  [&](int f) { progress.update(f + 1, count, sink->fileOf(f)); });
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   char note[96];
   std::snprintf(note, sizeof note, "%d frames in %.1f s", count, s);
@@ -53,6 +45,24 @@ void renderFrames(const Scene& scene, const Options& o, int count, const char* w
 }
 
 }  // namespace
+
+std::vector<std::string> renderViews(HeadlessSession& session, FrameSink& sink,
+                                     const Volume& volume, const TransferFunction& tf,
+                                     const Options& o, int count,
+                                     const std::function<TourStop(int)>& view,
+                                     const std::function<void(int)>& beforeFrame) {
+  std::vector<std::string> notes;
+  RenderSettings settings = o.render;
+  for (int f = 0; f < count; ++f) {
+    if (beforeFrame) beforeFrame(f);
+    const TourStop stop = view(f);
+    settings.clip = stop.clip;
+    sink.add(session.render(volume, tf, stop.camera, settings, o.width, o.height), f);
+    if (std::string note = session.takeNote(); !note.empty()) notes.push_back(std::move(note));
+  }
+  sink.finish();
+  return notes;
+}
 
 void renderTurntable(const Scene& scene, const Options& o) {
   const Camera start = initialCamera(scene.volume, o);

@@ -6,10 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "app/headless_session.h"
 #include "app/options.h"
 #include "app/scene.h"
 #include "core/camera_tour.h"
 #include "core/camera_views.h"
+#include "io/frame_sink.h"
 
 namespace ewa {
 
@@ -18,6 +20,16 @@ namespace ewa {
 // video at options.fps), with the renderer --renderer names. Progress goes to
 // the terminal. Throws on failure ("path: problem").
 void renderTurntable(const Scene& scene, const Options& options);
+
+// The frame loop of turntables and tours (the command line's and Python's): `count` frames
+// rendered with `session` into `sink` and finished, frame f seen as `view(f)` says (its camera
+// and clip region; `options` give the rest), `beforeFrame(f)` called first when given. Returns
+// the renderer's notes, one per frame that had one.
+std::vector<std::string> renderViews(HeadlessSession& session, FrameSink& sink,
+                                     const Volume& volume, const TransferFunction& tf,
+                                     const Options& options, int count,
+                                     const std::function<TourStop(int)>& view,
+                                     const std::function<void(int)>& beforeFrame = {});
 
 // The stops of a tour: the bookmarks in `bookmarks`, else where the window keeps the volume
 // file's: NAME.bookmarks.json beside it, else (a read-only folder) under `configDir`'s

@@ -210,15 +210,8 @@ void PythonScene::writeFrames(const std::string& path, int frames, int fps, cons
     const std::unique_ptr<FrameSink> sink = openFrameSink(path, frames, fps);
     HeadlessSession& s = session(o);
     s.setAxes(o.axes);
-    RenderSettings settings = o.render;
-    for (int f = 0; f < frames; ++f) {
-      const TourStop stop = view(f);
-      settings.clip = stop.clip;
-      sink->add(s.render(*volume_, tf_, stop.camera, settings, o.width, o.height), f);
-      const std::string note = s.takeNote();
-      if (!note.empty()) notes += (notes.empty() ? "" : "; ") + note;
-    }
-    sink->finish();
+    for (const std::string& note : renderViews(s, *sink, *volume_, tf_, o, frames, view))
+      notes += (notes.empty() ? "" : "; ") + note;
   }
   warn(notes);
 }
