@@ -12,8 +12,8 @@
 #include "app/scene.h"
 #include "app/turntable.h"
 #include "io/archive_cache.h"
-#include "io/nrrd_writer.h"
 #include "io/viewer_settings.h"
+#include "io/volume_writer.h"
 #include "ui/viewer.h"
 
 namespace {
@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
       if (auto cropped = ewa::croppedForSaving(scene.volume, options.render.clip,
                                                options.file.empty() ? scene.name : options.file))
         scene.volume = std::move(*cropped);
-      ewa::writeNrrd(options.saveVolume, scene.volume);
+      ewa::writeVolume(options.saveVolume, scene.volume);
       if (!options.info) return 0;
     }
     if (options.info) {

@@ -14,7 +14,7 @@
 #include "app/version.h"
 #include "core/kernel_lattice.h"
 #include "core/transfer_function_presets.h"
-#include "io/nrrd_writer.h"
+#include "io/volume_writer.h"
 #include "platform/headless_context.h"
 
 namespace ewa {
@@ -117,10 +117,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                "gpu_bytes, gpu_bytes_per_splat, peak_rss)");
   app.add_flag("--info", o->info,
                "Print dims, spacing, type, value range, direction and notes as JSON and exit");
-  app.add_option(
-      "--save-volume", o->saveVolume,
-      "Write the volume as opened (any format, after --frame, --channel, --series, "
-      "--spacing; with --crop only the box's voxels) to this .nrrd file (gzip) and exit");
+  app.add_option("--save-volume", o->saveVolume,
+                 "Write the volume as opened (any format, after --frame, --channel, --series, "
+                 "--spacing; with --crop only the box's voxels) to this file and exit: .nrrd "
+                 "(gzip), .nii or .nii.gz (NIfTI-1)");
   std::vector<double> pick;
   app.add_option("--pick", pick,
                  "Print what pixel X,Y (column, row from the top left) of the --resolution "
@@ -314,8 +314,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       return usage(
           "--save-volume writes the volume and exits: not with --output, --turntable "
           "or --pick");
-    if (!isNrrdFileName(o->saveVolume))
-      return usage("--save-volume " + o->saveVolume + ": the file must end in .nrrd");
+    if (!savedVolumeFormat(o->saveVolume))
+      return usage("--save-volume " + o->saveVolume + ": the file must end in " +
+                   kSavedVolumeExtensions);
   }
   if (!pick.empty()) {
     if (o->info || !o->output.empty())

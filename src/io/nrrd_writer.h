@@ -1,4 +1,4 @@
-// Writing a volume as an attached, gzip-compressed NRRD file (--save-volume).
+// Encoding a volume as an attached, gzip-compressed NRRD file (--save-volume: writeVolume).
 #pragma once
 
 #include <string>
@@ -12,12 +12,5 @@ namespace ewa {
 // "3D-right-handed"), its unit as "space units", and its notes as comments. What loadVolume
 // reads back is the same volume.
 std::string encodeNrrd(const Volume& volume);
-
-// True when the file name of `path` ends in ".nrrd" (with a name before it): what
-// --save-volume and Python's save_volume accept.
-bool isNrrdFileName(const std::string& path);
-
-// encodeNrrd written to `path` atomically. Throws std::runtime_error("<path>: ...").
-void writeNrrd(const std::string& path, const Volume& volume);
 
 }  // namespace ewa

@@ -12,10 +12,10 @@
 #include "core/camera_views.h"
 #include "core/transfer_function_presets.h"
 #include "io/frame_sink.h"
-#include "io/nrrd_writer.h"
 #include "io/png_io.h"
 #include "io/transfer_function_io.h"
 #include "io/viewer_settings.h"
+#include "io/volume_writer.h"
 #include "python/python_options.h"
 
 namespace py = pybind11;
@@ -269,9 +269,9 @@ py::dict PythonScene::info() const {
 }
 
 void PythonScene::saveVolume(const std::string& path, const py::object& crop) const {
-  if (!isNrrdFileName(path))
-    throw UsageError("save_volume: " + path + ": the file must end in .nrrd");
-  if (crop.is_none()) return writeNrrd(path, *volume_);
+  if (!savedVolumeFormat(path))
+    throw UsageError("save_volume: " + path + ": the file must end in " + kSavedVolumeExtensions);
+  if (crop.is_none()) return writeVolume(path, *volume_);
   py::dict box;
   box["crop"] = crop;  // read as --crop reads it, with its messages
   const Options options = parseOptionWords(optionWords(box));
@@ -281,7 +281,7 @@ void PythonScene::saveVolume(const std::string& path, const py::object& crop) co
   } catch (const std::runtime_error& e) {
     throw UsageError(e.what());  // a box beside the volume: the argument is wrong
   }
-  writeNrrd(path, cropped ? *cropped : *volume_);
+  writeVolume(path, cropped ? *cropped : *volume_);
 }
 
 py::array PythonScene::array() const {

@@ -7,7 +7,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "io/nrrd_writer.h"
+#include "io/volume_writer.h"
 
 namespace ewa {
 
@@ -35,9 +35,9 @@ void FileDialog::changeFolder(const std::string& folder) {
   fs::path canonical = fs::weakly_canonical(folder, ec);
   if (ec) canonical = folder;
   try {
-    const std::vector<std::string> kinds = purpose_ == Purpose::SaveVolume
-                                               ? std::vector<std::string>{".nrrd"}
-                                               : volumeFileExtensions();
+    const std::vector<std::string> kinds =
+        purpose_ == Purpose::SaveVolume ? std::vector<std::string>{".nrrd", ".nii", ".nii.gz"}
+                                        : volumeFileExtensions();
     entries_ = listDirectory(canonical.string(), allFiles_ ? std::vector<std::string>{} : kinds);
     folder_ = canonical.string();
     error_.clear();
@@ -59,8 +59,9 @@ std::optional<std::string> FileDialog::accept() {
   }
   if (purpose_ == Purpose::Open) return path.string();
   if (path.extension().empty()) path += ".nrrd";
-  if (!isNrrdFileName(path.string())) {
-    error_ = "volumes are saved as NRRD: name the file NAME.nrrd";
+  if (!savedVolumeFormat(path.string())) {
+    error_ = std::string("volumes are saved as NRRD or NIfTI: name the file NAME") +
+             kSavedVolumeExtensions;
     return std::nullopt;
   }
   if (!fs::is_directory(path.parent_path(), ec)) {
@@ -102,7 +103,7 @@ std::optional<std::string> FileDialog::draw() {
   if (justOpened_) ImGui::SetNextWindowFocus();
   justOpened_ = false;
   // One window (one place on screen) under either title.
-  if (ImGui::Begin(saving ? "Save volume as NRRD###files" : "Open volume###files", &open_)) {
+  if (ImGui::Begin(saving ? "Save volume###files" : "Open volume###files", &open_)) {
     if (ImGui::Button("Up")) changeFolder(fs::path(folder_).parent_path().string());
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
@@ -138,7 +139,7 @@ std::optional<std::string> FileDialog::draw() {
     if (ImGui::Checkbox("all files", &allFiles_)) changeFolder(folder_);
     ImGui::SameLine();
     if (saving)
-      ImGui::TextDisabled("NRRD (gzip) and NAME.tf.json");
+      ImGui::TextDisabled(".nrrd (gzip), .nii, .nii.gz and NAME.tf.json");
     else
       ImGui::TextDisabled(allFiles_ ? "(raw files need --raw-* on the command line)"
                                     : "volumes, DICOM, NIfTI, TIFF, SLC");

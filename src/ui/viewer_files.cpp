@@ -7,6 +7,7 @@
 
 #include "core/camera_views.h"
 #include "io/frame_names.h"
+#include "io/volume_writer.h"
 #include "render/renderer_factory.h"
 #include "ui/viewer_window.h"
 
@@ -244,7 +245,7 @@ void ViewerWindow::openDialog() {
 }
 
 // Offered as NAME.nrrd (NAME-fF-cC.nrrd for a page of a file of several; NAME-2.nrrd... when
-// taken) in the file's folder.
+// taken) in the file's folder; a NIfTI file's as NAME.nii.gz, NIfTI's users' format.
 void ViewerWindow::saveDialog() {
   namespace fs = std::filesystem;
   const Volume& v = *current_.volume;
@@ -252,6 +253,9 @@ void ViewerWindow::saveDialog() {
       current_.path.empty() ? current_.name : fs::path(current_.path).stem().string();
   if (name.size() > 4 && name.compare(name.size() - 4, 4, ".nii") == 0)
     name.resize(name.size() - 4);
+  const bool nifti =
+      savedVolumeFormat(current_.path).value_or(SavedVolumeFormat::Nrrd) != SavedVolumeFormat::Nrrd;
+  const std::string extension = nifti ? ".nii.gz" : ".nrrd";
   if (v.frameCount() > 1) name += "-f" + std::to_string(v.frame());
   if (v.channelCount() > 1) name += "-c" + std::to_string(v.channel());
   for (char& c : name)
@@ -270,7 +274,7 @@ void ViewerWindow::saveDialog() {
   }
   // Never the file on screen or another already there: NAME-2.nrrd, NAME-3.nrrd... as
   // screenshots are named.
-  const std::string file = fs::path(unusedFileName(folder, name, ".nrrd")).filename().string();
+  const std::string file = fs::path(unusedFileName(folder, name, extension)).filename().string();
   fileDialog_.open(folder, FileDialog::Purpose::SaveVolume, file, option);
 }
 

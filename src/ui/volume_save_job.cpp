@@ -1,11 +1,11 @@
-// VolumeSaveJob: std::async around writeNrrd and saveTransferFunction.
+// VolumeSaveJob: std::async around writeVolume and saveTransferFunction.
 #include "ui/volume_save_job.h"
 
 #include <cstdio>
 #include <filesystem>
 
-#include "io/nrrd_writer.h"
 #include "io/transfer_function_io.h"
+#include "io/volume_writer.h"
 
 namespace ewa {
 
@@ -17,9 +17,9 @@ void VolumeSaveJob::start(std::shared_ptr<const Volume> volume, TransferFunction
   future_ =
       std::async(std::launch::async, [volume = std::move(volume), tf = std::move(tf), path, crop] {
         if (crop)
-          writeNrrd(path, cropVolume(*volume, *crop));
+          writeVolume(path, cropVolume(*volume, *crop));
         else
-          writeNrrd(path, *volume);  // not copied
+          writeVolume(path, *volume);  // not copied
         const std::string sidecar = sidecarTransferFunctionPath(path);
         saveTransferFunction(sidecar, tf);
         std::error_code ec;

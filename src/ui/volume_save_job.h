@@ -16,7 +16,7 @@ namespace ewa {
 
 class VolumeSaveJob {
  public:
-  // Starts writing `volume` (only `crop`'s voxels when given: cropVolume) to `path` (writeNrrd,
+  // Starts writing `volume` (only `crop`'s voxels when given: cropVolume) to `path` (writeVolume,
   // atomically) and then `tf` to the sidecar the file is opened with again
   // (sidecarTransferFunctionPath), so it reopens looking the same.
   void start(std::shared_ptr<const Volume> volume, TransferFunction tf, const std::string& path,

@@ -102,11 +102,17 @@ def test_numpy_array_equals_the_same_voxels_read_as_raw(cli, out_dir):
     part = ewaview.Scene(out_dir / "part.nrrd")
     assert part.info["dims"] == [4, 5, 3] and part.info["origin"] == [2, 3, 0]
     assert np.array_equal(part.array, data[0:3, 2:7, 2:6])
+    # As NIfTI (gzip) the same voxels, in the same place.
+    plain.save_volume(str(out_dir / "part.nii.gz"), crop=(2, 5, 3, 9, -1, 4.5))
+    nifti = ewaview.Scene(out_dir / "part.nii.gz")
+    assert nifti.info["dims"] == [4, 5, 3] and nifti.info["spacing"] == [1, 1.5, 2]
+    assert np.allclose(nifti.info["origin"], [2, 3, 0])
+    assert np.array_equal(nifti.array, data[0:3, 2:7, 2:6])
     with pytest.raises(ValueError, match="keeps no voxel"):
         plain.save_volume(str(out_dir / "none.nrrd"), crop=(40, 50, 0, 1, 0, 1))
     with pytest.raises(ValueError, match="--crop"):
         plain.save_volume(str(out_dir / "none.nrrd"), crop=(5, 2, 0, 1, 0, 1))
-    with pytest.raises(ValueError, match="must end in .nrrd"):
+    with pytest.raises(ValueError, match="must end in .nrrd, .nii or .nii.gz"):
         plain.save_volume(str(out_dir / "ball.png"))
     # float64 arrays become float32 volumes; non-contiguous views are copied in [z, y, x] order.
     assert ewaview.Scene(data.astype(np.float64)).info["type"] == "float32"
