@@ -2,6 +2,7 @@
 // This file must not include gl/gl_api.h (see imgui_layer.h).
 #include "ui/imgui_layer.h"
 
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
@@ -10,7 +11,7 @@
 
 namespace ewa {
 
-ImGuiLayer::ImGuiLayer(GLFWwindow* window) {
+ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
   IMGUI_CHECKVERSION();
   context_ = ImGui::CreateContext();
   ImGui::SetCurrentContext(context_);
@@ -20,6 +21,9 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) {
   try {
     glfwBackend_ = ImGui_ImplGlfw_InitForOpenGL(window, /*install_callbacks=*/true);
     if (!glfwBackend_) throw std::runtime_error("ImGui: GLFW backend failed to start");
+    // ImGui_ImplGlfw_Shutdown puts back the callback it replaced, which drops this one too.
+    io.UserData = this;
+    imguiKeyCallback_ = glfwSetKeyCallback(window, onKey);
     glBackend_ = ImGui_ImplOpenGL3_Init("#version 450");
     if (!glBackend_) throw std::runtime_error("ImGui: OpenGL 3 backend failed to start");
   } catch (...) {
@@ -42,11 +46,26 @@ void ImGuiLayer::shutdown() {
   glBackend_ = glfwBackend_ = false;
 }
 
+void ImGuiLayer::onKey(GLFWwindow*, int key, int scancode, int action, int mods) {
+  auto* self = static_cast<ImGuiLayer*>(ImGui::GetIO().UserData);
+  const KeyChange change = action == GLFW_PRESS     ? KeyChange::Press
+                           : action == GLFW_RELEASE ? KeyChange::Release
+                                                    : KeyChange::Repeat;
+  const KeyEvent e{key, scancode, action, mods, change};
+  if (self && self->keys_.arrive(e)) self->deliver(e);
+}
+
+void ImGuiLayer::deliver(const KeyEvent& e) {
+  if (imguiKeyCallback_) imguiKeyCallback_(window_, e.key, e.scancode, e.action, e.mods);
+}
+
 void ImGuiLayer::beginFrame() {
   ImGui::SetCurrentContext(context_);
+  for (const KeyEvent& e : keys_.beforeNewFrame()) deliver(e);
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
+  keys_.afterNewFrame();
 }
 
 void ImGuiLayer::render() {

@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include "ui/key_trickle.h"
+
 struct GLFWwindow;
 struct ImGuiContext;
 
@@ -20,7 +22,8 @@ class ImGuiLayer {
   ImGuiLayer(const ImGuiLayer&) = delete;
   ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
-  // Starts a frame: ImGui widget calls may follow until render().
+  // Starts a frame: ImGui widget calls may follow until render(). Key events held back since
+  // the last frame (KeyTrickle) are delivered first.
   void beginFrame();
   // Ends the frame and draws the widgets over the current framebuffer (GL state is restored).
   void render();
@@ -39,8 +42,15 @@ class ImGuiLayer {
 
  private:
   void shutdown();
+  // On top of ImGui's key callback: passes each event on to it (and through it to the
+  // application's) unless KeyTrickle holds it for the next frame.
+  static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
+  void deliver(const KeyEvent& e);
 
+  GLFWwindow* window_ = nullptr;
   ImGuiContext* context_ = nullptr;
+  void (*imguiKeyCallback_)(GLFWwindow*, int, int, int, int) = nullptr;
+  KeyTrickle keys_;
   bool glfwBackend_ = false;
   bool glBackend_ = false;
 };

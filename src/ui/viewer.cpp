@@ -122,7 +122,10 @@ double ViewerWindow::now() const {
 }
 
 bool ViewerWindow::busy() const {
-  return loadJob_.running() || turntable_.total > 0 || buildPending_ || liveTf_.building();
+  // A save on its worker too: the panel counts its seconds, and its end is shown when it comes
+  // (an idle window would see it only at its next wake, 10 s later).
+  return loadJob_.running() || saveJob_.running() || turntable_.total > 0 || buildPending_ ||
+         liveTf_.building();
 }
 
 void ViewerWindow::requestFullLevel() {
@@ -137,7 +140,7 @@ void ViewerWindow::requestFullLevel() {
 bool ViewerWindow::warmUpDue() const {
   if (!levelOfDetail_ || !hasImage_ || refinement_.active() || !lod_.warmUpPending()) return false;
   if (loadJob_.running() || turntable_.total > 0 || buildPending_) return false;
-  return liveTf_.building() || lod_.lastLevel() == 0;  // the rest of busy() is ruled out above
+  return liveTf_.building() || lod_.lastLevel() == 0;  // loading and capturing ruled out above
 }
 
 // A coarse image is shown and the quiet time before full quality has passed.
@@ -152,7 +155,7 @@ double ViewerWindow::waitSeconds() const {
   if (liveTf_.building()) return kBuildPollSeconds;
   if (hasImage_ && !refineFailed_ && lod_.lastLevel() != 0)
     return std::max(0.0, (policy_.refineDelayMs() - millisecondsSince(lastChange_)) / 1000.0);
-  if (loadJob_.running()) return kLoadingWaitSeconds;
+  if (loadJob_.running() || saveJob_.running()) return kLoadingWaitSeconds;
   return kIdleWaitSeconds;
 }
 

@@ -411,6 +411,19 @@ case "$saved_info" in
 esac
 [ -s "$work/channels-c0.tf.json" ] || fail "no transfer function beside the saved volume"
 log "saved channel 0 as channels-c0.nrrd"
+# A name typed over the offered one picks the format: NIfTI (gzip) here.
+xdotool key --window "$wid" ctrl+s; sleep 0.5
+xdotool key --window "$wid" ctrl+a
+xdotool type --window "$wid" "$work/copy.nii.gz"
+xdotool key --window "$wid" Return
+saved_nifti() { grep -q "^ewaview: saved .*/copy.nii.gz (" "$work/stderr"; }
+poll "the volume saved as NIfTI" saved_nifti
+nifti_info=$("$binary" --info "$work/copy.nii.gz") || fail "the saved NIfTI file does not open"
+case "$nifti_info" in
+  *'"dims":[24,24,24]'*'"range":[0.0,200.0]'*) ;;
+  *) fail "the saved NIfTI file is not channel 0: $nifti_info" ;;
+esac
+log "saved channel 0 as copy.nii.gz"
 quit_window "channels window"
 
 # Watching: with --watch, a file rewritten (a simulation's next step) is read again in place,
