@@ -1,16 +1,17 @@
 // Loading fuzz inputs as volume files and checking what comes out.
 #include "volume_checks.h"
 
+#include <algorithm>
 #include <cmath>
+#include <glm/matrix.hpp>
 #include <numeric>
 
-#include <glm/matrix.hpp>
-
 #include "core/splat_set.h"
-#include "core/volume_orientation.h"
 #include "core/transfer_function.h"
+#include "core/volume_orientation.h"
 #include "fuzz_case.h"
 #include "io/volume_loader.h"
+#include "io/volume_writer.h"
 
 namespace ewa::fuzz {
 
@@ -45,6 +46,42 @@ void checkVolume(const Volume& v) {
   }
 }
 
+void checkWrittenBack(const Volume& v, const std::string& folder) {
+  if (v.voxelCount() > (int64_t{1} << 16)) return;
+  for (const char* name : {"back.nrrd", "back.nii"}) {
+    const std::string path = folder + "/" + name;
+    const bool nifti = name[5] == 'n' && name[6] == 'i';
+    try {
+      writeVolume(path, v);
+    } catch (const std::runtime_error& e) {
+      const std::string message = e.what();
+      EWA_FUZZ_CHECK(nifti);  // NRRD holds every volume
+      EWA_FUZZ_CHECK(message.rfind(path + ": ", 0) == 0);
+      EWA_FUZZ_CHECK(message.find('\n') == std::string::npos);
+      continue;
+    }
+    const Volume back = loadVolume(path);  // a LoadError here is a bug: escapes as one
+    EWA_FUZZ_CHECK(back.dims() == v.dims() && back.type() == v.type());
+    EWA_FUZZ_CHECK(back.bytes() == v.bytes());
+    // Every voxel at the same place: each axis's step (direction times spacing) and the origin.
+    // (The parts may differ: a direction a loader kept within its tolerance of a rotation comes
+    // back with unit columns.) NRRD's text keeps doubles; NIfTI-1 rounds them to float32.
+    const double relative = nifti ? 1e-6 : 1e-12;
+    double extent = glm::length(v.origin());
+    for (int a = 0; a < 3; ++a) {
+      const glm::dvec3 step = v.direction()[a] * v.spacing()[a];
+      const glm::dvec3 stepBack = back.direction()[a] * back.spacing()[a];
+      const double size = std::hypot(step.x, step.y, step.z);
+      const glm::dvec3 d = stepBack - step;
+      EWA_FUZZ_CHECK(std::hypot(d.x, d.y, d.z) <= relative * size);
+      extent = std::max(extent, size * double(v.dims()[size_t(a)]));
+    }
+    for (int a = 0; a < 3; ++a)
+      EWA_FUZZ_CHECK(std::abs(back.origin()[a] - v.origin()[a]) <= relative * extent + 1e-300);
+    if (!nifti) EWA_FUZZ_CHECK(back.patientFrame() == v.patientFrame());
+  }
+}
+
 void fuzzVolumeFile(const uint8_t* data, size_t size, const std::string& extension) {
   // One folder per process; inputs overwrite the same few files.
   static ScratchFiles files;
@@ -60,6 +97,7 @@ void fuzzVolumeFile(const uint8_t* data, size_t size, const std::string& extensi
     return;
   }
   checkVolume(volume);
+  checkWrittenBack(volume, files.folder());
 }
 
 }  // namespace ewa::fuzz

@@ -37,7 +37,11 @@ glm::dmat3 orthonormalized(const glm::dmat3& d) {
   const glm::dvec3 x = glm::normalize(a);
   glm::dvec3 y = b - glm::dot(b, x) * x;
   if (glm::length(y) < 1e-9) return glm::dmat3(1.0);
+  // Twice: when b lies nearly along x, one pass leaves y off square by rounding over |y| (1e-10
+  // for |y| = 1e-6), so the rotation would come out different when its own columns are fed
+  // back (a volume saved and read again); a second pass leaves rounding alone.
   y = glm::normalize(y);
+  y = glm::normalize(y - glm::dot(y, x) * x);
   glm::dvec3 z = glm::cross(x, y);
   if (det < 0.0) z = -z;
   const glm::dmat3 r(x, y, z);

@@ -126,7 +126,7 @@ void placeNiftiInWorld(const NiftiHeader& h, VolumeLayout& layout) {
     for (int a = 0; a < 3; ++a) {
       const glm::dvec3 column(h.srow[0][a], h.srow[1][a], h.srow[2][a]);
       const double length =
-          std::sqrt(column.x * column.x + column.y * column.y + column.z * column.z);
+          std::hypot(column.x, column.y, column.z);  // no overflow or underflow on the way
       layout.spacing[a] = length;
       layout.direction[a] = length > 0.0 ? toLps * column / length : glm::dvec3(0.0);
     }

@@ -1,6 +1,7 @@
 // Writing a volume as a single-file NIfTI-1 (.nii, or .nii.gz gzip-compressed): --save-volume.
 #include "io/nifti_writer.h"
 
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -119,10 +120,12 @@ std::string encodeNifti(const Volume& volume, const std::string& name) {
                                " voxels is more than NIfTI-1 holds (32767); save it as .nrrd");
   const glm::dmat3 direction = volume.direction();
   const glm::dvec3 spacing = volume.spacing(), origin = volume.origin();
+  // NIfTI-1 keeps the placement in float32: a spacing it would round to 0 or infinity, or an
+  // origin beyond its range, cannot be written.
   for (int a = 0; a < 3; ++a)
-    if (!std::isfinite(spacing[a]) || !std::isfinite(origin[a]) ||
-        !std::isfinite(direction[a].x + direction[a].y + direction[a].z))
-      throw std::runtime_error(name + ": the volume's placement is not finite");
+    if (!(spacing[a] >= FLT_MIN && spacing[a] <= FLT_MAX) || !(std::abs(origin[a]) <= FLT_MAX))
+      throw std::runtime_error(name + ": the volume's spacing or origin is outside NIfTI-1's " +
+                               "float32 range; save it as .nrrd");
 
   int code = 0, bits = 0;
   niftiType(volume.type(), &code, &bits);

@@ -364,9 +364,11 @@ NrrdHeader parseNrrdHeader(const std::string& path) {
   for (size_t a = 0; a < spatial; ++a) {
     h.layout.dims[a] = sizes[a];
     if (!directions.empty() && !directions[a].empty()) {
-      double len2 = 0.0;
-      for (double c : directions[a]) len2 += c * c;
-      h.layout.spacing[a] = std::sqrt(len2);  // checked to be positive in makeVolume
+      // hypot, not the root of the summed squares: a spacing of 1e-200 or 1e200 squared
+      // would underflow to 0 or overflow to infinity (and be refused).
+      const std::vector<double>& c = directions[a];
+      h.layout.spacing[a] = std::hypot(c.size() > 0 ? c[0] : 0.0, c.size() > 1 ? c[1] : 0.0,
+                                       c.size() > 2 ? c[2] : 0.0);  // checked in makeVolume
     } else if (!spacings.empty() && !std::isnan(spacings[a])) {
       h.layout.spacing[a] = spacings[a];  // NaN means "not a spatial axis": keep 1
     }

@@ -115,6 +115,16 @@ TEST(NiftiWriter, WhatNiftiCannotHoldIsRefusedNamingTheFile) {
         << e.what();
   }
   EXPECT_FALSE(std::filesystem::exists(path));
+  // A spacing float32 cannot hold.
+  const Volume huge({2, 2, 2}, glm::dvec3(1.0, 1e39, 1.0), glm::dvec3(0.0), ScalarType::UInt8,
+                    std::vector<uint8_t>(8, 1));
+  try {
+    writeVolume(dir.path("huge.nii"), huge);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("outside NIfTI-1's float32 range"), std::string::npos)
+        << e.what();
+  }
   // A name of no format it writes.
   EXPECT_FALSE(savedVolumeFormat("v.mha"));
   EXPECT_FALSE(savedVolumeFormat(".nii"));
