@@ -7,6 +7,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <cstdio>
 #include <stdexcept>
 
 namespace ewa {
@@ -52,7 +53,13 @@ void ImGuiLayer::onKey(GLFWwindow*, int key, int scancode, int action, int mods)
                            : action == GLFW_RELEASE ? KeyChange::Release
                                                     : KeyChange::Repeat;
   const KeyEvent e{key, scancode, action, mods, change};
-  if (self && self->keys_.arrive(e)) self->deliver(e);
+  if (!self) return;
+  const bool passed = self->keys_.arrive(e);
+  if (self->keyLog_) {
+    std::printf("key %d %d %s\n", key, action, passed ? "passed" : "held");
+    std::fflush(stdout);
+  }
+  if (passed) self->deliver(e);
 }
 
 void ImGuiLayer::deliver(const KeyEvent& e) {
@@ -61,7 +68,10 @@ void ImGuiLayer::deliver(const KeyEvent& e) {
 
 void ImGuiLayer::beginFrame() {
   ImGui::SetCurrentContext(context_);
-  for (const KeyEvent& e : keys_.beforeNewFrame()) deliver(e);
+  for (const KeyEvent& e : keys_.beforeNewFrame()) {
+    if (keyLog_) std::printf("key %d %d delivered\n", e.key, e.action);
+    deliver(e);
+  }
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();

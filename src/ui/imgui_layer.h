@@ -35,6 +35,13 @@ class ImGuiLayer {
   bool wantsMouse() const;
   bool wantsKeyboard() const;
 
+  // Key events held for a later frame (KeyTrickle): the window must keep drawing frames until
+  // none is left, or they would wait for the next input.
+  bool keysHeld() const { return keys_.heldCount() > 0; }
+  // Logs every key event to stdout as it arrives ("key K A passed|held") and as a held one is
+  // delivered ("key K A delivered"): the scripted window test's record of what GLFW gave.
+  void setKeyLog(bool on) { keyLog_ = on; }
+
   // Panel layout (ImGui's ini text): ImGui never writes a file itself; the viewer keeps the
   // text in its config folder, written atomically. Load before the first frame.
   void loadLayout(const std::string& iniText);
@@ -51,6 +58,7 @@ class ImGuiLayer {
   ImGuiContext* context_ = nullptr;
   void (*imguiKeyCallback_)(GLFWwindow*, int, int, int, int) = nullptr;
   KeyTrickle keys_;
+  bool keyLog_ = false;
   bool glfwBackend_ = false;
   bool glBackend_ = false;
 };

@@ -71,6 +71,7 @@ ViewerWindow::ViewerWindow(platform::GlfwWindowContext& window, LoadedVolume ini
   rendererKind_ = settings_.renderer;  // lod_ makes renderers of this kind
   printLayout_ = envFlag("EWAVIEW_PRINT_LAYOUT");
   panel_.setPrintLayout(printLayout_);
+  imgui_.setKeyLog(printLayout_);
   frameLog_ = envFlag("EWAVIEW_FRAME_LOG");
   levelOfDetail_ = saved_.levelOfDetail;
   axes_ = saved_.axes;
@@ -93,7 +94,9 @@ void ViewerWindow::run() {
     const bool refining = refinement_.active();
     const bool warmUp = warmUpDue();
     const double wait =
-        quietFrames < kFramesAfterActivity || refining || warmUp ? 0.0 : waitSeconds();
+        quietFrames < kFramesAfterActivity || refining || warmUp || imgui_.keysHeld()
+            ? 0.0
+            : waitSeconds();
     if (wait > 0.0)
       glfwWaitEventsTimeout(wait);
     else
@@ -104,7 +107,7 @@ void ViewerWindow::run() {
     // An idle window wakes every kIdleWaitSeconds, often enough to see its file change.
     if (watchFile_ && !loadJob_.running() && fileWatch_.changed(now())) reload();
     const bool due = busy() || refineDue() || refinement_.active() || fullSplatsArrived_ ||
-                     warmUp || !messages_.current(now()).empty();
+                     warmUp || !messages_.current(now()).empty() || imgui_.keysHeld();
     if (!active && !due && quietFrames >= kFramesAfterActivity) continue;
 
     const bool rendered = drawFrame(active);
