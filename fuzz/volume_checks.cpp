@@ -48,14 +48,14 @@ void checkVolume(const Volume& v) {
 
 void checkWrittenBack(const Volume& v, const std::string& folder) {
   if (v.voxelCount() > (int64_t{1} << 16)) return;
-  for (const char* name : {"back.nrrd", "back.nii"}) {
+  for (const char* name : {"back.nrrd", "back.nii", "back.mha"}) {
     const std::string path = folder + "/" + name;
     const bool nifti = name[5] == 'n' && name[6] == 'i';
     try {
       writeVolume(path, v);
     } catch (const std::runtime_error& e) {
       const std::string message = e.what();
-      EWA_FUZZ_CHECK(nifti);  // NRRD holds every volume
+      EWA_FUZZ_CHECK(nifti);  // NRRD and MetaImage hold every volume
       EWA_FUZZ_CHECK(message.rfind(path + ": ", 0) == 0);
       EWA_FUZZ_CHECK(message.find('\n') == std::string::npos);
       continue;
@@ -65,7 +65,8 @@ void checkWrittenBack(const Volume& v, const std::string& folder) {
     EWA_FUZZ_CHECK(back.bytes() == v.bytes());
     // Every voxel at the same place: each axis's step (direction times spacing) and the origin.
     // (The parts may differ: a direction a loader kept within its tolerance of a rotation comes
-    // back with unit columns.) NRRD's text keeps doubles; NIfTI-1 rounds them to float32.
+    // back with unit columns.) NRRD's and MetaImage's text keep doubles; NIfTI-1 rounds them
+    // to float32.
     const double relative = nifti ? 1e-6 : 1e-12;
     double extent = glm::length(v.origin());
     for (int a = 0; a < 3; ++a) {

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "io/byte_order.h"
-#include "io/gzip_encode.h"
+#include "io/deflate_encode.h"
 
 namespace ewa {
 

@@ -1,4 +1,4 @@
-// Writing a volume in the format its file name asks for: NRRD or NIfTI (--save-volume, Save).
+// Writing a volume in the format its file name asks for: NRRD, NIfTI or MetaImage (--save-volume).
 #include "io/volume_writer.h"
 
 #include <algorithm>
@@ -7,7 +7,8 @@
 #include <stdexcept>
 
 #include "io/atomic_file.h"
-#include "io/gzip_encode.h"
+#include "io/deflate_encode.h"
+#include "io/metaimage_writer.h"
 #include "io/nifti_writer.h"
 #include "io/nrrd_writer.h"
 
@@ -29,6 +30,7 @@ std::optional<SavedVolumeFormat> savedVolumeFormat(const std::string& path) {
   if (endsWith(name, ".nrrd")) return SavedVolumeFormat::Nrrd;
   if (endsWith(name, ".nii")) return SavedVolumeFormat::Nifti;
   if (endsWith(name, ".nii.gz")) return SavedVolumeFormat::NiftiGzip;
+  if (endsWith(name, ".mha")) return SavedVolumeFormat::MetaImage;
   return std::nullopt;
 }
 
@@ -36,6 +38,8 @@ void writeVolume(const std::string& path, const Volume& volume) {
   const auto format = savedVolumeFormat(path);
   if (!format) throw std::runtime_error(path + ": volumes are saved as " + kSavedVolumeExtensions);
   if (*format == SavedVolumeFormat::Nrrd) return writeFileAtomically(path, encodeNrrd(volume));
+  if (*format == SavedVolumeFormat::MetaImage)
+    return writeFileAtomically(path, encodeMetaImage(volume));
   const std::string nifti = encodeNifti(volume, path);
   if (*format == SavedVolumeFormat::Nifti) return writeFileAtomically(path, nifti);
   writeFileAtomically(path,

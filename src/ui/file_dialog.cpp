@@ -36,8 +36,9 @@ void FileDialog::changeFolder(const std::string& folder) {
   if (ec) canonical = folder;
   try {
     const std::vector<std::string> kinds =
-        purpose_ == Purpose::SaveVolume ? std::vector<std::string>{".nrrd", ".nii", ".nii.gz"}
-                                        : volumeFileExtensions();
+        purpose_ == Purpose::SaveVolume
+            ? std::vector<std::string>{".nrrd", ".nii", ".nii.gz", ".mha"}
+            : volumeFileExtensions();
     entries_ = listDirectory(canonical.string(), allFiles_ ? std::vector<std::string>{} : kinds);
     folder_ = canonical.string();
     error_.clear();
@@ -60,7 +61,7 @@ std::optional<std::string> FileDialog::accept() {
   if (purpose_ == Purpose::Open) return path.string();
   if (path.extension().empty()) path += ".nrrd";
   if (!savedVolumeFormat(path.string())) {
-    error_ = std::string("volumes are saved as NRRD or NIfTI: name the file NAME") +
+    error_ = std::string("volumes are saved as NRRD, NIfTI or MetaImage: name the file NAME") +
              kSavedVolumeExtensions;
     return std::nullopt;
   }
@@ -139,7 +140,7 @@ std::optional<std::string> FileDialog::draw() {
     if (ImGui::Checkbox("all files", &allFiles_)) changeFolder(folder_);
     ImGui::SameLine();
     if (saving)
-      ImGui::TextDisabled(".nrrd (gzip), .nii, .nii.gz and NAME.tf.json");
+      ImGui::TextDisabled(".nrrd (gzip), .nii(.gz), .mha and NAME.tf.json");
     else
       ImGui::TextDisabled(allFiles_ ? "(raw files need --raw-* on the command line)"
                                     : "volumes, DICOM, NIfTI, TIFF, SLC");

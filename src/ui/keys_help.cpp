@@ -26,7 +26,7 @@ constexpr KeyLine kLines[] = {
     {"Ctrl+Z, Ctrl+Y", "undo, redo a transfer-function edit"},
     {"Ctrl+C", "copy the view as command-line options"},
     {"Ctrl+O", "open a volume (or drop a file; a .json: a transfer function)"},
-    {"Ctrl+S", "save the volume (NRRD or NIfTI)"},
+    {"Ctrl+S", "save the volume (NRRD, NIfTI, MetaImage)"},
     {"F5", "reload the file"},
     {"F12", "screenshot"},
     {"F1", "this list"},

@@ -112,7 +112,7 @@ def test_numpy_array_equals_the_same_voxels_read_as_raw(cli, out_dir):
         plain.save_volume(str(out_dir / "none.nrrd"), crop=(40, 50, 0, 1, 0, 1))
     with pytest.raises(ValueError, match="--crop"):
         plain.save_volume(str(out_dir / "none.nrrd"), crop=(5, 2, 0, 1, 0, 1))
-    with pytest.raises(ValueError, match="must end in .nrrd, .nii or .nii.gz"):
+    with pytest.raises(ValueError, match="must end in .nrrd, .nii, .nii.gz or .mha"):
         plain.save_volume(str(out_dir / "ball.png"))
     # float64 arrays become float32 volumes; non-contiguous views are copied in [z, y, x] order.
     assert ewaview.Scene(data.astype(np.float64)).info["type"] == "float32"

@@ -185,7 +185,8 @@ TEST(Cli, SpacingReplacesTheFilesForAFolderOfImageSlices) {
       << r.out;
   r = ewaview(dir + " --save-volume " + dir + "/v.png");
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("the file must end in .nrrd, .nii or .nii.gz"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the file must end in .nrrd, .nii, .nii.gz or .mha"), std::string::npos)
+      << r.err;
   r = ewaview(dir + " --info --spacing 1,-1,1");
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
@@ -205,14 +206,18 @@ TEST(Cli, SaveVolumeWithACropBoxWritesItsVoxels) {
   EXPECT_NE(r.out.find("\"origin\":[4.0,0.0,20.0]"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("cropped to voxels 4-10, 0-31, 20-31 of 32 x 32 x 32"), std::string::npos)
       << r.out;
-  // As NIfTI the same box keeps its place (through the sform; read back with patient axes).
-  r = ewaview("--synthetic sphere:32 --crop 3.5,10.2,-9,99,20,40 --save-volume " + dir +
-              "/part.nii.gz");
-  ASSERT_EQ(r.code, 0) << r.err;
-  r = ewaview(dir + "/part.nii.gz --info");
-  ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("\"dims\":[7,32,12],\"spacing\":[1.0,1.0,1.0]"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("\"origin\":[4.0,0.0,20.0]"), std::string::npos) << r.out;
+  // As NIfTI (through the sform; read back with patient axes) and as MetaImage the same box
+  // keeps its place.
+  for (const char* name : {"part.nii.gz", "part.mha"}) {
+    r = ewaview("--synthetic sphere:32 --crop 3.5,10.2,-9,99,20,40 --save-volume " + dir + "/" +
+                name);
+    ASSERT_EQ(r.code, 0) << r.err;
+    r = ewaview(dir + "/" + name + " --info");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("\"dims\":[7,32,12],\"spacing\":[1.0,1.0,1.0]"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("\"origin\":[4.0,0.0,20.0]"), std::string::npos) << r.out;
+  }
   r = ewaview("--synthetic sphere:32 --crop 40,50,0,9,0,9 --save-volume " + dir + "/none.nrrd");
   EXPECT_EQ(r.code, 1);
   EXPECT_EQ(lineCount(r.err), 1) << r.err;

@@ -1,5 +1,5 @@
-// gzip compression of a whole buffer (the volume writers' encoding).
-#include "io/gzip_encode.h"
+// Deflate compression of a whole buffer, with gzip's or zlib's wrapper (the volume writers').
+#include "io/deflate_encode.h"
 
 #include <zlib.h>
 
@@ -8,9 +8,12 @@
 
 namespace ewa {
 
-std::string gzipBytes(const uint8_t* data, size_t size) {
+namespace {
+
+// windowBits 15 + 16 asks zlib for the gzip wrapper, 15 for its own.
+std::string deflateBytes(const uint8_t* data, size_t size, int windowBits) {
   z_stream zs{};
-  if (deflateInit2(&zs, 6, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+  if (deflateInit2(&zs, 6, Z_DEFLATED, windowBits, 8, Z_DEFAULT_STRATEGY) != Z_OK)
     throw std::runtime_error("cannot start zlib");
   std::string out;
   std::vector<char> buffer(size_t{1} << 20);
@@ -31,6 +34,16 @@ std::string gzipBytes(const uint8_t* data, size_t size) {
   }
   deflateEnd(&zs);
   return out;
+}
+
+}  // namespace
+
+std::string gzipBytes(const uint8_t* data, size_t size) {
+  return deflateBytes(data, size, 15 + 16);
+}
+
+std::string zlibBytes(const uint8_t* data, size_t size) {
+  return deflateBytes(data, size, 15);
 }
 
 }  // namespace ewa

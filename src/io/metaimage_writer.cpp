@@ -1,0 +1,83 @@
+// Encoding a volume as a MetaImage file with its data inside (.mha, zlib): --save-volume.
+#include "io/metaimage_writer.h"
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "io/byte_order.h"
+#include "io/deflate_encode.h"
+
+namespace ewa {
+
+namespace {
+
+const char* metaType(ScalarType type) {
+  switch (type) {
+    case ScalarType::UInt8:
+      return "MET_UCHAR";
+    case ScalarType::Int16:
+      return "MET_SHORT";
+    case ScalarType::UInt16:
+      return "MET_USHORT";
+    case ScalarType::Float32:
+      return "MET_FLOAT";
+  }
+  return "MET_UCHAR";
+}
+
+// Shortest text that reads back as the same double.
+std::string numbers(std::initializer_list<double> values) {
+  std::string out;
+  for (double v : values) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", v);
+    out += (out.empty() ? "" : " ") + std::string(text);
+  }
+  return out;
+}
+
+// ITK's AnatomicalOrientation: for each axis the side of the patient it starts from, by its
+// direction's largest component in LPS: +x runs from the right (R), +y from the front (A), +z
+// from below (I); the identity is "RAI".
+std::string anatomicalOrientation(const glm::dmat3& direction) {
+  std::string code;
+  for (int a = 0; a < 3; ++a) {
+    const glm::dvec3 d = direction[a];
+    int axis = 0;
+    for (int c = 1; c < 3; ++c)
+      if (std::abs(d[c]) > std::abs(d[axis])) axis = c;
+    static const char kFrom[3][2] = {{'R', 'L'}, {'A', 'P'}, {'I', 'S'}};
+    code += kFrom[axis][d[axis] < 0.0 ? 1 : 0];
+  }
+  return code;
+}
+
+}  // namespace
+
+std::string encodeMetaImage(const Volume& volume) {
+  std::vector<uint8_t> bytes = volume.bytes();
+  if (hostIsBigEndian()) swapBytes(bytes.data(), bytes.size(), scalarSize(volume.type()));
+  const std::string data = zlibBytes(bytes.data(), bytes.size());
+  const glm::dmat3& d = volume.direction();
+  const glm::dvec3& s = volume.spacing();
+  const glm::dvec3& o = volume.origin();
+  const auto& n = volume.dims();
+  std::string h =
+      "ObjectType = Image\nNDims = 3\nBinaryData = True\n"
+      "BinaryDataByteOrderMSB = False\nCompressedData = True\n";
+  h += "CompressedDataSize = " + std::to_string(data.size()) + "\n";
+  h += "TransformMatrix = " +
+       numbers({d[0].x, d[0].y, d[0].z, d[1].x, d[1].y, d[1].z, d[2].x, d[2].y, d[2].z}) + "\n";
+  h += "Offset = " + numbers({o.x, o.y, o.z}) + "\n";
+  h += "CenterOfRotation = 0 0 0\n";
+  if (volume.patientFrame()) h += "AnatomicalOrientation = " + anatomicalOrientation(d) + "\n";
+  h += "ElementSpacing = " + numbers({s.x, s.y, s.z}) + "\n";
+  h += "DimSize = " + std::to_string(n[0]) + " " + std::to_string(n[1]) + " " +
+       std::to_string(n[2]) + "\n";
+  h += std::string("ElementType = ") + metaType(volume.type()) + "\n";
+  h += "ElementDataFile = LOCAL\n";
+  return h + data;
+}
+
+}  // namespace ewa
