@@ -14,7 +14,7 @@ namespace ewa {
 // negated; qform 0 when the axes are not orthogonal); a volume at the origin with the identity
 // direction and no patient frame has neither, only pixdim. The unit goes in xyzt_units when
 // NIfTI names it (m, mm, µm). Throws std::runtime_error("<name>: ...") for a volume NIfTI-1
-// cannot hold (an axis over 32767 voxels) or a placement that is not finite.
+// cannot hold (an axis over 32767 voxels, a spacing or origin outside float32's range).
 std::string encodeNifti(const Volume& volume, const std::string& name);
 
 }  // namespace ewa
