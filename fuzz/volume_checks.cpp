@@ -50,7 +50,7 @@ void checkWrittenBack(const Volume& v, const std::string& folder) {
   if (v.voxelCount() > (int64_t{1} << 16)) return;
   for (const char* name : {"back.nrrd", "back.nii", "back.mha"}) {
     const std::string path = folder + "/" + name;
-    const bool nifti = name[5] == 'n' && name[6] == 'i';
+    const bool nifti = savedVolumeFormat(path) == SavedVolumeFormat::Nifti;
     try {
       writeVolume(path, v);
     } catch (const std::runtime_error& e) {

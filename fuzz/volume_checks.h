@@ -21,9 +21,8 @@ void checkVolume(const Volume& volume);
 
 // Writes a small volume (up to 64 Ki voxels) as NRRD, NIfTI and MetaImage into `folder` and
 // reads each back: the same grid, type and voxels, and the same placement (NIfTI to float
-// precision). A
-// writer may refuse only with one line naming the file (NIfTI: an axis over 32767 voxels, a
-// placement float32 cannot hold).
+// precision). A writer may refuse only with one line naming the file (NIfTI: an axis over
+// 32767 voxels, a placement float32 cannot hold).
 void checkWrittenBack(const Volume& volume, const std::string& folder);
 
 }  // namespace ewa::fuzz

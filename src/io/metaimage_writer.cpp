@@ -2,11 +2,11 @@
 #include "io/metaimage_writer.h"
 
 #include <cmath>
-#include <cstdio>
 #include <vector>
 
 #include "io/byte_order.h"
 #include "io/deflate_encode.h"
+#include "io/text_numbers.h"
 
 namespace ewa {
 
@@ -26,14 +26,10 @@ const char* metaType(ScalarType type) {
   return "MET_UCHAR";
 }
 
-// Shortest text that reads back as the same double.
+// The values to the last digit, separated by spaces.
 std::string numbers(std::initializer_list<double> values) {
   std::string out;
-  for (double v : values) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", v);
-    out += (out.empty() ? "" : " ") + std::string(text);
-  }
+  for (double v : values) out += (out.empty() ? "" : " ") + roundTripText(v);
   return out;
 }
 

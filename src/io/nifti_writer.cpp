@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/volume_orientation.h"
 #include "io/byte_order.h"
 #include "io/nifti_header.h"
 
@@ -103,13 +104,6 @@ void toQuaternion(glm::dmat3 r, double q[3], double* qfac) {
   q[0] = b, q[1] = c, q[2] = d;
 }
 
-bool orthonormal(const glm::dmat3& m) {
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (std::abs(glm::dot(m[i], m[j]) - (i == j ? 1.0 : 0.0)) > 1e-6) return false;
-  return true;
-}
-
 }  // namespace
 
 std::string encodeNifti(const Volume& volume, const std::string& name) {
@@ -154,7 +148,7 @@ std::string encodeNifti(const Volume& volume, const std::string& name) {
     h.i16(254, 1);  // sform_code: scanner
     glm::dmat3 rotation;
     for (int a = 0; a < 3; ++a) rotation[a] = toRas * direction[a];
-    if (orthonormal(rotation)) {
+    if (isOrthonormal(rotation, 1e-6)) {
       double q[3];
       toQuaternion(rotation, q, &qfac);
       for (int i = 0; i < 3; ++i) h.f32(256 + 4 * size_t(i), q[i]);

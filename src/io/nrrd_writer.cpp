@@ -1,11 +1,11 @@
 // Encoding a volume as an attached, gzip-compressed NRRD file (--save-volume: writeVolume).
 #include "io/nrrd_writer.h"
 
-#include <cstdio>
 #include <stdexcept>
 
 #include "io/byte_order.h"
 #include "io/deflate_encode.h"
+#include "io/text_numbers.h"
 
 namespace ewa {
 
@@ -16,15 +16,8 @@ const char* nrrdType(ScalarType type) {
   return type == ScalarType::Float32 ? "float" : scalarName(type);
 }
 
-// Shortest text that reads back as the same double.
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return text;
-}
-
 std::string vectorText(const glm::dvec3& v) {
-  return "(" + number(v.x) + "," + number(v.y) + "," + number(v.z) + ")";
+  return "(" + roundTripText(v.x) + "," + roundTripText(v.y) + "," + roundTripText(v.z) + ")";
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Numbers and hex bytes read from text data, bounded by the text before anything is allocated.
 #include "io/text_numbers.h"
 
+#include <cstdio>
 #include <cstdlib>
 
 #include "io/file_bytes.h"
@@ -97,6 +98,12 @@ std::vector<uint8_t> readHexBytes(const std::string& path, uint64_t offset, uint
     bytes[i] = uint8_t(byte);
   }
   return bytes;
+}
+
+std::string roundTripText(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
 }
 
 }  // namespace ewa

@@ -17,6 +17,9 @@ std::vector<double> readTextNumbers(const std::string& path, uint64_t offset, ui
 std::vector<double> parseTextNumbers(const std::string& path, std::string_view text, uint64_t count,
                                      const std::string& what);
 
+// `v` as text that reads back as the same double ("%.17g"): what the writers put in headers.
+std::string roundTripText(double v);
+
 // `count` bytes written as pairs of hex digits (white space anywhere) from `offset`.
 std::vector<uint8_t> readHexBytes(const std::string& path, uint64_t offset, uint64_t count,
                                   const std::string& what);

@@ -1,36 +1,42 @@
 // Writing a volume in the format its file name asks for: NRRD, NIfTI or MetaImage (--save-volume).
 #include "io/volume_writer.h"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <stdexcept>
+#include <utility>
 
 #include "io/atomic_file.h"
 #include "io/deflate_encode.h"
 #include "io/metaimage_writer.h"
 #include "io/nifti_writer.h"
 #include "io/nrrd_writer.h"
+#include "io/text_fields.h"
 
 namespace ewa {
 
 namespace {
 
-bool endsWith(const std::string& name, const std::string& suffix) {
-  return name.size() > suffix.size() &&
-         name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
+// Each format by the ending of its names.
+const std::pair<const char*, SavedVolumeFormat> kFormats[] = {
+    {".nrrd", SavedVolumeFormat::Nrrd},
+    {".nii", SavedVolumeFormat::Nifti},
+    {".nii.gz", SavedVolumeFormat::NiftiGzip},
+    {".mha", SavedVolumeFormat::MetaImage}};
 
 }  // namespace
 
+std::vector<std::string> savedVolumeExtensions() {
+  std::vector<std::string> out;
+  for (const auto& [suffix, format] : kFormats) out.emplace_back(suffix);
+  return out;
+}
+
 std::optional<SavedVolumeFormat> savedVolumeFormat(const std::string& path) {
-  std::string name = std::filesystem::path(path).filename().string();
-  std::transform(name.begin(), name.end(), name.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  if (endsWith(name, ".nrrd")) return SavedVolumeFormat::Nrrd;
-  if (endsWith(name, ".nii")) return SavedVolumeFormat::Nifti;
-  if (endsWith(name, ".nii.gz")) return SavedVolumeFormat::NiftiGzip;
-  if (endsWith(name, ".mha")) return SavedVolumeFormat::MetaImage;
+  const std::string name = toLower(std::filesystem::path(path).filename().string());
+  for (const auto& [suffix, format] : kFormats) {
+    const size_t n = std::char_traits<char>::length(suffix);
+    if (name.size() > n && name.compare(name.size() - n, n, suffix) == 0) return format;
+  }
   return std::nullopt;
 }
 

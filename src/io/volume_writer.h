@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/volume.h"
 
@@ -12,6 +13,10 @@ enum class SavedVolumeFormat { Nrrd, Nifti, NiftiGzip, MetaImage };
 
 // The names a volume can be saved under, for messages: ".nrrd, .nii, .nii.gz or .mha".
 constexpr const char* kSavedVolumeExtensions = ".nrrd, .nii, .nii.gz or .mha";
+
+// The endings savedVolumeFormat knows: ".nrrd", ".nii", ".nii.gz", ".mha" (the save dialog's
+// list).
+std::vector<std::string> savedVolumeExtensions();
 
 // The format the file name of `path` ends in (".nrrd", ".nii", ".nii.gz", ".mha", any case,
 // with a name before it), or none.

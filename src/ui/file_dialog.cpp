@@ -36,9 +36,7 @@ void FileDialog::changeFolder(const std::string& folder) {
   if (ec) canonical = folder;
   try {
     const std::vector<std::string> kinds =
-        purpose_ == Purpose::SaveVolume
-            ? std::vector<std::string>{".nrrd", ".nii", ".nii.gz", ".mha"}
-            : volumeFileExtensions();
+        purpose_ == Purpose::SaveVolume ? savedVolumeExtensions() : volumeFileExtensions();
     entries_ = listDirectory(canonical.string(), allFiles_ ? std::vector<std::string>{} : kinds);
     folder_ = canonical.string();
     error_.clear();

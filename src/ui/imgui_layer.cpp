@@ -49,11 +49,11 @@ void ImGuiLayer::shutdown() {
 
 void ImGuiLayer::onKey(GLFWwindow*, int key, int scancode, int action, int mods) {
   auto* self = static_cast<ImGuiLayer*>(ImGui::GetIO().UserData);
+  if (!self) return;
   const KeyChange change = action == GLFW_PRESS     ? KeyChange::Press
                            : action == GLFW_RELEASE ? KeyChange::Release
                                                     : KeyChange::Repeat;
   const KeyEvent e{key, scancode, action, mods, change};
-  if (!self) return;
   const bool passed = self->keys_.arrive(e);
   if (self->keyLog_) {
     std::printf("key %d %d %s\n", key, action, passed ? "passed" : "held");
