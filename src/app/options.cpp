@@ -316,7 +316,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
           "or --pick");
     if (!savedVolumeFormat(o->saveVolume))
       return usage("--save-volume " + o->saveVolume + ": the file must end in " +
-                   kSavedVolumeExtensions);
+                   savedVolumeExtensionsText());
   }
   if (!pick.empty()) {
     if (o->info || !o->output.empty())

@@ -132,6 +132,7 @@ TiffPlaneOrder omeOrder(const std::string& path, const std::string& text, int64_
       return u.empty() ? std::string("\xC2\xB5m") : u;
     };
     o.unit = unitOf("PhysicalSizeXUnit");
+    if (o.unit == "reference frame" || o.unit == "pixel") o.unit.clear();  // OME's "no length"
     auto inXUnits = [&](const char* size, const char* unit) {
       const double from = metres(unitOf(unit)), to = metres(o.unit);
       const double v = positive(value(size));

@@ -1,4 +1,5 @@
-// Writing a volume in the format its file name asks for: NRRD, NIfTI or MetaImage (--save-volume).
+// Writing a volume in the format its file name asks for: NRRD, NIfTI, MetaImage or TIFF
+// (--save-volume).
 #include "io/volume_writer.h"
 
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include "io/nifti_writer.h"
 #include "io/nrrd_writer.h"
 #include "io/text_fields.h"
+#include "io/tiff_writer.h"
 
 namespace ewa {
 
@@ -18,16 +20,23 @@ namespace {
 
 // Each format by the ending of its names.
 const std::pair<const char*, SavedVolumeFormat> kFormats[] = {
-    {".nrrd", SavedVolumeFormat::Nrrd},
-    {".nii", SavedVolumeFormat::Nifti},
-    {".nii.gz", SavedVolumeFormat::NiftiGzip},
-    {".mha", SavedVolumeFormat::MetaImage}};
+    {".nrrd", SavedVolumeFormat::Nrrd},        {".nii", SavedVolumeFormat::Nifti},
+    {".nii.gz", SavedVolumeFormat::NiftiGzip}, {".mha", SavedVolumeFormat::MetaImage},
+    {".tif", SavedVolumeFormat::Tiff},         {".tiff", SavedVolumeFormat::Tiff}};
 
 }  // namespace
 
 std::vector<std::string> savedVolumeExtensions() {
   std::vector<std::string> out;
   for (const auto& [suffix, format] : kFormats) out.emplace_back(suffix);
+  return out;
+}
+
+std::string savedVolumeExtensionsText() {
+  const std::vector<std::string> endings = savedVolumeExtensions();
+  std::string out;
+  for (size_t n = 0; n < endings.size(); ++n)
+    out += (n == 0 ? "" : n + 1 == endings.size() ? " or " : ", ") + endings[n];
   return out;
 }
 
@@ -40,12 +49,35 @@ std::optional<SavedVolumeFormat> savedVolumeFormat(const std::string& path) {
   return std::nullopt;
 }
 
+std::string savedVolumeExtension(SavedVolumeFormat format) {
+  switch (format) {
+    case SavedVolumeFormat::Nrrd:
+      return ".nrrd";
+    case SavedVolumeFormat::Nifti:
+    case SavedVolumeFormat::NiftiGzip:
+      return ".nii.gz";
+    case SavedVolumeFormat::MetaImage:
+      return ".mha";
+    case SavedVolumeFormat::Tiff:
+      return ".tif";
+  }
+  return ".nrrd";
+}
+
+std::vector<std::string> savedVolumeLosses(const std::string& path, const Volume& volume) {
+  if (savedVolumeFormat(path) == SavedVolumeFormat::Tiff) return tiffLosses(volume);
+  return {};
+}
+
 void writeVolume(const std::string& path, const Volume& volume) {
   const auto format = savedVolumeFormat(path);
-  if (!format) throw std::runtime_error(path + ": volumes are saved as " + kSavedVolumeExtensions);
+  if (!format)
+    throw std::runtime_error(path + ": volumes are saved as " + savedVolumeExtensionsText());
   if (*format == SavedVolumeFormat::Nrrd) return writeFileAtomically(path, encodeNrrd(volume));
   if (*format == SavedVolumeFormat::MetaImage)
     return writeFileAtomically(path, encodeMetaImage(volume));
+  if (*format == SavedVolumeFormat::Tiff)
+    return writeFileAtomically(path, encodeTiff(volume, path));
   const std::string nifti = encodeNifti(volume, path);
   if (*format == SavedVolumeFormat::Nifti) return writeFileAtomically(path, nifti);
   writeFileAtomically(path,

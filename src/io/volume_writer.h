@@ -1,4 +1,5 @@
-// Writing a volume in the format its file name asks for: NRRD, NIfTI or MetaImage (--save-volume).
+// Writing a volume in the format its file name asks for: NRRD, NIfTI, MetaImage or TIFF
+// (--save-volume).
 #pragma once
 
 #include <optional>
@@ -9,22 +10,28 @@
 
 namespace ewa {
 
-enum class SavedVolumeFormat { Nrrd, Nifti, NiftiGzip, MetaImage };
+enum class SavedVolumeFormat { Nrrd, Nifti, NiftiGzip, MetaImage, Tiff };
 
-// The names a volume can be saved under, for messages: ".nrrd, .nii, .nii.gz or .mha".
-constexpr const char* kSavedVolumeExtensions = ".nrrd, .nii, .nii.gz or .mha";
-
-// The endings savedVolumeFormat knows: ".nrrd", ".nii", ".nii.gz", ".mha" (the save dialog's
-// list).
+// The endings savedVolumeFormat knows: ".nrrd", ".nii", ".nii.gz", ".mha", ".tif", ".tiff" (the
+// save dialog's list).
 std::vector<std::string> savedVolumeExtensions();
+// The same for messages: ".nrrd, .nii, .nii.gz, .mha, .tif or .tiff".
+std::string savedVolumeExtensionsText();
 
-// The format the file name of `path` ends in (".nrrd", ".nii", ".nii.gz", ".mha", any case,
-// with a name before it), or none.
+// The format the file name of `path` ends in (one of those endings, any case, with a name before
+// it), or none.
 std::optional<SavedVolumeFormat> savedVolumeFormat(const std::string& path);
+
+// The ending a new file of `format` gets: ".nrrd", ".nii.gz" (NIfTI, either), ".mha", ".tif".
+std::string savedVolumeExtension(SavedVolumeFormat format);
+
+// What the format `path` asks for cannot keep of `volume`, one note each (TIFF: tiffLosses);
+// empty when it keeps what loadVolume gives back, and for a name of no format.
+std::vector<std::string> savedVolumeLosses(const std::string& path, const Volume& volume);
 
 // `volume` written to `path` atomically in the format its name asks for: a gzip NRRD
 // (encodeNrrd), a NIfTI-1 file (encodeNifti) or one gzip-compressed, or a MetaImage file with
-// its data inside (encodeMetaImage). Throws
+// its data inside (encodeMetaImage), or an OME-TIFF stack (encodeTiff). Throws
 // std::runtime_error("<path>: ...") for another name, a volume the format cannot hold and a
 // file that cannot be written.
 void writeVolume(const std::string& path, const Volume& volume);

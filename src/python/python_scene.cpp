@@ -270,8 +270,15 @@ py::dict PythonScene::info() const {
 
 void PythonScene::saveVolume(const std::string& path, const py::object& crop) const {
   if (!savedVolumeFormat(path))
-    throw UsageError("save_volume: " + path + ": the file must end in " + kSavedVolumeExtensions);
-  if (crop.is_none()) return writeVolume(path, *volume_);
+    throw UsageError("save_volume: " + path + ": the file must end in " +
+                     savedVolumeExtensionsText());
+  // What the format leaves out comes as Python warnings, as --save-volume's notes.
+  auto write = [&](const Volume& v) {
+    writeVolume(path, v);
+    for (const std::string& loss : savedVolumeLosses(path, v))
+      py::module_::import("warnings").attr("warn")(path + ": " + loss);
+  };
+  if (crop.is_none()) return write(*volume_);
   py::dict box;
   box["crop"] = crop;  // read as --crop reads it, with its messages
   const Options options = parseOptionWords(optionWords(box));
@@ -281,7 +288,7 @@ void PythonScene::saveVolume(const std::string& path, const py::object& crop) co
   } catch (const std::runtime_error& e) {
     throw UsageError(e.what());  // a box beside the volume: the argument is wrong
   }
-  writeVolume(path, cropped ? *cropped : *volume_);
+  write(cropped ? *cropped : *volume_);
 }
 
 py::array PythonScene::array() const {

@@ -59,8 +59,8 @@ std::optional<std::string> FileDialog::accept() {
   if (purpose_ == Purpose::Open) return path.string();
   if (path.extension().empty()) path += ".nrrd";
   if (!savedVolumeFormat(path.string())) {
-    error_ = std::string("volumes are saved as NRRD, NIfTI or MetaImage: name the file NAME") +
-             kSavedVolumeExtensions;
+    error_ = "volumes are saved as NRRD, NIfTI, MetaImage or TIFF: name the file NAME" +
+             savedVolumeExtensionsText();
     return std::nullopt;
   }
   if (!fs::is_directory(path.parent_path(), ec)) {

@@ -245,8 +245,8 @@ void ViewerWindow::openDialog() {
 }
 
 // Offered as NAME.nrrd (NAME-fF-cC.nrrd for a page of a file of several; NAME-2.nrrd... when
-// taken) in the file's folder; a NIfTI file's as NAME.nii.gz and a MetaImage file's as
-// NAME.mha, the format its users have.
+// taken) in the file's folder; a NIfTI file's as NAME.nii.gz, a MetaImage file's as NAME.mha
+// and a TIFF file's as NAME.tif, the format its users have.
 void ViewerWindow::saveDialog() {
   namespace fs = std::filesystem;
   const Volume& v = *current_.volume;
@@ -254,10 +254,8 @@ void ViewerWindow::saveDialog() {
       current_.path.empty() ? current_.name : fs::path(current_.path).stem().string();
   if (name.size() > 4 && name.compare(name.size() - 4, 4, ".nii") == 0)
     name.resize(name.size() - 4);
-  const auto format = savedVolumeFormat(current_.path).value_or(SavedVolumeFormat::Nrrd);
-  const std::string extension = format == SavedVolumeFormat::Nrrd        ? ".nrrd"
-                                : format == SavedVolumeFormat::MetaImage ? ".mha"
-                                                                         : ".nii.gz";
+  const std::string extension =
+      savedVolumeExtension(savedVolumeFormat(current_.path).value_or(SavedVolumeFormat::Nrrd));
   if (v.frameCount() > 1) name += "-f" + std::to_string(v.frame());
   if (v.channelCount() > 1) name += "-c" + std::to_string(v.channel());
   for (char& c : name)

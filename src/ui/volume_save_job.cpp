@@ -3,11 +3,23 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <vector>
 
 #include "io/transfer_function_io.h"
 #include "io/volume_writer.h"
 
 namespace ewa {
+
+namespace {
+
+// "; TIFF keeps no origin ...; ..." after the message, or "".
+std::string lossText(const std::vector<std::string>& losses) {
+  std::string out;
+  for (const std::string& loss : losses) out += "; " + loss;
+  return out;
+}
+
+}  // namespace
 
 void VolumeSaveJob::start(std::shared_ptr<const Volume> volume, TransferFunction tf,
                           const std::string& path, std::optional<VoxelRange> crop) {
@@ -16,18 +28,24 @@ void VolumeSaveJob::start(std::shared_ptr<const Volume> volume, TransferFunction
   // The volume is shared, not copied: the window may open another meanwhile.
   future_ =
       std::async(std::launch::async, [volume = std::move(volume), tf = std::move(tf), path, crop] {
-        if (crop)
-          writeVolume(path, cropVolume(*volume, *crop));
-        else
+        std::vector<std::string> losses;
+        if (crop) {
+          const Volume cropped = cropVolume(*volume, *crop);
+          writeVolume(path, cropped);
+          losses = savedVolumeLosses(path, cropped);
+        } else {
           writeVolume(path, *volume);  // not copied
+          losses = savedVolumeLosses(path, *volume);
+        }
         const std::string sidecar = sidecarTransferFunctionPath(path);
         saveTransferFunction(sidecar, tf);
         std::error_code ec;
         const auto bytes = std::filesystem::file_size(path, ec);
         char size[48];
         std::snprintf(size, sizeof size, " (%.1f MB)", ec ? 0.0 : double(bytes) / 1e6);
-        return "saved " + path + size + " and its transfer function " +
-               std::filesystem::path(sidecar).filename().string();
+        return Saved{"saved " + path + size + " and its transfer function " +
+                         std::filesystem::path(sidecar).filename().string(),
+                     lossText(losses)};
       });
 }
 
@@ -42,7 +60,8 @@ bool VolumeSaveJob::poll(std::string* text, bool* failed) {
   try {
     char took[32];
     std::snprintf(took, sizeof took, " in %.1f s", seconds);
-    *text = future_.get() + took;
+    const Saved saved = future_.get();
+    *text = saved.text + took + saved.losses;
     *failed = false;
   } catch (const std::exception& e) {
     *text = e.what();

@@ -1,5 +1,5 @@
-// VolumeSaveJob: writes the volume on screen as NRRD, with its transfer function beside it, on a
-// worker thread, so the window keeps drawing while a large volume is compressed.
+// VolumeSaveJob: writes the volume on screen (NRRD, NIfTI, MetaImage or TIFF), with its transfer
+// function beside it, on a worker thread, so the window keeps drawing while it is compressed.
 #pragma once
 
 #include <chrono>
@@ -25,12 +25,17 @@ class VolumeSaveJob {
   const std::string& path() const { return path_; }
   double elapsedSeconds() const;
   // Once the work is done: true, with `text` saying what was written ("saved PATH (N MB) and
-  // its transfer function in T s"), or the one-line problem with `failed` set. False while still
+  // its transfer function in T s", then "; " and each thing the format left out:
+  // savedVolumeLosses), or the one-line problem with `failed` set. False while still
   // running (or when nothing was started).
   bool poll(std::string* text, bool* failed);
 
  private:
-  std::future<std::string> future_;
+  struct Saved {
+    std::string text;    // "saved PATH ..."
+    std::string losses;  // "; ..." for each, or ""
+  };
+  std::future<Saved> future_;
   std::string path_;
   std::chrono::steady_clock::time_point started_;
 };

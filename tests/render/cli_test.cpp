@@ -185,7 +185,8 @@ TEST(Cli, SpacingReplacesTheFilesForAFolderOfImageSlices) {
       << r.out;
   r = ewaview(dir + " --save-volume " + dir + "/v.png");
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("the file must end in .nrrd, .nii, .nii.gz or .mha"), std::string::npos)
+  EXPECT_NE(r.err.find("the file must end in .nrrd, .nii, .nii.gz, .mha, .tif or .tiff"),
+            std::string::npos)
       << r.err;
   r = ewaview(dir + " --info --spacing 1,-1,1");
   EXPECT_EQ(r.code, 2);
@@ -218,6 +219,20 @@ TEST(Cli, SaveVolumeWithACropBoxWritesItsVoxels) {
         << r.out;
     EXPECT_NE(r.out.find("\"origin\":[4.0,0.0,20.0]"), std::string::npos) << r.out;
   }
+  // As TIFF the voxels and spacing, and a one-line note that the origin is not kept.
+  r = ewaview("--synthetic sphere:32 --crop 3.5,10.2,-9,99,20,40 --save-volume " + dir +
+              "/part.tif");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("ewaview: note: " + dir +
+                       "/part.tif: TIFF keeps no origin: the file reads "
+                       "back at 0, 0, 0 (not 4, 0, 20)"),
+            std::string::npos)
+      << r.err;
+  r = ewaview(dir + "/part.tif --info");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"dims\":[7,32,12],\"spacing\":[1.0,1.0,1.0]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"origin\":[0.0,0.0,0.0]"), std::string::npos) << r.out;
   r = ewaview("--synthetic sphere:32 --crop 40,50,0,9,0,9 --save-volume " + dir + "/none.nrrd");
   EXPECT_EQ(r.code, 1);
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
