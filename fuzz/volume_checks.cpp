@@ -48,7 +48,7 @@ void checkVolume(const Volume& v) {
 
 void checkWrittenBack(const Volume& v, const std::string& folder) {
   if (v.voxelCount() > (int64_t{1} << 16)) return;
-  for (const char* name : {"back.nrrd", "back.nii", "back.mha", "back.tif"}) {
+  for (const char* name : {"back.nrrd", "back.nii", "back.mha", "back.mhd", "back.tif"}) {
     const std::string path = folder + "/" + name;
     const bool nifti = savedVolumeFormat(path) == SavedVolumeFormat::Nifti;
     const bool tiff = savedVolumeFormat(path) == SavedVolumeFormat::Tiff;

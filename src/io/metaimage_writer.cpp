@@ -49,20 +49,15 @@ std::string anatomicalOrientation(const glm::dmat3& direction) {
   return code;
 }
 
-}  // namespace
-
-std::string encodeMetaImage(const Volume& volume) {
-  std::vector<uint8_t> bytes = volume.bytes();
-  if (hostIsBigEndian()) swapBytes(bytes.data(), bytes.size(), scalarSize(volume.type()));
-  const std::string data = zlibBytes(bytes.data(), bytes.size());
+// The header's lines up to ElementType; the data's lines follow.
+std::string headerLines(const Volume& volume, const std::string& compressed) {
   const glm::dmat3& d = volume.direction();
   const glm::dvec3& s = volume.spacing();
   const glm::dvec3& o = volume.origin();
   const auto& n = volume.dims();
   std::string h =
-      "ObjectType = Image\nNDims = 3\nBinaryData = True\n"
-      "BinaryDataByteOrderMSB = False\nCompressedData = True\n";
-  h += "CompressedDataSize = " + std::to_string(data.size()) + "\n";
+      "ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = False\n";
+  h += compressed;
   h += "TransformMatrix = " +
        numbers({d[0].x, d[0].y, d[0].z, d[1].x, d[1].y, d[1].z, d[2].x, d[2].y, d[2].z}) + "\n";
   h += "Offset = " + numbers({o.x, o.y, o.z}) + "\n";
@@ -71,9 +66,27 @@ std::string encodeMetaImage(const Volume& volume) {
   h += "ElementSpacing = " + numbers({s.x, s.y, s.z}) + "\n";
   h += "DimSize = " + std::to_string(n[0]) + " " + std::to_string(n[1]) + " " +
        std::to_string(n[2]) + "\n";
-  h += std::string("ElementType = ") + metaType(volume.type()) + "\n";
-  h += "ElementDataFile = LOCAL\n";
-  return h + data;
+  return h + "ElementType = " + metaType(volume.type()) + "\n";
+}
+
+}  // namespace
+
+std::vector<uint8_t> metaImageData(const Volume& volume) {
+  std::vector<uint8_t> bytes = volume.bytes();
+  if (hostIsBigEndian()) swapBytes(bytes.data(), bytes.size(), scalarSize(volume.type()));
+  return bytes;
+}
+
+std::string encodeMetaImage(const Volume& volume) {
+  const std::vector<uint8_t> bytes = metaImageData(volume);
+  const std::string data = zlibBytes(bytes.data(), bytes.size());
+  return headerLines(volume, "CompressedData = True\nCompressedDataSize = " +
+                                 std::to_string(data.size()) + "\n") +
+         "ElementDataFile = LOCAL\n" + data;
+}
+
+std::string encodeMetaImageHeader(const Volume& volume, const std::string& dataFile) {
+  return headerLines(volume, "CompressedData = False\n") + "ElementDataFile = " + dataFile + "\n";
 }
 
 }  // namespace ewa

@@ -1,7 +1,10 @@
-// Encoding a volume as a MetaImage file with its data inside (.mha, zlib): --save-volume.
+// Encoding a volume as MetaImage: one file with its data inside (.mha, zlib), or a header
+// (.mhd) and its raw data beside it: --save-volume.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/volume.h"
 
@@ -15,5 +18,12 @@ namespace ewa {
 // from, RAI for the identity), which loadVolume reads as patient axes. MetaImage has no unit
 // or notes: they are not written.
 std::string encodeMetaImage(const Volume& volume);
+
+// The .mhd header of a detached pair: the same fields, uncompressed, ElementDataFile naming
+// `dataFile` (a file beside the header that holds metaImageData).
+std::string encodeMetaImageHeader(const Volume& volume, const std::string& dataFile);
+
+// The voxels as MetaImage stores them: little-endian, in the volume's type.
+std::vector<uint8_t> metaImageData(const Volume& volume);
 
 }  // namespace ewa

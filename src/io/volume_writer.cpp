@@ -20,9 +20,13 @@ namespace {
 
 // Each format by the ending of its names.
 const std::pair<const char*, SavedVolumeFormat> kFormats[] = {
-    {".nrrd", SavedVolumeFormat::Nrrd},        {".nii", SavedVolumeFormat::Nifti},
-    {".nii.gz", SavedVolumeFormat::NiftiGzip}, {".mha", SavedVolumeFormat::MetaImage},
-    {".tif", SavedVolumeFormat::Tiff},         {".tiff", SavedVolumeFormat::Tiff}};
+    {".nrrd", SavedVolumeFormat::Nrrd},
+    {".nii", SavedVolumeFormat::Nifti},
+    {".nii.gz", SavedVolumeFormat::NiftiGzip},
+    {".mha", SavedVolumeFormat::MetaImage},
+    {".mhd", SavedVolumeFormat::MetaImageHeader},
+    {".tif", SavedVolumeFormat::Tiff},
+    {".tiff", SavedVolumeFormat::Tiff}};
 
 }  // namespace
 
@@ -58,6 +62,8 @@ std::string savedVolumeExtension(SavedVolumeFormat format) {
       return ".nii.gz";
     case SavedVolumeFormat::MetaImage:
       return ".mha";
+    case SavedVolumeFormat::MetaImageHeader:
+      return ".mhd";
     case SavedVolumeFormat::Tiff:
       return ".tif";
   }
@@ -76,12 +82,25 @@ void writeVolume(const std::string& path, const Volume& volume) {
   if (*format == SavedVolumeFormat::Nrrd) return writeFileAtomically(path, encodeNrrd(volume));
   if (*format == SavedVolumeFormat::MetaImage)
     return writeFileAtomically(path, encodeMetaImage(volume));
+  if (*format == SavedVolumeFormat::MetaImageHeader) {
+    // The data first: a header is never left naming a file not yet there.
+    const std::string data = metaImageDataPath(path);
+    const std::vector<uint8_t> bytes = metaImageData(volume);
+    writeFileAtomically(
+        data, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    return writeFileAtomically(
+        path, encodeMetaImageHeader(volume, std::filesystem::path(data).filename().string()));
+  }
   if (*format == SavedVolumeFormat::Tiff)
     return writeFileAtomically(path, encodeTiff(volume, path));
   const std::string nifti = encodeNifti(volume, path);
   if (*format == SavedVolumeFormat::Nifti) return writeFileAtomically(path, nifti);
   writeFileAtomically(path,
                       gzipBytes(reinterpret_cast<const uint8_t*>(nifti.data()), nifti.size()));
+}
+
+std::string metaImageDataPath(const std::string& path) {
+  return std::filesystem::path(path).replace_extension(".raw").string();
 }
 
 }  // namespace ewa

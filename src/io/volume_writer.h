@@ -10,19 +10,20 @@
 
 namespace ewa {
 
-enum class SavedVolumeFormat { Nrrd, Nifti, NiftiGzip, MetaImage, Tiff };
+enum class SavedVolumeFormat { Nrrd, Nifti, NiftiGzip, MetaImage, MetaImageHeader, Tiff };
 
-// The endings savedVolumeFormat knows: ".nrrd", ".nii", ".nii.gz", ".mha", ".tif", ".tiff" (the
-// save dialog's list).
+// The endings savedVolumeFormat knows: ".nrrd", ".nii", ".nii.gz", ".mha", ".mhd", ".tif", ".tiff"
+// (the save dialog's list).
 std::vector<std::string> savedVolumeExtensions();
-// The same for messages: ".nrrd, .nii, .nii.gz, .mha, .tif or .tiff".
+// The same for messages: ".nrrd, .nii, .nii.gz, .mha, .mhd, .tif or .tiff".
 std::string savedVolumeExtensionsText();
 
 // The format the file name of `path` ends in (one of those endings, any case, with a name before
 // it), or none.
 std::optional<SavedVolumeFormat> savedVolumeFormat(const std::string& path);
 
-// The ending a new file of `format` gets: ".nrrd", ".nii.gz" (NIfTI, either), ".mha", ".tif".
+// The ending a new file of `format` gets: ".nrrd", ".nii.gz" (NIfTI, either), ".mha", ".mhd",
+// ".tif".
 std::string savedVolumeExtension(SavedVolumeFormat format);
 
 // What the format `path` asks for cannot keep of `volume`, one note each (TIFF: tiffLosses);
@@ -31,9 +32,13 @@ std::vector<std::string> savedVolumeLosses(const std::string& path, const Volume
 
 // `volume` written to `path` atomically in the format its name asks for: a gzip NRRD
 // (encodeNrrd), a NIfTI-1 file (encodeNifti) or one gzip-compressed, or a MetaImage file with
-// its data inside (encodeMetaImage), or an OME-TIFF stack (encodeTiff). Throws
+// its data inside (encodeMetaImage), a MetaImage header and its data beside it (NAME.mhd and
+// NAME.raw: metaImageDataPath; the data written first), or an OME-TIFF stack (encodeTiff). Throws
 // std::runtime_error("<path>: ...") for another name, a volume the format cannot hold and a
 // file that cannot be written.
 void writeVolume(const std::string& path, const Volume& volume);
+
+// The raw data file a MetaImage header `path` (NAME.mhd) is written with: NAME.raw beside it.
+std::string metaImageDataPath(const std::string& path);
 
 }  // namespace ewa

@@ -67,8 +67,17 @@ std::optional<std::string> FileDialog::accept() {
     error_ = "no such folder: " + path.parent_path().string();
     return std::nullopt;
   }
-  if (fs::exists(path, ec)) {
+  // A MetaImage header (.mhd) replaces its NAME.raw too.
+  std::vector<std::string> existing;
+  if (fs::exists(path, ec)) existing.push_back(path.filename().string());
+  if (savedVolumeFormat(path.string()) == SavedVolumeFormat::MetaImageHeader) {
+    const fs::path data = metaImageDataPath(path.string());
+    if (fs::exists(data, ec)) existing.push_back(data.filename().string());
+  }
+  if (!existing.empty()) {
     replacing_ = path.string();
+    replacingText_ = existing.size() == 1 ? existing[0] + " exists."
+                                          : existing[0] + " and " + existing[1] + " exist.";
     askReplace_ = true;  // the popup opens at the window's level, not inside the list
     return std::nullopt;
   }
@@ -80,7 +89,7 @@ std::optional<std::string> FileDialog::drawReplacePrompt() {
   if (askReplace_) ImGui::OpenPopup("Replace file?");
   askReplace_ = false;
   if (ImGui::BeginPopupModal("Replace file?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::Text("%s exists.", fs::path(replacing_).filename().c_str());
+    ImGui::TextUnformatted(replacingText_.c_str());
     if (ImGui::Button("Replace")) {
       chosen = replacing_;
       ImGui::CloseCurrentPopup();

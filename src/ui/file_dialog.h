@@ -41,7 +41,8 @@ class FileDialog {
   std::string folder_;
   std::vector<DirEntry> entries_;
   std::string error_;
-  std::string replacing_;  // an existing file waiting for "Replace"
+  std::string replacing_;      // an existing file waiting for "Replace"
+  std::string replacingText_;  // "NAME exists." (or both files of a .mhd pair)
   bool askReplace_ = false;
   std::string optionLabel_;
   bool optionChecked_ = true;

@@ -119,7 +119,7 @@ def test_numpy_array_equals_the_same_voxels_read_as_raw(cli, out_dir):
     assert tiff.info["dims"] == [4, 5, 3] and tiff.info["spacing"] == [1, 1.5, 2]
     assert tiff.info["origin"] == [0, 0, 0]
     assert np.array_equal(tiff.array, data[0:3, 2:7, 2:6])
-    with pytest.raises(ValueError, match="must end in .nrrd, .nii, .nii.gz, .mha, .tif or .tiff"):
+    with pytest.raises(ValueError, match="must end in .nrrd, .nii, .nii.gz, .mha, .mhd, .tif or .tiff"):
         plain.save_volume(str(out_dir / "ball.png"))
     # float64 arrays become float32 volumes; non-contiguous views are copied in [z, y, x] order.
     assert ewaview.Scene(data.astype(np.float64)).info["type"] == "float32"

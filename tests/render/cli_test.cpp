@@ -185,7 +185,7 @@ TEST(Cli, SpacingReplacesTheFilesForAFolderOfImageSlices) {
       << r.out;
   r = ewaview(dir + " --save-volume " + dir + "/v.png");
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("the file must end in .nrrd, .nii, .nii.gz, .mha, .tif or .tiff"),
+  EXPECT_NE(r.err.find("the file must end in .nrrd, .nii, .nii.gz, .mha, .mhd, .tif or .tiff"),
             std::string::npos)
       << r.err;
   r = ewaview(dir + " --info --spacing 1,-1,1");

@@ -54,6 +54,31 @@ TEST(MetaImageWriter, WhatIsReadBackIsTheVolumeWritten) {
   EXPECT_EQ(headerLine(readTextFile(dir.path("v3.mha")), "ElementType"), "ElementType = MET_FLOAT");
 }
 
+// A header (.mhd) and its raw data beside it read back as the volume written; the data are
+// the voxels as they are, little-endian, and the header names them.
+TEST(MetaImageWriter, AHeaderAndItsDataBesideItReadBack) {
+  TempDir dir;
+  std::vector<Volume> volumes = rampVolumesOfEveryType();
+  volumes[3].setDirection(
+      glm::dmat3(glm::rotate(glm::dmat4(1.0), -0.7, glm::normalize(glm::dvec3(3, 1, 2)))), true);
+  int n = 0;
+  for (const Volume& v : volumes) {
+    SCOPED_TRACE(scalarName(v.type()));
+    const std::string path = dir.path("v" + std::to_string(n++) + ".mhd");
+    writeVolume(path, v);
+    expectSameVolume(v, loadVolume(path), 1e-12);
+    const std::string header = readTextFile(path);
+    EXPECT_EQ(header.size(), header.find("ElementDataFile = ") + 18 + 7)  // "vN.raw\n" ends it
+        << header;
+    EXPECT_EQ(headerLine(header, "CompressedData"), "CompressedData = False");
+    EXPECT_EQ(readTextFile(metaImageDataPath(path)),
+              std::string(v.bytes().begin(), v.bytes().end()));  // a little-endian host
+  }
+  EXPECT_EQ(metaImageDataPath("/a/ct.scan.mhd"), "/a/ct.scan.raw");
+  EXPECT_EQ(headerLine(readTextFile(dir.path("v0.mhd")), "ElementDataFile"),
+            "ElementDataFile = v0.raw");
+}
+
 // LIDC2.mha, written by ITK (axes +x, -y, -z: "RPS"), written again names the same axes and
 // reads back the same.
 TEST(MetaImageWriter, AFileItkWroteKeepsItsPlacement) {

@@ -126,10 +126,10 @@ TEST(NiftiWriter, WhatNiftiCannotHoldIsRefusedNamingTheFile) {
         << e.what();
   }
   // A name of no format it writes.
-  EXPECT_FALSE(savedVolumeFormat("v.mhd"));
+  EXPECT_FALSE(savedVolumeFormat("v.vti"));
   EXPECT_FALSE(savedVolumeFormat(".nii"));
   EXPECT_EQ(savedVolumeFormat("dir.nii/V.NII.GZ"), SavedVolumeFormat::NiftiGzip);
-  EXPECT_THROW(writeVolume(dir.path("v.mhd"), wide), std::runtime_error);
+  EXPECT_THROW(writeVolume(dir.path("v.vti"), wide), std::runtime_error);
 }
 
 // A real file (big-endian int16 with a qform) written again as .nii.gz reads back the same.
