@@ -51,7 +51,7 @@ void ControlPanel::setVolume(std::string volumeName, const Volume& volume, bool 
   spacing_ = volume.spacing();
   spacingEdit_ = {spacing_.x, spacing_.y, spacing_.z};
   fromFile_ = fromFile;
-  printed_.clear();
+  layout_.forget();
   if (volumeName_.empty()) volumeName_ = "(unnamed volume)";
 }
 
@@ -301,26 +301,15 @@ std::optional<std::string> ControlPanel::drawSeries() {
   std::optional<std::string> chosen;
   const auto open = std::find_if(series_.begin(), series_.end(), [](auto& c) { return c.open; });
   ImGui::SetNextItemWidth(320.0f);
-  auto printRect = [&](const std::string& what) {
-    if (!printLayout_) return;
-    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    char line[128];
-    std::snprintf(line, sizeof line, "%s %.0f %.0f %.0f %.0f", what.c_str(), a.x, a.y, b.x - a.x,
-                  b.y - a.y);
-    if (printed_.find(line) != std::string::npos) return;
-    printed_ += std::string(line) + "\n";
-    std::printf("%s\n", line);
-    std::fflush(stdout);
-  };
   const bool listOpen =
       ImGui::BeginCombo("series", open == series_.end() ? "" : open->label.c_str());
-  printRect("series-list");
+  layout_.lastItem("series-list");
   if (listOpen) {
     for (size_t i = 0; i < series_.size(); ++i) {
       ImGui::PushID(int(i));  // labels may repeat
       if (ImGui::Selectable(series_[i].label.c_str(), series_[i].open) && !series_[i].open)
         chosen = series_[i].id;
-      printRect("series-entry " + std::to_string(i));
+      layout_.lastItem("series-entry " + std::to_string(i));
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("--series %s", series_[i].id.c_str());
       ImGui::PopID();
     }

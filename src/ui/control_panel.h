@@ -11,6 +11,7 @@
 #include "core/volume.h"
 #include "gl/gpu_memory.h"
 #include "render/renderer.h"
+#include "ui/layout_log.h"
 #include "ui/progressive_refinement.h"
 
 namespace ewa {
@@ -62,7 +63,7 @@ class ControlPanel {
   void setVolume(std::string volumeName, const Volume& volume, bool fromFile = false);
   // EWAVIEW_PRINT_LAYOUT: the series list's place and its entries' on stdout, for the window
   // test ("series-list X Y W H", "series-entry I X Y W H"), each once while it stays put.
-  void setPrintLayout(bool on) { printLayout_ = on; }
+  void setPrintLayout(bool on) { layout_.setOn(on); }
 
  private:
   bool drawSettings(RenderSettings& settings);
@@ -81,8 +82,7 @@ class ControlPanel {
   glm::dvec3 spacing_{1.0};                           // the volume's
   std::array<double, 3> spacingEdit_{1.0, 1.0, 1.0};  // as typed in the panel
   bool fromFile_ = false;
-  bool printLayout_ = false;
-  std::string printed_;  // the last layout line printed
+  LayoutLog layout_;
   std::array<double, 2> valueRange_{0.0, 1.0};
   bool patientFrame_ = false;  // label the axis views anatomically (LPS)
 };

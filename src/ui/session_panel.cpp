@@ -92,7 +92,9 @@ void SessionPanel::drawBookmarks(const SessionView& view, SessionEdits& edits) {
 }
 
 void SessionPanel::drawCapture(const SessionView& view, SessionEdits& edits) {
-  if (!ImGui::CollapsingHeader("Capture")) return;
+  const bool open = ImGui::CollapsingHeader("Capture");
+  layout_.lastItem("capture-header");
+  if (!open) return;
   edits.screenshot = ImGui::Button("Screenshot (F12)");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(110.0f);
@@ -135,6 +137,7 @@ void SessionPanel::drawCapture(const SessionView& view, SessionEdits& edits) {
   ImGui::BeginDisabled(!canTour);
   const bool tour = ImGui::Button("Tour");
   ImGui::EndDisabled();
+  if (canTour) layout_.lastItem("tour-button");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip(canTour ? "fly through the camera bookmarks in order"
                               : "add two camera bookmarks or more for a tour");

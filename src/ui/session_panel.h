@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "io/camera_bookmarks.h"
+#include "ui/layout_log.h"
 #include "ui/status_messages.h"
 
 namespace ewa {
@@ -49,6 +50,9 @@ class SessionPanel {
  public:
   // Adds the sections to the "ewaview" window (ImGui appends to a window begun twice).
   SessionEdits draw(const SessionView& view);
+  // EWAVIEW_PRINT_LAYOUT: the places of the bookmark and capture sections' headers and the
+  // Tour button on stdout, for the window test ("capture-header X Y W H", "tour-button ...").
+  void setPrintLayout(bool on) { layout_.setOn(on); }
 
  private:
   void drawFiles(const SessionView& view, SessionEdits& edits);
@@ -60,6 +64,7 @@ class SessionPanel {
   int turntableFrames_ = 36;
   int turntableFormat_ = 0;  // index into the panel's format list
   int turntableFps_ = 30;
+  LayoutLog layout_;
 };
 
 }  // namespace ewa

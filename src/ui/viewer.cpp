@@ -71,6 +71,7 @@ ViewerWindow::ViewerWindow(platform::GlfwWindowContext& window, LoadedVolume ini
   rendererKind_ = settings_.renderer;  // lod_ makes renderers of this kind
   printLayout_ = envFlag("EWAVIEW_PRINT_LAYOUT");
   panel_.setPrintLayout(printLayout_);
+  session_.setPrintLayout(printLayout_);
   imgui_.setKeyLog(printLayout_);
   frameLog_ = envFlag("EWAVIEW_FRAME_LOG");
   levelOfDetail_ = saved_.levelOfDetail;

@@ -120,9 +120,7 @@ void ViewerWindow::turntableFrame(const glm::ivec2& fb) {
   t.progress->update(t.done, t.total, file);
   if (t.done == t.total) {
     t.progress->finish("done");
-    messages_.post(StatusMessages::Kind::Info,
-                   "saved " + std::to_string(t.total) + " frames in " + t.sink->description(),
-                   now());
+    info("saved " + std::to_string(t.total) + " frames in " + t.sink->description());
     t = WindowTurntable{};
   }
 }

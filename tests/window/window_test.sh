@@ -2,8 +2,10 @@
 # Scripted window test: starts the real ewaview under X, replays an orbit drag, a scroll zoom, a
 # transfer-function drag, a double-click on the volume (the probe and the new centre), a mark and
 # the axes key with xdotool, and checks the screenshots change as they should; then
-# checks that an orbit drag is answered while a full-quality frame is being refined, and that
-# Page Down and Page Up page through a 4D file's frames.
+# checks that an orbit drag is answered while a full-quality frame is being refined, that
+# Page Down and Page Up page through a 4D file's frames, and the channels, saving, --watch,
+# screenshots, the Capture section's Tour through two camera bookmarks and a DICOM folder's
+# series list.
 # Usage: window_test.sh EWAVIEW_BINARY OUTPUT_DIR.  Exit 77 (CTest skip) without X tools, or
 # exit 1 when CI=true: CI must not pass by skipping.
 set -uo pipefail
@@ -441,6 +443,9 @@ PY
   mv "$1.part" "$1"  # written whole, then renamed into place, as careful writers do
 }
 ball_nrrd "$work/ball.nrrd" 9
+# Two camera bookmarks beside it, far and then near, for the tour below.
+bookmark() { printf '{"name": "%s", "position": [11.5, 11.5, %s], "focal_point": [11.5, 11.5, 11.5], "view_up": [0, 1, 0], "view_angle": 30}' "$1" "$2"; }
+printf '{"bookmarks": [%s, %s]}\n' "$(bookmark far 90)" "$(bookmark near 40)" >"$work/ball.bookmarks.json"
 # Its settings ask for screenshots at twice the window's size, in a folder of their own.
 mkdir -p "$work/config6" "$work/shots"
 printf '{"capture_scale": 2, "screenshot_dir": "%s"}\n' "$work/shots" >"$work/config6/settings.json"
@@ -466,6 +471,58 @@ shot_size=$(identify -format '%wx%h' "$shot_file") || fail "no screenshot at $sh
 [ "$shot_size" = "$((2 * width))x$((2 * height))" ] ||
   fail "the screenshot is $shot_size, not twice the window ($width x $height)"
 log "watched file reloaded: coverage $w0 -> $w1; F5 reloads; screenshot $shot_size"
+
+# Capture > Tour flies through the bookmarks (far to near) and writes 36 frames at the capture
+# size into a folder of its own. The panel is scrolled until the Capture header is in view
+# (the layout lines give each item's place as it moves), the header opened, Tour clicked.
+place_of() { grep "^$1 " "$work/stdout" | tail -1; }
+scroll_to() {  # scroll_to ITEM: the mouse wheel over the panel until ITEM lies in the window
+  local start=$SECONDS x y w h
+  while :; do
+    [ -n "$(place_of "$1")" ] && read -r _ x y w h <<<"$(place_of "$1")" &&
+      [ "$y" -ge 20 ] && [ $((y + h)) -le $((height - 2)) ] && return 0
+    [ $((SECONDS - start)) -ge 60 ] && fail "could not scroll the panel to $1 ($(place_of "$1"))"
+    xdotool mousemove --window "$wid" 200 300
+    if [ -n "$(place_of "$1")" ] && [ "$y" -lt 20 ]; then xdotool click 4; else xdotool click 5; fi
+    sleep 0.4
+  done
+}
+click_item() {  # click_item ITEM
+  local x y w h
+  read -r _ x y w h <<<"$(place_of "$1")"
+  xdotool mousemove --window "$wid" $((x + w / 3)) $((y + h / 2)); sleep 0.3; xdotool click 1
+}
+has_header() { [ -n "$(place_of capture-header)" ]; }
+poll "the Capture header's layout line" has_header
+# The panel's content above may still change height (a message expiring moves the header):
+# click once the header has held still in view, and again while the Tour button has not shown.
+has_tour() { [ -n "$(place_of tour-button)" ]; }
+for attempt in 1 2 3 4 5; do
+  scroll_to capture-header
+  held=""
+  until [ "$held" = "$(place_of capture-header)" ]; do held=$(place_of capture-header); sleep 0.6; done
+  scroll_to capture-header
+  click_item capture-header
+  for _ in 1 2 3 4 5 6 7 8 9 10; do has_tour && break; sleep 0.3; done
+  has_tour && break
+  log "no Tour button after clicking the Capture header at $held (try $attempt)"
+done
+has_tour || fail "the Capture header did not open with the Tour button (two bookmarks loaded)"
+scroll_to tour-button
+click_item tour-button
+tour_dir() { find "$work/shots" -maxdepth 1 -type d -name 'ewaview-ball-*-tour' | head -1; }
+tour_done() { [ -n "$(tour_dir)" ] && [ -f "$(tour_dir)/frame_035.png" ] && grep -q 'saved 36 frames' "$work/stderr"; }
+poll "the tour's 36 frames" tour_done
+[ "$(find "$(tour_dir)" -name 'frame_*.png' | wc -l)" -eq 36 ] || fail "the tour wrote $(ls "$(tour_dir)" | wc -l) files, not 36"
+frame_size=$(identify -format '%wx%h' "$(tour_dir)/frame_000.png")
+[ "$frame_size" = "$((2 * width))x$((2 * height))" ] || fail "tour frames are $frame_size, not twice the window"
+all="$((2 * width))x$((2 * height))+0+0"
+t0=$(coverage "$(tour_dir)/frame_000.png" "$all"); t1=$(coverage "$(tour_dir)/frame_018.png" "$all")
+t2=$(coverage "$(tour_dir)/frame_035.png" "$all")
+greater "$t1" "$t0" && greater "$t2" "$t1" ||
+  fail "the tour does not come nearer the ball (coverage $t0, $t1, $t2 at frames 0, 18, 35)"
+cp "$(tour_dir)/frame_000.png" "$out/18_tour_first.png"; cp "$(tour_dir)/frame_035.png" "$out/19_tour_last.png"
+log "tour: 36 frames of $frame_size, coverage $t0 -> $t1 -> $t2"
 quit_window "watch window"
 
 # Series: a DICOM folder of two (a ball of 30 slices, a box of 20). The panel lists them;
@@ -495,4 +552,4 @@ if [ -n "$fixture" ]; then
   quit_window "fourth window"
 fi
 
-echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; copied view $view_diff px; TF mean $m0 -> $m1, coverage $c0 -> $c1, undone $mp -> $mu, redone $mt -> $mr; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1, saved; watched file reloaded ($w0 -> $w1), F5, screenshot $shot_size; $series_note"
+echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; copied view $view_diff px; TF mean $m0 -> $m1, coverage $c0 -> $c1, undone $mp -> $mu, redone $mt -> $mr; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1, saved; watched file reloaded ($w0 -> $w1), F5, screenshot $shot_size; tour $t0 -> $t2; $series_note"
