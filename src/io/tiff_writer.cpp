@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 #include "io/byte_order.h"
 #include "io/text_numbers.h"
@@ -141,8 +142,8 @@ std::string omeXml(const Volume& v, const std::string& name) {
   for (int a = 0; a < 3; ++a)
     x += std::string(" PhysicalSize") + axes[a] + "=\"" + roundTripText(s[a]) + "\" PhysicalSize" +
          axes[a] + "Unit=\"" + u + "\"";
-  x += std::string(" BigEndian=\"") + (hostIsBigEndian() ? "true" : "false") +
-       "\">";  // native order
+  // libtiff writes the host's byte order.
+  x += std::string(" BigEndian=\"") + (hostIsBigEndian() ? "true" : "false") + "\">";
   x += "<Channel ID=\"Channel:0:0\" SamplesPerPixel=\"1\"><LightPath/></Channel>";
   x += "<TiffData IFD=\"0\" PlaneCount=\"" + std::to_string(n[2]) + "\"/>";
   return x + "</Pixels></Image></OME>";
@@ -178,6 +179,8 @@ std::string encodeTiff(const Volume& volume, const std::string& path) {
   const double perUnit = unit ? unit->perCentimetre : 1.0;  // resolution: pixels per cm
   const std::string description = omeXml(volume, name);
   const uint8_t* data = volume.bytes().data();
+  // Rows go through a copy: the predictor may difference the buffer it is given in place.
+  std::vector<uint8_t> row(rowBytes);
   for (int64_t z = 0; z < n[2]; ++z) {
     TIFFSetField(t, TIFFTAG_IMAGEWIDTH, uint32_t(n[0]));
     TIFFSetField(t, TIFFTAG_IMAGELENGTH, uint32_t(n[1]));
@@ -206,8 +209,6 @@ std::string encodeTiff(const Volume& volume, const std::string& path) {
                    uint16_t(std::min<int64_t>(n[2], 65535)));
     }
     if (z == 0) TIFFSetField(t, TIFFTAG_IMAGEDESCRIPTION, description.c_str());
-    // Rows are handed over one at a time (libtiff's scanline writer may change its buffer).
-    std::vector<uint8_t> row(rowBytes);
     for (int64_t y = 0; y < n[1]; ++y) {
       std::memcpy(row.data(), data + size_t(z) * pageBytes + size_t(y) * rowBytes, rowBytes);
       if (TIFFWriteScanline(t, row.data(), uint32_t(y), 0) < 0)

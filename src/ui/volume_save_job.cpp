@@ -40,7 +40,9 @@ void VolumeSaveJob::start(std::shared_ptr<const Volume> volume, TransferFunction
         const std::string sidecar = sidecarTransferFunctionPath(path);
         saveTransferFunction(sidecar, tf);
         std::error_code ec;
-        const auto bytes = std::filesystem::file_size(path, ec);
+        auto bytes = std::filesystem::file_size(path, ec);
+        if (!ec && savedVolumeFormat(path) == SavedVolumeFormat::MetaImageHeader)
+          bytes += std::filesystem::file_size(metaImageDataPath(path), ec);  // and its data
         char size[48];
         std::snprintf(size, sizeof size, " (%.1f MB)", ec ? 0.0 : double(bytes) / 1e6);
         return Saved{"saved " + path + size + " and its transfer function " +
