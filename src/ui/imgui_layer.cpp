@@ -72,6 +72,7 @@ void ImGuiLayer::beginFrame() {
     if (keyLog_) std::printf("key %d %d delivered\n", e.key, e.action);
     deliver(e);
   }
+  if (keyLog_) std::fflush(stdout);  // the window test waits on these lines
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();

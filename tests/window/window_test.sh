@@ -415,7 +415,13 @@ esac
 log "saved channel 0 as channels-c0.nrrd"
 # A name typed over the offered one picks the format: NIfTI (gzip) here.
 xdotool key --window "$wid" ctrl+s; sleep 0.5
+# Typed characters reach the dialog at once, keys a frame at a time (the key trickle): type only
+# once A's release is through, or under load the selection may take in the first characters.
+a_ups() { grep -c '^key 65 0 \(passed\|delivered\)' "$work/stdout"; }
+a_before=$(a_ups)
 xdotool key --window "$wid" ctrl+a
+a_done() { [ "$(a_ups)" -gt "$a_before" ]; }
+poll "Ctrl+A through to the save dialog" a_done
 xdotool type --window "$wid" "$work/copy.nii.gz"
 xdotool key --window "$wid" Return
 saved_nifti() { grep -q "^ewaview: saved .*/copy.nii.gz (" "$work/stderr"; }
