@@ -120,7 +120,8 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--save-volume", o->saveVolume,
                  "Write the volume as opened (any format, after --frame, --channel, --series, "
                  "--spacing; with --crop only the box's voxels) to this file and exit: .nrrd "
-                 "(gzip), .nii or .nii.gz (NIfTI-1), .mha (MetaImage)");
+                 "(gzip), .nii or .nii.gz (NIfTI-1), .mha or .mhd with .raw (MetaImage), .tif "
+                 "or .tiff (OME-TIFF)");
   std::vector<double> pick;
   app.add_option("--pick", pick,
                  "Print what pixel X,Y (column, row from the top left) of the --resolution "
