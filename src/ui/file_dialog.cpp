@@ -147,7 +147,7 @@ std::optional<std::string> FileDialog::draw() {
     if (ImGui::Checkbox("all files", &allFiles_)) changeFolder(folder_);
     ImGui::SameLine();
     if (saving)
-      ImGui::TextDisabled(".nrrd (gzip), .nii(.gz), .mha and NAME.tf.json");
+      ImGui::TextDisabled(".nrrd .nii(.gz) .mha .mhd .tif + NAME.tf.json");
     else
       ImGui::TextDisabled(allFiles_ ? "(raw files need --raw-* on the command line)"
                                     : "volumes, DICOM, NIfTI, TIFF, SLC");

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/camera_views.h"
+#include "io/file_listing.h"
 #include "io/frame_names.h"
 #include "io/volume_writer.h"
 #include "render/renderer_factory.h"
@@ -246,7 +247,7 @@ void ViewerWindow::openDialog() {
 
 // Offered as NAME.nrrd (NAME-fF-cC.nrrd for a page of a file of several; NAME-2.nrrd... when
 // taken) in the file's folder; a NIfTI file's as NAME.nii.gz, a MetaImage file's as NAME.mha
-// and a TIFF file's as NAME.tif, the format its users have.
+// and a TIFF file's or a folder of TIFF slices' as NAME.tif, the format its users have.
 void ViewerWindow::saveDialog() {
   namespace fs = std::filesystem;
   const Volume& v = *current_.volume;
@@ -254,8 +255,16 @@ void ViewerWindow::saveDialog() {
       current_.path.empty() ? current_.name : fs::path(current_.path).stem().string();
   if (name.size() > 4 && name.compare(name.size() - 4, 4, ".nii") == 0)
     name.resize(name.size() - 4);
-  const std::string extension =
-      savedVolumeExtension(savedVolumeFormat(current_.path).value_or(SavedVolumeFormat::Nrrd));
+  auto format = savedVolumeFormat(current_.path);
+  std::error_code ec;
+  if (!format && fs::is_directory(current_.path, ec)) {  // a folder of TIFF slices: one stack
+    try {
+      if (!sliceFilesIn(current_.path, {".tif", ".tiff"}).empty()) format = SavedVolumeFormat::Tiff;
+    } catch (const std::exception&) {
+      // An unreadable folder: NRRD.
+    }
+  }
+  const std::string extension = savedVolumeExtension(format.value_or(SavedVolumeFormat::Nrrd));
   if (v.frameCount() > 1) name += "-f" + std::to_string(v.frame());
   if (v.channelCount() > 1) name += "-c" + std::to_string(v.channel());
   for (char& c : name)
