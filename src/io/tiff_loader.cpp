@@ -152,6 +152,31 @@ std::optional<Volume> loadSinglePages(const std::string& path,
   return makeVolume(path, layout, std::move(bytes));
 }
 
+// Where a page is: its file (an index into the list) and its directory's offset in it.
+struct PagePlace {
+  size_t file = 0;
+  uint64_t offset = 0;
+};
+
+// Decodes `pages` into `out`, one after another (`pageBytes` each), on every core: each chunk
+// of consecutive pages opens its files itself and jumps to each page by its offset.
+void readPages(const std::vector<std::string>& files, const std::vector<PagePlace>& pages,
+               int channel, size_t pageBytes, uint8_t* out) {
+  parallelChunks(pages.size(), 1, 0, [&](size_t first, size_t last, size_t) {
+    std::optional<TiffFile> tiff;
+    size_t open = SIZE_MAX;
+    for (size_t n = first; n < last; ++n) {
+      if (pages[n].file != open) {
+        tiff.emplace(files[pages[n].file]);
+        open = pages[n].file;
+      }
+      if (!TIFFSetSubDirectory(tiff->get(), pages[n].offset))
+        tiff->fail("cannot read page " + std::to_string(n) + " again");
+      readPage(*tiff, pageFormat(*tiff), channel, out + n * pageBytes);  // strips may differ
+    }
+  });
+}
+
 }  // namespace
 
 Volume loadOmeCompanion(const std::string& path, int channel, int frame) {
@@ -171,14 +196,17 @@ Volume loadTiff(const std::string& path, int channel, int frame) {
     if (std::optional<Volume> volume = loadSinglePages(path, files, channel, frame))
       return std::move(*volume);
 
-  // Pages in order: every page of every file.
+  // Pages in order: every page of every file, its format checked and, when wanted, its place
+  // noted; the wanted pages are then decoded on every core.
   VolumeLayout layout;
   PageFormat format;
   std::vector<uint8_t> bytes;
+  std::vector<PagePlace> wanted;
   int64_t pages = 0, pageChannel = 0;
   TiffPlaneOrder order;
   size_t pageBytes = 0;
-  for (const std::string& file : files) {
+  for (size_t fileIndex = 0; fileIndex < files.size(); ++fileIndex) {
+    const std::string& file = files[fileIndex];
     TiffFile tiff(file);
     do {
       const PageFormat f = pageFormat(tiff);
@@ -210,14 +238,17 @@ Volume loadTiff(const std::string& path, int channel, int frame) {
                   format.text() + ": all pages must agree");
       }
       if (tiffSliceOfPage(order, pages, pageChannel, frame) >= 0) {
-        const auto slices = int64_t(bytes.size() / std::max<size_t>(pageBytes, 1));
-        dataByteCount(file, {int64_t(f.width), int64_t(f.height), slices + 1}, layout.type);
-        bytes.resize(bytes.size() + pageBytes);
-        readPage(tiff, f, f.samples > 1 ? channel : 0, bytes.data() + bytes.size() - pageBytes);
+        dataByteCount(file, {int64_t(f.width), int64_t(f.height), int64_t(wanted.size()) + 1},
+                      layout.type);
+        wanted.push_back({fileIndex, TIFFCurrentDirOffset(tiff.get())});
       }
       ++pages;
     } while (TIFFReadDirectory(tiff.get()));
     if (!order.blocks.empty()) break;
+  }
+  if (order.blocks.empty()) {
+    bytes.resize(wanted.size() * pageBytes);
+    readPages(files, wanted, format.samples > 1 ? channel : 0, pageBytes, bytes.data());
   }
   layout.dims = {int64_t(format.width), int64_t(format.height),
                  int64_t(bytes.size() / std::max<size_t>(pageBytes, 1))};

@@ -36,7 +36,7 @@ TiffFile::TiffFile(const std::string& path) : path_(path), size_(regularFileSize
   TIFFOpenOptionsSetWarningHandlerExtR(options, &ignoreMessage, nullptr);
   TIFFOpenOptionsSetMaxSingleMemAlloc(
       options, tmsize_t(std::min<uint64_t>(physicalMemoryBytes(), INT64_MAX / 2)));
-  tiff_.reset(TIFFOpenExt(path.c_str(), "r", options));
+  tiff_.reset(TIFFOpenExt(path.c_str(), "rm", options));
   TIFFOpenOptionsFree(options);
   if (!tiff_) fail("not a readable TIFF file");
 }
