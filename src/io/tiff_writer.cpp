@@ -14,6 +14,7 @@
 
 #include "io/byte_order.h"
 #include "io/text_numbers.h"
+#include "io/tiff_pages.h"
 
 namespace ewa {
 
@@ -82,10 +83,6 @@ int keepError(TIFF*, void* user, const char*, const char* fmt, va_list args) {
 int ignoreWarning(TIFF*, void*, const char*, const char*, va_list) {
   return 1;
 }
-
-struct TiffCloser {
-  void operator()(TIFF* t) const { TIFFClose(t); }
-};
 
 // The volume's unit as OME names it (the same symbols) and its count in a centimetre.
 struct OmeUnit {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "io/tiff_pages.h"
 #include "io/volume_loader.h"
 #include "io/volume_writer.h"
 #include "loader_test_files.h"
@@ -27,10 +28,6 @@ Volume atOrigin(const Volume& v, const std::string& unit) {
   out.setUnit(unit);
   return out;
 }
-
-struct TiffCloser {
-  void operator()(TIFF* t) const { TIFFClose(t); }
-};
 
 // The first page's description, the page count and a few tags of the file at `path`.
 struct TiffFacts {
