@@ -10,8 +10,10 @@ cd "$(dirname "$0")/.."
 seconds="${1:-30}"
 build="${2:-build-fuzz}"
 shift $(( $# > 2 ? 2 : $# ))
+# Line tables only: a crash's stack keeps its file:line, the build is quicker.
 CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DEWA_FUZZ=ON \
-  -DEWA_BUILD_TESTS=OFF >/dev/null
+  -DEWA_BUILD_TESTS=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
+  -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" >/dev/null
 nice cmake --build "$build" -j"$(nproc)" --target ewa_fuzzers
 names=("$@")
 if [ ${#names[@]} -eq 0 ]; then
