@@ -11,10 +11,8 @@
 
 namespace ewa {
 
-namespace {
-
 // libtiff's messages go into the open file's record instead of stderr.
-int keepMessage(TIFF*, void* user, const char*, const char* fmt, va_list args) {
+int keepFirstTiffMessage(TIFF*, void* user, const char*, const char* fmt, va_list args) {
   auto* message = static_cast<std::string*>(user);
   if (message->empty()) {
     char text[256];
@@ -24,16 +22,14 @@ int keepMessage(TIFF*, void* user, const char*, const char* fmt, va_list args) {
   return 1;
 }
 
-int ignoreMessage(TIFF*, void*, const char*, const char*, va_list) {
+int ignoreTiffMessage(TIFF*, void*, const char*, const char*, va_list) {
   return 1;
 }
 
-}  // namespace
-
 TiffFile::TiffFile(const std::string& path) : path_(path), size_(regularFileSize(path)) {
   TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
-  TIFFOpenOptionsSetErrorHandlerExtR(options, &keepMessage, &error_);
-  TIFFOpenOptionsSetWarningHandlerExtR(options, &ignoreMessage, nullptr);
+  TIFFOpenOptionsSetErrorHandlerExtR(options, &keepFirstTiffMessage, &error_);
+  TIFFOpenOptionsSetWarningHandlerExtR(options, &ignoreTiffMessage, nullptr);
   TIFFOpenOptionsSetMaxSingleMemAlloc(
       options, tmsize_t(std::min<uint64_t>(physicalMemoryBytes(), INT64_MAX / 2)));
   tiff_.reset(TIFFOpenExt(path.c_str(), "rm", options));

@@ -3,6 +3,7 @@
 
 #include <tiffio.h>
 
+#include <cstdarg>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -10,6 +11,11 @@
 #include "io/volume_layout.h"
 
 namespace ewa {
+
+// libtiff message handlers (TIFFOpenOptionsSet...HandlerExtR): the first message into the
+// std::string `user` points to, or none at all.
+int keepFirstTiffMessage(TIFF*, void* user, const char*, const char* fmt, va_list args);
+int ignoreTiffMessage(TIFF*, void*, const char*, const char*, va_list);
 
 struct TiffCloser {
   void operator()(TIFF* t) const { TIFFClose(t); }

@@ -4,7 +4,6 @@
 #include <tiffio.h>
 
 #include <algorithm>
-#include <cstdarg>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -69,20 +68,6 @@ int noMap(thandle_t, tdata_t*, toff_t*) {
 }
 
 void noUnmap(thandle_t, tdata_t, toff_t) {}
-
-int keepError(TIFF*, void* user, const char*, const char* fmt, va_list args) {
-  auto* f = static_cast<MemoryFile*>(user);
-  if (f->error.empty()) {
-    char text[256];
-    std::vsnprintf(text, sizeof text, fmt, args);
-    f->error = text;
-  }
-  return 1;
-}
-
-int ignoreWarning(TIFF*, void*, const char*, const char*, va_list) {
-  return 1;
-}
 
 // The volume's unit as OME names it (the same symbols) and its count in a centimetre.
 struct OmeUnit {
@@ -158,8 +143,8 @@ std::string encodeTiff(const Volume& volume, const std::string& path) {
   // Classic TIFF's offsets are 32 bits: BigTIFF when the data come near them.
   const bool big = uint64_t(pageBytes) * uint64_t(n[2]) > (uint64_t(1) << 32) - (uint64_t(1) << 26);
   TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
-  TIFFOpenOptionsSetErrorHandlerExtR(options, &keepError, &file);
-  TIFFOpenOptionsSetWarningHandlerExtR(options, &ignoreWarning, nullptr);
+  TIFFOpenOptionsSetErrorHandlerExtR(options, &keepFirstTiffMessage, &file.error);
+  TIFFOpenOptionsSetWarningHandlerExtR(options, &ignoreTiffMessage, nullptr);
   std::unique_ptr<TIFF, TiffCloser> tiff(
       TIFFClientOpenExt(name.c_str(), big ? "w8" : "w", &file, &readBytes, &writeBytes, &seekTo,
                         &closeFile, &sizeOf, &noMap, &noUnmap, options));
