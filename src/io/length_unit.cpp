@@ -1,4 +1,4 @@
-// lengthUnitName: the spellings NIfTI, NRRD and ImageJ files use for their length units.
+// lengthUnitName: the spellings NIfTI, NRRD, ImageJ and OME files use for their length units.
 #include "io/length_unit.h"
 
 #include <cctype>
@@ -22,6 +22,10 @@ std::string lengthUnitName(const std::string& text) {
   if (lower == "nm" || lower == "nanometer" || lower == "nanometers") return "nm";
   if (lower == "cm" || lower == "centimeter" || lower == "centimeters") return "cm";
   if (lower == "m" || lower == "meter" || lower == "meters" || lower == "metre") return "m";
+  if (lower == "pm" || lower == "picometer" || lower == "picometers") return "pm";
+  // Å (MRC's and OME's unit), as LATIN CAPITAL A WITH RING or ANGSTROM SIGN, or spelled out.
+  if (t == "\xC3\x85" || t == "\xE2\x84\xAB" || lower == "angstrom" || lower == "angstroms")
+    return "\xC3\x85";
   // Anything else printable (ASCII letters, digits, a few signs) is kept as written.
   for (const unsigned char c : t)
     if (!std::isalnum(c) && c != ' ' && c != '.' && c != '-' && c != '_' && c != '/') return "";

@@ -159,8 +159,8 @@ void applyNrrdSpace(const std::string& space, VolumeLayout& layout) {
   for (int a = 0; a < 3; ++a) layout.direction[a] *= sign;
 }
 
-// The one unit of `"mm" "mm" "mm"` (space units, or units per axis), or "" when they differ,
-// are missing or are not a unit.
+// The one unit of `"mm" "mm" "mm"` (space units, or units per axis; spellings of one unit are
+// one), or "" when they differ, are missing or are not a unit.
 std::string quotedUnit(const std::string& value) {
   std::vector<std::string> units;
   for (size_t open = value.find('"'); open != std::string::npos;) {
@@ -170,9 +170,10 @@ std::string quotedUnit(const std::string& value) {
     open = value.find('"', close + 1);
   }
   if (units.empty()) return "";
+  const std::string unit = lengthUnitName(units[0]);
   for (const std::string& u : units)
-    if (u != units[0]) return "";
-  return lengthUnitName(units[0]);
+    if (lengthUnitName(u) != unit) return "";
+  return unit;
 }
 
 }  // namespace

@@ -23,13 +23,15 @@ namespace ewa {
 
 namespace {
 
-// The pixel size, slice spacing and unit: OME-XML's physical sizes; else, in ImageJ's files (its
+// The pixel size, slice spacing, unit and origin: OME-XML's physical sizes and first plane's
+// position; else, in ImageJ's files (its
 // unit) or with no unit, the resolution tags (inch and centimetre resolutions are print sizes,
 // 72 dpi, not the sample's) and ImageJ's spacing=.
 void placePixels(const TiffFile& tiff, const TiffPlaneOrder& order, VolumeLayout& layout) {
   if (order.kind == "OME") {
     if (order.sizeX > 0.0) layout.spacing.x = order.sizeX;
     if (order.sizeY > 0.0) layout.spacing.y = order.sizeY;
+    if (order.hasOrigin) layout.origin = {order.origin[0], order.origin[1], order.origin[2]};
   } else {
     uint16_t resolutionUnit = RESUNIT_INCH;
     TIFFGetFieldDefaulted(tiff.get(), TIFFTAG_RESOLUTIONUNIT, &resolutionUnit);

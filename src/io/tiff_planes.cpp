@@ -44,8 +44,60 @@ int64_t index(const std::string* text, int64_t fallback) {
   return text && parseInt64(trim(*text), v) && v >= 0 && v <= kMaxPlanes ? v : fallback;
 }
 
-// The TiffData elements after a Pixels tag, up to its end; kept when one names another file.
-std::vector<TiffDataBlock> tiffDataBlocks(XmlScanner& scanner, const std::string& path) {
+double positive(const std::string& text) {
+  double v = 0.0;
+  return parseDouble(trim(text), v) && v > 0.0 && std::isfinite(v) ? v : 0.0;
+}
+
+// A finite number, or 0.
+double finite(const std::string* text) {
+  double v = 0.0;
+  return text && parseDouble(trim(*text), v) && std::isfinite(v) ? v : 0.0;
+}
+
+// Metres in one `unit` (OME's UnitsLength spellings), or 0 when it is not a length we know.
+double metres(const std::string& unit) {
+  const std::string name = lengthUnitName(unit);
+  if (name == "m") return 1.0;
+  if (name == "cm") return 1e-2;
+  if (name == "mm") return 1e-3;
+  if (name == "\xC2\xB5m") return 1e-6;
+  if (name == "nm") return 1e-9;
+  if (name == "pm") return 1e-12;
+  if (name == "\xC3\x85") return 1e-10;  // Å, OME's angstrom
+  return 0.0;
+}
+
+// The first slice's position from a Plane element (TheZ, TheC and TheT 0) into `o.origin`, in
+// `o.unit`: each position in its own unit, OME's "reference frame" when not named.
+void readPlanePosition(const XmlTag& tag, TiffPlaneOrder& o) {
+  if (index(tag.attribute("TheZ"), -1) != 0 || index(tag.attribute("TheC"), 0) != 0 ||
+      index(tag.attribute("TheT"), 0) != 0)
+    return;
+  const char* axes[3] = {"X", "Y", "Z"};
+  std::array<double, 3> at{};
+  for (int a = 0; a < 3; ++a) {
+    const std::string key = std::string("Position") + axes[a];
+    const std::string* unitText = tag.attribute(key + "Unit");
+    const std::string unit = unitText ? *unitText : "reference frame";
+    at[a] = finite(tag.attribute(key));
+    if (at[a] == 0.0) continue;
+    // A length in another length: converted; a length with no unit, or none with one: unknown.
+    const double from = metres(unit), to = metres(o.unit);
+    const bool unitless = unit == "reference frame" || unit == "pixel";
+    if (from > 0.0 && to > 0.0)
+      at[a] *= from / to;
+    else if (!(unitless && o.unit.empty()))
+      return;
+  }
+  o.hasOrigin = true;
+  o.origin = at;
+}
+
+// The TiffData elements after a Pixels tag, up to its end, kept when one names another file;
+// the first slice's position from its Plane elements.
+std::vector<TiffDataBlock> pixelsChildren(XmlScanner& scanner, const std::string& path,
+                                          TiffPlaneOrder& o) {
   std::vector<TiffDataBlock> blocks;
   size_t open = SIZE_MAX;  // the TiffData whose UUID may follow
   XmlTag tag;
@@ -66,6 +118,8 @@ std::vector<TiffDataBlock> tiffDataBlocks(XmlScanner& scanner, const std::string
       b.planeCount = index(tag.attribute("PlaneCount"), -1);
       blocks.push_back(b);
       open = tag.selfClosing ? SIZE_MAX : blocks.size() - 1;
+    } else if (name == "Plane" && !o.hasOrigin) {
+      readPlanePosition(tag, o);
     } else if (name == "UUID" && open != SIZE_MAX) {
       if (const std::string* file = tag.attribute("FileName")) blocks[open].file = *file;
     }
@@ -74,24 +128,6 @@ std::vector<TiffDataBlock> tiffDataBlocks(XmlScanner& scanner, const std::string
   for (const TiffDataBlock& b : blocks)
     if (!b.file.empty() && b.file != self) return blocks;
   return {};
-}
-
-double positive(const std::string& text) {
-  double v = 0.0;
-  return parseDouble(trim(text), v) && v > 0.0 && std::isfinite(v) ? v : 0.0;
-}
-
-// Metres in one `unit` (OME's UnitsLength spellings), or 0 when it is not a length we know.
-double metres(const std::string& unit) {
-  const std::string name = lengthUnitName(unit);
-  if (name == "m") return 1.0;
-  if (name == "cm") return 1e-2;
-  if (name == "mm") return 1e-3;
-  if (name == "\xC2\xB5m") return 1e-6;
-  if (name == "nm") return 1e-9;
-  if (name == "pm") return 1e-12;
-  if (name == "\xC3\x85") return 1e-10;  // Å, OME's angstrom
-  return 0.0;
 }
 
 TiffPlaneOrder imageJOrder(const std::string& text) {
@@ -142,7 +178,7 @@ TiffPlaneOrder omeOrder(const std::string& path, const std::string& text, int64_
     o.sizeY = inXUnits("PhysicalSizeY", "PhysicalSizeYUnit");
     o.sizeZ = inXUnits("PhysicalSizeZ", "PhysicalSizeZUnit");
     if (o.sizeY == 0.0) o.sizeY = o.sizeX;  // square pixels when only X is given
-    if (!tag.selfClosing) o.blocks = tiffDataBlocks(scanner, path);
+    if (!tag.selfClosing) o.blocks = pixelsChildren(scanner, path, o);
     return o;
   }
   return {};

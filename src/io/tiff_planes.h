@@ -1,6 +1,7 @@
 // Which pages of a multi-page TIFF make a volume: ImageJ hyperstacks and OME-TIFF's planes.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -30,6 +31,10 @@ struct TiffPlaneOrder {
   int64_t frames = 1;         // T
   double sizeX = 0.0, sizeY = 0.0, sizeZ = 0.0;  // pixel size and slice spacing; 0: not given
   std::string unit;  // of the sizes, as written ("micron", "µm"); "" when not given
+  // Where the first slice lies (OME's Plane TheZ 0, TheC 0, TheT 0: PositionX/Y/Z), in `unit`;
+  // absent from ImageJ's descriptions, and when a position's unit cannot be given in `unit`.
+  bool hasOrigin = false;
+  std::array<double, 3> origin{};
   // OME's TiffData elements, kept only when one names another file (a dataset split over
   // several files: by channel, time point or size); else the pages follow the order above.
   std::vector<TiffDataBlock> blocks;
@@ -43,7 +48,8 @@ struct TiffPlaneSource {
 
 // Reads an ImageJ description ("ImageJ=...": channels=, slices=, frames=, spacing=, unit=; its
 // hyperstacks are XYCZT) or an OME-XML one (the first Pixels element: DimensionOrder, SizeZ,
-// SizeC, SizeT, PhysicalSizeX/Y/Z and their units, micrometres when not named). `samples`
+// SizeC, SizeT, PhysicalSizeX/Y/Z and their units, micrometres when not named; the first
+// plane's PositionX/Y/Z in theirs, OME's "reference frame" when not named). `samples`
 // (per pixel) of an RGB OME plane count among SizeC but not among the pages. Anything else,
 // or a description that cannot be read, is a plain stack. Throws nothing.
 TiffPlaneOrder tiffPlaneOrder(const std::string& path, const std::string& description,

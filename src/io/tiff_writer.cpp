@@ -128,6 +128,18 @@ std::string omeXml(const Volume& v, const std::string& name) {
   x += std::string(" BigEndian=\"") + (hostIsBigEndian() ? "true" : "false") + "\">";
   x += "<Channel ID=\"Channel:0:0\" SamplesPerPixel=\"1\"><LightPath/></Channel>";
   x += "<TiffData IFD=\"0\" PlaneCount=\"" + std::to_string(n[2]) + "\"/>";
+  // Each slice's position (the first is the origin), as Bio-Formats writes stage positions.
+  const glm::dvec3& o = v.origin();
+  if (o != glm::dvec3(0.0)) {
+    for (int64_t z = 0; z < n[2]; ++z) {
+      const glm::dvec3 at = o + glm::dvec3(0.0, 0.0, double(z) * s.z);
+      x += "<Plane TheZ=\"" + std::to_string(z) + "\" TheC=\"0\" TheT=\"0\"";
+      for (int a = 0; a < 3; ++a)
+        x += std::string(" Position") + axes[a] + "=\"" + roundTripText(at[a]) + "\" Position" +
+             axes[a] + "Unit=\"" + u + "\"";
+      x += "/>";
+    }
+  }
   return x + "</Pixels></Image></OME>";
 }
 
@@ -205,13 +217,6 @@ std::string encodeTiff(const Volume& volume, const std::string& path) {
 
 std::vector<std::string> tiffLosses(const Volume& volume) {
   std::vector<std::string> losses;
-  const glm::dvec3& o = volume.origin();
-  if (o != glm::dvec3(0.0)) {
-    char at[96];
-    std::snprintf(at, sizeof at, "%g, %g, %g", o.x, o.y, o.z);
-    losses.push_back("TIFF keeps no origin: the file reads back at 0, 0, 0 (not " +
-                     std::string(at) + ")");
-  }
   if (volume.patientFrame())
     losses.push_back("TIFF keeps no patient axes: the slices are written as stored");
   else if (volume.direction() != glm::dmat3(1.0))

@@ -114,7 +114,7 @@ the histogram, as on the command line.)")
       .def("save_volume", &PythonScene::saveVolume, py::arg("path"), py::arg("crop") = py::none(),
            "Writes the volume (as loaded, after spacing=) to a gzip NRRD (.nrrd), NIfTI-1 "
            "(.nii, .nii.gz), MetaImage (.mha, or .mhd with its .raw) or OME-TIFF (.tif, .tiff) "
-           "file, as --save-volume does (what a TIFF cannot keep, its origin and axes, comes "
+           "file, as --save-volume does (what a TIFF cannot keep, its axes, comes "
            "as a UserWarning); with crop=(x0, x1, y0, y1, z0, z1) (world units, as render()'s "
            "crop=) only the voxels whose centres lie in that box.")
       .def("__repr__", &PythonScene::repr);

@@ -12,7 +12,7 @@ namespace ewa {
 
 namespace {
 
-// "; TIFF keeps no origin ...; ..." after the message, or "".
+// "; TIFF keeps no patient axes ...; ..." after the message, or "".
 std::string lossText(const std::vector<std::string>& losses) {
   std::string out;
   for (const std::string& loss : losses) out += "; " + loss;

@@ -112,13 +112,16 @@ def test_numpy_array_equals_the_same_voxels_read_as_raw(cli, out_dir):
         plain.save_volume(str(out_dir / "none.nrrd"), crop=(40, 50, 0, 1, 0, 1))
     with pytest.raises(ValueError, match="--crop"):
         plain.save_volume(str(out_dir / "none.nrrd"), crop=(5, 2, 0, 1, 0, 1))
-    # As OME-TIFF the same voxels and spacing; the origin it cannot keep comes as a warning.
-    with pytest.warns(UserWarning, match="TIFF keeps no origin"):
-        plain.save_volume(str(out_dir / "part.tif"), crop=(2, 5, 3, 9, -1, 4.5))
+    # As OME-TIFF the same voxels, spacing and place (the Plane positions).
+    plain.save_volume(str(out_dir / "part.tif"), crop=(2, 5, 3, 9, -1, 4.5))
     tiff = ewaview.Scene(out_dir / "part.tif")
     assert tiff.info["dims"] == [4, 5, 3] and tiff.info["spacing"] == [1, 1.5, 2]
-    assert tiff.info["origin"] == [0, 0, 0]
+    assert tiff.info["origin"] == [2, 3, 0]
     assert np.array_equal(tiff.array, data[0:3, 2:7, 2:6])
+    # NIfTI's patient axes TIFF cannot keep: a warning says so, and the voxels are written.
+    with pytest.warns(UserWarning, match="TIFF keeps no patient axes"):
+        nifti.save_volume(str(out_dir / "patient.tif"))
+    assert np.array_equal(ewaview.Scene(out_dir / "patient.tif").array, nifti.array)
     with pytest.raises(ValueError, match="must end in .nrrd, .nii, .nii.gz, .mha, .mhd, .tif or .tiff"):
         plain.save_volume(str(out_dir / "ball.png"))
     # float64 arrays become float32 volumes; non-contiguous views are copied in [z, y, x] order.

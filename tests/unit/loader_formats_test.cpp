@@ -71,6 +71,8 @@ TEST(NrrdLoader, SpaceUnitsAndAxisUnitsNameTheUnit) {
   EXPECT_EQ(unitOf("d.nrrd", "space units: \"\\x01\" \"\\x01\" \"\\x01\"\n"), "");
   EXPECT_EQ(unitOf("e.nrrd", "space units: \"mm\n"), "");  // unclosed
   EXPECT_EQ(unitOf("f.nrrd", ""), "");
+  // Å in either code point, or spelled out, is one unit (MRC's and OME's).
+  EXPECT_EQ(unitOf("g.nrrd", "units: \"\xE2\x84\xAB\" \"Angstrom\" \"\xC3\x85\"\n"), "\xC3\x85");
 }
 
 // Orthogonal axes of lengths 2, 5 and 0.5 (a sheared grid would be resampled: shear_resample).

@@ -2,6 +2,7 @@
 // plane order, with OME's physical pixel sizes.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,45 @@ TEST(TiffPlanes, PlaneOrderOfDescriptions) {
   EXPECT_NEAR(rgb.sizeZ, 2000.0, 1e-9);  // 0.002 mm in nanometres
   EXPECT_EQ(tiffSliceOfPage(rgb, 3, 0, 0), 3);
   EXPECT_EQ(tiffSliceOfPage(rgb, 4, 0, 0), -1);  // past SizeZ
+  EXPECT_FALSE(rgb.hasOrigin);
+}
+
+// The first plane's position is the origin, each coordinate from its own unit into the sizes'.
+TEST(TiffPlanes, FirstPlanePositionIsTheOrigin) {
+  auto order = [](const std::string& sizeUnit, const std::string& planes) {
+    return tiffPlaneOrder("p.tif",
+                          "<OME><Pixels DimensionOrder=\"XYCZT\" SizeZ=\"2\" SizeC=\"2\" "
+                          "PhysicalSizeX=\"0.5\"" +
+                              sizeUnit + "><TiffData/>" + planes + "</Pixels></OME>",
+                          1);
+  };
+  // TheZ 1 and channel 1 come first in the file: the plane Z 0, C 0, T 0 is the one read.
+  const TiffPlaneOrder um =
+      order("",
+            "<Plane TheZ=\"1\" TheC=\"0\" TheT=\"0\" PositionX=\"99\" PositionXUnit=\"\xC2\xB5m\"/>"
+            "<Plane TheZ=\"0\" TheC=\"1\" TheT=\"0\" PositionX=\"98\" PositionXUnit=\"\xC2\xB5m\"/>"
+            "<Plane TheZ=\"0\" TheC=\"0\" TheT=\"0\" PositionX=\"-1.5\" PositionXUnit=\"mm\" "
+            "PositionY=\"20\" PositionYUnit=\"nm\" PositionZ=\"7\" PositionZUnit=\"\xC2\xB5m\"/>");
+  ASSERT_TRUE(um.hasOrigin);
+  EXPECT_NEAR(um.origin[0], -1500.0, 1e-9);  // in micrometres, the sizes' default
+  EXPECT_NEAR(um.origin[1], 0.02, 1e-12);
+  EXPECT_NEAR(um.origin[2], 7.0, 1e-12);
+  // Positions without a unit are in OME's "reference frame": kept only when the sizes have none.
+  const std::string bare = "<Plane TheZ=\"0\" TheC=\"0\" TheT=\"0\" PositionZ=\"4.5\"/>";
+  EXPECT_FALSE(order("", bare).hasOrigin);
+  const TiffPlaneOrder frame = order(" PhysicalSizeXUnit=\"reference frame\"", bare);
+  ASSERT_TRUE(frame.hasOrigin);
+  EXPECT_EQ(frame.origin, (std::array<double, 3>{0.0, 0.0, 4.5}));
+  // A unit that is not a length, and numbers that are not finite, place nothing.
+  EXPECT_FALSE(order("",
+                     "<Plane TheZ=\"0\" TheC=\"0\" TheT=\"0\" PositionX=\"3\" "
+                     "PositionXUnit=\"s\"/>")
+                   .hasOrigin);
+  const TiffPlaneOrder nan =
+      order("",
+            "<Plane TheZ=\"0\" TheC=\"0\" TheT=\"0\" PositionX=\"nan\" "
+            "PositionXUnit=\"\xC2\xB5m\" PositionY=\"inf\" PositionYUnit=\"\xC2\xB5m\"/>");
+  EXPECT_EQ(nan.origin, (std::array<double, 3>{0.0, 0.0, 0.0}));
 }
 
 }  // namespace

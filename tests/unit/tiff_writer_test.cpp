@@ -100,17 +100,34 @@ TEST(TiffWriter, PagesOfManyStripsReadBack) {
             std::string::npos);
 }
 
-TEST(TiffWriter, SaysWhatATiffCannotKeep) {
-  const Volume ramp = rampVolumesOfEveryType()[0];  // origin (-10, 20.5, 7)
-  std::vector<std::string> losses = savedVolumeLosses("v.tif", ramp);
-  ASSERT_EQ(losses.size(), 1u);
-  EXPECT_NE(losses[0].find("no origin"), std::string::npos);
-  EXPECT_NE(losses[0].find("-10, 20.5, 7"), std::string::npos);
-  EXPECT_TRUE(savedVolumeLosses("v.nrrd", ramp).empty());  // other formats keep it
+// The origin is kept as each slice's OME Plane position, in the volume's unit.
+TEST(TiffWriter, OriginIsThePlanePositions) {
+  TempDir dir;
+  for (const char* unit : {"mm", ""}) {
+    SCOPED_TRACE(unit);
+    Volume ramp = rampVolumesOfEveryType()[1];  // int16, origin (-10, 20.5, 7), spacing z 3
+    ramp.setUnit(unit);
+    const std::string path = dir.path(std::string("o") + unit + ".tif");
+    writeVolume(path, ramp);
+    EXPECT_TRUE(savedVolumeLosses(path, ramp).empty());
+    expectSameVolume(ramp, loadVolume(path), 0.0);
+    const std::string u = *unit ? unit : "reference frame";
+    EXPECT_NE(tiffFacts(path).description.find(
+                  "<Plane TheZ=\"3\" TheC=\"0\" TheT=\"0\" PositionX=\"-10\" PositionXUnit=\"" + u +
+                  "\" PositionY=\"20.5\" PositionYUnit=\"" + u + "\" PositionZ=\"16\""),
+              std::string::npos);
+  }
+  // At zero no Plane is written.
+  writeVolume(dir.path("zero.tif"), atOrigin(rampVolumesOfEveryType()[1], "mm"));
+  EXPECT_EQ(tiffFacts(dir.path("zero.tif")).description.find("<Plane"), std::string::npos);
+}
 
+TEST(TiffWriter, SaysWhatATiffCannotKeep) {
+  const Volume ramp = rampVolumesOfEveryType()[0];  // origin (-10, 20.5, 7): kept
+  EXPECT_TRUE(savedVolumeLosses("v.tif", ramp).empty());
   Volume patient = atOrigin(ramp, "mm");
   patient.setDirection(glm::dmat3(1.0), true);
-  losses = savedVolumeLosses("v.TIFF", patient);
+  std::vector<std::string> losses = savedVolumeLosses("v.TIFF", patient);
   ASSERT_EQ(losses.size(), 1u);
   EXPECT_NE(losses[0].find("patient axes"), std::string::npos);
 
