@@ -124,8 +124,7 @@ int main(int argc, char** argv) {
       if (auto cropped = ewa::croppedForSaving(scene.volume, options.render.clip,
                                                options.file.empty() ? scene.name : options.file))
         scene.volume = std::move(*cropped);
-      ewa::writeVolume(options.saveVolume, scene.volume);
-      for (const std::string& loss : ewa::savedVolumeLosses(options.saveVolume, scene.volume))
+      for (const std::string& loss : ewa::writeVolumeAndLosses(options.saveVolume, scene.volume))
         std::cerr << "ewaview: note: " << options.saveVolume << ": " << loss << "\n";
       if (!options.info) return 0;
     }

@@ -99,6 +99,11 @@ void writeVolume(const std::string& path, const Volume& volume) {
                       gzipBytes(reinterpret_cast<const uint8_t*>(nifti.data()), nifti.size()));
 }
 
+std::vector<std::string> writeVolumeAndLosses(const std::string& path, const Volume& volume) {
+  writeVolume(path, volume);
+  return savedVolumeLosses(path, volume);
+}
+
 std::string metaImageDataPath(const std::string& path) {
   return std::filesystem::path(path).replace_extension(".raw").string();
 }

@@ -38,6 +38,10 @@ std::vector<std::string> savedVolumeLosses(const std::string& path, const Volume
 // file that cannot be written.
 void writeVolume(const std::string& path, const Volume& volume);
 
+// writeVolume, then what the format left out of `volume` (savedVolumeLosses), for the caller to
+// say: the command line's notes, the window's message, Python's warnings.
+std::vector<std::string> writeVolumeAndLosses(const std::string& path, const Volume& volume);
+
 // The raw data file a MetaImage header `path` (NAME.mhd) is written with: NAME.raw beside it.
 std::string metaImageDataPath(const std::string& path);
 

@@ -28,15 +28,10 @@ void VolumeSaveJob::start(std::shared_ptr<const Volume> volume, TransferFunction
   // The volume is shared, not copied: the window may open another meanwhile.
   future_ =
       std::async(std::launch::async, [volume = std::move(volume), tf = std::move(tf), path, crop] {
-        std::vector<std::string> losses;
-        if (crop) {
-          const Volume cropped = cropVolume(*volume, *crop);
-          writeVolume(path, cropped);
-          losses = savedVolumeLosses(path, cropped);
-        } else {
-          writeVolume(path, *volume);  // not copied
-          losses = savedVolumeLosses(path, *volume);
-        }
+        // The volume itself is not copied.
+        const std::vector<std::string> losses =
+            crop ? writeVolumeAndLosses(path, cropVolume(*volume, *crop))
+                 : writeVolumeAndLosses(path, *volume);
         const std::string sidecar = sidecarTransferFunctionPath(path);
         saveTransferFunction(sidecar, tf);
         std::error_code ec;

@@ -139,7 +139,7 @@ TEST(TiffWriter, SaysWhatATiffCannotKeep) {
   EXPECT_NE(losses[1].find("'inch'"), std::string::npos);
   // The file is still written, on the world's axes and without the unit.
   TempDir dir;
-  writeVolume(dir.path("turned.tif"), turned);
+  EXPECT_EQ(writeVolumeAndLosses(dir.path("turned.tif"), turned), losses);
   const Volume back = loadVolume(dir.path("turned.tif"));
   EXPECT_EQ(back.bytes(), turned.bytes());
   EXPECT_EQ(back.direction(), glm::dmat3(1.0));
