@@ -500,23 +500,30 @@ click_item() {  # click_item ITEM
 }
 has_header() { [ -n "$(place_of capture-header)" ]; }
 poll "the Capture header's layout line" has_header
-# The panel's content above may still change height (a message expiring moves the header):
-# click once the header has held still in view, and again while the Tour button has not shown.
+# click_until ITEM DONE...: ITEM scrolled into view and clicked once it has held still (the
+# panel's content above may still change height: a message expiring moves it), and again, five
+# times at most, while the command DONE... has not come true within 5 s.
+click_until() {
+  local item="$1" held still attempt; shift
+  for attempt in 1 2 3 4 5; do
+    scroll_to "$item"
+    held="" still=$SECONDS
+    until [ "$held" = "$(place_of "$item")" ] || [ $((SECONDS - still)) -ge 20 ]; do
+      held=$(place_of "$item"); sleep 0.6
+    done
+    scroll_to "$item"
+    click_item "$item"
+    for _ in $(seq 17); do "$@" && return 0; sleep 0.3; done
+    log "nothing came of clicking $item at $held (try $attempt)"
+  done
+  return 1
+}
 has_tour() { [ -n "$(place_of tour-button)" ]; }
-for attempt in 1 2 3 4 5; do
-  scroll_to capture-header
-  held=""
-  until [ "$held" = "$(place_of capture-header)" ]; do held=$(place_of capture-header); sleep 0.6; done
-  scroll_to capture-header
-  click_item capture-header
-  for _ in 1 2 3 4 5 6 7 8 9 10; do has_tour && break; sleep 0.3; done
-  has_tour && break
-  log "no Tour button after clicking the Capture header at $held (try $attempt)"
-done
-has_tour || fail "the Capture header did not open with the Tour button (two bookmarks loaded)"
-scroll_to tour-button
-click_item tour-button
+click_until capture-header has_tour ||
+  fail "the Capture header did not open with the Tour button (two bookmarks loaded)"
 tour_dir() { find "$work/shots" -maxdepth 1 -type d -name 'ewaview-ball-*-tour' | head -1; }
+tour_started() { [ -n "$(tour_dir)" ]; }
+click_until tour-button tour_started || fail "clicking Tour started no tour (no folder for its frames)"
 tour_done() { [ -n "$(tour_dir)" ] && [ -f "$(tour_dir)/frame_035.png" ] && grep -q 'saved 36 frames' "$work/stderr"; }
 poll "the tour's 36 frames" tour_done
 [ "$(find "$(tour_dir)" -name 'frame_*.png' | wc -l)" -eq 36 ] || fail "the tour wrote $(ls "$(tour_dir)" | wc -l) files, not 36"
