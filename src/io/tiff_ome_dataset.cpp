@@ -5,7 +5,10 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <set>
+#include <utility>
 
+#include "core/parallel_chunks.h"
 #include "io/load_failure.h"
 
 namespace ewa {
@@ -35,19 +38,24 @@ std::vector<uint8_t> readOmeDataset(const std::string& path, const std::string& 
   const size_t pageBytes = size_t(format.width) * format.height * fileScalarSize(layout.type);
   dataByteCount(xmlFile, {int64_t(format.width), int64_t(format.height), slices}, layout.type);
   std::vector<uint8_t> bytes(pageBytes * size_t(slices));
-  std::unique_ptr<TiffFile> open;
-  std::map<std::string, int> files;
-  for (const auto& [z, source] : sources) {
-    if (!open || open->path() != source.file) open = std::make_unique<TiffFile>(source.file);
-    ++files[source.file];
-    if (!TIFFSetDirectory(open->get(), tdir_t(source.ifd)))
-      open->fail("has no page " + std::to_string(source.ifd));
-    const PageFormat f = pageFormat(*open);
-    if (!(f == format))
-      open->fail("page " + std::to_string(source.ifd) + " is " + f.text() + ", the first " +
-                 format.text() + ": all pages must agree");
-    readPage(*open, f, sample, bytes.data() + size_t(z) * pageBytes);
-  }
+  const std::vector<std::pair<int64_t, TiffPlaneSource>> list(sources.begin(), sources.end());
+  // Each chunk of slices opens its files itself and decodes its pages on its own core.
+  parallelChunks(list.size(), 1, 0, [&](size_t first, size_t last, size_t) {
+    std::unique_ptr<TiffFile> open;
+    for (size_t n = first; n < last; ++n) {
+      const auto& [z, source] = list[n];
+      if (!open || open->path() != source.file) open = std::make_unique<TiffFile>(source.file);
+      if (!TIFFSetDirectory(open->get(), tdir_t(source.ifd)))
+        open->fail("has no page " + std::to_string(source.ifd));
+      const PageFormat f = pageFormat(*open);
+      if (!(f == format))
+        open->fail("page " + std::to_string(source.ifd) + " is " + f.text() + ", the first " +
+                   format.text() + ": all pages must agree");
+      readPage(*open, f, sample, bytes.data() + size_t(z) * pageBytes);
+    }
+  });
+  std::set<std::string> files;
+  for (const auto& slice : list) files.insert(slice.second.file);
   layout.notes.push_back("an OME-TIFF dataset: " + std::to_string(slices) + " slices from " +
                          std::to_string(files.size()) + " files");
   return bytes;
