@@ -24,13 +24,15 @@ namespace ewa {
 namespace {
 
 // The pixel size, slice spacing, unit and origin: OME-XML's physical sizes and first plane's
-// position; else, in ImageJ's files (its
-// unit) or with no unit, the resolution tags (inch and centimetre resolutions are print sizes,
-// 72 dpi, not the sample's) and ImageJ's spacing=.
+// position; else, in ImageJ's files (its unit) or with no unit, the resolution tags (inch and
+// centimetre resolutions are print sizes, 72 dpi, not the sample's) and ImageJ's spacing=.
+// Notes say which sizes the file did not give.
 void placePixels(const TiffFile& tiff, const TiffPlaneOrder& order, VolumeLayout& layout) {
+  bool pixelSizeGiven = false;
   if (order.kind == "OME") {
     if (order.sizeX > 0.0) layout.spacing.x = order.sizeX;
     if (order.sizeY > 0.0) layout.spacing.y = order.sizeY;
+    pixelSizeGiven = order.sizeX > 0.0;
     if (order.hasOrigin) layout.origin = {order.origin[0], order.origin[1], order.origin[2]};
   } else {
     uint16_t resolutionUnit = RESUNIT_INCH;
@@ -38,8 +40,10 @@ void placePixels(const TiffFile& tiff, const TiffPlaneOrder& order, VolumeLayout
     float xres = 0.0f, yres = 0.0f;
     if (order.kind == "ImageJ" || resolutionUnit == RESUNIT_NONE) {
       if (TIFFGetField(tiff.get(), TIFFTAG_XRESOLUTION, &xres) && xres > 0.0f &&
-          std::isfinite(1.0 / xres))
+          std::isfinite(1.0 / xres)) {
         layout.spacing.x = 1.0 / xres;
+        pixelSizeGiven = true;
+      }
       if (TIFFGetField(tiff.get(), TIFFTAG_YRESOLUTION, &yres) && yres > 0.0f &&
           std::isfinite(1.0 / yres))
         layout.spacing.y = 1.0 / yres;
@@ -49,8 +53,7 @@ void placePixels(const TiffFile& tiff, const TiffPlaneOrder& order, VolumeLayout
     layout.spacing.z = order.sizeZ;
   else
     layout.notes.push_back("no slice spacing in the file: 1 assumed");
-  if (layout.spacing.x == 1.0 && layout.spacing.y == 1.0)
-    layout.notes.push_back("no pixel size in the file: 1 assumed");
+  if (!pixelSizeGiven) layout.notes.push_back("no pixel size in the file: 1 assumed");
   if (!order.unit.empty()) layout.notes.push_back("spacing unit: " + quoteText(order.unit, 20));
   layout.unit = lengthUnitName(order.unit);
 }

@@ -122,6 +122,19 @@ TEST(TiffWriter, OriginIsThePlanePositions) {
   EXPECT_EQ(tiffFacts(dir.path("zero.tif")).description.find("<Plane"), std::string::npos);
 }
 
+// Sizes of 1 that the file gives are not "assumed": no note says so.
+TEST(TiffWriter, UnitSizesReadBackWithoutAssumptions) {
+  TempDir dir;
+  Volume v({2, 2, 2}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8,
+           std::vector<uint8_t>{1, 2, 3, 4, 5, 6, 7, 8});
+  v.setUnit("mm");
+  writeVolume(dir.path("ones.tif"), v);
+  const Volume back = loadVolume(dir.path("ones.tif"));
+  expectSameVolume(v, back, 0.0);
+  for (const std::string& note : back.notes())
+    EXPECT_EQ(note.find("assumed"), std::string::npos) << note;
+}
+
 TEST(TiffWriter, SaysWhatATiffCannotKeep) {
   const Volume ramp = rampVolumesOfEveryType()[0];  // origin (-10, 20.5, 7): kept
   EXPECT_TRUE(savedVolumeLosses("v.tif", ramp).empty());
