@@ -745,20 +745,16 @@ TEST(TiffFiles, MultiPageTypesChannelsAndImageJSpacing) {
   EXPECT_EQ(v.type(), ScalarType::UInt16);
   EXPECT_EQ(v.value(2, 1, 2), 2005);
   EXPECT_EQ(v.spacing(), glm::dvec3(0.25, 0.5, 2.5));  // resolution tags and spacing=
-  auto noted = [](const Volume& volume, const std::string& text) {
-    const auto& notes = volume.notes();
-    return std::any_of(notes.begin(), notes.end(), [&](const std::string& note) {
-      return note.find(text) != std::string::npos;
-    });
-  };
-  EXPECT_FALSE(noted(v, "no pixel size") || noted(v, "no slice spacing"));
+  EXPECT_FALSE(testing::hasNoteWith(v, "no pixel size") ||
+               testing::hasNoteWith(v, "no slice spacing"));
   // 72 dpi in a plain TIFF is a print size, not the sample's: spacing 1, with notes.
   std::vector<std::vector<float>> fpages(2, std::vector<float>(4, 0.25f));
   ASSERT_TRUE(testing::writeTiff(dir.path("f.tiff"), 2, 2, fpages, SAMPLEFORMAT_IEEEFP));
   EXPECT_EQ(loadVolume(dir.path("f.tiff")).type(), ScalarType::Float32);
   EXPECT_EQ(loadVolume(dir.path("f.tiff")).spacing(), glm::dvec3(1.0));
-  EXPECT_TRUE(noted(loadVolume(dir.path("f.tiff")), "no pixel size in the file: 1 assumed"));
-  EXPECT_TRUE(noted(loadVolume(dir.path("f.tiff")), "no slice spacing in the file: 1 assumed"));
+  const Volume plain = loadVolume(dir.path("f.tiff"));
+  EXPECT_TRUE(testing::hasNoteWith(plain, "no pixel size in the file: 1 assumed"));
+  EXPECT_TRUE(testing::hasNoteWith(plain, "no slice spacing in the file: 1 assumed"));
   // 32- and 64-bit samples become float32.
   std::vector<std::vector<int32_t>> ipages = {{-70000, 1, 2, 3}, {4, 5, 6, 70000}};
   ASSERT_TRUE(testing::writeTiff(dir.path("i32.tif"), 2, 2, ipages, SAMPLEFORMAT_INT));

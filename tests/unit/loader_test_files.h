@@ -139,4 +139,11 @@ inline void expectVolumeLoadError(const std::string& path, const std::string& fr
   expectLoadError([&] { loadVolume(path); }, path, fragment);
 }
 
+// Whether one of `v`'s notes holds `text`.
+inline bool hasNoteWith(const Volume& v, const std::string& text) {
+  for (const std::string& note : v.notes())
+    if (note.find(text) != std::string::npos) return true;
+  return false;
+}
+
 }  // namespace ewa::testing

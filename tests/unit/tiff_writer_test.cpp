@@ -131,8 +131,7 @@ TEST(TiffWriter, UnitSizesReadBackWithoutAssumptions) {
   writeVolume(dir.path("ones.tif"), v);
   const Volume back = loadVolume(dir.path("ones.tif"));
   expectSameVolume(v, back, 0.0);
-  for (const std::string& note : back.notes())
-    EXPECT_EQ(note.find("assumed"), std::string::npos) << note;
+  EXPECT_FALSE(testing::hasNoteWith(back, "assumed")) << ::testing::PrintToString(back.notes());
 }
 
 TEST(TiffWriter, SaysWhatATiffCannotKeep) {
