@@ -243,21 +243,90 @@ std::string transferSyntax(const std::vector<uint8_t>& b, size_t from, size_t to
   return "";
 }
 
+// How a file holds DICOM: after the Part 10 preamble, or as a bare data set from byte 0 (an
+// ACR-NEMA file, or a data set saved without its preamble and meta header).
+enum class DicomStart { None, Part10, BareExplicit, BareImplicit, BareBigEndian };
+
+// The tag of the element at `pos` and where the next one starts (0 when its header does not
+// fit in `head`), read as explicit or implicit VR in the given byte order.
+struct BareElement {
+  uint16_t group = 0, element = 0;
+  size_t next = 0;
+};
+BareElement bareElement(const std::vector<uint8_t>& head, size_t pos, bool explicitVr, bool big) {
+  BareElement e;
+  if (head.size() < pos + 12) return e;
+  e.group = uint16_t(readUnsigned(&head[pos], 2, big));
+  e.element = uint16_t(readUnsigned(&head[pos + 2], 2, big));
+  uint64_t length = 0, header = 8;
+  if (!explicitVr)
+    length = readUnsigned(&head[pos + 4], 4, big);
+  else if (longVr(&head[pos + 4]))
+    length = readUnsigned(&head[pos + 8], 4, big), header = 12;
+  else
+    length = readUnsigned(&head[pos + 6], 2, big);
+  if (length <= head.size()) e.next = pos + size_t(header + length);
+  return e;
+}
+
+// GDCM reads a file without "DICM" at byte 128 from byte 0, telling its encoding by its first
+// element (FileMetaInformation::ReadCompat): group 0008 little-endian, explicit when a VR
+// follows the tag. Only such a start whose second element follows in tag order, within the
+// first 4 KiB, counts: other files that happen to start with 08 00 are not DICOM.
+DicomStart dicomStart(const std::string& path) {
+  std::error_code ec;
+  const uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec || size < 16) return DicomStart::None;
+  if (size >= 132 &&
+      std::memcmp(readFileRange(path, 128, 4, "DICOM preamble").data(), "DICM", 4) == 0)
+    return DicomStart::Part10;
+  const std::vector<uint8_t> head =
+      readFileRange(path, 0, std::min<uint64_t>(size, 4096), "DICOM data set");
+  for (const bool big : {false, true}) {
+    if (readUnsigned(head.data(), 2, big) != 0x0008) continue;
+    const char vr[3] = {char(head[4]), char(head[5]), 0};
+    const bool explicitVr = gdcm::VR::GetVRType(vr) != gdcm::VR::VR_END;
+    const BareElement first = bareElement(head, 0, explicitVr, big);
+    if (first.next == 0) continue;
+    const BareElement second = bareElement(head, first.next, explicitVr, big);
+    const bool ordered =
+        second.group > 0x0008 || (second.group == 0x0008 && second.element > first.element);
+    if (ordered)
+      return big          ? DicomStart::BareBigEndian
+             : explicitVr ? DicomStart::BareExplicit
+                          : DicomStart::BareImplicit;
+  }
+  return DicomStart::None;
+}
+
 }  // namespace
 
 bool looksLikeDicom(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::file_size(path, ec) < 132 || ec) return false;
-  return std::memcmp(readFileRange(path, 128, 4, "DICOM preamble").data(), "DICM", 4) == 0;
+  return dicomStart(path) != DicomStart::None;
 }
 
 DicomStructure checkDicomStructure(const std::string& path) {
   const uint64_t size = regularFileSize(path);
-  // Other files in a folder (notes, pictures) are only looked at as far as the preamble.
-  if (!looksLikeDicom(path)) return DicomStructure::NotDicom;
+  // Other files in a folder (notes, pictures) are only looked at as far as their start.
+  const DicomStart start = dicomStart(path);
+  if (start == DicomStart::None) return DicomStructure::NotDicom;
+  // GDCM refuses implicit big-endian (ACR-NEMA's own byte order) by throwing a bare string.
+  if (start == DicomStart::BareBigEndian)
+    failLoad(path,
+             "a DICOM data set in big-endian byte order without the Part 10 header (old "
+             "ACR-NEMA): not read");
   checkAllocation(path, size, "file");
   const std::vector<uint8_t> bytes = readFileRange(path, 0, size, "file");
   Walk walk{bytes, {}, {}};
+  if (start != DicomStart::Part10) {
+    const bool explicitVr = start == DicomStart::BareExplicit;
+    walk.run(0, explicitVr, false, false);
+    if (!walk.problem.empty()) failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
+    const std::string syntax = explicitVr ? "1.2.840.10008.1.2.1" : "1.2.840.10008.1.2";
+    const std::string problem = colourCodingProblem(walk.photometric, syntax, false);
+    if (!problem.empty()) failLoad(path, problem);
+    return DicomStructure::Plausible;
+  }
   const size_t metaEnd = walk.run(132, true, false, true);
   if (!walk.problem.empty()) failLoad(path, "corrupt DICOM meta header: " + walk.problem);
   // GDCM trusts the meta header's group length (0002,0000) and asserts when it lies.

@@ -8,16 +8,17 @@ namespace ewa {
 // What checkDicomStructure found.
 enum class DicomStructure {
   Plausible,  // every element's length fits in the file
-  NotDicom,   // no "DICM" preamble: not read as DICOM (ACR-NEMA files without it are not read)
+  NotDicom,   // neither the "DICM" preamble nor a data set from byte 0: not read as DICOM
 };
 
 // Walks the elements of the file at `path` (Part 10 preamble and meta header, then the data
 // set in its transfer syntax: implicit or explicit VR, little or big endian; deflated data sets
-// are not walked), entering sequences and items, and checks each defined length against the
-// bytes left. GDCM sizes its buffers by those lengths before reading (up to 4 GiB for one
-// element) and asserts (aborts) on items out of place, so such files must be caught here.
-// Throws LoadError naming the file when a file with the DICM preamble is cut short or corrupt;
-// returns NotDicom for files without the preamble, which never reach GDCM.
+// are not walked; or, without the preamble, a bare little-endian data set from byte 0 as GDCM
+// reads one: ACR-NEMA files), entering sequences and items, and checks each defined length
+// against the bytes left. GDCM sizes its buffers by those lengths before reading (up to 4 GiB
+// for one element) and asserts (aborts) on items out of place, so such files must be caught
+// here. Throws LoadError naming the file when a DICOM file is cut short or corrupt, or is a
+// big-endian ACR-NEMA file; returns NotDicom for other files, which never reach GDCM.
 DicomStructure checkDicomStructure(const std::string& path);
 
 }  // namespace ewa

@@ -9,6 +9,7 @@
 #include "io/dicom_frames.h"
 #include "io/dicom_pixels.h"
 #include "io/dicom_series.h"
+#include "io/dicom_unplaced.h"
 #include "io/dicom_volumes.h"
 #include "io/file_bytes.h"
 #include "io/format_loaders.h"
@@ -63,8 +64,8 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   if (dir.empty()) dir = ".";
   if (!folder && !looksLikeDicom(path))
     failLoad(path,
-             "not a DICOM file (no 'DICM' at byte 128; files without the Part 10 preamble "
-             "are not read)");
+             "not a DICOM file (no 'DICM' at byte 128, and no data set of group 0008 at "
+             "byte 0)");
   std::string fileSeries;
   std::vector<std::string> unreadable;
   std::vector<DicomSeries> all =
@@ -127,6 +128,8 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
                              (colon == std::string::npos ? what : what.substr(colon + 2)));
     }
   } else {
+    // No positions (ACR-NEMA): given some, and no anatomical labels without an orientation.
+    if (placeUnplacedSlices(slices, layout.notes).orientationAssumed) layout.patientFrame = false;
     slices = selectDicomVolume(path, std::move(slices), frame, layout.notes, &layout.frameCount);
     if (const auto cine = stackOnePosition(slices, layout.notes))
       step = *cine;

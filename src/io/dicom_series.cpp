@@ -34,12 +34,15 @@ const gdcm::Tag kRepresentation(0x0028, 0x0103);
 const gdcm::Tag kPhotometric(0x0028, 0x0004);
 const gdcm::Tag kPlanarConfiguration(0x0028, 0x0006);
 const gdcm::Tag kInstance(0x0020, 0x0013);
+const gdcm::Tag kSliceLocation(0x0020, 0x1041);
+const gdcm::Tag kSliceThickness(0x0018, 0x0050);
+const gdcm::Tag kSpacingBetweenSlices(0x0018, 0x0088);
 // What the scanner reads from every file (and dicom_guard checks first: isScannedDicomTag).
 const gdcm::Tag kScannedTags[] = {
-    kSeriesUid,  kSeriesDescription, kPosition,       kOrientation,     kRows,
-    kColumns,    kPixelSpacing,      kFrames,         kSamplesPerPixel, kBitsAllocated,
-    kBitsStored, kHighBit,           kRepresentation, kPhotometric,     kPlanarConfiguration,
-    kInstance};
+    kSeriesUid,  kSeriesDescription, kPosition,       kOrientation,         kRows,
+    kColumns,    kPixelSpacing,      kFrames,         kSamplesPerPixel,     kBitsAllocated,
+    kBitsStored, kHighBit,           kRepresentation, kPhotometric,         kPlanarConfiguration,
+    kInstance,   kSliceLocation,     kSliceThickness, kSpacingBetweenSlices};
 
 int64_t integer(const char* text) {
   int64_t v = 0;
@@ -142,6 +145,13 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
       s.rowSpacing = sp[0], s.columnSpacing = sp[1], s.hasSpacing = true;
     s.frames = std::max<int64_t>(1, integer(scanner.GetValue(file.c_str(), kFrames)));
     s.instance = integer(scanner.GetValue(file.c_str(), kInstance));
+    const std::vector<double> at = dicomNumbers(scanner.GetValue(file.c_str(), kSliceLocation));
+    if (at.size() == 1) s.sliceLocation = at[0], s.hasSliceLocation = true;
+    const std::vector<double> thick = dicomNumbers(scanner.GetValue(file.c_str(), kSliceThickness));
+    if (thick.size() == 1 && thick[0] > 0.0) s.sliceThickness = thick[0];
+    const std::vector<double> between =
+        dicomNumbers(scanner.GetValue(file.c_str(), kSpacingBetweenSlices));
+    if (between.size() == 1 && between[0] > 0.0) s.spacingBetweenSlices = between[0];
     if (const char* spp = scanner.GetValue(file.c_str(), kSamplesPerPixel))
       s.samplesPerPixel = integer(spp);
     s.bitsAllocated = integer(scanner.GetValue(file.c_str(), kBitsAllocated));

@@ -22,6 +22,9 @@ struct DicomSlice {
   int64_t frames = 1;    // NumberOfFrames
   int64_t frame = 0;     // of a multi-frame file opened frame by frame (dicom_frames.h): its frame
   int64_t instance = 0;  // InstanceNumber (0 when absent): orders volumes at the same positions
+  // Where slices without ImagePositionPatient go (dicom_unplaced.h); 0 when absent.
+  double sliceLocation = 0.0, sliceThickness = 0.0, spacingBetweenSlices = 0.0;
+  bool hasSliceLocation = false;
   // Pixel module values, checked before GDCM decodes (its reader asserts on some bad ones).
   int64_t samplesPerPixel = 1, bitsAllocated = 0, bitsStored = 0, highBit = 0, representation = 0;
   int64_t planarConfiguration = 0;  // 0 when absent; -1 when present but not a number

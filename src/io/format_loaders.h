@@ -38,7 +38,8 @@ Volume loadImageStack(const std::string& path, int channel);
 // The file names loadImageStack reads.
 const std::vector<std::string>& sliceImageExtensions();
 
-// True when the file starts like DICOM Part 10 ("DICM" at byte 128).
+// True when the file starts like DICOM: Part 10 ("DICM" at byte 128), or a bare data set from
+// byte 0 as ACR-NEMA files hold one (its first two elements, group 0008, in tag order).
 bool looksLikeDicom(const std::string& path);
 
 }  // namespace ewa

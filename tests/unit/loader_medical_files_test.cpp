@@ -21,6 +21,7 @@ using testing::allNotes;
 using testing::dicomSeries;
 using testing::expectLoadError;
 using testing::expectVolumeLoadError;
+using testing::fileBytes;
 using testing::NiftiFields;
 using testing::TempDir;
 
@@ -214,12 +215,6 @@ TEST(Directions, NrrdSpaceDirectionsAndMetaImageTransformMatrix) {
                                kVoxels24));
   EXPECT_FALSE(plain.patientFrame());
   EXPECT_EQ(plain.direction()[0], glm::dvec3(0, 1, 0));
-}
-
-// A file's bytes (to cut or patch it).
-std::string fileBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 TEST(DicomFiles, SeriesSortedByPositionWithRescale) {

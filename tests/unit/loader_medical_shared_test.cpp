@@ -11,6 +11,7 @@
 #include "core/volume_orientation.h"
 #include "io/volume_loader.h"
 #include "loader_test_files.h"
+#include "medical_test_files.h"
 
 // Expected values come from a python3 script that parsed the files with struct and zlib (DICOM
 // element by element, NIfTI header by offset; positions from IPP/IOP/PixelSpacing and the
@@ -154,6 +155,28 @@ TEST_F(MedicalData, DicomPetFolderAndAnyFileSortedByPosition) {
         loadVolume(data("dicom-pet"), {"1.2.3", 0, 0, {}});
       },
       data("dicom-pet"), "no series '1.2.3'");
+}
+
+// The PET series' files without their Part 10 header (bare implicit little-endian data sets,
+// as ACR-NEMA files come): the same volume, placed by the same positions.
+TEST_F(MedicalData, DicomPetAsBareDataSets) {
+  testing::TempDir dir;
+  std::filesystem::create_directories(dir.path("bare"));
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(data("dicom-pet"))) {
+    const std::string bare = testing::bareDataSet(entry.path().string());
+    ASSERT_FALSE(bare.empty()) << entry.path();
+    dir.write("bare/" + entry.path().stem().string(), bare);
+    ++files;
+  }
+  EXPECT_EQ(files, 299);
+  const Volume part10 = loadVolume(data("dicom-pet"));
+  const Volume bare = loadVolume(dir.path("bare"));
+  EXPECT_EQ(bare.dims(), part10.dims());
+  EXPECT_EQ(bare.spacing(), part10.spacing());
+  EXPECT_EQ(bare.origin(), part10.origin());
+  EXPECT_EQ(bare.bytes(), part10.bytes());
+  EXPECT_EQ(bare.notes(), part10.notes());
 }
 
 TEST_F(MedicalData, DicomMrStackFromTheZip) {

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -137,6 +138,12 @@ inline void expectLoadError(const std::function<void()>& load, const std::string
 
 inline void expectVolumeLoadError(const std::string& path, const std::string& fragment) {
   expectLoadError([&] { loadVolume(path); }, path, fragment);
+}
+
+// A file's bytes (to cut or patch it).
+inline std::string fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 // Whether one of `v`'s notes holds `text`.

@@ -282,6 +282,22 @@ inline bool recompressDicom(const std::string& path, gdcm::TransferSyntax::TSTyp
   return writer.Write();
 }
 
+// The data set of the Part 10 file at `path` without its preamble and meta header (group 0002,
+// explicit VR little-endian as the standard has it): a bare data set, as ACR-NEMA files hold.
+inline std::string bareDataSet(const std::string& path) {
+  const std::string b = fileBytes(path);
+  if (b.size() < 132 || b.compare(128, 4, "DICM") != 0) return {};
+  size_t p = 132;
+  while (p + 12 <= b.size() && b[p] == 2 && b[p + 1] == 0) {
+    const std::string vr = b.substr(p + 4, 2);
+    const bool longForm = vr == "OB" || vr == "OW" || vr == "UN" || vr == "SQ" || vr == "UT";
+    const auto at = [&](size_t i) { return uint64_t(uint8_t(b[i])); };
+    p += longForm ? 12 + size_t(at(p + 8) | at(p + 9) << 8 | at(p + 10) << 16 | at(p + 11) << 24)
+                  : 8 + size_t(at(p + 6) | at(p + 7) << 8);
+  }
+  return b.substr(p);
+}
+
 // A TIFF written by libtiff: one page per entry of `pages` (width x height samples of T each,
 // `samples` per pixel interleaved), with an optional ImageDescription on the first page.
 template <typename T>
