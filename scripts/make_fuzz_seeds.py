@@ -328,9 +328,17 @@ def small_dicom(raw, z, rows=3, cols=4):
     return bytes(out)
 
 
+def without_meta(raw):
+    # The data set alone, as ACR-NEMA files hold it: no preamble, no group 2 meta header.
+    elements = dicom_elements(raw)
+    first = next(start for tag, start, length in elements if tag[0] != 2)
+    return raw[first - 8:]
+
+
 def dicom_seeds():
     pet = read_text(os.path.join(DATA, "dicom-pet", "000000.dcm"))
     write("dicom", "pet_slice.dcm", small_dicom(pet, 0))
+    write("dicom", "bare_implicit_slice.dcm", without_meta(small_dicom(pet, 0)))
     write("dicom", "pet_three_slices.dcm",
           small_dicom(pet, 0) + MARK + small_dicom(pet, 3.375) + MARK + small_dicom(pet, 6.75))
 

@@ -15,6 +15,7 @@
 #include "io/dicom_colour.h"
 #include "io/dicom_series.h"
 #include "io/file_bytes.h"
+#include "io/file_listing.h"
 #include "io/format_loaders.h"
 #include "io/jpeg_header_check.h"
 #include "io/load_failure.h"
@@ -70,6 +71,10 @@ struct Walk {
   bool jpeg = false;      // the transfer syntax is JPEG: each frame's header is checked
   bool jpeg2000 = false;  // JPEG 2000: each codestream's image size against the header's
   bool jpegLs = false;    // JPEG-LS: each frame's size against the header's
+  // A bare implicit data set: GDCM reads it up to the file's length, summing the lengths of
+  // items, and asserts on an item whose contents' length is odd (found by fuzzing), so items
+  // and the elements inside them must have even lengths, as the standard has it.
+  bool evenLengths = false;
   // The data set's own (0028,0010), (0011), (0002), (0100).
   int64_t rows = 0, columns = 0, samples = 1, bitsAllocated = 0;
   std::string photometric{};  // (0028,0004), trimmed
@@ -93,6 +98,8 @@ struct Walk {
       const Container::Kind top = open.empty() ? Container::Item : open.back().kind;
       if (group == 0xfffe) {
         const uint64_t length = readUnsigned(&bytes[pos + 4], 4, big);
+        if (evenLengths && length != 0xffffffffu && length % 2 != 0)
+          return fail(pos, "an item of odd length " + std::to_string(length));
         pos += 8;
         // A delimiter's length is 0; GDCM allocates what it claims (found by fuzzing: 4 GiB).
         if ((element == 0xe00d || element == 0xe0dd) && length != 0)
@@ -170,6 +177,9 @@ struct Walk {
         length = readUnsigned(&bytes[pos + 4], 4, big);
         pos += 8;
       }
+      if (evenLengths && !open.empty() && length != 0xffffffffu && length % 2 != 0)
+        return fail(pos, "element (" + hex(group) + "," + hex(element) + ") of odd length " +
+                             std::to_string(length));
       if (length == 0xffffffffu) {  // undefined length: items follow, then a delimiter
         open.push_back({group == 0x7fe0 ? Container::Fragments : Container::Sequence, kUndefined});
         continue;
@@ -280,6 +290,10 @@ DicomStart dicomStart(const std::string& path) {
   if (size >= 132 &&
       std::memcmp(readFileRange(path, 128, 4, "DICOM preamble").data(), "DICM", 4) == 0)
     return DicomStart::Part10;
+  // A bare data set is told by a few bytes only: looked for in files named as DICOM files are
+  // (IM0001, a UID, .dcm, .acr, ...), never in a .raw or .dat whose data might start alike.
+  const std::string name = std::filesystem::path(path).filename().string();
+  if (!mayBeDicomByName(name)) return DicomStart::None;
   const std::vector<uint8_t> head =
       readFileRange(path, 0, std::min<uint64_t>(size, 4096), "DICOM data set");
   for (const bool big : {false, true}) {
@@ -320,6 +334,7 @@ DicomStructure checkDicomStructure(const std::string& path) {
   Walk walk{bytes, {}, {}};
   if (start != DicomStart::Part10) {
     const bool explicitVr = start == DicomStart::BareExplicit;
+    walk.evenLengths = !explicitVr;
     walk.run(0, explicitVr, false, false);
     if (!walk.problem.empty()) failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
     const std::string syntax = explicitVr ? "1.2.840.10008.1.2.1" : "1.2.840.10008.1.2";

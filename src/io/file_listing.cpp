@@ -44,13 +44,25 @@ bool hasExtension(const std::string& path, const std::vector<std::string>& exten
   });
 }
 
+bool mayBeDicomByName(const std::string& name) {
+  if (hasExtension(name, {".dcm", ".dicom", ".dic", ".ima", ".acr", ".nema"})) return true;
+  const size_t dot = name.rfind('.');
+  if (dot == std::string::npos || dot == 0) return true;
+  const std::string ext = name.substr(dot + 1);
+  return !ext.empty() && std::all_of(ext.begin(), ext.end(), [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) != 0;
+  });
+}
+
 std::vector<DirEntry> listDirectory(const std::string& dir,
-                                    const std::vector<std::string>& extensions, bool showHidden) {
+                                    const std::vector<std::string>& extensions, bool showHidden,
+                                    bool dicomByContent) {
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
   if (ec) throw std::runtime_error(dir + ": cannot list: " + ec.message());
   std::vector<DirEntry> dirs, files;
+  int sniffed = 0;
   for (; it != fs::directory_iterator(); it.increment(ec)) {
     if (ec) break;
     const std::string name = it->path().filename().string();
@@ -58,9 +70,16 @@ std::vector<DirEntry> listDirectory(const std::string& dir,
     std::error_code statError;
     if (it->is_directory(statError)) {
       dirs.push_back({name, true, 0});
-    } else if (it->is_regular_file(statError) &&
-               (extensions.empty() || hasExtension(name, extensions))) {
-      files.push_back({name, false, it->file_size(statError)});
+    } else if (it->is_regular_file(statError)) {
+      bool listed = extensions.empty() || hasExtension(name, extensions);
+      // Read at most 4 KiB of a bounded number of files: the dialog lists on the UI thread.
+      if (!listed && dicomByContent && mayBeDicomByName(name) && sniffed++ < kDicomSniffLimit) {
+        try {
+          listed = looksLikeDicom(it->path().string());
+        } catch (const std::exception&) {  // unreadable: not listed
+        }
+      }
+      if (listed) files.push_back({name, false, it->file_size(statError)});
     }
   }
   auto byName = [](const DirEntry& a, const DirEntry& b) { return a.name < b.name; };

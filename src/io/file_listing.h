@@ -19,12 +19,19 @@ const std::vector<std::string>& volumeFileExtensions();
 bool hasExtension(const std::string& path, const std::vector<std::string>& extensions);
 
 // Folders (sorted by name) then files whose extension is in `extensions` (sorted; all files
-// when `extensions` is empty). Names starting with '.' are left out unless `showHidden`;
-// unreadable entries are skipped. Throws std::runtime_error("dir: problem") when the folder
-// cannot be read.
+// when `extensions` is empty). With `dicomByContent`, files named as DICOM files are
+// (mayBeDicomByName: scanners name them IM0001 or by their UID, 1.2.840.113619.2.1.5) are
+// listed too when they start like DICOM (the first kDicomSniffLimit such files looked into).
+// Names starting with '.' are left out unless `showHidden`; unreadable entries are skipped.
+// Throws std::runtime_error("dir: problem") when the folder cannot be read.
 std::vector<DirEntry> listDirectory(const std::string& dir,
                                     const std::vector<std::string>& extensions,
-                                    bool showHidden = false);
+                                    bool showHidden = false, bool dicomByContent = false);
+constexpr int kDicomSniffLimit = 1000;
+
+// Whether a file is named as DICOM files are: no extension or a number for one (IM0001, a UID),
+// or .dcm, .dicom, .dic, .ima, .acr (ACR-NEMA), .nema.
+bool mayBeDicomByName(const std::string& name);
 
 // The paths of the files in `dir` whose extension is in `extensions`, in natural name order
 // ("z2" before "z10"): a stack's slices. Hidden files are left out (macOS leaves "._NAME"

@@ -39,7 +39,8 @@ Volume loadImageStack(const std::string& path, int channel);
 const std::vector<std::string>& sliceImageExtensions();
 
 // True when the file starts like DICOM: Part 10 ("DICM" at byte 128), or a bare data set from
-// byte 0 as ACR-NEMA files hold one (its first two elements, group 0008, in tag order).
+// byte 0 as ACR-NEMA files hold one (its first two elements, group 0008, in tag order), looked
+// for only in files named as DICOM files are (mayBeDicomByName, .dcm, .ima, .acr, ...).
 bool looksLikeDicom(const std::string& path);
 
 }  // namespace ewa

@@ -37,7 +37,8 @@ void FileDialog::changeFolder(const std::string& folder) {
   try {
     const std::vector<std::string> kinds =
         purpose_ == Purpose::SaveVolume ? savedVolumeExtensions() : volumeFileExtensions();
-    entries_ = listDirectory(canonical.string(), allFiles_ ? std::vector<std::string>{} : kinds);
+    entries_ = listDirectory(canonical.string(), allFiles_ ? std::vector<std::string>{} : kinds,
+                             false, purpose_ != Purpose::SaveVolume);
     folder_ = canonical.string();
     error_.clear();
   } catch (const std::exception& e) {

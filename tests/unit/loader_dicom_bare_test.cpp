@@ -83,6 +83,10 @@ TEST(DicomBare, OtherFilesAndBadOnesAreNotTakenForDicom) {
   const std::string reversed = dir.write("reversed", element20 + element10);
   EXPECT_TRUE(looksLikeDicom(dir.write("ordered", element10 + element20)));
   EXPECT_FALSE(looksLikeDicom(reversed));
+  // Only in files named as DICOM files are: not in a .raw whose data might start alike.
+  EXPECT_FALSE(looksLikeDicom(dir.write("data.raw", bare)));
+  EXPECT_TRUE(looksLikeDicom(dir.write("old.ACR", bare)));
+  EXPECT_TRUE(looksLikeDicom(dir.write("1.3.12.2.1107", bare)));
   // Cut short in its pixel data: one line naming the file.
   const std::string cut = dir.write("cut.dcm", bare.substr(0, bare.size() - 10));
   expectVolumeLoadError(cut, "corrupt or truncated DICOM data");

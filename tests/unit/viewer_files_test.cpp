@@ -269,6 +269,33 @@ TEST_F(ViewerFiles, ListingShowsFoldersThenVolumeFiles) {
   EXPECT_FALSE(hasExtension("x/y.raw", volumeFileExtensions()));
 }
 
+TEST_F(ViewerFiles, ListingFindsDicomFilesWithoutExtensionsByTheirContent) {
+  const std::string part10 = std::string(128, '\0') + "DICM" + std::string(16, '\0');
+  const std::string element = std::string("\x08\x00\x10\x00\x04\x00\x00\x00", 8) + "abcd";
+  const std::string bare = element + std::string("\x08\x00\x20\x00\x04\x00\x00\x00", 8) + "abcd";
+  for (const auto& [name, bytes] : std::vector<std::pair<std::string, std::string>>{
+           {"IM0001", part10},
+           {"1.2.840.113619.2.55", part10},
+           {"ACRNEMA", bare},
+           {"head.acr", bare},
+           {"README", "a text that is no DICOM file, long enough to be looked into....."},
+           {"notes.txt", part10},  // an extension of words: not looked into
+           {"short", "DICM"}}) {
+    std::ofstream(path(name), std::ios::binary) << bytes;
+  }
+  std::vector<std::string> names;
+  for (const DirEntry& e : listDirectory(dir_.string(), volumeFileExtensions(), false, true))
+    names.push_back(e.name);
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"1.2.840.113619.2.55", "ACRNEMA", "IM0001", "head.acr"}));
+  EXPECT_TRUE(listDirectory(dir_.string(), volumeFileExtensions()).empty());  // by name only
+  EXPECT_TRUE(mayBeDicomByName("IM0001"));
+  EXPECT_TRUE(mayBeDicomByName("1.3.12.2.1107"));
+  EXPECT_TRUE(mayBeDicomByName("OLD.NEMA"));
+  EXPECT_FALSE(mayBeDicomByName("scan.raw"));
+  EXPECT_FALSE(mayBeDicomByName("scan."));
+}
+
 TEST_F(ViewerFiles, TurntableNamesFromPatternOrFolder) {
   const FrameNaming pat = parseFrameNaming("out/t_%03d.png");
   EXPECT_TRUE(pat.pattern);
