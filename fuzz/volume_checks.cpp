@@ -58,7 +58,7 @@ void checkWrittenBack(const Volume& v, const std::string& folder) {
       writeVolume(path, v);
     } catch (const std::runtime_error& e) {
       const std::string message = e.what();
-      EWA_FUZZ_CHECK(nifti);  // NRRD and MetaImage hold every volume
+      EWA_FUZZ_CHECK(nifti);  // NRRD, MetaImage and TIFF hold every volume
       EWA_FUZZ_CHECK(message.rfind(path + ": ", 0) == 0);
       EWA_FUZZ_CHECK(message.find('\n') == std::string::npos);
       continue;

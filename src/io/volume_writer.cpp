@@ -71,7 +71,13 @@ std::string savedVolumeExtension(SavedVolumeFormat format) {
 }
 
 std::vector<std::string> savedVolumeLosses(const std::string& path, const Volume& volume) {
-  if (savedVolumeFormat(path) == SavedVolumeFormat::Tiff) return tiffLosses(volume);
+  const auto format = savedVolumeFormat(path);
+  if (format == SavedVolumeFormat::Tiff) return tiffLosses(volume);
+  if ((format == SavedVolumeFormat::Nifti || format == SavedVolumeFormat::NiftiGzip) &&
+      needsNifti2(volume))
+    return {
+        "NIfTI-2, not NIfTI-1: an axis over 32767 voxels, or a spacing or origin beyond "
+        "float32, which NIfTI-1 cannot hold (tools that read NIfTI-1 only will not open it)"};
   return {};
 }
 
@@ -93,7 +99,7 @@ void writeVolume(const std::string& path, const Volume& volume) {
   }
   if (*format == SavedVolumeFormat::Tiff)
     return writeFileAtomically(path, encodeTiff(volume, path));
-  const std::string nifti = encodeNifti(volume, path);
+  const std::string nifti = encodeNifti(volume);
   if (*format == SavedVolumeFormat::Nifti) return writeFileAtomically(path, nifti);
   writeFileAtomically(path,
                       gzipBytes(reinterpret_cast<const uint8_t*>(nifti.data()), nifti.size()));

@@ -31,7 +31,7 @@ std::string savedVolumeExtension(SavedVolumeFormat format);
 std::vector<std::string> savedVolumeLosses(const std::string& path, const Volume& volume);
 
 // `volume` written to `path` atomically in the format its name asks for: a gzip NRRD
-// (encodeNrrd), a NIfTI-1 file (encodeNifti) or one gzip-compressed, or a MetaImage file with
+// (encodeNrrd), a NIfTI-1 or NIfTI-2 file (encodeNifti) or one gzip-compressed, or a MetaImage file with
 // its data inside (encodeMetaImage), a MetaImage header and its data beside it (NAME.mhd and
 // NAME.raw: metaImageDataPath; the data written first), or an OME-TIFF stack (encodeTiff). Throws
 // std::runtime_error("<path>: ...") for another name, a volume the format cannot hold and a

@@ -1,5 +1,6 @@
-// The NIfTI-1 writer (--save-volume NAME.nii / .nii.gz): what loadVolume reads back is the
-// volume written, through the sform and through the qform alone, and what it refuses.
+// The NIfTI writer (--save-volume NAME.nii / .nii.gz): what loadVolume reads back is the
+// volume written, through the sform and through the qform alone, and NIfTI-2 where NIfTI-1
+// cannot hold it.
 #include "io/nifti_writer.h"
 
 #include <gtest/gtest.h>
@@ -92,7 +93,7 @@ TEST(NiftiWriter, TheQformAloneGivesTheSamePlacement) {
       glm::dmat3 axes = r;
       if (mirrored) axes[1] = -axes[1];
       v.setDirection(axes, true);
-      std::string bytes = encodeNifti(v, "v.nii");
+      std::string bytes = encodeNifti(v);
       const Volume bySform = loadVolume(dir.write(name + "s.nii", bytes));
       ASSERT_EQ(bytes[252], 1);     // qform_code
       bytes[254] = bytes[255] = 0;  // sform_code
@@ -102,34 +103,52 @@ TEST(NiftiWriter, TheQformAloneGivesTheSamePlacement) {
     }
 }
 
-TEST(NiftiWriter, WhatNiftiCannotHoldIsRefusedNamingTheFile) {
+// An axis over 32767 voxels, or a spacing or origin beyond float32, goes to NIfTI-2 (64-bit
+// dims and doubles), with a note; what reads back is the volume written, to the last digit.
+TEST(NiftiWriter, WhatNifti1CannotHoldIsWrittenAsNifti2) {
   TempDir dir;
-  const Volume wide({40000, 1, 1}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8,
-                    std::vector<uint8_t>(40000, 1));
-  const std::string path = dir.path("wide.nii");
-  try {
-    writeVolume(path, wide);
-    ADD_FAILURE() << "no error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find(path + ": an axis of 40000 voxels"), std::string::npos)
-        << e.what();
+  std::vector<uint8_t> ramp(40000);
+  for (size_t i = 0; i < ramp.size(); ++i) ramp[i] = uint8_t(i * 7);
+  Volume wide({40000, 1, 1}, glm::dvec3(0.1, 0.2, 0.3), glm::dvec3(1.0, 2.0, 3.0),
+              ScalarType::UInt8, ramp);
+  wide.setUnit("mm");
+  Volume huge({2, 2, 2}, glm::dvec3(1.0, 1e39, 1e-40), glm::dvec3(-1e300, 0.0, 0.0),
+              ScalarType::UInt8, std::vector<uint8_t>{1, 2, 3, 4, 5, 6, 7, 8});
+  huge.setDirection(rotation(0.3, {1, 2, 3}), true);
+  for (const Volume* v : {&wide, &huge}) {
+    EXPECT_TRUE(needsNifti2(*v));
+    for (const char* name : {"v.nii", "v.nii.gz"}) {
+      SCOPED_TRACE(std::to_string(v->dims()[0]) + " " + name);
+      const std::string path = dir.path(name);
+      const std::vector<std::string> notes = writeVolumeAndLosses(path, *v);
+      ASSERT_EQ(notes.size(), 1u);
+      EXPECT_NE(notes[0].find("NIfTI-2"), std::string::npos) << notes[0];
+      const Volume back = loadVolume(path);
+      EXPECT_EQ(back.dims(), v->dims());
+      EXPECT_EQ(back.bytes(), v->bytes());
+      EXPECT_EQ(back.unit(), v->unit());
+      for (int a = 0; a < 3; ++a) {
+        EXPECT_DOUBLE_EQ(back.spacing()[a], v->spacing()[a]) << a;
+        EXPECT_DOUBLE_EQ(back.origin()[a], v->origin()[a]) << a;
+        for (int b = 0; b < 3; ++b)
+          EXPECT_NEAR(back.direction()[a][b], v->direction()[a][b], 1e-12);
+      }
+    }
   }
-  EXPECT_FALSE(std::filesystem::exists(path));
-  // A spacing float32 cannot hold.
-  const Volume huge({2, 2, 2}, glm::dvec3(1.0, 1e39, 1.0), glm::dvec3(0.0), ScalarType::UInt8,
-                    std::vector<uint8_t>(8, 1));
-  try {
-    writeVolume(dir.path("huge.nii"), huge);
-    ADD_FAILURE() << "no error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("outside NIfTI-1's float32 range"), std::string::npos)
-        << e.what();
-  }
+  const std::string header = encodeNifti(wide).substr(0, 12);
+  EXPECT_EQ(header.substr(0, 4), testing::uintBytes(540, 4));
+  EXPECT_EQ(header.substr(4, 8), std::string("n+2\0\r\n\032\n", 8));
+  // What NIfTI-1 holds stays NIfTI-1, with no note.
+  Volume small = rampVolume<int16_t>(ScalarType::Int16, 3, -20);
+  EXPECT_FALSE(needsNifti2(small));
+  EXPECT_EQ(encodeNifti(small).substr(0, 4), testing::uintBytes(348, 4));
+  EXPECT_TRUE(writeVolumeAndLosses(dir.path("small.nii"), small).empty());
   // A name of no format it writes.
   EXPECT_FALSE(savedVolumeFormat("v.vti"));
   EXPECT_FALSE(savedVolumeFormat(".nii"));
   EXPECT_EQ(savedVolumeFormat("dir.nii/V.NII.GZ"), SavedVolumeFormat::NiftiGzip);
   EXPECT_THROW(writeVolume(dir.path("v.vti"), wide), std::runtime_error);
+  EXPECT_FALSE(std::filesystem::exists(dir.path("v.vti")));
 }
 
 // A real file (big-endian int16 with a qform) written again as .nii.gz reads back the same.
