@@ -145,24 +145,26 @@ TEST_F(ArchiveTest, DetachedHeaderFindsItsDataBesideIt) {
 
 TEST_F(ArchiveTest, DicomSeriesInAFolderOfTheZipEqualsTheFolder) {
   const std::string folder = testing::dicomSeries(files_, "series", 5);
-  std::vector<Entry> entries;
-  for (const auto& e : fs::directory_iterator(folder))
-    entries.push_back({"export/series/" + e.path().filename().string(), [&] {
-                         std::ifstream in(e.path(), std::ios::binary);
-                         return std::string(std::istreambuf_iterator<char>(in), {});
-                       }()});
-  const std::string path = files_.path("pacs.zip");
-  writeArchive(path, entries);
   const Volume fromFolder = loadVolume(folder);
-  const Volume fromZip = loadVolume(path);
-  ASSERT_EQ(fromZip.dims(), fromFolder.dims());
-  EXPECT_EQ(fromZip.dims()[2], 5);
-  EXPECT_NE(testing::allNotes(fromZip).find("opened 'export/series'"), std::string::npos);
-  EXPECT_EQ(fromZip.spacing(), fromFolder.spacing());
-  EXPECT_EQ(fromZip.origin(), fromFolder.origin());
-  for (int64_t n = 0; n < fromZip.voxelCount(); ++n)
-    ASSERT_EQ(fromZip.valueAt(n), fromFolder.valueAt(n)) << "voxel " << n;
-  EXPECT_TRUE(leftInTemp().empty());
+  // As Part 10 files, and as bare data sets named without an extension (ACR-NEMA).
+  for (const bool bare : {false, true}) {
+    SCOPED_TRACE(bare ? "bare" : "Part 10");
+    std::vector<Entry> entries;
+    for (const auto& e : fs::directory_iterator(folder))
+      entries.push_back(
+          {"export/series/" + e.path().stem().string() + (bare ? "" : ".dcm"),
+           bare ? testing::bareDataSet(e.path().string()) : testing::fileBytes(e.path().string())});
+    const std::string path = files_.path(bare ? "acr.zip" : "pacs.zip");
+    writeArchive(path, entries);
+    const Volume fromZip = loadVolume(path);
+    ASSERT_EQ(fromZip.dims(), fromFolder.dims());
+    EXPECT_EQ(fromZip.dims()[2], 5);
+    EXPECT_NE(testing::allNotes(fromZip).find("opened 'export/series'"), std::string::npos);
+    EXPECT_EQ(fromZip.spacing(), fromFolder.spacing());
+    EXPECT_EQ(fromZip.origin(), fromFolder.origin());
+    EXPECT_EQ(fromZip.bytes(), fromFolder.bytes());
+    EXPECT_TRUE(leftInTemp().empty());
+  }
 }
 
 TEST_F(ArchiveTest, ImageSlicesInAFolderOfTheZipOpenAsAStack) {
