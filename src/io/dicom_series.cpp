@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <map>
+#include <optional>
 
 #include "io/dicom_guard.h"
 #include "io/load_failure.h"
@@ -145,13 +146,16 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
       s.rowSpacing = sp[0], s.columnSpacing = sp[1], s.hasSpacing = true;
     s.frames = std::max<int64_t>(1, integer(scanner.GetValue(file.c_str(), kFrames)));
     s.instance = integer(scanner.GetValue(file.c_str(), kInstance));
-    const std::vector<double> at = dicomNumbers(scanner.GetValue(file.c_str(), kSliceLocation));
-    if (at.size() == 1) s.sliceLocation = at[0], s.hasSliceLocation = true;
-    const std::vector<double> thick = dicomNumbers(scanner.GetValue(file.c_str(), kSliceThickness));
-    if (thick.size() == 1 && thick[0] > 0.0) s.sliceThickness = thick[0];
-    const std::vector<double> between =
-        dicomNumbers(scanner.GetValue(file.c_str(), kSpacingBetweenSlices));
-    if (between.size() == 1 && between[0] > 0.0) s.spacingBetweenSlices = between[0];
+    // A tag holding one number, else nullopt.
+    const auto single = [&](const gdcm::Tag& tag) -> std::optional<double> {
+      const std::vector<double> v = dicomNumbers(scanner.GetValue(file.c_str(), tag));
+      return v.size() == 1 ? std::optional<double>(v[0]) : std::nullopt;
+    };
+    if (const auto at = single(kSliceLocation)) s.sliceLocation = *at, s.hasSliceLocation = true;
+    if (const auto thick = single(kSliceThickness); thick && *thick > 0.0)
+      s.sliceThickness = *thick;
+    if (const auto between = single(kSpacingBetweenSlices); between && *between > 0.0)
+      s.spacingBetweenSlices = *between;
     if (const char* spp = scanner.GetValue(file.c_str(), kSamplesPerPixel))
       s.samplesPerPixel = integer(spp);
     s.bitsAllocated = integer(scanner.GetValue(file.c_str(), kBitsAllocated));

@@ -3,8 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <glm/geometric.hpp>
+
+#include "io/text_numbers.h"
 
 namespace ewa {
 
@@ -25,12 +26,6 @@ bool distinctLocations(const std::vector<DicomSlice>& slices) {
   return true;
 }
 
-std::string shortNumber(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
-
 }  // namespace
 
 UnplacedSlices placeUnplacedSlices(std::vector<DicomSlice>& slices,
@@ -39,7 +34,6 @@ UnplacedSlices placeUnplacedSlices(std::vector<DicomSlice>& slices,
   if (slices.size() < 2) return result;
   for (const DicomSlice& s : slices)
     if (s.hasPosition) return result;
-  result.placed = true;
   result.orientationAssumed = std::none_of(slices.begin(), slices.end(),
                                            [](const DicomSlice& s) { return s.hasOrientation; });
   if (result.orientationAssumed) {
@@ -59,18 +53,18 @@ UnplacedSlices placeUnplacedSlices(std::vector<DicomSlice>& slices,
     return a.instance != b.instance ? a.instance < b.instance : a.file < b.file;
   });
   const DicomSlice& first = slices.front();
-  const double step = first.spacingBetweenSlices > 0.0 ? first.spacingBetweenSlices
-                      : first.sliceThickness > 0.0     ? first.sliceThickness
-                                                       : 1.0;
-  const char* from = first.spacingBetweenSlices > 0.0 ? " (SpacingBetweenSlices)"
-                     : first.sliceThickness > 0.0     ? " (SliceThickness)"
-                                                      : " (assumed)";
+  double step = 1.0;
+  const char* from = " (assumed)";
+  if (first.spacingBetweenSlices > 0.0)
+    step = first.spacingBetweenSlices, from = " (SpacingBetweenSlices)";
+  else if (first.sliceThickness > 0.0)
+    step = first.sliceThickness, from = " (SliceThickness)";
   for (size_t i = 0; i < slices.size(); ++i)
     slices[i].position = normal * (double(i) * step), slices[i].hasPosition = true;
   notes.push_back(
       "no ImagePositionPatient or distinct SliceLocation: slices stacked in "
       "InstanceNumber order, " +
-      shortNumber(step) + " apart" + from);
+      shortText(step) + " apart" + from);
   return result;
 }
 

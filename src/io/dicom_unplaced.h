@@ -8,10 +8,9 @@
 
 namespace ewa {
 
-// What placeUnplacedSlices did.
+// What placeUnplacedSlices assumed.
 struct UnplacedSlices {
-  bool placed = false;              // the slices had no positions and were given some
-  bool orientationAssumed = false;  // nor orientations: rows along x, columns along y
+  bool orientationAssumed = false;  // no slice had an orientation: rows along x, columns along y
 };
 
 // Places the slices of a series none of which has an ImagePositionPatient, as old ACR-NEMA

@@ -106,4 +106,10 @@ std::string roundTripText(double v) {
   return text;
 }
 
+std::string shortText(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
 }  // namespace ewa

@@ -19,6 +19,8 @@ std::vector<double> parseTextNumbers(const std::string& path, std::string_view t
 
 // `v` as text that reads back as the same double ("%.17g"): what the writers put in headers.
 std::string roundTripText(double v);
+// `v` to six significant digits ("%g"): for messages and notes.
+std::string shortText(double v);
 
 // `count` bytes written as pairs of hex digits (white space anywhere) from `offset`.
 std::vector<uint8_t> readHexBytes(const std::string& path, uint64_t offset, uint64_t count,

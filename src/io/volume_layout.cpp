@@ -11,6 +11,7 @@
 #include "io/byte_order.h"
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
+#include "io/text_numbers.h"
 
 namespace ewa {
 
@@ -176,12 +177,10 @@ Volume makeVolume(const std::string& path, const VolumeLayout& layout, std::vect
   // exact enough for the camera and the writers (1e-314 is a denormal of 10 digits). Checked
   // on the grid as drawn: resampling a sheared one sets its own spacing.
   for (int a = 0; a < 3; ++a)
-    if (grid.spacing[a] < 1e-100 || grid.spacing[a] > 1e100) {
-      char text[32];
-      std::snprintf(text, sizeof text, "%g", grid.spacing[a]);
-      failLoad(path, "spacing along axis " + std::to_string(a) + " is " + text +
+    if (grid.spacing[a] < 1e-100 || grid.spacing[a] > 1e100)
+      failLoad(path, "spacing along axis " + std::to_string(a) + " is " +
+                         shortText(grid.spacing[a]) +
                          ", outside 1e-100 to 1e100 (a corrupt header?)");
-    }
   try {
     Volume v(grid.dims, grid.spacing, grid.origin, type, std::move(bytes));
     v.setDirection(grid.direction, layout.patientFrame);
