@@ -28,32 +28,41 @@ namespace {
 // centimetre resolutions are print sizes, 72 dpi, not the sample's) and ImageJ's spacing=.
 // Notes say which sizes the file did not give.
 void placePixels(const TiffFile& tiff, const TiffPlaneOrder& order, VolumeLayout& layout) {
-  bool pixelSizeGiven = false;
+  double sizeX = 0.0, sizeY = 0.0;  // 0: not in the file
   if (order.kind == "OME") {
-    if (order.sizeX > 0.0) layout.spacing.x = order.sizeX;
-    if (order.sizeY > 0.0) layout.spacing.y = order.sizeY;
-    pixelSizeGiven = order.sizeX > 0.0;
+    sizeX = order.sizeX;
+    sizeY = order.sizeY;
     if (order.hasOrigin) layout.origin = {order.origin[0], order.origin[1], order.origin[2]};
   } else {
     uint16_t resolutionUnit = RESUNIT_INCH;
     TIFFGetFieldDefaulted(tiff.get(), TIFFTAG_RESOLUTIONUNIT, &resolutionUnit);
-    float xres = 0.0f, yres = 0.0f;
     if (order.kind == "ImageJ" || resolutionUnit == RESUNIT_NONE) {
-      if (TIFFGetField(tiff.get(), TIFFTAG_XRESOLUTION, &xres) && xres > 0.0f &&
-          std::isfinite(1.0 / xres)) {
-        layout.spacing.x = 1.0 / xres;
-        pixelSizeGiven = true;
-      }
-      if (TIFFGetField(tiff.get(), TIFFTAG_YRESOLUTION, &yres) && yres > 0.0f &&
-          std::isfinite(1.0 / yres))
-        layout.spacing.y = 1.0 / yres;
+      const auto size = [&](ttag_t tag) {
+        float res = 0.0f;
+        return TIFFGetField(tiff.get(), tag, &res) && res > 0.0f && std::isfinite(1.0 / res)
+                   ? 1.0 / res
+                   : 0.0;
+      };
+      sizeX = size(TIFFTAG_XRESOLUTION);
+      sizeY = size(TIFFTAG_YRESOLUTION);
     }
   }
+  // One of the two given: square pixels, as ImageJ and Bio-Formats assume.
+  if (sizeX > 0.0 && !(sizeY > 0.0)) {
+    sizeY = sizeX;
+    layout.notes.push_back("no pixel height in the file: its width assumed");
+  } else if (sizeY > 0.0 && !(sizeX > 0.0)) {
+    sizeX = sizeY;
+    layout.notes.push_back("no pixel width in the file: its height assumed");
+  } else if (!(sizeX > 0.0)) {
+    layout.notes.push_back("no pixel size in the file: 1 assumed");
+  }
+  if (sizeX > 0.0) layout.spacing.x = sizeX;
+  if (sizeY > 0.0) layout.spacing.y = sizeY;
   if (order.sizeZ > 0.0)
     layout.spacing.z = order.sizeZ;
   else
     layout.notes.push_back("no slice spacing in the file: 1 assumed");
-  if (!pixelSizeGiven) layout.notes.push_back("no pixel size in the file: 1 assumed");
   if (!order.unit.empty()) layout.notes.push_back("spacing unit: " + quoteText(order.unit, 20));
   layout.unit = lengthUnitName(order.unit);
 }

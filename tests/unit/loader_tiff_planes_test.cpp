@@ -135,5 +135,29 @@ TEST(TiffPlanes, FirstPlanePositionIsTheOrigin) {
   EXPECT_EQ(nan.origin, (std::array<double, 3>{0.0, 0.0, 0.0}));
 }
 
+// A pixel size given for one axis only stands for both (square pixels), with a note; none at
+// all is 1, with another.
+TEST(TiffPlanes, OnePixelSizeStandsForBoth) {
+  TempDir dir;
+  const std::vector<std::vector<uint8_t>> pages(2, std::vector<uint8_t>(6, 7));
+  const auto open = [&](const std::string& name, const std::string& sizes) {
+    const std::string xml =
+        "<OME><Image><Pixels DimensionOrder=\"XYZCT\" SizeX=\"3\" SizeY=\"2\" SizeZ=\"2\" " +
+        sizes + " Type=\"uint8\"><TiffData/></Pixels></Image></OME>";
+    const std::string path = dir.path(name);
+    EXPECT_TRUE(testing::writeTiff(path, 3, 2, pages, SAMPLEFORMAT_UINT, 1, xml));
+    return loadVolume(path);
+  };
+  const Volume yOnly = open("y.ome.tif", "PhysicalSizeY=\"0.4\" PhysicalSizeZ=\"2\"");
+  EXPECT_EQ(yOnly.spacing(), glm::dvec3(0.4, 0.4, 2.0));
+  EXPECT_TRUE(testing::hasNoteWith(yOnly, "no pixel width in the file: its height assumed"));
+  EXPECT_FALSE(testing::hasNoteWith(yOnly, "no pixel size"));
+  const Volume xOnly = open("x.ome.tif", "PhysicalSizeX=\"0.3\" PhysicalSizeZ=\"2\"");
+  EXPECT_EQ(xOnly.spacing(), glm::dvec3(0.3, 0.3, 2.0));
+  const Volume none = open("none.ome.tif", "PhysicalSizeZ=\"2\"");
+  EXPECT_EQ(none.spacing(), glm::dvec3(1.0, 1.0, 2.0));
+  EXPECT_TRUE(testing::hasNoteWith(none, "no pixel size in the file: 1 assumed"));
+}
+
 }  // namespace
 }  // namespace ewa
