@@ -131,6 +131,7 @@ void SessionPanel::drawCapture(const SessionView& view, SessionEdits& edits) {
   }
   ImGui::SameLine();
   const bool turntable = ImGui::Button("Turntable");
+  layout_.lastItem("turntable-button");
   ImGui::SameLine();
   // A tour flies through the camera bookmarks in order, resting at each (--tour).
   const bool canTour = view.bookmarks && view.bookmarks->size() >= 2;

@@ -4,8 +4,8 @@
 # the axes key with xdotool, and checks the screenshots change as they should; then
 # checks that an orbit drag is answered while a full-quality frame is being refined, that
 # Page Down and Page Up page through a 4D file's frames, and the channels, saving, --watch,
-# screenshots, the Capture section's Tour through two camera bookmarks and a DICOM folder's
-# series list.
+# screenshots, the Capture section's Tour through two camera bookmarks and its Turntable, and a
+# DICOM folder's series list.
 # Usage: window_test.sh EWAVIEW_BINARY OUTPUT_DIR.  Exit 77 (CTest skip) without X tools, or
 # exit 1 when CI=true: CI must not pass by skipping.
 set -uo pipefail
@@ -536,6 +536,21 @@ greater "$t1" "$t0" && greater "$t2" "$t1" ||
   fail "the tour does not come nearer the ball (coverage $t0, $t1, $t2 at frames 0, 18, 35)"
 cp "$(tour_dir)/frame_000.png" "$out/18_tour_first.png"; cp "$(tour_dir)/frame_035.png" "$out/19_tour_last.png"
 log "tour: 36 frames of $frame_size, coverage $t0 -> $t1 -> $t2"
+# Capture > Turntable: 36 frames round the volume at the capture size, in a folder of its own.
+turntable_dir() { find "$work/shots" -maxdepth 1 -type d -name 'ewaview-ball-*-turntable' | head -1; }
+turntable_started() { [ -n "$(turntable_dir)" ]; }
+click_until turntable-button turntable_started ||
+  fail "clicking Turntable started no turntable (no folder for its frames)"
+turntable_done() { [ -f "$(turntable_dir)/frame_035.png" ] && [ "$(grep -c 'saved 36 frames' "$work/stderr")" -ge 2 ]; }
+poll "the turntable's 36 frames" turntable_done
+[ "$(find "$(turntable_dir)" -name 'frame_*.png' | wc -l)" -eq 36 ] ||
+  fail "the turntable wrote $(ls "$(turntable_dir)" | wc -l) files, not 36"
+frame_size=$(identify -format '%wx%h' "$(turntable_dir)/frame_018.png")
+[ "$frame_size" = "$((2 * width))x$((2 * height))" ] || fail "turntable frames are $frame_size, not twice the window"
+r0=$(coverage "$(turntable_dir)/frame_000.png" "$all"); r1=$(coverage "$(turntable_dir)/frame_018.png" "$all")
+greater "$r0" 0.005 && greater "$r1" 0.005 || fail "the turntable's frames do not show the volume ($r0, $r1)"
+cp "$(turntable_dir)/frame_018.png" "$out/20_turntable_half.png"
+log "turntable: 36 frames of $frame_size, coverage $r0, $r1 at frames 0 and 18"
 quit_window "watch window"
 
 # Series: a DICOM folder of two (a ball of 30 slices, a box of 20). The panel lists them;
@@ -565,4 +580,4 @@ if [ -n "$fixture" ]; then
   quit_window "fourth window"
 fi
 
-echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; copied view $view_diff px; TF mean $m0 -> $m1, coverage $c0 -> $c1, undone $mp -> $mu, redone $mt -> $mr; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1, saved; watched file reloaded ($w0 -> $w1), F5, screenshot $shot_size; tour $t0 -> $t2; $series_note"
+echo "PASS: idle 0 px; orbit $orbit_diff px; zoom coverage $before -> $after; copied view $view_diff px; TF mean $m0 -> $m1, coverage $c0 -> $c1, undone $mp -> $mu, redone $mt -> $mr; drag during refinement answered in ${answer_s}s ($moved_diff px); frames coverage $f0 -> $f1; channels $k0 -> $k1, saved; watched file reloaded ($w0 -> $w1), F5, screenshot $shot_size; tour $t0 -> $t2; turntable $r0, $r1; $series_note"
