@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "io/byte_order.h"
+#include "io/dicom_duplicates.h"
 #include "io/dicom_frames.h"
 #include "io/dicom_pixels.h"
 #include "io/dicom_series.h"
@@ -33,15 +34,16 @@ const DicomSeries& pickSeries(const std::string& path, const std::vector<DicomSe
   failLoad(path, "no series " + quoteText(uid, 80) + " here (series: " + known + ")");
 }
 
-// Warnings for the files a scan left out as corrupt: the first few named, then a count, so a
-// folder of broken files does not print a line each.
-void noteUnreadable(const std::vector<std::string>& unreadable, std::vector<std::string>& notes) {
+// Notes for the files a scan left out (`prefix` "warning: " for corrupt ones): the first few
+// named, then a count of `more`, so a folder of broken files does not print a line each.
+void noteSkipped(const std::vector<std::string>& skipped, const std::string& prefix,
+                 const std::string& more, std::vector<std::string>& notes) {
   constexpr size_t kNamed = 3;
-  for (size_t i = 0; i < unreadable.size() && i < kNamed; ++i)
-    notes.push_back("warning: skipped " + unreadable[i]);
-  if (unreadable.size() > kNamed)
-    notes.push_back("warning: skipped " + std::to_string(unreadable.size() - kNamed) +
-                    " more corrupt or truncated files");
+  for (size_t i = 0; i < skipped.size() && i < kNamed; ++i)
+    notes.push_back(prefix + "skipped " + skipped[i]);
+  if (skipped.size() > kNamed)
+    notes.push_back(prefix + "skipped " + std::to_string(skipped.size() - kNamed) + " more " +
+                    more);
 }
 
 // The folder of `file` relative to `root` (where a series lies in a CD's tree).
@@ -74,6 +76,8 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   // list of broken files, the folder's own among them, replaces the folder's).
   const bool below = folder && all.empty();
   if (below) all = scanDicomFolder(dir, std::string(), nullptr, true, &unreadable);
+  std::vector<std::string> copies;
+  dropDuplicateImages(all, copies);
   // A series mixing sizes, orientations or multi-frame files: each volume a series of its own.
   splitDicomSeries(all);
   if (!fileSeries.empty()) fileSeries = namedSeries(all);
@@ -92,7 +96,8 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   VolumeLayout layout;
   layout.patientFrame = true;
   layout.unit = "mm";  // DICOM's lengths are millimetres
-  noteUnreadable(unreadable, layout.notes);
+  noteSkipped(unreadable, "warning: ", "corrupt or truncated files", layout.notes);
+  noteSkipped(copies, "", "copies of images already in the series", layout.notes);
   if (all.size() > 1 || below)  // below: where the series lies, even alone
     for (const DicomSeries& s : all) {
       const std::string label =
@@ -129,7 +134,8 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
     }
   } else {
     // No positions (ACR-NEMA): given some, and no anatomical labels without an orientation.
-    if (placeUnplacedSlices(slices, layout.notes).orientationAssumed) layout.patientFrame = false;
+    const UnplacedSlices placed = placeUnplacedSlices(slices, layout.notes);
+    if (placed.orientationAssumed || placed.equipmentAxes) layout.patientFrame = false;
     slices = selectDicomVolume(path, std::move(slices), frame, layout.notes, &layout.frameCount);
     if (const auto cine = stackOnePosition(slices, layout.notes))
       step = *cine;

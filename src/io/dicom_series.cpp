@@ -38,12 +38,32 @@ const gdcm::Tag kInstance(0x0020, 0x0013);
 const gdcm::Tag kSliceLocation(0x0020, 0x1041);
 const gdcm::Tag kSliceThickness(0x0018, 0x0050);
 const gdcm::Tag kSpacingBetweenSlices(0x0018, 0x0088);
+const gdcm::Tag kSopInstance(0x0008, 0x0018);
+const gdcm::Tag kRetiredPosition(0x0020, 0x0030);
+const gdcm::Tag kRetiredOrientation(0x0020, 0x0035);
 // What the scanner reads from every file (and dicom_guard checks first: isScannedDicomTag).
-const gdcm::Tag kScannedTags[] = {
-    kSeriesUid,  kSeriesDescription, kPosition,       kOrientation,         kRows,
-    kColumns,    kPixelSpacing,      kFrames,         kSamplesPerPixel,     kBitsAllocated,
-    kBitsStored, kHighBit,           kRepresentation, kPhotometric,         kPlanarConfiguration,
-    kInstance,   kSliceLocation,     kSliceThickness, kSpacingBetweenSlices};
+const gdcm::Tag kScannedTags[] = {kSeriesUid,
+                                  kSeriesDescription,
+                                  kPosition,
+                                  kOrientation,
+                                  kRows,
+                                  kColumns,
+                                  kPixelSpacing,
+                                  kFrames,
+                                  kSamplesPerPixel,
+                                  kBitsAllocated,
+                                  kBitsStored,
+                                  kHighBit,
+                                  kRepresentation,
+                                  kPhotometric,
+                                  kPlanarConfiguration,
+                                  kInstance,
+                                  kSliceLocation,
+                                  kSliceThickness,
+                                  kSpacingBetweenSlices,
+                                  kRetiredPosition,
+                                  kRetiredOrientation,
+                                  kSopInstance};
 
 int64_t integer(const char* text) {
   int64_t v = 0;
@@ -141,6 +161,12 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
     const std::vector<double> o = dicomNumbers(scanner.GetValue(file.c_str(), kOrientation));
     if (o.size() == 6)
       std::copy(o.begin(), o.end(), s.orientation.begin()), s.hasOrientation = true;
+    const std::vector<double> rp = dicomNumbers(scanner.GetValue(file.c_str(), kRetiredPosition));
+    if (rp.size() == 3) s.retiredPosition = {rp[0], rp[1], rp[2]}, s.hasRetiredPosition = true;
+    const std::vector<double> ro =
+        dicomNumbers(scanner.GetValue(file.c_str(), kRetiredOrientation));
+    if (ro.size() == 6)
+      std::copy(ro.begin(), ro.end(), s.retiredOrientation.begin()), s.hasRetiredOrientation = true;
     const std::vector<double> sp = dicomNumbers(scanner.GetValue(file.c_str(), kPixelSpacing));
     if (sp.size() == 2 && sp[0] > 0.0 && sp[1] > 0.0)
       s.rowSpacing = sp[0], s.columnSpacing = sp[1], s.hasSpacing = true;
@@ -167,6 +193,8 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
       s.planarConfiguration = parseInt64(trim(std::string(pc)), v) ? v : -1;
     }
     if (const char* pi = scanner.GetValue(file.c_str(), kPhotometric)) s.photometric = trim(pi);
+    if (const char* sop = scanner.GetValue(file.c_str(), kSopInstance))
+      s.sopInstanceUid = trim(sop);
     const char* uid = scanner.GetValue(file.c_str(), kSeriesUid);
     DicomSeries& series = byUid[uid ? trim(std::string(uid)) : std::string()];
     series.uid = uid ? trim(std::string(uid)) : std::string();

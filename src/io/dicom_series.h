@@ -25,11 +25,18 @@ struct DicomSlice {
   // Where slices without ImagePositionPatient go (dicom_unplaced.h); 0 when absent.
   double sliceLocation = 0.0, sliceThickness = 0.0, spacingBetweenSlices = 0.0;
   bool hasSliceLocation = false;
+  // ACR-NEMA's retired Image Position (0020,0030) and Image Orientation (0020,0035): the same
+  // numbers in the equipment's own axes, read only when no slice has ImagePositionPatient.
+  glm::dvec3 retiredPosition{0.0};
+  std::array<double, 6> retiredOrientation{1, 0, 0, 0, 1, 0};
+  bool hasRetiredPosition = false, hasRetiredOrientation = false;
   // Pixel module values, checked before GDCM decodes (its reader asserts on some bad ones).
   int64_t samplesPerPixel = 1, bitsAllocated = 0, bitsStored = 0, highBit = 0, representation = 0;
   int64_t planarConfiguration = 0;  // 0 when absent; -1 when present but not a number
   std::string photometric;          // PhotometricInterpretation, trimmed; empty when absent
-  bool named = false;               // the file the user named (scanDicomFolder's namedFile)
+  std::string
+      sopInstanceUid;  // SOPInstanceUID, trimmed: tells a file's copies (dicom_duplicates.h)
+  bool named = false;  // the file the user named (scanDicomFolder's namedFile)
 };
 
 struct DicomSeries {

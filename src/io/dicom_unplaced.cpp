@@ -1,4 +1,5 @@
-// placeUnplacedSlices: slice order and spacing from SliceLocation or InstanceNumber.
+// placeUnplacedSlices: slice order and spacing from ACR-NEMA positions, SliceLocation or
+// InstanceNumber.
 #include "io/dicom_unplaced.h"
 
 #include <algorithm>
@@ -26,6 +27,57 @@ bool distinctLocations(const std::vector<DicomSlice>& slices) {
   return true;
 }
 
+glm::dvec3 normalOf(const std::array<double, 6>& o) {
+  const glm::dvec3 n = glm::cross(glm::dvec3(o[0], o[1], o[2]), glm::dvec3(o[3], o[4], o[5]));
+  // A degenerate orientation is sortDicomSlices' error; the slices still get distinct places.
+  return glm::length(n) > 1e-6 ? glm::normalize(n) : glm::dvec3(0, 0, 1);
+}
+
+// Places the slices by ACR-NEMA's retired Image Position when every slice has one, no two
+// share one and they lie on one line along the normal (of ImageOrientationPatient, else the
+// retired Image Orientation when every slice has one, else rows x and columns y): a position
+// off that line may be in another convention than the orientation's, which SliceLocation or
+// InstanceNumber order place more safely. Returns whether it placed them.
+bool placeByRetiredPosition(std::vector<DicomSlice>& slices, std::vector<std::string>& notes) {
+  const auto all = [&](bool DicomSlice::*flag) {
+    return std::all_of(slices.begin(), slices.end(), [&](const DicomSlice& s) { return s.*flag; });
+  };
+  const auto none = [&](bool DicomSlice::*flag) {
+    return std::none_of(slices.begin(), slices.end(), [&](const DicomSlice& s) { return s.*flag; });
+  };
+  if (!all(&DicomSlice::hasRetiredPosition)) return false;
+  const bool retiredOrientation =
+      none(&DicomSlice::hasOrientation) && all(&DicomSlice::hasRetiredOrientation);
+  const bool assumed = none(&DicomSlice::hasOrientation) && !retiredOrientation;
+  const DicomSlice& first = slices.front();
+  const glm::dvec3 normal =
+      normalOf(retiredOrientation ? first.retiredOrientation : first.orientation);
+  std::vector<double> along;
+  const glm::dvec3 p0 = first.retiredPosition;
+  for (const DicomSlice& s : slices) {
+    const glm::dvec3 d = s.retiredPosition - p0;
+    const double t = glm::dot(d, normal);
+    const double tolerance = 1e-3 + 1e-4 * glm::length(s.retiredPosition);
+    if (glm::length(d - t * normal) > tolerance) return false;
+    along.push_back(t);
+  }
+  std::sort(along.begin(), along.end());
+  for (size_t i = 1; i < along.size(); ++i)
+    if (along[i] - along[i - 1] < kSameLocation) return false;
+  for (DicomSlice& s : slices) {
+    s.position = s.retiredPosition, s.hasPosition = true;
+    if (retiredOrientation) s.orientation = s.retiredOrientation;
+    if (retiredOrientation || assumed) s.hasOrientation = true;  // assumed: rows x, columns y
+  }
+  if (assumed)
+    notes.push_back("no ImageOrientationPatient: rows along x and columns along y assumed");
+  notes.push_back(std::string("no ImagePositionPatient: slices placed by ACR-NEMA's Image Position "
+                              "(0020,0030)") +
+                  (retiredOrientation ? " and Image Orientation (0020,0035)" : "") +
+                  ", in the equipment's axes, not the patient's");
+  return true;
+}
+
 }  // namespace
 
 UnplacedSlices placeUnplacedSlices(std::vector<DicomSlice>& slices,
@@ -34,16 +86,17 @@ UnplacedSlices placeUnplacedSlices(std::vector<DicomSlice>& slices,
   if (slices.size() < 2) return result;
   for (const DicomSlice& s : slices)
     if (s.hasPosition) return result;
+  if (placeByRetiredPosition(slices, notes)) {
+    result.equipmentAxes = true;
+    return result;
+  }
   result.orientationAssumed = std::none_of(slices.begin(), slices.end(),
                                            [](const DicomSlice& s) { return s.hasOrientation; });
   if (result.orientationAssumed) {
     for (DicomSlice& s : slices) s.hasOrientation = true;  // the default: rows x, columns y
     notes.push_back("no ImageOrientationPatient: rows along x and columns along y assumed");
   }
-  const auto& o = slices.front().orientation;
-  glm::dvec3 normal = glm::cross(glm::dvec3(o[0], o[1], o[2]), glm::dvec3(o[3], o[4], o[5]));
-  // A degenerate orientation is sortDicomSlices' error; the slices still get distinct places.
-  normal = glm::length(normal) > 1e-6 ? glm::normalize(normal) : glm::dvec3(0, 0, 1);
+  const glm::dvec3 normal = normalOf(slices.front().orientation);
   if (distinctLocations(slices)) {
     for (DicomSlice& s : slices) s.position = normal * s.sliceLocation + 0.0, s.hasPosition = true;
     notes.push_back("no ImagePositionPatient: slices placed by their SliceLocation");

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "io/format_loaders.h"
 #include "io/volume_loader.h"
@@ -159,6 +162,61 @@ TEST(DicomBare, SlicesWithoutPositionsArePlacedBySliceLocationThenInstanceNumber
   const Volume c = loadVolume(byInstance);
   EXPECT_EQ(c.bytes(), placed.bytes());
   EXPECT_TRUE(testing::hasNoteWith(c, "InstanceNumber order")) << allNotes(c);
+}
+
+// Sets a DS element to `values` (backslash-separated, at most 16 characters each, padded to an
+// even length).
+void setNumbers(gdcm::DataSet& ds, const gdcm::Tag& tag, const std::vector<double>& values) {
+  std::string text;
+  for (double v : values) {
+    char number[32];
+    std::snprintf(number, sizeof number, "%.9g", v);
+    text += (text.empty() ? "" : "\\") + std::string(number);
+  }
+  if (text.size() % 2) text += ' ';
+  gdcm::DataElement e(tag);
+  e.SetVR(gdcm::VR::DS);
+  e.SetByteValue(text.data(), uint32_t(text.size()));
+  ds.Replace(e);
+}
+
+// ACR-NEMA's retired Image Position and Orientation place slices that have no
+// ImagePositionPatient, in the equipment's axes; positions off the line along the normal do not.
+TEST(DicomBare, AcrNemaImagePositionPlacesSlicesAlongItsOrientation) {
+  TempDir dir;
+  const int count = 5;
+  const Volume placed = loadVolume(dicomSeries(dir, "s", count));  // im n at z = 2 ((7 n) mod 5)
+  const double c = std::cos(0.3), sn = std::sin(0.3);
+  const glm::dvec3 normal(0.0, -sn, c);  // rows along x, columns along (0, c, sn)
+  const std::string retired = dicomSeries(dir, "retired", count);
+  const auto rewrite = [&](double offAxis) {
+    for (int n = 0; n < count; ++n) {
+      const double z = 2.0 * ((n * 7) % count);
+      const std::string im = retired + "/im" + std::to_string(n) + ".dcm";
+      unplace(im, true, std::nan(""), count - int(z / 2));  // instance numbers reversed
+      ASSERT_TRUE(editDicom(im, [&](gdcm::DataSet& ds) {
+        ds.Remove(gdcm::Tag(0x0020, 0x1041));
+        const glm::dvec3 p = glm::dvec3(10.0 + offAxis * n, 20.0, 0.0) + z * normal;
+        setNumbers(ds, gdcm::Tag(0x0020, 0x0030), {p.x, p.y, p.z});
+        setNumbers(ds, gdcm::Tag(0x0020, 0x0035), {1, 0, 0, 0, c, sn});
+      }));
+    }
+  };
+  rewrite(0.0);
+  const Volume v = loadVolume(retired);
+  EXPECT_EQ(v.bytes(), placed.bytes());
+  EXPECT_NEAR(v.spacing().z, 2.0, 1e-6);
+  EXPECT_NEAR(glm::length(v.direction()[2] - normal), 0.0, 1e-6);
+  EXPECT_NEAR(glm::length(v.origin() - glm::dvec3(10.0, 20.0, 0.0)), 0.0, 1e-6);
+  EXPECT_FALSE(v.patientFrame());  // the equipment's axes
+  EXPECT_TRUE(testing::hasNoteWith(
+      v, "placed by ACR-NEMA's Image Position (0020,0030) and Image Orientation (0020,0035)"))
+      << allNotes(v);
+  // Positions off that line: the instance numbers (reversed here) order the slices instead.
+  rewrite(1.5);
+  const Volume off = loadVolume(retired);
+  EXPECT_TRUE(testing::hasNoteWith(off, "InstanceNumber order")) << allNotes(off);
+  EXPECT_NE(off.bytes(), placed.bytes());
 }
 
 }  // namespace

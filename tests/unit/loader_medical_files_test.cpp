@@ -631,9 +631,16 @@ TEST(DicomFiles, BadSeriesFailWithOneLine) {
   std::filesystem::create_directories(dir.path("empty"));
   dir.write("empty/notes.txt", "no images here");
   expectVolumeLoadError(dir.path("empty"), "no DICOM image");
-  // Two slices at one place.
+  // Two images at one place (not copies of one: another SOPInstanceUID).
   const std::string twice = dicomSeries(dir, "twice", 3);
-  std::filesystem::copy_file(twice + "/im0.dcm", twice + "/copy.dcm");
+  ASSERT_TRUE(testing::editDicom(
+      twice + "/im0.dcm",
+      [](gdcm::DataSet& ds) {
+        gdcm::Attribute<0x0008, 0x0018> uid;
+        uid.SetValue("1.2.826.0.1.3680043.2.1125.77");
+        ds.Replace(uid.GetAsDataElement());
+      },
+      twice + "/other.dcm"));
   expectVolumeLoadError(twice, "share one position");
   // Truncated pixel data in the file named (a folder skips it: below).
   const std::string cut = dicomSeries(dir, "cut", 3);
