@@ -6,6 +6,7 @@
 
 #include "app/frame_stats.h"
 #include "app/headless_session.h"
+#include "app/scene_render.h"
 #include "io/atomic_file.h"
 #include "io/png_io.h"
 
@@ -29,8 +30,8 @@ void renderHeadless(const Scene& scene, const Options& o) {
   refuseToOverwriteInputs(o.output, o);
   HeadlessSession session(o.backend, o.shaderDir);
   session.setAxes(o.axes);
-  writePng(o.output, session.render(scene.volume, scene.transferFunction,
-                                    initialCamera(scene.volume, o), o.render, o.width, o.height));
+  writePng(o.output, renderLayers(session, sceneLayers(scene), initialCamera(scene.volume, o),
+                                  o.render, o.width, o.height));
   if (const std::string note = session.takeNote(); !note.empty())
     std::cerr << "ewaview: " << note << std::endl;
   if (o.stats)

@@ -14,38 +14,50 @@ HeadlessSession::HeadlessSession(const std::string& backend, const std::string& 
 HeadlessSession::~HeadlessSession() {
   // Another session's context may be current (Python keeps several): GL objects die in ours.
   context_->makeCurrent();
-  renderer_.reset();
+  slots_.clear();
 }
 
 Image8 HeadlessSession::render(const Volume& volume, const TransferFunction& tf,
                                const Camera& camera, const RenderSettings& settings, int width,
                                int height) {
+  Image8 image = renderBare(volume, tf, camera, settings, width, height);
+  drawAxes(image, camera, volume);
+  return image;
+}
+
+Image8 HeadlessSession::renderBare(const Volume& volume, const TransferFunction& tf,
+                                   const Camera& camera, const RenderSettings& settings, int width,
+                                   int height, size_t slot) {
   context_->makeCurrent();
-  if (!renderer_ || kind_ != settings.renderer) {
-    renderer_.reset();
-    renderer_ = createRenderer(settings.renderer, shaders_);
-    kind_ = settings.renderer;
-    volume_ = nullptr;
-    tfSet_ = false;
+  if (slots_.size() <= slot) slots_.resize(slot + 1);
+  Slot& s = slots_[slot];
+  if (!s.renderer || s.kind != settings.renderer) {
+    s.renderer.reset();
+    s.renderer = createRenderer(settings.renderer, shaders_);
+    s.kind = settings.renderer;
+    s.volume = nullptr;
+    s.tfSet = false;
   }
-  if (volume_ != &volume) {
-    renderer_->setVolume(volume);
-    volume_ = &volume;
+  if (s.volume != &volume) {
+    s.renderer->setVolume(volume);
+    s.volume = &volume;
   }
-  if (!tfSet_ || tf != tf_) {
-    renderer_->setTransferFunction(tf);
-    tf_ = tf;
-    tfSet_ = true;
+  if (!s.tfSet || tf != s.tf) {
+    s.renderer->setTransferFunction(tf);
+    s.tf = tf;
+    s.tfSet = true;
   }
-  renderer_->render(camera, settings, width, height);
-  const std::string note = renderer_->stats().note;
-  if (note != lastNote_) newNote_ = note;  // said once while it holds
-  lastNote_ = note;
-  Image8 image = renderer_->readImage();
+  s.renderer->render(camera, settings, width, height);
+  const std::string note = s.renderer->stats().note;
+  if (note != s.lastNote && !note.empty()) newNote_ = note;  // said once while it holds
+  s.lastNote = note;
+  return s.renderer->readImage();
+}
+
+void HeadlessSession::drawAxes(Image8& image, const Camera& camera, const Volume& volume) const {
   if (axes_)
     drawStrokes(image, orientationAxes(camera.rotation(), volume.patientFrame(),
                                        axesPlacement(image.width, image.height)));
-  return image;
 }
 
 std::string HeadlessSession::takeNote() {

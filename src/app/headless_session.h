@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/camera.h"
 #include "core/transfer_function.h"
@@ -29,10 +30,19 @@ class HeadlessSession {
   // axes in its corner after setAxes(true).
   Image8 render(const Volume& volume, const TransferFunction& tf, const Camera& camera,
                 const RenderSettings& settings, int width, int height);
+  // The same without the axes, by the renderer of `slot` (0, 1, ...): each slot keeps its own
+  // renderer, volume and transfer function, so the channels of an overlay (scene_render.h) are
+  // not uploaded again for every frame.
+  Image8 renderBare(const Volume& volume, const TransferFunction& tf, const Camera& camera,
+                    const RenderSettings& settings, int width, int height, size_t slot = 0);
+  // Draws the orientation axes on `image` after setAxes(true), as render() does.
+  void drawAxes(Image8& image, const Camera& camera, const Volume& volume) const;
   // Whether render() draws the orientation axes (--axis).
   void setAxes(bool on) { axes_ = on; }
-  // The statistics of the last render (empty before the first).
-  RenderStats stats() const { return renderer_ ? renderer_->stats() : RenderStats{}; }
+  // The statistics of the last render by slot 0 (empty before the first).
+  RenderStats stats() const {
+    return !slots_.empty() && slots_[0].renderer ? slots_[0].renderer->stats() : RenderStats{};
+  }
   // The renderer's RenderStats::note (why a frame was not drawn as asked) when a render has
   // brought a new one since the last call, else empty: each note said once while it holds.
   std::string takeNote();
@@ -40,14 +50,17 @@ class HeadlessSession {
  private:
   std::unique_ptr<platform::GlContext> context_;
   gl::ShaderLibrary shaders_;
-  std::unique_ptr<Renderer> renderer_;
-  RendererKind kind_ = RendererKind::Splat;
-  const Volume* volume_ = nullptr;  // what renderer_ was given, to skip repeated uploads
-  TransferFunction tf_;
-  bool tfSet_ = false;
+  struct Slot {
+    std::unique_ptr<Renderer> renderer;
+    RendererKind kind = RendererKind::Splat;
+    const Volume* volume = nullptr;  // what the renderer was given, to skip repeated uploads
+    TransferFunction tf;
+    bool tfSet = false;
+    std::string lastNote;  // its last render's RenderStats::note
+  };
+  std::vector<Slot> slots_;
   bool axes_ = false;
-  std::string lastNote_;  // the last render's RenderStats::note
-  std::string newNote_;   // one that appeared since takeNote last took it
+  std::string newNote_;  // a note that appeared since takeNote last took it
 };
 
 }  // namespace ewa

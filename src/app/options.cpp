@@ -14,6 +14,7 @@
 #include "app/version.h"
 #include "core/kernel_lattice.h"
 #include "core/transfer_function_presets.h"
+#include "io/text_fields.h"
 #include "io/volume_writer.h"
 #include "platform/headless_context.h"
 
@@ -135,11 +136,12 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                  "4D NIfTI or NRRD, an OME-TIFF's or ImageJ hyperstack's time point, or a DICOM "
                  "series of several volumes at the same positions: open this volume (default 0)")
       ->check(CLI::Range(0, 1 << 30));
-  app.add_option("--channel", o->load.channel,
+  std::string channel;
+  app.add_option("--channel", channel,
                  "Colour or vector data (TIFF, DICOM, image slices and NIfTI: 0 red, 1 green, 2 "
                  "blue; MetaImage channels, VTK components and vectors, a 4D NRRD's colour or "
-                 "vector axis): open this channel (default 0)")
-      ->check(CLI::Range(0, 1 << 20));
+                 "vector axis): open this channel (default 0); 'all': every channel overlaid, "
+                 "each in its colour, the colours added (headless: --output, --turntable, --tour)");
   std::vector<int> res;
   // Given twice (a copied view pasted after one's own options), the last one counts.
   constexpr auto kLast = CLI::MultiOptionPolicy::TakeLast;
@@ -286,6 +288,23 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       return usage(e.what());
     }
   }
+  if (!channel.empty()) {
+    int64_t c = 0;
+    if (channel == "all")
+      o->allChannels = true;
+    else if (!parseInt64(channel, c) || c < 0 || c > (1 << 20))
+      return usage("--channel " + channel + ": give a channel number from 0, or 'all'");
+    else
+      o->load.channel = int(c);
+  }
+  if (o->allChannels && o->output.empty())
+    return usage(
+        "--channel all draws headless only (with --output, --turntable or --tour); the window "
+        "shows one channel at a time (C pages through them)");
+  if (o->allChannels && (!o->tfFile.empty() || o->pick || !o->saveVolume.empty() || o->info))
+    return usage(
+        "--channel all: not with --tf (each channel's own NAME.cC.tf.json is read), --pick, "
+        "--save-volume or --info");
   if (!o->file.empty() && !o->synthetic.empty())
     return usage("give a FILE or --synthetic, not both");
   if (!o->rawDims.empty() && o->rawType.empty()) return usage("--raw-dims needs --raw-type");

@@ -41,8 +41,9 @@ struct Options {
   RenderSettings render;
   std::string tfFile;
   std::string backend = "osmesa";
-  std::string shaderDir;  // load shaders from this folder instead of the embedded ones
-  LoadOptions load;       // --series, --frame, --channel
+  std::string shaderDir;     // load shaders from this folder instead of the embedded ones
+  LoadOptions load;          // --series, --frame, --channel
+  bool allChannels = false;  // --channel all: every channel overlaid in its colour (headless)
   // Where the window keeps an archive it opened unpacked (null headless: unpacked per load).
   std::shared_ptr<ArchiveCache> archives;
   // Plain raw input.

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/camera_views.h"
+#include "core/channel_overlay.h"
 #include "core/synthetic_volume.h"
 #include "core/transfer_function_presets.h"
 #include "core/volume_crop.h"
@@ -21,6 +22,38 @@ std::string defaultVolumePath() {
   // Beside the executable's source tree when built; an installed copy would set this too.
   return std::string(EWA_ASSET_DIR) + "/default.nrrd";
 }
+
+namespace {
+
+// --channel all: channels 1, 2, ... of the file beside channel 0, and every channel's
+// transfer function: its sidecar, else the histogram's in the channel's colour.
+void loadMoreChannels(const Options& o, const std::string& sidecar0, Scene& scene) {
+  const int count = scene.volume.channelCount();
+  if (count <= 1) return;  // one channel: drawn as it is
+  const std::string path = o.file.empty() ? defaultVolumePath() : o.file;
+  if (count > kMaxOverlaidChannels)
+    throw std::runtime_error(path + ": " + std::to_string(count) +
+                             " channels; --channel all overlays " +
+                             std::to_string(kMaxOverlaidChannels) + " at most");
+  const auto channelTf = [&](const Volume& volume, int c, const std::string& sidecar) {
+    TransferFunction tf =
+        std::filesystem::is_regular_file(sidecar)
+            ? loadTransferFunction(sidecar)
+            : inChannelColor(defaultTransferFunction(volume), channelColor(c, count));
+    return withPresets(std::move(tf), o.tfPresets, volume);
+  };
+  if (!std::filesystem::is_regular_file(sidecar0))
+    scene.transferFunction = channelTf(scene.volume, 0, sidecar0);
+  for (int c = 1; c < count; ++c) {
+    LoadOptions load = o.load;
+    load.channel = c;
+    SceneChannel channel{loadVolume(path, load, o.archives.get()), {}};
+    channel.transferFunction = channelTf(channel.volume, c, sidecarTransferFunctionPath(path, c));
+    scene.moreChannels.push_back(std::move(channel));
+  }
+}
+
+}  // namespace
 
 Scene loadScene(const Options& o) {
   Scene scene;
@@ -58,6 +91,7 @@ Scene loadScene(const Options& o) {
   }
   scene.transferFunction =
       withPresets(std::move(scene.transferFunction), o.tfPresets, scene.volume);
+  if (o.allChannels) loadMoreChannels(o, sidecar, scene);
   return scene;
 }
 

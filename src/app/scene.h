@@ -14,18 +14,30 @@
 
 namespace ewa {
 
-struct Scene {
+// One more channel of a file shown with --channel all, and the transfer function it is drawn with.
+struct SceneChannel {
   Volume volume;
   TransferFunction transferFunction;
-  std::string name;
 };
+
+struct Scene {
+  Volume volume;  // with --channel all, channel 0
+  TransferFunction transferFunction;
+  std::string name;
+  std::vector<SceneChannel> moreChannels;  // --channel all: channels 1, 2, ...
+};
+
+// The most channels --channel all overlays (each a volume and a renderer of its own).
+constexpr int kMaxOverlaidChannels = 16;
 
 // Path of the volume opened when no FILE or --synthetic is given.
 std::string defaultVolumePath();
 
 // Loads the volume (file, raw or synthetic) and the transfer function: --tf, else a sidecar
 // file beside the volume, else the synthetic volume's own, else one made from the histogram. Throws
-// std::runtime_error("<file>: problem").
+// std::runtime_error("<file>: problem"). With --channel all (and a file of several channels),
+// every channel, each with its sidecar (NAME.tf.json, NAME.cC.tf.json) or else the
+// histogram's function in the channel's colour (channelColor); at most kMaxOverlaidChannels.
 Scene loadScene(const Options& options);
 
 // `tf` with the --tf-preset keys applied in order, over the volume's value range.

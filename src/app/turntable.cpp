@@ -35,7 +35,7 @@ void renderFrames(const Scene& scene, const Options& o, int count, const char* w
   const auto begin = std::chrono::steady_clock::now();
   // Notes are said after the progress line, not through it.
   const std::vector<std::string> notes =
-      renderViews(session, *sink, scene.volume, scene.transferFunction, o, count, view,
+      renderViews(session, *sink, sceneLayers(scene), o, count, view,
                   [&](int f) { progress.update(f + 1, count, sink->fileOf(f)); });
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   char note[96];
@@ -47,9 +47,8 @@ void renderFrames(const Scene& scene, const Options& o, int count, const char* w
 }  // namespace
 
 std::vector<std::string> renderViews(HeadlessSession& session, FrameSink& sink,
-                                     const Volume& volume, const TransferFunction& tf,
-                                     const Options& o, int count,
-                                     const std::function<TourStop(int)>& view,
+                                     const std::vector<RenderLayer>& layers, const Options& o,
+                                     int count, const std::function<TourStop(int)>& view,
                                      const std::function<void(int)>& beforeFrame) {
   std::vector<std::string> notes;
   RenderSettings settings = o.render;
@@ -57,7 +56,7 @@ std::vector<std::string> renderViews(HeadlessSession& session, FrameSink& sink,
     if (beforeFrame) beforeFrame(f);
     const TourStop stop = view(f);
     settings.clip = stop.clip;
-    sink.add(session.render(volume, tf, stop.camera, settings, o.width, o.height), f);
+    sink.add(renderLayers(session, layers, stop.camera, settings, o.width, o.height), f);
     if (std::string note = session.takeNote(); !note.empty()) notes.push_back(std::move(note));
   }
   sink.finish();

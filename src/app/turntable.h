@@ -9,6 +9,7 @@
 #include "app/headless_session.h"
 #include "app/options.h"
 #include "app/scene.h"
+#include "app/scene_render.h"
 #include "core/camera_tour.h"
 #include "core/camera_views.h"
 #include "io/frame_sink.h"
@@ -24,11 +25,11 @@ void renderTurntable(const Scene& scene, const Options& options);
 // The frame loop of turntables and tours (the command line's and Python's): `count` frames
 // rendered with `session` into `sink` and finished, frame f seen as `view(f)` says (its camera
 // and clip region; `options` give the rest), `beforeFrame(f)` called first when given. Returns
-// the renderer's notes, one per frame that had one.
+// the renderer's notes, one per frame that had one. `layers`: the volume, or the channels
+// overlaid (renderLayers).
 std::vector<std::string> renderViews(HeadlessSession& session, FrameSink& sink,
-                                     const Volume& volume, const TransferFunction& tf,
-                                     const Options& options, int count,
-                                     const std::function<TourStop(int)>& view,
+                                     const std::vector<RenderLayer>& layers, const Options& options,
+                                     int count, const std::function<TourStop(int)>& view,
                                      const std::function<void(int)>& beforeFrame = {});
 
 // The stops of a tour: the bookmarks in `bookmarks`, else where the window keeps the volume

@@ -210,7 +210,7 @@ void PythonScene::writeFrames(const std::string& path, int frames, int fps, cons
     const std::unique_ptr<FrameSink> sink = openFrameSink(path, frames, fps);
     HeadlessSession& s = session(o);
     s.setAxes(o.axes);
-    for (const std::string& note : renderViews(s, *sink, *volume_, tf_, o, frames, view))
+    for (const std::string& note : renderViews(s, *sink, {{volume_.get(), &tf_}}, o, frames, view))
       notes += (notes.empty() ? "" : "; ") + note;
   }
   warn(notes);

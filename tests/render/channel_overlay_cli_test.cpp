@@ -1,0 +1,135 @@
+// --channel all: a file's channels overlaid, each drawn in its colour, the colours added.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cli_run.h"
+#include "image_compare.h"
+#include "io/png_io.h"
+
+namespace ewa::test {
+namespace {
+
+CliRun ewaview(const std::string& args) {
+  return runEwaview(args, "overlay");
+}
+
+// Two channels in a 4D NRRD (the colour axis first): a ball left of centre in channel 0, one
+// right of it in channel 1, overlapping in the middle.
+std::string twoBalls(const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  const int n = 24;
+  std::string data;
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        for (double cx : {8.5, 14.5}) {
+          const double r2 = (x - cx) * (x - cx) + (y - 11.5) * (y - 11.5) + (z - 11.5) * (z - 11.5);
+          data += char(r2 < 30 ? 200 : 0);
+        }
+  const std::string path = dir + "/balls.nrrd";
+  std::ofstream(path, std::ios::binary)
+      << "NRRD0004\ntype: uint8\ndimension: 4\nsizes: 2 24 24 24\n"
+         "kinds: 2-vector domain domain domain\nencoding: raw\n\n"
+      << data;
+  return path;
+}
+
+const uint8_t* pixel(const Image8& image, int x, int y) {
+  return &image.pixels[size_t((y * image.width + x) * image.channels)];
+}
+
+// Each channel's own transfer function (its sidecar) and the overlay: the overlay is the sum of
+// the channels drawn alone, to the level.
+TEST(ChannelOverlay, IsTheSumOfTheChannelsDrawnAlone) {
+  const std::string dir = testOutputDir() + "/overlay_sum";
+  const std::string file = twoBalls(dir);
+  std::ofstream(dir + "/balls.tf.json")
+      << R"({"opacity": [[0, 0], [100, 0], [200, 0.6]], "color": [[0, 0.9, 0.2, 0.1]]})";
+  std::ofstream(dir + "/balls.c1.tf.json")
+      << R"({"opacity": [[0, 0], [100, 0], [200, 0.4]], "color": [[0, 0.1, 0.7, 0.8]]})";
+  const std::string size = " --resolution 80,64";
+  Image8 alone[2];
+  for (int c : {0, 1}) {
+    const std::string png = dir + "/c" + std::to_string(c) + ".png";
+    const CliRun r = ewaview(file + " --channel " + std::to_string(c) + size + " -o " + png);
+    ASSERT_EQ(r.code, 0) << r.err;
+    alone[c] = readPng(png);
+  }
+  const CliRun r = ewaview(file + " --channel all" + size + " -o " + dir + "/all.png");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Image8 all = readPng(dir + "/all.png");
+  ASSERT_EQ(all.pixels.size(), alone[0].pixels.size());
+  int worst = 0;
+  for (size_t i = 0; i < all.pixels.size(); ++i) {
+    if (i % size_t(all.channels) == 3) continue;  // alpha
+    const int sum = std::min(255, alone[0].pixels[i] + alone[1].pixels[i]);
+    worst = std::max(worst, std::abs(sum - int(all.pixels[i])));
+  }
+  EXPECT_EQ(worst, 0);
+  EXPECT_GT(meanValue(all), meanValue(alone[0]));
+  // A turntable's first frame is the same picture.
+  const CliRun t = ewaview(file + " --channel all --turntable 2" + size + " -o " + dir + "/spin/");
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_EQ(maxDifference(readPng(dir + "/spin/frame_000.png"), all), 0);
+}
+
+// Without sidecars each channel gets the histogram's function in its colour: magenta and green
+// for two, white where they overlap; over another background, the background shows around and
+// between them.
+TEST(ChannelOverlay, DefaultColoursAndABackground) {
+  const std::string dir = testOutputDir() + "/overlay_default";
+  const std::string file = twoBalls(dir);
+  const std::string png = dir + "/all.png";
+  CliRun r = ewaview(file + " --channel all --resolution 96,64 -o " + png);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Image8 all = readPng(png);
+  EXPECT_TRUE(matchesReference("channel_overlay", all, backgroundRgb8(0, 0, 0), 2.0, 12, 0.02));
+  // Magenta left (red and blue, no green), green right, all three in the middle.
+  const uint8_t* left = pixel(all, 41, 32);
+  const uint8_t* right = pixel(all, 53, 32);
+  const uint8_t* middle = pixel(all, 47, 32);
+  EXPECT_GT(left[0], 60);
+  EXPECT_GT(left[2], 60);
+  EXPECT_LT(left[1], left[0] / 3);
+  EXPECT_GT(right[1], 60);
+  EXPECT_LT(right[0], right[1] / 3);
+  EXPECT_LT(right[2], right[1] / 3);
+  EXPECT_GT(middle[1], 60);
+  EXPECT_GT(middle[0], 60);
+  // Over grey: the corner is the background, the balls' colours still added over what shows.
+  r = ewaview(file + " --channel all --background 0.2,0.2,0.2 --resolution 96,64 -o " + dir +
+              "/grey.png");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Image8 grey = readPng(dir + "/grey.png");
+  EXPECT_EQ(int(pixel(grey, 2, 2)[0]), 51);
+  EXPECT_EQ(int(pixel(grey, 2, 2)[1]), 51);
+  EXPECT_GE(pixel(grey, 53, 32)[1], right[1]);
+  EXPECT_LT(pixel(grey, 53, 32)[0], 51 + 10);
+}
+
+TEST(ChannelOverlay, WhatItDoesNotGoWithIsAUsageError) {
+  const std::string dir = testOutputDir() + "/overlay_usage";
+  const std::string file = twoBalls(dir);
+  for (const std::string& args :
+       {file + " --channel all",  // the window
+        file + " --channel all --info", file + " --channel all --pick 1,1",
+        file + " --channel all --tf " + dir + "/x.tf.json -o " + dir + "/x.png",
+        file + " --channel all --save-volume " + dir + "/x.nrrd",
+        file + " --channel two -o " + dir + "/x.png",
+        file + " --channel -1 -o " + dir + "/x.png"}) {
+    const CliRun r = ewaview(args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find("--channel"), std::string::npos) << r.err;
+  }
+  // A file of one channel: --channel all draws it as it is.
+  const CliRun one =
+      ewaview("--synthetic sphere --channel all --resolution 32,32 -o " + dir + "/one.png");
+  EXPECT_EQ(one.code, 0) << one.err;
+}
+
+}  // namespace
+}  // namespace ewa::test
