@@ -10,9 +10,9 @@ namespace ewa {
 
 glm::dvec3 channelColor(int channel, int count) {
   if (count == 2) return channel % 2 == 0 ? glm::dvec3(1, 0, 1) : glm::dvec3(0, 1, 0);
-  static const glm::dvec3 kCycle[] = {{0, 1, 1}, {1, 1, 0}, {1, 0, 1},
-                                      {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  return kCycle[size_t(std::max(channel, 0)) % 6];
+  static const glm::dvec3 kCycle[] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1},
+                                      {0, 1, 1}, {1, 0, 1}, {1, 1, 0}};
+  return kCycle[size_t(std::max(channel, 0)) % 7];
 }
 
 TransferFunction inChannelColor(TransferFunction tf, const glm::dvec3& rgb) {

@@ -9,9 +9,9 @@
 
 namespace ewa {
 
-// The colour channel `channel` of `count` is shown in, as napari picks them: magenta and green
-// for two (the pair colour-blind eyes tell apart), else cyan, yellow, magenta, red, green,
-// blue in turn.
+// The colour channel `channel` of `count` is shown in: magenta and green for two (napari's
+// pair, which colour-blind eyes tell apart), else Fiji's composite colours in turn: red,
+// green, blue (so RGB data shows its own colours), grey, cyan, magenta, yellow.
 glm::dvec3 channelColor(int channel, int count);
 
 // `tf` with every colour point replaced by one point of `rgb`: its opacities say how much of

@@ -53,10 +53,12 @@ TEST(ChannelOverlay, PicturesMustAgree) {
 TEST(ChannelOverlay, ColoursAndTransferFunctions) {
   EXPECT_EQ(channelColor(0, 2), glm::dvec3(1, 0, 1));  // magenta and green for two
   EXPECT_EQ(channelColor(1, 2), glm::dvec3(0, 1, 0));
-  EXPECT_EQ(channelColor(0, 3), glm::dvec3(0, 1, 1));  // cyan, yellow, magenta, ...
-  EXPECT_EQ(channelColor(1, 3), glm::dvec3(1, 1, 0));
-  EXPECT_EQ(channelColor(2, 3), glm::dvec3(1, 0, 1));
-  EXPECT_EQ(channelColor(6, 8), channelColor(0, 8));
+  EXPECT_EQ(channelColor(0, 3), glm::dvec3(1, 0, 0));  // red, green, blue, grey, cyan, ...
+  EXPECT_EQ(channelColor(1, 3), glm::dvec3(0, 1, 0));
+  EXPECT_EQ(channelColor(2, 3), glm::dvec3(0, 0, 1));
+  EXPECT_EQ(channelColor(3, 5), glm::dvec3(1, 1, 1));
+  EXPECT_EQ(channelColor(4, 5), glm::dvec3(0, 1, 1));
+  EXPECT_EQ(channelColor(7, 8), channelColor(0, 8));
   TransferFunction tf;
   tf.opacity = {{0, 0}, {10, 0.5}};
   tf.color = {{0, {0.2, 0.3, 0.4}}, {10, {1, 1, 1}}};
