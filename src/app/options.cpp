@@ -297,10 +297,6 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
     else
       o->load.channel = int(c);
   }
-  if (o->allChannels && o->output.empty())
-    return usage(
-        "--channel all draws headless only (with --output, --turntable or --tour); the window "
-        "shows one channel at a time (C pages through them)");
   if (o->allChannels && (!o->tfFile.empty() || o->pick || !o->saveVolume.empty() || o->info))
     return usage(
         "--channel all: not with --tf (each channel's own NAME.cC.tf.json is read), --pick, "

@@ -24,6 +24,8 @@ PYBIND11_MODULE(ewaview, m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const py::builtin_exception& e) {
+      e.set_error();  // IndexError and the like as pybind11 raises them
     } catch (const std::invalid_argument& e) {
       PyErr_SetString(PyExc_ValueError, ewa::oneLine(e.what()).c_str());
     } catch (const std::exception& e) {
@@ -48,7 +50,8 @@ Scene(array, spacing=(1, 1, 1), origin=(0, 0, 0), **options): a NumPy array inde
 (uint8, int16, uint16, float32 as they are; int8 becomes int16, 32- and 64-bit
 integers and float64 become float32).
 The transfer function is tf=FILE's, else a FILE.tf.json beside the volume, else one made from
-the histogram, as on the command line.)")
+the histogram, as on the command line. channel='all' overlays every channel of a file as
+--channel all does, each with its own transfer function (set_transfer_function(tf, channel)).)")
       .def(py::init([](py::object source, py::object spacing, py::object origin,
                        py::kwargs options) {
              if (py::isinstance<py::array>(source))
@@ -71,8 +74,17 @@ the histogram, as on the command line.)")
           "turntable and loading ones), checked now.")
       .def_property_readonly("options", &PythonScene::options, "The render options kept.")
       .def_property(
-          "transfer_function", &PythonScene::transferFunction, &PythonScene::setTransferFunction,
-          "As a dict like the --tf JSON; set a dict or a preset name (ewaview.presets()).")
+          "transfer_function", &PythonScene::transferFunction,
+          [](PythonScene& s, const py::object& tf) { s.setTransferFunction(tf); },
+          "As a dict like the --tf JSON; set a dict or a preset name (ewaview.presets()). With "
+          "channel='all', channel 0's.")
+      .def_property_readonly("transfer_functions", &PythonScene::transferFunctions,
+                             "Every channel's transfer function with channel='all' (a list of "
+                             "dicts; one entry otherwise).")
+      .def("set_transfer_function", &PythonScene::setTransferFunction, py::arg("tf"),
+           py::arg("channel") = 0,
+           "Sets channel `channel`'s transfer function (a dict or a preset name) with "
+           "channel='all'; IndexError for a channel the scene does not draw.")
       .def(
           "render", [](PythonScene& s, py::kwargs overrides) { return s.render(overrides); },
           "Renders with the kept options and these ones; returns uint8 (H, W, 3).")

@@ -81,6 +81,7 @@ PythonScene::PythonScene(const std::string& path, const py::dict& options) {
   Scene scene = loadScene(o);
   volume_ = std::make_shared<Volume>(std::move(scene.volume));
   tf_ = std::move(scene.transferFunction);
+  moreChannels_ = std::move(scene.moreChannels);
   name_ = scene.name;
   file_ = o.file;
   options_ = renderOptionsOf(options);
@@ -141,15 +142,21 @@ py::dict PythonScene::options() const {
   return copyOf(options_);
 }
 
-void PythonScene::setTransferFunction(const py::object& tf) {
+void PythonScene::setTransferFunction(const py::object& tf, int channel) {
   std::lock_guard<std::mutex> lock(mutex_);
+  if (channel < 0 || size_t(channel) > moreChannels_.size())
+    throw py::index_error("channel " + std::to_string(channel) + ": the scene draws " +
+                          std::to_string(moreChannels_.size() + 1) + " channel(s)");
+  TransferFunction& target =
+      channel == 0 ? tf_ : moreChannels_[size_t(channel - 1)].transferFunction;
+  const Volume& volume = channel == 0 ? *volume_ : moreChannels_[size_t(channel - 1)].volume;
   if (py::isinstance<py::str>(tf)) {
-    tf_ = applyTransferFunctionPreset(tf_, tf.cast<std::string>(), volume_->minValue(),
-                                      volume_->maxValue());
+    target = applyTransferFunctionPreset(target, tf.cast<std::string>(), volume.minValue(),
+                                         volume.maxValue());
   } else if (py::isinstance<py::dict>(tf)) {
     const std::string text = py::module_::import("json").attr("dumps")(tf).cast<std::string>();
     try {
-      tf_ = parseTransferFunctionJson(text, "transfer_function");
+      target = parseTransferFunctionJson(text, "transfer_function");
     } catch (const std::runtime_error& e) {
       throw UsageError(e.what());  // a bad argument here, where the command line has a bad file
     }
@@ -160,6 +167,19 @@ void PythonScene::setTransferFunction(const py::object& tf) {
 
 py::object PythonScene::transferFunction() const {
   return fromJson(transferFunctionToJson(tf_));
+}
+
+py::list PythonScene::transferFunctions() const {
+  py::list all;
+  for (const RenderLayer& layer : layers())
+    all.append(fromJson(transferFunctionToJson(*layer.transferFunction)));
+  return all;
+}
+
+std::vector<RenderLayer> PythonScene::layers() const {
+  std::vector<RenderLayer> out{{volume_.get(), &tf_}};
+  for (const SceneChannel& c : moreChannels_) out.push_back({&c.volume, &c.transferFunction});
+  return out;
 }
 
 Options PythonScene::renderOptions(const py::dict& overrides) {
@@ -193,7 +213,7 @@ Image8 PythonScene::renderImage(const py::dict& overrides) {
     std::lock_guard<std::mutex> lock(mutex_);
     HeadlessSession& s = session(o);
     s.setAxes(o.axes);
-    image = s.render(*volume_, tf_, camera, o.render, o.width, o.height);
+    image = renderLayers(s, layers(), camera, o.render, o.width, o.height);
     note = s.takeNote();
   }
   warn(note);  // the renderer's own (RenderStats::note)
@@ -210,7 +230,7 @@ void PythonScene::writeFrames(const std::string& path, int frames, int fps, cons
     const std::unique_ptr<FrameSink> sink = openFrameSink(path, frames, fps);
     HeadlessSession& s = session(o);
     s.setAxes(o.axes);
-    for (const std::string& note : renderViews(s, *sink, {{volume_.get(), &tf_}}, o, frames, view))
+    for (const std::string& note : renderViews(s, *sink, layers(), o, frames, view))
       notes += (notes.empty() ? "" : "; ") + note;
   }
   warn(notes);

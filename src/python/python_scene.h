@@ -12,6 +12,8 @@
 
 #include "app/headless_session.h"
 #include "app/options.h"
+#include "app/scene.h"
+#include "app/scene_render.h"
 #include "core/camera_tour.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
@@ -33,9 +35,11 @@ class PythonScene {
   pybind11::dict options() const;
 
   // A preset name (ewaview.presets()) applied over the volume's value range, or the --tf JSON
-  // structure as a dict.
-  void setTransferFunction(const pybind11::object& tf);
+  // structure as a dict; with channel="all", of channel `channel` (IndexError out of range).
+  void setTransferFunction(const pybind11::object& tf, int channel = 0);
   pybind11::object transferFunction() const;
+  // Every channel's transfer function with channel="all" (one entry otherwise).
+  pybind11::list transferFunctions() const;
 
   // The picture as the command line draws it for these options: uint8 (H, W, 3).
   pybind11::array_t<uint8_t> render(const pybind11::dict& overrides);
@@ -67,8 +71,12 @@ class PythonScene {
   void writeFrames(const std::string& path, int frames, int fps, const Options& options,
                    const std::function<TourStop(int)>& view);
 
+  // The volume and layers to draw: one, or with channel="all" every channel (scene_render.h).
+  std::vector<RenderLayer> layers() const;
+
   std::shared_ptr<Volume> volume_;
   TransferFunction tf_;
+  std::vector<SceneChannel> moreChannels_;  // channel="all": channels 1, 2, ...
   std::string name_;
   std::string file_;        // the volume's file ("" for arrays and synthetic volumes)
   pybind11::dict options_;  // render options in Python form, in the order given

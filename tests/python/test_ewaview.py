@@ -364,3 +364,34 @@ def test_renders_in_threads_equal_renders_in_turn():
             lambda: scenes[0].render(renderer="shearwarp", camera_orthographic=True)]))
     for a, b in zip(alone, together):
         assert_same_picture(a, b)
+
+
+def two_channel_nrrd(path):
+    """Two overlapping balls, one a channel, in a 4D NRRD whose first axis is the channel."""
+    z, y, x = np.mgrid[0:20, 0:20, 0:20]
+    balls = [((x - cx) ** 2 + (y - 9.5) ** 2 + (z - 9.5) ** 2 < 25) * 200 for cx in (7, 12)]
+    data = np.stack(balls, axis=-1).astype(np.uint8)
+    path.write_bytes(b"NRRD0004\ntype: uint8\ndimension: 4\nsizes: 2 20 20 20\n"
+                     b"kinds: 2-vector domain domain domain\nencoding: raw\n\n" + data.tobytes())
+    return path
+
+
+def test_channel_all_overlays_as_the_command_line_does(cli, out_dir):
+    path = two_channel_nrrd(out_dir / "two_balls.nrrd")
+    scene = ewaview.Scene(path, channel="all")
+    image = scene.render(**SMALL)
+    expected = cli.picture("two_balls_all", path, "--channel", "all", "--resolution", "96,72")
+    assert_same_picture(image, expected)
+    assert len(scene.transfer_functions) == 2
+    # Channel 1 drawn white instead of green: the picture changes, channel 0's function stays.
+    tf = scene.transfer_functions[1]
+    tf["color"] = [[0, 1, 1, 1]]
+    scene.set_transfer_function(tf, channel=1)
+    assert scene.transfer_functions[1]["color"] == [[0, 1, 1, 1]]
+    assert scene.transfer_function == scene.transfer_functions[0]
+    assert differs(scene.render(**SMALL), image)
+    with pytest.raises(IndexError, match="channel 2"):
+        scene.set_transfer_function(tf, channel=2)
+    scene.turntable(out_dir / "two_balls_turn", frames=2, **SMALL)
+    assert_same_picture(read_png((out_dir / "two_balls_turn" / "frame_000.png").read_bytes())[:, :, :3],
+                        scene.render(**SMALL))
