@@ -5,6 +5,7 @@
 #include <gdcmImageChangeTransferSyntax.h>
 #include <gdcmImageReader.h>
 #include <gdcmImageWriter.h>
+#include <gdcmTrace.h>
 #include <gdcmReader.h>
 #include <gdcmSequenceOfItems.h>
 #include <gdcmWriter.h>
@@ -92,6 +93,7 @@ inline int rgbTestSample(int c, int i, int j, int z) {
 }
 
 inline bool writeDicomSlice(const std::string& path, const DicomSliceSpec& s) {
+  gdcm::Trace::WarningOff();  // GDCM's notes on the test's own files (a default photometric)
   gdcm::ImageWriter writer;
   gdcm::Image& image = writer.GetImage();
   image.SetNumberOfDimensions(2);
