@@ -112,9 +112,10 @@ int main(int argc, char** argv) {
   const ewa::ParseResult parsed = ewa::parseCommandLine(argc, argv, &options);
   if (!parsed.run) return parsed.exitCode;
   // Python's scenes overlay channels too; of this program's ways only the window does not.
-  if (options.allChannels && options.output.empty()) {
-    std::cerr << "ewaview: --channel all draws headless only (with --output, --turntable or "
-                 "--tour); the window shows one channel at a time (C pages through them)\n";
+  if (options.overlay && options.output.empty()) {
+    std::cerr << "ewaview: --channel all (or a list) draws headless only (with --output, "
+                 "--turntable or --tour); the window shows one channel at a time (C pages "
+                 "through them)\n";
     return 2;
   }
   ewa::askForHugePages(argv);  // returns here only without it; else main runs again

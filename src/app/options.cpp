@@ -140,8 +140,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   app.add_option("--channel", channel,
                  "Colour or vector data (TIFF, DICOM, image slices and NIfTI: 0 red, 1 green, 2 "
                  "blue; MetaImage channels, VTK components and vectors, a 4D NRRD's colour or "
-                 "vector axis): open this channel (default 0); 'all': every channel overlaid, "
-                 "each in its colour, the colours added (headless: --output, --turntable, --tour)");
+                 "vector axis): open this channel (default 0); 'all' or a list (0,2): those "
+                 "channels overlaid, each in its colour, the colours added (headless: --output, "
+                 "--turntable, --tour)");
   std::vector<int> res;
   // Given twice (a copied view pasted after one's own options), the last one counts.
   constexpr auto kLast = CLI::MultiOptionPolicy::TakeLast;
@@ -288,19 +289,34 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       return usage(e.what());
     }
   }
-  if (!channel.empty()) {
-    int64_t c = 0;
-    if (channel == "all")
-      o->allChannels = true;
-    else if (!parseInt64(channel, c) || c < 0 || c > (1 << 20))
-      return usage("--channel " + channel + ": give a channel number from 0, or 'all'");
-    else
-      o->load.channel = int(c);
+  if (!channel.empty() && channel == "all") {
+    o->overlay = true;
+  } else if (!channel.empty()) {
+    std::vector<int64_t> list;  // comma-separated, every part a number
+    bool numbers = true;
+    for (size_t start = 0; numbers;) {
+      const size_t comma = std::min(channel.find(',', start), channel.size());
+      int64_t c = 0;
+      numbers = parseInt64(channel.substr(start, comma - start), c) && c >= 0 && c <= (1 << 20);
+      list.push_back(c);
+      if (comma == channel.size()) break;
+      start = comma + 1;
+    }
+    std::vector<int64_t> sorted = list;
+    std::sort(sorted.begin(), sorted.end());
+    if (!numbers || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+      return usage("--channel " + channel +
+                   ": give a channel number from 0, a list of different ones (0,2) or 'all'");
+    o->load.channel = int(list.front());
+    if (list.size() > 1) {
+      o->overlay = true;
+      o->overlayChannels.assign(list.begin(), list.end());
+    }
   }
-  if (o->allChannels && (!o->tfFile.empty() || o->pick || !o->saveVolume.empty() || o->info))
-    return usage(
-        "--channel all: not with --tf (each channel's own NAME.cC.tf.json is read), --pick, "
-        "--save-volume or --info");
+  if (o->overlay && (!o->tfFile.empty() || o->pick || !o->saveVolume.empty() || o->info))
+    return usage("--channel " + channel +
+                 ": channels overlaid, not with --tf (each channel's own NAME.cC.tf.json is read), "
+                 "--pick, --save-volume or --info");
   if (!o->file.empty() && !o->synthetic.empty())
     return usage("give a FILE or --synthetic, not both");
   if (!o->rawDims.empty() && o->rawType.empty()) return usage("--raw-dims needs --raw-type");

@@ -41,9 +41,11 @@ struct Options {
   RenderSettings render;
   std::string tfFile;
   std::string backend = "osmesa";
-  std::string shaderDir;     // load shaders from this folder instead of the embedded ones
-  LoadOptions load;          // --series, --frame, --channel
-  bool allChannels = false;  // --channel all: every channel overlaid in its colour (headless)
+  std::string shaderDir;  // load shaders from this folder instead of the embedded ones
+  LoadOptions load;       // --series, --frame, --channel
+  // --channel all, or a list "0,2": channels overlaid in their colours (headless).
+  bool overlay = false;
+  std::vector<int> overlayChannels;  // the list's channels, the first in load.channel; empty: all
   // Where the window keeps an archive it opened unpacked (null headless: unpacked per load).
   std::shared_ptr<ArchiveCache> archives;
   // Plain raw input.

@@ -25,15 +25,18 @@ std::string defaultVolumePath() {
 
 namespace {
 
-// --channel all: channels 1, 2, ... of the file beside channel 0, and every channel's
-// transfer function: its sidecar, else the histogram's in the channel's colour.
+// --channel all (or a list): the file's other channels beside the one loaded first, and every
+// channel's transfer function: its sidecar, else the histogram's in the channel's colour.
 void loadMoreChannels(const Options& o, const std::string& sidecar0, Scene& scene) {
   const int count = scene.volume.channelCount();
-  if (count <= 1) return;  // one channel: drawn as it is
+  if (count <= 1 && o.overlayChannels.empty()) return;  // one channel: drawn as it is
   const std::string path = o.file.empty() ? defaultVolumePath() : o.file;
-  if (count > kMaxOverlaidChannels)
-    throw std::runtime_error(path + ": " + std::to_string(count) +
-                             " channels; --channel all overlays " +
+  std::vector<int> channels = o.overlayChannels;  // the first is scene.volume's
+  if (channels.empty())
+    for (int c = 0; c < count; ++c) channels.push_back(c);
+  if (int(channels.size()) > kMaxOverlaidChannels)
+    throw std::runtime_error(path + ": " + std::to_string(channels.size()) +
+                             " channels; --channel overlays " +
                              std::to_string(kMaxOverlaidChannels) + " at most");
   const auto channelTf = [&](const Volume& volume, int c, const std::string& sidecar) {
     TransferFunction tf =
@@ -43,8 +46,9 @@ void loadMoreChannels(const Options& o, const std::string& sidecar0, Scene& scen
     return withPresets(std::move(tf), o.tfPresets, volume);
   };
   if (!std::filesystem::is_regular_file(sidecar0))
-    scene.transferFunction = channelTf(scene.volume, 0, sidecar0);
-  for (int c = 1; c < count; ++c) {
+    scene.transferFunction = channelTf(scene.volume, channels.front(), sidecar0);
+  for (size_t n = 1; n < channels.size(); ++n) {
+    const int c = channels[n];
     LoadOptions load = o.load;
     load.channel = c;
     SceneChannel channel{loadVolume(path, load, o.archives.get()), {}};
@@ -91,7 +95,7 @@ Scene loadScene(const Options& o) {
   }
   scene.transferFunction =
       withPresets(std::move(scene.transferFunction), o.tfPresets, scene.volume);
-  if (o.allChannels) loadMoreChannels(o, sidecar, scene);
+  if (o.overlay) loadMoreChannels(o, sidecar, scene);
   return scene;
 }
 

@@ -383,6 +383,7 @@ def test_channel_all_overlays_as_the_command_line_does(cli, out_dir):
     expected = cli.picture("two_balls_all", path, "--channel", "all", "--resolution", "96,72")
     assert_same_picture(image, expected)
     assert len(scene.transfer_functions) == 2
+    assert_same_picture(ewaview.Scene(path, channel=(1, 0)).render(**SMALL), image)  # a list
     # Channel 1 drawn white instead of green: the picture changes, channel 0's function stays.
     tf = scene.transfer_functions[1]
     tf["color"] = [[0, 1, 1, 1]]

@@ -110,6 +110,51 @@ TEST(ChannelOverlay, DefaultColoursAndABackground) {
   EXPECT_LT(pixel(grey, 53, 32)[0], 51 + 10);
 }
 
+// A list picks channels: in any order the same picture (the colours add), each in the colour
+// its place in the file gives it (three channels: red, green, blue), the others left out.
+TEST(ChannelOverlay, AListOverlaysThoseChannels) {
+  const std::string dir = testOutputDir() + "/overlay_list";
+  const std::string file = twoBalls(dir);
+  const std::string size = " --resolution 96,64 -o ";
+  ASSERT_EQ(ewaview(file + " --channel all" + size + dir + "/all.png").code, 0);
+  const CliRun r = ewaview(file + " --channel 1,0" + size + dir + "/list.png");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(maxDifference(readPng(dir + "/list.png"), readPng(dir + "/all.png")), 0);
+  // Three balls in a row, one a channel; channels 0 and 2: red left, blue right, none between.
+  std::string data;
+  const int n = 24;
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        for (double cx : {4.5, 11.5, 18.5}) {
+          const double r2 = (x - cx) * (x - cx) + (y - 11.5) * (y - 11.5) + (z - 11.5) * (z - 11.5);
+          data += char(r2 < 9 ? 200 : 0);
+        }
+  std::ofstream(dir + "/three.nrrd", std::ios::binary)
+      << "NRRD0004\ntype: uint8\ndimension: 4\nsizes: 3 24 24 24\n"
+         "kinds: 3-vector domain domain domain\nencoding: raw\n\n"
+      << data;
+  const CliRun two = ewaview(dir + "/three.nrrd --channel 0,2" + size + dir + "/three.png");
+  ASSERT_EQ(two.code, 0) << two.err;
+  const Image8 image = readPng(dir + "/three.png");
+  int red = 0, blue = 0, green = 0;
+  for (size_t p = 0; p < image.pixels.size(); p += size_t(image.channels)) {
+    const uint8_t* px = &image.pixels[p];
+    const int x = int(p / size_t(image.channels)) % image.width;
+    if (px[0] > 60 && px[1] < 20 && px[2] < 20) red += x < 48 ? 1 : -1000;
+    if (px[2] > 60 && px[0] < 20 && px[1] < 20) blue += x > 48 ? 1 : -1000;
+    if (px[1] > 20) ++green;
+  }
+  EXPECT_GT(red, 10);
+  EXPECT_GT(blue, 10);
+  EXPECT_EQ(green, 0);
+  // A channel the file does not have: one line naming the file, exit 1.
+  const CliRun missing = ewaview(file + " --channel 0,5" + size + dir + "/x.png");
+  EXPECT_EQ(missing.code, 1);
+  EXPECT_EQ(lineCount(missing.err), 1) << missing.err;
+  EXPECT_NE(missing.err.find(file), std::string::npos) << missing.err;
+}
+
 TEST(ChannelOverlay, WhatItDoesNotGoWithIsAUsageError) {
   const std::string dir = testOutputDir() + "/overlay_usage";
   const std::string file = twoBalls(dir);
@@ -118,8 +163,9 @@ TEST(ChannelOverlay, WhatItDoesNotGoWithIsAUsageError) {
         file + " --channel all --info", file + " --channel all --pick 1,1",
         file + " --channel all --tf " + dir + "/x.tf.json -o " + dir + "/x.png",
         file + " --channel all --save-volume " + dir + "/x.nrrd",
-        file + " --channel two -o " + dir + "/x.png",
-        file + " --channel -1 -o " + dir + "/x.png"}) {
+        file + " --channel two -o " + dir + "/x.png", file + " --channel -1 -o " + dir + "/x.png",
+        file + " --channel 0,0 -o " + dir + "/x.png", file + " --channel 0, -o " + dir + "/x.png",
+        file + " --channel 0,1"}) {
     const CliRun r = ewaview(args);
     EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
     EXPECT_EQ(lineCount(r.err), 1) << args << "\n" << r.err;
