@@ -15,6 +15,7 @@
 #include "io/format_loaders.h"
 #include "io/jpeg_header_check.h"
 #include "io/load_failure.h"
+#include "io/png_chunk_check.h"
 #include "io/volume_layout.h"
 
 namespace ewa {
@@ -61,6 +62,10 @@ ImageShape shapeOf(const std::string& file, const std::vector<uint8_t>& bytes) {
     if (const std::string problem = jpegScanTablesProblem(bytes.data(), bytes.size());
         !problem.empty())
       failLoad(file, "corrupt JPEG: " + problem);
+  // stb_image sizes its buffer by an IDAT chunk's claimed length before reading it.
+  if (kind == ImageKind::Png)
+    if (const std::string problem = pngChunksProblem(bytes.data(), bytes.size()); !problem.empty())
+      failLoad(file, "corrupt PNG: " + problem);
   ImageShape s;
   const auto* data = bytes.data();
   const int size = int(bytes.size());

@@ -198,4 +198,34 @@ TEST(ImageStack, JpegScansWithUndefinedTablesAreRefused) {
 }
 
 }  // namespace
+// stb_image grows its buffer to an IDAT chunk's claimed length before reading it (a 358-byte
+// file asked for a gigabyte: found by fuzzing, the input kept in tests/data/fuzz/image): a PNG
+// whose chunk runs past the file's end is refused before it decodes.
+TEST(ImageStack, PngChunksPastTheFilesEndAreRefused) {
+  TempDir dir;
+  std::ifstream in(std::string(EWA_FUZZ_DIR) + "/corpus/image/grey8.png", std::ios::binary);
+  const std::string png((std::istreambuf_iterator<char>(in)), {});
+  ASSERT_GT(png.size(), 33u);
+  ASSERT_EQ(png.substr(12, 4), "IHDR");
+  std::filesystem::create_directories(dir.path("ok"));
+  dir.write("ok/a.png", png);
+  EXPECT_EQ(loadVolume(dir.path("ok")).dims()[2], 1);
+  // The chunk after IHDR (byte 33) claims 0x40000000 bytes.
+  std::string big = png;
+  big.replace(33, 4, std::string("\x40\x00\x00\x00", 4));
+  std::filesystem::create_directories(dir.path("big"));
+  dir.write("big/a.png", big);
+  expectVolumeLoadError(dir.path("big"),
+                        "corrupt PNG: the chunk at byte 33 claims 1073741824 bytes, past the "
+                        "file's end");
+  std::ifstream found(
+      std::string(EWA_TEST_DIR) + "/data/fuzz/image/oom-png-chunk-length-past-the-end",
+      std::ios::binary);
+  const std::string kept((std::istreambuf_iterator<char>(found)), {});
+  ASSERT_FALSE(kept.empty());
+  std::filesystem::create_directories(dir.path("found"));
+  dir.write("found/a.png", kept);
+  expectVolumeLoadError(dir.path("found"), "corrupt PNG: the chunk at byte");
+}
+
 }  // namespace ewa
