@@ -214,6 +214,11 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
   return out;
 }
 
+glm::dvec3 dicomSliceNormal(const std::array<double, 6>& o) {
+  const glm::dvec3 n = glm::cross(glm::dvec3(o[0], o[1], o[2]), glm::dvec3(o[3], o[4], o[5]));
+  return glm::length(n) > 1e-6 ? glm::normalize(n) : glm::dvec3(0, 0, 1);
+}
+
 bool sameDicomOrientation(const DicomSlice& a, const DicomSlice& b) {
   for (size_t i = 0; i < 6; ++i)
     if (std::fabs(a.orientation[i] - b.orientation[i]) > 1e-3) return false;

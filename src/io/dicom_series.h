@@ -59,6 +59,10 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
 constexpr int kDicomMaxDepth = 8;
 constexpr size_t kDicomMaxEntries = 100000;
 
+// The unit normal (row x column cosines) of an orientation; (0, 0, 1) for a degenerate one
+// (sortDicomSlices' error to report).
+glm::dvec3 dicomSliceNormal(const std::array<double, 6>& orientation);
+
 // True when the ImageOrientationPatient cosines of `a` and `b` agree within 1e-3 each.
 bool sameDicomOrientation(const DicomSlice& a, const DicomSlice& b);
 

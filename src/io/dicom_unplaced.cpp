@@ -27,12 +27,6 @@ bool distinctLocations(const std::vector<DicomSlice>& slices) {
   return true;
 }
 
-glm::dvec3 normalOf(const std::array<double, 6>& o) {
-  const glm::dvec3 n = glm::cross(glm::dvec3(o[0], o[1], o[2]), glm::dvec3(o[3], o[4], o[5]));
-  // A degenerate orientation is sortDicomSlices' error; the slices still get distinct places.
-  return glm::length(n) > 1e-6 ? glm::normalize(n) : glm::dvec3(0, 0, 1);
-}
-
 // Places the slices by ACR-NEMA's retired Image Position when every slice has one, no two
 // share one and they lie on one line along the normal (of ImageOrientationPatient, else the
 // retired Image Orientation when every slice has one, else rows x and columns y): a position
@@ -51,7 +45,7 @@ bool placeByRetiredPosition(std::vector<DicomSlice>& slices, std::vector<std::st
   const bool assumed = none(&DicomSlice::hasOrientation) && !retiredOrientation;
   const DicomSlice& first = slices.front();
   const glm::dvec3 normal =
-      normalOf(retiredOrientation ? first.retiredOrientation : first.orientation);
+      dicomSliceNormal(retiredOrientation ? first.retiredOrientation : first.orientation);
   std::vector<double> along;
   const glm::dvec3 p0 = first.retiredPosition;
   for (const DicomSlice& s : slices) {
@@ -96,7 +90,7 @@ UnplacedSlices placeUnplacedSlices(std::vector<DicomSlice>& slices,
     for (DicomSlice& s : slices) s.hasOrientation = true;  // the default: rows x, columns y
     notes.push_back("no ImageOrientationPatient: rows along x and columns along y assumed");
   }
-  const glm::dvec3 normal = normalOf(slices.front().orientation);
+  const glm::dvec3 normal = dicomSliceNormal(slices.front().orientation);
   if (distinctLocations(slices)) {
     for (DicomSlice& s : slices) s.position = normal * s.sliceLocation + 0.0, s.hasPosition = true;
     notes.push_back("no ImagePositionPatient: slices placed by their SliceLocation");

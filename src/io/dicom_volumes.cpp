@@ -90,10 +90,7 @@ std::optional<glm::dvec3> stackOnePosition(std::vector<DicomSlice>& slices,
   notes.push_back(std::to_string(slices.size()) +
                   " images at one position (a cine or a time series): stacked in "
                   "InstanceNumber order, 1 apart");
-  const auto& o = slices.front().orientation;
-  const glm::dvec3 normal = glm::cross(glm::dvec3(o[0], o[1], o[2]), glm::dvec3(o[3], o[4], o[5]));
-  const double length = glm::length(normal);
-  return length > 1e-6 ? normal / length : glm::dvec3(0, 0, 1);
+  return dicomSliceNormal(slices.front().orientation);
 }
 
 }  // namespace ewa
