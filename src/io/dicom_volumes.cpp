@@ -18,6 +18,51 @@ void checkVolume(const std::string& path, int volume, size_t count) {
   checkFrame(path, volume, int64_t(count), "the series has", "volume", " at its positions");
 }
 
+// Volumes told apart when positions hold unequal numbers of slices (a file missing, a scan
+// cut short): walking the slices in InstanceNumber order, a volume ends where the positions step
+// back against the direction the positions run in, as scanners number one volume after another,
+// each in the same order. True, with `volumeOf` filled, when every image has its own number and
+// that
+// gives `volumes` volumes (the most any position holds); false for another numbering (slice by
+// slice, which would give about positions x volumes runs), where no volume can be told apart.
+bool volumeMajorBands(const std::vector<DicomSlice>& slices, const std::vector<int>& position,
+                      size_t volumes, std::vector<size_t>& volumeOf) {
+  std::vector<size_t> order(slices.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    const DicomSlice &x = slices[a], &y = slices[b];
+    if (x.instance != y.instance) return x.instance < y.instance;
+    if (x.frame != y.frame) return x.frame < y.frame;
+    return x.file < y.file;
+  });
+  // Only an order the files state: each image numbered (a frame of a multi-frame file by its
+  // frame), no two alike, not the file names'.
+  for (size_t n = 0; n < order.size(); ++n) {
+    const DicomSlice& s = slices[order[n]];
+    if (s.frames == 1 && s.instance == 0) return false;
+    if (n > 0 && s.instance == slices[order[n - 1]].instance &&
+        s.frame == slices[order[n - 1]].frame)
+      return false;
+  }
+  // The direction the positions run in within a volume: that of most steps.
+  long rising = 0;
+  for (size_t n = 1; n < order.size(); ++n) {
+    const int step = position[order[n]] - position[order[n - 1]];
+    rising += step > 0 ? 1 : step < 0 ? -1 : 0;
+  }
+  if (rising == 0) return false;
+  size_t band = 0;
+  for (size_t n = 0; n < order.size(); ++n) {
+    const size_t i = order[n];
+    if (n > 0) {
+      const long step = long(position[i]) - long(position[order[n - 1]]);
+      if ((rising > 0 ? step <= 0 : step >= 0) && ++band == volumes) return false;
+    }
+    volumeOf[i] = band;
+  }
+  return band + 1 == volumes;
+}
+
 }  // namespace
 
 std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<DicomSlice> slices,
@@ -31,8 +76,7 @@ std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<D
     checkVolume(path, volume, 1);
     return slices;
   }
-  const auto& o = slices.front().orientation;
-  const glm::dvec3 normal = glm::cross(glm::dvec3(o[0], o[1], o[2]), glm::dvec3(o[3], o[4], o[5]));
+  const glm::dvec3 normal = dicomSliceNormal(slices.front().orientation);
   auto along = [&](const DicomSlice& s) { return glm::dot(s.position, normal); };
   // By position, and at each position by InstanceNumber, frame and file: the volumes' order.
   std::stable_sort(slices.begin(), slices.end(), [&](const DicomSlice& a, const DicomSlice& b) {
@@ -56,23 +100,45 @@ std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<D
     checkVolume(path, volume, 1);
     return slices;
   }
-  if (fewest != most) {
+  std::vector<int> position(slices.size());  // each slice's position index
+  for (size_t p = 0; p < positions; ++p)
+    std::fill(position.begin() + starts[p], position.begin() + starts[p + 1], int(p));
+  std::vector<size_t> volumeOf(slices.size());  // each slice's volume
+  if (fewest == most) {
+    for (size_t p = 0; p < positions; ++p)
+      for (size_t i = starts[p]; i < starts[p + 1]; ++i) volumeOf[i] = i - starts[p];
+  } else if (!volumeMajorBands(slices, position, most, volumeOf)) {
     size_t p = 0;  // a position holding the most, whose files are named
     while (starts[p + 1] - starts[p] != most) ++p;
     failLoad(path, std::to_string(positions) + " slice positions holding " +
                        std::to_string(fewest) + " to " + std::to_string(most) + " slices each (" +
                        slices[starts[p]].file + " and " + slices[starts[p] + 1].file +
-                       " share one position): several volumes in the series, unevenly (a copy? "
-                       "a missing file?)");
+                       " share one position): several volumes in the series, unevenly, and their "
+                       "InstanceNumbers do not number one volume after another");
   }
   checkVolume(path, volume, most);
   if (count) *count = int(most);
-  std::vector<DicomSlice> picked;
-  for (size_t p = 0; p < positions; ++p) picked.push_back(slices[starts[p] + size_t(volume)]);
-  notes.push_back(std::to_string(most) + " volumes at the same " + std::to_string(positions) +
-                  " positions (diffusion directions, echoes or time points): volume " +
-                  std::to_string(volume) + " open (--frame N opens another, 0 to " +
-                  std::to_string(most - 1) + ")");
+  std::vector<DicomSlice> picked;  // in position order, as slices are
+  std::vector<size_t> held(most, 0);
+  for (size_t i = 0; i < slices.size(); ++i) {
+    ++held[volumeOf[i]];
+    if (volumeOf[i] == size_t(volume)) picked.push_back(slices[i]);
+  }
+  std::string note = std::to_string(most) + " volumes at the same " + std::to_string(positions) +
+                     " positions (diffusion directions, echoes or time points): volume " +
+                     std::to_string(volume) + " open (--frame N opens another, 0 to " +
+                     std::to_string(most - 1) + ")";
+  std::string shortOnes;
+  for (size_t v = 0; v < most; ++v)
+    if (held[v] < positions)
+      shortOnes += (shortOnes.empty() ? "" : ", ") + std::to_string(v) + " (" +
+                   std::to_string(held[v]) + ")";
+  if (!shortOnes.empty())
+    note +=
+        "; volumes short of slices, by InstanceNumber (an interrupted scan? a missing file?), "
+        "with the positions each holds: " +
+        shortOnes;
+  notes.push_back(note);
   return picked;
 }
 

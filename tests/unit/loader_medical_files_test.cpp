@@ -543,7 +543,8 @@ TEST(DicomFiles, SeriesMixingSizesOrientationsAndMultiFrameFilesAreSplit) {
 
 // A diffusion or multi-echo series: three volumes at the same four positions, InstanceNumbers
 // slice by slice (file names against that order), volume v's values 1000 v + 10 z. --frame
-// picks one; a position short of a slice fails in one line. An enhanced file of two volumes too.
+// picks one; a position short of a slice fails in one line (numbered slice by slice). An enhanced
+// file of two volumes too.
 TEST(DicomFiles, SeveralVolumesAtTheSamePositionsOpenOneByOne) {
   TempDir dir;
   std::filesystem::create_directories(dir.path("dwi"));
@@ -586,6 +587,11 @@ TEST(DicomFiles, SeveralVolumesAtTheSamePositionsOpenOneByOne) {
       plain, "--frame 1 is out of range (the series has 1 volume at its positions)");
   std::filesystem::remove(dir.path("dwi/f0.dcm"));
   expectVolumeLoadError(dir.path("dwi"), "4 slice positions holding 2 to 3 slices each (");
+  // Numbered slice by slice, a missing file leaves no way to tell the volumes apart
+  // (loader_dicom_short_volumes_test.cpp: numbered one volume after another, they open).
+  expectVolumeLoadError(dir.path("dwi"),
+                        "share one position): several volumes in the series, unevenly, and their "
+                        "InstanceNumbers do not number one volume after another");
 
   testing::EnhancedDicomSpec enhanced;
   enhanced.frameZ = {0.0, 2.0, 4.0, 0.0, 2.0, 4.0};

@@ -1,0 +1,96 @@
+// A DICOM series of several volumes at the same positions, short of files: volumes told apart.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "io/volume_loader.h"
+#include "loader_test_files.h"
+#include "medical_test_files.h"
+
+namespace ewa {
+namespace {
+
+using testing::allNotes;
+using testing::TempDir;
+
+// Three volumes at four positions 2 mm apart, InstanceNumbers one volume after another (as
+// scanners number a time series), file names against that order; volume v's values 1000 v +
+// 10 z. `skip(v, z)`: that file is not written.
+template <typename Skip>
+void writeVolumes(TempDir& dir, const std::string& name, Skip skip) {
+  std::filesystem::create_directories(dir.path(name));
+  testing::DicomSliceSpec spec;
+  for (int v = 0; v < 3; ++v)
+    for (int z = 0; z < 4; ++z) {
+      if (skip(v, z)) continue;
+      spec.position = {0.0, 0.0, 2.0 * z};
+      spec.values.assign(spec.rows * spec.columns, int16_t(1000 * v + 10 * z));
+      const std::string file = dir.path(name + "/f" + std::to_string(20 - (4 * v + z)) + ".dcm");
+      ASSERT_TRUE(testing::writeDicomSlice(file, spec));
+      ASSERT_TRUE(testing::editDicom(file, [&](gdcm::DataSet& ds) {
+        gdcm::Attribute<0x0020, 0x0013> instance;
+        instance.SetValue(4 * v + z + 1);
+        ds.Replace(instance.GetAsDataElement());
+      }));
+    }
+}
+
+// Volume 1 lacks its third slice (a missing file), volume 2 its last two (a scan cut short):
+// positions hold 1 to 3 slices. Each volume opens with its own slices, and a note names the
+// short ones; volume 1's gap is warned about.
+TEST(DicomShortVolumes, VolumesShortOfFilesOpenOneByOne) {
+  TempDir dir;
+  writeVolumes(dir, "fmri", [](int v, int z) { return (v == 1 && z == 2) || (v == 2 && z >= 2); });
+  const Volume first = loadVolume(dir.path("fmri"));
+  ASSERT_EQ(first.dims()[2], 4);
+  EXPECT_DOUBLE_EQ(first.spacing().z, 2.0);
+  for (int z = 0; z < 4; ++z) EXPECT_EQ(first.value(0, 0, z), 10 * z) << z;
+  const std::string notes = allNotes(first);
+  EXPECT_NE(notes.find("3 volumes at the same 4 positions (diffusion directions, echoes or time "
+                       "points): volume 0 open (--frame N opens another, 0 to 2); volumes short "
+                       "of slices, by InstanceNumber (an interrupted scan? a missing file?), with "
+                       "the positions each holds: 1 (3), 2 (2)"),
+            std::string::npos)
+      << notes;
+  EXPECT_EQ(notes.find("warning"), std::string::npos) << notes;
+
+  const Volume second = loadVolume(dir.path("fmri"), {"", 1, 0, {}});
+  ASSERT_EQ(second.dims()[2], 3);
+  EXPECT_EQ(second.value(2, 1, 0), 1000);
+  EXPECT_EQ(second.value(2, 1, 1), 1010);
+  EXPECT_EQ(second.value(2, 1, 2), 1030);  // the slice at 4 mm is missing
+  // Two steps, 2 and 4 mm: the loader's warning of uneven spacing.
+  EXPECT_NE(allNotes(second).find("warning: uneven slice spacing (2.000000 to 4.000000)"),
+            std::string::npos)
+      << allNotes(second);
+
+  const Volume third = loadVolume(dir.path("fmri"), {"", 2, 0, {}});
+  ASSERT_EQ(third.dims()[2], 2);
+  EXPECT_DOUBLE_EQ(third.spacing().z, 2.0);
+  EXPECT_EQ(third.value(1, 1, 0), 2000);
+  EXPECT_EQ(third.value(1, 1, 1), 2010);
+  testing::expectLoadError(
+      [&] {
+        loadVolume(dir.path("fmri"), {"", 3, 0, {}});
+      },
+      dir.path("fmri"), "--frame 3 is out of range (the series has 3 volumes at its positions)");
+}
+
+// The first file of all missing: InstanceNumbers start at 2, and volume 0 is the short one
+// (volume 1's first slice, at the lowest position, follows volume 0's last: a new volume).
+TEST(DicomShortVolumes, TheFirstFileMissing) {
+  TempDir dir;
+  writeVolumes(dir, "s", [](int v, int z) { return v == 0 && z == 0; });
+  const Volume first = loadVolume(dir.path("s"));
+  ASSERT_EQ(first.dims()[2], 3);
+  EXPECT_EQ(first.value(0, 0, 0), 10);
+  EXPECT_NE(allNotes(first).find("with the positions each holds: 0 (3)"), std::string::npos)
+      << allNotes(first);
+  const Volume last = loadVolume(dir.path("s"), {"", 2, 0, {}});
+  ASSERT_EQ(last.dims()[2], 4);
+  for (int z = 0; z < 4; ++z) EXPECT_EQ(last.value(0, 0, z), 2000 + 10 * z) << z;
+}
+
+}  // namespace
+}  // namespace ewa
