@@ -8,6 +8,7 @@
 #include "io/byte_order.h"
 #include "io/dicom_duplicates.h"
 #include "io/dicom_frames.h"
+#include "io/dicom_gaps.h"
 #include "io/dicom_pixels.h"
 #include "io/dicom_series.h"
 #include "io/dicom_unplaced.h"
@@ -117,11 +118,12 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   std::vector<DicomSlice> frames;
   if (slices.size() == 1 && whole.frames > 1) frames = dicomFrameSlices(whole);
   glm::dvec3 step(0.0);
+  std::vector<int64_t> missingAfter;  // slices missing after each sorted one, filled in below
   if (!frames.empty()) {
     // An enhanced file of several volumes (diffusion, time points): the one asked for.
     frames = selectDicomVolume(path, std::move(frames), frame, layout.notes, &layout.frameCount);
     try {
-      step = sortDicomSlices(path, frames, layout.notes);
+      step = sortDicomSlices(path, frames, layout.notes, &missingAfter);
       slices = frames;
     } catch (const LoadError& e) {
       // Frames at one place (a time series) or turned: kept whole, as a plain multi-frame file
@@ -140,11 +142,13 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
     if (const auto cine = stackOnePosition(slices, layout.notes))
       step = *cine;
     else
-      step = sortDicomSlices(path, slices, layout.notes);
+      step = sortDicomSlices(path, slices, layout.notes, &missingAfter);
   }
   layout.frame = frame;  // in range: selectDicomVolume checked it
   const DicomSlice& base = slices.front();
-  layout.dims = {base.columns, base.rows, int64_t(slices.size()) * base.frames};
+  int64_t missing = 0;
+  for (int64_t m : missingAfter) missing += m;
+  layout.dims = {base.columns, base.rows, int64_t(slices.size()) * base.frames + missing};
   if (!base.hasSpacing) layout.notes.push_back("no PixelSpacing: 1 assumed");
   if (base.samplesPerPixel > 1)
     layout.notes.push_back((base.photometric.rfind("YBR", 0) == 0
@@ -199,6 +203,9 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
                      values.begin() + ptrdiff_t(size_t(s.frame + 1) * plane));
     values.swap(ordered);
   }
+  if (missing > 0)
+    fillMissingSlices(values, size_t(base.columns) * size_t(base.rows), missingAfter,
+                      integral && sameRescale);
   if (!sameRescale) {
     integral = false;  // float32: per-slice scales rarely land on integers
     layout.notes.push_back("rescale slope or intercept differ between slices: float32");

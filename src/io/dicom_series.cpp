@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 
+#include "io/dicom_gaps.h"
 #include "io/dicom_guard.h"
 #include "io/load_failure.h"
 #include "io/text_fields.h"
@@ -282,7 +283,8 @@ std::string namedSeries(const std::vector<DicomSeries>& all) {
 }
 
 glm::dvec3 sortDicomSlices(const std::string& path, std::vector<DicomSlice>& slices,
-                           std::vector<std::string>& notes) {
+                           std::vector<std::string>& notes, std::vector<int64_t>* missingAfter) {
+  if (missingAfter) missingAfter->clear();
   if (slices.size() < 2) return glm::dvec3(0.0);
   const DicomSlice& first = slices.front();
   for (const DicomSlice& s : slices) {
@@ -308,6 +310,20 @@ glm::dvec3 sortDicomSlices(const std::string& path, std::vector<DicomSlice>& sli
                          slices[i].file + "): more than one volume in the series?");
     gaps.push_back(gap);
   }
+  const glm::dvec3 span = slices.back().position - slices.front().position;
+  if (missingAfter) {
+    *missingAfter = missingSlicesAfter(gaps, slices.size());
+    int64_t missing = 0;
+    for (int64_t m : *missingAfter) missing += m;
+    if (missing > 0) {
+      const double step = *std::min_element(gaps.begin(), gaps.end());
+      notes.push_back("warning: " + std::to_string(missing) + " missing slice" +
+                      (missing > 1 ? "s" : "") + " (gaps of whole multiples of the step, " +
+                      std::to_string(step) +
+                      "): filled in by linear interpolation between their neighbours");
+      return span / double(slices.size() - 1 + size_t(missing));
+    }
+  }
   std::vector<double> sorted = gaps;
   std::sort(sorted.begin(), sorted.end());
   const double median = sorted[sorted.size() / 2];
@@ -320,7 +336,7 @@ glm::dvec3 sortDicomSlices(const std::string& path, std::vector<DicomSlice>& sli
                     std::to_string(hi) + "); drawn evenly spaced");
   }
   // The mean step: along the normal, or oblique when the gantry was tilted.
-  return (slices.back().position - slices.front().position) / double(slices.size() - 1);
+  return span / double(slices.size() - 1);
 }
 
 }  // namespace ewa

@@ -693,16 +693,18 @@ TEST(DicomFiles, CorruptFilesBesideASeriesAreSkippedWithAWarning) {
   EXPECT_EQ(loadVolume(series + "/im0.dcm").bytes(), whole.bytes());
   expectLoadError([&] { loadVolume(series + "/im2 (copy).dcm"); }, series + "/im2 (copy).dcm",
                   "corrupt or truncated DICOM data");
-  // A broken slice of the series itself: the rest opens, the gap it leaves is warned about.
+  // A broken slice of the series itself: the rest opens, the gap it leaves is warned about and
+  // filled in (MissingSlicesAreFilledIn).
   const std::string holed = dicomSeries(dir, "holed", 5);
   for (int n = 0; n < 5; ++n) {  // the file at z = 4, the middle
     const std::string file = holed + "/im" + std::to_string(n) + ".dcm";
     if ((n * 7) % 5 == 2) std::filesystem::resize_file(file, std::filesystem::file_size(file) - 9);
   }
   const Volume four = loadVolume(holed);
-  EXPECT_EQ(four.dims()[2], 4);
+  EXPECT_EQ(four.dims()[2], 5);
   EXPECT_EQ(noteWith(four, "corrupt or truncated"), 1) << ::testing::PrintToString(four.notes());
-  EXPECT_EQ(noteWith(four, "missing slices"), 1) << ::testing::PrintToString(four.notes());
+  EXPECT_EQ(noteWith(four, "warning: 1 missing slice (gaps of whole multiples of the step"), 1)
+      << ::testing::PrintToString(four.notes());
   // Many broken files: three named, then a count, not a line each.
   const std::string many = dicomSeries(dir, "many", 3);
   for (int n = 0; n < 6; ++n)
@@ -728,17 +730,51 @@ TEST(DicomFiles, CorruptFilesBesideASeriesAreSkippedWithAWarning) {
       "no readable DICOM image: " + dir.path("none/b0.dcm") + ": corrupt or truncated DICOM data");
 }
 
-TEST(DicomFiles, MissingSliceWarns) {
+// Slices 2 mm apart but for a gap of 4 mm: the missing slice is filled in, linear between its
+// neighbours (the test slices' values are linear in z), so the volume keeps its true extent. A
+// gap of 2.5 steps is no missing slice: the stack is drawn evenly spaced, with a warning.
+TEST(DicomFiles, MissingSlicesAreFilledIn) {
   TempDir dir;
   testing::DicomSliceSpec spec;
-  std::filesystem::create_directories(dir.path("gap"));
-  for (int z : {0, 2, 4, 8, 10}) {
-    spec.position = {0, 0, double(z)};
-    ASSERT_TRUE(testing::writeDicomSlice(dir.path("gap/" + std::to_string(z) + ".dcm"), spec));
-  }
+  auto write = [&](const std::string& name, std::initializer_list<int> zs) {
+    std::filesystem::create_directories(dir.path(name));
+    for (int z : zs) {
+      spec.position = {0, 0, double(z)};
+      ASSERT_TRUE(
+          testing::writeDicomSlice(dir.path(name + "/" + std::to_string(z) + ".dcm"), spec));
+    }
+  };
+  write("gap", {0, 2, 4, 8, 10});
   const Volume v = loadVolume(dir.path("gap"));
+  ASSERT_EQ(v.dims()[2], 6);
+  EXPECT_DOUBLE_EQ(v.spacing().z, 2.0);
+  EXPECT_EQ(v.type(), ScalarType::Int16);
+  for (int k = 0; k < 6; ++k)
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 5; ++i)
+        ASSERT_EQ(v.value(i, j, k), i + 10 * j + 100 * 2 * k) << i << " " << j << " " << k;
   ASSERT_FALSE(v.notes().empty());
-  EXPECT_NE(v.notes()[0].find("missing slices"), std::string::npos) << v.notes()[0];
+  EXPECT_NE(v.notes()[0].find("warning: 1 missing slice (gaps of whole multiples of the step, "
+                              "2.000000): filled in by linear interpolation between their "
+                              "neighbours"),
+            std::string::npos)
+      << v.notes()[0];
+  // Three missing after the first: a third and two thirds of the way, rounded (int16 stays).
+  write("run", {0, 8, 10, 12, 14});
+  const Volume run = loadVolume(dir.path("run"));
+  ASSERT_EQ(run.dims()[2], 8);
+  for (int k = 0; k < 8; ++k) EXPECT_EQ(run.value(0, 0, k), 200 * k) << k;
+  EXPECT_NE(run.notes()[0].find("warning: 3 missing slices"), std::string::npos) << run.notes()[0];
+  // Not a whole multiple, or more missing than stored: drawn evenly spaced, as before.
+  write("odd", {0, 2, 4, 9, 11});
+  const Volume odd = loadVolume(dir.path("odd"));
+  EXPECT_EQ(odd.dims()[2], 5);
+  EXPECT_NE(odd.notes()[0].find("warning: a gap of 5.000000 between slices where most are "
+                                "2.000000: missing slices? drawn evenly spaced"),
+            std::string::npos)
+      << odd.notes()[0];
+  write("far", {0, 2, 4, 40});
+  EXPECT_EQ(loadVolume(dir.path("far")).dims()[2], 4);
 }
 
 TEST(TiffFiles, MultiPageTypesChannelsAndImageJSpacing) {
