@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <glm/geometric.hpp>
 
 #include "io/load_failure.h"
@@ -18,33 +19,36 @@ void checkVolume(const std::string& path, int volume, size_t count) {
   checkFrame(path, volume, int64_t(count), "the series has", "volume", " at its positions");
 }
 
-// Volumes told apart when positions hold unequal numbers of slices (a file missing, a scan
-// cut short): walking the slices in InstanceNumber order, a volume ends where the positions step
-// back against the direction the positions run in, as scanners number one volume after another,
-// each in the same order. True, with `volumeOf` filled, when every image has its own number and
-// that
-// gives `volumes` volumes (the most any position holds); false for another numbering (slice by
-// slice, which would give about positions x volumes runs), where no volume can be told apart.
-bool volumeMajorBands(const std::vector<DicomSlice>& slices, const std::vector<int>& position,
-                      size_t volumes, std::vector<size_t>& volumeOf) {
-  std::vector<size_t> order(slices.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    const DicomSlice &x = slices[a], &y = slices[b];
-    if (x.instance != y.instance) return x.instance < y.instance;
-    if (x.frame != y.frame) return x.frame < y.frame;
-    return x.file < y.file;
+// The number each image states for its place in the acquisition: its InstanceNumber, or a
+// frame's index in its multi-frame file. Empty when one is unnumbered or two are alike: then
+// only file names would order them, which say nothing of the volumes.
+std::vector<int64_t> imageNumbers(const std::vector<DicomSlice>& slices) {
+  const bool frames = std::all_of(slices.begin(), slices.end(), [&](const DicomSlice& s) {
+    return s.frames > 1 && s.file == slices.front().file;
   });
-  // Only an order the files state: each image numbered (a frame of a multi-frame file by its
-  // frame), no two alike, not the file names'.
-  for (size_t n = 0; n < order.size(); ++n) {
-    const DicomSlice& s = slices[order[n]];
-    if (s.frames == 1 && s.instance == 0) return false;
-    if (n > 0 && s.instance == slices[order[n - 1]].instance &&
-        s.frame == slices[order[n - 1]].frame)
-      return false;
+  std::vector<int64_t> numbers;
+  for (const DicomSlice& s : slices) {
+    if (!frames && (s.frames != 1 || s.instance == 0)) return {};
+    numbers.push_back(frames ? s.frame : s.instance);
   }
-  // The direction the positions run in within a volume: that of most steps.
+  std::vector<int64_t> sorted = numbers;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return {};
+  return numbers;
+}
+
+// Where positions hold unequal numbers of slices (a file missing, a scan cut short), the
+// volumes are told apart by the images' numbers, in one of the two ways scanners number them.
+// One volume after another: in number order, a volume ends where the positions step back
+// against the direction they run in (that of most steps). True, with `volumeOf` filled, when
+// that gives `volumes` volumes (the most any position holds); numbered slice by slice, it would
+// give about positions x volumes.
+bool volumeMajor(const std::vector<int64_t>& numbers, const std::vector<int>& position,
+                 size_t volumes, std::vector<size_t>& volumeOf) {
+  std::vector<size_t> order(numbers.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](size_t a, size_t b) { return numbers[a] < numbers[b]; });
   long rising = 0;
   for (size_t n = 1; n < order.size(); ++n) {
     const int step = position[order[n]] - position[order[n - 1]];
@@ -61,6 +65,39 @@ bool volumeMajorBands(const std::vector<DicomSlice>& slices, const std::vector<i
     volumeOf[i] = band;
   }
   return band + 1 == volumes;
+}
+
+// Slice by slice: each position's images a block of `volumes` consecutive numbers, the blocks
+// one after another (position p's after the block before it in number order), so that an image
+// is volume (number - the block's first number). The blocks' starts are `volumes` apart from the
+// first, which a missing image cannot hide unless every block lacks its first. True, with
+// `volumeOf` filled, when every image falls inside its block; numbered one volume after another,
+// the positions' numbers interleave and it is false.
+bool positionMajor(const std::vector<int64_t>& numbers, const std::vector<int>& position,
+                   size_t positions, size_t volumes, std::vector<size_t>& volumeOf) {
+  std::vector<int64_t> lo(positions, INT64_MAX), hi(positions, INT64_MIN);
+  for (size_t i = 0; i < numbers.size(); ++i) {
+    const size_t p = size_t(position[i]);
+    lo[p] = std::min(lo[p], numbers[i]);
+    hi[p] = std::max(hi[p], numbers[i]);
+  }
+  std::vector<size_t> blocks(positions);  // positions in the order of their numbers
+  for (size_t p = 0; p < positions; ++p) blocks[p] = p;
+  std::sort(blocks.begin(), blocks.end(), [&](size_t a, size_t b) { return lo[a] < lo[b]; });
+  std::vector<int64_t> rank(positions);
+  int64_t first = INT64_MAX;  // the first block's start: the least of lo - rank x volumes
+  for (size_t r = 0; r < positions; ++r) {
+    const size_t p = blocks[r];
+    if (r > 0 && lo[p] <= hi[blocks[r - 1]]) return false;  // interleaved
+    rank[p] = int64_t(r);
+    first = std::min(first, lo[p] - int64_t(r) * int64_t(volumes));
+  }
+  for (size_t i = 0; i < numbers.size(); ++i) {
+    const int64_t slot = numbers[i] - first - rank[size_t(position[i])] * int64_t(volumes);
+    if (slot < 0 || slot >= int64_t(volumes)) return false;
+    volumeOf[i] = size_t(slot);
+  }
+  return true;
 }
 
 }  // namespace
@@ -107,14 +144,16 @@ std::vector<DicomSlice> selectDicomVolume(const std::string& path, std::vector<D
   if (fewest == most) {
     for (size_t p = 0; p < positions; ++p)
       for (size_t i = starts[p]; i < starts[p + 1]; ++i) volumeOf[i] = i - starts[p];
-  } else if (!volumeMajorBands(slices, position, most, volumeOf)) {
+  } else if (const std::vector<int64_t> numbers = imageNumbers(slices);
+             numbers.empty() || (!volumeMajor(numbers, position, most, volumeOf) &&
+                                 !positionMajor(numbers, position, positions, most, volumeOf))) {
     size_t p = 0;  // a position holding the most, whose files are named
     while (starts[p + 1] - starts[p] != most) ++p;
     failLoad(path, std::to_string(positions) + " slice positions holding " +
                        std::to_string(fewest) + " to " + std::to_string(most) + " slices each (" +
                        slices[starts[p]].file + " and " + slices[starts[p] + 1].file +
                        " share one position): several volumes in the series, unevenly, and their "
-                       "InstanceNumbers do not number one volume after another");
+                       "InstanceNumbers do not tell them apart");
   }
   checkVolume(path, volume, most);
   if (count) *count = int(most);

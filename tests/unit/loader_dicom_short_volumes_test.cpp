@@ -92,5 +92,21 @@ TEST(DicomShortVolumes, TheFirstFileMissing) {
   for (int z = 0; z < 4; ++z) EXPECT_EQ(last.value(0, 0, z), 2000 + 10 * z) << z;
 }
 
+// Numbers that do not tell the volumes apart (two images numbered alike): one line naming the
+// folder, as positions holding unequal numbers always were before.
+TEST(DicomShortVolumes, VolumesTheNumbersCannotTellApartFailInOneLine) {
+  TempDir dir;
+  writeVolumes(dir, "s", [](int v, int z) { return v == 2 && z == 3; });
+  ASSERT_TRUE(testing::editDicom(dir.path("s/f20.dcm"), [](gdcm::DataSet& ds) {
+    gdcm::Attribute<0x0020, 0x0013> instance;  // volume 0 at 0 mm numbered as volume 0 at 2 mm
+    instance.SetValue(2);
+    ds.Replace(instance.GetAsDataElement());
+  }));
+  testing::expectVolumeLoadError(dir.path("s"), "4 slice positions holding 2 to 3 slices each (");
+  testing::expectVolumeLoadError(dir.path("s"),
+                                 "share one position): several volumes in the series, unevenly, "
+                                 "and their InstanceNumbers do not tell them apart");
+}
+
 }  // namespace
 }  // namespace ewa
