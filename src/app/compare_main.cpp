@@ -188,8 +188,6 @@ int run(int argc, char** argv) {
   auto context = platform::createHeadlessContext(platform::parseHeadlessBackend(o.backend));
   report.context = context->description();
   const std::set<std::string> skipped(o.skip.begin(), o.skip.end());
-  if (!o.orthographic && skipped.count("shearwarp") == 0)
-    report.notes.push_back("shear-warp draws the perspective view as the parallel one");
   const gl::ShaderLibrary shaders(o.shaderDir);
   SplatRenderer ewa(shaders);
   ewa.setSlabScissor(o.slabRects == "on");

@@ -19,13 +19,6 @@ void refuseToOverwriteInputs(const std::string& output, const Options& o) {
   }
 }
 
-std::string renderNote(const Options& o) {
-  if (o.render.renderer == RendererKind::ShearWarp && !o.orthographic)
-    return "shear-warp renders parallel projection; the perspective camera is drawn as the "
-           "orthographic view of the same height at the focal point";
-  return "";
-}
-
 void renderHeadless(const Scene& scene, const Options& o) {
   refuseToOverwriteInputs(o.output, o);
   HeadlessSession session(o.backend, o.shaderDir);

@@ -11,10 +11,6 @@ namespace ewa {
 // Renders the scene as the options say and writes options.output. Throws on failure.
 void renderHeadless(const Scene& scene, const Options& options);
 
-// What the program notes on stderr before rendering with these options, or "": shear-warp
-// draws a perspective camera as a parallel projection.
-std::string renderNote(const Options& options);
-
 // Throws std::runtime_error("output: is an input file; ...") when `output` is the volume or
 // transfer-function file the options read.
 void refuseToOverwriteInputs(const std::string& output, const Options& options);

@@ -143,8 +143,6 @@ int main(int argc, char** argv) {
       std::cout << ewa::pickJson(scene.volume, scene.transferFunction, options) << "\n";
       return 0;
     }
-    if (const std::string note = ewa::renderNote(options); !note.empty())
-      std::cerr << "ewaview: note: " << note << "\n";
     if (options.turntable > 0) {
       ewa::renderTurntable(scene, options);
       return 0;

@@ -17,16 +17,19 @@ glm::vec4 texel(const IntermediateImage& img, int u, int v) {
 
 void warpRows(const IntermediateImage& img, const glm::dmat3& inv, FloatImage& out, int first,
               int step) {
-  // Affine: along a row (u, v) advances by the first column of the inverse warp.
-  const double du = inv[0][0], dv = inv[0][1];
+  // Projective: along a row the homogeneous (u w, v w, w) advances by the inverse's first
+  // column; w is 1 for the affine warps of parallel views.
+  const glm::dvec3 along = inv[0];
   for (int row = first; row < out.height; row += step) {
     const double y = out.height - 1 - row + 0.5;  // row 0 is the top
     const glm::dvec3 start = inv * glm::dvec3(0.5, y, 1.0);
     float* dst = &out.at(0, row, 0);
     for (int x = 0; x < out.width; ++x, dst += 4) {
-      const double uu = start.x + du * x, vv = start.y + dv * x;
+      const glm::dvec3 h = start + along * double(x);
+      if (!(h.z > 0.0)) continue;  // behind the eye, or a zero warp: nothing
+      const double uu = h.x / h.z, vv = h.y / h.z;
       const double fu = std::floor(uu), fv = std::floor(vv);
-      if (fu < -1.0 || fv < -1.0 || fu >= img.width || fv >= img.height) continue;
+      if (!(fu >= -1.0 && fv >= -1.0 && fu < img.width && fv < img.height)) continue;
       const int u = int(fu), v = int(fv);
       const float wu = float(uu - fu), wv = float(vv - fv);
       glm::vec4 c;

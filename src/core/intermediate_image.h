@@ -23,7 +23,9 @@ struct IntermediateImage {
 };
 
 // Backward warp with bilinear interpolation: output pixel (x, y) (y up, centre at +0.5) reads
-// the intermediate image at inverseWarp * (x + 0.5, y + 0.5, 1); outside it is transparent.
+// the intermediate image at (u, v) where inverseWarp * (x + 0.5, y + 0.5, 1) = (u w, v w, w)
+// (projective for perspective views; w = 1 for affine ones); outside it, or where w <= 0 (behind
+// the eye), it is transparent.
 // Returns premultiplied RGBA, top row first, width x height. Uses `threads` threads.
 FloatImage warpImage(const IntermediateImage& image, const glm::dmat3& inverseWarp, int width,
                      int height, int threads);

@@ -106,7 +106,8 @@ const PreintegrationTable& ShearWarp::pairTable(double distance, int size) {
 const std::vector<glm::vec4>& ShearWarp::correctedTable(const ShearWarpFactorization& view,
                                                         const ShearWarpSettings& s) {
   const double d = view.sliceSpacing;
-  const double ratio = s.opacityCorrection ? view.sampleRatio : 1.0;
+  // Perspective views correct each ray for its own ratio as they composite (rayRatio).
+  const double ratio = s.opacityCorrection && !view.perspective ? view.sampleRatio : 1.0;
   if (correctedValid_ && correctedPre_ == s.preintegrated && correctedDistance_ == d &&
       correctedRatio_ == ratio)
     return corrected_;
@@ -156,7 +157,7 @@ void ShearWarp::render(const Camera& camera, const ShearWarpSettings& settings, 
   stats_.visibleCells = data_.visibleFraction();
   stats_.intermediateWidth = view.imageWidth;
   stats_.intermediateHeight = view.imageHeight;
-  stats_.slices = settings.preintegrated ? std::max(0, view.depth - 1) : view.depth;
+  stats_.slices = settings.preintegrated ? std::max(0, view.sliceCount - 1) : view.sliceCount;
 
   auto start = Clock::now();
   CompositeInput input;

@@ -38,4 +38,16 @@ void ShearWarpClip::keptCells(int k, int j, double fracI, double fracJ, int* fir
   }
 }
 
+void ShearWarpClip::keptSpan(int k, double y, double* lo, double* hi) const {
+  for (const glm::dvec4& p : planes_) {
+    const double c = p.y * y + p.z * k + p.w;  // p.x * x + c >= 0
+    if (p.x > 0.0)
+      *lo = std::max(*lo, -c / p.x);
+    else if (p.x < 0.0)
+      *hi = std::min(*hi, -c / p.x);
+    else if (c < 0.0)
+      *hi = *lo - 1.0;
+  }
+}
+
 }  // namespace ewa

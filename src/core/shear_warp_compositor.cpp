@@ -5,6 +5,9 @@
 #include <cmath>
 #include <thread>
 
+#include "core/shear_warp_perspective.h"
+#include "core/shear_warp_samples.h"
+
 namespace ewa {
 
 namespace {
@@ -44,31 +47,12 @@ CellRange keptCells(const CompositeInput& in, int k, int j, const SlicePlacement
   return r;
 }
 
-inline void under(glm::vec4& pixel, const glm::vec4& sample) {
-  pixel += (1.0f - pixel.a) * sample;
-}
-
-// Lacroute's opaque-pixel links for one intermediate row: next[u] == u while pixel u may
-// still change; once it is opaque, next[u] points further right. find() follows the links
-// (halving the paths it walks), so runs of terminated rays cost almost nothing.
-struct OpaqueLinks {
-  int32_t* next;
-  int find(int u) const {
-    while (next[u] != u) {
-      next[u] = next[next[u]];
-      u = next[u];
-    }
-    return u;
-  }
-  void terminate(int u) const { next[u] = u + 1; }
-};
-
 void compositeStandard(const CompositeInput& in, IntermediateImage& out, int thread, int threads) {
   const ShearWarpFactorization& f = *in.view;
   const size_t sliceSize = size_t(f.width) * f.height;
   const float threshold = float(in.settings.terminationAlpha);
   const float top = float(in.tableSize - 1);
-  for (int step = 0; step < f.depth; ++step) {
+  for (int step = 0; step < f.sliceCount; ++step) {
     const int k = f.sliceAt(step);
     const SlicePlacement place(f, k);
     for (int v = thread; v < out.height; v += threads) {
@@ -95,22 +79,6 @@ void compositeStandard(const CompositeInput& in, IntermediateImage& out, int thr
   }
 }
 
-// The pair table is diagonal-major: entry (f, b) at (b - f + n - 1) * n + f.
-template <bool kBilinear>
-glm::vec4 lookupPair(const glm::vec4* table, int n, float front, float back) {
-  if (!kBilinear) {
-    const int f = int(front + 0.5f), b = int(back + 0.5f);
-    return table[(b - f + n - 1) * n + f];
-  }
-  const int f0 = std::min(int(front), n - 2), b0 = std::min(int(back), n - 2);
-  const float wf = front - f0, wb = back - b0;
-  const glm::vec4* d0 = table + (b0 - f0 + n - 1) * n + f0;  // (f0, b0); (f0+1, b0+1) follows
-  const glm::vec4* up = d0 + n;                              // (f0, b0 + 1)
-  const glm::vec4* down = d0 - n + 1;                        // (f0 + 1, b0)
-  return (d0[0] * (1.0f - wb) + up[0] * wb) * (1.0f - wf) +
-         (down[0] * (1.0f - wb) + d0[1] * wb) * wf;
-}
-
 template <bool kBilinear, bool kImageBuffer>
 void compositeSlabs(const CompositeInput& in, IntermediateImage& out, int thread, int threads,
                     CompositorBuffers& buffers) {
@@ -120,7 +88,7 @@ void compositeSlabs(const CompositeInput& in, IntermediateImage& out, int thread
   const int n = in.tableSize;
   const float top = float(n - 1);
   BufferedSample* image = buffers.image.data();
-  for (int step = 0; step + 1 < f.depth; ++step) {
+  for (int step = 0; step + 1 < f.sliceCount; ++step) {
     const int k = f.sliceAt(step), k2 = f.sliceAt(step + 1);
     const int slab = std::min(k, k2);
     const SlicePlacement front(f, k), back(f, k2);
@@ -169,6 +137,7 @@ void compositeSlabs(const CompositeInput& in, IntermediateImage& out, int thread
 void compositeRows(const CompositeInput& in, IntermediateImage& out, int thread, int threads,
                    CompositorBuffers& buffers) {
   const ShearWarpSettings& s = in.settings;
+  if (in.view->perspective) return compositePerspective(in, out, thread, threads, buffers);
   if (!s.preintegrated) return compositeStandard(in, out, thread, threads);
   const bool bilinear = s.lookup == TableLookup::Bilinear;
   const bool image = s.buffers == BufferSlices::Image;
@@ -183,7 +152,8 @@ void prepareBuffers(const CompositeInput& in, int threads, const IntermediateIma
                     CompositorBuffers& buffers) {
   if (!in.settings.preintegrated) return;
   const BufferedSample empty;
-  if (in.settings.buffers == BufferSlices::Image) {
+  // Perspective views buffer by intermediate pixel: a ray's back sample is the next slab's front.
+  if (in.settings.buffers == BufferSlices::Image || in.view->perspective) {
     const size_t size = size_t(out.width) * out.height;
     if (buffers.image.size() < size) buffers.image.resize(size);
     std::fill(buffers.image.begin(), buffers.image.begin() + size, empty);
@@ -203,7 +173,7 @@ void compositeSlices(const CompositeInput& input, int threads, CompositorBuffers
                      IntermediateImage& out) {
   const ShearWarpFactorization& f = *input.view;
   out.reset(f.imageWidth, f.imageHeight);
-  if (f.width < 2 || f.height < 2 || f.depth < 1 || !input.slices || !input.runs) return;
+  if (f.width < 2 || f.height < 2 || f.sliceCount < 1 || !input.slices || !input.runs) return;
   threads = std::clamp(threads, 1, std::max(1, out.height));
   prepareBuffers(input, threads, out, buffers);
   // One link array per row, width + 1 entries (the last one never terminates).

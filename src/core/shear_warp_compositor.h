@@ -38,12 +38,13 @@ struct CompositeInput {
   int tableSize = 256;
   ShearWarpSettings settings;
   const ShearWarpClip* clip = nullptr;  // crop box and planes; null or inactive: none
-  int32_t* links = nullptr;  // set by compositeSlices
+  int32_t* links = nullptr;             // set by compositeSlices
 };
 
 // Composites every slice (standard: bilinear sample in the slice, nearest point-table entry) or
 // every slab between adjacent slices (pre-integrated: front and back samples, pair-table
-// lookup) front to back into `out`, which is reset to the view's intermediate size. Intermediate
+// lookup) front to back into `out`, which is reset to the view's intermediate size (perspective
+// views: compositePerspective, shear_warp_perspective.h). Intermediate
 // rows are shared out among `threads` threads (row v to thread v mod threads).
 void compositeSlices(const CompositeInput& input, int threads, CompositorBuffers& buffers,
                      IntermediateImage& out);

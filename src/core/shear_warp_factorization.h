@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
@@ -13,32 +14,62 @@ namespace ewa {
 // Lacroute's factorization M = W * S for the camera's viewing direction. Slices are normal to
 // the principal axis (the one the ray, in voxel units, moves along fastest, so the shear per
 // slice is at most one voxel); axisI and axisJ are the in-slice axes. Voxel (i, j) of slice k
-// lands at intermediate-image position (i + offsetI(k), j + offsetJ(k)); intermediate pixel
-// centres sit at integer (u, v), and warp maps them to output pixels (x right, y up, pixel
-// centres at +0.5), the same pixel frame as the splat renderer.
+// lands at intermediate-image position (scale(k) i + offsetI(k), scale(k) j + offsetJ(k));
+// intermediate pixel centres sit at integer (u, v), and warp maps them to output pixels (x right,
+// y up, pixel centres at +0.5), the same pixel frame as the splat renderer.
+//
+// Parallel views: scale 1, offsets linear in k (a shear), an affine warp. Perspective views
+// (Lacroute's thesis, section 3.3): slice k is also scaled towards the eye's foot on it by
+// scale(k) = referenceDistance / |k - eye.z|, so that every intermediate pixel is one ray
+// through the eye, and the warp is projective. referenceDistance makes an intermediate pixel
+// about a pixel of the picture along the view axis (and at least a voxel on the front slice),
+// and the intermediate image covers only where the slices and the picture's rays meet, so an
+// eye inside the volume gets the picture's resolution, not one pixel a voxel of a slice a
+// voxel away. Slices nearer the eye than one voxel along the principal axis, or behind it, are
+// not drawn (the near plane).
 struct ShearWarpFactorization {
   int principal = 2;
   int axisI = 0, axisJ = 1;
   int width = 0, height = 0, depth = 0;  // voxels along axisI, axisJ, principal
-  bool increasing = true;                // slice 0 is the front slice
-  double shearI = 0.0, shearJ = 0.0;     // intermediate offset per slice
+  bool increasing = true;                // slices are drawn in increasing k
+  int frontSlice = 0;                    // the first slice drawn (the front one)
+  int sliceCount = 0;                    // slices drawn, from frontSlice away from the eye
+  double shearI = 0.0, shearJ = 0.0;     // parallel: intermediate offset per slice
   double translateI = 0.0, translateJ = 0.0;
   int imageWidth = 1, imageHeight = 1;  // intermediate image size
   double sliceSpacing = 1.0;            // world units between slices (d)
-  double sampleRatio = 1.0;             // d'/d: distance between slices along a ray over d
-  bool perspectiveAsParallel = false;   // the camera asked for perspective
-  glm::dmat3 warp{1.0};                 // (u, v, 1) -> (x, y, 1)
+  double sampleRatio = 1.0;  // d'/d: parallel, distance between slices along a ray over d
+  bool perspective = false;
+  bool perspectiveAsParallel = false;  // a perspective camera drawn as the parallel view
+  // Perspective: the eye in slice coordinates (voxels along axisI, axisJ, principal) and the
+  // scale of a slice one voxel from it along the principal axis (intermediate pixels a voxel).
+  glm::dvec3 eye{0.0};
+  double referenceDistance = 1.0;
+  glm::dvec3 spacing{1.0};  // world units a voxel along axisI, axisJ, principal
+  glm::dmat3 warp{1.0};     // (u, v, 1) -> (x, y, 1), projective for perspective views
   glm::dmat3 inverseWarp{1.0};
 
-  double offsetI(int k) const { return shearI * k + translateI; }
-  double offsetJ(int k) const { return shearJ * k + translateJ; }
-  // The k-th slice in front-to-back order.
-  int sliceAt(int step) const { return increasing ? step : depth - 1 - step; }
+  double scale(int k) const { return perspective ? referenceDistance / std::abs(k - eye.z) : 1.0; }
+  double offsetI(int k) const {
+    return perspective ? translateI - scale(k) * eye.x : shearI * k + translateI;
+  }
+  double offsetJ(int k) const {
+    return perspective ? translateJ - scale(k) * eye.y : shearJ * k + translateJ;
+  }
+  // The slice drawn at front-to-back step `step` (0 <= step < sliceCount).
+  int sliceAt(int step) const { return increasing ? frontSlice + step : frontSlice - step; }
+  // Perspective: d'/d along the ray through intermediate pixel (u, v) (the same for every slice).
+  double rayRatio(double u, double v) const;
 };
 
+// Intermediate images of perspective views larger than this many pixels are drawn as the
+// parallel view instead (an eye very near the volume's side).
+constexpr double kMaxPerspectiveIntermediatePixels = 64.0 * 1024 * 1024;
+
 // Factorizes the view of a volume with `dims`, `spacing` and `origin` by `camera` into a
-// width x height image. Parallel projection along the camera's direction; a perspective
-// camera is drawn as the orthographic view of the same height at the focal point.
+// width x height image: parallel or perspective as the camera is (perspectiveAsParallel: a
+// perspective view whose intermediate image would be too large, drawn as the orthographic view of
+// the same height at the focal point).
 ShearWarpFactorization factorizeView(const Camera& camera, const std::array<int64_t, 3>& dims,
                                      const glm::dvec3& spacing, const glm::dvec3& origin, int width,
                                      int height);

@@ -31,10 +31,6 @@ void warn(const std::string& note) {
     throw py::error_already_set();
 }
 
-void warnAboutNote(const Options& o) {
-  warn(renderNote(o));
-}
-
 // A new dict with the same items (py::dict's copy constructor shares the object).
 py::dict copyOf(const py::dict& d) {
   return py::reinterpret_steal<py::dict>(PyDict_Copy(d.ptr()));
@@ -204,7 +200,6 @@ HeadlessSession& PythonScene::session(const Options& o) {
 
 Image8 PythonScene::renderImage(const py::dict& overrides) {
   const Options o = renderOptions(overrides);
-  warnAboutNote(o);
   const Camera camera = initialCamera(*volume_, o);
   Image8 image;
   std::string note;
@@ -222,7 +217,6 @@ Image8 PythonScene::renderImage(const py::dict& overrides) {
 
 void PythonScene::writeFrames(const std::string& path, int frames, int fps, const Options& o,
                               const std::function<TourStop(int)>& view) {
-  warnAboutNote(o);
   std::string notes;
   {
     py::gil_scoped_release released;

@@ -53,6 +53,11 @@ void ShearWarpRenderer::render(const Camera& camera, const RenderSettings& setti
   stats_.classifyMs = s.tableMs;
   stats_.compositeMs = s.compositeMs + s.warpMs;
   stats_.gpuBytes = size_t(width) * size_t(height) * 4;  // the RGBA8 texture it allocated
+  if (s.perspectiveAsParallel)
+    stats_.note =
+        "shear-warp: this perspective view's intermediate image would be too large (the eye very "
+        "near the volume's side); drawn as the orthographic view of the same height at the focal "
+        "point";
   stats_.renderMs = millisecondsSince(start);
 }
 

@@ -8,9 +8,10 @@
 namespace ewa {
 
 // Composites and warps on the CPU (core/shear_warp.h), then uploads the picture to an RGBA8
-// texture so the window can draw it like the splat renderer's. Parallel projection only: a
-// perspective camera is drawn as the orthographic view of the same height at the focal point
-// (stats().perspectiveAsParallel says so).
+// texture so the window can draw it like the splat renderer's. Parallel and perspective views;
+// a perspective view whose intermediate image would be too large (an eye very near the volume's
+// side) is drawn as the orthographic view of the same height at the focal point, and
+// stats().note says so.
 class ShearWarpRenderer : public Renderer {
  public:
   // A GL context must be current (for the output texture).

@@ -277,7 +277,6 @@ bool ControlPanel::drawShearWarp(ShearWarpSettings& s) {
     }
   }
   changed |= ImGui::Checkbox("opacity correction", &s.opacityCorrection);
-  ImGui::TextDisabled("parallel projection (perspective is drawn orthographic)");
   return changed;
 }
 

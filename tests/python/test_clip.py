@@ -7,7 +7,6 @@ from conftest import assert_same_picture, differs
 
 
 @pytest.mark.parametrize("renderer", ["splat", "shearwarp"])
-@pytest.mark.filterwarnings("ignore:shear-warp renders parallel projection")
 def test_crop_and_planes_equal_the_command_line_picture(cli, renderer):
     scene = ewaview.Scene(synthetic="sphere:32", resolution=(80, 64), renderer=renderer)
     image = scene.render(crop=(-5, 20, -5, 40, 8, 40), clip_planes=[(16, 16, 16, 1, 1, 0)])

@@ -39,7 +39,6 @@ def tooth(shared_data):
     dict(shading=True, filter="swan", background=(0.1, 0.2, 0.3), camera_view_angle=40),
     dict(render_mode="xray", xray_map="sum", xray_scale=0.02, camera_orthographic=True),
 ], ids=["splat", "shearwarp", "mip-camera", "shaded-swan", "xray-ortho"])
-@pytest.mark.filterwarnings("ignore:shear-warp renders parallel projection")
 def test_render_equals_the_command_line_picture(cli, shared_data, options):
     path = tooth(shared_data)
     options = dict(SMALL, **options)
@@ -51,7 +50,6 @@ def test_render_equals_the_command_line_picture(cli, shared_data, options):
     assert image.max() > 40  # not an empty picture that would equal any other empty one
 
 
-@pytest.mark.filterwarnings("ignore:shear-warp renders parallel projection")
 def test_kept_options_and_overrides_are_the_command_line_s(cli):
     scene = ewaview.Scene(synthetic="marschner-lobb:24", **SMALL)
     scene.set(filter="swan", camera_position=(60, 30, 70))
@@ -281,7 +279,6 @@ def test_axis_is_the_command_line_s_and_only_paints_the_corner(cli):
     assert changed[:, 0].min() >= 72 // 4 and changed[:, 1].min() >= 96 // 3  # bottom right
 
 
-@pytest.mark.filterwarnings("ignore:shear-warp renders parallel projection")
 def test_turntable_writes_what_the_command_line_writes(cli, out_dir):
     scene = ewaview.Scene(synthetic="marschner-lobb:24", resolution=(48, 40))
     scene.turntable(out_dir / "py_turn", frames=3, renderer="shearwarp")
@@ -343,14 +340,15 @@ def test_the_module_imports_with_only_pythonpath_set():
     assert run.stdout.strip() == ewaview.__version__
 
 
-def test_shear_warp_perspective_note_is_a_warning():
-    scene = ewaview.Scene(synthetic="sphere:8", resolution=(16, 16), renderer="shearwarp")
-    with pytest.warns(UserWarning, match="parallel projection"):
-        scene.render()
+def test_shear_warp_draws_perspective_without_a_note():
+    scene = ewaview.Scene(synthetic="sphere:16", resolution=(32, 32), renderer="shearwarp")
     import warnings
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        scene.render(camera_orthographic=True)  # no note for a parallel camera
+        perspective = scene.render(camera_view_angle=60)
+        parallel = scene.render(camera_view_angle=60, camera_orthographic=True)
+    # The sphere's silhouette seen from near is wider than its parallel outline.
+    assert (perspective.sum(axis=2) > 20).sum() > 1.05 * (parallel.sum(axis=2) > 20).sum()
 
 
 def test_renders_in_threads_equal_renders_in_turn():

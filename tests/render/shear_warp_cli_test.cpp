@@ -34,13 +34,33 @@ TEST(ShearWarpCli, BadValuesAreUsageErrors) {
   }
 }
 
-TEST(ShearWarpCli, RendersHeadlessAndSaysPerspectiveIsDrawnParallel) {
+TEST(ShearWarpCli, RendersHeadlessInPerspectiveAndParallel) {
   const std::string dir = testOutputDir();
-  const std::string common = "--synthetic sphere:24 --renderer shearwarp --resolution 64,48 ";
-  CliRun r = ewaview(common + "--output " + dir + "/sw_persp.png");
+  // A box seen from near its corner, 60 degrees wide: its near edges loom.
+  const std::string near =
+      "--synthetic box:24 --resolution 64,48 --camera-view-angle 60 --camera-position 30,26,40 "
+      "--camera-focal-point 12,12,12 ";
+  CliRun r = ewaview(near + "--renderer shearwarp --output " + dir + "/sw_persp.png");
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(lineCount(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find("parallel"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;  // perspective is drawn as such: nothing to say
+  r = ewaview(near + "--renderer shearwarp --camera-orthographic --output " + dir +
+              "/sw_ortho.png");
+  EXPECT_EQ(r.code, 0) << r.err;
+  r = ewaview(near + "--output " + dir + "/sw_ewa.png");
+  EXPECT_EQ(r.code, 0) << r.err;
+  // Nearer EWA's perspective picture than the parallel drawing of the same camera is (measured
+  // mean differences 1.9 and 6.9 levels).
+  const Image8 persp = readPng(dir + "/sw_persp.png"), ortho = readPng(dir + "/sw_ortho.png");
+  const Image8 ewa = readPng(dir + "/sw_ewa.png");
+  auto meanDifference = [&](const Image8& a) {
+    double sum = 0.0;
+    for (size_t i = 0; i < a.pixels.size(); ++i) sum += std::abs(a.pixels[i] - ewa.pixels[i]);
+    return sum / double(a.pixels.size());
+  };
+  EXPECT_NE(persp.pixels, ortho.pixels);
+  EXPECT_LT(2.5 * meanDifference(persp), meanDifference(ortho))
+      << meanDifference(persp) << " " << meanDifference(ortho);
+  const std::string common = "--synthetic sphere:24 --resolution 64,48 --renderer shearwarp ";
   r = ewaview(common +
               "--camera-orthographic --preintegrated --table-lookup bilinear "
               "--opacity-correction off --buffer-slices image --output " +
