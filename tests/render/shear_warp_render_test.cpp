@@ -45,6 +45,27 @@ TransferFunction blobTf() {
   return tf;
 }
 
+// Draws `cam` with shear-warp, standard and pre-integrated, and holds each picture to `ewa`
+// (SSIM above, RMSE below the limits); `name` labels the printout and the kept pictures.
+void expectNearEwa(ShearWarpRenderer& sw, const Camera& cam, RenderSettings settings,
+                   const FloatImage& ewa, const std::string& name, double minSsim, double maxRmse) {
+  for (bool pre : {false, true}) {
+    settings.shearWarp.preintegrated = pre;
+    sw.render(cam, settings, 96, 96);
+    const Image8 img = sw.readImage();
+    const FloatImage f = toFloatImage(img);
+    const double ssim = structuralSimilarity(f, ewa, 1.0);
+    const double rmse = rootMeanSquareError(f, ewa);
+    std::printf("%s (pre-integrated %d) vs EWA: SSIM %.4f, RMSE %.4f\n", name.c_str(), pre, ssim,
+                rmse);
+    EXPECT_GT(ssim, minSsim) << name << ", preintegrated " << pre;
+    EXPECT_LT(rmse, maxRmse) << name << ", preintegrated " << pre;
+    EXPECT_TRUE(sw.stats().note.empty()) << sw.stats().note;
+    if (std::getenv("EWA_KEEP_IMAGES") || ::testing::Test::HasFailure())
+      writePng(testOutputDir() + "/" + name + std::to_string(pre) + ".png", img);
+  }
+}
+
 TEST_F(ShearWarpRender, SmoothVolumeLooksLikeTheEwaSplatImage) {
   const Volume volume = smoothBlob();
   Camera cam;
@@ -60,19 +81,7 @@ TEST_F(ShearWarpRender, SmoothVolumeLooksLikeTheEwaSplatImage) {
   ShearWarpRenderer sw;
   sw.setVolume(volume);
   sw.setTransferFunction(blobTf());
-  for (bool pre : {false, true}) {
-    settings.shearWarp.preintegrated = pre;
-    sw.render(cam, settings, 96, 96);
-    const Image8 img = sw.readImage();
-    const FloatImage f = toFloatImage(img);
-    const double ssim = structuralSimilarity(f, ewa, 1.0);
-    const double rmse = rootMeanSquareError(f, ewa);
-    std::printf("shear-warp (pre-integrated %d) vs EWA: SSIM %.4f, RMSE %.4f\n", pre, ssim, rmse);
-    EXPECT_GT(ssim, 0.99) << "preintegrated " << pre;
-    EXPECT_LT(rmse, 0.01) << "preintegrated " << pre;
-    if (std::getenv("EWA_KEEP_IMAGES") || ::testing::Test::HasFailure())
-      writePng(testOutputDir() + "/shear_warp_blob" + std::to_string(pre) + ".png", img);
-  }
+  expectNearEwa(sw, cam, settings, ewa, "shear_warp_blob", 0.99, 0.01);
 }
 
 // A perspective camera close to the blob, 50 degrees wide: shear-warp's scaled slices and
@@ -102,25 +111,9 @@ TEST_F(ShearWarpRender, PerspectiveViewLooksLikeTheEwaSplatImage) {
     if (std::getenv("EWA_KEEP_IMAGES"))
       writePng(testOutputDir() + "/shear_warp_perspective_ewa" + std::to_string(crop) + ".png",
                renderer()->readImage());
-    for (bool pre : {false, true}) {
-      settings.shearWarp.preintegrated = pre;
-      sw.render(cam, settings, 96, 96);
-      const Image8 img = sw.readImage();
-      const FloatImage f = toFloatImage(img);
-      const double ssim = structuralSimilarity(f, ewa, 1.0);
-      const double rmse = rootMeanSquareError(f, ewa);
-      std::printf(
-          "perspective shear-warp (pre-integrated %d, crop %d) vs EWA: SSIM %.4f, RMSE %.4f\n", pre,
-          crop, ssim, rmse);
-      // Measured 0.9986-0.9996 and 0.0013-0.0083 (cropped: shear-warp cuts at its samples).
-      EXPECT_GT(ssim, 0.995) << "preintegrated " << pre << " crop " << crop;
-      EXPECT_LT(rmse, 0.012) << "preintegrated " << pre << " crop " << crop;
-      EXPECT_TRUE(sw.stats().note.empty()) << sw.stats().note;
-      if (std::getenv("EWA_KEEP_IMAGES") || ::testing::Test::HasFailure())
-        writePng(testOutputDir() + "/shear_warp_perspective" + std::to_string(pre) +
-                     std::to_string(crop) + ".png",
-                 img);
-    }
+    // Measured 0.9986-0.9996 and 0.0013-0.0083 (cropped: shear-warp cuts at its samples).
+    expectNearEwa(sw, cam, settings, ewa, "shear_warp_perspective" + std::to_string(crop), 0.995,
+                  0.012);
     if (!crop) {
       Camera parallel = cam;
       parallel.orthographic = true;

@@ -1,6 +1,8 @@
 // Test volumes, transfer functions and image sums shared by the shear-warp unit tests.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -92,6 +94,22 @@ inline double totalAlpha(const FloatImage& img) {
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) sum += img.at(x, y, 3);
   return sum;
+}
+
+// Standard and pre-integrated pictures of `cam` are the same with run-length encoding and two
+// threads as without them on one (gtest assertions; include gtest first).
+inline void expectRunsAndThreadsKeepThePicture(const Volume& v, const Camera& cam) {
+  for (bool pre : {false, true}) {
+    ShearWarpSettings s;
+    s.preintegrated = pre;
+    s.threads = 2;
+    const FloatImage fast = renderOnce(v, blobTf(), cam, s);
+    s.runLengthEncoding = false;
+    s.threads = 1;
+    const FloatImage plain = renderOnce(v, blobTf(), cam, s);
+    EXPECT_GT(totalAlpha(fast), 100.0);
+    EXPECT_EQ(fast.values, plain.values) << "preintegrated " << pre;
+  }
 }
 
 }  // namespace ewa::swtest
