@@ -23,8 +23,9 @@ void checkVolume(const std::string& path, int volume, size_t count) {
 // frame's index in its multi-frame file. Empty when one is unnumbered or two are alike: then
 // only file names would order them, which say nothing of the volumes.
 std::vector<int64_t> imageNumbers(const std::vector<DicomSlice>& slices) {
+  // An enhanced file's frames (dicomFrameSlices): one file, each frame a slice of its own.
   const bool frames = std::all_of(slices.begin(), slices.end(), [&](const DicomSlice& s) {
-    return s.frames > 1 && s.file == slices.front().file;
+    return s.file == slices.front().file;
   });
   std::vector<int64_t> numbers;
   for (const DicomSlice& s : slices) {

@@ -92,6 +92,25 @@ TEST(DicomShortVolumes, TheFirstFileMissing) {
   for (int z = 0; z < 4; ++z) EXPECT_EQ(last.value(0, 0, z), 2000 + 10 * z) << z;
 }
 
+// An enhanced file of two volumes whose second is a frame short: its frames' indices number
+// one volume after another, so both open, the second with two slices.
+TEST(DicomShortVolumes, AnEnhancedFileAFrameShort) {
+  TempDir dir;
+  testing::EnhancedDicomSpec enhanced;
+  enhanced.frameZ = {0.0, 2.0, 4.0, 0.0, 2.0};
+  ASSERT_TRUE(testing::writeEnhancedDicom(dir.path("two.dcm"), enhanced));
+  const Volume first = loadVolume(dir.path("two.dcm"));
+  EXPECT_EQ(first.dims()[2], 3);
+  EXPECT_NE(allNotes(first).find("2 volumes at the same 3 positions"), std::string::npos)
+      << allNotes(first);
+  EXPECT_NE(allNotes(first).find("with the positions each holds: 1 (2)"), std::string::npos)
+      << allNotes(first);
+  const Volume second = loadVolume(dir.path("two.dcm"), {"", 1, 0, {}});
+  ASSERT_EQ(second.dims()[2], 2);
+  EXPECT_DOUBLE_EQ(second.spacing().z, 2.0);
+  EXPECT_EQ(second.value(1, 1, 1), 1 + 10 + 200);
+}
+
 // Numbers that do not tell the volumes apart (two images numbered alike): one line naming the
 // folder, as positions holding unequal numbers always were before.
 TEST(DicomShortVolumes, VolumesTheNumbersCannotTellApartFailInOneLine) {
