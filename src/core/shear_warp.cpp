@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 #include "core/named_values.h"
@@ -133,6 +134,10 @@ const std::vector<glm::vec4>& ShearWarp::correctedTable(const ShearWarpFactoriza
   // Lacroute corrects through a table of alpha; correcting the classification table once per
   // view gives the same numbers for every sample at the cost of one pass over the table.
   correctTable(corrected_, ratio);
+  // ln(1 - alpha) of each entry: perspective views correct each ray's samples with one exp.
+  correctedLog_.resize(corrected_.size());
+  for (size_t e = 0; e < corrected_.size(); ++e)
+    correctedLog_[e] = corrected_[e].a < 1.0f ? std::log1p(-corrected_[e].a) : -INFINITY;
   correctedValid_ = true;
   correctedPre_ = s.preintegrated;
   correctedDistance_ = d;
@@ -168,6 +173,7 @@ void ShearWarp::render(const Camera& camera, const ShearWarpSettings& settings, 
   input.clip = &clipCells;
   const std::vector<glm::vec4>& table = correctedTable(view, settings);
   (settings.preintegrated ? input.pairTable : input.pointTable) = table.data();
+  input.tableLog = correctedLog_.data();
   input.slices = data_.slices(view.principal).data();
   input.runs = &data_.runs(view.principal, settings.preintegrated);
   // Without run-length encoding every cell is one run (for tests: the picture must not change).

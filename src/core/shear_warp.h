@@ -68,6 +68,7 @@ class ShearWarp {
   std::map<double, std::vector<glm::vec4>> pointTables_;  // by sample distance
   // The last corrected table and what it was made for.
   std::vector<glm::vec4> corrected_;
+  std::vector<float> correctedLog_;  // ln(1 - alpha) of each entry of corrected_
   bool correctedValid_ = false;
   bool correctedPre_ = false;
   double correctedDistance_ = 0.0, correctedRatio_ = 0.0;

@@ -183,6 +183,14 @@ void compositeSlices(const CompositeInput& input, int threads, CompositorBuffers
     for (size_t u = 0; u < rowLinks; ++u) buffers.links[r * rowLinks + u] = int32_t(u);
   CompositeInput in = input;
   in.links = buffers.links.data();
+  if (f.perspective && input.settings.opacityCorrection) {
+    // Each ray's ratio once a frame, not once a sample.
+    buffers.rayRatios.resize(size_t(out.width) * out.height);
+    for (int v = 0; v < out.height; ++v)
+      for (int u = 0; u < out.width; ++u)
+        buffers.rayRatios[size_t(v) * out.width + u] = float(f.rayRatio(u, v));
+    in.rayRatios = buffers.rayRatios.data();
+  }
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t)
     pool.emplace_back(compositeRows, std::cref(in), std::ref(out), t, threads, std::ref(buffers));

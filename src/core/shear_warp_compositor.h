@@ -26,6 +26,7 @@ struct CompositorBuffers {
   std::vector<BufferedSample> image;                // intermediate-image-sized (IB)
   std::vector<std::vector<BufferedSample>> slices;  // two slice-sized (SB) per thread
   std::vector<int32_t> links;                       // opaque-pixel links, one array per row
+  std::vector<float> rayRatios;  // perspective: each intermediate pixel's d'/d (rayRatio)
 };
 
 struct CompositeInput {
@@ -35,10 +36,12 @@ struct CompositeInput {
   const glm::vec4* pointTable = nullptr;  // standard: tableSize entries, corrected for the view
   const glm::vec4* pairTable = nullptr;   // pre-integrated: (2 tableSize - 1) x tableSize,
                                           // diagonal-major (see lookupPair), corrected
+  const float* tableLog = nullptr;        // ln(1 - alpha) of each entry of the table in use
   int tableSize = 256;
   ShearWarpSettings settings;
   const ShearWarpClip* clip = nullptr;  // crop box and planes; null or inactive: none
   int32_t* links = nullptr;             // set by compositeSlices
+  const float* rayRatios = nullptr;     // set by compositeSlices for perspective correction
 };
 
 // Composites every slice (standard: bilinear sample in the slice, nearest point-table entry) or

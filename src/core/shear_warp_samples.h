@@ -27,13 +27,16 @@ struct OpaqueLinks {
   void terminate(int u) const { next[u] = u + 1; }
 };
 
-// The pair table is diagonal-major: entry (f, b) at (b - f + n - 1) * n + f.
+// The pair table is diagonal-major: entry (f, b) at (b - f + n - 1) * n + f. The entry nearest
+// (front, back):
+inline int nearestPair(int n, float front, float back) {
+  const int f = int(front + 0.5f), b = int(back + 0.5f);
+  return (b - f + n - 1) * n + f;
+}
+
 template <bool kBilinear>
 glm::vec4 lookupPair(const glm::vec4* table, int n, float front, float back) {
-  if (!kBilinear) {
-    const int f = int(front + 0.5f), b = int(back + 0.5f);
-    return table[(b - f + n - 1) * n + f];
-  }
+  if (!kBilinear) return table[nearestPair(n, front, back)];
   const int f0 = std::min(int(front), n - 2), b0 = std::min(int(back), n - 2);
   const float wf = front - f0, wb = back - b0;
   const glm::vec4* d0 = table + (b0 - f0 + n - 1) * n + f0;  // (f0, b0); (f0+1, b0+1) follows
