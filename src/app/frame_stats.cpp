@@ -33,6 +33,7 @@ std::string frameStatsJson(const RenderStats& s, const std::string& renderer, in
   j["splats"] = s.splatsTotal;
   j["splats_drawn"] = s.splatsDrawn;
   j["slabs"] = s.slabs;
+  j["slabs_drawn"] = s.slabsDrawn;
   j["slab_entries"] = s.slabEntries;
   j["entries_culled"] = s.entriesCulled;
   j["slabs_coarse"] = s.slabsCoarse;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -17,6 +18,29 @@ glm::dmat4 worldToVolumeFrame(const Volume& volume) {
   glm::dmat4 m(inverse);
   m[3] = glm::dvec4(o - inverse * o, 1.0);
   return m;
+}
+
+DataBox keptBoxInVolumeFrame(const ClipRegion& region, const Volume& volume, double grow) {
+  const DataBox whole{volume.boundsMin() - grow, volume.boundsMax() + grow};
+  if (!region.cropEnabled) return whole;
+  const glm::dmat4 toFrame = worldToVolumeFrame(volume);
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (int c = 0; c < 8; ++c) {
+    const glm::dvec3 corner((c & 1) ? region.cropMax.x : region.cropMin.x,
+                            (c & 2) ? region.cropMax.y : region.cropMin.y,
+                            (c & 4) ? region.cropMax.z : region.cropMin.z);
+    const glm::dvec3 p(toFrame * glm::dvec4(corner, 1.0));
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const glm::dvec3& sp = volume.spacing();
+  const double hair = 1e-3 * std::min({sp.x, sp.y, sp.z});
+  lo -= hair;
+  hi += hair;
+  const DataBox kept{glm::max(lo, whole.low), glm::min(hi, whole.high)};
+  if (!(kept.low.x <= kept.high.x && kept.low.y <= kept.high.y && kept.low.z <= kept.high.z))
+    return whole;
+  return kept;
 }
 
 std::vector<HalfSpace> halfSpacesInVolumeFrame(const ClipRegion& region, const Volume& volume) {

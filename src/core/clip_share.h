@@ -23,6 +23,11 @@ constexpr double kClipUnbounded = 1e30;
 glm::dmat4 worldToVolumeFrame(const Volume& volume);
 // The region's half-spaces in the volume's own frame.
 std::vector<HalfSpace> halfSpacesInVolumeFrame(const ClipRegion& region, const Volume& volume);
+// The volume's box in its own frame grown by `grow` on every side (how far kernels reach out of
+// it), narrowed to the crop box (its corners' bounds in that frame, a hair wider for rounding),
+// which the clip cuts every ray at: a box holding all that is drawn (clipping planes are not
+// counted). The grown box when no crop is enabled or nothing of it is left.
+DataBox keptBoxInVolumeFrame(const ClipRegion& region, const Volume& volume, double grow = 0.0);
 
 // The depths [near, far] that camera-space half-spaces keep along the ray through `pixel` (the
 // splat shaders' pixel frame: gl_FragCoord, principal point at the image centre). Depth is

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/clip_share.h"
 #include "core/kernel_reach.h"
 #include "render/splat_renderer.h"
 
@@ -51,10 +52,12 @@ void SplatRenderer::computeSlabRects() {
   // Surface splats sit up to one smallest spacing off their voxel along the normal.
   const glm::dvec3 margin(params.minSpacing);
   const glm::dmat4 view = frame_.camera.viewMatrix();
+  // The crop box's part of the volume: a kernel beside it adds only along rays through it.
+  const DataBox kept = keptBoxInVolumeFrame(settings.clip, *volume_);
   for (const Slab& slab : frame_.slabs)
-    frame_.slabRects.push_back(slabPixelRect(
-        view, frame_.proj, reach, volume_->boundsMin() - margin, volume_->boundsMax() + margin,
-        slab.nearDepth, slab.farDepth, params.cullDepth));
+    frame_.slabRects.push_back(slabPixelRect(view, frame_.proj, reach, kept.low - margin,
+                                             kept.high + margin, slab.nearDepth, slab.farDepth,
+                                             params.cullDepth));
   // Coarser slab images where every kernel a slab lists is wide enough on screen. Never with
   // surface splats (flat: a footprint as thin as the low-pass filter seen edge on), nor for
   // shaded post-classification (its normals are derivatives of the slab's values, which the

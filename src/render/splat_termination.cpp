@@ -1,8 +1,9 @@
-// SplatRenderer's early termination: an occlusion query on the volume's box over the marked
-// (opaque) pixels, read at once or lagged under conditional rendering.
+// SplatRenderer's early termination: an occlusion query on the volume's box (narrowed to the
+// crop box) over the marked (opaque) pixels, read at once or lagged under conditional rendering.
 #include <algorithm>
 #include <cmath>
 
+#include "core/clip_share.h"
 #include "core/kernel_reach.h"
 #include "render/splat_renderer.h"
 
@@ -42,20 +43,21 @@ bool SplatRenderer::issueOpaqueQuery(unsigned query) {
   const glm::dvec3& sp = volume_->spacing();
   const double maxSpacing = std::max({sp.x, sp.y, sp.z});
   const KernelReach& reach = frame_.reach;
-  const glm::dvec3 lo = volume_->boundsMin(), hi = volume_->boundsMax();
   const glm::dmat4 view = camera.viewMatrix();
-  const DepthRange box = boxDepthRange(view, lo, hi);
+  const DepthRange box = boxDepthRange(view, volume_->boundsMin(), volume_->boundsMax());
   // A box reaching the eye plane would be clipped: not a safe bound for the test.
   if (!proj.orthographic &&
       box.nearest < 2.0 * std::max(maxSpacing, reach.maxSigma) * std::sqrt(reach.cutoff))
     return false;
   const double farDepth = std::max(0.0, box.farthest);
   // Grow the box by what a kernel reaches beyond its centre at the farthest corner (reach
-  // grows with depth), plus a pixel for rasterization.
+  // grows with depth), plus a pixel for rasterization; then narrow it to the crop box, where the
+  // clip cuts every pixel's ray: pixels whose rays miss it get nothing and never turn opaque.
   const double grow = worldReach(reach, farDepth) + worldPerPixel(reach, farDepth);
+  const DataBox kept = keptBoxInVolumeFrame(frame_.settings.clip, *volume_, grow);
   boxProgram_.setMat4("uClip", clipMatrix(proj, view, 0.5 * maxSpacing));
-  boxProgram_.setVec3("uBoxMin", glm::vec3(lo - grow));
-  boxProgram_.setVec3("uBoxMax", glm::vec3(hi + grow));
+  boxProgram_.setVec3("uBoxMin", glm::vec3(kept.low));
+  boxProgram_.setVec3("uBoxMax", glm::vec3(kept.high));
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glBeginQuery(GL_SAMPLES_PASSED, query);

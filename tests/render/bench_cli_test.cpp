@@ -186,6 +186,8 @@ TEST(StatsCli, OneJsonLineWithSplatsTimesAndMemory) {
   EXPECT_GT(j["splats"].get<double>(), 100.0);
   EXPECT_LE(j["splats_drawn"].get<double>(), j["splats"].get<double>());
   EXPECT_GT(j["slabs"].get<double>(), 0.0);
+  EXPECT_GT(j["slabs_drawn"].get<double>(), 0.0);
+  EXPECT_LE(j["slabs_drawn"].get<double>(), j["slabs"].get<double>());
   EXPECT_GE(j["slab_entries"].get<double>(), j["splats_drawn"].get<double>());
   EXPECT_GT(j["peak_rss"].get<double>(), 1e6);
   EXPECT_TRUE(j["gpu_partition"].is_boolean()) << r.out;

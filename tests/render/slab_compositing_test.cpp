@@ -321,6 +321,36 @@ TEST_F(SlabCompositing, BackToFrontEqualsFrontToBackAndTerminationStopsEarly) {
   EXPECT_LE(worst, 3);
 }
 
+// The opaque box cropped to its middle, head-on: the picture's border shows nothing, so early
+// termination must test the crop box's pixels, not the whole volume's (which never turn
+// opaque there); the picture is the one drawn without termination.
+TEST_F(SlabCompositing, EarlyTerminationStopsACroppedVolume) {
+  const Volume box = opaqueBox();
+  renderer()->setVolume(box);
+  renderer()->setTransferFunction(whiteTf(0.9, 1.0));
+  const Camera cam = boxFrontCamera();
+  RenderSettings opaque = rasterSettings();
+  opaque.clip.cropEnabled = true;
+  opaque.clip.cropMin = glm::dvec3(9.0, 9.0, 0.0);
+  opaque.clip.cropMax = glm::dvec3(14.0, 14.0, 23.0);
+  opaque.terminationOpacity = 1.0;
+  renderer()->setLaggedTermination(false);
+  renderer()->render(cam, opaque, 32, 32);
+  const Image8 full = renderer()->readImage();
+  const size_t allSlabs = renderer()->stats().slabsDrawn;
+  opaque.terminationOpacity = 0.99;
+  renderer()->render(cam, opaque, 32, 32);
+  const Image8 early = renderer()->readImage();
+  EXPECT_EQ(allSlabs, renderer()->stats().slabs);
+  EXPECT_LT(renderer()->stats().slabsDrawn, allSlabs / 2);
+  int worst = 0;
+  EXPECT_LT(meanAbsDiff(full, early, &worst), 1.0);
+  EXPECT_LE(worst, 3);
+  // The crop leaves the border black and the middle lit.
+  EXPECT_EQ(full.pixels[0], 0);
+  EXPECT_GT(full.pixels[(16 * 32 + 16) * 3], 150);
+}
+
 // Primitives the GL's vertex stage put out while `draw` ran: draws that conditional rendering
 // skipped put out none.
 GLuint primitivesGenerated(const std::function<void()>& draw) {
