@@ -183,7 +183,7 @@ void compositeSlices(const CompositeInput& input, int threads, CompositorBuffers
     for (size_t u = 0; u < rowLinks; ++u) buffers.links[r * rowLinks + u] = int32_t(u);
   CompositeInput in = input;
   in.links = buffers.links.data();
-  if (f.perspective && input.settings.opacityCorrection) {
+  if (f.perspective && input.settings.opacityCorrection && input.tableLog) {
     // Each ray's ratio once a frame, not once a sample.
     buffers.rayRatios.resize(size_t(out.width) * out.height);
     for (int v = 0; v < out.height; ++v)

@@ -36,7 +36,9 @@ struct CompositeInput {
   const glm::vec4* pointTable = nullptr;  // standard: tableSize entries, corrected for the view
   const glm::vec4* pairTable = nullptr;   // pre-integrated: (2 tableSize - 1) x tableSize,
                                           // diagonal-major (see lookupPair), corrected
-  const float* tableLog = nullptr;        // ln(1 - alpha) of each entry of the table in use
+  // ln(1 - alpha) of each entry of the table in use: perspective views correct by it (none:
+  // uncorrected).
+  const float* tableLog = nullptr;
   int tableSize = 256;
   ShearWarpSettings settings;
   const ShearWarpClip* clip = nullptr;  // crop box and planes; null or inactive: none

@@ -99,7 +99,8 @@ void compositeStandard(const CompositeInput& in, IntermediateImage& out, int thr
           glm::vec4& p = pixels[u];
           const float s = std::min(row.sample(row0, row1, u, (*run)[0], (*run)[1]), top);
           const int e = int(s + 0.5f);
-          under(p, corrected(in.pointTable[e], in.tableLog[e], in, u, v, out.width));
+          under(p, corrected(in.pointTable[e], in.rayRatios ? in.tableLog[e] : 0.0f, in, u, v,
+                             out.width));
           if (p.a >= threshold) links.terminate(u);
         }
       }
@@ -142,11 +143,12 @@ void compositeSlabs(const CompositeInput& in, IntermediateImage& out, int thread
           s.value = sb;
           s.slice = k2;
           glm::vec4& p = pixels[u];
-          const float front = std::min(sf, top);
-          const glm::vec4 pair = lookupPair<kBilinear>(in.pairTable, n, front, sb);
+          const float ahead = std::min(sf, top);
+          const glm::vec4 pair = lookupPair<kBilinear>(in.pairTable, n, ahead, sb);
           // Bilinear lookups blend entries: the blend's own ln(1 - alpha).
-          const float logT = kBilinear ? (pair.a < 1.0f ? std::log1p(-pair.a) : -INFINITY)
-                                       : in.tableLog[nearestPair(n, front, sb)];
+          const float logT = !in.rayRatios ? 0.0f
+                             : kBilinear   ? (pair.a < 1.0f ? std::log1p(-pair.a) : -INFINITY)
+                                           : in.tableLog[nearestPair(n, ahead, sb)];
           under(p, corrected(pair, logT, in, u, v, out.width));
           if (p.a >= threshold) links.terminate(u);
         }
