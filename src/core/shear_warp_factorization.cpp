@@ -126,10 +126,13 @@ bool factorizePerspective(const Camera& camera, const std::array<int64_t, 3>& di
   // (c ahead d.x / d.z + tI, c ahead d.y / d.z + tJ) for every slice, with scale(k) = c /
   // |k - eye.z|. c: the picture's pixels per voxel along the view axis (a voxel across at
   // distance t is focal / t pixels; t = |k - eye.z| spacing_p / |dir_p|; by the wider voxel
-  // side, so that both axes are at least as fine as the picture), and at least one intermediate
-  // pixel a voxel on the front slice, as Lacroute's.
+  // side, so that both axes are at least as fine as the picture), but no more than
+  // kMaxIntermediatePerVoxel intermediate pixels a voxel on the focal point's slice (the warp
+  // magnifies the rest), and at least one a voxel on the front slice, as Lacroute's.
   const double across = std::max(spacing[f.axisI], spacing[f.axisJ]);
-  const double c = std::max(proj.focalPixels * std::abs(dir[f.principal]) * across / f.sliceSpacing,
+  const double picture = proj.focalPixels * std::abs(dir[f.principal]) * across / f.sliceSpacing;
+  const double focal = std::abs(toSlice(f, camera.focalPoint, origin, spacing).z - f.eye.z);
+  const double c = std::max(std::min(picture, kMaxIntermediatePerVoxel * std::max(focal, 1.0)),
                             std::abs(first - f.eye.z));
   f.referenceDistance = c;
   // The intermediate image: where the slices' projections and the picture's rays meet.

@@ -22,7 +22,8 @@ namespace ewa {
 // (Lacroute's thesis, section 3.3): slice k is also scaled towards the eye's foot on it by
 // scale(k) = referenceDistance / |k - eye.z|, so that every intermediate pixel is one ray
 // through the eye, and the warp is projective. referenceDistance makes an intermediate pixel
-// about a pixel of the picture along the view axis (and at least a voxel on the front slice),
+// about a pixel of the picture along the view axis (at most kMaxIntermediatePerVoxel a voxel on
+// the focal point's slice, at least one a voxel on the front slice),
 // and the intermediate image covers only where the slices and the picture's rays meet, so an
 // eye inside the volume gets the picture's resolution, not one pixel a voxel of a slice a
 // voxel away. Slices nearer the eye than one voxel along the principal axis, or behind it, are
@@ -61,6 +62,13 @@ struct ShearWarpFactorization {
   // Perspective: d'/d along the ray through intermediate pixel (u, v) (the same for every slice).
   double rayRatio(double u, double v) const;
 };
+
+// Perspective views: intermediate pixels a voxel at most on the focal point's slice. A
+// picture finer than that is magnified by the warp: the default volume in the default window
+// (7.7 pixels a voxel there) composited in a quarter of the picture's time against an
+// intermediate image as fine as the picture, at the same RMSE against EWA (0.0010); the engine
+// close up (under 2 there) is unchanged, at 1 its RMSE rises from 0.0077 to 0.0132.
+constexpr double kMaxIntermediatePerVoxel = 2.0;
 
 // Intermediate images of perspective views larger than this many pixels are drawn as the
 // parallel view instead (an eye very near the volume's side).

@@ -25,7 +25,7 @@ Camera perspectiveCamera(const glm::dvec3& position, const glm::dvec3& focal) {
 
 // Voxels of the drawn slices land, through the warp, where the camera projects them; the ratio
 // of each ray is its world length between slices over the slice spacing; the intermediate image
-// has about the picture's resolution.
+// has about the picture's resolution, up to kMaxIntermediatePerVoxel pixels a voxel.
 TEST(ShearWarpPerspective, WarpOfScaledSlicesIsTheCameraProjection) {
   const std::array<int64_t, 3> dims{20, 30, 12};
   const glm::dvec3 spacing(1.0, 0.5, 2.0), origin(-3.0, 4.0, 1.0);
@@ -67,12 +67,19 @@ TEST(ShearWarpPerspective, WarpOfScaledSlicesIsTheCameraProjection) {
       EXPECT_NEAR(f.rayRatio(uv.x, uv.y),
                   glm::length(world - cam.position) / (slices * f.sliceSpacing), 1e-9);
     }
-    // At least a voxel an intermediate pixel on the front slice, and at the middle of the
-    // picture about a pixel of it (more where the slices are seen obliquely).
+    // At least a voxel an intermediate pixel on the front slice; this picture is finer than
+    // kMaxIntermediatePerVoxel pixels a voxel at the focal point, which its slice gets.
     EXPECT_GE(f.scale(f.sliceAt(0)), 1.0 - 1e-12);
-    const glm::dvec3 h0 = f.inverseWarp * glm::dvec3(proj.principal, 1.0);
+    glm::dvec3 focal = (cam.focalPoint - origin) / spacing;
+    focal = glm::dvec3(focal[f.axisI], focal[f.axisJ], focal[f.principal]);
+    EXPECT_NEAR(f.referenceDistance / std::abs(focal.z - f.eye.z), kMaxIntermediatePerVoxel, 1e-9);
+    // A picture a tenth as wide: an intermediate pixel at the middle about a pixel of it (more
+    // where the slices are seen obliquely, or the front slice asks for more).
+    const ShearWarpFactorization small = factorizeView(cam, dims, spacing, origin, 30, 20);
+    const glm::dvec2 middle = cam.projection(30, 20).principal;
+    const glm::dvec3 h0 = small.inverseWarp * glm::dvec3(middle, 1.0);
     for (const glm::dvec2 step : {glm::dvec2(1, 0), glm::dvec2(0, 1)}) {
-      const glm::dvec3 h1 = f.inverseWarp * glm::dvec3(proj.principal + step, 1.0);
+      const glm::dvec3 h1 = small.inverseWarp * glm::dvec3(middle + step, 1.0);
       const double moved = glm::length(glm::dvec2(h1) / h1.z - glm::dvec2(h0) / h0.z);
       EXPECT_GE(moved, 0.99);
       EXPECT_LE(moved, 6.0);  // finer across the narrower voxel side (0.5 against 1), obliquely
