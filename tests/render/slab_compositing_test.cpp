@@ -93,6 +93,31 @@ double meanAbsDiff(const Image8& a, const Image8& b, int* worst) {
   return sum / double(a.pixels.size());
 }
 
+// The opaque box head-on under `settings` (slabs drawn and counted: rasterized), with and
+// without early termination (waiting for each answer, so the CPU counts the slabs): the first
+// stops after under half the slabs with the same picture, within 3 levels. Returns the picture
+// drawn without it.
+Image8 expectTerminationStopsTheOpaqueBox(SplatRenderer& r, RenderSettings settings) {
+  const Volume box = opaqueBox();
+  r.setVolume(box);
+  r.setTransferFunction(whiteTf(0.9, 1.0));
+  const Camera cam = boxFrontCamera();
+  settings.terminationOpacity = 1.0;
+  r.setLaggedTermination(false);
+  r.render(cam, settings, 32, 32);
+  const Image8 full = r.readImage();
+  const size_t allSlabs = r.stats().slabsDrawn;
+  settings.terminationOpacity = 0.99;
+  r.render(cam, settings, 32, 32);
+  const Image8 early = r.readImage();
+  EXPECT_EQ(allSlabs, r.stats().slabs);
+  EXPECT_LT(r.stats().slabsDrawn, allSlabs / 2);
+  int worst = 0;
+  EXPECT_LT(meanAbsDiff(full, early, &worst), 1.0);
+  EXPECT_LE(worst, 3);
+  return full;
+}
+
 TEST_F(SlabCompositing, ShaderSlabShareEqualsCppErfSplit) {
   const Volume vol = makeVolume(5, 5, 5, {1.0, 0.5, 2.0},
                                 [](int i, int j, int k) { return i == 2 && j == 2 && k == 2; });
@@ -302,50 +327,18 @@ TEST_F(SlabCompositing, BackToFrontEqualsFrontToBackAndTerminationStopsEarly) {
   EXPECT_LE(worst, 1);
 
   // An opaque box filling the view, head-on: the picture is opaque after a few slabs.
-  const Volume box = opaqueBox();
-  renderer()->setVolume(box);
-  renderer()->setTransferFunction(whiteTf(0.9, 1.0));
-  const Camera cam = boxFrontCamera();
-  RenderSettings opaque = rasterSettings();  // slabs drawn and counted
-  opaque.terminationOpacity = 1.0;
-  renderer()->setLaggedTermination(false);  // slabs counted on the CPU: wait for each answer
-  renderer()->render(cam, opaque, 32, 32);
-  const Image8 full = renderer()->readImage();
-  const size_t allSlabs = renderer()->stats().slabsDrawn;
-  opaque.terminationOpacity = 0.99;
-  renderer()->render(cam, opaque, 32, 32);
-  const Image8 early = renderer()->readImage();
-  EXPECT_EQ(allSlabs, renderer()->stats().slabs);
-  EXPECT_LT(renderer()->stats().slabsDrawn, allSlabs / 2);
-  EXPECT_LT(meanAbsDiff(full, early, &worst), 1.0);
-  EXPECT_LE(worst, 3);
+  expectTerminationStopsTheOpaqueBox(*renderer(), rasterSettings());
 }
 
 // The opaque box cropped to its middle, head-on: the picture's border shows nothing, so early
 // termination must test the crop box's pixels, not the whole volume's (which never turn
 // opaque there); the picture is the one drawn without termination.
 TEST_F(SlabCompositing, EarlyTerminationStopsACroppedVolume) {
-  const Volume box = opaqueBox();
-  renderer()->setVolume(box);
-  renderer()->setTransferFunction(whiteTf(0.9, 1.0));
-  const Camera cam = boxFrontCamera();
-  RenderSettings opaque = rasterSettings();
-  opaque.clip.cropEnabled = true;
-  opaque.clip.cropMin = glm::dvec3(9.0, 9.0, 0.0);
-  opaque.clip.cropMax = glm::dvec3(14.0, 14.0, 23.0);
-  opaque.terminationOpacity = 1.0;
-  renderer()->setLaggedTermination(false);
-  renderer()->render(cam, opaque, 32, 32);
-  const Image8 full = renderer()->readImage();
-  const size_t allSlabs = renderer()->stats().slabsDrawn;
-  opaque.terminationOpacity = 0.99;
-  renderer()->render(cam, opaque, 32, 32);
-  const Image8 early = renderer()->readImage();
-  EXPECT_EQ(allSlabs, renderer()->stats().slabs);
-  EXPECT_LT(renderer()->stats().slabsDrawn, allSlabs / 2);
-  int worst = 0;
-  EXPECT_LT(meanAbsDiff(full, early, &worst), 1.0);
-  EXPECT_LE(worst, 3);
+  RenderSettings cropped = rasterSettings();
+  cropped.clip.cropEnabled = true;
+  cropped.clip.cropMin = glm::dvec3(9.0, 9.0, 0.0);
+  cropped.clip.cropMax = glm::dvec3(14.0, 14.0, 23.0);
+  const Image8 full = expectTerminationStopsTheOpaqueBox(*renderer(), cropped);
   // The crop leaves the border black and the middle lit.
   EXPECT_EQ(full.pixels[0], 0);
   EXPECT_GT(full.pixels[(16 * 32 + 16) * 3], 150);
