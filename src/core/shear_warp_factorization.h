@@ -71,7 +71,7 @@ struct ShearWarpFactorization {
 constexpr double kMaxIntermediatePerVoxel = 2.0;
 
 // Intermediate images of perspective views larger than this many pixels are drawn as the
-// parallel view instead (a view wider than 90 degrees from near or inside the volume, some of whose
+// parallel view instead (a wide view from near or inside the volume, some of whose
 // rays run back along the principal axis).
 constexpr double kMaxPerspectiveIntermediatePixels = 64.0 * 1024 * 1024;
 

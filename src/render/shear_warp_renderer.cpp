@@ -55,8 +55,8 @@ void ShearWarpRenderer::render(const Camera& camera, const RenderSettings& setti
   stats_.gpuBytes = size_t(width) * size_t(height) * 4;  // the RGBA8 texture it allocated
   if (s.perspectiveAsParallel)
     stats_.note =
-        "shear-warp: this perspective view's intermediate image would be too large (a view wider "
-        "than 90 degrees from near or inside the volume); drawn as the orthographic view of the "
+        "shear-warp: this perspective view's intermediate image would be too large (a wide view "
+        "from near or inside the volume); drawn as the orthographic view of the "
         "same height at the focal point";
   stats_.renderMs = millisecondsSince(start);
 }

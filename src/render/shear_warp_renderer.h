@@ -9,7 +9,7 @@ namespace ewa {
 
 // Composites and warps on the CPU (core/shear_warp.h), then uploads the picture to an RGBA8
 // texture so the window can draw it like the splat renderer's. Parallel and perspective views;
-// a perspective view whose intermediate image would be too large (wider than 90 degrees from
+// a perspective view whose intermediate image would be too large (a wide view from
 // near or inside the volume) is drawn as the orthographic view of the same height at the focal
 // point, and stats().note says so.
 class ShearWarpRenderer : public Renderer {
