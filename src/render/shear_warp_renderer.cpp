@@ -49,6 +49,7 @@ void ShearWarpRenderer::render(const Camera& camera, const RenderSettings& setti
   const ShearWarpStats& s = core_.stats();
   stats_ = RenderStats{};
   stats_.slabs = size_t(s.slices);
+  stats_.slabsDrawn = stats_.slabs;  // no early stop of the slice loop (rays stop one by one)
   // In the panel's stages: its tables are the classification, slices and warp the compositing.
   stats_.classifyMs = s.tableMs;
   stats_.compositeMs = s.compositeMs + s.warpMs;

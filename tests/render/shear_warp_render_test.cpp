@@ -155,6 +155,7 @@ TEST_F(ShearWarpRender, OutputTextureHoldsThePicture) {
       }
   EXPECT_GT(lit, 100);
   EXPECT_GT(sw.stats().slabs, 0u);
+  EXPECT_EQ(sw.stats().slabsDrawn, sw.stats().slabs);  // --stats' slabs_drawn
 }
 
 }  // namespace
