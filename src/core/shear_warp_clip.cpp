@@ -22,31 +22,29 @@ ShearWarpClip::ShearWarpClip(const ClipRegion& region, const Volume& volume,
 
 void ShearWarpClip::keptCells(int k, int j, double fracI, double fracJ, int* first,
                               int* last) const {
-  const double y = j + fracJ;
-  for (const glm::dvec4& p : planes_) {
-    // p.x * (i + fracI) + c >= 0.
-    const double c = p.y * y + p.z * k + p.w;
-    if (p.x > 0.0) {
-      const double bound = std::ceil(-c / p.x - fracI);
-      if (bound > *first) *first = int(std::min(bound, double(INT_MAX / 2)));
-    } else if (p.x < 0.0) {
-      const double bound = std::floor(-c / p.x - fracI) + 1.0;
-      if (bound < *last) *last = int(std::max(bound, double(INT_MIN / 2)));
-    } else if (c < 0.0) {
-      *last = *first;
-    }
+  // Cell i samples x = i + fracI: the cells whose x lies in the kept span.
+  double lo = -1e300, hi = 1e300;
+  keptSpan(k, j + fracJ, &lo, &hi);
+  if (lo > hi) {
+    *last = *first;
+    return;
   }
+  const double from = std::ceil(lo - fracI), to = std::floor(hi - fracI) + 1.0;
+  if (from > *first) *first = int(std::min(from, double(INT_MAX / 2)));
+  if (to < *last) *last = int(std::max(to, double(INT_MIN / 2)));
 }
 
 void ShearWarpClip::keptSpan(int k, double y, double* lo, double* hi) const {
   for (const glm::dvec4& p : planes_) {
     const double c = p.y * y + p.z * k + p.w;  // p.x * x + c >= 0
-    if (p.x > 0.0)
+    if (p.x > 0.0) {
       *lo = std::max(*lo, -c / p.x);
-    else if (p.x < 0.0)
+    } else if (p.x < 0.0) {
       *hi = std::min(*hi, -c / p.x);
-    else if (c < 0.0)
-      *hi = *lo - 1.0;
+    } else if (c < 0.0) {  // the whole row is cut away
+      *lo = 1e300;
+      *hi = -1e300;
+    }
   }
 }
 

@@ -23,8 +23,9 @@ class ShearWarpClip {
   // [*first, *last) have their sample inside the region (empty: *first >= *last). Ranges
   // already narrower are only narrowed further.
   void keptCells(int k, int j, double fracI, double fracJ, int* first, int* last) const;
-  // Perspective views: the positions x of row y of slice k that the region keeps lie in
-  // [*lo, *hi] (empty: *lo > *hi); ranges already narrower are only narrowed further.
+  // The positions x of row y of slice k that the region keeps lie in [*lo, *hi] (empty:
+  // *lo > *hi); ranges already narrower are only narrowed further. keptCells and perspective
+  // views' rows both ask it.
   void keptSpan(int k, double y, double* lo, double* hi) const;
 
  private:
