@@ -134,15 +134,24 @@ const std::vector<glm::vec4>& ShearWarp::correctedTable(const ShearWarpFactoriza
   // Lacroute corrects through a table of alpha; correcting the classification table once per
   // view gives the same numbers for every sample at the cost of one pass over the table.
   correctTable(corrected_, ratio);
-  // ln(1 - alpha) of each entry: perspective views correct each ray's samples with one exp.
-  correctedLog_.resize(corrected_.size());
-  for (size_t e = 0; e < corrected_.size(); ++e)
-    correctedLog_[e] = corrected_[e].a < 1.0f ? std::log1p(-corrected_[e].a) : -INFINITY;
+  correctedLog_.clear();  // made again when a perspective view asks (correctedLog)
   correctedValid_ = true;
   correctedPre_ = s.preintegrated;
   correctedDistance_ = d;
   correctedRatio_ = ratio;
   return corrected_;
+}
+
+const std::vector<float>& ShearWarp::correctedLog() {
+  // ln(1 - alpha) of each entry: perspective views correct each ray's samples with one exp.
+  // Parallel views, whose table the view's ratio corrects (every frame while turning), never
+  // read it; a perspective view's table is corrected for 1, so this is made once a table.
+  if (correctedLog_.size() != corrected_.size()) {
+    correctedLog_.resize(corrected_.size());
+    for (size_t e = 0; e < corrected_.size(); ++e)
+      correctedLog_[e] = corrected_[e].a < 1.0f ? std::log1p(-corrected_[e].a) : -INFINITY;
+  }
+  return correctedLog_;
 }
 
 void ShearWarp::render(const Camera& camera, const ShearWarpSettings& settings, int width,
@@ -173,7 +182,7 @@ void ShearWarp::render(const Camera& camera, const ShearWarpSettings& settings, 
   input.clip = &clipCells;
   const std::vector<glm::vec4>& table = correctedTable(view, settings);
   (settings.preintegrated ? input.pairTable : input.pointTable) = table.data();
-  input.tableLog = correctedLog_.data();
+  if (view.perspective && settings.opacityCorrection) input.tableLog = correctedLog().data();
   input.slices = data_.slices(view.principal).data();
   input.runs = &data_.runs(view.principal, settings.preintegrated);
   // Without run-length encoding every cell is one run (for tests: the picture must not change).

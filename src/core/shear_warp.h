@@ -58,6 +58,8 @@ class ShearWarp {
   void prepare(int tableSize);
   const std::vector<glm::vec4>& correctedTable(const ShearWarpFactorization& view,
                                                const ShearWarpSettings& settings);
+  // ln(1 - alpha) of each entry of the last corrected table (made on first use after it).
+  const std::vector<float>& correctedLog();
 
   const Volume* volume_ = nullptr;
   TransferFunction tf_;
