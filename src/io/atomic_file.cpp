@@ -27,6 +27,36 @@ mode_t currentUmask() {
   return mask;
 }
 
+// Writes `bytes` straight into a FIFO or character device (`-o /dev/null`, `/dev/stdout` on a
+// pipe): renaming a file over one would replace the device node, not feed it.
+void writeStraightInto(const std::string& path, std::string_view bytes) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) fail(path, std::strerror(errno));
+  size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const std::string why = n < 0 ? std::strerror(errno) : "no space written";
+      ::close(fd);
+      fail(path, why);
+    }
+    done += static_cast<size_t>(n);
+  }
+  if (::close(fd) != 0) fail(path, std::strerror(errno));
+}
+
+// What stands at `path` (links followed): nothing or a regular file is replaced by rename.
+enum class Target { Replace, Stream, Folder, Other };
+
+Target targetKind(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return Target::Replace;
+  if (S_ISDIR(st.st_mode)) return Target::Folder;
+  if (S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode)) return Target::Stream;
+  return Target::Other;  // block devices, sockets
+}
+
 }  // namespace
 
 void writeFileAtomically(const std::string& path, std::string_view bytes, bool makeParents) {
@@ -37,8 +67,16 @@ void writeFileAtomically(const std::string& path, std::string_view bytes, bool m
     if (!parent.empty()) std::filesystem::create_directories(parent, ec);
     if (ec) throw std::runtime_error(path + ": cannot create folder: " + ec.message());
   }
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) fail(path, "is a directory");
+  switch (targetKind(path)) {
+    case Target::Folder:
+      fail(path, "is a directory");
+    case Target::Other:
+      fail(path, "not a regular file, FIFO or character device");
+    case Target::Stream:
+      return writeStraightInto(path, bytes);
+    case Target::Replace:
+      break;
+  }
   const std::filesystem::path target(path);
   const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
   std::string temp = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
@@ -71,6 +109,8 @@ void writeFileAtomically(const std::string& path, std::string_view bytes, bool m
 }
 
 std::string createTemporaryBeside(const std::string& path) {
+  // A stream (a video) is renamed into place, so only over a regular file or nothing.
+  if (targetKind(path) != Target::Replace) fail(path, "not a regular file");
   const std::filesystem::path target(path);
   const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
   std::string temp = (folder / ("." + target.filename().string() + ".XXXXXX")).string();

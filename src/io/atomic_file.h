@@ -9,14 +9,18 @@ namespace ewa {
 // Writes `bytes` to a new temporary file beside `path` (a unique name made by mkstemp, so no
 // fixed ".tmp" name can be raced or pre-planted as a link), flushes it to disk, then renames it
 // over `path`. On any failure the temporary file is removed and `path` is left as it was.
-// Refuses a `path` that is a directory. The new file gets mode 0644 less the process umask.
+// Refuses a `path` that is a directory, block device or socket; a FIFO or character device
+// (`/dev/null`, `/dev/stdout` on a pipe or terminal) gets `bytes` written straight into it.
+// The new file gets mode 0666 less the process umask.
 // Throws std::runtime_error("<path>: cannot write: <reason>").
 // Creates missing parent folders when `makeParents`.
 void writeFileAtomically(const std::string& path, std::string_view bytes, bool makeParents = false);
 
 // For writers that stream a file (videos): creates an empty file with a unique name beside
 // `path`, with the mode writeFileAtomically gives, and returns its name; the caller renames it
-// over `path` when complete or removes it. Throws std::runtime_error("<path>: cannot write: ...").
+// over `path` when complete or removes it. Refuses a `path` that exists and is not a regular
+// file (renaming over a device would replace it). Throws std::runtime_error("<path>: cannot write:
+// ...").
 std::string createTemporaryBeside(const std::string& path);
 
 // True when `a` and `b` name the same existing file (same device and inode), so a writer can

@@ -2,10 +2,12 @@
 // left, no links followed, inputs never replaced.
 #include "io/atomic_file.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -82,6 +84,36 @@ TEST(AtomicFile, ALinkAtTheTargetIsReplacedNotFollowed) {
   EXPECT_EQ(slurp(victim), "keep me");
   EXPECT_FALSE(fs::is_symlink(dir / "out.txt"));
   EXPECT_EQ(slurp(dir / "out.txt"), "new");
+  fs::remove_all(dir);
+}
+
+// `-o /dev/null` once replaced /dev/null with a regular file (run as root, the rename
+// succeeded): a FIFO or character device is written into, never renamed over.
+TEST(AtomicFile, AFifoIsWrittenIntoNotReplaced) {
+  const fs::path dir = freshDir("fifo");
+  const fs::path fifo = dir / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // Opened for reading first (without blocking), so the writer's open does not wait; the
+  // bytes wait in the pipe's buffer.
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(reader, 0);
+  writeFileAtomically(fifo.string(), "through the pipe");
+  char got[64] = {};
+  const ssize_t n = ::read(reader, got, sizeof got);
+  ::close(reader);
+  EXPECT_EQ(std::string(got, size_t(std::max<ssize_t>(n, 0))), "through the pipe");
+  struct stat st {};
+  ASSERT_EQ(::stat(fifo.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+  EXPECT_EQ(entries(dir), 1u);  // no temporary file beside it
+  // A video is renamed into place, so it refuses one.
+  try {
+    createTemporaryBeside(fifo.string());
+    ADD_FAILURE() << "a FIFO taken as a video's target";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(entries(dir), 1u);
   fs::remove_all(dir);
 }
 
