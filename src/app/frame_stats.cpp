@@ -3,6 +3,7 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "app/heap_tuning.h"
@@ -19,12 +20,10 @@ double gpuBytesPerSplat(const RenderStats& s) {
   return s.gpuBytes > 0 && s.splatsTotal > 0 ? double(s.gpuBytes) / double(s.splatsTotal) : 0.0;
 }
 
-std::string frameStatsJson(const RenderStats& s, const std::string& renderer, int width,
-                           int height) {
-  nlohmann::ordered_json j;
-  j["renderer"] = renderer;
-  j["width"] = width;
-  j["height"] = height;
+namespace {
+
+// The names of one renderer's frame (every object of --stats holds them).
+void putFrame(const RenderStats& s, nlohmann::ordered_json& j) {
   j["render_ms"] = s.renderMs;
   j["classify_ms"] = s.classifyMs;
   j["partition_ms"] = s.partitionMs;
@@ -43,9 +42,62 @@ std::string frameStatsJson(const RenderStats& s, const std::string& renderer, in
   j["gpu_bytes"] = s.gpuBytes;
   const double perSplat = gpuBytesPerSplat(s);
   j["gpu_bytes_per_splat"] = perSplat > 0.0 ? nlohmann::ordered_json(perSplat) : nullptr;
+}
+
+RenderStats summed(const std::vector<RenderStats>& channels) {
+  RenderStats t;
+  for (const RenderStats& s : channels) {
+    t.splatsTotal += s.splatsTotal;
+    t.splatsDrawn += s.splatsDrawn;
+    t.slabs += s.slabs;
+    t.slabsDrawn += s.slabsDrawn;
+    t.slabsCoarse += s.slabsCoarse;
+    t.surfaceSplats += s.surfaceSplats;
+    t.slabEntries += s.slabEntries;
+    t.entriesCulled += s.entriesCulled;
+    t.quadPass |= s.quadPass;
+    t.gpuPartition |= s.gpuPartition;
+    t.tiles |= s.tiles;
+    if (!s.note.empty()) t.note += (t.note.empty() ? "" : "; ") + s.note;
+    t.slabPasses = std::max(t.slabPasses, s.slabPasses);
+    t.renderMs += s.renderMs;
+    t.classifyMs += s.classifyMs;
+    t.partitionMs += s.partitionMs;
+    t.splatMs += s.splatMs;
+    t.compositeMs += s.compositeMs;
+    t.gpuBytes += s.gpuBytes;
+  }
+  return t;
+}
+
+}  // namespace
+
+std::string frameStatsJson(const RenderStats& s, const std::string& renderer, int width,
+                           int height) {
+  return frameStatsJson(std::vector<RenderStats>{s}, renderer, width, height);
+}
+
+std::string frameStatsJson(const std::vector<RenderStats>& channels, const std::string& renderer,
+                           int width, int height) {
+  const RenderStats s = summed(channels);
+  nlohmann::ordered_json j;
+  j["renderer"] = renderer;
+  j["width"] = width;
+  j["height"] = height;
+  putFrame(s, j);
   j["peak_rss"] = peakRssBytes();
   j["huge_pages"] = hugePagesInUse();
   if (!s.note.empty()) j["note"] = s.note;
+  if (channels.size() > 1) {
+    nlohmann::ordered_json each = nlohmann::ordered_json::array();
+    for (const RenderStats& c : channels) {
+      nlohmann::ordered_json one;
+      putFrame(c, one);
+      if (!c.note.empty()) one["note"] = c.note;
+      each.push_back(one);
+    }
+    j["channels"] = each;
+  }
   return j.dump();
 }
 

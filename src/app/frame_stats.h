@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "render/renderer.h"
 
@@ -21,5 +22,11 @@ double gpuBytesPerSplat(const RenderStats& stats);
 // the renderer does not count its GPU memory or draws no splats.
 std::string frameStatsJson(const RenderStats& stats, const std::string& renderer, int width,
                            int height);
+// One frame of overlaid channels, each drawn by its own renderer: one channel's as above; more
+// than one: the channels' sums (times, counts, bytes; a flag where any has it, the most slab
+// passes, the notes joined) in the same names, and "channels", an array of each channel's own
+// statistics under the same names (without renderer, width, height, peak_rss, huge_pages).
+std::string frameStatsJson(const std::vector<RenderStats>& channels, const std::string& renderer,
+                           int width, int height);
 
 }  // namespace ewa

@@ -23,14 +23,16 @@ void renderHeadless(const Scene& scene, const Options& o) {
   refuseToOverwriteInputs(o.output, o);
   HeadlessSession session(o.backend, o.shaderDir);
   session.setAxes(o.axes);
-  writePng(o.output, renderLayers(session, sceneLayers(scene), initialCamera(scene.volume, o),
-                                  o.render, o.width, o.height));
+  const std::vector<RenderLayer> layers = sceneLayers(scene);
+  writePng(o.output, renderLayers(session, layers, initialCamera(scene.volume, o), o.render,
+                                  o.width, o.height));
   if (const std::string note = session.takeNote(); !note.empty())
     std::cerr << "ewaview: " << note << std::endl;
-  if (o.stats)
-    std::cout << frameStatsJson(session.stats(), rendererKindName(o.render.renderer), o.width,
-                                o.height)
-              << std::endl;
+  if (!o.stats) return;
+  std::vector<RenderStats> channels;  // a channel's slot is its layer's place (renderLayers)
+  for (size_t i = 0; i < layers.size(); ++i) channels.push_back(session.stats(i));
+  std::cout << frameStatsJson(channels, rendererKindName(o.render.renderer), o.width, o.height)
+            << std::endl;
 }
 
 }  // namespace ewa

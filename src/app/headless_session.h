@@ -39,9 +39,10 @@ class HeadlessSession {
   void drawAxes(Image8& image, const Camera& camera, const Volume& volume) const;
   // Whether render() draws the orientation axes (--axis).
   void setAxes(bool on) { axes_ = on; }
-  // The statistics of the last render by slot 0 (empty before the first).
-  RenderStats stats() const {
-    return !slots_.empty() && slots_[0].renderer ? slots_[0].renderer->stats() : RenderStats{};
+  // The statistics of the last render by `slot` (empty before the first).
+  RenderStats stats(size_t slot = 0) const {
+    return slot < slots_.size() && slots_[slot].renderer ? slots_[slot].renderer->stats()
+                                                         : RenderStats{};
   }
   // The renderer's RenderStats::note (why a frame was not drawn as asked) when a render has
   // brought a new one since the last call, else empty: each note said once while it holds.

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "cli_run.h"
@@ -153,6 +154,44 @@ TEST(ChannelOverlay, AListOverlaysThoseChannels) {
   EXPECT_EQ(missing.code, 1);
   EXPECT_EQ(lineCount(missing.err), 1) << missing.err;
   EXPECT_NE(missing.err.find(file), std::string::npos) << missing.err;
+}
+
+// --stats of an overlay: each channel's frame under "channels", as it reports drawn alone, and
+// their sums in the usual names (before, the first channel's frame alone).
+TEST(ChannelOverlay, StatsReportEveryChannel) {
+  using nlohmann::json;
+  const std::string dir = testOutputDir() + "/overlay_stats";
+  const std::string file = twoBalls(dir);
+  std::ofstream(dir + "/balls.tf.json")
+      << R"({"opacity": [[0, 0], [100, 0], [200, 0.6]], "color": [[0, 0.9, 0.2, 0.1]]})";
+  // Channel 1 clear (no splats), so the two channels' figures cannot be mistaken.
+  std::ofstream(dir + "/balls.c1.tf.json")
+      << R"({"opacity": [[0, 0], [200, 0]], "color": [[0, 0.1, 0.7, 0.8]]})";
+  const std::string args = " --resolution 48,40 --stats -o " + dir + "/x.png";
+  json alone[2];
+  for (int c : {0, 1}) {
+    const CliRun r = ewaview(file + " --channel " + std::to_string(c) + args);
+    ASSERT_EQ(r.code, 0) << r.err;
+    alone[c] = json::parse(r.out);
+  }
+  const CliRun r = ewaview(file + " --channel all" + args);
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(lineCount(r.out), 1) << r.out;
+  const json all = json::parse(r.out);
+  ASSERT_TRUE(all.contains("channels")) << r.out;
+  ASSERT_EQ(all["channels"].size(), 2u);
+  for (int c : {0, 1})
+    for (const char* key : {"splats", "splats_drawn", "slabs", "slab_entries"})
+      EXPECT_EQ(all["channels"][c][key], alone[c][key]) << key << " of channel " << c;
+  EXPECT_GT(alone[0]["splats"].get<double>(), 100.0);
+  EXPECT_EQ(alone[1]["splats"].get<double>(), 0.0);
+  EXPECT_EQ(all["splats"].get<double>(),
+            alone[0]["splats"].get<double>() + alone[1]["splats"].get<double>());
+  EXPECT_NEAR(
+      all["render_ms"].get<double>(),
+      all["channels"][0]["render_ms"].get<double>() + all["channels"][1]["render_ms"].get<double>(),
+      1e-6);
+  EXPECT_FALSE(alone[0].contains("channels"));  // one channel: as before
 }
 
 TEST(ChannelOverlay, WhatItDoesNotGoWithIsAUsageError) {
