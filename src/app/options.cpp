@@ -223,6 +223,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                  "Shear-warp buffer slices: slice (two slice-sized, default) or image (one "
                  "intermediate-image-sized)")
       ->check(CLI::IsMember({"slice", "image"}));
+  app.add_option("--intermediate-scale", o->render.shearWarp.intermediateScale,
+                 "Shear-warp: at most this many intermediate-image pixels a voxel where the "
+                 "picture is finer, 1 (Lacroute's one a voxel) to 4 (default 2)")
+      ->check(CLI::Range(1.0, 4.0));
   app.add_option("--tf", o->tfFile, "Transfer function JSON file");
   std::vector<std::string> presetKeys;
   for (const TransferFunctionPresetInfo& p : transferFunctionPresets()) presetKeys.push_back(p.key);

@@ -36,6 +36,7 @@ std::vector<Variant> variants(int threads) {
     s.opacityCorrection = oc;
     s.buffers = b;
     s.threads = threads;
+    s.intermediateScale = 1.0;  // the paper's one intermediate pixel a voxel
     v.push_back({name, s});
   };
   const auto N = TableLookup::Nearest, B = TableLookup::Bilinear;

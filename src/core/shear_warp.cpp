@@ -164,7 +164,7 @@ void ShearWarp::render(const Camera& camera, const ShearWarpSettings& settings, 
   // Shear-warp works in voxel space: the volume's own frame under the rigidly moved camera.
   const ShearWarpFactorization view =
       factorizeView(cameraInVolumeFrame(camera, *volume_), volume_->dims(), volume_->spacing(),
-                    volume_->origin(), width, height);
+                    volume_->origin(), width, height, settings.intermediateScale);
   stats_.principal = view.principal;
   stats_.sampleRatio = view.sampleRatio;
   stats_.perspectiveAsParallel = view.perspectiveAsParallel;

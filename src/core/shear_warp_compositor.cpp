@@ -64,8 +64,9 @@ void compositeStandard(const CompositeInput& in, IntermediateImage& out, int thr
       const OpaqueLinks links{in.links + size_t(v) * (out.width + 1)};
       const CellRange kept = keptCells(in, k, j, place);
       for (auto run = in.runs->begin(k, j); run != in.runs->end(k, j); ++run) {
-        const int end = std::min((*run)[1], kept.last) + place.shiftI;
-        const int start = std::max((*run)[0], kept.first) + place.shiftI;
+        // Within the image too: a close-up's intermediate image holds only the picture's rays.
+        const int end = std::min(std::min((*run)[1], kept.last) + place.shiftI, out.width);
+        const int start = std::max(std::max((*run)[0], kept.first) + place.shiftI, 0);
         if (start >= end) continue;
         for (int u = links.find(start); u < end; u = links.find(u + 1)) {
           const int i = u - place.shiftI;
@@ -112,8 +113,8 @@ void compositeSlabs(const CompositeInput& in, IntermediateImage& out, int thread
       // Clipped by the front sample's position: a slab is kept or dropped whole.
       const CellRange kept = keptCells(in, k, j, front);
       for (auto run = in.runs->begin(slab, j); run != in.runs->end(slab, j); ++run) {
-        const int end = std::min((*run)[1], kept.last) + front.shiftI;
-        const int start = std::max((*run)[0], kept.first) + front.shiftI;
+        const int end = std::min(std::min((*run)[1], kept.last) + front.shiftI, out.width);
+        const int start = std::max(std::max((*run)[0], kept.first) + front.shiftI, 0);
         if (start >= end) continue;
         for (int u = links.find(start); u < end; u = links.find(u + 1)) {
           const int i = u - front.shiftI;
@@ -137,7 +138,7 @@ void compositeSlabs(const CompositeInput& in, IntermediateImage& out, int thread
 void compositeRows(const CompositeInput& in, IntermediateImage& out, int thread, int threads,
                    CompositorBuffers& buffers) {
   const ShearWarpSettings& s = in.settings;
-  if (in.view->perspective) return compositePerspective(in, out, thread, threads, buffers);
+  if (in.view->resampled()) return compositePerspective(in, out, thread, threads, buffers);
   if (!s.preintegrated) return compositeStandard(in, out, thread, threads);
   const bool bilinear = s.lookup == TableLookup::Bilinear;
   const bool image = s.buffers == BufferSlices::Image;
@@ -152,8 +153,8 @@ void prepareBuffers(const CompositeInput& in, int threads, const IntermediateIma
                     CompositorBuffers& buffers) {
   if (!in.settings.preintegrated) return;
   const BufferedSample empty;
-  // Perspective views buffer by intermediate pixel: a ray's back sample is the next slab's front.
-  if (in.settings.buffers == BufferSlices::Image || in.view->perspective) {
+  // Resampled views buffer by intermediate pixel: a ray's back sample is the next slab's front.
+  if (in.settings.buffers == BufferSlices::Image || in.view->resampled()) {
     const size_t size = size_t(out.width) * out.height;
     if (buffers.image.size() < size) buffers.image.resize(size);
     std::fill(buffers.image.begin(), buffers.image.begin() + size, empty);

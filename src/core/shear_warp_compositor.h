@@ -49,7 +49,7 @@ struct CompositeInput {
 // Composites every slice (standard: bilinear sample in the slice, nearest point-table entry) or
 // every slab between adjacent slices (pre-integrated: front and back samples, pair-table
 // lookup) front to back into `out`, which is reset to the view's intermediate size (perspective
-// views: compositePerspective, shear_warp_perspective.h). Intermediate
+// and magnified views: compositePerspective, shear_warp_perspective.h). Intermediate
 // rows are shared out among `threads` threads (row v to thread v mod threads).
 void compositeSlices(const CompositeInput& input, int threads, CompositorBuffers& buffers,
                      IntermediateImage& out);

@@ -48,50 +48,93 @@ void setInverse(ShearWarpFactorization& f) {
   f.inverseWarp = std::abs(det) > 1e-300 ? glm::inverse(f.warp) : glm::dmat3(0.0);
 }
 
+// Narrows a parallel view's intermediate image to the picture's rays (its corners', two pixels
+// wider), by whole pixels so that every slice keeps its bilinear weights: a close-up composites
+// what it shows, not the whole volume's shadow.
+void cropToPicture(int width, int height, ShearWarpFactorization& f) {
+  if (std::abs(glm::determinant(f.warp)) <= 1e-300) return;
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  for (double x : {0.0, double(width)})
+    for (double y : {0.0, double(height)}) {
+      const glm::dvec3 uv = f.inverseWarp * glm::dvec3(x, y, 1.0);
+      for (int axis = 0; axis < 2; ++axis) {
+        lo[axis] = std::min(lo[axis], uv[axis]);
+        hi[axis] = std::max(hi[axis], uv[axis]);
+      }
+    }
+  const double size[2] = {double(f.imageWidth), double(f.imageHeight)};
+  int first[2], end[2];
+  for (int axis = 0; axis < 2; ++axis) {
+    first[axis] = int(std::clamp(std::floor(lo[axis]) - 2.0, 0.0, size[axis]));
+    end[axis] = int(std::clamp(std::ceil(hi[axis]) + 2.0, 0.0, size[axis]));
+  }
+  if (first[0] >= end[0] || first[1] >= end[1]) {  // the volume lies outside the picture
+    f.sliceCount = 0;
+    f.imageWidth = f.imageHeight = 1;
+    return;
+  }
+  f.translateI -= first[0];
+  f.translateJ -= first[1];
+  f.imageWidth = end[0] - first[0];
+  f.imageHeight = end[1] - first[1];
+  // Intermediate pixel u now is u + first of the uncropped image.
+  f.warp = f.warp * glm::dmat3(glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.0, 1.0, 0.0),
+                               glm::dvec3(first[0], first[1], 1.0));
+  setInverse(f);
+}
+
 void factorizeParallel(const Camera& camera, const std::array<int64_t, 3>& dims,
                        const glm::dvec3& spacing, const glm::dvec3& origin, int width, int height,
-                       ShearWarpFactorization& f) {
+                       double maxPerVoxel, ShearWarpFactorization& f) {
   const glm::dvec3 dir = camera.direction();
   chooseAxes(dir / spacing, dims, spacing, f);
   const glm::dvec3 step = dir / spacing;
   const int p = f.principal;
   f.frontSlice = f.increasing ? 0 : f.depth - 1;
   f.sliceCount = f.depth;
+  const Projection proj = camera.projection(width, height);
+  // m intermediate pixels a voxel: the picture's pixels across the wider voxel side (so that
+  // both axes are at least as fine as the picture), from 1 up to maxPerVoxel.
+  const double across = std::max(spacing[f.axisI], spacing[f.axisJ]);
+  const double m = std::clamp(proj.pixelsPerUnit * across, 1.0, std::max(1.0, maxPerVoxel));
+  f.magnification = m;
   const double ri = step[f.axisI] / step[p];
   const double rj = step[f.axisJ] / step[p];
-  // Voxel (i, j, k) lies on the ray through (i - k ri, j - k rj) of slice 0; shift so that
-  // every offset is >= 0.
+  // Voxel (i, j, k) lies on the ray through (i - k ri, j - k rj) of slice 0, intermediate
+  // pixel m (i - k ri, j - k rj); shift so that every offset is >= 0.
   const double last = std::max(0, f.depth - 1);
-  f.shearI = -ri;
-  f.shearJ = -rj;
-  f.translateI = std::max(0.0, last * ri);
-  f.translateJ = std::max(0.0, last * rj);
+  f.shearI = -m * ri;
+  f.shearJ = -m * rj;
+  f.translateI = std::max(0.0, m * last * ri);
+  f.translateJ = std::max(0.0, m * last * rj);
   const double maxI = std::ceil(std::max(f.offsetI(0), f.offsetI(f.depth - 1)));
   const double maxJ = std::ceil(std::max(f.offsetJ(0), f.offsetJ(f.depth - 1)));
-  f.imageWidth = std::max(1, int(maxI) + std::max(1, f.width - 1));
-  f.imageHeight = std::max(1, int(maxJ) + std::max(1, f.height - 1));
+  // A magnified slice's last column lands on pixel ceil(m (width - 1)) + offset: one more.
+  const int edge = m > 1.0 ? 1 : 0;
+  f.imageWidth = std::max(1, int(maxI) + std::max(1, int(std::ceil(m * (f.width - 1)))) + edge);
+  f.imageHeight = std::max(1, int(maxJ) + std::max(1, int(std::ceil(m * (f.height - 1)))) + edge);
   f.sampleRatio = 1.0 / std::abs(dir[p]);
 
-  // Warp: intermediate (u, v) is voxel (u - tI, v - tJ) of slice 0; project it like the splat
-  // renderer does (orthographic, pixels per unit at the focal point).
-  const Projection proj = camera.projection(width, height);
+  // Warp: intermediate (u, v) is voxel ((u - tI) / m, (v - tJ) / m) of slice 0; project it
+  // like the splat renderer does (orthographic, pixels per unit at the focal point).
   const glm::dmat4 view = camera.viewMatrix();
   auto toPixel = [&](const glm::dvec3& world) {
     const glm::dvec3 q(view * glm::dvec4(world, 1.0));
     return proj.principal + glm::dvec2(q.x, q.y) * proj.pixelsPerUnit;
   };
-  const glm::dvec3 idx0 = toIndex(f, {-f.translateI, -f.translateJ, 0.0});
+  const glm::dvec3 idx0 = toIndex(f, {-f.translateI / m, -f.translateJ / m, 0.0});
   const glm::dvec2 p0 = toPixel(origin + idx0 * spacing);
-  const glm::dvec2 pu = toPixel(origin + (idx0 + toIndex(f, {1, 0, 0})) * spacing) - p0;
-  const glm::dvec2 pv = toPixel(origin + (idx0 + toIndex(f, {0, 1, 0})) * spacing) - p0;
+  const glm::dvec2 pu = toPixel(origin + (idx0 + toIndex(f, {1.0 / m, 0, 0})) * spacing) - p0;
+  const glm::dvec2 pv = toPixel(origin + (idx0 + toIndex(f, {0, 1.0 / m, 0})) * spacing) - p0;
   f.warp = glm::dmat3(glm::dvec3(pu, 0.0), glm::dvec3(pv, 0.0), glm::dvec3(p0, 1.0));
   setInverse(f);
+  cropToPicture(width, height, f);
 }
 
 // False when the intermediate image would be too large (the caller draws the parallel view).
 bool factorizePerspective(const Camera& camera, const std::array<int64_t, 3>& dims,
                           const glm::dvec3& spacing, const glm::dvec3& origin, int width,
-                          int height, ShearWarpFactorization& f) {
+                          int height, double maxPerVoxel, ShearWarpFactorization& f) {
   const glm::dvec3 dir = camera.direction();
   chooseAxes(dir / spacing, dims, spacing, f);
   f.perspective = true;
@@ -127,12 +170,13 @@ bool factorizePerspective(const Camera& camera, const std::array<int64_t, 3>& di
   // |k - eye.z|. c: the picture's pixels per voxel along the view axis (a voxel across at
   // distance t is focal / t pixels; t = |k - eye.z| spacing_p / |dir_p|; by the wider voxel
   // side, so that both axes are at least as fine as the picture), but no more than
-  // kMaxIntermediatePerVoxel intermediate pixels a voxel on the focal point's slice (the warp
-  // magnifies the rest), and at least one a voxel on the front slice, as Lacroute's.
+  // maxPerVoxel intermediate pixels a voxel on the focal point's slice (the warp
+  // magnifies the rest; kMaxIntermediatePerVoxel by default), and at least one a voxel on the
+  // front slice, as Lacroute's.
   const double across = std::max(spacing[f.axisI], spacing[f.axisJ]);
   const double picture = proj.focalPixels * std::abs(dir[f.principal]) * across / f.sliceSpacing;
   const double focal = std::abs(toSlice(f, camera.focalPoint, origin, spacing).z - f.eye.z);
-  const double c = std::max(std::min(picture, kMaxIntermediatePerVoxel * std::max(focal, 1.0)),
+  const double c = std::max(std::min(picture, std::max(1.0, maxPerVoxel) * std::max(focal, 1.0)),
                             std::abs(first - f.eye.z));
   f.referenceDistance = c;
   // The intermediate image: where the slices' projections and the picture's rays meet.
@@ -200,13 +244,14 @@ double ShearWarpFactorization::rayRatio(double u, double v) const {
 
 ShearWarpFactorization factorizeView(const Camera& camera, const std::array<int64_t, 3>& dims,
                                      const glm::dvec3& spacing, const glm::dvec3& origin, int width,
-                                     int height) {
+                                     int height, double maxPerVoxel) {
   ShearWarpFactorization f;
-  if (!camera.orthographic && factorizePerspective(camera, dims, spacing, origin, width, height, f))
+  if (!camera.orthographic &&
+      factorizePerspective(camera, dims, spacing, origin, width, height, maxPerVoxel, f))
     return f;
   f = ShearWarpFactorization{};
   f.perspectiveAsParallel = !camera.orthographic;
-  factorizeParallel(camera, dims, spacing, origin, width, height, f);
+  factorizeParallel(camera, dims, spacing, origin, width, height, maxPerVoxel, f);
   return f;
 }
 

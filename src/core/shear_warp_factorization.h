@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/camera.h"
+#include "core/shear_warp_settings.h"
 
 namespace ewa {
 
@@ -18,12 +19,15 @@ namespace ewa {
 // intermediate pixel centres sit at integer (u, v), and warp maps them to output pixels (x right,
 // y up, pixel centres at +0.5), the same pixel frame as the splat renderer.
 //
-// Parallel views: scale 1, offsets linear in k (a shear), an affine warp. Perspective views
+// Parallel views: one scale for every slice (`magnification`: the picture's pixels a voxel,
+// between 1, Lacroute's, and the caller's most intermediate pixels a voxel, so that a close-up
+// is not a magnified image of one sample a voxel), offsets linear in k (a shear), an affine
+// warp. Perspective views
 // (Lacroute's thesis, section 3.3): slice k is also scaled towards the eye's foot on it by
 // scale(k) = referenceDistance / |k - eye.z|, so that every intermediate pixel is one ray
 // through the eye, and the warp is projective. referenceDistance makes an intermediate pixel
-// about a pixel of the picture along the view axis (at most kMaxIntermediatePerVoxel a voxel on
-// the focal point's slice, at least one a voxel on the front slice),
+// about a pixel of the picture along the view axis (at most the caller's most intermediate
+// pixels a voxel on the focal point's slice, at least one a voxel on the front slice),
 // and the intermediate image covers only where the slices and the picture's rays meet, so an
 // eye inside the volume gets the picture's resolution, not one pixel a voxel of a slice a
 // voxel away. Slices nearer the eye than one voxel along the principal axis, or behind it, are
@@ -39,7 +43,8 @@ struct ShearWarpFactorization {
   double translateI = 0.0, translateJ = 0.0;
   int imageWidth = 1, imageHeight = 1;  // intermediate image size
   double sliceSpacing = 1.0;            // world units between slices (d)
-  double sampleRatio = 1.0;  // d'/d: parallel, distance between slices along a ray over d
+  double sampleRatio = 1.0;    // d'/d: parallel, distance between slices along a ray over d
+  double magnification = 1.0;  // parallel: intermediate pixels a voxel
   bool perspective = false;
   bool perspectiveAsParallel = false;  // a perspective camera drawn as the parallel view
   // Perspective: the eye in slice coordinates (voxels along axisI, axisJ, principal) and the
@@ -50,7 +55,12 @@ struct ShearWarpFactorization {
   glm::dmat3 warp{1.0};     // (u, v, 1) -> (x, y, 1), projective for perspective views
   glm::dmat3 inverseWarp{1.0};
 
-  double scale(int k) const { return perspective ? referenceDistance / std::abs(k - eye.z) : 1.0; }
+  double scale(int k) const {
+    return perspective ? referenceDistance / std::abs(k - eye.z) : magnification;
+  }
+  // Slices are resampled at every intermediate pixel (scaled: perspective or magnified views)
+  // rather than shifted with the same bilinear weights across a slice (Lacroute's parallel loop).
+  bool resampled() const { return perspective || magnification != 1.0; }
   double offsetI(int k) const {
     return perspective ? translateI - scale(k) * eye.x : shearI * k + translateI;
   }
@@ -63,13 +73,6 @@ struct ShearWarpFactorization {
   double rayRatio(double u, double v) const;
 };
 
-// Perspective views: intermediate pixels a voxel at most on the focal point's slice. A
-// picture finer than that is magnified by the warp: the default volume in the default window
-// (7.7 pixels a voxel there) composited in a quarter of the picture's time against an
-// intermediate image as fine as the picture, at the same RMSE against EWA (0.0010); the engine
-// close up (under 2 there) is unchanged, at 1 its RMSE rises from 0.0077 to 0.0132.
-constexpr double kMaxIntermediatePerVoxel = 2.0;
-
 // Intermediate images of perspective views larger than this many pixels are drawn as the
 // parallel view instead (a wide view from near or inside the volume, some of whose
 // rays run back along the principal axis).
@@ -78,9 +81,10 @@ constexpr double kMaxPerspectiveIntermediatePixels = 64.0 * 1024 * 1024;
 // Factorizes the view of a volume with `dims`, `spacing` and `origin` by `camera` into a
 // width x height image: parallel or perspective as the camera is (perspectiveAsParallel: a
 // perspective view whose intermediate image would be too large, drawn as the orthographic view of
-// the same height at the focal point).
+// the same height at the focal point), with at most `maxPerVoxel` (>= 1) intermediate pixels a
+// voxel where the picture is finer.
 ShearWarpFactorization factorizeView(const Camera& camera, const std::array<int64_t, 3>& dims,
                                      const glm::dvec3& spacing, const glm::dvec3& origin, int width,
-                                     int height);
+                                     int height, double maxPerVoxel = kMaxIntermediatePerVoxel);
 
 }  // namespace ewa

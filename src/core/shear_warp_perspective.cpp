@@ -13,13 +13,13 @@ namespace {
 // Where row v of the intermediate image meets slice k: the slice row j and the fraction fy
 // towards row j + 1, and the map u -> x = (u - offset) / scale along the row.
 struct RowPlacement {
-  double scale, offsetI;
+  double scale, offsetI, inverseScale;
   int j = -1;
   float fy = 0.0f;
   double y = 0.0;
 
   RowPlacement(const ShearWarpFactorization& f, int k, int v)
-      : scale(f.scale(k)), offsetI(f.offsetI(k)) {
+      : scale(f.scale(k)), offsetI(f.offsetI(k)), inverseScale(1.0 / scale) {
     y = (v - f.offsetJ(k)) / scale;
     const double fl = std::floor(y);
     if (fl >= 0.0 && fl < f.height - 1) {
@@ -28,7 +28,7 @@ struct RowPlacement {
     }
   }
   bool valid() const { return j >= 0; }
-  double x(int u) const { return (u - offsetI) / scale; }
+  double x(int u) const { return (u - offsetI) * inverseScale; }  // a division cost a tenth
   // The first intermediate pixel whose x is at least `at`, clamped to [0, width] (in doubles:
   // slices near the eye are scaled far past an int).
   int firstU(double at, int width) const {

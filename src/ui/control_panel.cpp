@@ -277,6 +277,10 @@ bool ControlPanel::drawShearWarp(ShearWarpSettings& s) {
     }
   }
   changed |= ImGui::Checkbox("opacity correction", &s.opacityCorrection);
+  ImGui::PushItemWidth(180.0f);
+  // Finer than the picture gains nothing; 1 is the paper's (close-ups magnified by the warp).
+  changed |= sliderDouble("intermediate px/voxel", &s.intermediateScale, 1.0, 4.0, "%.2f");
+  ImGui::PopItemWidth();
   return changed;
 }
 

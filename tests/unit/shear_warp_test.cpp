@@ -24,38 +24,84 @@ TEST(ShearWarpFactorization, WarpOfShearedSlicesIsTheCameraProjection) {
     Camera cam;
     cam.orthographic = true;
     cam.frame(origin, origin + glm::dvec3(19, 29 * 0.5, 11 * 2.0), from, glm::dvec3(0, 0, 1), 1.5);
-    const ShearWarpFactorization f = factorizeView(cam, dims, spacing, origin, 300, 200);
-    // Principal axis: largest component of the direction in voxel units.
-    const glm::dvec3 step = cam.direction() / spacing;
-    EXPECT_GE(std::abs(step[f.principal]), std::abs(step[(f.principal + 1) % 3]));
-    EXPECT_GE(std::abs(step[f.principal]), std::abs(step[(f.principal + 2) % 3]));
-    EXPECT_LE(std::abs(f.shearI), 1.0);
-    EXPECT_LE(std::abs(f.shearJ), 1.0);
-    EXPECT_NEAR(f.sampleRatio * std::abs(cam.direction()[f.principal]), 1.0, 1e-12);
-    const Projection proj = cam.projection(300, 200);
-    for (const glm::ivec3 voxel :
-         {glm::ivec3(0, 0, 0), glm::ivec3(19, 29, 11), glm::ivec3(7, 3, 9)}) {
-      const glm::dvec3 world = origin + glm::dvec3(voxel) * spacing;
-      const glm::dvec3 q(cam.viewMatrix() * glm::dvec4(world, 1.0));
-      const glm::dvec2 expected = proj.principal + glm::dvec2(q.x, q.y) * proj.pixelsPerUnit;
-      const int k = voxel[f.principal];
-      const glm::dvec3 uv(voxel[f.axisI] + f.offsetI(k), voxel[f.axisJ] + f.offsetJ(k), 1.0);
-      EXPECT_GE(uv.x, 0.0);
-      EXPECT_GE(uv.y, 0.0);
-      EXPECT_LE(uv.x, f.imageWidth);
-      EXPECT_LE(uv.y, f.imageHeight);
-      const glm::dvec3 pixel = f.warp * uv;
-      EXPECT_NEAR(pixel.x, expected.x, 1e-9);
-      EXPECT_NEAR(pixel.y, expected.y, 1e-9);
-      const glm::dvec3 back = f.inverseWarp * pixel;
-      EXPECT_NEAR(back.x, uv.x, 1e-9);
+    for (const double most : {1.0, kMaxIntermediatePerVoxel, 3.5}) {
+      const ShearWarpFactorization f = factorizeView(cam, dims, spacing, origin, 300, 200, most);
+      // Principal axis: largest component of the direction in voxel units.
+      const glm::dvec3 step = cam.direction() / spacing;
+      EXPECT_GE(std::abs(step[f.principal]), std::abs(step[(f.principal + 1) % 3]));
+      EXPECT_GE(std::abs(step[f.principal]), std::abs(step[(f.principal + 2) % 3]));
+      // Magnified by the picture's pixels across the wider voxel side, 1 to `most`.
+      const Projection proj = cam.projection(300, 200);
+      const double across = std::max(spacing[f.axisI], spacing[f.axisJ]);
+      EXPECT_DOUBLE_EQ(f.magnification, std::clamp(proj.pixelsPerUnit * across, 1.0, most));
+      EXPECT_EQ(f.resampled(), f.magnification != 1.0);
+      EXPECT_GT(proj.pixelsPerUnit * across, 2.0);  // so that every `most` is reached
+      EXPECT_LE(std::abs(f.shearI), f.magnification);
+      EXPECT_LE(std::abs(f.shearJ), f.magnification);
+      EXPECT_NEAR(f.sampleRatio * std::abs(cam.direction()[f.principal]), 1.0, 1e-12);
+      for (const glm::ivec3 voxel :
+           {glm::ivec3(0, 0, 0), glm::ivec3(19, 29, 11), glm::ivec3(7, 3, 9)}) {
+        const glm::dvec3 world = origin + glm::dvec3(voxel) * spacing;
+        const glm::dvec3 q(cam.viewMatrix() * glm::dvec4(world, 1.0));
+        const glm::dvec2 expected = proj.principal + glm::dvec2(q.x, q.y) * proj.pixelsPerUnit;
+        const int k = voxel[f.principal];
+        const glm::dvec3 uv(f.scale(k) * voxel[f.axisI] + f.offsetI(k),
+                            f.scale(k) * voxel[f.axisJ] + f.offsetJ(k), 1.0);
+        EXPECT_GE(uv.x, 0.0);
+        EXPECT_GE(uv.y, 0.0);
+        EXPECT_LE(uv.x, f.imageWidth);
+        EXPECT_LE(uv.y, f.imageHeight);
+        const glm::dvec3 pixel = f.warp * uv;
+        EXPECT_NEAR(pixel.x, expected.x, 1e-9);
+        EXPECT_NEAR(pixel.y, expected.y, 1e-9);
+        const glm::dvec3 back = f.inverseWarp * pixel;
+        EXPECT_NEAR(back.x, uv.x, 1e-9);
+      }
+      // Front to back: slice 0 in front when the ray moves towards larger k.
+      const double first = glm::dot(cam.direction(), origin + glm::dvec3(0.0));
+      glm::dvec3 lastIdx(0.0);
+      lastIdx[f.principal] = f.depth - 1;
+      const double last = glm::dot(cam.direction(), origin + lastIdx * spacing);
+      EXPECT_EQ(f.increasing, first < last);
     }
-    // Front to back: slice 0 in front when the ray moves towards larger k.
-    const double first = glm::dot(cam.direction(), origin + glm::dvec3(0.0));
-    glm::dvec3 lastIdx(0.0);
-    lastIdx[f.principal] = f.depth - 1;
-    const double last = glm::dot(cam.direction(), origin + lastIdx * spacing);
-    EXPECT_EQ(f.increasing, first < last);
+  }
+}
+
+TEST(ShearWarpFactorization, CloseUpsCompositeOnlyThePicturesRays) {
+  const std::array<int64_t, 3> dims{60, 50, 40};
+  const glm::dvec3 spacing(1.0, 1.2, 0.8), origin(2.0, -1.0, 3.0);
+  Camera cam;
+  cam.orthographic = true;
+  cam.frame(origin, origin + glm::dvec3(59, 49 * 1.2, 39 * 0.8), glm::dvec3(0.4, -0.3, 1.0),
+            glm::dvec3(0, 1, 0), 1.0);
+  cam.viewAngleDeg /= 6.0;  // a sixth of the volume's height across the picture
+  for (const double most : {1.0, kMaxIntermediatePerVoxel}) {
+    const ShearWarpFactorization f = factorizeView(cam, dims, spacing, origin, 120, 90, most);
+    EXPECT_LT(f.imageWidth, 0.5 * f.magnification * dims[f.axisI]);
+    EXPECT_LT(f.imageHeight, 0.5 * f.magnification * dims[f.axisJ]);
+    const Projection proj = cam.projection(120, 90);
+    int seen = 0;
+    for (int k = 0; k < 40; k += 3)
+      for (int j = 0; j < 50; j += 2)
+        for (int i = 0; i < 60; i += 2) {
+          const glm::dvec3 world = origin + glm::dvec3(i, j, k) * spacing;
+          const glm::dvec3 q(cam.viewMatrix() * glm::dvec4(world, 1.0));
+          const glm::dvec2 pixel = proj.principal + glm::dvec2(q.x, q.y) * proj.pixelsPerUnit;
+          if (pixel.x < 0.0 || pixel.y < 0.0 || pixel.x > 120.0 || pixel.y > 90.0) continue;
+          ++seen;
+          const glm::ivec3 voxel(i, j, k);
+          const int slice = voxel[f.principal];
+          const glm::dvec3 uv(f.scale(slice) * voxel[f.axisI] + f.offsetI(slice),
+                              f.scale(slice) * voxel[f.axisJ] + f.offsetJ(slice), 1.0);
+          ASSERT_GE(uv.x, 0.0);
+          ASSERT_GE(uv.y, 0.0);
+          ASSERT_LE(uv.x, f.imageWidth);
+          ASSERT_LE(uv.y, f.imageHeight);
+          const glm::dvec3 back = f.warp * uv;
+          EXPECT_NEAR(back.x, pixel.x, 1e-9);
+          EXPECT_NEAR(back.y, pixel.y, 1e-9);
+        }
+    EXPECT_GT(seen, 100);
   }
 }
 
@@ -66,6 +112,7 @@ TEST(ShearWarp, BufferSliceVariantsGiveIdenticalImages) {
     ShearWarpSettings s;
     s.preintegrated = true;
     s.lookup = lookup;
+    s.intermediateScale = 1.0;  // Lacroute's loop; magnified views always buffer by pixel
     s.buffers = BufferSlices::Slice;
     const FloatImage sb = renderOnce(v, blobTf(), cam, s);
     s.buffers = BufferSlices::Image;
@@ -78,8 +125,12 @@ TEST(ShearWarp, BufferSliceVariantsGiveIdenticalImages) {
 TEST(ShearWarp, RunLengthEncodingAndThreadsDoNotChangeThePicture) {
   const Volume v = makeVolume(32, ScalarType::UInt8, blob);
   for (const glm::dvec3 from :
-       {glm::dvec3(0.5, 0.35, 1.0), glm::dvec3(-1.0, 0.2, 0.6), glm::dvec3(0.3, -1.0, -0.4)})
-    expectRunsAndThreadsKeepThePicture(v, obliqueCamera(v, from));
+       {glm::dvec3(0.5, 0.35, 1.0), glm::dvec3(-1.0, 0.2, 0.6), glm::dvec3(0.3, -1.0, -0.4)}) {
+    Camera cam = obliqueCamera(v, from);
+    expectRunsAndThreadsKeepThePicture(v, cam);
+    cam.viewAngleDeg /= 3.0;  // close up: runs reach past the intermediate image's edges
+    expectRunsAndThreadsKeepThePicture(v, cam);
+  }
 }
 
 TEST(ShearWarp, EveryScalarTypeMapsThroughTheTransferFunctionRange) {
@@ -109,17 +160,52 @@ TEST(ShearWarp, HomogeneousMediumHasTheOpacityOfItsThickness) {
   const Camera cam = obliqueCamera(v, glm::dvec3(0.3, 0.2, 1.0));
   const double ratio = 1.0 / std::abs(cam.direction().z);
   for (bool pre : {false, true})
-    for (bool correct : {false, true}) {
-      ShearWarpSettings s;
-      s.preintegrated = pre;
-      s.opacityCorrection = correct;
-      const FloatImage img = renderOnce(v, tf, cam, s, 65);
-      // Standard: 32 samples of length d'; pre-integrated: 31 slabs between them.
-      const double length = (pre ? 31.0 : 32.0) * (correct ? ratio : 1.0);
-      EXPECT_NEAR(img.at(32, 32, 3), 1.0 - std::exp(-tau * length), 2e-3)
-          << "preintegrated " << pre << " correction " << correct;
-      EXPECT_NEAR(img.at(32, 32, 0), img.at(32, 32, 3), 1e-5);  // white, premultiplied
-    }
+    for (bool correct : {false, true})
+      for (int size : {65, 200}) {
+        ShearWarpSettings s;
+        s.preintegrated = pre;
+        s.opacityCorrection = correct;
+        s.intermediateScale = size == 65 ? 1.0 : 2.0;  // Lacroute's loop, and magnified
+        const FloatImage img = renderOnce(v, tf, cam, s, size);
+        // Standard: 32 samples of length d'; pre-integrated: 31 slabs between them.
+        const double length = (pre ? 31.0 : 32.0) * (correct ? ratio : 1.0);
+        const int c = size / 2;
+        EXPECT_NEAR(img.at(c, c, 3), 1.0 - std::exp(-tau * length), 2e-3)
+            << "preintegrated " << pre << " correction " << correct << " size " << size;
+        EXPECT_NEAR(img.at(c, c, 0), img.at(c, c, 3), 1e-5);  // white, premultiplied
+      }
+}
+
+// Pixels of an opaque ball's silhouette that are neither clear nor opaque, and its area, drawn
+// close up (about 5 pixels a voxel) with at most `scale` intermediate pixels a voxel.
+glm::dvec2 ballEdge(double scale) {
+  const Volume v = makeVolume(32, ScalarType::UInt8, [](int i, int j, int k) {
+    return glm::length(glm::dvec3(i, j, k) - glm::dvec3(15.5, 15.2, 15.8)) < 10.0 ? 200.0 : 0.0;
+  });
+  TransferFunction tf;
+  tf.opacity = {{99.0, 0.0}, {101.0, 1.0}};
+  tf.color = {{0.0, {1.0, 1.0, 1.0}}};
+  tf.opacityUnitDistance = 0.05;
+  ShearWarpSettings s;
+  s.intermediateScale = scale;
+  const FloatImage img = renderOnce(v, tf, obliqueCamera(v, glm::dvec3(0.3, 0.2, 1.0)), s, 256);
+  double partial = 0.0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) partial += img.at(x, y, 3) > 0.1 && img.at(x, y, 3) < 0.9;
+  return {partial, totalAlpha(img)};
+}
+
+TEST(ShearWarp, MagnifiedParallelViewsHaveSharperEdges) {
+  // One intermediate pixel a voxel: the warp spreads each edge over a voxel's 5 pixels; two
+  // and four: over half and a quarter of that. The silhouette's area stays.
+  const glm::dvec2 one = ballEdge(1.0), two = ballEdge(2.0), four = ballEdge(4.0);
+  std::printf("ball edge: partial pixels %.0f, %.0f, %.0f; area %.0f, %.0f, %.0f\n", one.x, two.x,
+              four.x, one.y, two.y, four.y);
+  EXPECT_GT(one.x, 500.0);
+  EXPECT_LT(two.x, 0.65 * one.x);
+  EXPECT_LT(four.x, 0.65 * two.x);
+  EXPECT_NEAR(two.y / one.y, 1.0, 0.02);
+  EXPECT_NEAR(four.y / one.y, 1.0, 0.02);
 }
 
 // Distance from the centre of a 40^3 grid; the transfer function is a thin opaque shell at 12.

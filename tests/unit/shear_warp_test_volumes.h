@@ -99,17 +99,19 @@ inline double totalAlpha(const FloatImage& img) {
 // Standard and pre-integrated pictures of `cam` are the same with run-length encoding and two
 // threads as without them on one (gtest assertions; include gtest first).
 inline void expectRunsAndThreadsKeepThePicture(const Volume& v, const Camera& cam) {
-  for (bool pre : {false, true}) {
-    ShearWarpSettings s;
-    s.preintegrated = pre;
-    s.threads = 2;
-    const FloatImage fast = renderOnce(v, blobTf(), cam, s);
-    s.runLengthEncoding = false;
-    s.threads = 1;
-    const FloatImage plain = renderOnce(v, blobTf(), cam, s);
-    EXPECT_GT(totalAlpha(fast), 100.0);
-    EXPECT_EQ(fast.values, plain.values) << "preintegrated " << pre;
-  }
+  for (bool pre : {false, true})
+    for (double scale : {1.0, 2.0}) {  // parallel: Lacroute's loop, and magnified
+      ShearWarpSettings s;
+      s.preintegrated = pre;
+      s.intermediateScale = scale;
+      s.threads = 2;
+      const FloatImage fast = renderOnce(v, blobTf(), cam, s, 96);
+      s.runLengthEncoding = false;
+      s.threads = 1;
+      const FloatImage plain = renderOnce(v, blobTf(), cam, s, 96);
+      EXPECT_GT(totalAlpha(fast), 100.0);
+      EXPECT_EQ(fast.values, plain.values) << "preintegrated " << pre << " scale " << scale;
+    }
 }
 
 }  // namespace ewa::swtest
