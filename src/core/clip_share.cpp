@@ -20,27 +20,53 @@ glm::dmat4 worldToVolumeFrame(const Volume& volume) {
   return m;
 }
 
+std::optional<DataBox> polytopeBounds(const DataBox& box, const std::vector<HalfSpace>& cuts) {
+  // The box's faces as half-spaces, then the cuts: every corner of the polytope is where three
+  // of these planes meet, on the kept side of all the others.
+  std::vector<HalfSpace> all;
+  for (int a = 0; a < 3; ++a) {
+    glm::dvec3 n(0.0);
+    n[a] = 1.0;
+    all.push_back({n, -box.low[a]});
+    all.push_back({-n, box.high[a]});
+  }
+  for (const HalfSpace& h : cuts)
+    if (glm::length(h.normal) > 0.0)
+      all.push_back({glm::normalize(h.normal), h.offset / glm::length(h.normal)});
+  const double size = glm::length(box.high - box.low) + glm::length(box.low) + 1.0;
+  const double tolerance = 1e-9 * size;
+  glm::dvec3 lo(1e300), hi(-1e300);
+  const size_t n = all.size();
+  for (size_t a = 0; a < n; ++a)
+    for (size_t b = a + 1; b < n; ++b)
+      for (size_t c = b + 1; c < n; ++c) {
+        const glm::dvec3 bc = glm::cross(all[b].normal, all[c].normal);
+        const double det = glm::dot(all[a].normal, bc);
+        if (std::abs(det) < 1e-9) continue;  // two of them parallel, or all three on one line
+        const glm::dvec3 x =
+            -(all[a].offset * bc + all[b].offset * glm::cross(all[c].normal, all[a].normal) +
+              all[c].offset * glm::cross(all[a].normal, all[b].normal)) /
+            det;
+        bool inside = true;
+        for (const HalfSpace& h : all) inside = inside && h.distance(x) >= -tolerance;
+        if (!inside) continue;
+        lo = glm::min(lo, x);
+        hi = glm::max(hi, x);
+      }
+  if (!(lo.x <= hi.x)) return std::nullopt;
+  return DataBox{lo, hi};
+}
+
 DataBox keptBoxInVolumeFrame(const ClipRegion& region, const Volume& volume, double grow) {
   const DataBox whole{volume.boundsMin() - grow, volume.boundsMax() + grow};
-  if (!region.cropEnabled) return whole;
-  const glm::dmat4 toFrame = worldToVolumeFrame(volume);
-  glm::dvec3 lo(1e300), hi(-1e300);
-  for (int c = 0; c < 8; ++c) {
-    const glm::dvec3 corner((c & 1) ? region.cropMax.x : region.cropMin.x,
-                            (c & 2) ? region.cropMax.y : region.cropMin.y,
-                            (c & 4) ? region.cropMax.z : region.cropMin.z);
-    const glm::dvec3 p(toFrame * glm::dvec4(corner, 1.0));
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
+  if (!region.active()) return whole;
+  const std::optional<DataBox> bounds =
+      polytopeBounds(whole, halfSpacesInVolumeFrame(region, volume));
+  if (!bounds) return whole;
   const glm::dvec3& sp = volume.spacing();
   const double hair = 1e-3 * std::min({sp.x, sp.y, sp.z});
-  lo -= hair;
-  hi += hair;
-  const DataBox kept{glm::max(lo, whole.low), glm::min(hi, whole.high)};
-  if (!(kept.low.x <= kept.high.x && kept.low.y <= kept.high.y && kept.low.z <= kept.high.z))
-    return whole;
-  return kept;
+  return DataBox{glm::max(bounds->low - hair, whole.low),
+                 glm::min(bounds->high + hair, whole.high)};
 }
 
 std::vector<HalfSpace> halfSpacesInVolumeFrame(const ClipRegion& region, const Volume& volume) {

@@ -5,6 +5,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <vector>
 
 #include "core/camera.h"
@@ -23,10 +24,14 @@ constexpr double kClipUnbounded = 1e30;
 glm::dmat4 worldToVolumeFrame(const Volume& volume);
 // The region's half-spaces in the volume's own frame.
 std::vector<HalfSpace> halfSpacesInVolumeFrame(const ClipRegion& region, const Volume& volume);
+// The bounds of the convex polytope that the half-spaces `cuts` leave of `box` (its corners:
+// where three planes, the box's faces among them, meet inside all the others); none when
+// nothing is left.
+std::optional<DataBox> polytopeBounds(const DataBox& box, const std::vector<HalfSpace>& cuts);
 // The volume's box in its own frame grown by `grow` on every side (how far kernels reach out of
-// it), narrowed to the crop box (its corners' bounds in that frame, a hair wider for rounding),
-// which the clip cuts every ray at: a box holding all that is drawn (clipping planes are not
-// counted). The grown box when no crop is enabled or nothing of it is left.
+// it), narrowed to what the crop box and clipping planes leave of it (polytopeBounds, a hair
+// wider for rounding), which the clip cuts every ray at: a box holding all that is drawn. The
+// grown box when nothing is clipped or nothing is left.
 DataBox keptBoxInVolumeFrame(const ClipRegion& region, const Volume& volume, double grow = 0.0);
 
 // The depths [near, far] that camera-space half-spaces keep along the ray through `pixel` (the

@@ -344,6 +344,23 @@ TEST_F(SlabCompositing, EarlyTerminationStopsACroppedVolume) {
   EXPECT_GT(full.pixels[(16 * 32 + 16) * 3], 150);
 }
 
+// The same middle kept by six clipping planes instead: termination tests what the planes
+// leave (before, the whole volume, so it never stopped).
+TEST_F(SlabCompositing, EarlyTerminationStopsAVolumeCutByPlanes) {
+  RenderSettings cut = rasterSettings();
+  for (int a = 0; a < 3; ++a) {
+    glm::dvec3 n(0.0), low(0.0), high(0.0);
+    n[a] = 1.0;
+    low[a] = a < 2 ? 9.0 : 0.0;
+    high[a] = a < 2 ? 14.0 : 23.0;
+    cut.clip.planes.push_back({low, n, true});
+    cut.clip.planes.push_back({high, -n, true});
+  }
+  const Image8 full = expectTerminationStopsTheOpaqueBox(*renderer(), cut);
+  EXPECT_EQ(full.pixels[0], 0);
+  EXPECT_GT(full.pixels[(16 * 32 + 16) * 3], 150);
+}
+
 // Primitives the GL's vertex stage put out while `draw` ran: draws that conditional rendering
 // skipped put out none.
 GLuint primitivesGenerated(const std::function<void()>& draw) {

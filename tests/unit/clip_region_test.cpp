@@ -151,6 +151,65 @@ TEST(ClipShare, CullsOnlyKernelsWhollyOutside) {
   EXPECT_FALSE(clipCullsKernel({}, {0, 0, -100}, 1.0));
 }
 
+// A box's corner cut off by an oblique plane, and a turned box inside it: the bounds are the
+// corners left and where the planes cross the box's edges, found from the planes alone; random
+// cuts bound every kept point, and a cut keeping nothing leaves nothing.
+TEST(ClipShare, PolytopeBoundsAreTheKeptCorners) {
+  const DataBox box{glm::dvec3(0.0), glm::dvec3(10.0, 20.0, 30.0)};
+  // x + y <= 5 (normal (-1, -1, 0), not of unit length): a prism over the triangle x, y >= 0.
+  const auto corner = polytopeBounds(box, {{glm::dvec3(-1, -1, 0), 5.0}});
+  ASSERT_TRUE(corner.has_value());
+  EXPECT_NEAR(glm::length(corner->low - glm::dvec3(0.0)), 0.0, 1e-9);
+  EXPECT_NEAR(glm::length(corner->high - glm::dvec3(5.0, 5.0, 30.0)), 0.0, 1e-9);
+  EXPECT_FALSE(polytopeBounds(box, {{glm::dvec3(1, 0, 0), -11.0}}).has_value());  // x >= 11
+  const auto whole = polytopeBounds(box, {});
+  ASSERT_TRUE(whole.has_value());
+  EXPECT_NEAR(glm::length(whole->high - box.high), 0.0, 1e-9);
+  // A cube of side 4 about (5, 10, 15), turned: the bounds of its eight corners.
+  const glm::dmat3 turn(glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(glm::dvec3(1, 2, -1))));
+  const glm::dvec3 centre(5.0, 10.0, 15.0);
+  std::vector<HalfSpace> faces;
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (int a = 0; a < 3; ++a)
+    for (double side : {-1.0, 1.0}) {
+      const glm::dvec3 n = -side * turn[a];  // pointing inwards
+      faces.push_back({n, -glm::dot(n, centre + 2.0 * side * turn[a])});
+    }
+  for (int c = 0; c < 8; ++c) {
+    const glm::dvec3 p =
+        centre + 2.0 * ((c & 1 ? 1.0 : -1.0) * turn[0] + (c & 2 ? 1.0 : -1.0) * turn[1] +
+                        (c & 4 ? 1.0 : -1.0) * turn[2]);
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const auto turned = polytopeBounds(box, faces);
+  ASSERT_TRUE(turned.has_value());
+  EXPECT_NEAR(glm::length(turned->low - lo), 0.0, 1e-9);
+  EXPECT_NEAR(glm::length(turned->high - hi), 0.0, 1e-9);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<HalfSpace> cuts;
+    for (int c = 0; c < 3; ++c) {
+      const glm::dvec3 n(u(rng), u(rng), u(rng));
+      const glm::dvec3 through(5 + 4 * u(rng), 10 + 9 * u(rng), 15 + 14 * u(rng));
+      cuts.push_back({n, -glm::dot(n, through)});
+    }
+    const auto b = polytopeBounds(box, cuts);
+    for (int k = 0; k < 4096; ++k) {  // every kept point of a grid lies within the bounds
+      const glm::dvec3 p((k % 16) * 10.0 / 15, (k / 16 % 16) * 20.0 / 15, (k / 256) * 30.0 / 15);
+      bool kept = true;
+      for (const HalfSpace& h : cuts) kept = kept && h.distance(p) >= 0.0;
+      if (!kept) continue;
+      ASSERT_TRUE(b.has_value()) << "trial " << trial;
+      for (int a = 0; a < 3; ++a) {
+        EXPECT_LE(b->low[a], p[a] + 1e-9) << "trial " << trial;
+        EXPECT_GE(b->high[a], p[a] - 1e-9) << "trial " << trial;
+      }
+    }
+  }
+}
+
 TEST(ClipShare, VolumeFrameUndoesTheDirection) {
   Volume v = makeSyntheticVolume("sphere:8").volume;
   const glm::dmat3 d(glm::rotate(glm::dmat4(1.0), 0.6, glm::normalize(glm::dvec3(1, -2, 1))));
