@@ -16,6 +16,29 @@ namespace {
 
 using namespace swtest;
 
+// The pixel `cam` projects the world point to.
+glm::dvec2 projected(const Camera& cam, const Projection& proj, const glm::dvec3& world) {
+  const glm::dvec3 q(cam.viewMatrix() * glm::dvec4(world, 1.0));
+  return proj.principal + glm::dvec2(q.x, q.y) * proj.pixelsPerUnit;
+}
+
+// The voxel lies inside the intermediate image, where the warp takes it to `pixel` and back.
+void expectVoxelWarpsTo(const ShearWarpFactorization& f, const glm::ivec3& voxel,
+                        const glm::dvec2& pixel) {
+  const int k = voxel[f.principal];
+  const glm::dvec3 uv(f.scale(k) * voxel[f.axisI] + f.offsetI(k),
+                      f.scale(k) * voxel[f.axisJ] + f.offsetJ(k), 1.0);
+  EXPECT_GE(uv.x, 0.0);
+  EXPECT_GE(uv.y, 0.0);
+  EXPECT_LE(uv.x, f.imageWidth);
+  EXPECT_LE(uv.y, f.imageHeight);
+  const glm::dvec3 warped = f.warp * uv;
+  EXPECT_NEAR(warped.x, pixel.x, 1e-9);
+  EXPECT_NEAR(warped.y, pixel.y, 1e-9);
+  const glm::dvec3 back = f.inverseWarp * warped;
+  EXPECT_NEAR(back.x, uv.x, 1e-9);
+}
+
 TEST(ShearWarpFactorization, WarpOfShearedSlicesIsTheCameraProjection) {
   const std::array<int64_t, 3> dims{20, 30, 12};
   const glm::dvec3 spacing(1.0, 0.5, 2.0), origin(-3.0, 4.0, 1.0);
@@ -41,21 +64,7 @@ TEST(ShearWarpFactorization, WarpOfShearedSlicesIsTheCameraProjection) {
       EXPECT_NEAR(f.sampleRatio * std::abs(cam.direction()[f.principal]), 1.0, 1e-12);
       for (const glm::ivec3 voxel :
            {glm::ivec3(0, 0, 0), glm::ivec3(19, 29, 11), glm::ivec3(7, 3, 9)}) {
-        const glm::dvec3 world = origin + glm::dvec3(voxel) * spacing;
-        const glm::dvec3 q(cam.viewMatrix() * glm::dvec4(world, 1.0));
-        const glm::dvec2 expected = proj.principal + glm::dvec2(q.x, q.y) * proj.pixelsPerUnit;
-        const int k = voxel[f.principal];
-        const glm::dvec3 uv(f.scale(k) * voxel[f.axisI] + f.offsetI(k),
-                            f.scale(k) * voxel[f.axisJ] + f.offsetJ(k), 1.0);
-        EXPECT_GE(uv.x, 0.0);
-        EXPECT_GE(uv.y, 0.0);
-        EXPECT_LE(uv.x, f.imageWidth);
-        EXPECT_LE(uv.y, f.imageHeight);
-        const glm::dvec3 pixel = f.warp * uv;
-        EXPECT_NEAR(pixel.x, expected.x, 1e-9);
-        EXPECT_NEAR(pixel.y, expected.y, 1e-9);
-        const glm::dvec3 back = f.inverseWarp * pixel;
-        EXPECT_NEAR(back.x, uv.x, 1e-9);
+        expectVoxelWarpsTo(f, voxel, projected(cam, proj, origin + glm::dvec3(voxel) * spacing));
       }
       // Front to back: slice 0 in front when the ray moves towards larger k.
       const double first = glm::dot(cam.direction(), origin + glm::dvec3(0.0));
@@ -84,22 +93,10 @@ TEST(ShearWarpFactorization, CloseUpsCompositeOnlyThePicturesRays) {
     for (int k = 0; k < 40; k += 3)
       for (int j = 0; j < 50; j += 2)
         for (int i = 0; i < 60; i += 2) {
-          const glm::dvec3 world = origin + glm::dvec3(i, j, k) * spacing;
-          const glm::dvec3 q(cam.viewMatrix() * glm::dvec4(world, 1.0));
-          const glm::dvec2 pixel = proj.principal + glm::dvec2(q.x, q.y) * proj.pixelsPerUnit;
+          const glm::dvec2 pixel = projected(cam, proj, origin + glm::dvec3(i, j, k) * spacing);
           if (pixel.x < 0.0 || pixel.y < 0.0 || pixel.x > 120.0 || pixel.y > 90.0) continue;
           ++seen;
-          const glm::ivec3 voxel(i, j, k);
-          const int slice = voxel[f.principal];
-          const glm::dvec3 uv(f.scale(slice) * voxel[f.axisI] + f.offsetI(slice),
-                              f.scale(slice) * voxel[f.axisJ] + f.offsetJ(slice), 1.0);
-          ASSERT_GE(uv.x, 0.0);
-          ASSERT_GE(uv.y, 0.0);
-          ASSERT_LE(uv.x, f.imageWidth);
-          ASSERT_LE(uv.y, f.imageHeight);
-          const glm::dvec3 back = f.warp * uv;
-          EXPECT_NEAR(back.x, pixel.x, 1e-9);
-          EXPECT_NEAR(back.y, pixel.y, 1e-9);
+          expectVoxelWarpsTo(f, glm::ivec3(i, j, k), pixel);
         }
     EXPECT_GT(seen, 100);
   }
