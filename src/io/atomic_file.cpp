@@ -27,8 +27,8 @@ mode_t currentUmask() {
   return mask;
 }
 
-// Writes `bytes` straight into a FIFO or character device (`-o /dev/null`, `/dev/stdout` on a
-// pipe): renaming a file over one would replace the device node, not feed it.
+// Writes `bytes` straight into a FIFO, character device or open file (`-o /dev/null`,
+// `/dev/stdout`): renaming a file over one would replace the device node or link, not feed it.
 void writeStraightInto(const std::string& path, std::string_view bytes) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
   if (fd < 0) fail(path, std::strerror(errno));
@@ -49,7 +49,25 @@ void writeStraightInto(const std::string& path, std::string_view bytes) {
 // What stands at `path` (links followed): nothing or a regular file is replaced by rename.
 enum class Target { Replace, Stream, Folder, Other };
 
+// A name of one of this process's open files (`/dev/stdout`, `/dev/fd/1`, a link into
+// /proc/self/fd): whatever it is open on, even a regular file, is written into, so that
+// `-o /dev/stdout > f.png` neither replaces the link nor misses the file.
+bool namesAnOpenFile(const std::string& path) {
+  const auto under = [](const std::string& p, const char* prefix) {
+    return p.rfind(prefix, 0) == 0;
+  };
+  const auto open = [&](const std::string& p) {
+    return under(p, "/dev/fd/") || under(p, "/proc/self/fd/") || p == "/dev/stdout" ||
+           p == "/dev/stderr";
+  };
+  if (open(path)) return true;
+  char target[256] = {};
+  const ssize_t n = ::readlink(path.c_str(), target, sizeof target - 1);
+  return n > 0 && open(std::string(target, size_t(n)));
+}
+
 Target targetKind(const std::string& path) {
+  if (namesAnOpenFile(path)) return Target::Stream;
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return Target::Replace;
   if (S_ISDIR(st.st_mode)) return Target::Folder;

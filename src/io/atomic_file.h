@@ -10,7 +10,8 @@ namespace ewa {
 // fixed ".tmp" name can be raced or pre-planted as a link), flushes it to disk, then renames it
 // over `path`. On any failure the temporary file is removed and `path` is left as it was.
 // Refuses a `path` that is a directory, block device or socket; a FIFO or character device
-// (`/dev/null`, `/dev/stdout` on a pipe or terminal) gets `bytes` written straight into it.
+// (`/dev/null`, a pipe, a terminal) or a name of an open file (`/dev/stdout`, `/dev/fd/N`, a
+// link into /proc/self/fd) gets `bytes` written straight into it.
 // The new file gets mode 0666 less the process umask.
 // Throws std::runtime_error("<path>: cannot write: <reason>").
 // Creates missing parent folders when `makeParents`.

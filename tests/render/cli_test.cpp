@@ -1,5 +1,6 @@
 // The ewaview program as a user runs it: exit codes, messages, --info, headless PNG output.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -280,6 +281,30 @@ TEST(Cli, HeadlessOutputOnBothBackendsAndTheDefaultAsset) {
   // No FILE: the default volume in assets/.
   r = ewaview("--resolution 32,32 --output " + dir + "/cli_default.png");
   EXPECT_EQ(r.code, 0) << r.err;
+}
+
+// `-o /dev/stdout` (here redirected to a file, as cli_run does) writes the PNG into the file
+// it is open on, and `-o /dev/null` into the device: neither name is replaced by a renamed
+// file (run as root, both once were).
+TEST(Cli, OutputIntoStdoutAndDevNullLeavesThemAsTheyWere) {
+  struct stat before {};
+  const bool hadLink = ::lstat("/dev/stdout", &before) == 0 && S_ISLNK(before.st_mode);
+  CliRun r = ewaview("--synthetic sphere:16 --resolution 24,16 -o /dev/stdout");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string file = testOutputDir() + "/cli_stdout.png";
+  std::ofstream(file, std::ios::binary) << r.out;
+  const Image8 image = readPng(file);
+  EXPECT_EQ(image.width, 24);
+  EXPECT_EQ(image.height, 16);
+  struct stat after {};
+  if (hadLink) {
+    ASSERT_EQ(::lstat("/dev/stdout", &after), 0);
+    EXPECT_TRUE(S_ISLNK(after.st_mode)) << "/dev/stdout replaced";
+  }
+  r = ewaview("--synthetic sphere:16 --resolution 24,16 -o /dev/null");
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(::stat("/dev/null", &after), 0);
+  EXPECT_TRUE(S_ISCHR(after.st_mode)) << "/dev/null replaced";
 }
 
 // EWAVIEW_BACKEND names the backend when --backend does not (a GPU server's egl, say).
