@@ -22,20 +22,34 @@ fi
 mkdir -p "$build/crashes"
 # The sanitizer build's leak suppressions (libraries' own leaks, each with its reason).
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
+# Fuzzes one target; its report goes to BUILD/NAME.out, and BUILD/NAME.failed marks a failure.
+fuzz_one() {
+  local name="$1" corpus="$build/corpus/$1"
+  mkdir -p "$corpus"
+  rm -f "$build/$name.failed"
+  {
+    echo "== fuzzing $name for ${seconds}s"
+    if ! "$build/${name}_fuzzer" "$corpus" "fuzz/corpus/$name" -max_total_time="$seconds" \
+        -timeout=10 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
+        -artifact_prefix="$build/crashes/$name-" 2>"$build/$name.log"; then
+      echo "fuzz: $name failed; the input is in $build/crashes/, the log in $build/$name.log"
+      tail -n 40 "$build/$name.log"
+      touch "$build/$name.failed"
+    fi
+    grep -E "^stat::(number_of_executed_units|new_units_added|peak_rss_mb)" "$build/$name.log" |
+      tr '\n' ' '
+    echo
+  } >"$build/$name.out"
+}
+# A fuzzer runs on one core: one target a core at once, each still its full SECONDS.
+for name in "${names[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$(nproc)" ]; do wait -n || true; done
+  fuzz_one "$name" &
+done
+wait
 status=0
 for name in "${names[@]}"; do
-  corpus="$build/corpus/$name"
-  mkdir -p "$corpus"
-  echo "== fuzzing $name for ${seconds}s"
-  if ! "$build/${name}_fuzzer" "$corpus" "fuzz/corpus/$name" -max_total_time="$seconds" \
-      -timeout=10 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
-      -artifact_prefix="$build/crashes/$name-" 2>"$build/$name.log"; then
-    echo "fuzz: $name failed; the input is in $build/crashes/, the log in $build/$name.log"
-    tail -n 40 "$build/$name.log"
-    status=1
-  fi
-  grep -E "^stat::(number_of_executed_units|new_units_added|peak_rss_mb)" "$build/$name.log" |
-    tr '\n' ' '
-  echo
+  cat "$build/$name.out"
+  [ ! -e "$build/$name.failed" ] || status=1
 done
 exit $status

@@ -6,16 +6,19 @@ cd "$(dirname "$0")/.."
 build="${1:-build-asan}"
 here="$(pwd)"
 # Line tables only (-g1): reports keep their file:line, the build takes about a sixth less time.
+# -O1, ASan's own advice: instrumented objects compile in about half the time they take at -O2
+# (CLI11's options.cpp 46 s against 92 s), and the tests wait on llvmpipe, not on our code.
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DEWA_SANITIZE=ON \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
   >/dev/null
 nice cmake --build "$build" -j"$(nproc)"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$here/scripts/lsan.supp:print_suppressions=0"
 # The tests that open a GLFW window leak 112-128 bytes inside the X11 GL driver, which is unloaded
-# before LSan reports, so no suppression can name it: those tests run without leak checking.
-window_tests='GlfwWindowContext|window_scripted_input|GlFaults.WindowWith'
+# before LSan reports, so no suppression can name it: those tests run without leak checking (the
+# scripted window test, the longest, says so itself in CMakeLists.txt and runs with the others).
+window_tests='GlfwWindowContext|GlFaults.WindowWith'
 run=(ctest --test-dir "$build" --output-on-failure -j"$(nproc)")
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null; then
   xvfb=(xvfb-run -a -s "-screen 0 1280x800x24")

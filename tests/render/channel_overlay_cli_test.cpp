@@ -38,6 +38,15 @@ std::string twoBalls(const std::string& dir) {
   return path;
 }
 
+// Each channel's sidecar transfer function: channel 0 warm, channel 1 cyan with the opacity
+// points C1_OPACITY (a JSON list of [value, opacity] pairs).
+void writeSidecars(const std::string& dir, const std::string& c1Opacity) {
+  std::ofstream(dir + "/balls.tf.json")
+      << R"({"opacity": [[0, 0], [100, 0], [200, 0.6]], "color": [[0, 0.9, 0.2, 0.1]]})";
+  std::ofstream(dir + "/balls.c1.tf.json")
+      << R"({"opacity": )" << c1Opacity << R"(, "color": [[0, 0.1, 0.7, 0.8]]})";
+}
+
 const uint8_t* pixel(const Image8& image, int x, int y) {
   return &image.pixels[size_t((y * image.width + x) * image.channels)];
 }
@@ -47,10 +56,7 @@ const uint8_t* pixel(const Image8& image, int x, int y) {
 TEST(ChannelOverlay, IsTheSumOfTheChannelsDrawnAlone) {
   const std::string dir = testOutputDir() + "/overlay_sum";
   const std::string file = twoBalls(dir);
-  std::ofstream(dir + "/balls.tf.json")
-      << R"({"opacity": [[0, 0], [100, 0], [200, 0.6]], "color": [[0, 0.9, 0.2, 0.1]]})";
-  std::ofstream(dir + "/balls.c1.tf.json")
-      << R"({"opacity": [[0, 0], [100, 0], [200, 0.4]], "color": [[0, 0.1, 0.7, 0.8]]})";
+  writeSidecars(dir, "[[0, 0], [100, 0], [200, 0.4]]");
   const std::string size = " --resolution 80,64";
   Image8 alone[2];
   for (int c : {0, 1}) {
@@ -162,11 +168,8 @@ TEST(ChannelOverlay, StatsReportEveryChannel) {
   using nlohmann::json;
   const std::string dir = testOutputDir() + "/overlay_stats";
   const std::string file = twoBalls(dir);
-  std::ofstream(dir + "/balls.tf.json")
-      << R"({"opacity": [[0, 0], [100, 0], [200, 0.6]], "color": [[0, 0.9, 0.2, 0.1]]})";
   // Channel 1 clear (no splats), so the two channels' figures cannot be mistaken.
-  std::ofstream(dir + "/balls.c1.tf.json")
-      << R"({"opacity": [[0, 0], [200, 0]], "color": [[0, 0.1, 0.7, 0.8]]})";
+  writeSidecars(dir, "[[0, 0], [200, 0]]");
   const std::string args = " --resolution 48,40 --stats -o " + dir + "/x.png";
   json alone[2];
   for (int c : {0, 1}) {
