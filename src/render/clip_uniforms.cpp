@@ -39,10 +39,14 @@ void setClipUniforms(gl::Program& p, const ClipRegion& region, const Volume& vol
 
 void setDataBoxUniforms(gl::Program& p, const Volume& volume, const Camera& volumeCamera,
                         const Projection& proj) {
+  setDataBoxUniforms(p, volume, volumeCamera, proj, volume.indexDataBox());
+}
+
+void setDataBoxUniforms(gl::Program& p, const Volume& volume, const Camera& volumeCamera,
+                        const Projection& proj, const DataBox& indexBox) {
   p.setMat4("uCameraToIndex", glm::mat4(cameraToIndex(volume, volumeCamera)));
-  const DataBox box = volume.indexDataBox();
-  p.setVec3("uBoxLow", glm::vec3(box.low));
-  p.setVec3("uBoxHigh", glm::vec3(box.high));
+  p.setVec3("uBoxLow", glm::vec3(indexBox.low));
+  p.setVec3("uBoxHigh", glm::vec3(indexBox.high));
   setPixelRays(p, proj);
 }
 

@@ -18,8 +18,10 @@ void setClipUniforms(gl::Program& program, const ClipRegion& region, const Volum
 
 // Sets the uniforms of shaders/covered_length.glsl: the rays of `proj`'s pixels, the camera
 // space of `volumeCamera` to voxel index coordinates and the data's box
-// (Volume::indexDataBox).
+// (Volume::indexDataBox), or `indexBox` (index coordinates) in its place.
 void setDataBoxUniforms(gl::Program& program, const Volume& volume, const Camera& volumeCamera,
                         const Projection& proj);
+void setDataBoxUniforms(gl::Program& program, const Volume& volume, const Camera& volumeCamera,
+                        const Projection& proj, const DataBox& indexBox);
 
 }  // namespace ewa

@@ -326,13 +326,16 @@ class SplatRenderer : public Renderer {
   bool drawWholeVolumeChunks(double budgetMs, Clock::time_point start);
   void drawFinalPass();
   // Starts an occlusion query in `query` counting the pixels of the volume's bounding box not
-  // yet marked opaque; false when the box is too near the eye for the test to be safe.
-  bool issueOpaqueQuery(unsigned query);
-  // True when the slab loop may stop: every pixel the bounding box covers is marked opaque.
-  // Blocking: this check's query is waited for. Lagged: the query of the check before, if its
-  // result has come (no wait; the GPU keeps drawing, and stopping up to one check later than
-  // possible only draws slabs the stencil rejects anyway, so the picture is the same).
-  bool terminationCheck();
+  // yet marked opaque whose rays still cross what the clip keeps of it at or behind depth
+  // `nextDepth` (the next slab's front); false when the box is too near the eye for the test
+  // to be safe.
+  bool issueOpaqueQuery(unsigned query, double nextDepth);
+  // True when the slab loop may stop: every pixel the slabs from depth `nextDepth` on could
+  // still reach is marked opaque. Blocking: this check's query is waited for. Lagged: the
+  // query of the check before, if its result has come (no wait; the GPU keeps drawing, and
+  // stopping up to one check later than possible only draws slabs the stencil rejects anyway,
+  // so the picture is the same).
+  bool terminationCheck(double nextDepth);
   // Ends the conditional rendering a lagged termination check began, if any.
   void endConditionalSlabs();
 

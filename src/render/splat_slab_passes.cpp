@@ -258,7 +258,7 @@ void SplatRenderer::endCompositeSlab(size_t s) {
       for (gl::Program* p : splatPrograms_.both())
         occlusion_.setUniforms(*p, kOpaqueUnit, frame_.splatScale == 1);
     }
-    if (terminationCheck()) frame_.terminated = true;
+    if (terminationCheck(slabInOrder(s + 1).nearDepth)) frame_.terminated = true;
   }
 }
 

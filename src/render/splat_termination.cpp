@@ -1,10 +1,12 @@
 // SplatRenderer's early termination: an occlusion query on the volume's box (narrowed to the
-// crop box) over the marked (opaque) pixels, read at once or lagged under conditional rendering.
+// crop box and planes, its pixels to the rays that cross what they keep) over the marked
+// (opaque) pixels, read at once or lagged under conditional rendering.
 #include <algorithm>
 #include <cmath>
 
 #include "core/clip_share.h"
 #include "core/kernel_reach.h"
+#include "render/clip_uniforms.h"
 #include "render/splat_renderer.h"
 
 namespace ewa {
@@ -37,7 +39,7 @@ glm::mat4 clipMatrix(const Projection& proj, const glm::dmat4& view, double near
 
 }  // namespace
 
-bool SplatRenderer::issueOpaqueQuery(unsigned query) {
+bool SplatRenderer::issueOpaqueQuery(unsigned query, double nextDepth) {
   const Camera& camera = frame_.camera;
   const Projection& proj = frame_.proj;
   const glm::dvec3& sp = volume_->spacing();
@@ -53,11 +55,21 @@ bool SplatRenderer::issueOpaqueQuery(unsigned query) {
   // Grow the box by what a kernel reaches beyond its centre at the farthest corner (reach
   // grows with depth), plus a pixel for rasterization; then narrow it to the crop box, where the
   // clip cuts every pixel's ray: pixels whose rays miss it get nothing and never turn opaque.
+  // The box bounds what oblique planes keep; its fragments whose rays miss that are left out
+  // too (bounds_box.frag.glsl): the planes cut every ray's share exactly where the splat
+  // shaders cut it, so they are not grown. So are those whose rays leave it before the slabs
+  // still to come (a kernel's share lies within its reach of its slab), as a ray grazing a
+  // plane or the box's edge does: it takes little opacity and then nothing more.
   const double grow = worldReach(reach, farDepth) + worldPerPixel(reach, farDepth);
   const DataBox kept = keptBoxInVolumeFrame(frame_.settings.clip, *volume_, grow);
   boxProgram_.setMat4("uClip", clipMatrix(proj, view, 0.5 * maxSpacing));
   boxProgram_.setVec3("uBoxMin", glm::vec3(kept.low));
   boxProgram_.setVec3("uBoxMax", glm::vec3(kept.high));
+  const glm::dvec3 origin = volume_->origin(), spacing = volume_->spacing();
+  setClipUniforms(boxProgram_, frame_.settings.clip, *volume_, camera, proj);
+  setDataBoxUniforms(boxProgram_, *volume_, camera, proj,
+                     DataBox{(kept.low - origin) / spacing, (kept.high - origin) / spacing});
+  boxProgram_.setFloat("uFromDepth", float(nextDepth - grow));
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glBeginQuery(GL_SAMPLES_PASSED, query);
@@ -68,10 +80,10 @@ bool SplatRenderer::issueOpaqueQuery(unsigned query) {
   return true;
 }
 
-bool SplatRenderer::terminationCheck() {
+bool SplatRenderer::terminationCheck(double nextDepth) {
   const int current = frame_.nextQuery, previous = current ^ 1;
   endConditionalSlabs();  // the check's own query counts unconditionally
-  const bool issued = issueOpaqueQuery(queries_[current]);
+  const bool issued = issueOpaqueQuery(queries_[current], nextDepth);
   if (!laggedTermination_) {
     GLuint samples = 1;
     if (issued) glGetQueryObjectuiv(queries_[current], GL_QUERY_RESULT, &samples);

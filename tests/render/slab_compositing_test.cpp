@@ -361,6 +361,22 @@ TEST_F(SlabCompositing, EarlyTerminationStopsAVolumeCutByPlanes) {
   EXPECT_GT(full.pixels[(16 * 32 + 16) * 3], 150);
 }
 
+// Four planes at 45 degrees to the view keep a diamond prism round the middle: the box that
+// bounds it is the whole volume's face, whose corners' rays cross nothing kept and never turn
+// opaque, so termination tests only the rays that cross the prism (before, it never stopped).
+TEST_F(SlabCompositing, EarlyTerminationStopsBehindObliquePlanes) {
+  RenderSettings cut = rasterSettings();
+  const glm::dvec3 centre(11.5, 11.5, 11.5);
+  for (const glm::dvec2& d : {glm::dvec2(1, 1), glm::dvec2(1, -1)})
+    for (double side : {1.0, -1.0}) {
+      const glm::dvec3 n = glm::normalize(glm::dvec3(side * d, 0.0));
+      cut.clip.planes.push_back({centre - 6.0 * n, n, true});  // keeps within 6 of the centre
+    }
+  const Image8 full = expectTerminationStopsTheOpaqueBox(*renderer(), cut);
+  EXPECT_EQ(full.pixels[0], 0);                     // a corner: cut away
+  EXPECT_GT(full.pixels[(16 * 32 + 16) * 3], 150);  // the middle: kept, opaque
+}
+
 // Primitives the GL's vertex stage put out while `draw` ran: draws that conditional rendering
 // skipped put out none.
 GLuint primitivesGenerated(const std::function<void()>& draw) {
