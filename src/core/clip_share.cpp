@@ -57,11 +57,13 @@ std::optional<DataBox> polytopeBounds(const DataBox& box, const std::vector<Half
   return DataBox{lo, hi};
 }
 
-DataBox keptBoxInVolumeFrame(const ClipRegion& region, const Volume& volume, double grow) {
+DataBox keptBoxInVolumeFrame(const ClipRegion& region, const Volume& volume, double grow,
+                             double outward) {
   const DataBox whole{volume.boundsMin() - grow, volume.boundsMax() + grow};
   if (!region.active()) return whole;
-  const std::optional<DataBox> bounds =
-      polytopeBounds(whole, halfSpacesInVolumeFrame(region, volume));
+  std::vector<HalfSpace> cuts = halfSpacesInVolumeFrame(region, volume);
+  for (HalfSpace& h : cuts) h.offset += outward;  // unit normals: moved out by `outward`
+  const std::optional<DataBox> bounds = polytopeBounds(whole, cuts);
   if (!bounds) return whole;
   const glm::dvec3& sp = volume.spacing();
   const double hair = 1e-3 * std::min({sp.x, sp.y, sp.z});

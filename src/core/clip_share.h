@@ -29,10 +29,11 @@ std::vector<HalfSpace> halfSpacesInVolumeFrame(const ClipRegion& region, const V
 // nothing is left.
 std::optional<DataBox> polytopeBounds(const DataBox& box, const std::vector<HalfSpace>& cuts);
 // The volume's box in its own frame grown by `grow` on every side (how far kernels reach out of
-// it), narrowed to what the crop box and clipping planes leave of it (polytopeBounds, a hair
-// wider for rounding), which the clip cuts every ray at: a box holding all that is drawn. The
-// grown box when nothing is clipped or nothing is left.
-DataBox keptBoxInVolumeFrame(const ClipRegion& region, const Volume& volume, double grow = 0.0);
+// it), narrowed to what the crop box and clipping planes, each moved `outward` away from what it
+// keeps, leave of it (polytopeBounds, a hair wider for rounding), which the clip cuts every ray
+// at: a box holding all that is drawn. The grown box when nothing is clipped or nothing is left.
+DataBox keptBoxInVolumeFrame(const ClipRegion& region, const Volume& volume, double grow = 0.0,
+                             double outward = 0.0);
 
 // The depths [near, far] that camera-space half-spaces keep along the ray through `pixel` (the
 // splat shaders' pixel frame: gl_FragCoord, principal point at the image centre). Depth is

@@ -22,7 +22,7 @@ void setPixelRays(gl::Program& p, const Projection& proj) {
 }  // namespace
 
 void setClipUniforms(gl::Program& p, const ClipRegion& region, const Volume& volume,
-                     const Camera& volumeCamera, const Projection& proj) {
+                     const Camera& volumeCamera, const Projection& proj, double outward) {
   const std::vector<HalfSpace> frame = halfSpacesInVolumeFrame(region, volume);
   const glm::dmat4 view = volumeCamera.viewMatrix();
   int count = 0;
@@ -30,7 +30,7 @@ void setClipUniforms(gl::Program& p, const ClipRegion& region, const Volume& vol
     if (count == int(ClipRegion::kMaxHalfSpaces)) break;
     const HalfSpace c = transformed(h, view);
     p.setVec4("uClipPlanes[" + std::to_string(count) + "]",
-              glm::vec4(glm::vec3(c.normal), float(c.offset)));
+              glm::vec4(glm::vec3(c.normal), float(c.offset + outward)));
     ++count;
   }
   p.setInt("uClipCount", count);

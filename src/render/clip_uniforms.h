@@ -12,9 +12,10 @@ namespace ewa {
 
 // Sets uClipPlanes (the region's half-spaces in the camera space of `volumeCamera`, the camera
 // that looks at `volume` in its own frame), uClipCount and uPixelRay (pixel rays of `proj`).
-// An inactive region sets uClipCount 0: the shaders then clip nothing.
+// An inactive region sets uClipCount 0: the shaders then clip nothing. `outward`: each
+// half-space moved that far away from what it keeps (world units).
 void setClipUniforms(gl::Program& program, const ClipRegion& region, const Volume& volume,
-                     const Camera& volumeCamera, const Projection& proj);
+                     const Camera& volumeCamera, const Projection& proj, double outward = 0.0);
 
 // Sets the uniforms of shaders/covered_length.glsl: the rays of `proj`'s pixels, the camera
 // space of `volumeCamera` to voxel index coordinates and the data's box

@@ -56,17 +56,24 @@ bool SplatRenderer::issueOpaqueQuery(unsigned query, double nextDepth) {
   // grows with depth), plus a pixel for rasterization; then narrow it to the crop box, where the
   // clip cuts every pixel's ray: pixels whose rays miss it get nothing and never turn opaque.
   // The box bounds what oblique planes keep; its fragments whose rays miss that are left out
-  // too (bounds_box.frag.glsl): the planes cut every ray's share exactly where the splat
-  // shaders cut it, so they are not grown. So are those whose rays leave it before the slabs
-  // still to come (a kernel's share lies within its reach of its slab), as a ray grazing a
-  // plane or the box's edge does: it takes little opacity and then nothing more.
+  // too (bounds_box.frag.glsl): the planes cut every ray's share where the splat shaders cut
+  // it, at the picture's pixels, so they are not grown; but a coarser slab image's texels are
+  // read back bilinearly, so a pixel takes the sums of texels up to one texel (s pixels) away,
+  // whose rays a plane may keep when its own is cut: there the planes move out that far. So
+  // are those whose rays leave it before the slabs still to come (a kernel's share lies within
+  // its reach of its slab), as a ray grazing a plane or the box's edge does: it takes little
+  // opacity and then nothing more.
   const double grow = worldReach(reach, farDepth) + worldPerPixel(reach, farDepth);
-  const DataBox kept = keptBoxInVolumeFrame(frame_.settings.clip, *volume_, grow);
+  const double coarsest = frame_.slabScales.empty() ? 1.0
+                                                    : *std::max_element(frame_.slabScales.begin(),
+                                                                        frame_.slabScales.end());
+  const double outward = coarsest > 1.0 ? (coarsest + 1.0) * worldPerPixel(reach, farDepth) : 0.0;
+  const DataBox kept = keptBoxInVolumeFrame(frame_.settings.clip, *volume_, grow, outward);
   boxProgram_.setMat4("uClip", clipMatrix(proj, view, 0.5 * maxSpacing));
   boxProgram_.setVec3("uBoxMin", glm::vec3(kept.low));
   boxProgram_.setVec3("uBoxMax", glm::vec3(kept.high));
   const glm::dvec3 origin = volume_->origin(), spacing = volume_->spacing();
-  setClipUniforms(boxProgram_, frame_.settings.clip, *volume_, camera, proj);
+  setClipUniforms(boxProgram_, frame_.settings.clip, *volume_, camera, proj, outward);
   setDataBoxUniforms(boxProgram_, *volume_, camera, proj,
                      DataBox{(kept.low - origin) / spacing, (kept.high - origin) / spacing});
   boxProgram_.setFloat("uFromDepth", float(nextDepth - grow));

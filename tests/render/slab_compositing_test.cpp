@@ -364,7 +364,7 @@ TEST_F(SlabCompositing, EarlyTerminationStopsAVolumeCutByPlanes) {
 // Four planes at 45 degrees to the view keep a diamond prism round the middle: the box that
 // bounds it is the whole volume's face, whose corners' rays cross nothing kept and never turn
 // opaque, so termination tests only the rays that cross the prism (before, it never stopped).
-TEST_F(SlabCompositing, EarlyTerminationStopsBehindObliquePlanes) {
+RenderSettings diamondCut() {
   RenderSettings cut = rasterSettings();
   const glm::dvec3 centre(11.5, 11.5, 11.5);
   for (const glm::dvec2& d : {glm::dvec2(1, 1), glm::dvec2(1, -1)})
@@ -372,9 +372,49 @@ TEST_F(SlabCompositing, EarlyTerminationStopsBehindObliquePlanes) {
       const glm::dvec3 n = glm::normalize(glm::dvec3(side * d, 0.0));
       cut.clip.planes.push_back({centre - 6.0 * n, n, true});  // keeps within 6 of the centre
     }
+  return cut;
+}
+
+TEST_F(SlabCompositing, EarlyTerminationStopsBehindObliquePlanes) {
+  const RenderSettings cut = diamondCut();
   const Image8 full = expectTerminationStopsTheOpaqueBox(*renderer(), cut);
   EXPECT_EQ(full.pixels[0], 0);                     // a corner: cut away
   EXPECT_GT(full.pixels[(16 * 32 + 16) * 3], 150);  // the middle: kept, opaque
+}
+
+// Close up, slabs are splatted into coarser images read back bilinearly: a pixel just outside a
+// plane or the crop box takes some of the texels inside it. Termination must wait for those
+// pixels too (the cuts it tests move out by a texel), else they miss the slabs after it: the
+// same picture as drawn without termination, at an oblique plane and at the crop box's face.
+TEST_F(SlabCompositing, EarlyTerminationKeepsCoarseSlabsAtACut) {
+  const Volume box = opaqueBox();
+  renderer()->setVolume(box);
+  renderer()->setTransferFunction(whiteTf(0.9, 1.0));
+  renderer()->setLaggedTermination(false);
+  RenderSettings cropped = rasterSettings();
+  cropped.clip.cropEnabled = true;
+  cropped.clip.cropMin = glm::dvec3(9.0, 0.0, 0.0);
+  cropped.clip.cropMax = glm::dvec3(23.0);
+  const std::pair<RenderSettings, glm::dvec3> cuts[] = {
+      {diamondCut(), {11.5 - 4.24, 11.5 - 4.24, 11.5}},  // the diamond's lower left edge
+      {cropped, {9.0, 11.5, 11.5}}};                     // the crop box's face
+  for (const auto& [settings, focus] : cuts) {
+    Camera cam = boxFrontCamera();
+    cam.focalPoint = focus;
+    cam.position = focus + glm::dvec3(0.0, 0.0, 48.5);
+    cam.viewAngleDeg = 4.0;
+    RenderSettings cut = settings;
+    cut.terminationOpacity = 1.0;
+    renderer()->render(cam, cut, 48, 48);
+    const Image8 full = renderer()->readImage();
+    ASSERT_GT(renderer()->stats().slabsCoarse, 0u) << "the close-up is drawn in coarser slabs";
+    cut.terminationOpacity = 0.99;
+    renderer()->render(cam, cut, 48, 48);
+    const Image8 early = renderer()->readImage();
+    int worst = 0;
+    EXPECT_LT(meanAbsDiff(full, early, &worst), 0.5) << "at " << focus.x;
+    EXPECT_LE(worst, 3) << "at " << focus.x;
+  }
 }
 
 // Primitives the GL's vertex stage put out while `draw` ran: draws that conditional rendering

@@ -210,6 +210,29 @@ TEST(ClipShare, PolytopeBoundsAreTheKeptCorners) {
   }
 }
 
+// The kept box of a crop, its faces moved out (termination's margin for coarser slab images):
+// the crop box grown by that much, but never beyond the volume's grown box.
+TEST(ClipShare, KeptBoxMovesTheCutsOutward) {
+  const Volume v = makeSyntheticVolume("sphere:16").volume;  // corners 0 and 15
+  ClipRegion r;
+  r.cropEnabled = true;
+  r.cropMin = {4.0, 5.0, 6.0};
+  r.cropMax = {9.0, 14.5, 12.0};
+  const DataBox tight = keptBoxInVolumeFrame(r, v, 2.0);
+  const DataBox moved = keptBoxInVolumeFrame(r, v, 2.0, 1.0);
+  const double hair = 1e-3;
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_NEAR(tight.low[a], r.cropMin[a] - hair, 1e-9);
+    EXPECT_NEAR(moved.low[a], r.cropMin[a] - 1.0 - hair, 1e-9);
+  }
+  EXPECT_NEAR(moved.high.x, 10.0 + hair, 1e-9);
+  EXPECT_NEAR(moved.high.y, 15.5 + hair, 1e-9);
+  EXPECT_NEAR(moved.high.z, 13.0 + hair, 1e-9);
+  // Moved past the volume's box grown by 2 (15 + 2): held there.
+  const DataBox far = keptBoxInVolumeFrame(r, v, 2.0, 5.0);
+  EXPECT_NEAR(far.high.y, 17.0, 1e-9);
+}
+
 TEST(ClipShare, VolumeFrameUndoesTheDirection) {
   Volume v = makeSyntheticVolume("sphere:8").volume;
   const glm::dmat3 d(glm::rotate(glm::dmat4(1.0), 0.6, glm::normalize(glm::dvec3(1, -2, 1))));
