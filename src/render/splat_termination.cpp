@@ -79,10 +79,15 @@ bool SplatRenderer::issueOpaqueQuery(unsigned query, double nextDepth) {
   boxProgram_.setFloat("uFromDepth", float(nextDepth - grow));
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  // One face of each pair the box's pixels see (its triangles turn alike, so culling either
+  // side leaves the box's outline covered once): half the fragments.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_FRONT);
   glBeginQuery(GL_SAMPLES_PASSED, query);
   glUseProgram(boxProgram_.id());
   glDrawArrays(GL_TRIANGLES, 0, 36);
   glEndQuery(GL_SAMPLES_PASSED);
+  glDisable(GL_CULL_FACE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   return true;
 }
