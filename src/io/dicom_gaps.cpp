@@ -1,4 +1,4 @@
-// Slices missing from a DICOM series: whole multiples of the step, filled by interpolation.
+// Slices of a DICOM series at uneven places: missing ones filled in, or the stack resampled.
 #include "io/dicom_gaps.h"
 
 #include <algorithm>
@@ -26,27 +26,55 @@ std::vector<int64_t> missingSlicesAfter(const std::vector<double>& steps, size_t
   return after;
 }
 
-void fillMissingSlices(std::vector<double>& values, size_t plane,
-                       const std::vector<int64_t>& missingAfter, bool integral) {
-  int64_t missing = 0;
-  for (int64_t m : missingAfter) missing += m;
-  std::vector<double> filled;
-  filled.reserve(values.size() + size_t(missing) * plane);
-  for (size_t i = 0; i <= missingAfter.size(); ++i) {
-    const auto a = values.begin() + ptrdiff_t(i * plane);
-    filled.insert(filled.end(), a, a + ptrdiff_t(plane));
-    if (i == missingAfter.size()) break;
-    const auto b = a + ptrdiff_t(plane);
+std::vector<PlaneMix> planesWithMissing(const std::vector<int64_t>& missingAfter) {
+  std::vector<PlaneMix> mix;
+  for (size_t i = 0; i < missingAfter.size(); ++i) {
+    mix.push_back({i, 0.0});
     const int64_t m = missingAfter[i];
-    for (int64_t t = 1; t <= m; ++t) {
-      const double w = double(t) / double(m + 1);  // the place between the two stored planes
-      for (size_t p = 0; p < plane; ++p) {
-        const double v = (1.0 - w) * a[ptrdiff_t(p)] + w * b[ptrdiff_t(p)];
-        filled.push_back(integral ? std::round(v) : v);
-      }
+    for (int64_t t = 1; t <= m; ++t) mix.push_back({i, double(t) / double(m + 1)});
+  }
+  mix.push_back({missingAfter.size(), 0.0});
+  return mix;
+}
+
+std::vector<PlaneMix> regularPlanes(const std::vector<double>& at) {
+  if (at.size() < 2) return {};
+  std::vector<double> steps;
+  for (size_t i = 1; i < at.size(); ++i) steps.push_back(at[i] - at[i - 1]);
+  std::sort(steps.begin(), steps.end());
+  const double median = steps[steps.size() / 2], span = at.back() - at.front();
+  // Positions far past any scanner's (a fuzzed file's) may overflow: left as they are.
+  if (!(median > 0.0) || !(span > 0.0) || !std::isfinite(span / median)) return {};
+  const double most = double(kMaxResampleFactor * at.size());
+  const size_t count = size_t(std::clamp(std::round(span / median) + 1.0, 2.0, most));
+  std::vector<PlaneMix> mix;
+  size_t below = 0;
+  for (size_t k = 0; k < count; ++k) {
+    const double z = at.front() + span * double(k) / double(count - 1);
+    while (below + 2 < at.size() && at[below + 1] <= z) ++below;
+    const double w = (z - at[below]) / (at[below + 1] - at[below]);
+    mix.push_back({below, std::clamp(w, 0.0, 1.0)});
+  }
+  return mix;
+}
+
+void mixPlanes(std::vector<double>& values, size_t plane, const std::vector<PlaneMix>& mix,
+               bool integral) {
+  std::vector<double> out;
+  out.reserve(mix.size() * plane);
+  for (const PlaneMix& m : mix) {
+    const auto a = values.begin() + ptrdiff_t(m.below * plane);
+    if (m.weight == 0.0) {
+      out.insert(out.end(), a, a + ptrdiff_t(plane));  // a stored plane, as it was
+      continue;
+    }
+    const auto b = a + ptrdiff_t(plane);
+    for (size_t p = 0; p < plane; ++p) {
+      const double v = (1.0 - m.weight) * a[ptrdiff_t(p)] + m.weight * b[ptrdiff_t(p)];
+      out.push_back(integral ? std::round(v) : v);
     }
   }
-  values.swap(filled);
+  values.swap(out);
 }
 
 }  // namespace ewa

@@ -118,12 +118,12 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   std::vector<DicomSlice> frames;
   if (slices.size() == 1 && whole.frames > 1) frames = dicomFrameSlices(whole);
   glm::dvec3 step(0.0);
-  std::vector<int64_t> missingAfter;  // slices missing after each sorted one, filled in below
+  std::vector<PlaneMix> planes;  // uneven steps: the regular planes made below, else empty
   if (!frames.empty()) {
     // An enhanced file of several volumes (diffusion, time points): the one asked for.
     frames = selectDicomVolume(path, std::move(frames), frame, layout.notes, &layout.frameCount);
     try {
-      step = sortDicomSlices(path, frames, layout.notes, &missingAfter);
+      step = sortDicomSlices(path, frames, layout.notes, &planes);
       slices = frames;
     } catch (const LoadError& e) {
       // Frames at one place (a time series) or turned: kept whole, as a plain multi-frame file
@@ -142,13 +142,12 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
     if (const auto cine = stackOnePosition(slices, layout.notes))
       step = *cine;
     else
-      step = sortDicomSlices(path, slices, layout.notes, &missingAfter);
+      step = sortDicomSlices(path, slices, layout.notes, &planes);
   }
   layout.frame = frame;  // in range: selectDicomVolume checked it
   const DicomSlice& base = slices.front();
-  int64_t missing = 0;
-  for (int64_t m : missingAfter) missing += m;
-  layout.dims = {base.columns, base.rows, int64_t(slices.size()) * base.frames + missing};
+  const int64_t stored = int64_t(slices.size()) * base.frames;
+  layout.dims = {base.columns, base.rows, planes.empty() ? stored : int64_t(planes.size())};
   if (!base.hasSpacing) layout.notes.push_back("no PixelSpacing: 1 assumed");
   if (base.samplesPerPixel > 1)
     layout.notes.push_back((base.photometric.rfind("YBR", 0) == 0
@@ -173,8 +172,11 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
     layout.notes.push_back("multi-frame file: slice spacing 1 assumed");
   }
   layout.origin = base.position;
-  const uint64_t total = dataByteCount(path, layout.dims, FileScalar::Float32);
-  checkAllocation(path, total * 2, "DICOM values");  // doubles while rescaling
+  // Doubles while rescaling: the planes made, and the stored ones they are made from.
+  uint64_t total = dataByteCount(path, layout.dims, FileScalar::Float32);
+  if (!planes.empty())
+    total += dataByteCount(path, {base.columns, base.rows, stored}, FileScalar::Float32);
+  checkAllocation(path, total * 2, "DICOM values");
 
   std::vector<double> values;
   bool integral = true, sameRescale = true, sameType = true;
@@ -203,9 +205,8 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
                      values.begin() + ptrdiff_t(size_t(s.frame + 1) * plane));
     values.swap(ordered);
   }
-  if (missing > 0)
-    fillMissingSlices(values, size_t(base.columns) * size_t(base.rows), missingAfter,
-                      integral && sameRescale);
+  if (!planes.empty())
+    mixPlanes(values, size_t(base.columns) * size_t(base.rows), planes, integral && sameRescale);
   if (!sameRescale) {
     integral = false;  // float32: per-slice scales rarely land on integers
     layout.notes.push_back("rescale slope or intercept differ between slices: float32");

@@ -283,8 +283,8 @@ std::string namedSeries(const std::vector<DicomSeries>& all) {
 }
 
 glm::dvec3 sortDicomSlices(const std::string& path, std::vector<DicomSlice>& slices,
-                           std::vector<std::string>& notes, std::vector<int64_t>* missingAfter) {
-  if (missingAfter) missingAfter->clear();
+                           std::vector<std::string>& notes, std::vector<PlaneMix>* planes) {
+  if (planes) planes->clear();
   if (slices.size() < 2) return glm::dvec3(0.0);
   const DicomSlice& first = slices.front();
   for (const DicomSlice& s : slices) {
@@ -311,30 +311,50 @@ glm::dvec3 sortDicomSlices(const std::string& path, std::vector<DicomSlice>& sli
     gaps.push_back(gap);
   }
   const glm::dvec3 span = slices.back().position - slices.front().position;
-  if (missingAfter) {
-    *missingAfter = missingSlicesAfter(gaps, slices.size());
-    int64_t missing = 0;
-    for (int64_t m : *missingAfter) missing += m;
-    if (missing > 0) {
+  if (planes) {
+    const std::vector<int64_t> missingAfter = missingSlicesAfter(gaps, slices.size());
+    if (!missingAfter.empty()) {
+      *planes = planesWithMissing(missingAfter);
+      const size_t missing = planes->size() - slices.size();
       const double step = *std::min_element(gaps.begin(), gaps.end());
       notes.push_back("warning: " + std::to_string(missing) + " missing slice" +
                       (missing > 1 ? "s" : "") + " (gaps of whole multiples of the step, " +
                       std::to_string(step) +
                       "): filled in by linear interpolation between their neighbours");
-      return span / double(slices.size() - 1 + size_t(missing));
+      return span / double(planes->size() - 1);
     }
   }
   std::vector<double> sorted = gaps;
   std::sort(sorted.begin(), sorted.end());
   const double median = sorted[sorted.size() / 2];
   const double lo = sorted.front(), hi = sorted.back();
+  const bool uneven = hi - lo > 0.01 * median;
+  std::string done = "drawn evenly spaced";
+  std::vector<double> at;
+  for (const DicomSlice& s : slices) at.push_back(glm::dot(s.position, normal));
+  // How far drawing the slices evenly spaced would move one from its place.
+  double misplaced = 0.0;
+  for (size_t i = 0; i < at.size(); ++i)
+    misplaced =
+        std::max(misplaced, std::abs(at[i] - at.front() -
+                                     (at.back() - at.front()) * double(i) / double(at.size() - 1)));
+  if (planes && uneven && misplaced > kMaxMisplacedSlice * median) {
+    // The stack resampled onto regular steps, so that it keeps its true shape; a slice or two
+    // a hair off (rounded positions) is drawn evenly spaced, unblurred.
+    *planes = regularPlanes(at);
+    if (!planes->empty())
+      done = "resampled onto " + std::to_string(planes->size()) + " slices " +
+             std::to_string((at.back() - at.front()) / double(planes->size() - 1)) +
+             " apart, each linear between the slices either side";
+  }
   if (hi > 1.5 * median) {
     notes.push_back("warning: a gap of " + std::to_string(hi) + " between slices where most are " +
-                    std::to_string(median) + ": missing slices? drawn evenly spaced");
-  } else if (hi - lo > 0.01 * median) {
+                    std::to_string(median) + ": missing slices? " + done);
+  } else if (uneven) {
     notes.push_back("warning: uneven slice spacing (" + std::to_string(lo) + " to " +
-                    std::to_string(hi) + "); drawn evenly spaced");
+                    std::to_string(hi) + "); " + done);
   }
+  if (planes && !planes->empty()) return span / double(planes->size() - 1);
   // The mean step: along the normal, or oblique when the gantry was tilted.
   return span / double(slices.size() - 1);
 }

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "io/dicom_gaps.h"
+
 namespace ewa {
 
 // One image file of a series, with the header values the volume is built from.
@@ -82,14 +84,15 @@ std::vector<double> dicomNumbers(const char* text);
 // Sorts the slices by their position along the slice normal (row x column cosines), never by
 // name. Throws LoadError naming `path` when slices share a position or their orientations
 // differ. Returns the slice step vector (mean of the steps between neighbours) and adds
-// warnings (uneven spacing, missing slices) to `notes`. With `missingAfter`, steps that are
-// whole multiples of the series' step (missingSlicesAfter, dicom_gaps.h) fill it with the
-// slices missing after each one (else it is cleared), the step returned is the series' own and
-// the warning says they are filled in (fillMissingSlices); without it, the volume is drawn
-// evenly spaced.
+// warnings (uneven spacing, missing slices) to `notes`. With `planes`, uneven steps are made
+// regular (else it is cleared): steps that are whole multiples of the series' step
+// (missingSlicesAfter, dicom_gaps.h) get the missing slices filled in (planesWithMissing),
+// other uneven steps a regular stack resampled from the slices (regularPlanes); `planes` then
+// says how to make each plane from the sorted slices (mixPlanes), the step returned is the
+// regular one and the warning says so. Without it, the volume is drawn evenly spaced.
 glm::dvec3 sortDicomSlices(const std::string& path, std::vector<DicomSlice>& slices,
                            std::vector<std::string>& notes,
-                           std::vector<int64_t>* missingAfter = nullptr);
+                           std::vector<PlaneMix>* planes = nullptr);
 
 // Whether the series scanner (gdcm::Scanner) reads this tag from every file; its string filter
 // asserts on a VR it has no conversion for (UV, found by fuzzing), so dicom_guard checks these

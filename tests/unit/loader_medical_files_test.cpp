@@ -739,7 +739,8 @@ TEST(DicomFiles, CorruptFilesBesideASeriesAreSkippedWithAWarning) {
 
 // Slices 2 mm apart but for a gap of 4 mm: the missing slice is filled in, linear between its
 // neighbours (the test slices' values are linear in z), so the volume keeps its true extent. A
-// gap of 2.5 steps is no missing slice: the stack is drawn evenly spaced, with a warning.
+// gap of 2.5 steps is no missing slice: the stack is resampled onto regular steps, with a
+// warning (before 2026-12-03 it was drawn evenly spaced, squeezing the gap).
 TEST(DicomFiles, MissingSlicesAreFilledIn) {
   TempDir dir;
   testing::DicomSliceSpec spec;
@@ -772,16 +773,36 @@ TEST(DicomFiles, MissingSlicesAreFilledIn) {
   ASSERT_EQ(run.dims()[2], 8);
   for (int k = 0; k < 8; ++k) EXPECT_EQ(run.value(0, 0, k), 200 * k) << k;
   EXPECT_NE(run.notes()[0].find("warning: 3 missing slices"), std::string::npos) << run.notes()[0];
-  // Not a whole multiple, or more missing than stored: drawn evenly spaced, as before.
+  // Not a whole multiple: resampled onto 6 steps of 11/6 mm from the first slice to the last,
+  // each plane linear between the slices either side (the values are linear in z), rounded.
   write("odd", {0, 2, 4, 9, 11});
   const Volume odd = loadVolume(dir.path("odd"));
-  EXPECT_EQ(odd.dims()[2], 5);
+  ASSERT_EQ(odd.dims()[2], 7);
+  EXPECT_NEAR(odd.spacing().z, 11.0 / 6.0, 1e-9);
+  EXPECT_EQ(odd.type(), ScalarType::Int16);
+  for (int k = 0; k < 7; ++k)
+    EXPECT_EQ(odd.value(1, 2, k), std::round(1 + 20 + 100 * 11.0 * k / 6.0)) << k;
   EXPECT_NE(odd.notes()[0].find("warning: a gap of 5.000000 between slices where most are "
-                                "2.000000: missing slices? drawn evenly spaced"),
+                                "2.000000: missing slices? resampled onto 7 slices 1.833333 "
+                                "apart, each linear between the slices either side"),
             std::string::npos)
       << odd.notes()[0];
+  // More missing than stored: still resampled, to at most twice the slices stored.
   write("far", {0, 2, 4, 40});
-  EXPECT_EQ(loadVolume(dir.path("far")).dims()[2], 4);
+  const Volume far = loadVolume(dir.path("far"));
+  EXPECT_EQ(far.dims()[2], 8);
+  EXPECT_NEAR(far.spacing().z, 40.0 / 7.0, 1e-9);
+  // Positions a hair off a regular step (rounded in the files): drawn evenly spaced, unblurred.
+  spec.position = {0, 0, 0};
+  std::filesystem::create_directories(dir.path("hair"));
+  for (int k = 0; k < 5; ++k) {
+    spec.position = {0, 0, 2.0 * k + (k == 2 ? 0.05 : 0.0)};
+    ASSERT_TRUE(testing::writeDicomSlice(dir.path("hair/" + std::to_string(k) + ".dcm"), spec));
+  }
+  const Volume hair = loadVolume(dir.path("hair"));
+  EXPECT_EQ(hair.dims()[2], 5);
+  EXPECT_TRUE(testing::hasNoteWith(hair, "uneven slice spacing")) << hair.notes()[0];
+  EXPECT_TRUE(testing::hasNoteWith(hair, "drawn evenly spaced"));
 }
 
 TEST(TiffFiles, MultiPageTypesChannelsAndImageJSpacing) {
