@@ -330,18 +330,18 @@ glm::dvec3 sortDicomSlices(const std::string& path, std::vector<DicomSlice>& sli
   const double lo = sorted.front(), hi = sorted.back();
   const bool uneven = hi - lo > 0.01 * median;
   std::string done = "drawn evenly spaced";
-  std::vector<double> at;
-  for (const DicomSlice& s : slices) at.push_back(glm::dot(s.position, normal));
-  // How far drawing the slices evenly spaced would move one from its place.
-  double misplaced = 0.0;
-  for (size_t i = 0; i < at.size(); ++i)
-    misplaced =
-        std::max(misplaced, std::abs(at[i] - at.front() -
-                                     (at.back() - at.front()) * double(i) / double(at.size() - 1)));
-  if (planes && uneven && misplaced > kMaxMisplacedSlice * median) {
+  if (planes && uneven) {
+    std::vector<double> at;
+    for (const DicomSlice& s : slices) at.push_back(glm::dot(s.position, normal));
+    // How far drawing the slices evenly spaced would move one from its place.
+    double misplaced = 0.0;
+    for (size_t i = 0; i < at.size(); ++i)
+      misplaced = std::max(misplaced,
+                           std::abs(at[i] - at.front() -
+                                    (at.back() - at.front()) * double(i) / double(at.size() - 1)));
     // The stack resampled onto regular steps, so that it keeps its true shape; a slice or two
     // a hair off (rounded positions) is drawn evenly spaced, unblurred.
-    *planes = regularPlanes(at);
+    if (misplaced > kMaxMisplacedSlice * median) *planes = regularPlanes(at);
     if (!planes->empty())
       done = "resampled onto " + std::to_string(planes->size()) + " slices " +
              std::to_string((at.back() - at.front()) / double(planes->size() - 1)) +
