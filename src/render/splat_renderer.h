@@ -14,6 +14,7 @@
 #include "core/slab_rect.h"
 #include "core/splat_attributes.h"
 #include "core/splat_set.h"
+#include "core/step_cost_model.h"
 #include "core/two_way_tuner.h"
 #include "gl/buffer.h"
 #include "gl/program.h"
@@ -275,10 +276,10 @@ class SplatRenderer : public Renderer {
   void setSlabLoopState();
   // Front to back with a termination opacity below 1: the stencil marks opaque pixels.
   bool terminates() const;
-  // One slab of the front-to-back or back-to-front loop (index in drawing order): its splats
-  // (drawSlabRange: entries [first, first + count) of them, into the cleared slab buffer), the
-  // blend under (over) the image and, every few slabs, the early-termination check.
-  void drawCompositeSlab(size_t slabIndex);
+  // One slab of the front-to-back or back-to-front loop (index in drawing order): its images
+  // cleared (begin), its splats (drawSlabRange: entries [first, first + count) of them, in one
+  // or more ranges), the blend under (over) the image and, every few slabs, the
+  // early-termination check (endCompositeSlab: the slab's finish).
   void beginCompositeSlab(size_t slabIndex);
   // Which slab image (RenderTargets::slabImage) slab `slabIndex` of the drawing order sums
   // into: alternating with paired slabs, else 0.
@@ -318,6 +319,9 @@ class SplatRenderer : public Renderer {
   static void scissorTo(const PixelRect& rect);
   void drawSlabRange(size_t slabIndex, size_t first, size_t count);
   void endCompositeSlab(size_t slabIndex);
+  // Whether finishing slab `slabIndex` also marks the opaque pixels and checks for early
+  // termination (every few slabs, front to back).
+  bool finishChecks(size_t slabIndex) const;
   const Slab& slabInOrder(size_t slabIndex) const;
   // Where slab `slabIndex` of the drawing order sits in frame_.slabs.
   size_t slabPosition(size_t slabIndex) const;
@@ -441,6 +445,7 @@ class SplatRenderer : public Renderer {
     bool tilesFirstUse = false;        // tiles: programs compiled or the splatter made for it
     bool indirect = false;          // GPU slabs whose counts only the GPU knows (empty ones kept)
     size_t nextSlab = 0;            // composite: the next slab in drawing order
+    bool finishPending = false;     // composite: nextSlab's entries are drawn, its finish not
     bool terminated = false;        // early termination ended the slab loop
     bool occlusion = false;         // occlusion culling in this frame (front to back, terminating)
     bool gradientsPending = false;  // ray normals: the gradient texture is still being built
@@ -457,11 +462,8 @@ class SplatRenderer : public Renderer {
   };
   FrameState frame_;
   std::future<void> pendingPartition_;  // the CPU partition of frame_ on a worker thread
-  // Folds a chunk's measured time into the cost model below.
-  void updateCostModel(double ms, size_t entries, size_t slabEnds);
-  // Measured, kept across frames (0: not yet): ms per splat entry drawn and per slab finished.
-  double msPerEntry_ = 0.0;
-  double msPerSlabEnd_ = 0.0;
+  // Measured, kept across frames: what budgeted steps' entries and slab finishes cost.
+  StepCostModel stepCost_;
 };
 
 }  // namespace ewa

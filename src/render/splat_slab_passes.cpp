@@ -194,7 +194,6 @@ void SplatRenderer::blitCoarseMarks(size_t s) {
 void SplatRenderer::endCompositeSlab(size_t s) {
   const RenderSettings& settings = frame_.settings;
   const bool frontToBack = settings.order == CompositeOrder::FrontToBack;
-  const bool terminate = frontToBack && settings.terminationOpacity < 1.0;
   const size_t n = frame_.slabs.size();
   // Between slabs: 1 - exp(-depth) composited under (front to back) or over (back to front).
   if (slabScale(s) > 1.0) blitCoarseMarks(s);
@@ -236,7 +235,7 @@ void SplatRenderer::endCompositeSlab(size_t s) {
   glDepthMask(GL_TRUE);  // clears respect the mask
   ++stats_.slabsDrawn;
   if (slabScale(s) > 1) ++stats_.slabsCoarse;
-  if (terminate && (s + 1) % kCheckEvery == 0 && s + 1 < n) {
+  if (finishChecks(s)) {
     // Mark pixels that reached the threshold; later splat fragments there fail the stencil.
     // Only the slabs composited since the last marks changed the image: their rectangles.
     if (slabScissor_ && frame_.slabRects.size() == n) scissorTo(frame_.markRect);
@@ -262,16 +261,14 @@ void SplatRenderer::endCompositeSlab(size_t s) {
   }
 }
 
+bool SplatRenderer::finishChecks(size_t s) const {
+  return terminates() && (s + 1) % kCheckEvery == 0 && s + 1 < frame_.slabs.size();
+}
+
 bool SplatRenderer::slabsAdjacent(const Slab& a, const Slab& b) {
   const double gap =
       std::min(std::abs(a.farDepth - b.nearDepth), std::abs(b.farDepth - a.nearDepth));
   return gap <= 1e-6 * std::max(a.farDepth - a.nearDepth, b.farDepth - b.nearDepth);
-}
-
-void SplatRenderer::drawCompositeSlab(size_t s) {
-  beginCompositeSlab(s);
-  drawSlabRange(s, 0, slabInOrder(s).count);
-  endCompositeSlab(s);
 }
 
 }  // namespace ewa

@@ -11,11 +11,14 @@
 namespace ewa {
 
 bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
-  // Cost model, measured per chunk: msPerEntry_ per splat entry drawn and msPerSlabEnd_ per
-  // slab finished (clear, blend under the image, termination check: passes over the whole
-  // image). A chunk holds whole slabs while they fit; a slab too costly for the time left is
-  // drawn in ranges of entries over several steps (its sums are order-independent, so the
-  // picture is the same).
+  // Cost model (stepCost_), measured per chunk: a price per splat entry drawn, per slab
+  // finished (clear, blend under the image) and per opacity check (marks and termination test,
+  // every few finishes). A chunk holds whole slabs while they fit; a slab too costly for the
+  // time left is drawn in ranges of entries over several steps (its sums are order-independent,
+  // so the picture is the same), and its finish, passes over the slab's rectangle that on
+  // llvmpipe at 1024x768 cost more than a UI frame's whole budget, waits for the next step
+  // where the entries have spent this one's (else that UI frame takes both: 55-75 ms, and over
+  // 100 ms with a present, against a 30 ms budget).
   // Entries drawn before anything is measured, and the fewest a range holds; both fewer where
   // the largest footprints are huge (a small volume filling the window: a few of its splats
   // cost as much as thousands of an ordinary view's).
@@ -31,71 +34,72 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
   while (!finished()) {
     // Milliseconds this chunk may take, and what it is expected to take so far.
     const double allowed = unlimited ? budgetMs : budgetMs - millisecondsSince(start);
-    const bool measured = msPerEntry_ > 0.0;
+    const bool measured = stepCost_.measured();
     const auto chunkStart = Clock::now();
-    size_t entries = 0, ends = 0;
+    size_t entries = 0, ends = 0, checks = 0;
     double expected = 0.0;
+    const auto draw = [&](size_t s, size_t take) {
+      drawSlabRange(s, frame_.nextEntry, take);
+      frame_.nextEntry += take;
+      entries += take;
+      expected += stepCost_.msPerEntry() * double(take);
+      frame_.drawnWeight += double(take);
+    };
+    const auto finish = [&](size_t s) {
+      const bool check = finishChecks(s);
+      endCompositeSlab(s);
+      ++ends;
+      checks += check ? 1 : 0;
+      expected += stepCost_.finishMs(check);
+      frame_.drawnWeight += frame_.meanEntries;
+      frame_.nextEntry = 0;
+      frame_.finishPending = false;
+      ++frame_.nextSlab;
+    };
     while (!finished() && (entries + ends == 0 || expected < allowed)) {
       const size_t s = frame_.nextSlab;
+      const double finishMs = stepCost_.finishMs(finishChecks(s));
+      if (frame_.finishPending) {  // a step's first work, or where it fits
+        if (entries + ends > 0 && expected + finishMs > allowed) break;
+        finish(s);
+        continue;
+      }
       const size_t count = slabInOrder(s).count;
-      const double wholeMs = msPerEntry_ * double(count) + msPerSlabEnd_;
+      const double wholeMs = stepCost_.msPerEntry() * double(count) + finishMs;
       if (frame_.nextEntry == 0 &&
           (unlimited || (measured && expected + wholeMs <= allowed) ||
            (!measured && entries + count <= kFirstChunk && ends < kFirstSlabEnds))) {
-        drawCompositeSlab(s);
-        entries += count;
-        ++ends;
-        expected += wholeMs;
-        frame_.drawnWeight += double(count) + frame_.meanEntries;
-        ++frame_.nextSlab;
+        beginCompositeSlab(s);
+        draw(s, count);
+        finish(s);
         continue;
       }
       if (frame_.nextEntry == 0) beginCompositeSlab(s);
       const double left = double(count - frame_.nextEntry);
       const double fit =
-          measured ? (allowed - expected) / msPerEntry_ : double(kFirstChunk - entries);
-      const size_t take = size_t(std::clamp(fit, std::min(double(kMinRange), left), left));
-      drawSlabRange(s, frame_.nextEntry, take);
-      frame_.nextEntry += take;
-      entries += take;
-      expected += msPerEntry_ * double(take);
-      frame_.drawnWeight += double(take);
+          measured ? (allowed - expected) / stepCost_.msPerEntry() : double(kFirstChunk - entries);
+      draw(s, size_t(std::clamp(fit, std::min(double(kMinRange), left), left)));
       if (frame_.nextEntry == count) {
-        endCompositeSlab(s);
-        ++ends;
-        expected += msPerSlabEnd_;
-        frame_.drawnWeight += frame_.meanEntries;
-        frame_.nextEntry = 0;
-        ++frame_.nextSlab;
+        if (!measured || expected + finishMs <= allowed)
+          finish(s);
+        else
+          frame_.finishPending = true;
       }
       if (!measured) break;  // one measurement before planning more
     }
     if (unlimited) continue;
     // llvmpipe does the GL work by glFinish: the chunk's time is only known after it.
     glFinish();
-    updateCostModel(millisecondsSince(chunkStart), entries, ends);
-    const double nextMs = msPerEntry_ * double(kMinRange) + msPerSlabEnd_;
+    stepCost_.update(millisecondsSince(chunkStart), entries, ends, checks);
+    const double nextMs = frame_.finishPending ? stepCost_.finishMs(finishChecks(frame_.nextSlab))
+                                               : stepCost_.msPerEntry() * double(kMinRange) +
+                                                     stepCost_.finishMs(false);
     if (millisecondsSince(start) + nextMs > budgetMs) break;
   }
   endConditionalSlabs();  // the window draws between steps, the final pass after the last
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_SCISSOR_TEST);
   return finished();
-}
-
-void SplatRenderer::updateCostModel(double ms, size_t entries, size_t slabEnds) {
-  // Up at once, down slowly: an overestimate costs a little speed, an underestimate a
-  // stalled window.
-  const auto blend = [](double old, double now) {
-    return old > 0.0 && now < old ? 0.5 * (old + now) : now;
-  };
-  if (slabEnds == 0 || msPerEntry_ <= 0.0) {
-    // Without a known per-entry cost the whole time is charged to the entries (safe: high).
-    msPerEntry_ = blend(msPerEntry_, ms / double(std::max<size_t>(entries, 1)));
-    return;
-  }
-  const double rest = std::max(0.0, ms - msPerEntry_ * double(entries));
-  msPerSlabEnd_ = blend(msPerSlabEnd_, rest / double(slabEnds));
 }
 
 bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point start) {
@@ -123,7 +127,7 @@ bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point sta
     size_t count = all.count - frame_.nextEntry;
     if (!unlimited) {
       const double left = budgetMs - millisecondsSince(start);
-      const double fit = msPerEntry_ > 0.0 ? left / msPerEntry_ : double(kFirstChunk);
+      const double fit = stepCost_.measured() ? left / stepCost_.msPerEntry() : double(kFirstChunk);
       count = size_t(std::clamp(fit, double(std::min(kMinChunk, count)), double(count)));
     }
     Slab range = all;
@@ -136,8 +140,8 @@ bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point sta
     frame_.drawnWeight += double(count);
     if (unlimited) continue;
     glFinish();
-    updateCostModel(millisecondsSince(chunkStart), count, 0);
-    if (millisecondsSince(start) + msPerEntry_ * double(kMinChunk) > budgetMs) break;
+    stepCost_.update(millisecondsSince(chunkStart), count, 0, 0);
+    if (millisecondsSince(start) + stepCost_.msPerEntry() * double(kMinChunk) > budgetMs) break;
   }
   glBlendEquation(GL_FUNC_ADD);
   stats_.slabsDrawn = 1;

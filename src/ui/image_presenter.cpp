@@ -25,6 +25,15 @@ void ImagePresenter::present(unsigned texture, int texWidth, int texHeight, int 
   glNamedFramebufferTexture(source_.id(), GL_COLOR_ATTACHMENT0, texture, 0);
   // Same size (the usual case, the image is rendered at the framebuffer size): an exact copy.
   const bool sameSize = texWidth == fbWidth && texHeight == fbHeight;
+  if (!sameSize && !warmedExactCopy_) {
+    // The window's first pictures are coarse ones, stretched; the exact copy's first use would
+    // fall on the frame that shows full quality (llvmpipe compiles a blit shader per filter and
+    // formats at its first draw: 35-45 ms, more than the rest of that frame). One pixel copied
+    // now, with the filter the full picture will use, is drawn over by the stretch below.
+    glBlitNamedFramebuffer(source_.id(), 0, 0, 0, 1, 1, 0, 0, 1, 1, GL_COLOR_BUFFER_BIT,
+                           GL_NEAREST);
+    warmedExactCopy_ = true;
+  }
   glBlitNamedFramebuffer(source_.id(), 0, 0, 0, texWidth, texHeight, 0, 0, fbWidth, fbHeight,
                          GL_COLOR_BUFFER_BIT, sameSize ? GL_NEAREST : GL_LINEAR);
 }

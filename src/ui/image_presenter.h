@@ -16,7 +16,8 @@ class ImagePresenter {
   void present(unsigned texture, int texWidth, int texHeight, int fbWidth, int fbHeight);
 
  private:
-  gl::Framebuffer source_;  // wraps the texture as a blit source
+  gl::Framebuffer source_;        // wraps the texture as a blit source
+  bool warmedExactCopy_ = false;  // the same-size blit has been drawn once
 };
 
 }  // namespace ewa

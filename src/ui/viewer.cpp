@@ -273,6 +273,9 @@ void ViewerWindow::logFrame(double ms) {
     std::fprintf(
         stderr, "ewaview: frame %.1f ms, refining %.0f%% (step %.1f ms, next budget %.0f ms)\n", ms,
         100.0 * refinement_.progress(lod_), refinement_.lastStepMs(), refinement_.budgetMs());
+  else if (finished)  // the frame of the refinement's last step, its final pass included
+    std::fprintf(stderr, "ewaview: frame %.1f ms, level %d (last step %.1f ms)\n", ms,
+                 lod_.lastLevel(), refinement_.lastStepMs());
   else
     std::fprintf(stderr, "ewaview: frame %.1f ms, level %d\n", ms, lod_.lastLevel());
   if (finished)

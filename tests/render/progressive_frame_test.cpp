@@ -185,6 +185,46 @@ TEST_F(ProgressiveFrame, AmpleBudgetFinishesInOneStep) {
   }
 }
 
+// Once its prices are measured, a step whose entries have spent its budget leaves the slab's
+// finish (the passes over its rectangle, on llvmpipe dearer than a UI frame's whole budget) to
+// the next step, instead of taking both in one UI frame; the picture is the same.
+TEST_F(ProgressiveFrame, SpentStepLeavesTheSlabsFinishToTheNext) {
+  const SyntheticVolume s = makeSyntheticVolume("marschner-lobb:32");
+  SplatRenderer& r = *renderer();
+  r.setPartition(PartitionMode::Cpu);  // entries counted as they are drawn
+  r.setVolume(s.volume);
+  r.setTransferFunction(*s.transferFunction);
+  RenderSettings settings = rasterSettings();     // stepped slab by slab
+  settings.slabThickness = 1.0;                   // many slabs, each of several ranges
+  settings.slabPrecision = SlabPrecision::Float;  // see TinyBudgetStepsGiveRendersPicture
+  Camera cam;
+  cam.frame(s.volume.boundsMin(), s.volume.boundsMax(), {0.2, 0.3, 1.0}, {0, 1, 0}, 1.0);
+  r.render(cam, settings, 64, 64);
+  const Image8 whole = r.readImage();
+  const RenderStats wholeStats = r.stats();
+  ASSERT_GT(wholeStats.slabEntries / wholeStats.slabsDrawn, 512u);  // ranges, then a finish
+  r.beginFrame(cam, settings, 64, 64);
+  RenderStats before = r.stats();
+  int steps = 0, drawingSteps = 0, both = 0, finishesAlone = 0;
+  for (bool done = false; !done && steps < 100000; ++steps) {
+    done = r.stepFrame(kTinyBudgetMs);
+    const RenderStats now = r.stats();
+    const bool drew = now.slabEntries > before.slabEntries;
+    const bool finished = now.slabsDrawn > before.slabsDrawn;
+    // The first step that draws (after the partition's), before anything is measured, may
+    // draw whole slabs.
+    if (drawingSteps > 0 && drew && finished) ++both;
+    if (finished && !drew) ++finishesAlone;
+    drawingSteps += drew || finished;
+    before = now;
+  }
+  EXPECT_EQ(both, 0);
+  EXPECT_GE(finishesAlone, int(wholeStats.slabsDrawn) - 4);
+  EXPECT_EQ(before.slabsDrawn, wholeStats.slabsDrawn);
+  EXPECT_EQ(before.slabEntries, wholeStats.slabEntries);
+  EXPECT_LE(maxDifference(r.readImage(), whole), 1);
+}
+
 // A new beginFrame abandons the frame under way: the next one starts clean.
 TEST_F(ProgressiveFrame, AbandonedFrameLeavesNoTrace) {
   const SyntheticVolume s = makeSyntheticVolume("sphere:24");
