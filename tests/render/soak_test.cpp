@@ -1,7 +1,7 @@
-// Soak test: 2,000 frames through every mode and path (composite both ways, x-ray, MIP, shading,
-// surface splats, the quad path, many slabs, the shear-warp renderer) while settings, transfer
-// functions, volumes, image sizes and whole renderers change; the number of live GL objects and
-// the process memory stay flat.
+// Soak test: 2,000 frames (1,000 under ASan) through every mode and path (composite both ways,
+// x-ray, MIP, shading, surface splats, the quad path, many slabs, the shear-warp renderer) while
+// settings, transfer functions, volumes, image sizes and whole renderers change; the number of live
+// GL objects and the process memory stay flat.
 #include <malloc.h>
 #include <unistd.h>
 
@@ -136,7 +136,10 @@ TEST_F(Soak, TwoThousandFramesLeakNoGlObjectsAndNoMemory) {
   };
   const TransferFunction tfs[] = {whiteTf(0.3, 1.0), whiteTf(0.9, 0.5), whiteTf(0.05, 1.0)};
   const FilterMode filters[] = {FilterMode::Ewa, FilterMode::Swan, FilterMode::Plain};
-  const int kFrames = 2000, kWarmUp = 300;
+  // Under ASan (CI's second run) 1,000 frames: the memory bounds are skipped there (below), and
+  // the GL object counts and LeakSanitizer see the same paths, renderers made twice over, at
+  // half the time (118 s of that run at 2,000).
+  const int kFrames = kAddressSanitizer ? 1000 : 2000, kWarmUp = 300;
   GlObjectCount afterWarmUp;
   long rssAfterWarmUp = 0, heapSteadyStart = 0;
   SoakCoverage seen;
@@ -211,13 +214,14 @@ TEST_F(Soak, TwoThousandFramesLeakNoGlObjectsAndNoMemory) {
       "splats %d, quad path %d, >= 40 slabs %d (most %zu), shear-warp %d frames\n",
       seen.composite, seen.xray, seen.mip, seen.shaded, seen.backToFront, seen.surface, seen.quads,
       seen.manySlabs, seen.mostSlabs, seen.shearWarp);
-  EXPECT_GT(seen.xray, 100);
-  EXPECT_GT(seen.mip, 100);
-  EXPECT_GT(seen.shaded, 100);
-  EXPECT_GT(seen.backToFront, 100);
-  EXPECT_GT(seen.surface, 100);
-  EXPECT_GT(seen.quads, 100);
-  EXPECT_GT(seen.manySlabs, 100);
+  const int each = kFrames / 20;  // every path in more than one frame of 20 (2,000: 100)
+  EXPECT_GT(seen.xray, each);
+  EXPECT_GT(seen.mip, each);
+  EXPECT_GT(seen.shaded, each);
+  EXPECT_GT(seen.backToFront, each);
+  EXPECT_GT(seen.surface, each);
+  EXPECT_GT(seen.quads, each);
+  EXPECT_GT(seen.manySlabs, each);
   // The same renderer count and the same kinds of objects as after the warm-up.
   const GlObjectCount atEnd = countGlObjects();
   EXPECT_EQ(atEnd, afterWarmUp) << "after warm-up: " << afterWarmUp << "; at the end: " << atEnd;
