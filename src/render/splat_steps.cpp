@@ -58,14 +58,15 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
     };
     while (!finished() && (entries + ends == 0 || expected < allowed)) {
       const size_t s = frame_.nextSlab;
-      const double finishMs = stepCost_.finishMs(finishChecks(s));
+      const bool check = finishChecks(s);
+      const double finishMs = stepCost_.finishMs(check);
       if (frame_.finishPending) {  // a step's first work, or where it fits
         if (entries + ends > 0 && expected + finishMs > allowed) break;
         finish(s);
         continue;
       }
       const size_t count = slabInOrder(s).count;
-      const double wholeMs = stepCost_.msPerEntry() * double(count) + finishMs;
+      const double wholeMs = stepCost_.slabMs(count, check);
       if (frame_.nextEntry == 0 &&
           (unlimited || (measured && expected + wholeMs <= allowed) ||
            (!measured && entries + count <= kFirstChunk && ends < kFirstSlabEnds))) {
