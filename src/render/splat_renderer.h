@@ -279,13 +279,13 @@ class SplatRenderer : public Renderer {
   // One slab of the front-to-back or back-to-front loop (index in drawing order): its images
   // cleared (begin), its splats (drawSlabRange: entries [first, first + count) of them, in one
   // or more ranges), the blend under (over) the image and, every few slabs, the
-  // early-termination check (endCompositeSlab: the slab's finish).
+  // early-termination check (passSlabRows and closeSlab: the slab's finish).
   void beginCompositeSlab(size_t slabIndex);
   // Which slab image (RenderTargets::slabImage) slab `slabIndex` of the drawing order sums
   // into: alternating with paired slabs, else 0.
   int slabImageOf(size_t slabIndex) const;
   // Clip-space z of the mark slab `slabIndex` (in drawing order) leaves in the depth buffer
-  // where its splats reach, rising from slab to slab by slabMarkStep (endCompositeSlab).
+  // where its splats reach, rising from slab to slab by slabMarkStep (passSlabRows).
   float slabMark(size_t slabIndex) const;
   float slabMarkStep() const;
   // True when one slab ends where the other begins (in either order).
@@ -318,7 +318,14 @@ class SplatRenderer : public Renderer {
   // Scissor to `rect` (enables the scissor test).
   static void scissorTo(const PixelRect& rect);
   void drawSlabRange(size_t slabIndex, size_t first, size_t count);
-  void endCompositeSlab(size_t slabIndex);
+  // The pixels slab `slabIndex`'s pass covers: its rectangle (the whole image without slab
+  // scissors).
+  PixelRect slabPassRect(size_t slabIndex) const;
+  // The slab's composite pass over rows [y0, y1) of its rectangle (the window's steps pass a
+  // big slab in bands); every row of the rectangle once, then closeSlab.
+  void passSlabRows(size_t slabIndex, int y0, int y1);
+  // The slab's statistics and, every few slabs, the opacity marks and termination check.
+  void closeSlab(size_t slabIndex);
   // Whether finishing slab `slabIndex` also marks the opaque pixels and checks for early
   // termination (every few slabs, front to back).
   bool finishChecks(size_t slabIndex) const;
@@ -446,6 +453,7 @@ class SplatRenderer : public Renderer {
     bool indirect = false;          // GPU slabs whose counts only the GPU knows (empty ones kept)
     size_t nextSlab = 0;            // composite: the next slab in drawing order
     bool finishPending = false;     // composite: nextSlab's entries are drawn, its finish not
+    int passRow = 0;                // composite, finish pending: the next row of its pass
     bool terminated = false;        // early termination ended the slab loop
     bool occlusion = false;         // occlusion culling in this frame (front to back, terminating)
     bool gradientsPending = false;  // ray normals: the gradient texture is still being built

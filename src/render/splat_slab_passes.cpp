@@ -181,25 +181,32 @@ void SplatRenderer::drawSlabRange(size_t s, size_t first, size_t count) {
 }
 
 void SplatRenderer::blitCoarseMarks(size_t s) {
-  // Each picture pixel takes the texel its centre lies in (scaledCoordinate); the scissor
-  // keeps the blit to the slab's rectangle.
+  // Each picture pixel takes the texel its centre lies in (scaledCoordinate); the caller's
+  // scissor keeps the blit to the rows of the slab's rectangle it passes.
   const BlitRects r = coarseToPictureBlit(frame_.width, frame_.height, slabScale(s));
-  scissorToSlab(s);
   glBlitNamedFramebuffer(targets_.slabCoarseTarget(slabImageOf(s)).id(), targets_.accumFbo.id(),
                          r.source.x0, r.source.y0, r.source.x1, r.source.y1, r.destination.x0,
                          r.destination.y0, r.destination.x1, r.destination.y1, GL_DEPTH_BUFFER_BIT,
                          GL_NEAREST);
 }
 
-void SplatRenderer::endCompositeSlab(size_t s) {
-  const RenderSettings& settings = frame_.settings;
-  const bool frontToBack = settings.order == CompositeOrder::FrontToBack;
-  const size_t n = frame_.slabs.size();
+PixelRect SplatRenderer::slabPassRect(size_t s) const {
+  if (slabScissor_ && frame_.slabRects.size() == frame_.slabs.size())
+    return frame_.slabRects[slabPosition(s)];
+  return PixelRect{0, 0, frame_.width, frame_.height};
+}
+
+void SplatRenderer::passSlabRows(size_t s, int y0, int y1) {
+  // Each pixel's pass reads only its own texels (and the coarse image's nearby ones) and
+  // blends into its own pixel: a band of rows gives those rows exactly what a whole pass does.
+  PixelRect band = slabPassRect(s);
+  band.y0 = std::max(band.y0, y0);
+  band.y1 = std::min(band.y1, y1);
+  if (band.empty()) return;
+  const bool frontToBack = frame_.settings.order == CompositeOrder::FrontToBack;
+  scissorTo(band);
   // Between slabs: 1 - exp(-depth) composited under (front to back) or over (back to front).
   if (slabScale(s) > 1.0) blitCoarseMarks(s);
-  scissorToSlab(s);
-  if (frame_.slabRects.size() == n)
-    frame_.markRect = frame_.markRect.unite(frame_.slabRects[slabPosition(s)]);
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.accumFbo.id());
   if (frontToBack)
     glBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_ONE);
@@ -233,12 +240,22 @@ void SplatRenderer::endCompositeSlab(size_t s) {
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);  // clears respect the mask
+}
+
+void SplatRenderer::closeSlab(size_t s) {
+  const RenderSettings& settings = frame_.settings;
+  const size_t n = frame_.slabs.size();
+  if (frame_.slabRects.size() == n)
+    frame_.markRect = frame_.markRect.unite(frame_.slabRects[slabPosition(s)]);
   ++stats_.slabsDrawn;
   if (slabScale(s) > 1) ++stats_.slabsCoarse;
   if (finishChecks(s)) {
     // Mark pixels that reached the threshold; later splat fragments there fail the stencil.
     // Only the slabs composited since the last marks changed the image: their rectangles.
-    if (slabScissor_ && frame_.slabRects.size() == n) scissorTo(frame_.markRect);
+    if (slabScissor_ && frame_.slabRects.size() == n)
+      scissorTo(frame_.markRect);
+    else
+      glDisable(GL_SCISSOR_TEST);  // the last band's scissor would hold the marks to it
     frame_.markRect = PixelRect{};
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.slabFbo.id());
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);

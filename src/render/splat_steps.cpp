@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <future>
 
 #include "core/stopwatch.h"
@@ -11,14 +13,13 @@
 namespace ewa {
 
 bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
-  // Cost model (stepCost_), measured per chunk: a price per splat entry drawn, per slab
-  // finished (clear, blend under the image) and per opacity check (marks and termination test,
-  // every few finishes). A chunk holds whole slabs while they fit; a slab too costly for the
-  // time left is drawn in ranges of entries over several steps (its sums are order-independent,
-  // so the picture is the same), and its finish, passes over the slab's rectangle that on
-  // llvmpipe at 1024x768 cost more than a UI frame's whole budget, waits for the next step
-  // where the entries have spent this one's (else that UI frame takes both: 55-75 ms, and over
-  // 100 ms with a present, against a 30 ms budget).
+  // Cost model (stepCost_), measured per chunk: a price per splat entry drawn, per slab begun
+  // (its clears), per pixel of a slab's composite pass and per opacity check (marks and
+  // termination test, every few slabs). A chunk holds whole slabs while they fit; a slab too costly
+  // for the time left is drawn in ranges of entries over several steps (its sums are
+  // order-independent, so the picture is the same), and its finish, a pass over the slab's
+  // rectangle that on llvmpipe at 1024x768 costs more than a UI frame's whole budget (60-140 ms on
+  // engine), in bands of rows (each pixel's pass is its own) over as many steps as it needs.
   // Entries drawn before anything is measured, and the fewest a range holds; both fewer where
   // the largest footprints are huge (a small volume filling the window: a few of its splats
   // cost as much as thousands of an ordinary view's).
@@ -26,18 +27,30 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
   const size_t kFirstChunk =
       size_t(std::clamp(kFirstFragments / frame_.fragmentsPerEntry, 1.0, 2048.0));
   const size_t kMinRange = std::min<size_t>(512, kFirstChunk);
-  constexpr size_t kFirstSlabEnds = 4;  // slabs finished before anything is measured
+  // A pass's bands: whole multiples of kBandRows rows (llvmpipe rasterizes its 64-pixel tiles
+  // in 16-pixel blocks), and at least kMinBandRows (a band has a fixed cost: state, a draw).
+  constexpr int kBandRows = 16, kMinBandRows = 32;
+  constexpr size_t kFirstSlabEnds = 1;  // slabs finished before anything is measured
   const size_t n = frame_.slabs.size();
   const bool unlimited = !std::isfinite(budgetMs);
   const auto finished = [&] { return frame_.nextSlab >= n || frame_.terminated; };
   setSlabLoopState();
+  bool stepDrew = false;  // a step's first work is drawn even if it does not fit
   while (!finished()) {
     // Milliseconds this chunk may take, and what it is expected to take so far.
     const double allowed = unlimited ? budgetMs : budgetMs - millisecondsSince(start);
     const bool measured = stepCost_.measured();
+    const bool planned = measured && !unlimited;  // else whole slabs, finishes whole
     const auto chunkStart = Clock::now();
-    size_t entries = 0, ends = 0, checks = 0;
+    size_t entries = 0, ends = 0, checks = 0, bands = 0, begins = 0;
+    long long pixels = 0;
     double expected = 0.0;
+    const auto firstWork = [&] { return !stepDrew && entries + bands + ends == 0; };
+    const auto begin = [&](size_t s) {
+      beginCompositeSlab(s);
+      ++begins;
+      expected += stepCost_.beginMs();
+    };
     const auto draw = [&](size_t s, size_t take) {
       drawSlabRange(s, frame_.nextEntry, take);
       frame_.nextEntry += take;
@@ -45,57 +58,91 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
       expected += stepCost_.msPerEntry() * double(take);
       frame_.drawnWeight += double(take);
     };
-    const auto finish = [&](size_t s) {
+    // Rows [passRow, passRow + rows) of slab s's pass; after the last of them, its close (with
+    // an opacity check that no longer fits, left to the next step's first work).
+    const auto pass = [&](size_t s, int rows) {
+      const PixelRect rect = slabPassRect(s);
+      const int y1 = std::max(frame_.passRow, std::min(rect.y1, frame_.passRow + rows));
+      const long long bandPixels =
+          (long long)(y1 - frame_.passRow) * std::max(0, rect.x1 - rect.x0);
+      // The finish weighs one mean slab's entries: the rows' share, the close one row's.
+      const double weight = frame_.meanEntries / double(std::max(0, rect.y1 - rect.y0) + 1);
+      if (y1 > frame_.passRow) {
+        passSlabRows(s, frame_.passRow, y1);
+        ++bands;
+        pixels += bandPixels;
+        expected += stepCost_.finishMs(bandPixels, false);
+        frame_.drawnWeight += weight * double(y1 - frame_.passRow);
+        frame_.passRow = y1;
+      }
+      if (frame_.passRow < rect.y1) return;
       const bool check = finishChecks(s);
-      endCompositeSlab(s);
+      if (check && planned && !firstWork() && expected + stepCost_.checkMs() > allowed) return;
+      closeSlab(s);
       ++ends;
       checks += check ? 1 : 0;
-      expected += stepCost_.finishMs(check);
-      frame_.drawnWeight += frame_.meanEntries;
+      expected += check ? stepCost_.checkMs() : 0.0;
+      frame_.drawnWeight += weight;
       frame_.nextEntry = 0;
       frame_.finishPending = false;
       ++frame_.nextSlab;
     };
-    while (!finished() && (entries + ends == 0 || expected < allowed)) {
+    const auto startFinish = [&](size_t s) {
+      frame_.finishPending = true;
+      frame_.passRow = std::max(0, slabPassRect(s).y0);
+    };
+    while (!finished() && (firstWork() || expected < allowed)) {
       const size_t s = frame_.nextSlab;
       const bool check = finishChecks(s);
-      const double finishMs = stepCost_.finishMs(check);
-      if (frame_.finishPending) {  // a step's first work, or where it fits
-        if (entries + ends > 0 && expected + finishMs > allowed) break;
-        finish(s);
+      const PixelRect rect = slabPassRect(s);
+      if (frame_.finishPending) {
+        // As many rows as fit (the check with the last), in whole bands.
+        const int rowsLeft = std::max(0, rect.y1 - frame_.passRow);
+        int rows = rowsLeft;
+        if (planned) {
+          const double rowMs = stepCost_.msPerPixel() * double(std::max(0, rect.x1 - rect.x0));
+          const double room = allowed - expected - (check ? stepCost_.checkMs() : 0.0);
+          rows = passRowsToDraw(rowsLeft, rowMs, room, firstWork(), kBandRows, kMinBandRows);
+          if (rowsLeft > 0 && rows == 0) break;
+        }
+        const size_t nextSlab = frame_.nextSlab;
+        pass(s, rows);
+        if (frame_.nextSlab == nextSlab && frame_.passRow >= rect.y1) break;  // check waits
         continue;
       }
       const size_t count = slabInOrder(s).count;
-      const double wholeMs = stepCost_.slabMs(count, check);
+      const double wholeMs = stepCost_.slabMs(count, rect.area(), check);
       if (frame_.nextEntry == 0 &&
           (unlimited || (measured && expected + wholeMs <= allowed) ||
            (!measured && entries + count <= kFirstChunk && ends < kFirstSlabEnds))) {
-        beginCompositeSlab(s);
+        begin(s);
         draw(s, count);
-        finish(s);
+        startFinish(s);
+        pass(s, std::max(0, rect.y1 - frame_.passRow));
         continue;
       }
-      if (frame_.nextEntry == 0) beginCompositeSlab(s);
       const double left = double(count - frame_.nextEntry);
-      const double fit =
-          measured ? (allowed - expected) / stepCost_.msPerEntry() : double(kFirstChunk - entries);
-      draw(s, size_t(std::clamp(fit, std::min(double(kMinRange), left), left)));
+      const double least = std::min(double(kMinRange), left);
+      const double beginMs = frame_.nextEntry == 0 ? stepCost_.beginMs() : 0.0;
+      const double fit = measured ? (allowed - expected - beginMs) / stepCost_.msPerEntry()
+                                  : double(kFirstChunk - entries);
+      if (!firstWork() && fit < least) break;
+      if (frame_.nextEntry == 0) begin(s);
+      draw(s, size_t(std::clamp(fit, least, left)));
       if (frame_.nextEntry == count) {
-        if (!measured || expected + finishMs <= allowed)
-          finish(s);
-        else
-          frame_.finishPending = true;
+        startFinish(s);
+        // Before anything is measured, the whole finish: its price is learnt from this chunk.
+        if (!measured) pass(s, std::max(0, rect.y1 - frame_.passRow));
       }
       if (!measured) break;  // one measurement before planning more
     }
     if (unlimited) continue;
+    if (entries + bands + ends + begins == 0) break;  // nothing more fits this step
+    stepDrew = true;
     // llvmpipe does the GL work by glFinish: the chunk's time is only known after it.
     glFinish();
-    stepCost_.update(millisecondsSince(chunkStart), entries, ends, checks);
-    const double nextMs = frame_.finishPending ? stepCost_.finishMs(finishChecks(frame_.nextSlab))
-                                               : stepCost_.msPerEntry() * double(kMinRange) +
-                                                     stepCost_.finishMs(false);
-    if (millisecondsSince(start) + nextMs > budgetMs) break;
+    stepCost_.update({millisecondsSince(chunkStart), entries, pixels, checks, begins});
+    if (millisecondsSince(start) >= budgetMs) break;
   }
   endConditionalSlabs();  // the window draws between steps, the final pass after the last
   glDisable(GL_STENCIL_TEST);
@@ -141,7 +188,7 @@ bool SplatRenderer::drawWholeVolumeChunks(double budgetMs, Clock::time_point sta
     frame_.drawnWeight += double(count);
     if (unlimited) continue;
     glFinish();
-    stepCost_.update(millisecondsSince(chunkStart), count, 0, 0);
+    stepCost_.update({millisecondsSince(chunkStart), count, 0, 0, 0});
     if (millisecondsSince(start) + stepCost_.msPerEntry() * double(kMinChunk) > budgetMs) break;
   }
   glBlendEquation(GL_FUNC_ADD);

@@ -17,7 +17,12 @@ constexpr double kMinBudgetMs = 4.0;
 ProgressiveRefinement::ProgressiveRefinement(double budgetMs, double frameTargetMs)
     : maxBudgetMs_(std::max(budgetMs, 0.001)),
       frameTargetMs_(frameTargetMs),
-      budgetMs_(maxBudgetMs_) {}
+      lastBudgetMs_(maxBudgetMs_) {}
+
+double ProgressiveRefinement::budgetMs(bool presents) const {
+  return std::clamp(frameTargetMs_ - otherMs_[presents ? 1 : 0],
+                    std::min(kMinBudgetMs, maxBudgetMs_), maxBudgetMs_);
+}
 
 void ProgressiveRefinement::start(LodRenderer& lod, const Camera& camera,
                                   const RenderSettings& settings, glm::ivec2 size) {
@@ -30,10 +35,11 @@ void ProgressiveRefinement::start(LodRenderer& lod, const Camera& camera,
   finishedThisFrame_ = false;
 }
 
-bool ProgressiveRefinement::step(LodRenderer& lod) {
+bool ProgressiveRefinement::step(LodRenderer& lod, bool presents) {
   if (!active_) return false;
   const Clock::time_point begin = Clock::now();
-  const bool done = lod.stepFull(budgetMs_);
+  lastBudgetMs_ = budgetMs(presents);
+  const bool done = lod.stepFull(lastBudgetMs_);
   lastStepMs_ = millisecondsSince(begin);
   current_.workMs += lastStepMs_;
   ++current_.frames;
@@ -51,6 +57,8 @@ bool ProgressiveRefinement::presentsStep(bool activity) const {
 }
 
 void ProgressiveRefinement::reportFrame(double ms) {
+  const bool presented = presentedThisFrame_;
+  presentedThisFrame_ = false;
   if (!active_ && !finishedThisFrame_) return;
   current_.worstFrameMs = std::max(current_.worstFrameMs, ms);
   if (finishedThisFrame_) {
@@ -59,10 +67,8 @@ void ProgressiveRefinement::reportFrame(double ms) {
     finishedThisFrame_ = false;
   }
   // What the frame spent besides the step (events, panel, present, swap) leaves the rest of
-  // the target to the next step.
-  const double other = std::max(0.0, ms - lastStepMs_);
-  budgetMs_ =
-      std::clamp(frameTargetMs_ - other, std::min(kMinBudgetMs, maxBudgetMs_), maxBudgetMs_);
+  // the target to the next step of a frame of its kind.
+  otherMs_[presented ? 1 : 0] = std::max(0.0, ms - lastStepMs_);
 }
 
 }  // namespace ewa

@@ -22,7 +22,8 @@ class ProgressiveRefinement {
  public:
   // `budgetMs`: the most renderer time a UI frame gives the refinement; `frameTargetMs`: the
   // UI frame time to stay under meanwhile (the budget shrinks when the rest of the frame,
-  // panel and swap, leaves less).
+  // panel and swap, leaves less; measured apart for frames that present and frames that do
+  // not, since a present costs several times what the rest does).
   explicit ProgressiveRefinement(double budgetMs = 30.0, double frameTargetMs = 60.0);
 
   // Starts the full frame of this view (abandoning one under way).
@@ -32,12 +33,17 @@ class ProgressiveRefinement {
   void cancel() { active_ = false; }
   bool active() const { return active_; }
   // Draws this UI frame's share; true when the full picture is done (lod.last() is it).
-  bool step(LodRenderer& lod);
-  // The UI frame that ran the last step took `ms` in all (only frames with a step count).
+  // `presents`: the frame will present (presentsStep), so its step gets what the target
+  // leaves beside a presenting frame's other work.
+  bool step(LodRenderer& lod, bool presents = false);
+  // The UI frame that ran the last step took `ms` in all (only frames with a step count; one
+  // that called notePresented counts as presenting).
   void reportFrame(double ms);
   // The share drawn of the frame under way (0..1).
   double progress(const LodRenderer& lod) const { return active_ ? lod.fullProgress() : 1.0; }
-  double budgetMs() const { return budgetMs_; }
+  // The budget of a step in a frame that presents or not; the last step's.
+  double budgetMs(bool presents) const;
+  double budgetMs() const { return lastBudgetMs_; }
   // How long the last start or step took (the rest of its UI frame is events, panel, swap).
   double lastStepMs() const { return lastStepMs_; }
   // The last finished refinement; frames == 0 before the first.
@@ -49,7 +55,10 @@ class ProgressiveRefinement {
   // after `activity` (input, new splats) and every kPresentIntervalMs for the progress bar.
   bool presentsStep(bool activity) const;
   // The frame was presented (any frame: the interval counts from it).
-  void notePresented() { lastPresent_ = Clock::now(); }
+  void notePresented() {
+    lastPresent_ = Clock::now();
+    presentedThisFrame_ = true;
+  }
   // Four times a second: at 100 ms the presents took 4-7% of the default volume's time to full
   // quality (docs/performance.md, "Progressive refinement").
   static constexpr double kPresentIntervalMs = 250.0;
@@ -59,7 +68,10 @@ class ProgressiveRefinement {
 
   double maxBudgetMs_;
   double frameTargetMs_;
-  double budgetMs_;
+  // What the last UI frame of each kind (0: no present, 1: presents) spent besides its step.
+  double otherMs_[2] = {0.0, 0.0};
+  double lastBudgetMs_;
+  bool presentedThisFrame_ = false;
   bool active_ = false;
   bool finishedThisFrame_ = false;  // the last step finished: its frame completes the report
   double lastStepMs_ = 0.0;

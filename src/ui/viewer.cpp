@@ -204,7 +204,7 @@ double ViewerWindow::renderLevel(int level, const Camera& camera, const glm::ive
   return ms;
 }
 
-bool ViewerWindow::refine(const glm::ivec2& fb) {
+bool ViewerWindow::refine(const glm::ivec2& fb, bool activity) {
   if (!refinement_.active() || fullSplatsArrived_) {
     // Another classification (gradients, surface splats) is built on the worker first, once;
     // refineDue() waits for it. Should that fail, the start below classifies itself.
@@ -233,7 +233,7 @@ bool ViewerWindow::refine(const glm::ivec2& fb) {
   }
   bool done = false;
   try {
-    done = refinement_.step(lod_);
+    done = refinement_.step(lod_, refinement_.presentsStep(activity));
   } catch (const std::exception& e) {
     refinement_.cancel();
     refineFailed_ = true;
@@ -271,7 +271,7 @@ void ViewerWindow::logFrame(double ms) {
   if (!frameLog_) return;
   if (refinement_.active())
     std::fprintf(
-        stderr, "ewaview: frame %.1f ms, refining %.0f%% (step %.1f ms, next budget %.0f ms)\n", ms,
+        stderr, "ewaview: frame %.1f ms, refining %.0f%% (step %.1f ms, budget %.0f ms)\n", ms,
         100.0 * refinement_.progress(lod_), refinement_.lastStepMs(), refinement_.budgetMs());
   else if (finished)  // the frame of the refinement's last step, its final pass included
     std::fprintf(stderr, "ewaview: frame %.1f ms, level %d (last step %.1f ms)\n", ms,
@@ -344,7 +344,7 @@ bool ViewerWindow::drawFrame(bool activity) {
     // This frame uploaded a new splat set (bonsai's 1.4 M: 90 ms on llvmpipe): the refinement
     // starts or restarts in the next one, so that no frame holds both.
   } else if (refinement_.active() || refineDue() || fullSplatsArrived_) {
-    rendered = refine(fb);
+    rendered = refine(fb, activity);
   } else if (warmUpDue()) {
     // Nothing else to do: one step of readying a coarse level, so moving there later does not
     // stall. Best effort: a level that fails says so when it is drawn.

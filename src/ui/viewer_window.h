@@ -78,8 +78,9 @@ class ViewerWindow {
   // Records a new picture on screen (rendered or refined) for the staleness checks and panel.
   void noteImage(const glm::ivec2& fb);
   void renderFailed(const std::exception& e, const glm::ivec2& fb);
-  // The progressive full-quality frame: start it, or draw this frame's share of it.
-  bool refine(const glm::ivec2& fb);
+  // The progressive full-quality frame: start it, or draw this frame's share of it (the
+  // budget smaller where the frame presents: after `activity` or the present interval).
+  bool refine(const glm::ivec2& fb, bool activity);
   void logFrame(double ms);
 
   // viewer_files.cpp: volumes, their renderers and splat sets.
