@@ -364,9 +364,12 @@ void ControlPanel::drawStats(const FrameStats& stats) {
     ImGui::Text("refined in %.0f ms over %d frames (worst %.0f ms)", f.wallMs, f.frames,
                 f.worstFrameMs);
   }
-  if (r.classifyMs + r.partitionMs + r.splatMs + r.compositeMs > 0.0)
-    ImGui::Text("classify %.1f  partition %.1f  splat %.1f  composite %.1f ms", r.classifyMs,
-                r.partitionMs, r.splatMs, r.compositeMs);
+  // The stage times on two lines: on one, a slow frame's longer numbers made it the panel's
+  // widest line, and the panel (sized to its contents) grew over the picture and back.
+  if (r.classifyMs + r.partitionMs + r.splatMs + r.compositeMs > 0.0) {
+    ImGui::Text("classify %.1f  partition %.1f ms", r.classifyMs, r.partitionMs);
+    ImGui::Text("splat %.1f  composite %.1f ms", r.splatMs, r.compositeMs);
+  }
   if (stats.lodLevel == 0)
     ImGui::Text("image %d x %d, full quality", stats.imageWidth, stats.imageHeight);
   else
