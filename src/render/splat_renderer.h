@@ -318,6 +318,9 @@ class SplatRenderer : public Renderer {
   // Scissor to `rect` (enables the scissor test).
   static void scissorTo(const PixelRect& rect);
   void drawSlabRange(size_t slabIndex, size_t first, size_t count);
+  // Whether this frame's slabs are scissored to their rectangles (setSlabScissor, and the
+  // rectangles made for these slabs).
+  bool slabRectsInUse() const;
   // The pixels slab `slabIndex`'s pass covers: its rectangle (the whole image without slab
   // scissors).
   PixelRect slabPassRect(size_t slabIndex) const;

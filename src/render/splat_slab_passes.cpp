@@ -88,7 +88,7 @@ gl::Program& SplatRenderer::slabPassProgram(size_t s) {
 }
 
 void SplatRenderer::scissorToSlab(size_t s, double scale) {
-  if (!slabScissor_ || frame_.slabRects.size() != frame_.slabs.size()) return;
+  if (!slabRectsInUse()) return;
   scissorTo(scaledRect(frame_.slabRects[slabPosition(s)], scale));
 }
 
@@ -190,9 +190,12 @@ void SplatRenderer::blitCoarseMarks(size_t s) {
                          GL_NEAREST);
 }
 
+bool SplatRenderer::slabRectsInUse() const {
+  return slabScissor_ && frame_.slabRects.size() == frame_.slabs.size();
+}
+
 PixelRect SplatRenderer::slabPassRect(size_t s) const {
-  if (slabScissor_ && frame_.slabRects.size() == frame_.slabs.size())
-    return frame_.slabRects[slabPosition(s)];
+  if (slabRectsInUse()) return frame_.slabRects[slabPosition(s)];
   return PixelRect{0, 0, frame_.width, frame_.height};
 }
 
@@ -252,7 +255,7 @@ void SplatRenderer::closeSlab(size_t s) {
   if (finishChecks(s)) {
     // Mark pixels that reached the threshold; later splat fragments there fail the stencil.
     // Only the slabs composited since the last marks changed the image: their rectangles.
-    if (slabScissor_ && frame_.slabRects.size() == n)
+    if (slabRectsInUse())
       scissorTo(frame_.markRect);
     else
       glDisable(GL_SCISSOR_TEST);  // the last band's scissor would hold the marks to it
