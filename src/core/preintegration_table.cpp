@@ -26,10 +26,89 @@ void checkArguments(double lo, double hi, int size, double distance) {
     throw std::invalid_argument("pre-integration table: segment length must be positive");
 }
 
+// A run of sub-bins composited front to back: premultiplied colour and transmittance.
+struct Span {
+  glm::dvec3 c{0.0};
+  double t = 1.0;
+};
+
+// `front` in front of `back`.
+Span over(const Span& front, const Span& back) {
+  return {front.c + front.t * back.c, front.t * back.t};
+}
+
+glm::vec4 entry(const Span& s) {
+  return glm::vec4(float(s.c.r), float(s.c.g), float(s.c.b), float(1.0 - s.t));
+}
+
+// Sub-bins begin .. begin + count - 1 in increasing order, one by one.
+Span compositeUp(const std::vector<Span>& bin, int begin, int count) {
+  Span s;
+  for (int m = 0; m < count; ++m) s = over(s, bin[size_t(begin + m)]);
+  return s;
+}
+
+// The same sub-bins in decreasing order.
+Span compositeDown(const std::vector<Span>& bin, int begin, int count) {
+  Span s;
+  for (int m = count - 1; m >= 0; --m) s = over(s, bin[size_t(begin + m)]);
+  return s;
+}
+
+// Every window of `count` consecutive sub-bins from one diagonal's partial composites in
+// blocks of `count` (a window is the tail of one block over the head of the next), so a
+// diagonal costs O(bins) instead of O(bins * count); "over" is associative, so only the
+// rounding differs from compositing each window alone.
+class SpanBlocks {
+ public:
+  void build(const std::vector<Span>& bin, int count) {
+    const int n = int(bin.size());
+    count_ = count;
+    for (auto* v : {&upHead_, &upTail_, &downHead_, &downTail_}) v->resize(size_t(n));
+    for (int j = 0; j < n; ++j) {
+      const bool first = j % count == 0;  // the first sub-bin of its block
+      // Heads: the block's start .. j, increasing (up) and decreasing (down) order.
+      upHead_[j] = first ? bin[j] : over(upHead_[j - 1], bin[j]);
+      downHead_[j] = first ? bin[j] : over(bin[j], downHead_[j - 1]);
+    }
+    for (int j = n - 1; j >= 0; --j) {
+      const bool last = (j + 1) % count == 0 || j + 1 == n;  // the block's last sub-bin
+      // Tails: j .. the block's end, increasing (up) and decreasing (down) order.
+      upTail_[j] = last ? bin[j] : over(bin[j], upTail_[j + 1]);
+      downTail_[j] = last ? bin[j] : over(downTail_[j + 1], bin[j]);
+    }
+  }
+  // Sub-bins begin .. begin + count - 1, increasing.
+  Span up(int begin) const {
+    return begin % count_ == 0 ? upTail_[begin] : over(upTail_[begin], upHead_[begin + count_ - 1]);
+  }
+  // The same, decreasing.
+  Span down(int begin) const {
+    return begin % count_ == 0 ? downTail_[begin]
+                               : over(downHead_[begin + count_ - 1], downTail_[begin]);
+  }
+
+ private:
+  int count_ = 1;
+  std::vector<Span> upHead_, upTail_, downHead_, downTail_;
+};
+
 }  // namespace
 
 PreintegrationTable PreintegrationTable::build(const TransferFunction& tf, double lo, double hi,
                                                int size, double distance, int substeps) {
+  return buildTable(tf, lo, hi, size, distance, substeps, Compositing::Blocks);
+}
+
+PreintegrationTable PreintegrationTable::buildBySegments(const TransferFunction& tf, double lo,
+                                                         double hi, int size, double distance,
+                                                         int substeps) {
+  return buildTable(tf, lo, hi, size, distance, substeps, Compositing::EachSegment);
+}
+
+PreintegrationTable PreintegrationTable::buildTable(const TransferFunction& tf, double lo,
+                                                    double hi, int size, double distance,
+                                                    int substeps, Compositing compositing) {
   checkArguments(lo, hi, size, distance);
   if (substeps < 1) throw std::invalid_argument("pre-integration table: substeps must be >= 1");
   PreintegrationTable table;
@@ -65,37 +144,28 @@ PreintegrationTable PreintegrationTable::build(const TransferFunction& tf, doubl
   for (int i = 0; i < size; ++i) table.pointTau_[i] = tf.extinctionAt(scalarOf(lo, hi, size, i));
   table.tauPrefix_.assign(size_t(bins) + 1, 0.0);
   for (int j = 0; j < bins; ++j) table.tauPrefix_[j + 1] = table.tauPrefix_[j] + tau[j];
-  // Diagonals are independent; each core takes every lanes-th one (their cost grows with
-  // delta, so interleaving keeps the lanes even).
+  // Diagonals are independent; each core takes every lanes-th one.
   auto diagonals = [&](int first, int stride) {
-    std::vector<double> transmit(bins);
-    std::vector<glm::dvec3> emit(bins);
+    std::vector<Span> bin(bins);
+    SpanBlocks blocks;
     for (int delta = first; delta < size; delta += stride) {
       // Every segment on this diagonal crosses delta * substeps sub-bins over the same length.
       const double step = distance / double(delta * substeps);
       for (int j = 0; j < bins; ++j) {
         const double alpha = -std::expm1(-tau[j] * step);
-        transmit[j] = 1.0 - alpha;
-        emit[j] = color[j] * alpha;
+        bin[j] = Span{color[j] * alpha, 1.0 - alpha};
       }
       const int count = delta * substeps;
+      if (compositing == Compositing::Blocks) blocks.build(bin, count);
       for (int f = 0; f + delta < size; ++f) {
-        const int begin = f * substeps;
         // Increasing scalar (front f, back f + delta) and decreasing (front f + delta, back f):
-        // the same sub-bins in opposite orders, interleaved for instruction-level parallelism.
-        glm::dvec3 up(0.0), down(0.0);
-        double tUp = 1.0, tDown = 1.0;
-        for (int m = 0; m < count; ++m) {
-          const int a = begin + m, b = begin + count - 1 - m;
-          up += tUp * emit[a];
-          tUp *= transmit[a];
-          down += tDown * emit[b];
-          tDown *= transmit[b];
-        }
-        table.entries_[size_t(f) * size + (f + delta)] =
-            glm::vec4(float(up.r), float(up.g), float(up.b), float(1.0 - tUp));
-        table.entries_[size_t(f + delta) * size + f] =
-            glm::vec4(float(down.r), float(down.g), float(down.b), float(1.0 - tDown));
+        // the same sub-bins in opposite orders.
+        const int begin = f * substeps;
+        const bool each = compositing == Compositing::EachSegment;
+        const Span up = each ? compositeUp(bin, begin, count) : blocks.up(begin);
+        const Span down = each ? compositeDown(bin, begin, count) : blocks.down(begin);
+        table.entries_[size_t(f) * size + (f + delta)] = entry(up);
+        table.entries_[size_t(f + delta) * size + f] = entry(down);
       }
     }
   };

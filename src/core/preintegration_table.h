@@ -18,15 +18,20 @@ class PreintegrationTable {
  public:
   PreintegrationTable() = default;
 
-  // Fast construction, O(size^3 * substeps / 3): each table interval is split into `substeps`
+  // Fast construction, O(size^2 * substeps): each table interval is split into `substeps`
   // sub-bins of constant tau and colour (the sub-bin's mean tau and tau-weighted mean colour,
   // from 8 samples each); a segment from index f to b
   // crosses |b - f| * substeps of them, each over the length d / (|b - f| * substeps), and they
-  // are composited front to back with their exact self-attenuation. Entries with f == b are
+  // are composited front to back with their exact self-attenuation (all segments of one |b - f|
+  // from composites of blocks of that many sub-bins). Entries with f == b are
   // exact: alpha = 1 - exp(-tau d), c = colour * alpha. Throws std::invalid_argument for
   // size < 2, substeps < 1, distance <= 0 or non-finite bounds.
   static PreintegrationTable build(const TransferFunction& tf, double lo, double hi, int size,
                                    double distance, int substeps = 4);
+  // The same table with each segment's sub-bins composited on their own, O(size^3 * substeps):
+  // the check of build()'s blocks (they differ only in rounding).
+  static PreintegrationTable buildBySegments(const TransferFunction& tf, double lo, double hi,
+                                             int size, double distance, int substeps = 4);
 
   int size() const { return size_; }
   double distance() const { return distance_; }
@@ -43,6 +48,10 @@ class PreintegrationTable {
   double meanExtinction(int front, int back) const;
 
  private:
+  enum class Compositing { Blocks, EachSegment };
+  static PreintegrationTable buildTable(const TransferFunction& tf, double lo, double hi, int size,
+                                        double distance, int substeps, Compositing compositing);
+
   int size_ = 0, substeps_ = 1;
   double lo_ = 0.0, hi_ = 0.0, distance_ = 1.0;
   std::vector<glm::vec4> entries_;

@@ -85,6 +85,25 @@ TEST(PreintegrationTable, DiagonalIsTheConstantScalarClosedForm) {
   }
 }
 
+TEST(PreintegrationTable, BlocksGiveEverySegmentItsOwnComposite) {
+  // build() composites a diagonal's segments from blocks of sub-bins; buildBySegments()
+  // composites each segment alone. Only rounding may differ, also where the segments are
+  // opaque (transmittance underflows) and over a single interval.
+  TransferFunction opaque = smoothTf();
+  opaque.opacityUnitDistance = 1e-3;
+  for (const TransferFunction& tf : {smoothTf(), test::thinPeakTf(), opaque})
+    for (int size : {2, 3, 17, 256})
+      for (int substeps : {1, 3, 4}) {
+        const auto fast = PreintegrationTable::build(tf, 0.0, 255.0, size, 2.5, substeps);
+        const auto slow = PreintegrationTable::buildBySegments(tf, 0.0, 255.0, size, 2.5, substeps);
+        double worst = 0.0;
+        for (size_t i = 0; i < fast.entries().size(); ++i)
+          for (int c = 0; c < 4; ++c)
+            worst = std::max(worst, double(std::abs(fast.entries()[i][c] - slow.entries()[i][c])));
+        EXPECT_LT(worst, 1e-6) << "size " << size << ", substeps " << substeps;
+      }
+}
+
 TEST(PreintegrationTable, RejectsBadArguments) {
   EXPECT_THROW(PreintegrationTable::build(smoothTf(), 0, 1, 1, 1.0), std::invalid_argument);
   EXPECT_THROW(PreintegrationTable::build(smoothTf(), 0, 1, 8, 0.0), std::invalid_argument);

@@ -1,0 +1,127 @@
+#!/usr/bin/python3
+"""UI frames while a transfer-function point is dragged: opens ewaview on an X display with
+EWAVIEW_FRAME_LOG=1, EWAVIEW_PRINT_LAYOUT=1 and a scratch settings folder, waits for the first
+full-quality picture, then drags the opacity point at the middle of the editor's plot up in
+STEPS moves 0.3 s apart (each an edit: the coarse level classifies again and builds its
+pre-integration table, a worker builds the full level's splats) and reports the UI frames from
+the press until full quality is refined again.
+
+Usage: xvfb-run -a -s "-screen 0 1280x1024x24" scripts/window_tf_drag_time.py [--runs N]
+       [--steps STEPS] BINARY [BINARY ...] [-- EWAVIEW ARGS]
+Several binaries (a build before a change and after it) take turns, run by run, so a machine
+that slows down hits them alike. Needs xdotool and a display (DISPLAY set).
+"""
+import os
+import re
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+FRAME = re.compile(r'^ewaview: frame ([\d.]+) ms, (refining|level \d+)')
+DONE = re.compile(r'^ewaview: full quality in ')
+
+
+class Lines:
+    """A pipe's lines, read on a thread as they come."""
+
+    def __init__(self, pipe):
+        self.lines = []
+        self.lock = threading.Lock()
+        self.thread = threading.Thread(target=self._read, args=(pipe,), daemon=True)
+        self.thread.start()
+
+    def _read(self, pipe):
+        for line in pipe:
+            with self.lock:
+                self.lines.append(line.rstrip('\n'))
+
+    def snapshot(self):
+        with self.lock:
+            return list(self.lines)
+
+
+def wait_for(what, test, timeout):
+    deadline = time.time() + timeout
+    while time.time() < deadline:
+        found = test()
+        if found:
+            return found
+        time.sleep(0.1)
+    raise SystemExit(f'no {what} within {timeout} s')
+
+
+def xdotool(*args):
+    return subprocess.run(['xdotool'] + [str(a) for a in args], check=True, text=True,
+                          capture_output=True).stdout
+
+
+def measure(binary, args, steps, timeout=180.0):
+    """(frames from the press to full quality again, worst of them ms, worst frame that drew a
+    coarse level ms, frames over 100 ms, seconds from the release to full quality)."""
+    env = dict(os.environ, EWAVIEW_FRAME_LOG='1', EWAVIEW_PRINT_LAYOUT='1',
+               EWAVIEW_CONFIG_DIR=tempfile.mkdtemp())
+    proc = subprocess.Popen([binary] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            env=env, text=True, start_new_session=True)
+    out, err = Lines(proc.stdout), Lines(proc.stderr)
+    try:
+        wait_for('first full-quality picture',
+                 lambda: any(DONE.match(l) for l in err.snapshot()), timeout)
+        wid = wait_for('ewaview window', lambda: xdotool(
+            'search', '--onlyvisible', '--pid', proc.pid, '--name', '^ewaview$').split(), 10)[0]
+        canvas = [l for l in out.snapshot() if l.startswith('tf-canvas ')][-1]
+        cx, cy, cw, ch = (int(float(v)) for v in canvas.split()[1:5])
+        # The opacity point at the plot's middle value, alpha 0 (the default function's), up
+        # to 0.6 of the plot's height.
+        px, py, ty = cx + cw // 2, cy + ch - 2, cy + ch * 4 // 10
+        xdotool('mousemove', '--window', wid, px, py)
+        time.sleep(0.5)
+        mark = len(err.snapshot())
+        xdotool('mousedown', 1)
+        time.sleep(0.5)
+        for step in range(1, steps + 1):
+            xdotool('mousemove', '--window', wid, px, py + (ty - py) * step // steps)
+            time.sleep(0.3)
+        xdotool('mouseup', 1)
+        released = time.time()
+        wait_for('full quality after the drag',
+                 lambda: any(DONE.match(l) for l in err.snapshot()[mark:]), timeout)
+        refined = time.time()
+    finally:
+        os.killpg(proc.pid, signal.SIGTERM)
+        proc.wait()
+    frames = [FRAME.match(l) for l in err.snapshot()[mark:]]
+    frames = [(float(m.group(1)), m.group(2)) for m in frames if m]
+    worst = max(ms for ms, _ in frames)
+    coarse = max((ms for ms, kind in frames if kind != 'refining'), default=0.0)
+    over = sum(ms > 100.0 for ms, _ in frames)
+    return len(frames), worst, coarse, over, refined - released
+
+
+def main(argv):
+    runs, steps = 1, 4
+    if argv[:1] in (['-h'], ['--help']):
+        print(__doc__.strip())
+        return
+    while argv[:1] in (['--runs'], ['--steps']):
+        if argv[0] == '--runs':
+            runs = int(argv[1])
+        else:
+            steps = int(argv[1])
+        argv = argv[2:]
+    binaries, args = (argv[:argv.index('--')], argv[argv.index('--') + 1:]) if '--' in argv \
+        else (argv, [])
+    if not binaries or not os.environ.get('DISPLAY'):
+        raise SystemExit(__doc__)
+    for _ in range(runs):
+        for b in binaries:
+            frames, worst, coarse, over, wall = measure(b, args, steps)
+            print(f'{b}: {frames} UI frames from the press to full quality, worst {worst:.0f} ms '
+                  f'(coarse {coarse:.0f} ms), {over} over 100 ms; full quality {wall:.2f} s '
+                  f'after the release', flush=True)
+
+
+if __name__ == '__main__':
+    main(sys.argv[1:])
