@@ -53,8 +53,8 @@ def wait_for(what, test, timeout):
     raise SystemExit(f'no {what} within {timeout} s')
 
 
-def xdotool(*args):
-    return subprocess.run(['xdotool'] + [str(a) for a in args], check=True, text=True,
+def xdotool(*args, check=True):
+    return subprocess.run(['xdotool'] + [str(a) for a in args], check=check, text=True,
                           capture_output=True).stdout
 
 
@@ -69,8 +69,10 @@ def measure(binary, args, steps, timeout=180.0):
     try:
         wait_for('first full-quality picture',
                  lambda: any(DONE.match(l) for l in err.snapshot()), timeout)
+        # Not found yet: xdotool search exits 1 and prints nothing; ask again.
         wid = wait_for('ewaview window', lambda: xdotool(
-            'search', '--onlyvisible', '--pid', proc.pid, '--name', '^ewaview$').split(), 10)[0]
+            'search', '--onlyvisible', '--pid', proc.pid, '--name', '^ewaview$',
+            check=False).split(), 10)[0]
         canvas = [l for l in out.snapshot() if l.startswith('tf-canvas ')][-1]
         cx, cy, cw, ch = (int(float(v)) for v in canvas.split()[1:5])
         # The opacity point at the plot's middle value, alpha 0 (the default function's), up

@@ -144,6 +144,7 @@ PreintegrationTable PreintegrationTable::buildTable(const TransferFunction& tf, 
   for (int i = 0; i < size; ++i) table.pointTau_[i] = tf.extinctionAt(scalarOf(lo, hi, size, i));
   table.tauPrefix_.assign(size_t(bins) + 1, 0.0);
   for (int j = 0; j < bins; ++j) table.tauPrefix_[j + 1] = table.tauPrefix_[j] + tau[j];
+  const bool each = compositing == Compositing::EachSegment;
   // Diagonals are independent; each core takes every lanes-th one.
   auto diagonals = [&](int first, int stride) {
     std::vector<Span> bin(bins);
@@ -156,12 +157,11 @@ PreintegrationTable PreintegrationTable::buildTable(const TransferFunction& tf, 
         bin[j] = Span{color[j] * alpha, 1.0 - alpha};
       }
       const int count = delta * substeps;
-      if (compositing == Compositing::Blocks) blocks.build(bin, count);
+      if (!each) blocks.build(bin, count);
       for (int f = 0; f + delta < size; ++f) {
         // Increasing scalar (front f, back f + delta) and decreasing (front f + delta, back f):
         // the same sub-bins in opposite orders.
         const int begin = f * substeps;
-        const bool each = compositing == Compositing::EachSegment;
         const Span up = each ? compositeUp(bin, begin, count) : blocks.up(begin);
         const Span down = each ? compositeDown(bin, begin, count) : blocks.down(begin);
         table.entries_[size_t(f) * size + (f + delta)] = entry(up);
