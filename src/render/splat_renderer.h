@@ -159,6 +159,7 @@ class SplatRenderer : public Renderer {
   // Test hooks: another limit than kTileStepMs; the auto splatter's costs.
   void setTileStepMs(double ms) { tileStepMs_ = ms; }
   TwoWayTuner& splatterTuner() { return splatterTuner_; }
+  TwoWayTuner& passTuner() { return passTuner_; }
   bool gpuTimers() const { return gpuTimers_; }
   // GL_RENDERER names a software rasterizer (llvmpipe, softpipe): what the auto modes go by.
   bool softwareGl() const { return softwareGl_; }
@@ -258,6 +259,8 @@ class SplatRenderer : public Renderer {
   // Splatter auto may draw frames under `settings` in tiles: the GPU's timers are used, the
   // tiles' programs built and the volume within the splat limit.
   bool autoTiles(const RenderSettings& settings) const;
+  // The splats' compute-tile records fit one storage block (storageBlockBytes).
+  bool tileRecordsFit() const;
   // Whether a whole frame under `settings` is drawn in tiles if they draw it (splatter: Tiles,
   // or Auto's choice where autoTiles).
   bool tilesWanted(const RenderSettings& settings) const;
@@ -413,6 +416,7 @@ class SplatRenderer : public Renderer {
   bool gpuTimers_ = false;
   bool passHalfCulling_ = true;  // setPassHalfCulling
   TwoWayTuner passTuner_;        // slabPasses auto: one pass a slab (way 0) or two (way 1)
+  unsigned passWaysDrawn_ = 0;   // bit w: a frame drew way w (its first use paid for)
   // Splatter auto: rasterized (way 0) or in tiles (way 1), the tiles tried first: on the H200
   // they drew the default frames in 0.05-0.09x the rasterizer's time, so a single picture (and
   // the window's first refinement) takes them.

@@ -281,10 +281,16 @@ bool SplatRenderer::stepFrame(double budgetMs) {
       stats_.slabEntries += slabInOrder(s).count;
   }
   // Auto passes: this frame's splat stage a slab entry, for the way it took (the GPU
-  // partition's entries are only counted above).
-  if (frame_.timed && frame_.quarters && frame_.settings.slabPasses == 0 && !frame_.tiles &&
-      stats_.slabEntries > 0)
-    passTuner_.report(frame_.slabPasses - 1, stats_.splatMs / double(stats_.slabEntries));
+  // partition's entries are only counted above). A way's first frame in this renderer is not
+  // counted: it pays once for what the driver makes on first use (the H200 timed engine's
+  // first two-pass frame dearer than one pass, and kept one pass at 1.8x the frame).
+  if (frame_.quarters && !frame_.tiles) {
+    const int way = frame_.slabPasses - 1;
+    const bool firstUse = (passWaysDrawn_ & (1u << way)) == 0;
+    passWaysDrawn_ |= 1u << way;
+    if (frame_.timed && frame_.settings.slabPasses == 0 && stats_.slabEntries > 0 && !firstUse)
+      passTuner_.report(way, stats_.splatMs / double(stats_.slabEntries));
+  }
   reportSplatterCost();
   frame_.active = false;
   stats_.renderMs += millisecondsSince(start);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 #include "gl/gl_error.h"
 #include "render/clip_uniforms.h"
@@ -31,7 +32,11 @@ void SplatRenderer::writeTileSplats(gl::Buffer& out) {
 
 bool SplatRenderer::autoTiles(const RenderSettings& settings) const {
   return settings.splatter == Splatter::Auto && gpuTimers_ && !tilesFailed_ &&
-         classified_.splats.size() <= autoTileSplats_;
+         classified_.splats.size() <= autoTileSplats_ && tileRecordsFit();
+}
+
+bool SplatRenderer::tileRecordsFit() const {
+  return uint64_t(classified_.splats.size()) * sizeof(TileEwaSplat) <= storageBlockBytes();
 }
 
 bool SplatRenderer::tilesWanted(const RenderSettings& settings) const {
@@ -91,6 +96,16 @@ const std::shared_ptr<TileEwaPrograms>& SplatRenderer::tilePrograms() {
 }
 
 bool SplatRenderer::drawTilesNow() {
+  // The tiles read their records as one storage block: past its end they read nothing (the
+  // H200's 2 GiB block and 512^3 Marschner-Lobb's 4.8 GB of records drew rings with gaps).
+  if (!tileRecordsFit()) {
+    constexpr uint64_t kMiB = 1024 * 1024;
+    const uint64_t records = uint64_t(classified_.splats.size()) * sizeof(TileEwaSplat);
+    stats_.note = "compute tiles' splat records (" + std::to_string(records / kMiB) +
+                  " MiB) exceed the GL's storage block (" +
+                  std::to_string(storageBlockBytes() / kMiB) + " MiB): rasterized";
+    return false;
+  }
   const size_t compiled = tilePrograms()->compiled();
   frame_.tilesFirstUse = !tiles_;
   if (!tiles_) tiles_ = std::make_unique<TileEwaSplatter>(tilePrograms());

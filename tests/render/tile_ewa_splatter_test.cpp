@@ -472,6 +472,36 @@ TEST_F(TileEwaSplatterTest, AutoSplatterDrawsBudgetedFramesInTilesWhereTheyFit) 
   }
 }
 
+// The tiles read their splats' records (64 bytes each) as one storage block: where the GL's
+// block cannot hold them (a 512^3 volume's 4.8 GB on an H200), a frame asked for in tiles is
+// rasterized with a note, and auto does not choose them.
+TEST_F(TileEwaSplatterTest, RecordsBeyondAStorageBlockAreRasterized) {
+  SplatRenderer& r = wallRenderer(PartitionMode::Cpu);
+  const bool timers = r.gpuTimers();
+  RenderSettings settings = tileSettings();
+  const Camera cam = obliqueCamera();
+  r.render(cam, settings, 40, 32);
+  const Image8 raster = r.readImage();
+  settings.splatter = Splatter::Tiles;
+  r.render(cam, settings, 40, 32);
+  EXPECT_TRUE(r.stats().tiles);
+  EXPECT_EQ(r.stats().note, "");
+  // A block that holds the splats the rasterizer reads but not the tiles' records.
+  r.setStorageBlockLimit(r.splats().size() * sizeof(TileEwaSplat) - 1);
+  r.render(cam, settings, 40, 32);
+  EXPECT_FALSE(r.stats().tiles);
+  EXPECT_FALSE(r.texelBuffers());
+  EXPECT_NE(r.stats().note.find("exceed the GL's storage block"), std::string::npos)
+      << r.stats().note;
+  EXPECT_EQ(r.readImage().pixels, raster.pixels);
+  settings.splatter = Splatter::Auto;
+  r.setGpuTimers(true);  // where auto would try the tiles first
+  r.render(cam, settings, 40, 32);
+  EXPECT_FALSE(r.stats().tiles);
+  r.setGpuTimers(timers);
+  r.setStorageBlockLimit(0);
+}
+
 // Auto on a GL whose compiler rejects the tiles' programs: the first frame, which tries them, is
 // rasterized instead and the statistics say why in one line from then on; asked for tiles
 // outright, the error is thrown.
