@@ -100,13 +100,14 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   }
   // The compute EWA splatter draws front-to-back frames, pre-classified or post-classified as the
   // default (SplatRenderer::tileComposite), from 64 bytes a splat: up to 8 M splats (a 512^3
-  // volume's 74 M would take 4.7 GB twice over). It draws the renderer's last frame as the
-  // renderer's own tile frames do (SplatRenderer::loadTiles, timed with the tiles): its slab
-  // lists binned where the GPU built them (their making is in partition_ms), else the CPU
-  // partition's uploaded; its records made on the GPU; the classification's state set.
+  // volume's 74 M would take 4.7 GB twice over), and only as many as one storage block holds. It
+  // draws the renderer's last frame as the renderer's own tile frames do (SplatRenderer::loadTiles,
+  // timed with the tiles): its slab lists binned where the GPU built them (their making is in
+  // partition_ms), else the CPU partition's uploaded; its records made on the GPU; the
+  // classification's state set.
   bool post = false, shading = false;
   const bool tileEwa = m.timed("tile-ewa") && m.ewa.tileComposite(post, shading) &&
-                       m.ewa.splats().size() <= size_t(8'000'000);
+                       m.ewa.splats().size() <= size_t(8'000'000) && m.ewa.tileRecordsFit();
   const auto tileEwaDraw = [&] {
     const auto start = BenchClock::now();
     m.ewa.loadTiles(m.tileEwa);

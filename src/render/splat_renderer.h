@@ -172,6 +172,9 @@ class SplatRenderer : public Renderer {
   // pre-classified, or post-classified, pre-integrated in quarters of a slab, shaded (if at
   // all) from the field's gradient; and the TileEwaFrame flags (post, shading) that say how.
   bool tileComposite(bool& post, bool& shading) const;
+  // The splats' compute-tile records (64 bytes each) fit one storage block (storageBlockBytes):
+  // the tiles read them as one; past its end they read nothing.
+  bool tileRecordsFit() const;
   // The GPU partition of the last frame begun, if it built its slab lists on the GPU (the
   // compute splatter can bin them where they are: TileEwaSplatter::useGpuSlabLists).
   const GpuSlabPartition* gpuSlabLists() const {
@@ -259,8 +262,6 @@ class SplatRenderer : public Renderer {
   // Splatter auto may draw frames under `settings` in tiles: the GPU's timers are used, the
   // tiles' programs built and the volume within the splat limit.
   bool autoTiles(const RenderSettings& settings) const;
-  // The splats' compute-tile records fit one storage block (storageBlockBytes).
-  bool tileRecordsFit() const;
   // Whether a whole frame under `settings` is drawn in tiles if they draw it (splatter: Tiles,
   // or Auto's choice where autoTiles).
   bool tilesWanted(const RenderSettings& settings) const;
