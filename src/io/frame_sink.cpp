@@ -3,8 +3,15 @@
 
 #include <algorithm>
 #include <cctype>
+#include <condition_variable>
+#include <deque>
+#include <exception>
 #include <filesystem>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
+#include <utility>
+#include <vector>
 
 #include "io/frame_names.h"
 #include "io/video_writer.h"
@@ -13,18 +20,76 @@ namespace ewa {
 
 namespace {
 
-// Each frame its own PNG, written atomically.
+// Each frame its own PNG, written atomically, encoded on worker threads: a 1024² frame's
+// encoding (about 40 ms) is several times what a GPU takes to render it, so the next frames
+// render meanwhile. A few frames wait at most; a failed frame's error comes from the next
+// add() or from finish().
 class PngFrameSink : public FrameSink {
  public:
-  PngFrameSink(FrameNaming naming, int count) : naming_(std::move(naming)), count_(count) {}
-  void add(const Image8& frame, int index) override { writePng(fileOf(index), frame); }
-  void finish() override {}
+  PngFrameSink(FrameNaming naming, int count)
+      : naming_(std::move(naming)),
+        count_(count),
+        workers_(std::clamp(std::thread::hardware_concurrency(), 2u, 9u) - 1u) {}
+  // Frames handed over are written even when the run ends in an error: each is a picture
+  // rendered, as before it the frames were written one by one.
+  ~PngFrameSink() override {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    changed_.notify_all();
+    for (std::thread& t : threads_) t.join();
+  }
+  void add(const Image8& frame, int index) override {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (threads_.empty())
+      for (unsigned i = 0; i < workers_; ++i) threads_.emplace_back([this] { work(); });
+    changed_.wait(lock, [&] { return waiting_.size() < workers_ || failure_; });
+    if (failure_) std::rethrow_exception(failure_);
+    waiting_.emplace_back(index, frame);
+    changed_.notify_all();
+  }
+  void finish() override {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return (waiting_.empty() && writing_ == 0) || failure_; });
+    if (failure_) std::rethrow_exception(failure_);
+  }
   std::string description() const override { return naming_.text; }
   std::string fileOf(int index) const override { return frameFileName(naming_, index, count_); }
 
  private:
+  void work() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      changed_.wait(lock, [&] { return stop_ || !waiting_.empty(); });
+      if (waiting_.empty()) return;  // stopped, nothing left
+      auto [index, frame] = std::move(waiting_.front());
+      waiting_.pop_front();
+      ++writing_;
+      lock.unlock();
+      std::exception_ptr failure;
+      try {
+        writePng(fileOf(index), frame);
+      } catch (...) {
+        failure = std::current_exception();
+      }
+      lock.lock();
+      --writing_;
+      if (failure && !failure_) failure_ = failure;
+      changed_.notify_all();
+    }
+  }
+
   FrameNaming naming_;
   int count_;
+  unsigned workers_;  // threads, and frames that may wait for them
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::pair<int, Image8>> waiting_;
+  int writing_ = 0;
+  bool stop_ = false;
+  std::exception_ptr failure_;  // the first frame that failed
+  std::vector<std::thread> threads_;
 };
 
 class VideoFrameSink : public FrameSink {

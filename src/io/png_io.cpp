@@ -1,15 +1,46 @@
-// PNG reading and writing through stb_image / stb_image_write.
+// PNG reading and writing through stb_image / stb_image_write, the writer's deflate zlib's.
 #include "io/png_io.h"
 
 #include <string_view>
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 
 #include <stb_image.h>
+#include <zlib.h>
+
+namespace {
+
+// zlib's deflate in place of stb_image_write's own (its documented hook): on rendered 1024²
+// pictures stb's level 8 took 105 ms and zlib's level 3 40 ms, the files a quarter smaller,
+// where a GPU renders a turntable's frame in about 10 ms. Allocated with malloc: stb frees it.
+unsigned char* zlibForStb(unsigned char* data, int size, int* outSize, int /*quality*/) {
+  constexpr int kLevel = 3;
+  uLongf capacity = compressBound(uLong(size));
+  auto* out = static_cast<unsigned char*>(std::malloc(capacity));
+  if (!out) return nullptr;
+  if (compress2(out, &capacity, data, uLong(size), kLevel) != Z_OK) {
+    std::free(out);
+    return nullptr;
+  }
+  *outSize = int(capacity);
+  return out;
+}
+
+}  // namespace
+
+// The writer compiled here, static (no clash with libstb's copy), to take the hook above.
+#define STBIW_ZLIB_COMPRESS zlibForStb
+#define STB_IMAGE_WRITE_STATIC
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 #include <stb_image_write.h>
+#pragma GCC diagnostic pop
 
 #include "io/atomic_file.h"
 

@@ -6,6 +6,7 @@
 
 #include "io/atomic_file.h"
 #include "io/frame_sink.h"
+#include "io/png_io.h"
 #include "io/video_reader.h"
 #include "io/video_writer.h"
 
@@ -123,6 +124,39 @@ TEST(FrameSink, PicksPngFramesOrAVideoByName) {
   EXPECT_EQ(video->fileOf(3), (dir / "spin.webm").string());
   EXPECT_THROW(openFrameSink((dir / "spin.gif").string(), 12, 30), std::runtime_error);
   EXPECT_THROW(openFrameSink((dir / "x").string(), 0, 30), std::invalid_argument);
+}
+
+// PNG frames are encoded on worker threads: after finish() every frame is its file, each the
+// picture given; a frame that cannot be written fails a later add() or finish(), naming it.
+TEST(FrameSink, PngFramesAreWrittenOnWorkersAndTheirFailuresReported) {
+  const fs::path dir = freshDir("sink_pngs");
+  const int count = 20;
+  {
+    const auto sink = openFrameSink((dir / "frames").string(), count, 30);
+    for (int f = 0; f < count; ++f) sink->add(flat(33, 17, f * 10, 255 - f * 10, 7), f);
+    sink->finish();
+    for (int f = 0; f < count; ++f) {
+      const Image8 png = readPng(sink->fileOf(f));
+      ASSERT_EQ(png.width, 33) << f;
+      ASSERT_EQ(png.height, 17) << f;
+      EXPECT_EQ(int(png.pixels[0]), f * 10) << f;
+      EXPECT_EQ(int(png.pixels[1]), 255 - f * 10) << f;
+      EXPECT_EQ(int(png.pixels[2]), 7) << f;
+    }
+  }
+  // Frame 5's name taken by a folder: its file cannot be renamed into place.
+  auto sink = openFrameSink((dir / "broken").string(), count, 30);
+  const std::string before = sink->fileOf(4);
+  fs::create_directories(sink->fileOf(5));
+  try {
+    for (int f = 0; f < count; ++f) sink->add(flat(8, 8, 0, 0, 0), f);
+    sink->finish();
+    FAIL() << "the frame that could not be written was not reported";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(sink->fileOf(5) + ": ", 0), 0u) << e.what();
+  }
+  sink.reset();  // the frames handed over are written before it is gone
+  EXPECT_TRUE(fs::exists(before));
 }
 
 }  // namespace
