@@ -41,12 +41,13 @@ class PngFrameSink : public FrameSink {
     for (std::thread& t : threads_) t.join();
   }
   void add(const Image8& frame, int index) override {
+    std::pair<int, Image8> item(index, frame);  // copied before the workers are held up
     std::unique_lock<std::mutex> lock(mutex_);
     if (threads_.empty())
       for (unsigned i = 0; i < workers_; ++i) threads_.emplace_back([this] { work(); });
     changed_.wait(lock, [&] { return waiting_.size() < workers_ || failure_; });
     if (failure_) std::rethrow_exception(failure_);
-    waiting_.emplace_back(index, frame);
+    waiting_.push_back(std::move(item));
     changed_.notify_all();
   }
   void finish() override {

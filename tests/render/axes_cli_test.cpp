@@ -47,7 +47,7 @@ TEST(AxesCli, TheAxisPictureIsThePlainOneWithTheAxesPaintedInTheCorner) {
       const size_t i = size_t(y * 96 + x) * size_t(axes.channels);
       const uint8_t* a = &axes.pixels[i];
       const uint8_t* p = &plain.pixels[i];
-      if (std::equal(a, a + 3, p, [&](uint8_t x, uint8_t y) { return std::abs(x - y) <= levels; }))
+      if (std::equal(a, a + 3, p, [&](uint8_t u, uint8_t v) { return std::abs(u - v) <= levels; }))
         continue;
       ++changed;
       EXPECT_GE(x, 96 / 3) << y;  // the picture's lower right

@@ -95,13 +95,16 @@ TEST(ChannelOverlay, DefaultColoursAndABackground) {
   const std::string dir = testOutputDir() + "/overlay_default";
   const std::string file = twoBalls(dir);
   const std::string png = dir + "/all.png";
-  CliRun r = ewaview(file + " --channel all --resolution 96,64 -o " + png);
+  CliRun r = ewaview(file + " --channel all --resolution 96,64 --stats -o " + png);
   ASSERT_EQ(r.code, 0) << r.err;
   const Image8 all = readPng(png);
   // Two small balls: their rims are many of the covered pixels, and an H200 drew 2.9-3.1% of
-  // them more than 12 levels from llvmpipe's reference (rasterized or in tiles); a wrong colour
-  // or compositing step moves whole balls.
-  EXPECT_TRUE(matchesReference("channel_overlay", all, backgroundRgb8(0, 0, 0), 2.0, 12, 0.05));
+  // them more than 12 levels from llvmpipe's reference (rasterized or in tiles): 5% of them
+  // where the GPU's partition drew it, 2% as before on llvmpipe. A wrong colour or compositing
+  // step moves whole balls.
+  const double offPixels = runToRunLevels(r.out) > 0 ? 0.05 : 0.02;
+  EXPECT_TRUE(
+      matchesReference("channel_overlay", all, backgroundRgb8(0, 0, 0), 2.0, 12, offPixels));
   // Magenta left (red and blue, no green), green right, all three in the middle.
   const uint8_t* left = pixel(all, 41, 32);
   const uint8_t* right = pixel(all, 53, 32);
