@@ -7,7 +7,10 @@ pre-integration table, a worker builds the full level's splats) and reports the 
 the press until full quality is refined again.
 
 Usage: xvfb-run -a -s "-screen 0 1280x1024x24" scripts/window_tf_drag_time.py [--runs N]
-       [--steps STEPS] BINARY [BINARY ...] [-- EWAVIEW ARGS]
+       [--steps STEPS] [--verbose] [--orbit] BINARY [BINARY ...] [-- EWAVIEW ARGS]
+--verbose prints the log line of every frame that drew a level whole (render, classify,
+partition, splat and final ms). --orbit drags the view across the volume instead (STEPS moves
+of 15 pixels 0.1 s apart, 20 by default), timing the moving frames of an orbit the same way.
 Several binaries (a build before a change and after it) take turns, run by run, so a machine
 that slows down hits them alike. Needs xdotool and a display (DISPLAY set).
 """
@@ -58,7 +61,7 @@ def xdotool(*args, check=True):
                           capture_output=True).stdout
 
 
-def measure(binary, args, steps, timeout=180.0):
+def measure(binary, args, steps, verbose=False, orbit=False, timeout=180.0):
     """(frames from the press to full quality again, worst of them ms, worst frame that drew a
     coarse level ms, frames over 100 ms, seconds from the release to full quality)."""
     env = dict(os.environ, EWAVIEW_FRAME_LOG='1', EWAVIEW_PRINT_LAYOUT='1',
@@ -73,19 +76,28 @@ def measure(binary, args, steps, timeout=180.0):
         wid = wait_for('ewaview window', lambda: xdotool(
             'search', '--onlyvisible', '--pid', proc.pid, '--name', '^ewaview$',
             check=False).split(), 10)[0]
-        canvas = [l for l in out.snapshot() if l.startswith('tf-canvas ')][-1]
-        cx, cy, cw, ch = (int(float(v)) for v in canvas.split()[1:5])
-        # The opacity point at the plot's middle value, alpha 0 (the default function's), up
-        # to 0.6 of the plot's height.
-        px, py, ty = cx + cw // 2, cy + ch - 2, cy + ch * 4 // 10
+        if orbit:
+            # Across the volume in the default 1024x768 window (the window test's orbit), 15
+            # pixels a move, 0.1 s apart.
+            px, py = 560, 300
+            moves = [(px + 15 * step, py) for step in range(1, steps + 1)]
+            pause = 0.1
+        else:
+            canvas = [l for l in out.snapshot() if l.startswith('tf-canvas ')][-1]
+            cx, cy, cw, ch = (int(float(v)) for v in canvas.split()[1:5])
+            # The opacity point at the plot's middle value, alpha 0 (the default function's),
+            # up to 0.6 of the plot's height.
+            px, py, ty = cx + cw // 2, cy + ch - 2, cy + ch * 4 // 10
+            moves = [(px, py + (ty - py) * step // steps) for step in range(1, steps + 1)]
+            pause = 0.3
         xdotool('mousemove', '--window', wid, px, py)
         time.sleep(0.5)
         mark = len(err.snapshot())
         xdotool('mousedown', 1)
         time.sleep(0.5)
-        for step in range(1, steps + 1):
-            xdotool('mousemove', '--window', wid, px, py + (ty - py) * step // steps)
-            time.sleep(0.3)
+        for x, y in moves:
+            xdotool('mousemove', '--window', wid, x, y)
+            time.sleep(pause)
         xdotool('mouseup', 1)
         released = time.time()
         wait_for('full quality after the drag',
@@ -94,6 +106,10 @@ def measure(binary, args, steps, timeout=180.0):
     finally:
         os.killpg(proc.pid, signal.SIGTERM)
         proc.wait()
+    if verbose:  # the frames that drew a level whole, with where their time went
+        for line in err.snapshot()[mark:]:
+            if ' (render ' in line:
+                print('  ' + line, flush=True)
     frames = [FRAME.match(l) for l in err.snapshot()[mark:]]
     frames = [(float(m.group(1)), m.group(2)) for m in frames if m]
     worst = max(ms for ms, _ in frames)
@@ -103,11 +119,16 @@ def measure(binary, args, steps, timeout=180.0):
 
 
 def main(argv):
-    runs, steps = 1, 4
+    runs, steps, verbose, orbit = 1, None, False, False
     if argv[:1] in (['-h'], ['--help']):
         print(__doc__.strip())
         return
-    while argv[:1] in (['--runs'], ['--steps']):
+    while argv[:1] in (['--runs'], ['--steps'], ['--verbose'], ['--orbit']):
+        if argv[0] in ('--verbose', '--orbit'):
+            verbose = verbose or argv[0] == '--verbose'
+            orbit = orbit or argv[0] == '--orbit'
+            argv = argv[1:]
+            continue
         if argv[0] == '--runs':
             runs = int(argv[1])
         else:
@@ -117,9 +138,10 @@ def main(argv):
         else (argv, [])
     if not binaries or not os.environ.get('DISPLAY'):
         raise SystemExit(__doc__)
+    steps = steps or (20 if orbit else 4)
     for _ in range(runs):
         for b in binaries:
-            frames, worst, coarse, over, wall = measure(b, args, steps)
+            frames, worst, coarse, over, wall = measure(b, args, steps, verbose, orbit)
             print(f'{b}: {frames} UI frames from the press to full quality, worst {worst:.0f} ms '
                   f'(coarse {coarse:.0f} ms), {over} over 100 ms; full quality {wall:.2f} s '
                   f'after the release', flush=True)

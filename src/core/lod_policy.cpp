@@ -33,8 +33,10 @@ void LodPolicy::startFromFullQuality(double fullMs) {
   }
 }
 
-void LodPolicy::reportMovingFrame(int index, double ms) {
-  if (index < 0 || index >= kLevelCount || !(ms >= 0.0)) return;
+void LodPolicy::reportMovingFrame(int index, double renderMs, double overheadMs) {
+  if (index < 0 || index >= kLevelCount || !(renderMs >= 0.0)) return;
+  if (!(overheadMs >= 0.0)) overheadMs = 0.0;
+  const double ms = renderMs + overheadMs;
   measured_[size_t(index)] = ms;
   level_ = index;
   if (ms > targetMs_) {
@@ -44,7 +46,9 @@ void LodPolicy::reportMovingFrame(int index, double ms) {
   if (index == 0) return;
   const int finer = index - 1;
   double expected = measured_[size_t(finer)];
-  if (expected < 0.0) expected = ms * expectedCostRatio(finer) / expectedCostRatio(index);
+  if (expected < 0.0)
+    expected = overheadMs + renderMs * std::max(kMinStepRatio, expectedCostRatio(finer) /
+                                                                   expectedCostRatio(index));
   if (expected < 0.8 * targetMs_) level_ = finer;
 }
 

@@ -28,6 +28,13 @@ class LodPolicy {
   // Start at volume/2 and image/2: safe for both splat-bound (big volumes) and fill-bound
   // (magnified small volumes) cases; measurements move it from there.
   static constexpr int kStartLevel = 2;
+  // A finer level not measured yet is expected to render at least this many times as long as
+  // the level just measured: each step halves the volume or the image per axis, and llvmpipe
+  // took 2.2-2.6x a step at the coarse levels (the default volume and engine in the window),
+  // where the mean in expectedCostRatio says 1.2x for volume/8 to volume/4 at image/4 (twice
+  // the slabs over the same pixels): that guess sent a UI frame past 100 ms at every
+  // transfer-function drag.
+  static constexpr double kMinStepRatio = 2.5;
 
   // targetMs: the frame time to stay under while moving; refineDelayMs: quiet time after the
   // last input before the full-quality frame.
@@ -36,10 +43,12 @@ class LodPolicy {
   // The level to draw the next moving frame with.
   int movingLevel() const { return level_; }
   static const LodLevel& level(int index) { return kLevels[std::size_t(index)]; }
-  // Records how long a moving frame at `level` took and picks the next moving level: coarser
-  // when over the target, finer when the finer level is known (or expected, from this frame's
-  // time times its cost ratio) to fit under 80% of the target.
-  void reportMovingFrame(int level, double ms);
+  // Records how long a moving frame at `level` took, `renderMs` drawing the level and
+  // `overheadMs` the rest of the UI frame (panels, present, swap: the same at every level), and
+  // picks the next moving level: coarser when the whole frame is over the target, finer when
+  // the finer level is known (or expected: the overhead plus the render times its cost ratio,
+  // at least kMinStepRatio) to fit under 80% of the target.
+  void reportMovingFrame(int level, double renderMs, double overheadMs = 0.0);
   // Picks the first moving level from a measured full-quality frame: the finest coarse level
   // expected (by expectedCostRatio) to fit under 80% of the target, else the coarsest. Moving
   // frames measured later take over.

@@ -111,8 +111,14 @@ void ViewerWindow::run() {
                      warmUp || !messages_.current(now()).empty() || imgui_.keysHeld();
     if (!active && !due && quietFrames >= kFramesAfterActivity) continue;
 
+    // Before the frame: a finished splat set's upload or a reload, not the moving level's cost.
+    const double beforeDrawMs = millisecondsSince(start);
     const bool rendered = drawFrame(active);
     const double ms = millisecondsSince(start);
+    if (movingLevelDrawn_ >= 0)
+      policy_.reportMovingFrame(movingLevelDrawn_, movingRenderMs_,
+                                ms - beforeDrawMs - movingRenderMs_);
+    movingLevelDrawn_ = -1;
     frameStats_.frameMs = ms;
     refinement_.reportFrame(ms);
     logFrame(ms);
@@ -193,6 +199,7 @@ double ViewerWindow::renderLevel(int level, const Camera& camera, const glm::ive
     return millisecondsSince(start);
   }
   const double ms = millisecondsSince(start);
+  levelRenderMs_ = ms;
   noteImage(fb);
   frameStats_.render = lod_.last().stats();
   frameStats_.imageWidth = lod_.imageWidth();
@@ -268,16 +275,27 @@ void ViewerWindow::logFrame(double ms) {
     reportedRefinement_ = r.index;
     frameStats_.refinement = r;
   }
-  if (!frameLog_) return;
+  if (!frameLog_) {
+    levelRenderMs_ = -1.0;
+    return;
+  }
   if (refinement_.active())
-    std::fprintf(
-        stderr, "ewaview: frame %.1f ms, refining %.0f%% (step %.1f ms, budget %.0f ms)\n", ms,
-        100.0 * refinement_.progress(lod_), refinement_.lastStepMs(), refinement_.budgetMs());
+    std::fprintf(stderr, "ewaview: frame %.1f ms, refining %.0f%% (step %.1f ms, budget %.0f ms)\n",
+                 ms, 100.0 * refinement_.progress(lod_), refinement_.lastStepMs(),
+                 refinement_.budgetMs());
   else if (finished)  // the frame of the refinement's last step, its final pass included
     std::fprintf(stderr, "ewaview: frame %.1f ms, level %d (last step %.1f ms)\n", ms,
                  lod_.lastLevel(), refinement_.lastStepMs());
+  else if (levelRenderMs_ >= 0.0)  // a level drawn whole: where its time went
+    std::fprintf(stderr,
+                 "ewaview: frame %.1f ms, level %d (render %.1f ms: classify %.1f, partition "
+                 "%.1f, splat %.1f, final %.1f)\n",
+                 ms, lod_.lastLevel(), levelRenderMs_, frameStats_.render.classifyMs,
+                 frameStats_.render.partitionMs, frameStats_.render.splatMs,
+                 frameStats_.render.compositeMs);
   else
     std::fprintf(stderr, "ewaview: frame %.1f ms, level %d\n", ms, lod_.lastLevel());
+  levelRenderMs_ = -1.0;
   if (finished)
     std::fprintf(stderr,
                  "ewaview: full quality in %.0f ms over %d frames (renderer %.0f ms), worst "
@@ -333,8 +351,8 @@ bool ViewerWindow::drawFrame(bool activity) {
     // Moving: the coarse level the policy picked (full quality with the switch off). Any
     // change abandons the refinement under way.
     const int level = levelOfDetail_ ? policy_.movingLevel() : 0;
-    const double ms = renderLevel(level, controller_.camera(), fb);
-    if (levelOfDetail_) policy_.reportMovingFrame(level, ms);
+    movingRenderMs_ = renderLevel(level, controller_.camera(), fb);
+    if (levelOfDetail_) movingLevelDrawn_ = level;  // reported with the whole frame's time
     calibrate_ = false;
     refineFailed_ = false;
     if (!config_.recordCameraPath.empty()) recorded_ += cameraStepLine(controller_.camera()) + "\n";

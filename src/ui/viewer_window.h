@@ -152,6 +152,11 @@ class ViewerWindow {
   RendererKind rendererKind_ = RendererKind::Splat;
   std::string renderError_;  // the last render failure, until a render succeeds
   LodPolicy policy_;
+  // The moving level drawFrame drew and its render time, reported to the policy with the rest of
+  // the UI frame (panels, present and swap: 10-30 ms on llvmpipe; the limit is on UI frames);
+  // level -1: none.
+  int movingLevelDrawn_ = -1;
+  double movingRenderMs_ = 0.0;
   ProgressiveRefinement refinement_;
   ImagePresenter presenter_;
   CameraController controller_;
@@ -183,9 +188,10 @@ class ViewerWindow {
 
   FrameStats frameStats_;
   bool levelOfDetail_ = true;
-  bool axes_ = true;          // the orientation axes in the corner
-  bool printLayout_ = false;  // EWAVIEW_PRINT_LAYOUT=1: layout and frame lines on stdout
-  bool frameLog_ = false;     // EWAVIEW_FRAME_LOG=1: every frame's time on stderr
+  bool axes_ = true;             // the orientation axes in the corner
+  bool printLayout_ = false;     // EWAVIEW_PRINT_LAYOUT=1: layout and frame lines on stdout
+  bool frameLog_ = false;        // EWAVIEW_FRAME_LOG=1: every frame's time on stderr
+  double levelRenderMs_ = -1.0;  // this frame's renderLevel time for the log; -1: none
   bool fullSplatsArrived_ = false;
   bool fullLevelAsked_ = false;  // the full level's build was asked for before the first picture
   bool splatsUploaded_ = false;  // this frame took a worker's splat set (uploading it)

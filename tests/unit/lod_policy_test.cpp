@@ -27,7 +27,8 @@ TEST(LodPolicy, SlowFramesGoCoarserUntilTheLast) {
 
 TEST(LodPolicy, FastFramesGoFinerOnlyWhenTheFinerLevelShouldFit) {
   LodPolicy p(100.0);
-  // Level 1 costs 0.5625 of full; at 10 ms full quality is expected at ~18 ms: go finer.
+  // Level 1 costs 0.5625 of full; at 10 ms full quality is expected at ~18 ms (25 with the
+  // step's floor): go finer.
   p.reportMovingFrame(1, 10.0);
   EXPECT_EQ(p.movingLevel(), 0);
   // Full quality then measured over the target: back to level 1.
@@ -37,9 +38,44 @@ TEST(LodPolicy, FastFramesGoFinerOnlyWhenTheFinerLevelShouldFit) {
   p.reportMovingFrame(1, 60.0);
   EXPECT_EQ(p.movingLevel(), 1);
   p.resetMeasurements();
-  // 60 ms at level 1 predicts ~107 ms at full quality: over 80% of the target, stay.
+  // 60 ms at level 1 predicts ~150 ms at full quality: over 80% of the target, stay.
   p.reportMovingFrame(1, 60.0);
   EXPECT_EQ(p.movingLevel(), 1);
+}
+
+TEST(LodPolicy, AFinerLevelIsExpectedToCostAtLeastTwoAndAHalfTimesTheCoarser) {
+  // Volume/8 to volume/4 at image/4: the cost ratios' mean says 1.21x (40 ms -> 48 ms, under
+  // 80), llvmpipe took 2.2-2.6x (over 100 ms with the UI): the floor (100 ms) keeps level 5.
+  EXPECT_LT(LodPolicy::expectedCostRatio(4) / LodPolicy::expectedCostRatio(5), 1.25);
+  LodPolicy p(100.0);
+  p.reportMovingFrame(5, 40.0);
+  EXPECT_EQ(p.movingLevel(), 5);
+  // Fast enough for two and a half times the time: finer.
+  p.reportMovingFrame(5, 31.0);
+  EXPECT_EQ(p.movingLevel(), 4);
+  // Where the ratios' mean says more than the floor, the mean decides: image/2 to image/1 at
+  // volume/2 is 3x (volume/2 to full quality, 1.78x, is floored to 2.5).
+  LodPolicy q(100.0);
+  q.reportMovingFrame(2, 30.0);  // level 1 expected at 90 ms: stay
+  EXPECT_EQ(q.movingLevel(), 2);
+  q.reportMovingFrame(2, 26.0);  // 78 ms: finer
+  EXPECT_EQ(q.movingLevel(), 1);
+}
+
+TEST(LodPolicy, TheUiFramesOverheadCountsOnceAndIsNotScaled) {
+  // The whole frame decides: 85 ms of render and 20 of panels and swap pass the target.
+  LodPolicy p(100.0);
+  p.reportMovingFrame(2, 85.0, 20.0);
+  EXPECT_EQ(p.movingLevel(), 3);
+  EXPECT_DOUBLE_EQ(p.measuredMs(2), 105.0);
+  // Image/8 to image/4 at volume/8 is 3.66x the render: 20 + 16 x 3.66 = 79 ms fits, where the
+  // whole 36 ms scaled (132 ms) would not.
+  LodPolicy q(100.0);
+  q.reportMovingFrame(6, 16.0, 20.0);
+  EXPECT_EQ(q.movingLevel(), 5);
+  LodPolicy r(100.0);
+  r.reportMovingFrame(6, 17.0, 20.0);  // 82 ms: stay
+  EXPECT_EQ(r.movingLevel(), 6);
 }
 
 TEST(LodPolicy, FirstMovingLevelFromTheFullQualityFrame) {
