@@ -7,13 +7,15 @@ pre-integration table, a worker builds the full level's splats) and reports the 
 the press until full quality is refined again.
 
 Usage: xvfb-run -a -s "-screen 0 1280x1024x24" scripts/window_tf_drag_time.py [--runs N]
-       [--steps STEPS] [--verbose] [--orbit] BINARY [BINARY ...] [-- EWAVIEW ARGS]
+       [--steps STEPS] [--verbose] [--orbit] [--screenshot] BINARY [BINARY ...] [-- EWAVIEW ARGS]
 --verbose prints the log line of every frame that drew a level whole (render, classify,
 partition, splat and final ms). --orbit drags the view across the volume instead (STEPS moves
 of 15 pixels 0.1 s apart, 20 by default), timing the moving frames of an orbit the same way.
+--screenshot presses F12 on the release (a coarse picture on screen) and waits for the file too.
 Several binaries (a build before a change and after it) take turns, run by run, so a machine
 that slows down hits them alike. Needs xdotool and a display (DISPLAY set).
 """
+import json
 import os
 import re
 import signal
@@ -61,11 +63,14 @@ def xdotool(*args, check=True):
                           capture_output=True).stdout
 
 
-def measure(binary, args, steps, verbose=False, orbit=False, timeout=180.0):
+def measure(binary, args, steps, verbose=False, orbit=False, screenshot=False, timeout=180.0):
     """(frames from the press to full quality again, worst of them ms, worst frame that drew a
     coarse level ms, frames over 100 ms, seconds from the release to full quality)."""
+    config = tempfile.mkdtemp()
+    with open(os.path.join(config, 'settings.json'), 'w') as f:  # screenshots beside it
+        json.dump({'screenshot_dir': config}, f)
     env = dict(os.environ, EWAVIEW_FRAME_LOG='1', EWAVIEW_PRINT_LAYOUT='1',
-               EWAVIEW_CONFIG_DIR=tempfile.mkdtemp())
+               EWAVIEW_CONFIG_DIR=config)
     proc = subprocess.Popen([binary] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             env=env, text=True, start_new_session=True)
     out, err = Lines(proc.stdout), Lines(proc.stderr)
@@ -100,8 +105,20 @@ def measure(binary, args, steps, verbose=False, orbit=False, timeout=180.0):
             time.sleep(pause)
         xdotool('mouseup', 1)
         released = time.time()
-        wait_for('full quality after the drag',
-                 lambda: any(DONE.match(l) for l in err.snapshot()[mark:]), timeout)
+        if screenshot:
+            xdotool('key', '--window', wid, 'F12')
+            wait_for('the screenshot', lambda: any(
+                l.startswith('ewaview: saved screenshot ') for l in err.snapshot()[mark:]),
+                timeout)
+
+        def full_quality():
+            lines = err.snapshot()[mark:]
+            if any(DONE.match(l) for l in lines):
+                return True
+            # A screenshot drawn whole leaves full quality on screen with no refinement.
+            frames = [m.group(2) for m in map(FRAME.match, lines) if m]
+            return screenshot and frames[-1:] == ['level 0']
+        wait_for('full quality after the drag', full_quality, timeout)
         refined = time.time()
     finally:
         os.killpg(proc.pid, signal.SIGTERM)
@@ -119,14 +136,15 @@ def measure(binary, args, steps, verbose=False, orbit=False, timeout=180.0):
 
 
 def main(argv):
-    runs, steps, verbose, orbit = 1, None, False, False
+    runs, steps, verbose, orbit, screenshot = 1, None, False, False, False
     if argv[:1] in (['-h'], ['--help']):
         print(__doc__.strip())
         return
-    while argv[:1] in (['--runs'], ['--steps'], ['--verbose'], ['--orbit']):
-        if argv[0] in ('--verbose', '--orbit'):
+    while argv[:1] in (['--runs'], ['--steps'], ['--verbose'], ['--orbit'], ['--screenshot']):
+        if argv[0] in ('--verbose', '--orbit', '--screenshot'):
             verbose = verbose or argv[0] == '--verbose'
             orbit = orbit or argv[0] == '--orbit'
+            screenshot = screenshot or argv[0] == '--screenshot'
             argv = argv[1:]
             continue
         if argv[0] == '--runs':
@@ -141,7 +159,7 @@ def main(argv):
     steps = steps or (20 if orbit else 4)
     for _ in range(runs):
         for b in binaries:
-            frames, worst, coarse, over, wall = measure(b, args, steps, verbose, orbit)
+            frames, worst, coarse, over, wall = measure(b, args, steps, verbose, orbit, screenshot)
             print(f'{b}: {frames} UI frames from the press to full quality, worst {worst:.0f} ms '
                   f'(coarse {coarse:.0f} ms), {over} over 100 ms; full quality {wall:.2f} s '
                   f'after the release', flush=True)

@@ -125,6 +125,7 @@ void ViewerWindow::run() {
     // A new image changes the statistics shown, so draw at least one more frame.
     quietFrames = (active || rendered) ? 0 : quietFrames + 1;
   }
+  pollScreenshot(/*wait=*/true);  // a screenshot still being written is finished and reported
 }
 
 double ViewerWindow::now() const {
@@ -134,8 +135,8 @@ double ViewerWindow::now() const {
 bool ViewerWindow::busy() const {
   // A save on its worker too: the panel counts its seconds, and its end is shown when it comes
   // (an idle window would see it only at its next wake, 10 s later).
-  return loadJob_.running() || saveJob_.running() || turntable_.total > 0 || buildPending_ ||
-         liveTf_.building();
+  return loadJob_.running() || saveJob_.running() || turntable_.total > 0 || capture_.active ||
+         shotWrite_.valid() || buildPending_ || liveTf_.building();
 }
 
 void ViewerWindow::requestFullLevel() {
@@ -161,11 +162,11 @@ bool ViewerWindow::refineDue() const {
 }
 
 double ViewerWindow::waitSeconds() const {
-  if (turntable_.total > 0 || buildPending_ || refinement_.active()) return 0.0;
+  if (turntable_.total > 0 || capture_.active || buildPending_ || refinement_.active()) return 0.0;
   if (liveTf_.building()) return kBuildPollSeconds;
   if (hasImage_ && !refineFailed_ && lod_.lastLevel() != 0)
     return std::max(0.0, (policy_.refineDelayMs() - millisecondsSince(lastChange_)) / 1000.0);
-  if (loadJob_.running() || saveJob_.running()) return kLoadingWaitSeconds;
+  if (loadJob_.running() || saveJob_.running() || shotWrite_.valid()) return kLoadingWaitSeconds;
   return kIdleWaitSeconds;
 }
 
@@ -310,6 +311,7 @@ bool ViewerWindow::drawFrame(bool activity) {
 
   pollLoad();
   pollSave();
+  pollScreenshot();
   bool screenshotNow = false;
   applyCommands(fb, &screenshotNow);
   drawPanels(fb, &screenshotNow);
@@ -318,9 +320,9 @@ bool ViewerWindow::drawFrame(bool activity) {
   const bool stale = !hasImage_ || renderedCamera_ != controller_.revision() ||
                      renderedSettings_ != settingsRevision_ || renderedSize_ != fb ||
                      renderedTf_ != liveTf_.revision();
-  if (turntable_.total > 0) {
-    turntableFrame(fb);
-    rendered = true;
+  if ((capture_.active || turntable_.total > 0) && hasImage_) {
+    // A screenshot's or turntable's picture, refined in steps; the view catches up after it.
+    rendered = captureStep(fb, activity);
   } else if (buildPending_) {
     // This frame shows "building splats"; the next one does the work.
     buildPending_ = false;

@@ -1,4 +1,5 @@
 // ViewerWindow's pictures written to files: screenshots, turntables, the recorded camera path.
+#include <chrono>
 #include <ctime>
 #include <filesystem>
 #include <iostream>
@@ -12,6 +13,11 @@
 #include "ui/viewer_window.h"
 
 namespace ewa {
+
+namespace {
+// A capture's start (its partition) this quick leaves its UI frame room for the first step.
+constexpr double kQuickStartMs = 2.0;
+}  // namespace
 
 // The cameras of the moving frames, replayable by ewaview-interact-bench --path.
 void ViewerWindow::saveRecording() {
@@ -34,27 +40,44 @@ glm::ivec2 ViewerWindow::captureSize(const glm::ivec2& fb) const {
 }
 
 void ViewerWindow::screenshot(const glm::ivec2& fb) {
+  if (capture_.active || turntable_.total > 0) {
+    error("no screenshot: a " + std::string(turntable_.total > 0 ? "turntable" : "screenshot") +
+          " is being drawn");
+    return;
+  }
+  if (!renderError_.empty()) {  // shown in the window already: no stale picture written
+    error("no screenshot: " + renderError_);
+    return;
+  }
+  PendingCapture c;
+  c.active = true;
+  c.camera = controller_.camera();
+  c.clip = settings_.clip;
+  c.size = captureSize(fb);
+  c.path = std::filesystem::absolute(
+               screenshotFileName(saved_.screenshotDir, current_.name, std::time(nullptr)))
+               .lexically_normal()
+               .string();
+  c.cameraRevision = controller_.revision();
+  c.settingsRevision = settingsRevision_;
+  c.tfRevision = liveTf_.revision();
+  // Full quality of this view at this size on screen: written now. Else it is refined over the
+  // next UI frames (a coarse picture on screen, a refinement under way, a larger size), never
+  // drawn whole in one frame (seconds on llvmpipe).
+  const bool onScreen = hasImage_ && lod_.lastLevel() == 0 && !refinement_.active() &&
+                        lod_.imageWidth() == c.size.x && lod_.imageHeight() == c.size.y &&
+                        renderedCamera_ == c.cameraRevision &&
+                        renderedSettings_ == c.settingsRevision && renderedTf_ == c.tfRevision;
+  if (!onScreen) {
+    // The window's own refinement of this very view (any change since would have cancelled it):
+    // the capture carries it on.
+    c.started = refinement_.active() && c.size == fb;
+    c.startedTfRevision = c.tfRevision;
+    capture_ = std::move(c);
+    return;
+  }
   try {
-    const glm::ivec2 size = captureSize(fb);
-    // Always the full-quality picture, even if a coarse one is on screen; a larger one is
-    // drawn for the file, and the window's drawn again after it.
-    if (size != fb) {
-      renderLevel(0, controller_.camera(), size);
-      renderedCamera_ = ~uint64_t(0);
-    } else if (!hasImage_ || lod_.lastLevel() != 0) {
-      renderLevel(0, controller_.camera(), fb);
-    }
-    if (!renderError_.empty()) {  // shown in the window already: no stale picture written
-      error("no screenshot: " + renderError_);
-      return;
-    }
-    const std::string path =
-        std::filesystem::absolute(
-            screenshotFileName(saved_.screenshotDir, current_.name, std::time(nullptr)))
-            .lexically_normal()
-            .string();
-    writePng(path, lod_.last().readImage());
-    info("saved screenshot " + path);
+    writeScreenshot(c.path, lod_.last().readImage());
   } catch (const std::exception& e) {
     error(e.what());
   }
@@ -89,31 +112,119 @@ void ViewerWindow::startTurntable(int frames, const std::string& format, int fps
       std::make_unique<TerminalProgress>(tour ? "ewaview: tour" : "ewaview: turntable");
 }
 
-// One turntable frame; ends the turntable after the last one.
-void ViewerWindow::turntableFrame(const glm::ivec2& fb) {
-  WindowTurntable& t = turntable_;
-  const std::string file = t.sink->fileOf(t.done);
+void ViewerWindow::writeScreenshot(const std::string& path, Image8 image) {
+  pollScreenshot(/*wait=*/true);  // the one before first: its message, then this one's
+  shotPath_ = path;
+  shotWrite_ =
+      std::async(std::launch::async, [path, image = std::move(image)] { writePng(path, image); });
+}
+
+void ViewerWindow::pollScreenshot(bool wait) {
+  if (!shotWrite_.valid()) return;
+  if (!wait && shotWrite_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
   try {
-    const glm::ivec2 size = captureSize(fb);
-    if (t.tour.empty()) {
-      renderLevel(0, turntableCamera(t.start, t.done, t.total), size);
-    } else {
-      // The stop's crop box and planes for this frame only; the panel's come back after
-      // (renderLevel reports a failed render itself, it does not throw).
-      const TourStop stop = tourFrame(t.tour, t.done, t.total);
-      const ClipRegion own = std::exchange(settings_.clip, stop.clip);
-      renderLevel(0, stop.camera, size);
-      settings_.clip = own;
-    }
-    renderedCamera_ = ~uint64_t(0);  // the view on screen is not the controller's camera
-    // A failed frame ends the turntable, as a failed screenshot writes nothing: never the
-    // picture before it in its place.
-    if (!renderError_.empty()) throw std::runtime_error("turntable stopped: " + renderError_);
-    t.sink->add(lod_.last().readImage(), t.done);
-    if (t.done + 1 == t.total) t.sink->finish();
+    shotWrite_.get();
+    info("saved screenshot " + shotPath_);
   } catch (const std::exception& e) {
     error(e.what());
-    t = WindowTurntable{};
+  }
+}
+
+void ViewerWindow::nextTurntableCapture(const glm::ivec2& fb) {
+  const WindowTurntable& t = turntable_;
+  PendingCapture c;
+  c.active = true;
+  c.size = captureSize(fb);
+  if (t.tour.empty()) {
+    c.camera = turntableCamera(t.start, t.done, t.total);
+    c.clip = settings_.clip;
+  } else {
+    // The stop's crop box and planes, for this frame only.
+    const TourStop stop = tourFrame(t.tour, t.done, t.total);
+    c.camera = stop.camera;
+    c.clip = stop.clip;
+  }
+  capture_ = std::move(c);
+}
+
+bool ViewerWindow::captureStep(const glm::ivec2& fb, bool activity) {
+  if (!capture_.active) {
+    if (turntable_.total == 0) return false;
+    nextTurntableCapture(fb);
+  }
+  // A transfer-function edit's full splats still on the worker: they come first, as for the
+  // window's own refinement (the renderer holds the old set until then).
+  if (liveTf_.building() || splatsUploaded_) return false;
+  try {
+    // Not begun, its refinement abandoned since (another volume, another renderer) or drawn
+    // with a transfer function edited since.
+    if (!capture_.started || !refinement_.active() ||
+        capture_.startedTfRevision != liveTf_.revision() || fullSplatsArrived_) {
+      capture_.startedTfRevision = liveTf_.revision();
+      RenderSettings s = settings_;
+      s.clip = capture_.clip;
+      refinement_.start(lod_, capture_.camera, s, capture_.size);
+      capture_.started = true;
+      renderError_.clear();
+      // A quick start (a GPU's partition) leaves this frame room for the first step: a
+      // turntable's frame then takes one UI frame where it fits one, as drawn whole it did.
+      if (refinement_.lastStepMs() > kQuickStartMs) return false;
+    }
+    if (printLayout_) {  // the scripted window test: captures are drawn in steps
+      std::printf("capture step\n");
+      std::fflush(stdout);
+    }
+    if (!refinement_.step(lod_, refinement_.presentsStep(activity))) return false;
+  } catch (const std::exception& e) {
+    refinement_.cancel();
+    renderFailed(e, fb);
+    if (capture_.path.empty())
+      stopTurntable("turntable stopped: " + renderError_);
+    else
+      error("no screenshot: " + renderError_);
+    capture_ = PendingCapture{};
+    return true;
+  }
+  finishCapture(fb);
+  return true;
+}
+
+void ViewerWindow::finishCapture(const glm::ivec2& fb) {
+  const PendingCapture c = std::exchange(capture_, PendingCapture{});
+  frameStats_.render = lod_.last().stats();
+  frameStats_.imageWidth = lod_.imageWidth();
+  frameStats_.imageHeight = lod_.imageHeight();
+  frameStats_.lodLevel = 0;
+  // A screenshot of the view still on screen is the window's full picture too (a larger one
+  // shown scaled down, supersampled); any other shows a view that is not the controller's:
+  // drawn again after.
+  const bool current = !c.path.empty() && c.cameraRevision == controller_.revision() &&
+                       c.settingsRevision == settingsRevision_ &&
+                       c.tfRevision == liveTf_.revision();
+  if (current)
+    noteImage(fb);
+  else
+    renderedCamera_ = ~uint64_t(0);
+  if (c.path.empty()) {
+    turntableFrameDone(lod_.last().readImage());
+    return;
+  }
+  try {
+    writeScreenshot(c.path, lod_.last().readImage());
+  } catch (const std::exception& e) {
+    error(e.what());
+  }
+}
+
+void ViewerWindow::turntableFrameDone(Image8 image) {
+  WindowTurntable& t = turntable_;
+  if (t.total == 0) return;  // cancelled meanwhile
+  const std::string file = t.sink->fileOf(t.done);
+  try {
+    t.sink->add(std::move(image), t.done);
+    if (t.done + 1 == t.total) t.sink->finish();
+  } catch (const std::exception& e) {
+    stopTurntable(e.what());
     return;
   }
   ++t.done;
@@ -123,6 +234,21 @@ void ViewerWindow::turntableFrame(const glm::ivec2& fb) {
     info("saved " + std::to_string(t.total) + " frames in " + t.sink->description());
     t = WindowTurntable{};
   }
+}
+
+// Ends the turntable before its last frame (an error, or cancelled: `why` empty).
+void ViewerWindow::stopTurntable(const std::string& why) {
+  if (turntable_.total == 0) return;
+  if (why.empty())
+    turntable_.progress->finish("cancelled");
+  else
+    error(why);
+  turntable_ = WindowTurntable{};
+  if (capture_.active && capture_.path.empty()) {
+    capture_ = PendingCapture{};
+    refinement_.cancel();
+  }
+  renderedCamera_ = ~uint64_t(0);
 }
 
 }  // namespace ewa

@@ -285,11 +285,7 @@ void ViewerWindow::applySessionEdits(const SessionEdits& e, const glm::ivec2& fb
   if (e.captureScale) saved_.captureScale = *e.captureScale;
   if (e.turntableFrames > 0 && turntable_.total == 0)
     startTurntable(e.turntableFrames, e.turntableFormat, e.turntableFps, e.tour);
-  if (e.cancelTurntable && turntable_.total > 0) {
-    turntable_.progress->finish("cancelled");
-    turntable_ = WindowTurntable{};
-    renderedCamera_ = ~uint64_t(0);
-  }
+  if (e.cancelTurntable) stopTurntable("");
 }
 
 SessionView ViewerWindow::sessionView() {

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <future>
 #include <map>
 #include <memory>
 #include <optional>
@@ -46,6 +47,23 @@ struct WindowTurntable {
   std::vector<TourStop> tour;       // a tour through these stops instead of a turn about `start`
   std::unique_ptr<FrameSink> sink;  // PNG frames in a folder, or a video
   std::unique_ptr<TerminalProgress> progress;
+};
+
+// A picture for a file, refined over UI frames like the window's own full-quality picture so
+// that the window keeps answering meanwhile: a screenshot's, or a turntable's or tour's frame.
+struct PendingCapture {
+  bool active = false;
+  bool started = false;  // its refinement has begun
+  Camera camera;
+  ClipRegion clip;
+  glm::ivec2 size{0, 0};
+  std::string path;  // a screenshot's file; empty: the turntable's next frame
+  // A screenshot of the view on screen: the revisions it was asked at, so that a finished
+  // picture of the window's size that still matches them stands as the window's own.
+  uint64_t cameraRevision = 0, settingsRevision = 0, tfRevision = 0;
+  // The transfer function its refinement began with: an edit since (its new splats come from
+  // the worker) begins it again.
+  uint64_t startedTfRevision = 0;
 };
 
 // Members are destroyed in reverse order, so GL objects go before the context and ImGui before
@@ -120,7 +138,17 @@ class ViewerWindow {
   // `format`: "png" (a folder of frames), "mp4" or "webm" (a video at `fps`).
   // `tour`: through the camera bookmarks (with their clip regions) instead of about view-up.
   void startTurntable(int frames, const std::string& format, int fps, bool tour = false);
-  void turntableFrame(const glm::ivec2& fb);
+  // The turntable's next frame as a capture, its picture handed to the sink.
+  void nextTurntableCapture(const glm::ivec2& fb);
+  // This UI frame's share of the capture under way (starting the turntable's next frame when
+  // none is); true when a picture was finished (and written or handed on).
+  bool captureStep(const glm::ivec2& fb, bool activity);
+  void finishCapture(const glm::ivec2& fb);
+  void turntableFrameDone(Image8 image);
+  void stopTurntable(const std::string& why);
+  // Writes a screenshot's picture on a worker (one at a time); pollScreenshot says when it is.
+  void writeScreenshot(const std::string& path, Image8 image);
+  void pollScreenshot(bool wait = false);
 
   // viewer_panels.cpp: the panels, key commands and bookmarks.
   void drawPanels(const glm::ivec2& fb, bool* screenshotNow);
@@ -184,6 +212,11 @@ class ViewerWindow {
   std::map<int, TransferFunction> channelTfs_;  // each channel's function while paging
   BookmarkStore bookmarks_;
   WindowTurntable turntable_;
+  PendingCapture capture_;
+  // A screenshot's PNG being encoded and written on a worker (150 ms at 2048x1536), and its
+  // file; the future's destructor waits for it, so a file begun is finished on exit.
+  std::future<void> shotWrite_;
+  std::string shotPath_;
   std::string recorded_;  // camera path lines, when recording
 
   FrameStats frameStats_;

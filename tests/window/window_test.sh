@@ -533,6 +533,11 @@ click_until tour-button tour_started || fail "clicking Tour started no tour (no 
 tour_done() { [ -n "$(tour_dir)" ] && [ -f "$(tour_dir)/frame_035.png" ] && grep -q 'saved 36 frames' "$work/stderr"; }
 poll "the tour's 36 frames" tour_done
 [ "$(find "$(tour_dir)" -name 'frame_*.png' | wc -l)" -eq 36 ] || fail "the tour wrote $(ls "$(tour_dir)" | wc -l) files, not 36"
+# Each frame is refined over UI frames, as the window's own picture is, never drawn whole in
+# one (seconds on llvmpipe for a big volume, the window frozen meanwhile): one step at least
+# each, the screenshot's too.
+steps=$(grep -c '^capture step$' "$work/stdout")
+[ "$steps" -ge 37 ] || fail "the screenshot and the tour's 36 frames took $steps capture steps, not 37 or more"
 frame_size=$(identify -format '%wx%h' "$(tour_dir)/frame_000.png")
 [ "$frame_size" = "$((2 * width))x$((2 * height))" ] || fail "tour frames are $frame_size, not twice the window"
 all="$((2 * width))x$((2 * height))+0+0"
