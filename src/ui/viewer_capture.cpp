@@ -10,6 +10,7 @@
 #include "core/camera_path.h"
 #include "io/atomic_file.h"
 #include "io/png_io.h"
+#include "render/splat_renderer.h"
 #include "ui/viewer_window.h"
 
 namespace ewa {
@@ -160,9 +161,18 @@ bool ViewerWindow::captureStep(const glm::ivec2& fb, bool activity) {
     // with a transfer function edited since.
     if (!capture_.started || !refinement_.active() ||
         capture_.startedTfRevision != liveTf_.revision() || fullSplatsArrived_) {
-      capture_.startedTfRevision = liveTf_.revision();
       RenderSettings s = settings_;
       s.clip = capture_.clip;
+      // Another classification (shading switched on, say) is built on the worker first, once,
+      // as for the window's refinement; should that fail, the start classifies itself.
+      SplatRenderer* full = lod_.fullSplatRenderer();
+      const Classification wanted = splatClassification(s);
+      if (full && full->needsSplats(wanted) && fullBuildFor_ != wanted) {
+        fullBuildFor_ = wanted;
+        liveTf_.buildFullSplats(lod_, wanted);
+        return false;
+      }
+      capture_.startedTfRevision = liveTf_.revision();
       refinement_.start(lod_, capture_.camera, s, capture_.size);
       capture_.started = true;
       renderError_.clear();
