@@ -202,27 +202,34 @@ double ViewerWindow::renderLevel(int level, const Camera& camera, const glm::ive
   const double ms = millisecondsSince(start);
   levelRenderMs_ = ms;
   noteImage(fb);
+  noteFrameStats(level);
+  frameStats_.refinement = RefinementReport{};  // drawn whole, not refined
+  return ms;
+}
+
+void ViewerWindow::noteFrameStats(int level) {
   frameStats_.render = lod_.last().stats();
   frameStats_.imageWidth = lod_.imageWidth();
   frameStats_.imageHeight = lod_.imageHeight();
   frameStats_.lodLevel = level;
-  frameStats_.refinement = RefinementReport{};  // drawn whole, not refined
   frameStats_.gpuBytes = lod_.gpuBytes();
   if (hasNvx_) frameStats_.gpuMemory = gl::queryGpuMemory();
-  return ms;
+}
+
+bool ViewerWindow::askForFullSplats(const RenderSettings& settings) {
+  SplatRenderer* full = lod_.fullSplatRenderer();
+  const Classification wanted = splatClassification(settings);
+  if (!full || !full->needsSplats(wanted) || fullBuildFor_ == wanted) return false;
+  fullBuildFor_ = wanted;
+  liveTf_.buildFullSplats(lod_, wanted);
+  return true;
 }
 
 bool ViewerWindow::refine(const glm::ivec2& fb, bool activity) {
   if (!refinement_.active() || fullSplatsArrived_) {
     // Another classification (gradients, surface splats) is built on the worker first, once;
     // refineDue() waits for it. Should that fail, the start below classifies itself.
-    SplatRenderer* full = lod_.fullSplatRenderer();
-    const Classification wanted = splatClassification(settings_);
-    if (full && full->needsSplats(wanted) && fullBuildFor_ != wanted) {
-      fullBuildFor_ = wanted;
-      liveTf_.buildFullSplats(lod_, wanted);
-      return false;
-    }
+    if (askForFullSplats(settings_)) return false;
     // The slab partition and the uniforms: this frame's work; the slabs follow in the next
     // frames.
     try {
@@ -252,12 +259,7 @@ bool ViewerWindow::refine(const glm::ivec2& fb, bool activity) {
   renderError_.clear();
   noteImage(fb);
   const RefinementReport& report = refinement_.last();
-  frameStats_.render = lod_.last().stats();
-  frameStats_.imageWidth = lod_.imageWidth();
-  frameStats_.imageHeight = lod_.imageHeight();
-  frameStats_.lodLevel = 0;
-  frameStats_.gpuBytes = lod_.gpuBytes();
-  if (hasNvx_) frameStats_.gpuMemory = gl::queryGpuMemory();
+  noteFrameStats(0);
   if (calibrate_ && levelOfDetail_) policy_.startFromFullQuality(report.workMs);
   calibrate_ = false;
   if (printLayout_) {

@@ -10,7 +10,6 @@
 #include "core/camera_path.h"
 #include "io/atomic_file.h"
 #include "io/png_io.h"
-#include "render/splat_renderer.h"
 #include "ui/viewer_window.h"
 
 namespace ewa {
@@ -165,13 +164,7 @@ bool ViewerWindow::captureStep(const glm::ivec2& fb, bool activity) {
       s.clip = capture_.clip;
       // Another classification (shading switched on, say) is built on the worker first, once,
       // as for the window's refinement; should that fail, the start classifies itself.
-      SplatRenderer* full = lod_.fullSplatRenderer();
-      const Classification wanted = splatClassification(s);
-      if (full && full->needsSplats(wanted) && fullBuildFor_ != wanted) {
-        fullBuildFor_ = wanted;
-        liveTf_.buildFullSplats(lod_, wanted);
-        return false;
-      }
+      if (askForFullSplats(s)) return false;
       capture_.startedTfRevision = liveTf_.revision();
       refinement_.start(lod_, capture_.camera, s, capture_.size);
       capture_.started = true;
@@ -201,10 +194,7 @@ bool ViewerWindow::captureStep(const glm::ivec2& fb, bool activity) {
 
 void ViewerWindow::finishCapture(const glm::ivec2& fb) {
   const PendingCapture c = std::exchange(capture_, PendingCapture{});
-  frameStats_.render = lod_.last().stats();
-  frameStats_.imageWidth = lod_.imageWidth();
-  frameStats_.imageHeight = lod_.imageHeight();
-  frameStats_.lodLevel = 0;
+  noteFrameStats(0);
   // A screenshot of the view still on screen is the window's full picture too (a larger one
   // shown scaled down, supersampled); any other shows a view that is not the controller's:
   // drawn again after.

@@ -95,6 +95,11 @@ class ViewerWindow {
   double renderLevel(int level, const Camera& camera, const glm::ivec2& fb);
   // Records a new picture on screen (rendered or refined) for the staleness checks and panel.
   void noteImage(const glm::ivec2& fb);
+  // The statistics panel's figures of the picture lod_ last finished, drawn at `level`.
+  void noteFrameStats(int level);
+  // Asks the worker for the full level's splats of the classification `settings` need, once,
+  // where the full renderer lacks them; true when asked now (the caller waits for them).
+  bool askForFullSplats(const RenderSettings& settings);
   void renderFailed(const std::exception& e, const glm::ivec2& fb);
   // The progressive full-quality frame: start it, or draw this frame's share of it (the
   // budget smaller where the frame presents: after `activity` or the present interval).
