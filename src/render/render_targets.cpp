@@ -1,57 +1,133 @@
 // RenderTargets: creation of the slab, accumulation and output framebuffers.
 #include "render/render_targets.h"
 
+#include <algorithm>
+#include <chrono>
+#include <limits>
 #include <string>
+#include <vector>
 
+#include "core/stopwatch.h"
 #include "gl/gl_error.h"
 
 namespace ewa {
 
 namespace {
 
-// Half floats where asked: a slab's sums are small (weights of the kernels one slab holds and
-// normalized values), and blending half the bytes is what costs on a GPU.
-gl::Texture slabImageTexture(int w, int h, bool half) {
-  gl::Texture t = gl::Texture::create2D(half ? GL_RGBA16F : GL_RGBA32F, w, h);
-  t.setFilter(GL_LINEAR, GL_LINEAR);  // coarser slab images are read bilinearly
-  return t;
+// Bytes a pixel of each format the images use. Slab images are half floats where asked: a
+// slab's sums are small (weights of the kernels one slab holds and normalized values), and
+// blending half the bytes is what costs on a GPU.
+size_t bytesPerPixel(GLenum format) {
+  switch (format) {
+    case GL_RGBA32F:
+      return 16;
+    case GL_RGBA16F:
+      return 8;
+    default:
+      return 4;  // RGBA8, DEPTH24_STENCIL8
+  }
+}
+
+// Say which limit a too-large image breaks, before GL fails with a bare error code.
+void checkImageLimits(int w, int h) {
+  GLint maxTexture = 0, maxViewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
+  if (w < 1 || h < 1 || w > maxTexture || h > maxTexture || w > maxViewport[0] ||
+      h > maxViewport[1]) {
+    throw gl::GlError("image size " + std::to_string(w) + "x" + std::to_string(h) +
+                      " is outside this OpenGL's limits (GL_MAX_TEXTURE_SIZE " +
+                      std::to_string(maxTexture) + ", GL_MAX_VIEWPORT_DIMS " +
+                      std::to_string(maxViewport[0]) + "x" + std::to_string(maxViewport[1]) + ")");
+  }
 }
 
 }  // namespace
 
+bool RenderTargets::ready(const TargetLayout& want) const {
+  TargetLayout layout = want;
+  layout.quarters = layout.quarters && layout.pairedSlabs;
+  return layout_.width > 0 && layout_ == layout;
+}
+
 void RenderTargets::resize(int w, int h, bool paired, bool quarter, bool normals, bool half,
                            bool coarse) {
-  quarter = quarter && paired;
-  const bool fresh = !(w == width && h == height && output && half == halfSlabs_);
-  if (fresh) createImages(w, h, half);
-  if (!fresh && paired == pairedSlabs() && quarter == quarters() && normals == normalSums() &&
-      coarse == coarseSlabs())
-    return;
-  slabCoarseFbo = gl::Framebuffer();
-  slabOtherCoarseFbo = gl::Framebuffer();
-  coarseMarks = gl::Texture();
-  slabOtherFbo = gl::Framebuffer();
-  slabOther = gl::Texture();
-  slabBack = gl::Texture();
-  slabOtherBack = gl::Texture();
-  slabNormal = gl::Texture();
-  if (normals) {
-    slabNormal = gl::Texture::create2D(GL_RGBA16F, w, h);
-    slabNormal.setFilter(GL_LINEAR, GL_LINEAR);  // coarser slab images are read bilinearly
+  prepare(TargetLayout{w, h, paired, quarter, normals, half, coarse},
+          std::numeric_limits<double>::infinity());
+}
+
+bool RenderTargets::prepare(const TargetLayout& want, double budgetMs) {
+  const auto start = std::chrono::steady_clock::now();
+  imagesMade_ = 0;
+  if (ready(want)) return true;
+  TargetLayout l = want;
+  l.quarters = l.quarters && l.pairedSlabs;
+  if (!(l.width == width && l.height == height && l.halfSlabs == halfSlabs_)) {
+    checkImageLimits(l.width, l.height);
+    // The last finished picture stays shown until a frame finishes in the new images.
+    gl::Texture kept = std::move(outputDone_ ? output : previousOutput_);
+    const int keptWidth = outputDone_ ? width : previousWidth_;
+    const int keptHeight = outputDone_ ? height : previousHeight_;
+    const double pace = msPerByte_;
+    *this = RenderTargets();  // free the old images first: the new ones may be large
+    msPerByte_ = pace;
+    previousOutput_ = std::move(kept);
+    previousWidth_ = keptWidth;
+    previousHeight_ = keptHeight;
+    width = l.width;
+    height = l.height;
+    halfSlabs_ = l.halfSlabs;
   }
-  if (paired) slabOther = slabImageTexture(w, h, half);
-  if (quarter) {
-    slabBack = slabImageTexture(w, h, half);
-    slabOtherBack = slabImageTexture(w, h, half);
+  // The framebuffers are made again once every image is there; images no longer wanted go now.
+  layout_ = TargetLayout{};
+  for (gl::Framebuffer* f :
+       {&accumFbo, &outputFbo, &slabFbo, &slabOtherFbo, &slabCoarseFbo, &slabOtherCoarseFbo})
+    *f = gl::Framebuffer();
+  if (!l.normalSums) slabNormal = gl::Texture();
+  if (!l.pairedSlabs) slabOther = gl::Texture();
+  if (!l.quarters) {
+    slabBack = gl::Texture();
+    slabOtherBack = gl::Texture();
   }
-  slabFbo = slabFramebuffer(slab, slabBack, stencil);
-  if (paired) slabOtherFbo = slabFramebuffer(slabOther, slabOtherBack, stencil);
-  if (coarse) {
-    coarseMarks = gl::Texture::create2D(GL_DEPTH24_STENCIL8, w, h);
-    slabCoarseFbo = slabFramebuffer(slab, slabBack, coarseMarks);
-    if (paired) slabOtherCoarseFbo = slabFramebuffer(slabOther, slabOtherBack, coarseMarks);
+  if (!l.coarseSlabs) coarseMarks = gl::Texture();
+
+  struct Image {
+    gl::Texture* texture;
+    GLenum format;
+    GLenum filter;  // coarser slab images (and their marks) are read bilinearly
+  };
+  const GLenum slabFormat = l.halfSlabs ? GL_RGBA16F : GL_RGBA32F;
+  std::vector<Image> images = {{&slab, slabFormat, GL_LINEAR},
+                               {&accum, GL_RGBA32F, GL_NEAREST},
+                               {&output, GL_RGBA8, GL_NEAREST},
+                               {&stencil, GL_DEPTH24_STENCIL8, GL_LINEAR}};
+  if (l.normalSums) images.push_back({&slabNormal, GL_RGBA16F, GL_LINEAR});
+  if (l.pairedSlabs) images.push_back({&slabOther, slabFormat, GL_LINEAR});
+  if (l.quarters) {
+    images.push_back({&slabBack, slabFormat, GL_LINEAR});
+    images.push_back({&slabOtherBack, slabFormat, GL_LINEAR});
   }
-  gl::checkGlError("slab images");
+  if (l.coarseSlabs) images.push_back({&coarseMarks, GL_DEPTH24_STENCIL8, GL_LINEAR});
+  double msPerByte = 0.0;  // the slowest pace of this call's images
+  for (const Image& image : images) {
+    if (*image.texture) continue;
+    const double bytes = double(width) * double(height) * double(bytesPerPixel(image.format));
+    // Twice the slowest pace seen: fresh memory's price varies (llvmpipe, 2400x1350: 10-110
+    // ms for the same 26-52 MB images, freed memory reused or not).
+    msPerByte_ = std::max(msPerByte_, msPerByte);
+    if (imagesMade_ > 0 && millisecondsSince(start) + 2.0 * msPerByte_ * bytes > budgetMs)
+      return false;
+    const auto made = std::chrono::steady_clock::now();
+    *image.texture = gl::Texture::create2D(image.format, width, height);
+    image.texture->setFilter(image.filter, image.filter);
+    gl::checkGlError("render targets");  // GL_OUT_OF_MEMORY for images too large to allocate
+    msPerByte = std::max(msPerByte, millisecondsSince(made) / bytes);
+    ++imagesMade_;
+  }
+  msPerByte_ = std::max(msPerByte_, msPerByte);
+  makeFramebuffers();
+  layout_ = l;
+  return true;
 }
 
 gl::Framebuffer RenderTargets::slabFramebuffer(const gl::Texture& image, const gl::Texture& back,
@@ -65,25 +141,7 @@ gl::Framebuffer RenderTargets::slabFramebuffer(const gl::Texture& image, const g
   return fbo;
 }
 
-void RenderTargets::createImages(int w, int h, bool half) {
-  // Say which limit a too-large image breaks, before GL fails with a bare error code.
-  GLint maxTexture = 0, maxViewport[2] = {0, 0};
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
-  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
-  if (w < 1 || h < 1 || w > maxTexture || h > maxTexture || w > maxViewport[0] ||
-      h > maxViewport[1]) {
-    throw gl::GlError("image size " + std::to_string(w) + "x" + std::to_string(h) +
-                      " is outside this OpenGL's limits (GL_MAX_TEXTURE_SIZE " +
-                      std::to_string(maxTexture) + ", GL_MAX_VIEWPORT_DIMS " +
-                      std::to_string(maxViewport[0]) + "x" + std::to_string(maxViewport[1]) + ")");
-  }
-  *this = RenderTargets();  // free the old images first: the new ones may be large
-  halfSlabs_ = half;
-  slab = slabImageTexture(w, h, half);
-  accum = gl::Texture::create2D(GL_RGBA32F, w, h);
-  output = gl::Texture::create2D(GL_RGBA8, w, h);
-  stencil = gl::Texture::create2D(GL_DEPTH24_STENCIL8, w, h);
-  for (gl::Texture* t : {&accum, &output}) t->setFilter(GL_NEAREST, GL_NEAREST);
+void RenderTargets::makeFramebuffers() {
   accumFbo = gl::Framebuffer::create();
   accumFbo.attachColor(0, accum);
   accumFbo.attachDepth(stencil, GL_DEPTH_STENCIL_ATTACHMENT);
@@ -91,9 +149,13 @@ void RenderTargets::createImages(int w, int h, bool half) {
   outputFbo = gl::Framebuffer::create();
   outputFbo.attachColor(0, output);
   outputFbo.checkComplete();
-  gl::checkGlError("render targets");  // GL_OUT_OF_MEMORY for images too large to allocate
-  width = w;
-  height = h;
+  slabFbo = slabFramebuffer(slab, slabBack, stencil);
+  if (slabOther) slabOtherFbo = slabFramebuffer(slabOther, slabOtherBack, stencil);
+  if (coarseMarks) {
+    slabCoarseFbo = slabFramebuffer(slab, slabBack, coarseMarks);
+    if (slabOther) slabOtherCoarseFbo = slabFramebuffer(slabOther, slabOtherBack, coarseMarks);
+  }
+  gl::checkGlError("slab images");
 }
 
 }  // namespace ewa

@@ -8,6 +8,23 @@
 
 namespace ewa {
 
+// The images one frame needs: their size and which of the optional ones (RenderTargets::resize).
+struct TargetLayout {
+  int width = 0;
+  int height = 0;
+  bool pairedSlabs = false;
+  bool quarters = false;  // only with paired slabs
+  bool normalSums = false;
+  bool halfSlabs = false;
+  bool coarseSlabs = false;
+  bool operator==(const TargetLayout& o) const {
+    return width == o.width && height == o.height && pairedSlabs == o.pairedSlabs &&
+           quarters == o.quarters && normalSums == o.normalSums && halfSlabs == o.halfSlabs &&
+           coarseSlabs == o.coarseSlabs;
+  }
+  bool operator!=(const TargetLayout& o) const { return !(*this == o); }
+};
+
 struct RenderTargets {
   int width = 0;
   int height = 0;
@@ -47,6 +64,14 @@ struct RenderTargets {
   // gl::GlError if incomplete.
   void resize(int w, int h, bool pairedSlabs = false, bool quarters = false,
               bool normalSums = false, bool halfSlabs = false, bool coarseSlabs = false);
+  // The same, an image at a time within `budgetMs` (at least one a call, the next only where
+  // its bytes at twice the slowest pace seen still fit): a much larger image's first frame on a
+  // software GL spends 10-110 ms on each 26-52 MB image (fresh memory cleared page by page),
+  // hundreds of ms in all, more than a window's UI frame may. True once every image and
+  // framebuffer is there.
+  bool prepare(const TargetLayout& layout, double budgetMs);
+  // Whether the images of `layout` are all there (prepare would do nothing).
+  bool ready(const TargetLayout& layout) const;
   bool halfSlabs() const { return halfSlabs_; }
   bool pairedSlabs() const { return bool(slabOther); }
   bool quarters() const { return bool(slabBack); }
@@ -58,24 +83,45 @@ struct RenderTargets {
   gl::Framebuffer& slabTarget(int i) { return i ? slabOtherFbo : slabFbo; }
   // Its framebuffer for a coarser image (with coarseMarks); only with coarse slabs.
   gl::Framebuffer& slabCoarseTarget(int i) { return i ? slabOtherCoarseFbo : slabCoarseFbo; }
+  // The picture to show and its size: the output image once a frame has finished in it, else
+  // the last one finished at the size before, kept while a frame of a new size is drawn (a
+  // window's refinement or capture at another size keeps its picture on screen meanwhile).
+  const gl::Texture& shownOutput() const { return outputDone_ ? output : previousOutput_; }
+  int shownWidth() const { return outputDone_ ? width : previousWidth_; }
+  int shownHeight() const { return outputDone_ ? height : previousHeight_; }
+  // A frame's final pass has drawn the output image: it is the one shown from now on.
+  void outputFinished() {
+    outputDone_ = true;
+    previousOutput_ = gl::Texture();
+  }
+  // Images made by prepare (0 when the layout was already there), for tests and the log.
+  int imagesMade() const { return imagesMade_; }
   // Bytes the images hold: one slab image (two with paired slabs, four in quarters; 8 or 16
   // bytes a pixel each), the RGBA32F accumulation, one RGBA8, one depth-stencil (4 bytes) per
-  // pixel (two with coarse slabs), and the RGBA16F normal sums if any.
+  // pixel (two with coarse slabs), the RGBA16F normal sums if any, and the picture of the size
+  // before while it is kept.
   size_t bytes() const {
     const size_t slabImage = halfSlabs_ ? 8 : 16;
     return size_t(width) * size_t(height) *
-           (slabImage + 16 + 4 + 4 + (coarseSlabs() ? 4 : 0) + (normalSums() ? 8 : 0) +
-            (pairedSlabs() ? slabImage : 0) + (quarters() ? 2 * slabImage : 0));
+               (slabImage + 16 + 4 + 4 + (coarseSlabs() ? 4 : 0) + (normalSums() ? 8 : 0) +
+                (pairedSlabs() ? slabImage : 0) + (quarters() ? 2 * slabImage : 0)) +
+           (previousOutput_ ? size_t(previousWidth_) * size_t(previousHeight_) * 4 : 0);
   }
 
  private:
-  void createImages(int w, int h, bool halfSlabs);
   // The framebuffer of one slab image: the image, the normal sums and its back half if any,
   // and `depth` (the stencil, or the coarser images' marks).
   gl::Framebuffer slabFramebuffer(const gl::Texture& image, const gl::Texture& back,
                                   const gl::Texture& depth);
+  void makeFramebuffers();
 
   bool halfSlabs_ = false;
+  TargetLayout layout_;  // what the framebuffers were made for; width 0: none yet
+  int imagesMade_ = 0;
+  double msPerByte_ = 0.0;   // the slowest pace (ms a byte) an image was made at so far
+  bool outputDone_ = false;  // a final pass has drawn `output` since it was made
+  gl::Texture previousOutput_;
+  int previousWidth_ = 0, previousHeight_ = 0;
 };
 
 }  // namespace ewa

@@ -244,8 +244,9 @@ class Renderer {
   // Progressive drawing, for a window that must keep answering input: beginFrame starts a
   // frame, each stepFrame call draws about `budgetMs` of it and returns true once the frame is
   // complete and outputTexture()/readImage() show it; until then they keep the last complete
-  // image. frameProgress() is the share drawn so far (0..1). A new beginFrame abandons a frame
-  // under way. The defaults draw the whole frame with render() in the first step.
+  // image (of the size before, where the size changes). frameProgress() is the share drawn so far
+  // (0..1). A new beginFrame abandons a frame under way. The defaults draw the whole frame with
+  // render() in the first step.
   virtual void beginFrame(const Camera& camera, const RenderSettings& settings, int width,
                           int height);
   virtual bool stepFrame(double budgetMs);

@@ -61,18 +61,18 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   frame_.pairedSlabs = pairedSlabs(settings);
   frame_.quarters = quarterSlabs(settings);
   frame_.slabPasses = slabPassesFor(settings);
-  targets_.resize(width, height, frame_.pairedSlabs, frame_.quarters, voxelNormalSums(settings),
-                  halfFloatSlabs(settings), coarseMarks(settings));
+  frame_.targetLayout = TargetLayout{width,
+                                     height,
+                                     frame_.pairedSlabs,
+                                     frame_.quarters,
+                                     voxelNormalSums(settings),
+                                     halfFloatSlabs(settings),
+                                     coarseMarks(settings)};
   stats_ = RenderStats{};
   stats_.slabPasses = frame_.quarters ? frame_.slabPasses : 0;
-  const GLfloat zero[4] = {0, 0, 0, 0};
-  glDisable(GL_SCISSOR_TEST);  // the whole images are cleared
-  targets_.accumFbo.clearColor(0, zero);
-  targets_.slabFbo.clearColor(0, zero);
-  if (frame_.quarters) targets_.slabFbo.clearColor(2, zero);
-  // Depth 0: below every slab's mark (slabMark).
-  glDepthMask(GL_TRUE);
-  glClearNamedFramebufferfi(targets_.slabFbo.id(), GL_DEPTH_STENCIL, 0, 0.0f, 0);
+  // Images of a new size are made in the steps (prepareTargets), a few a step.
+  frame_.targetsPending = !targets_.ready(frame_.targetLayout);
+  if (!frame_.targetsPending) clearTargets();
   const Classification classification = splatClassification(settings);
   if (volume_ && (splatsDirty_ || classification != classification_)) {
     const auto classifyStart = Clock::now();
@@ -132,6 +132,25 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   }
   frame_.active = true;
   stats_.renderMs = millisecondsSince(start);
+}
+
+void SplatRenderer::clearTargets() {
+  const GLfloat zero[4] = {0, 0, 0, 0};
+  glDisable(GL_SCISSOR_TEST);  // the whole images are cleared
+  targets_.accumFbo.clearColor(0, zero);
+  targets_.slabFbo.clearColor(0, zero);
+  if (frame_.quarters) targets_.slabFbo.clearColor(2, zero);
+  // Depth 0: below every slab's mark (slabMark).
+  glDepthMask(GL_TRUE);
+  glClearNamedFramebufferfi(targets_.slabFbo.id(), GL_DEPTH_STENCIL, 0, 0.0f, 0);
+}
+
+bool SplatRenderer::prepareTargets(double budgetMs) {
+  if (!frame_.targetsPending) return true;
+  if (!targets_.prepare(frame_.targetLayout, budgetMs)) return false;
+  clearTargets();
+  frame_.targetsPending = false;
+  return true;
 }
 
 void SplatRenderer::takeCpuPartition(bool budgeted) {
@@ -221,6 +240,11 @@ void SplatRenderer::setFrameWeights() {
   frame_.totalWeight = frame_.settings.mode == RenderMode::Composite
                            ? double(entries) + frame_.meanEntries * double(slabCount)
                            : double(frame_.slabs.empty() ? 0 : frame_.slabs.front().count);
+  // The final pass, which may take a step of its own: as much as a slab's pass (X-ray, MIP: a
+  // hundredth of their one slab).
+  frame_.totalWeight +=
+      std::max(1.0, frame_.settings.mode == RenderMode::Composite ? frame_.meanEntries
+                                                                  : 0.01 * frame_.totalWeight);
 }
 
 void SplatRenderer::takeGpuCounts() {
@@ -256,6 +280,7 @@ void SplatRenderer::drawFinalPass() {
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glUseProgram(0);
+  targets_.outputFinished();
   if (frame_.timed) {
     // The last timestamp's result waits for the GPU, as glFinish would; the others are there.
     glQueryCounter(timers_[2], GL_TIMESTAMP);
@@ -269,6 +294,7 @@ void SplatRenderer::drawFinalPass() {
   glFinish();
   gl::checkGlError("SplatRenderer::render");
   stats_.compositeMs = millisecondsSince(stageStart);
+  finalMsPerPixel_ = stats_.compositeMs / std::max(1.0, double(frame_.width) * frame_.height);
 }
 
 }  // namespace ewa

@@ -256,12 +256,13 @@ void SplatRenderer::drawOrderRange(GLenum mode, bool instanced, size_t first, si
 
 Image8 SplatRenderer::readImage() const {
   Image8 img;
-  img.width = targets_.width;
-  img.height = targets_.height;
+  img.width = targets_.shownWidth();
+  img.height = targets_.shownHeight();
   img.channels = 3;
+  if (!targets_.shownOutput()) return Image8{};  // nothing finished yet
   std::vector<uint8_t> rgba(size_t(img.width) * img.height * 4);
   if (rgba.empty()) return img;
-  targets_.output.getImage(0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(rgba.size()), rgba.data());
+  targets_.shownOutput().getImage(0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(rgba.size()), rgba.data());
   img.pixels.resize(size_t(img.width) * img.height * 3);
   for (int y = 0; y < img.height; ++y) {
     const uint8_t* src = rgba.data() + size_t(img.height - 1 - y) * img.width * 4;
@@ -274,7 +275,7 @@ Image8 SplatRenderer::readImage() const {
 
 std::vector<float> SplatRenderer::readOpticalDepth() const {
   std::vector<float> rgba(size_t(targets_.width) * targets_.height * 4);
-  if (rgba.empty()) return {};
+  if (rgba.empty() || !targets_.slab) return {};
   targets_.slab.getImage(0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
   std::vector<float> depth(rgba.size() / 4);
   for (size_t p = 0; p < depth.size(); ++p) depth[p] = rgba[p * 4 + 3];

@@ -60,7 +60,10 @@ class SplatRenderer : public Renderer {
 
   // render() = beginFrame + stepFrame(infinity): the whole frame at once.
   void render(const Camera& camera, const RenderSettings& settings, int width, int height) override;
-  // Classification (when due), the slab partition and its upload, the per-frame uniforms.
+  // Classification (when due), the slab partition and its upload, the per-frame uniforms. The
+  // images of a new size are made by the steps, as many a step as its budget holds;
+  // readImage() and outputTexture() keep the last finished picture, of the size before, until
+  // the frame is done.
   void beginFrame(const Camera& camera, const RenderSettings& settings, int width,
                   int height) override;
   // Draws slabs in chunks, timing each (glFinish) and sizing the next from the measured cost
@@ -68,7 +71,7 @@ class SplatRenderer : public Renderer {
   bool stepFrame(double budgetMs) override;
   double frameProgress() const override;
   Image8 readImage() const override;
-  unsigned outputTexture() const override { return targets_.output.id(); }
+  unsigned outputTexture() const override { return targets_.shownOutput().id(); }
   // The last frame's figures; gpuBytes: the buffers and textures allocated now.
   RenderStats stats() const override;
 
@@ -312,6 +315,12 @@ class SplatRenderer : public Renderer {
   void takeCpuPartition(bool budgeted);
   // Copies pieces of the order list until it is all up (true) or the budget is spent.
   bool uploadOrderPieces(double budgetMs, Clock::time_point start);
+  // The final pass's expected milliseconds at this frame's size (its last price a pixel).
+  double finalPassMs() const;
+  // The frame's images cleared (the whole images: accumulation, slab, marks).
+  void clearTargets();
+  // Makes the frame's images still missing within `budgetMs`, then clears them; true once done.
+  bool prepareTargets(double budgetMs);
   // Returns once no partition is running on the worker thread.
   void waitForPartition();
   // Scissor to the rectangle of slab `slabIndex` (drawing order), when slab scissors are on.
@@ -465,6 +474,9 @@ class SplatRenderer : public Renderer {
     bool terminated = false;        // early termination ended the slab loop
     bool occlusion = false;         // occlusion culling in this frame (front to back, terminating)
     bool gradientsPending = false;  // ray normals: the gradient texture is still being built
+    bool slabsDone = false;         // the slab loop is drawn: the final pass is left
+    TargetLayout targetLayout;      // the images this frame draws into
+    bool targetsPending = false;    // some of them still to be made (prepareTargets)
     bool pairedSlabs = false;       // post-classified with pre-integration: two slab images
     bool quarters = false;          // paired, four depth samples a slab: two images a slab
     int slabPasses = 1;             // quarters: splat passes a slab (RenderSettings::slabPasses)
@@ -480,6 +492,7 @@ class SplatRenderer : public Renderer {
   std::future<void> pendingPartition_;  // the CPU partition of frame_ on a worker thread
   // Measured, kept across frames: what budgeted steps' entries and slab finishes cost.
   StepCostModel stepCost_;
+  double finalMsPerPixel_ = 0.0;  // the last final pass timed by its wait (not by GPU timers)
 };
 
 }  // namespace ewa

@@ -24,6 +24,16 @@ class ProgressiveFrame : public RenderFixture {};
 // entries; X-ray and MIP: the smallest range of their one slab).
 constexpr double kTinyBudgetMs = 1e-6;
 
+// Drawn slab by slab (rasterized), in many thin slabs: many steps. Float slab images: the GPU
+// partition's order of a slab's entries varies between frames, and half-float sums round it 2-3
+// levels apart (H200), floats within one.
+RenderSettings manySlabs() {
+  RenderSettings settings = rasterSettings();
+  settings.slabThickness = 1.0;
+  settings.slabPrecision = SlabPrecision::Float;
+  return settings;
+}
+
 struct Stepped {
   Image8 image;
   int steps = 0;
@@ -188,7 +198,7 @@ TEST_F(ProgressiveFrame, AmpleBudgetFinishesInOneStep) {
 // Once its prices are measured, a step whose entries have spent its budget leaves the slab's
 // finish to later steps, and a finish too dear for one step (its pass over the slab's
 // rectangle: on llvmpipe at 1024x768 dearer than a UI frame's whole budget) is drawn in bands
-// of rows over several steps; the picture is the same.
+// of rows over several steps, the final pass in one of its own; the picture is the same.
 TEST_F(ProgressiveFrame, SpentStepLeavesTheSlabsPassToLaterStepsInBands) {
   const SyntheticVolume s = makeSyntheticVolume("marschner-lobb:32");
   SplatRenderer& r = *renderer();
@@ -209,11 +219,13 @@ TEST_F(ProgressiveFrame, SpentStepLeavesTheSlabsPassToLaterStepsInBands) {
   RenderStats before = r.stats();
   double progress = 0.0;
   int steps = 0, drawingSteps = 0, both = 0, finishesAlone = 0, bandsAlone = 0;
+  bool lastStepDrew = false;
   for (bool done = false; !done && steps < 100000; ++steps) {
     done = r.stepFrame(kTinyBudgetMs);
     const RenderStats now = r.stats();
     const bool drew = now.slabEntries > before.slabEntries;
     const bool finished = now.slabsDrawn > before.slabsDrawn;
+    lastStepDrew = drew || finished;
     const bool passed = r.frameProgress() > progress;  // a band of a pass, at least
     // The first step that draws (after the partition's), before anything is measured, may
     // draw a whole slab.
@@ -225,6 +237,9 @@ TEST_F(ProgressiveFrame, SpentStepLeavesTheSlabsPassToLaterStepsInBands) {
     progress = r.frameProgress();
   }
   EXPECT_EQ(both, 0);
+  // The final pass (over the whole picture) takes a step of its own where it does not fit
+  // beside the last slab's close.
+  EXPECT_FALSE(lastStepDrew);
   EXPECT_GE(finishesAlone, int(wholeStats.slabsDrawn) - 1);
   EXPECT_GE(bandsAlone, int(wholeStats.slabsDrawn) / 2) << finishesAlone;
   EXPECT_EQ(before.slabsDrawn, wholeStats.slabsDrawn);
@@ -258,9 +273,7 @@ TEST_F(ProgressiveFrame, LodRendererKeepsCoarseLevelUntilFullFrameIsDone) {
   LodScene scene("marschner-lobb:32");
   LodRenderer& lod = scene.lod;
   const Camera& cam = scene.camera;
-  RenderSettings settings = rasterSettings();  // stepped slab by slab
-  settings.slabThickness = 1.0;
-  settings.slabPrecision = SlabPrecision::Float;  // see TinyBudgetStepsGiveRendersPicture
+  const RenderSettings settings = manySlabs();
   lod.render(0, cam, settings, 64, 64);
   const Image8 full = lod.last().readImage();
   lod.render(3, cam, settings, 64, 64);
@@ -283,6 +296,43 @@ TEST_F(ProgressiveFrame, LodRendererKeepsCoarseLevelUntilFullFrameIsDone) {
   EXPECT_LE(maxDifference(lod.last().readImage(), full), 1);
 }
 
+// The full level's picture on screen and a full frame at another size (a capture larger than
+// the window, a resized window): its images are made in steps too, one a step at a tiny budget,
+// and the picture of the size before stays shown, until the frame is done.
+TEST_F(ProgressiveFrame, AFullFrameAtANewSizeKeepsTheLastPictureShownWhileItsImagesAreMade) {
+  LodScene scene("marschner-lobb:32");
+  LodRenderer& lod = scene.lod;
+  const Camera& cam = scene.camera;
+  const RenderSettings settings = manySlabs();
+  lod.render(0, cam, settings, 96, 80);
+  const Image8 larger = lod.last().readImage();
+  lod.render(0, cam, settings, 64, 48);
+  const Image8 shown = lod.last().readImage();
+  const unsigned shownTexture = lod.outputTexture();
+  ASSERT_EQ(shown.width, 64);
+  lod.beginFull(cam, settings, 96, 80);
+  int steps = 0, setupSteps = 0;
+  while (!lod.stepFull(kTinyBudgetMs)) {
+    ++steps;
+    if (lod.fullProgress() == 0.0) ++setupSteps;
+    EXPECT_EQ(lod.outputTexture(), shownTexture) << "step " << steps;
+    EXPECT_EQ(lod.imageWidth(), 64);
+    if (steps % 5 == 1) {
+      const Image8 now = lod.last().readImage();
+      ASSERT_EQ(now.width, 64) << "step " << steps;
+      EXPECT_EQ(maxDifference(now, shown), 0) << "step " << steps;
+    }
+    ASSERT_LT(steps, 100000);
+  }
+  // At least one step for each image the frame needs besides the first (slab, accumulation,
+  // output, marks: four at the least), before anything is drawn.
+  EXPECT_GE(setupSteps, 3);
+  EXPECT_EQ(lod.imageWidth(), 96);
+  EXPECT_EQ(lod.imageHeight(), 80);
+  EXPECT_NE(lod.outputTexture(), 0u);
+  EXPECT_LE(maxDifference(lod.last().readImage(), larger), 1);
+}
+
 // The window's scheduler: the budget is what the UI frame target leaves beside the rest of the
 // frame (measured apart for frames that present), between 4 ms and the most it was given; a
 // finished refinement reports its steps.
@@ -290,9 +340,7 @@ TEST_F(ProgressiveFrame, RefinementBudgetAdaptsAndReportsItsFrames) {
   LodScene scene("marschner-lobb:32");
   LodRenderer& lod = scene.lod;
   const Camera& cam = scene.camera;
-  RenderSettings settings = rasterSettings();  // stepped slab by slab
-  settings.slabThickness = 1.0;
-  settings.slabPrecision = SlabPrecision::Float;  // see TinyBudgetStepsGiveRendersPicture
+  const RenderSettings settings = manySlabs();
   lod.render(0, cam, settings, 64, 64);
   const Image8 full = lod.last().readImage();
   lod.render(4, cam, settings, 64, 64);
