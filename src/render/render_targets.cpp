@@ -130,6 +130,33 @@ bool RenderTargets::prepare(const TargetLayout& want, double budgetMs) {
   return true;
 }
 
+void RenderTargets::beginOutput() {
+  if (!outputDone_) return;  // not shown: drawn into as it is
+  gl::Texture next = std::move(spareOutput_);
+  if (!next) {
+    next = gl::Texture::create2D(GL_RGBA8, width, height);
+    next.setFilter(GL_NEAREST, GL_NEAREST);
+  }
+  previousOutput_ = std::move(output);
+  previousWidth_ = width;
+  previousHeight_ = height;
+  output = std::move(next);
+  outputFbo = gl::Framebuffer::create();
+  outputFbo.attachColor(0, output);
+  outputFbo.checkComplete();
+  outputDone_ = false;
+  outputSwapped_ = true;
+}
+
+void RenderTargets::outputFinished() {
+  outputDone_ = true;
+  // The picture before becomes the next banded pass's image where beginOutput swapped it out
+  // (a picture of a size or layout before is freed: whole frames need no spare).
+  if (outputSwapped_) spareOutput_ = std::move(previousOutput_);
+  outputSwapped_ = false;
+  previousOutput_ = gl::Texture();
+}
+
 gl::Framebuffer RenderTargets::slabFramebuffer(const gl::Texture& image, const gl::Texture& back,
                                                const gl::Texture& depth) {
   gl::Framebuffer fbo = gl::Framebuffer::create();

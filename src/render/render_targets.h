@@ -89,23 +89,25 @@ struct RenderTargets {
   const gl::Texture& shownOutput() const { return outputDone_ ? output : previousOutput_; }
   int shownWidth() const { return outputDone_ ? width : previousWidth_; }
   int shownHeight() const { return outputDone_ ? height : previousHeight_; }
+  // Before a final pass drawn in bands over several steps: a shown output image stays shown (as
+  // the picture before) and the pass draws into another one of the same size (kept from the
+  // last time), so a half-drawn picture is never shown.
+  void beginOutput();
   // A frame's final pass has drawn the output image: it is the one shown from now on.
-  void outputFinished() {
-    outputDone_ = true;
-    previousOutput_ = gl::Texture();
-  }
+  void outputFinished();
   // Images made by prepare (0 when the layout was already there), for tests and the log.
   int imagesMade() const { return imagesMade_; }
   // Bytes the images hold: one slab image (two with paired slabs, four in quarters; 8 or 16
   // bytes a pixel each), the RGBA32F accumulation, one RGBA8, one depth-stencil (4 bytes) per
-  // pixel (two with coarse slabs), the RGBA16F normal sums if any, and the picture of the size
-  // before while it is kept.
+  // pixel (two with coarse slabs), the RGBA16F normal sums if any, and the picture before
+  // while it is kept (and its image once free, for the next banded final pass).
   size_t bytes() const {
     const size_t slabImage = halfSlabs_ ? 8 : 16;
     return size_t(width) * size_t(height) *
                (slabImage + 16 + 4 + 4 + (coarseSlabs() ? 4 : 0) + (normalSums() ? 8 : 0) +
                 (pairedSlabs() ? slabImage : 0) + (quarters() ? 2 * slabImage : 0)) +
-           (previousOutput_ ? size_t(previousWidth_) * size_t(previousHeight_) * 4 : 0);
+           (previousOutput_ ? size_t(previousWidth_) * size_t(previousHeight_) * 4 : 0) +
+           (spareOutput_ ? size_t(width) * size_t(height) * 4 : 0);
   }
 
  private:
@@ -122,6 +124,8 @@ struct RenderTargets {
   bool outputDone_ = false;  // a final pass has drawn `output` since it was made
   gl::Texture previousOutput_;
   int previousWidth_ = 0, previousHeight_ = 0;
+  gl::Texture spareOutput_;     // an RGBA8 image of this size for beginOutput
+  bool outputSwapped_ = false;  // previousOutput_ is the one beginOutput swapped out
 };
 
 }  // namespace ewa

@@ -240,11 +240,12 @@ void SplatRenderer::setFrameWeights() {
   frame_.totalWeight = frame_.settings.mode == RenderMode::Composite
                            ? double(entries) + frame_.meanEntries * double(slabCount)
                            : double(frame_.slabs.empty() ? 0 : frame_.slabs.front().count);
-  // The final pass, which may take a step of its own: as much as a slab's pass (X-ray, MIP: a
-  // hundredth of their one slab).
-  frame_.totalWeight +=
+  // The final pass, which budgeted steps draw in bands: as much as a slab's pass (X-ray, MIP:
+  // a hundredth of their one slab).
+  frame_.finalWeight =
       std::max(1.0, frame_.settings.mode == RenderMode::Composite ? frame_.meanEntries
                                                                   : 0.01 * frame_.totalWeight);
+  frame_.totalWeight += frame_.finalWeight;
 }
 
 void SplatRenderer::takeGpuCounts() {
@@ -259,14 +260,20 @@ void SplatRenderer::takeGpuCounts() {
   setFrameWeights();
 }
 
-void SplatRenderer::drawFinalPass() {
+void SplatRenderer::drawFinalPass(int y0, int y1) {
   const RenderSettings& settings = frame_.settings;
   const auto stageStart = Clock::now();
   glBindVertexArray(emptyVao_.id());
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.outputFbo.id());
   glViewport(0, 0, frame_.width, frame_.height);
   glDisable(GL_BLEND);
-  glDisable(GL_SCISSOR_TEST);
+  const bool whole = y0 <= 0 && y1 >= frame_.height;
+  if (whole) {
+    glDisable(GL_SCISSOR_TEST);
+  } else {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, y0, frame_.width, y1 - y0);
+  }
   targets_.slab.bindUnit(1);
   // Front to back, premultiplied, over nothing: the tiles' picture is what the slab loop leaves.
   (frame_.tiles ? tiles_->pictureTexture() : targets_.accum).bindUnit(2);
@@ -278,9 +285,10 @@ void SplatRenderer::drawFinalPass() {
   finalProgram_.setVec3("uBackground", glm::vec3(settings.background));
   glUseProgram(finalProgram_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glUseProgram(0);
-  targets_.outputFinished();
+  if (y1 >= frame_.height) targets_.outputFinished();
   if (frame_.timed) {
     // The last timestamp's result waits for the GPU, as glFinish would; the others are there.
     glQueryCounter(timers_[2], GL_TIMESTAMP);
@@ -293,8 +301,9 @@ void SplatRenderer::drawFinalPass() {
   }
   glFinish();
   gl::checkGlError("SplatRenderer::render");
-  stats_.compositeMs = millisecondsSince(stageStart);
-  finalMsPerPixel_ = stats_.compositeMs / std::max(1.0, double(frame_.width) * frame_.height);
+  const double ms = millisecondsSince(stageStart);
+  stats_.compositeMs += ms;
+  finalMsPerPixel_ = ms / std::max(1.0, double(frame_.width) * double(y1 - y0));
 }
 
 }  // namespace ewa

@@ -315,8 +315,8 @@ class SplatRenderer : public Renderer {
   void takeCpuPartition(bool budgeted);
   // Copies pieces of the order list until it is all up (true) or the budget is spent.
   bool uploadOrderPieces(double budgetMs, Clock::time_point start);
-  // The final pass's expected milliseconds at this frame's size (its last price a pixel).
-  double finalPassMs() const;
+  // The final pass's expected milliseconds a row of this frame (its last price a pixel).
+  double finalRowMs() const;
   // The frame's images cleared (the whole images: accumulation, slab, marks).
   void clearTargets();
   // Makes the frame's images still missing within `budgetMs`, then clears them; true once done.
@@ -351,7 +351,8 @@ class SplatRenderer : public Renderer {
   // Return true once the frame's splats are all drawn (or early termination ended it).
   bool drawSlabChunks(double budgetMs, Clock::time_point start);
   bool drawWholeVolumeChunks(double budgetMs, Clock::time_point start);
-  void drawFinalPass();
+  // The final pass over rows [y0, y1) of the picture (all of them: the frame's last image).
+  void drawFinalPass(int y0, int y1);
   // Starts an occlusion query in `query` counting the pixels of the volume's bounding box not
   // yet marked opaque whose rays still cross what the clip keeps of it at or behind depth
   // `nextDepth` (the next slab's front); false when the box is too near the eye for the test
@@ -475,6 +476,8 @@ class SplatRenderer : public Renderer {
     bool occlusion = false;         // occlusion culling in this frame (front to back, terminating)
     bool gradientsPending = false;  // ray normals: the gradient texture is still being built
     bool slabsDone = false;         // the slab loop is drawn: the final pass is left
+    int finalRow = 0;               // budgeted: the final pass's next row (bands)
+    double finalWeight = 0.0;       // the final pass's share of totalWeight
     TargetLayout targetLayout;      // the images this frame draws into
     bool targetsPending = false;    // some of them still to be made (prepareTargets)
     bool pairedSlabs = false;       // post-classified with pre-integration: two slab images

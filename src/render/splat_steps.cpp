@@ -10,6 +10,12 @@
 
 namespace ewa {
 
+namespace {
+// A pass's bands: whole multiples of kBandRows rows (llvmpipe rasterizes its 64-pixel tiles in
+// 16-pixel blocks), and at least kMinBandRows (a band has a fixed cost: state, a draw).
+constexpr int kBandRows = 16, kMinBandRows = 32;
+}  // namespace
+
 bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
   // Cost model (stepCost_), measured per chunk: a price per splat entry drawn, per slab begun
   // (its clears), per pixel of a slab's composite pass and per opacity check (marks and
@@ -25,9 +31,6 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
   const size_t kFirstChunk =
       size_t(std::clamp(kFirstFragments / frame_.fragmentsPerEntry, 1.0, 2048.0));
   const size_t kMinRange = std::min<size_t>(512, kFirstChunk);
-  // A pass's bands: whole multiples of kBandRows rows (llvmpipe rasterizes its 64-pixel tiles
-  // in 16-pixel blocks), and at least kMinBandRows (a band has a fixed cost: state, a draw).
-  constexpr int kBandRows = 16, kMinBandRows = 32;
   constexpr size_t kFirstSlabEnds = 1;  // slabs finished before anything is measured
   const size_t n = frame_.slabs.size();
   const bool unlimited = !std::isfinite(budgetMs);
@@ -273,16 +276,32 @@ bool SplatRenderer::stepFrame(double budgetMs) {
     }
     frame_.slabsDone = drewSlabs = true;
   }
-  // The final pass, over the whole picture (llvmpipe: 10 ms at 1024x768, 45 ms at 2200x1600),
-  // gets a step of its own where it no longer fits beside the last slabs.
-  if (drewSlabs && std::isfinite(budgetMs) && millisecondsSince(start) + finalPassMs() > budgetMs) {
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glUseProgram(0);
-    stats_.renderMs += millisecondsSince(start);
-    return false;
+  if (std::isfinite(budgetMs)) {
+    // The final pass, over the whole picture (llvmpipe: 10 ms at 1024x768, 45 ms at 2200x1600,
+    // about 100 ms at 3840x2160), in bands of rows that fit what the step has left, over as
+    // many steps as it needs (at least a band where it is a step's first work).
+    bool drewFinal = false;
+    while (frame_.finalRow < frame_.height) {
+      const int rowsLeft = frame_.height - frame_.finalRow;
+      const int rows = passRowsToDraw(rowsLeft, finalRowMs(), budgetMs - millisecondsSince(start),
+                                      !drewSlabs && !drewFinal, kBandRows, kMinBandRows);
+      if (rows == 0) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glUseProgram(0);
+        stats_.renderMs += millisecondsSince(start);
+        return false;
+      }
+      // A pass split over steps draws into an image not shown meanwhile.
+      if (frame_.finalRow == 0 && rows < frame_.height) targets_.beginOutput();
+      drawFinalPass(frame_.finalRow, frame_.finalRow + rows);
+      frame_.finalRow += rows;
+      frame_.drawnWeight += frame_.finalWeight * double(rows) / double(frame_.height);
+      drewFinal = true;
+    }
+  } else {
+    if (frame_.timed) glQueryCounter(timers_[1], GL_TIMESTAMP);
+    drawFinalPass(0, frame_.height);
   }
-  if (frame_.timed) glQueryCounter(timers_[1], GL_TIMESTAMP);
-  drawFinalPass();
   if (frame_.occlusion) stats_.entriesCulled = occlusion_.readCount();  // the GPU is idle
   if (frame_.indirect) {
     // Statistics only: the GPU is idle after the final pass, so reading the counts costs
@@ -314,10 +333,10 @@ bool SplatRenderer::stepFrame(double budgetMs) {
   return true;
 }
 
-double SplatRenderer::finalPassMs() const {
-  const double pixels = double(frame_.width) * double(frame_.height);
+double SplatRenderer::finalRowMs() const {
   // Before one is measured, a slab pass's price a pixel: it reads more than the final pass.
-  return pixels * (finalMsPerPixel_ > 0.0 ? finalMsPerPixel_ : stepCost_.msPerPixel());
+  return double(frame_.width) *
+         (finalMsPerPixel_ > 0.0 ? finalMsPerPixel_ : stepCost_.msPerPixel());
 }
 
 double SplatRenderer::frameProgress() const {

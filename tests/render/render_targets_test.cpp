@@ -1,5 +1,5 @@
 // RenderTargets: a new size's images made a few at a time within a budget, and the last
-// finished picture kept on show until a frame finishes in the new ones.
+// finished picture kept on show until a frame finishes in new images.
 #include "render/render_targets.h"
 
 #include <gtest/gtest.h>
@@ -103,6 +103,46 @@ TEST_F(RenderTargetsTest, TheLastFinishedPictureStaysShownUntilTheNewSizeHasOne)
   EXPECT_EQ(t.shownHeight(), 20);
   EXPECT_EQ(firstPixel(t.shownOutput(), 20, 20), (std::vector<unsigned char>{0, 255, 0, 255}));
   EXPECT_EQ(t.bytes(), size_t(20 * 20) * (16 + 16 + 4 + 4));
+}
+
+// A final pass in bands over several steps: the picture shown stays until the pass is done,
+// then the new one is, and the old image is used again for the next such pass.
+TEST_F(RenderTargetsTest, ABandedFinalPassDrawsIntoAnImageNotShownUntilItIsDone) {
+  RenderTargets t;
+  t.resize(16, 8);
+  const GLfloat red[4] = {1, 0, 0, 1}, green[4] = {0, 1, 0, 1}, blue[4] = {0, 0, 1, 1};
+  t.outputFbo.clearColor(0, red);
+  t.outputFinished();
+  const unsigned first = t.output.id();
+  const size_t bytes = t.bytes();
+
+  t.beginOutput();
+  EXPECT_NE(t.output.id(), first);
+  EXPECT_EQ(t.shownOutput().id(), first);
+  t.outputFbo.clearColor(0, green);  // a band, drawn through the framebuffer
+  EXPECT_EQ(firstPixel(t.shownOutput(), 16, 8), (std::vector<unsigned char>{255, 0, 0, 255}));
+  EXPECT_EQ(t.bytes(), bytes + 16 * 8 * 4);  // both pictures
+  t.outputFinished();
+  const unsigned second = t.output.id();
+  EXPECT_EQ(t.shownOutput().id(), second);
+  EXPECT_EQ(firstPixel(t.shownOutput(), 16, 8), (std::vector<unsigned char>{0, 255, 0, 255}));
+  EXPECT_EQ(t.bytes(), bytes + 16 * 8 * 4);  // the first kept as the spare
+
+  // The next banded pass draws into the first image again: nothing new is allocated.
+  t.beginOutput();
+  EXPECT_EQ(t.output.id(), first);
+  EXPECT_EQ(t.shownOutput().id(), second);
+  t.outputFbo.clearColor(0, blue);
+  EXPECT_EQ(firstPixel(t.shownOutput(), 16, 8), (std::vector<unsigned char>{0, 255, 0, 255}));
+  t.outputFinished();
+  EXPECT_EQ(firstPixel(t.shownOutput(), 16, 8), (std::vector<unsigned char>{0, 0, 255, 255}));
+
+  // Not shown (a new size's output, before its first frame is done): drawn into as it is.
+  t.resize(24, 8);
+  const unsigned fresh = t.output.id();
+  t.beginOutput();
+  EXPECT_EQ(t.output.id(), fresh);
+  EXPECT_EQ(t.shownWidth(), 16);
 }
 
 }  // namespace
