@@ -319,12 +319,21 @@ bool ViewerWindow::drawFrame(bool activity) {
   drawPanels(fb, &screenshotNow);
 
   bool rendered = false;
+  // A resize under way (another size than the last UI frame's): this frame shows the last
+  // picture stretched, and the view is drawn once a frame keeps the size, so a drag through
+  // many sizes does not make a set of images at each (on llvmpipe a coarse level's new images
+  // and the window's new buffers in one frame passed 100 ms).
+  const bool resizing = hasImage_ && fb != lastFrameSize_;
+  lastFrameSize_ = fb;
   const bool stale = !hasImage_ || renderedCamera_ != controller_.revision() ||
                      renderedSettings_ != settingsRevision_ || renderedSize_ != fb ||
                      renderedTf_ != liveTf_.revision();
   if ((capture_.active || turntable_.total > 0) && hasImage_) {
     // A screenshot's or turntable's picture, refined in steps; the view catches up after it.
     rendered = captureStep(fb, activity);
+  } else if (resizing) {
+    refinement_.cancel();  // drawn for the size before
+    lastChange_ = Clock::now();
   } else if (buildPending_) {
     // This frame shows "building splats"; the next one does the work.
     buildPending_ = false;

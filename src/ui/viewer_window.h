@@ -245,6 +245,7 @@ class ViewerWindow {
   uint64_t renderedCamera_ = 0;
   uint64_t renderedSettings_ = 0;
   glm::ivec2 renderedSize_{0, 0};
+  glm::ivec2 lastFrameSize_{0, 0};  // the framebuffer's size at the last UI frame
   Clock::time_point lastChange_ = Clock::now();
 };
 

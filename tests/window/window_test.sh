@@ -484,6 +484,27 @@ shot_size=$(identify -format '%wx%h' "$shot_file") || fail "no screenshot at $sh
   fail "the screenshot is $shot_size, not twice the window ($width x $height)"
 log "watched file reloaded: coverage $w0 -> $w1; F5 reloads; screenshot $shot_size"
 
+# A resize: the view is drawn again at the new size (once the size holds) up to full quality,
+# and the next screenshot is twice the new size; then back to the window's size.
+shots() { grep -c '^ewaview: saved screenshot ' "$work/stderr"; }
+mark=$(wc -l <"$work/stdout")
+full_since_mark() {
+  [ "$(tail -n +$((mark + 1)) "$work/stdout" | grep '^frame level ' | tail -1)" = "frame level 0" ]
+}
+xdotool windowsize "$wid" 900 500
+poll "full quality after a resize to 900x500" full_since_mark
+nshots=$(shots)
+xdotool key --window "$wid" F12
+another_shot() { [ "$(shots)" -gt "$nshots" ]; }
+poll "the screenshot after the resize" another_shot
+shot_file=$(grep '^ewaview: saved screenshot ' "$work/stderr" | tail -1 | sed 's/^ewaview: saved screenshot //')
+shot_size=$(identify -format '%wx%h' "$shot_file") || fail "no screenshot at $shot_file"
+[ "$shot_size" = "1800x1000" ] || fail "the screenshot after the resize is $shot_size, not 1800x1000"
+mark=$(wc -l <"$work/stdout")
+xdotool windowsize "$wid" "$width" "$height"
+poll "full quality at the window's size again" full_since_mark
+log "resized to 900x500: full quality, screenshot $shot_size; resized back"
+
 # Capture > Tour flies through the bookmarks (far to near) and writes 36 frames at the capture
 # size into a folder of its own. The panel is scrolled until the Capture header is in view
 # (the layout lines give each item's place as it moves), the header opened, Tour clicked.
