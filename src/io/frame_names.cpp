@@ -68,19 +68,24 @@ std::string frameFileName(const FrameNaming& naming, int index, int count) {
 }
 
 std::string screenshotFileName(const std::string& dir, const std::string& volumeName,
-                               std::time_t when) {
+                               std::time_t when,
+                               const std::function<bool(const std::string&)>& taken) {
   std::tm local{};
   localtime_r(&when, &local);
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
-  return unusedFileName(dir, "ewaview-" + safeStem(volumeName) + "-" + stamp, ".png");
+  return unusedFileName(dir, "ewaview-" + safeStem(volumeName) + "-" + stamp, ".png", taken);
 }
 
 std::string unusedFileName(const std::string& dir, const std::string& base,
-                           const std::string& extension) {
+                           const std::string& extension,
+                           const std::function<bool(const std::string&)>& taken) {
   const std::filesystem::path folder(dir.empty() ? "." : dir);
   std::filesystem::path path = folder / (base + extension);
-  for (int n = 2; std::filesystem::exists(path) && n < 10000; ++n)
+  const auto used = [&](const std::filesystem::path& p) {
+    return std::filesystem::exists(p) || (taken && taken(p.string()));
+  };
+  for (int n = 2; used(path) && n < 10000; ++n)
     path = folder / (base + "-" + std::to_string(n) + extension);
   return path.string();
 }

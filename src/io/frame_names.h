@@ -2,6 +2,7 @@
 #pragma once
 
 #include <ctime>
+#include <functional>
 #include <string>
 
 namespace ewa {
@@ -21,13 +22,16 @@ FrameNaming parseFrameNaming(const std::string& output);
 std::string frameFileName(const FrameNaming& naming, int index, int count);
 
 // "dir/BASE.EXT" (dir empty: the current folder, `extension` with its dot); when that file
-// exists, "dir/BASE-2.EXT", "-3"...: a name nothing is written to yet.
+// exists, or `taken` says the name is promised to a file not written yet, "dir/BASE-2.EXT",
+// "-3"...: a name nothing is written to yet.
 std::string unusedFileName(const std::string& dir, const std::string& base,
-                           const std::string& extension);
+                           const std::string& extension,
+                           const std::function<bool(const std::string&)>& taken = nullptr);
 
 // "dir/ewaview-STEM-YYYYMMDD-HHMMSS.png" (dir empty: the current folder); when that file
-// exists, "-2", "-3"... is added before ".png" (unusedFileName).
+// exists or is `taken`, "-2", "-3"... is added before ".png" (unusedFileName).
 std::string screenshotFileName(const std::string& dir, const std::string& volumeName,
-                               std::time_t when);
+                               std::time_t when,
+                               const std::function<bool(const std::string&)>& taken = nullptr);
 
 }  // namespace ewa

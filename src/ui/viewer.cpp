@@ -135,8 +135,8 @@ double ViewerWindow::now() const {
 bool ViewerWindow::busy() const {
   // A save on its worker too: the panel counts its seconds, and its end is shown when it comes
   // (an idle window would see it only at its next wake, 10 s later).
-  return loadJob_.running() || saveJob_.running() || turntable_.total > 0 || capture_.active ||
-         shotWrite_.valid() || buildPending_ || liveTf_.building();
+  return loadJob_.running() || saveJob_.running() || capturing() || shotWrite_.valid() ||
+         buildPending_ || liveTf_.building();
 }
 
 void ViewerWindow::requestFullLevel() {
@@ -162,7 +162,7 @@ bool ViewerWindow::refineDue() const {
 }
 
 double ViewerWindow::waitSeconds() const {
-  if (turntable_.total > 0 || capture_.active || buildPending_ || refinement_.active()) return 0.0;
+  if (capturing() || buildPending_ || refinement_.active()) return 0.0;
   if (liveTf_.building()) return kBuildPollSeconds;
   if (hasImage_ && !refineFailed_ && lod_.lastLevel() != 0)
     return std::max(0.0, (policy_.refineDelayMs() - millisecondsSince(lastChange_)) / 1000.0);
@@ -328,7 +328,7 @@ bool ViewerWindow::drawFrame(bool activity) {
   const bool stale = !hasImage_ || renderedCamera_ != controller_.revision() ||
                      renderedSettings_ != settingsRevision_ || renderedSize_ != fb ||
                      renderedTf_ != liveTf_.revision();
-  if ((capture_.active || turntable_.total > 0) && hasImage_) {
+  if (capturing() && hasImage_) {
     // A screenshot's or turntable's picture, refined in steps; the view catches up after it.
     rendered = captureStep(fb, activity);
   } else if (resizing) {

@@ -39,12 +39,16 @@ glm::ivec2 ViewerWindow::captureSize(const glm::ivec2& fb) const {
   return glm::min(fb * saved_.captureScale, glm::ivec2(kMaxCaptureSide));
 }
 
+bool ViewerWindow::shotPathPromised(const std::string& path) const {
+  const std::string p = std::filesystem::absolute(path).lexically_normal().string();
+  if ((capture_.active && capture_.path == p) || (shotWrite_.valid() && shotPath_ == p))
+    return true;
+  for (const PendingCapture& q : queuedShots_)
+    if (q.path == p) return true;
+  return false;
+}
+
 void ViewerWindow::screenshot(const glm::ivec2& fb) {
-  if (capture_.active || turntable_.total > 0) {
-    error("no screenshot: a " + std::string(turntable_.total > 0 ? "turntable" : "screenshot") +
-          " is being drawn");
-    return;
-  }
   if (!renderError_.empty()) {  // shown in the window already: no stale picture written
     error("no screenshot: " + renderError_);
     return;
@@ -54,13 +58,23 @@ void ViewerWindow::screenshot(const glm::ivec2& fb) {
   c.camera = controller_.camera();
   c.clip = settings_.clip;
   c.size = captureSize(fb);
+  // A name no file has yet, nor one promised to a screenshot not written yet (within the same
+  // second they would share it).
   c.path = std::filesystem::absolute(
-               screenshotFileName(saved_.screenshotDir, current_.name, std::time(nullptr)))
+               screenshotFileName(saved_.screenshotDir, current_.name, std::time(nullptr),
+                                  [this](const std::string& p) { return shotPathPromised(p); }))
                .lexically_normal()
                .string();
   c.cameraRevision = controller_.revision();
   c.settingsRevision = settingsRevision_;
   c.tfRevision = liveTf_.revision();
+  if (capture_.active || turntable_.total > 0) {
+    // Another capture is being drawn: this view's picture follows it (before the turntable's
+    // next frame).
+    queuedShots_.push_back(std::move(c));
+    info("screenshot queued (" + std::to_string(queuedShots_.size()) + " waiting)");
+    return;
+  }
   // Full quality of this view at this size on screen: written now. Else it is refined over the
   // next UI frames (a coarse picture on screen, a refinement under way, a larger size), never
   // drawn whole in one frame (seconds on llvmpipe).
@@ -149,8 +163,14 @@ void ViewerWindow::nextTurntableCapture(const glm::ivec2& fb) {
 
 bool ViewerWindow::captureStep(const glm::ivec2& fb, bool activity) {
   if (!capture_.active) {
-    if (turntable_.total == 0) return false;
-    nextTurntableCapture(fb);
+    if (!queuedShots_.empty()) {
+      capture_ = std::move(queuedShots_.front());
+      queuedShots_.pop_front();
+    } else if (turntable_.total > 0) {
+      nextTurntableCapture(fb);
+    } else {
+      return false;
+    }
   }
   // A transfer-function edit's full splats still on the worker: they come first, as for the
   // window's own refinement (the renderer holds the old set until then).

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <deque>
 #include <future>
 #include <map>
 #include <memory>
@@ -139,6 +140,12 @@ class ViewerWindow {
 
   // viewer_capture.cpp: pictures written to files.
   void screenshot(const glm::ivec2& fb);
+  // Whether a screenshot under way, queued or being written will write `path`.
+  bool shotPathPromised(const std::string& path) const;
+  // A capture under way or waiting: a screenshot, a queued one, a turntable.
+  bool capturing() const {
+    return capture_.active || !queuedShots_.empty() || turntable_.total > 0;
+  }
   glm::ivec2 captureSize(const glm::ivec2& fb) const;
   // `format`: "png" (a folder of frames), "mp4" or "webm" (a video at `fps`).
   // `tour`: through the camera bookmarks (with their clip regions) instead of about view-up.
@@ -218,6 +225,7 @@ class ViewerWindow {
   BookmarkStore bookmarks_;
   WindowTurntable turntable_;
   PendingCapture capture_;
+  std::deque<PendingCapture> queuedShots_;  // screenshots asked for while another capture ran
   // A screenshot's PNG being encoded and written on a worker (150 ms at 2048x1536), and its
   // file; the future's destructor waits for it, so a file begun is finished on exit.
   std::future<void> shotWrite_;

@@ -2,10 +2,12 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include "io/atomic_file.h"
 #include "io/camera_bookmarks.h"
@@ -329,6 +331,16 @@ TEST_F(ViewerFiles, ScreenshotNamesAreTimestampedAndNeverOverwrite) {
   std::ofstream(path("head.nrrd")) << "x";
   std::ofstream(path("head-2.nrrd")) << "x";
   EXPECT_EQ(unusedFileName(dir_.string(), "head", ".nrrd"), path("head-3.nrrd"));
+  // Names promised to files not written yet (the window's queued screenshots) are passed over
+  // too.
+  const std::vector<std::string> promised = {path("ewaview-my_vol-20261121-170509-2.png"),
+                                             path("ewaview-my_vol-20261121-170509-3.png")};
+  const auto taken = [&](const std::string& p) {
+    return std::find(promised.begin(), promised.end(), p) != promised.end();
+  };
+  EXPECT_EQ(screenshotFileName(dir_.string(), "my vol.nhdr", when, taken),
+            path("ewaview-my_vol-20261121-170509-4.png"));
+  EXPECT_EQ(unusedFileName(dir_.string(), "head", ".nrrd", taken), path("head-3.nrrd"));
 }
 
 }  // namespace
