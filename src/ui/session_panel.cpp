@@ -96,6 +96,7 @@ void SessionPanel::drawCapture(const SessionView& view, SessionEdits& edits) {
   layout_.lastItem("capture-header");
   if (!open) return;
   edits.screenshot = ImGui::Button("Screenshot (F12)");
+  layout_.lastItem("screenshot-button");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(110.0f);
   int scale = view.captureScale - 1;

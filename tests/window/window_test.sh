@@ -583,16 +583,17 @@ turntable_dir() { find "$work/shots" -maxdepth 1 -type d -name 'ewaview-ball-*-t
 turntable_started() { [ -n "$(turntable_dir)" ]; }
 click_until turntable-button turntable_started ||
   fail "clicking Turntable started no turntable (no folder for its frames)"
-# F12 while the turntable is drawn: the screenshot is queued, drawn between two of its frames
-# and written to a name of its own. A key xdotool sends is now and then not seen (above, Shift+C):
-# pressed again after 5 s without its command line, while the turntable still runs.
+# A screenshot asked for while the turntable is drawn (the panel's Screenshot button, which F12
+# presses too: keys sent during the turntable did not reach the window under CI's Xvfb, clicks
+# do) is queued, drawn between two of its frames and written to a name of its own.
 nshots=$(shots)
-press_until_seen F12
+queued_seen() { grep -q '^ewaview: screenshot queued' "$work/stderr"; }
+click_until screenshot-button queued_seen || fail "the Screenshot button during the turntable queued nothing"
 turntable_done() { [ -f "$(turntable_dir)/frame_035.png" ] && [ "$(grep -c 'saved 36 frames' "$work/stderr")" -ge 2 ]; }
 poll "the turntable's 36 frames" turntable_done
 poll "the screenshot asked for during the turntable" another_shot
 grep -q '^ewaview: screenshot queued (1 waiting)' "$work/stderr" ||
-  fail "F12 during the turntable was not queued"
+  fail "the screenshot during the turntable was not queued first in line"
 queued_file=$(grep '^ewaview: saved screenshot ' "$work/stderr" | tail -1 | sed 's/^ewaview: saved screenshot //')
 [ "$queued_file" != "$shot_file" ] || fail "the queued screenshot overwrote $shot_file"
 queued_size=$(identify -format '%wx%h' "$queued_file") || fail "no screenshot at $queued_file"
@@ -606,7 +607,7 @@ frame_size=$(identify -format '%wx%h' "$(turntable_dir)/frame_018.png")
 r0=$(coverage "$(turntable_dir)/frame_000.png" "$all"); r1=$(coverage "$(turntable_dir)/frame_018.png" "$all")
 greater "$r0" 0.005 && greater "$r1" 0.005 || fail "the turntable's frames do not show the volume ($r0, $r1)"
 cp "$(turntable_dir)/frame_018.png" "$out/20_turntable_half.png"
-log "turntable: 36 frames of $frame_size, coverage $r0, $r1 at frames 0 and 18; F12 meanwhile queued, $queued_size"
+log "turntable: 36 frames of $frame_size, coverage $r0, $r1 at frames 0 and 18; a screenshot meanwhile queued, $queued_size"
 quit_window "watch window"
 
 # Series: a DICOM folder of two (a ball of 30 slices, a box of 20). The panel lists them;
