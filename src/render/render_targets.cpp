@@ -42,12 +42,23 @@ void checkImageLimits(int w, int h) {
   }
 }
 
+// One image of the frame's size.
+gl::Texture makeImage(GLenum format, GLenum filter, int w, int h) {
+  gl::Texture t = gl::Texture::create2D(format, w, h);
+  t.setFilter(filter, filter);
+  return t;
+}
+
+// `layout` as the images are made: back halves only with paired slabs.
+TargetLayout normalized(TargetLayout layout) {
+  layout.quarters = layout.quarters && layout.pairedSlabs;
+  return layout;
+}
+
 }  // namespace
 
 bool RenderTargets::ready(const TargetLayout& want) const {
-  TargetLayout layout = want;
-  layout.quarters = layout.quarters && layout.pairedSlabs;
-  return layout_.width > 0 && layout_ == layout;
+  return layout_.width > 0 && layout_ == normalized(want);
 }
 
 void RenderTargets::resize(int w, int h, bool paired, bool quarter, bool normals, bool half,
@@ -60,8 +71,7 @@ bool RenderTargets::prepare(const TargetLayout& want, double budgetMs) {
   const auto start = std::chrono::steady_clock::now();
   imagesMade_ = 0;
   if (ready(want)) return true;
-  TargetLayout l = want;
-  l.quarters = l.quarters && l.pairedSlabs;
+  const TargetLayout l = normalized(want);
   if (!(l.width == width && l.height == height && l.halfSlabs == halfSlabs_)) {
     checkImageLimits(l.width, l.height);
     // The last finished picture stays shown until a frame finishes in the new images.
@@ -108,23 +118,19 @@ bool RenderTargets::prepare(const TargetLayout& want, double budgetMs) {
     images.push_back({&slabOtherBack, slabFormat, GL_LINEAR});
   }
   if (l.coarseSlabs) images.push_back({&coarseMarks, GL_DEPTH24_STENCIL8, GL_LINEAR});
-  double msPerByte = 0.0;  // the slowest pace of this call's images
   for (const Image& image : images) {
     if (*image.texture) continue;
     const double bytes = double(width) * double(height) * double(bytesPerPixel(image.format));
     // Twice the slowest pace seen: fresh memory's price varies (llvmpipe, 2400x1350: 10-110
     // ms for the same 26-52 MB images, freed memory reused or not).
-    msPerByte_ = std::max(msPerByte_, msPerByte);
     if (imagesMade_ > 0 && millisecondsSince(start) + 2.0 * msPerByte_ * bytes > budgetMs)
       return false;
     const auto made = std::chrono::steady_clock::now();
-    *image.texture = gl::Texture::create2D(image.format, width, height);
-    image.texture->setFilter(image.filter, image.filter);
+    *image.texture = makeImage(image.format, image.filter, width, height);
     gl::checkGlError("render targets");  // GL_OUT_OF_MEMORY for images too large to allocate
-    msPerByte = std::max(msPerByte, millisecondsSince(made) / bytes);
+    msPerByte_ = std::max(msPerByte_, millisecondsSince(made) / bytes);
     ++imagesMade_;
   }
-  msPerByte_ = std::max(msPerByte_, msPerByte);
   makeFramebuffers();
   layout_ = l;
   return true;
@@ -133,17 +139,12 @@ bool RenderTargets::prepare(const TargetLayout& want, double budgetMs) {
 void RenderTargets::beginOutput() {
   if (!outputDone_) return;  // not shown: drawn into as it is
   gl::Texture next = std::move(spareOutput_);
-  if (!next) {
-    next = gl::Texture::create2D(GL_RGBA8, width, height);
-    next.setFilter(GL_NEAREST, GL_NEAREST);
-  }
+  if (!next) next = makeImage(GL_RGBA8, GL_NEAREST, width, height);
   previousOutput_ = std::move(output);
   previousWidth_ = width;
   previousHeight_ = height;
   output = std::move(next);
-  outputFbo = gl::Framebuffer::create();
-  outputFbo.attachColor(0, output);
-  outputFbo.checkComplete();
+  makeOutputFramebuffer();
   outputDone_ = false;
   outputSwapped_ = true;
 }
@@ -168,14 +169,18 @@ gl::Framebuffer RenderTargets::slabFramebuffer(const gl::Texture& image, const g
   return fbo;
 }
 
+void RenderTargets::makeOutputFramebuffer() {
+  outputFbo = gl::Framebuffer::create();
+  outputFbo.attachColor(0, output);
+  outputFbo.checkComplete();
+}
+
 void RenderTargets::makeFramebuffers() {
   accumFbo = gl::Framebuffer::create();
   accumFbo.attachColor(0, accum);
   accumFbo.attachDepth(stencil, GL_DEPTH_STENCIL_ATTACHMENT);
   accumFbo.checkComplete();
-  outputFbo = gl::Framebuffer::create();
-  outputFbo.attachColor(0, output);
-  outputFbo.checkComplete();
+  makeOutputFramebuffer();
   slabFbo = slabFramebuffer(slab, slabBack, stencil);
   if (slabOther) slabOtherFbo = slabFramebuffer(slabOther, slabOtherBack, stencil);
   if (coarseMarks) {

@@ -22,7 +22,6 @@ struct TargetLayout {
            quarters == o.quarters && normalSums == o.normalSums && halfSlabs == o.halfSlabs &&
            coarseSlabs == o.coarseSlabs;
   }
-  bool operator!=(const TargetLayout& o) const { return !(*this == o); }
 };
 
 struct RenderTargets {
@@ -115,6 +114,7 @@ struct RenderTargets {
   // and `depth` (the stencil, or the coarser images' marks).
   gl::Framebuffer slabFramebuffer(const gl::Texture& image, const gl::Texture& back,
                                   const gl::Texture& depth);
+  void makeOutputFramebuffer();
   void makeFramebuffers();
 
   bool halfSlabs_ = false;

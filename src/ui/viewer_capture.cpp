@@ -68,9 +68,9 @@ void ViewerWindow::screenshot(const glm::ivec2& fb) {
   c.cameraRevision = controller_.revision();
   c.settingsRevision = settingsRevision_;
   c.tfRevision = liveTf_.revision();
-  if (capture_.active || turntable_.total > 0) {
-    // Another capture is being drawn: this view's picture follows it (before the turntable's
-    // next frame).
+  if (capturing()) {
+    // Another capture is being drawn or waits: this view's picture follows them (before the
+    // turntable's next frame).
     queuedShots_.push_back(std::move(c));
     info("screenshot queued (" + std::to_string(queuedShots_.size()) + " waiting)");
     return;
