@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Time to full quality in the window: opens ewaview under Xvfb with EWAVIEW_FRAME_LOG=1 and a
 scratch settings folder, and measures from its first UI frame to the first full-quality frame
-after the progressive refinement, with the refinement's UI frames and steps.
+after the progressive refinement, with the refinement's UI frames and steps, and the worst UI
+frame between the first picture and the refinement (the full level's splats arriving from the
+worker, the coarse levels warming up).
 
 Usage: scripts/window_refine_time.py [--runs N] BINARY [BINARY ...] [-- EWAVIEW ARGS]
 Several binaries (a build before a change and after it) take turns, run by run, so a machine
@@ -21,13 +23,15 @@ STEP = re.compile(r'step ([\d.]+)')
 
 def measure(binary, args, timeout=180.0):
     """(seconds to full quality, refining UI frames, seconds of steps, worst refining frame ms,
-    refining frames over 100 ms), the finishing frame counted with the refining ones."""
+    refining frames over 100 ms, worst frame ms between the first picture and the refinement),
+    the finishing frame counted with the refining ones."""
     env = dict(os.environ, EWAVIEW_FRAME_LOG='1', EWAVIEW_CONFIG_DIR=tempfile.mkdtemp())
     proc = subprocess.Popen(['xvfb-run', '-a', '-s', '-screen 0 1280x1024x24', binary] + args,
                             stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, env=env, text=True,
                             start_new_session=True)
     first = done = None
     frames, steps, worst, over = 0, 0.0, 0.0, 0
+    pictured, waiting = False, 0.0  # the first picture drawn; the worst frame after it, before
     deadline = time.time() + timeout
     try:
         for line in proc.stderr:
@@ -37,6 +41,9 @@ def measure(binary, args, timeout=180.0):
             now = time.time()
             first = first or now
             ms = float(m.group(1))
+            if frames == 0 and pictured and m.group(2) != 'refining':
+                waiting = max(waiting, ms)
+            pictured = pictured or '(render' in line
             if m.group(2) == 'refining':
                 frames += 1
                 worst = max(worst, ms)
@@ -54,7 +61,7 @@ def measure(binary, args, timeout=180.0):
         proc.wait()
     if done is None:
         raise SystemExit(f'{binary}: no full-quality frame after a refinement within {timeout} s')
-    return done - first, frames, steps / 1000.0, worst, over
+    return done - first, frames, steps / 1000.0, worst, over, waiting
 
 
 def main(argv):
@@ -70,10 +77,10 @@ def main(argv):
         raise SystemExit(__doc__)
     for _ in range(runs):
         for b in binaries:
-            wall, frames, steps, worst, over = measure(b, args)
+            wall, frames, steps, worst, over, waiting = measure(b, args)
             print(f'{b}: full quality after {wall:.2f} s, {frames} refining UI frames, '
                   f'steps {steps:.2f} s, worst refining frame {worst:.0f} ms, '
-                  f'{over} over 100 ms', flush=True)
+                  f'{over} over 100 ms, worst frame before it {waiting:.0f} ms', flush=True)
 
 
 if __name__ == '__main__':

@@ -50,6 +50,14 @@ std::string eglErrorName(EGLint error) {
 }
 
 // "<call>: EGL_BAD_..." from the calling thread's last EGL error.
+const EGLint kCoreContextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                         4,
+                                         EGL_CONTEXT_MINOR_VERSION,
+                                         5,
+                                         EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                         EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                         EGL_NONE};
+
 std::string failed(const char* call) {
   return std::string(call) + ": " + eglErrorName(eglGetError());
 }
@@ -149,14 +157,7 @@ bool EglContext::tryDisplay(void* display, int width, int height, std::string& r
     reason = configs < 1 ? "no EGL config for desktop OpenGL" : failed("eglChooseConfig");
     return false;
   }
-  const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION,
-                                      4,
-                                      EGL_CONTEXT_MINOR_VERSION,
-                                      5,
-                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                      EGL_NONE};
-  EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttributes);
+  EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, kCoreContextAttributes);
   if (context == EGL_NO_CONTEXT) {
     reason = "OpenGL 4.5 core profile not available (" + failed("eglCreateContext") + ")";
     return false;
@@ -174,7 +175,37 @@ bool EglContext::tryDisplay(void* display, int width, int height, std::string& r
   display_ = display;
   context_ = context;
   surface_ = surface;
+  config_ = config;
   return true;
+}
+
+namespace {
+
+class EglUploadContext final : public UploadContext {
+ public:
+  EglUploadContext(EGLDisplay display, EGLContext context) : display_(display), context_(context) {}
+  ~EglUploadContext() override { eglDestroyContext(display_, context_); }
+  void bind() override {
+    if (!eglBindAPI(EGL_OPENGL_API) ||
+        !eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+      throw ContextError("EGL: cannot bind the upload context (" + failed("eglMakeCurrent") + ")");
+  }
+  void release() override {
+    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  }
+
+ private:
+  EGLDisplay display_;
+  EGLContext context_;
+};
+
+}  // namespace
+
+std::unique_ptr<UploadContext> EglContext::createUploadContext() {
+  if (surface_ != EGL_NO_SURFACE) return nullptr;  // a pbuffer display: no surfaceless binds
+  EGLContext shared = eglCreateContext(display_, config_, context_, kCoreContextAttributes);
+  if (shared == EGL_NO_CONTEXT) return nullptr;
+  return std::make_unique<EglUploadContext>(display_, shared);
 }
 
 void EglContext::makeNativeCurrent() {

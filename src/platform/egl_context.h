@@ -16,6 +16,8 @@ class EglContext final : public GlContext {
   ~EglContext() override;
 
   void* getProcAddress(const char* name) override;
+  // A context sharing this one's objects, surfaceless (none on a display with pbuffers only).
+  std::unique_ptr<UploadContext> createUploadContext() override;
 
  protected:
   void makeNativeCurrent() override;
@@ -29,6 +31,7 @@ class EglContext final : public GlContext {
   void* display_ = nullptr;
   void* context_ = nullptr;
   void* surface_ = nullptr;
+  void* config_ = nullptr;  // EGLConfig
 };
 
 }  // namespace ewa::platform

@@ -46,6 +46,10 @@ void GlContext::makeCurrent() {
   loadFunctions();
 }
 
+std::unique_ptr<UploadContext> GlContext::createUploadContext() {
+  return nullptr;
+}
+
 std::string GlContext::description() const {
   return backendName_ + ": OpenGL " + info_.version + ", " + info_.renderer;
 }

@@ -2,11 +2,13 @@
 // Deliberately free of GL headers, so UI code next to Dear ImGui's GL loader can include it.
 #pragma once
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "gl/gl_loader.h"
+#include "platform/upload_context.h"
 
 namespace ewa::platform {
 
@@ -42,6 +44,10 @@ class GlContext {
   void makeCurrent();
   // Address of a GL function of this context (the context should be current), or nullptr.
   virtual void* getProcAddress(const char* name) = 0;
+  // A second context sharing this one's objects, for a worker thread to upload data while this
+  // one draws (made on this thread, which stays bound here); nullptr where the backend makes
+  // none (EGL here) or it fails: then uploads run on this thread.
+  virtual std::unique_ptr<UploadContext> createUploadContext();
   // One line: "<backend>: OpenGL <GL_VERSION>, <GL_RENDERER>".
   virtual std::string description() const;
 

@@ -7,15 +7,39 @@
 
 namespace ewa::platform {
 
-GlfwWindowContext::GlfwWindowContext(const WindowOptions& options,
-                                     std::shared_ptr<GlfwLibrary> glfw)
-    : GlContext("GLFW"), glfw_(glfw ? std::move(glfw) : GlfwLibrary::create()) {
+namespace {
+
+void coreContextHints() {
   glfwDefaultWindowHints();
   glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_API);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+}
+
+// A hidden window's context; destroyed on the thread that made it (GLFW's rule for windows).
+class GlfwUploadContext final : public UploadContext {
+ public:
+  explicit GlfwUploadContext(GLFWwindow* window) : window_(window) {}
+  ~GlfwUploadContext() override { glfwDestroyWindow(window_); }
+  void bind() override {
+    glfwMakeContextCurrent(window_);
+    if (glfwGetCurrentContext() != window_)
+      throw ContextError(std::string("GLFW: cannot bind the upload context: ") + glfwLastError());
+  }
+  void release() override { glfwMakeContextCurrent(nullptr); }
+
+ private:
+  GLFWwindow* window_;
+};
+
+}  // namespace
+
+GlfwWindowContext::GlfwWindowContext(const WindowOptions& options,
+                                     std::shared_ptr<GlfwLibrary> glfw)
+    : GlContext("GLFW"), glfw_(glfw ? std::move(glfw) : GlfwLibrary::create()) {
+  coreContextHints();
   glfwWindowHint(GLFW_VISIBLE, options.visible ? GLFW_TRUE : GLFW_FALSE);
   window_ =
       glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
@@ -42,6 +66,14 @@ void GlfwWindowContext::makeNativeCurrent() {
 
 void* GlfwWindowContext::getProcAddress(const char* name) {
   return reinterpret_cast<void*>(glfwGetProcAddress(name));
+}
+
+std::unique_ptr<UploadContext> GlfwWindowContext::createUploadContext() {
+  coreContextHints();
+  glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+  GLFWwindow* hidden = glfwCreateWindow(1, 1, "ewaview uploads", nullptr, window_);
+  if (!hidden) return nullptr;
+  return std::make_unique<GlfwUploadContext>(hidden);
 }
 
 void GlfwWindowContext::swapBuffers() {

@@ -30,6 +30,8 @@ class GlfwWindowContext final : public GlContext {
   ~GlfwWindowContext() override;
 
   void* getProcAddress(const char* name) override;
+  // A hidden 1x1 window's context sharing this one's objects.
+  std::unique_ptr<UploadContext> createUploadContext() override;
 
   // For the UI (ImGui's GLFW backend, input callbacks).
   GLFWwindow* window() const { return window_; }

@@ -4,7 +4,9 @@
 
 #include <GL/osmesa.h>
 
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace ewa::platform {
 
@@ -28,6 +30,39 @@ std::string offeredVersion() {
 
 }  // namespace
 
+namespace {
+
+const int kCoreAttributes[] = {OSMESA_FORMAT,
+                               OSMESA_RGBA,
+                               OSMESA_DEPTH_BITS,
+                               24,
+                               OSMESA_STENCIL_BITS,
+                               8,
+                               OSMESA_PROFILE,
+                               OSMESA_CORE_PROFILE,
+                               OSMESA_CONTEXT_MAJOR_VERSION,
+                               4,
+                               OSMESA_CONTEXT_MINOR_VERSION,
+                               5,
+                               0};
+
+class OsMesaUploadContext final : public UploadContext {
+ public:
+  explicit OsMesaUploadContext(OSMesaContext context) : context_(context), pixels_(4 * 4 * 4) {}
+  ~OsMesaUploadContext() override { OSMesaDestroyContext(context_); }
+  void bind() override {
+    if (!OSMesaMakeCurrent(context_, pixels_.data(), GL_UNSIGNED_BYTE, 4, 4))
+      throw ContextError("OSMesa: cannot bind the upload context");
+  }
+  void release() override { OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0); }
+
+ private:
+  OSMesaContext context_;
+  std::vector<unsigned char> pixels_;
+};
+
+}  // namespace
+
 OsMesaContext::OsMesaContext(int width, int height)
     : GlContext("OSMesa"),
       width_(width),
@@ -37,20 +72,7 @@ OsMesaContext::OsMesaContext(int width, int height)
     throw ContextError("OSMesa: invalid buffer size " + std::to_string(width) + "x" +
                        std::to_string(height));
   }
-  const int attributes[] = {OSMESA_FORMAT,
-                            OSMESA_RGBA,
-                            OSMESA_DEPTH_BITS,
-                            24,
-                            OSMESA_STENCIL_BITS,
-                            8,
-                            OSMESA_PROFILE,
-                            OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION,
-                            4,
-                            OSMESA_CONTEXT_MINOR_VERSION,
-                            5,
-                            0};
-  context_ = OSMesaCreateContextAttribs(attributes, nullptr);
+  context_ = OSMesaCreateContextAttribs(kCoreAttributes, nullptr);
   if (!context_) {
     throw ContextError("OSMesa: OpenGL 4.5 core profile not available (got " + offeredVersion() +
                        ")");
@@ -71,6 +93,12 @@ void OsMesaContext::makeNativeCurrent() {
   if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width_, height_)) {
     throw ContextError("OSMesa: OSMesaMakeCurrent failed");
   }
+}
+
+std::unique_ptr<UploadContext> OsMesaContext::createUploadContext() {
+  OSMesaContext shared = OSMesaCreateContextAttribs(kCoreAttributes, context_);
+  if (!shared) return nullptr;
+  return std::make_unique<OsMesaUploadContext>(shared);
 }
 
 void* OsMesaContext::getProcAddress(const char* name) {

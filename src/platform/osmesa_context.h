@@ -1,6 +1,7 @@
 // OsMesaContext: an off-screen OpenGL 4.5 core context from Mesa's OSMesa (software, no display).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "platform/gl_context.h"
@@ -18,6 +19,8 @@ class OsMesaContext final : public GlContext {
   ~OsMesaContext() override;
 
   void* getProcAddress(const char* name) override;
+  // A context sharing this one's objects, bound to a 4x4 buffer of its own.
+  std::unique_ptr<UploadContext> createUploadContext() override;
 
  protected:
   void makeNativeCurrent() override;

@@ -30,7 +30,8 @@ LodVolumes buildLodVolumes(const Volume& volume) {
   return out;
 }
 
-LodRenderer::LodRenderer(Factory factory) : factory_(std::move(factory)) {}
+LodRenderer::LodRenderer(Factory factory, platform::UploadContext* uploads)
+    : factory_(std::move(factory)), uploads_(uploads) {}
 
 void LodRenderer::setVolume(const Volume& volume, LodVolumes coarse) {
   volume_ = &volume;
@@ -78,12 +79,24 @@ SplatRenderer* LodRenderer::fullSplatRenderer() {
   return dynamic_cast<SplatRenderer*>(&rendererFor(1));
 }
 
-bool LodRenderer::setFullSplats(ClassifiedSplats splats, const Classification& classification) {
+SplatRenderer* LodRenderer::existingFullSplatRenderer() const {
   const auto it = renderers_.find(1);
-  auto* splat = it == renderers_.end() ? nullptr : dynamic_cast<SplatRenderer*>(it->second.get());
-  if (!splat) return false;
-  splat->setSplats(std::move(splats), classification);
-  return true;
+  return it == renderers_.end() ? nullptr : dynamic_cast<SplatRenderer*>(it->second.get());
+}
+
+bool LodRenderer::beginFullSplats(ClassifiedSplats splats, const Classification& classification) {
+  SplatRenderer* splat = existingFullSplatRenderer();
+  return !splat || splat->beginSplats(std::move(splats), classification, uploads_);
+}
+
+bool LodRenderer::takeUploadedFullSplats() {
+  SplatRenderer* splat = existingFullSplatRenderer();
+  return splat && splat->takeUploadedSplats();
+}
+
+bool LodRenderer::uploadingFullSplats() const {
+  const SplatRenderer* splat = existingFullSplatRenderer();
+  return splat && splat->uploadingSplats();
 }
 
 bool LodRenderer::hasFactor(int factor) const {
@@ -148,6 +161,22 @@ double LodRenderer::fullProgress() const {
 
 bool LodRenderer::warmUpNext(const Camera& camera, const RenderSettings& settings) {
   constexpr int kWarmUpSize = 8;
+  if (warming_ && warming_->uploading) {
+    auto& splat = dynamic_cast<SplatRenderer&>(rendererFor(warming_->factor));
+    bool taken = false;
+    try {
+      // Dropped when another volume or function came since, or a draw of the level took it.
+      if (warming_->revision == revision_ && splat.uploadingSplats()) {
+        taken = splat.takeUploadedSplats();
+        if (!taken) return true;  // still uploading
+      }
+    } catch (const std::exception&) {
+      // The upload failed: the level's first draw classifies and uploads again, and says why.
+    }
+    warming_.reset();
+    if (taken) splat.prepare(settings, kWarmUpSize, kWarmUpSize);
+    return true;
+  }
   if (warming_) {
     std::optional<BuiltSplats> built;
     try {
@@ -157,17 +186,31 @@ bool LodRenderer::warmUpNext(const Camera& camera, const RenderSettings& setting
       // Too many splats: the level's first draw says so, as without a warm-up.
     }
     const int factor = warming_->factor;
-    const bool current = warming_->revision == revision_;
-    warming_.reset();
     // Dropped: another volume or transfer function since, or no set.
-    if (!current || !built) return true;
+    if (warming_->revision != revision_ || !built) {
+      warming_.reset();
+      return true;
+    }
     // Only a splat renderer asks for a build; a draw of the level meanwhile classified it.
     auto& splat = dynamic_cast<SplatRenderer&>(rendererFor(factor));
-    if (!splat.needsSplats(built->classification)) return true;
-    // Uploaded, and the programs, images and tables made: a tiny draw would also run every
-    // splat through the vertex stage (0.3 s or more for bonsai's half-size volume).
+    if (!splat.needsSplats(built->classification)) {
+      warming_.reset();
+      return true;
+    }
+    // Uploaded (a big set on a worker, taken in a later call), and the programs, images and
+    // tables made: a tiny draw would also run every splat through the vertex stage (0.3 s or
+    // more for bonsai's half-size volume).
     splat.updateTransferTexture(tf_);
-    splat.setSplats(std::move(built->splats), built->classification);
+    try {
+      warming_->uploading =
+          !splat.beginSplats(std::move(built->splats), built->classification, uploads_);
+    } catch (const std::exception&) {
+      // Too many splats for the order entries: the level's first draw says so.
+      warming_.reset();
+      return true;
+    }
+    if (warming_->uploading) return true;
+    warming_.reset();
     splat.prepare(settings, kWarmUpSize, kWarmUpSize);
     return true;
   }

@@ -11,6 +11,7 @@
 #include "core/async_splat_builder.h"
 #include "core/lod_policy.h"
 #include "core/splat_attributes.h"
+#include "platform/upload_context.h"
 #include "render/renderer.h"
 
 namespace ewa {
@@ -28,7 +29,10 @@ class LodRenderer {
  public:
   using Factory = std::function<std::unique_ptr<Renderer>()>;
   // `factory` makes one renderer per volume factor (the same kind for every level).
-  explicit LodRenderer(Factory factory);
+  // With `uploads` (a context of the renderers' share group, outliving this object) big splat
+  // sets, the full level's and the coarse levels' warmed up, are uploaded on a worker bound to
+  // it (SplatRenderer::beginSplats); without, on this thread.
+  explicit LodRenderer(Factory factory, platform::UploadContext* uploads = nullptr);
 
   // `volume` must outlive this object or the next setVolume; the coarse ones are shared.
   void setVolume(const Volume& volume, LodVolumes coarse);
@@ -36,13 +40,19 @@ class LodRenderer {
   // A live edit (a dragged control point): coarse levels classify again on their next render
   // (small volumes, cheap); a full-resolution splat renderer only gets the new table and keeps
   // its splats, and is returned so the caller can build the new set on a worker thread and
-  // hand it over with setFullSplats(). Other full-level renderers take the function as usual.
+  // hand it over with beginFullSplats(). Other full-level renderers take the function as usual.
   SplatRenderer* editTransferFunction(const TransferFunction& tf);
   // The full-resolution renderer when it is a splat renderer (made on first use), else null.
   SplatRenderer* fullSplatRenderer();
-  // Gives the full-resolution splat renderer a set built elsewhere; false when the full level
-  // is not a splat renderer (any more).
-  bool setFullSplats(ClassifiedSplats splats, const Classification& classification);
+  // Gives the full-resolution splat renderer a set built elsewhere (SplatRenderer::beginSplats:
+  // a big one is uploaded on a worker, given the upload context); true when it is in place now, or
+  // dropped since the full level is not a splat renderer (any more). Else takeUploadedFullSplats()
+  // puts it in place once uploaded.
+  bool beginFullSplats(ClassifiedSplats splats, const Classification& classification);
+  // True when the set beginFullSplats() left to copy is now in place.
+  bool takeUploadedFullSplats();
+  // True while the full level copies a set beginFullSplats() gave it.
+  bool uploadingFullSplats() const;
   // Draws LodPolicy level `level` for a width x height window: the level's volume factor
   // picks the renderer, its image divisor shrinks the image (at least 1x1).
   void render(int level, const Camera& camera, const RenderSettings& settings, int width,
@@ -98,8 +108,11 @@ class LodRenderer {
 
  private:
   Renderer& rendererFor(int factor);
+  // The full level's splat renderer if it has been made, else null (makes none).
+  SplatRenderer* existingFullSplatRenderer() const;
 
   Factory factory_;
+  platform::UploadContext* uploads_ = nullptr;
   const Volume* volume_ = nullptr;
   LodVolumes coarse_;
   TransferFunction tf_;
@@ -114,6 +127,7 @@ class LodRenderer {
     uint64_t revision = 0;  // revision_ when asked for
     std::shared_ptr<const Volume> volume;
     AsyncSplatBuilder builder;
+    bool uploading = false;  // built, and being uploaded on a worker
   };
   std::unique_ptr<WarmUpBuild> warming_;
   uint64_t revision_ = 0;  // counts volume and transfer-function changes (a build goes stale)

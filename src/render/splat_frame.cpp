@@ -74,6 +74,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   frame_.targetsPending = !targets_.ready(frame_.targetLayout);
   if (!frame_.targetsPending) clearTargets();
   const Classification classification = splatClassification(settings);
+  if (upload_ && upload_->classification() == classification) installUpload();
   if (volume_ && (splatsDirty_ || classification != classification_)) {
     const auto classifyStart = Clock::now();
     rebuildSplats(classification);

@@ -106,6 +106,7 @@ void SplatRenderer::setPointSizeLimit(float limit) {
 }
 
 void SplatRenderer::setVolume(const Volume& volume) {
+  upload_.reset();  // another volume's set
   volume_ = &volume;
   gradients_.invalidate();
   splatsDirty_ = true;
@@ -114,6 +115,7 @@ void SplatRenderer::setVolume(const Volume& volume) {
 }
 
 void SplatRenderer::setTransferFunction(const TransferFunction& tf) {
+  upload_.reset();  // the function before's set
   tf_ = tf;
   splatsDirty_ = true;
 }
@@ -121,6 +123,7 @@ void SplatRenderer::setTransferFunction(const TransferFunction& tf) {
 void SplatRenderer::rebuildSplats(const Classification& classification) {
   splatsDirty_ = false;
   classification_ = classification;
+  upload_.reset();
   uploadTransferTexture();
   classified_ = ClassifiedSplats();
   try {
@@ -151,6 +154,7 @@ void SplatRenderer::updateTransferTexture(const TransferFunction& tf) {
 }
 
 void SplatRenderer::setSplats(ClassifiedSplats splats, const Classification& classification) {
+  upload_.reset();
   waitForPartition();  // the worker reads the splats being replaced
   classified_ = std::move(splats);
   classification_ = classification;
@@ -158,23 +162,65 @@ void SplatRenderer::setSplats(ClassifiedSplats splats, const Classification& cla
   uploadSplats();
 }
 
-void SplatRenderer::uploadSplats() {
-  // Order entries keep two flag bits above the splat index.
-  if (classified_.splats.size() > SlabPartition::kIndexMask) {
-    classified_ = ClassifiedSplats{};
-    splatsDirty_ = true;
-    throw gl::GlError("volume: more than 2^30 visible voxels: not supported by splatting");
+bool SplatRenderer::beginSplats(ClassifiedSplats splats, const Classification& classification,
+                                platform::UploadContext* context) {
+  if (!context || splats.splats.size() * sizeof(PackedSplat) < workerUploadBytes_) {
+    setSplats(std::move(splats), classification);
+    return true;
   }
+  checkSplatCount(splats.splats.size());
+  upload_.reset();  // waits for an upload under way
+  upload_ = std::make_unique<SplatUpload>(std::move(splats), classification, *context);
+  return false;
+}
+
+bool SplatRenderer::takeUploadedSplats() {
+  if (!upload_ || !upload_->done()) return false;
+  installUpload();
+  return true;
+}
+
+void SplatRenderer::installUpload() {
+  std::unique_ptr<SplatUpload> upload = std::move(upload_);
+  waitForPartition();  // the worker reads the splats being replaced
+  ClassifiedSplats splats;
+  gl::Buffer buffer;
+  upload->finish(&splats, &buffer);  // the set before stays when the upload failed
+  classified_ = std::move(splats);
+  splatBuffer_ = std::move(buffer);
+  classification_ = upload->classification();
+  splatsDirty_ = false;
+  splatBufferReplaced();
+}
+
+void SplatRenderer::checkSplatCount(size_t count) {
+  // Order entries keep two flag bits above the splat index.
+  if (count > SlabPartition::kIndexMask)
+    throw gl::GlError("volume: more than 2^30 visible voxels: not supported by splatting");
+}
+
+void SplatRenderer::splatBufferReplaced() {
   // The order list's store is kept between frames (takeCpuPartition); a new splat set starts
   // it afresh, so a small volume after a big one does not hold the big one's store.
   if (!frame_.active) orderPages_.clear();
+  attributesUploaded_ = false;  // the next frame uploads them if it needs them
+}
+
+void SplatRenderer::uploadSplats() {
+  try {
+    checkSplatCount(classified_.splats.size());
+  } catch (const gl::GlError&) {
+    classified_ = ClassifiedSplats{};
+    splatsDirty_ = true;
+    throw;
+  }
   const size_t n = std::max<size_t>(1, classified_.splats.size());
   const auto& splats = classified_.splats.splats();
   splatBuffer_.setData(GLsizeiptr(n * sizeof(PackedSplat)),
                        splats.empty() ? nullptr : splats.data(), GL_STATIC_DRAW);
   // GL_OUT_OF_MEMORY here names the buffer instead of surfacing at the end of the frame.
   gl::checkGlError(("splat buffer upload (" + std::to_string(n) + " splats)").c_str());
-  attributesUploaded_ = false;  // the next frame uploads them if it needs them
+  splatBufferReplaced();
 }
 
 void SplatRenderer::syncAttributes(const RenderSettings& settings) {

@@ -31,6 +31,7 @@
 #include "render/slab_pass_programs.h"
 #include "render/splat_program_set.h"
 #include "render/splat_programs.h"
+#include "render/splat_upload.h"
 #include "render/tile_ewa_splatter.h"
 
 namespace ewa {
@@ -84,9 +85,25 @@ class SplatRenderer : public Renderer {
   // current volume under `classification` and uploads it; the next render draws it (and does
   // not classify again unless the settings ask for another classification).
   void setSplats(ClassifiedSplats splats, const Classification& classification);
+  // setSplats without holding this thread for a big set: with a `context` of this renderer's
+  // share group, a set of kWorkerUploadBytes or more (setWorkerUploadBytes) is uploaded into a new
+  // buffer by a worker bound to it (SplatUpload) while frames draw the set before, and is put in
+  // place by a later takeUploadedSplats(), or by the next beginFrame() under its classification
+  // (which waits for it). Else the set is set at once. True when the set is in place now. Another
+  // set, volume, function or classification drops the one being uploaded.
+  bool beginSplats(ClassifiedSplats splats, const Classification& classification,
+                   platform::UploadContext* context);
+  // Puts the set beginSplats() is uploading in place once the upload is done; true when it did.
+  // Throws what the upload threw (the set before stays).
+  bool takeUploadedSplats();
+  bool uploadingSplats() const { return upload_ != nullptr; }
+  static constexpr size_t kWorkerUploadBytes = size_t(4) << 20;  // 0.5 M splats
+  // Test hook: sets of this many bytes or more go to the worker (default kWorkerUploadBytes).
+  void setWorkerUploadBytes(size_t bytes) { workerUploadBytes_ = bytes; }
   // True when the next frame under `classification` would classify the volume itself (no set
-  // for the current volume, function and classification is there).
+  // for the current volume, function and classification is there or being uploaded).
   bool needsSplats(const Classification& classification) const {
+    if (upload_ && upload_->classification() == classification) return false;
     return volume_ && (splatsDirty_ || classification != classification_);
   }
   // Chooses where the slab partition is built (Auto by default); takes effect next frame.
@@ -194,6 +211,13 @@ class SplatRenderer : public Renderer {
   void rebuildSplats(const Classification& classification);
   void uploadTransferTexture();
   void uploadSplats();
+  // Throws GlError when `count` splats are more than the order entries can index.
+  static void checkSplatCount(size_t count);
+  // The splat set of upload_ in place of the current one (waits for the upload; throws its
+  // error, the current set kept).
+  void installUpload();
+  // What a new splat buffer leaves stale: the order list's pages, the attributes.
+  void splatBufferReplaced();
   // Uploads the attributes (8 bytes a splat) when a frame under `settings` reads them (shading
   // or surface splats), else frees them; attributesUploaded_ says which.
   void syncAttributes(const RenderSettings& settings);
@@ -400,6 +424,8 @@ class SplatRenderer : public Renderer {
   static constexpr unsigned kGradientUnit = 12;
   gl::VertexArray emptyVao_;
   gl::Buffer splatBuffer_;
+  std::unique_ptr<SplatUpload> upload_;  // a set beginSplats() is uploading, or null
+  size_t workerUploadBytes_ = kWorkerUploadBytes;
   OrderPages orderPages_;  // the CPU partition's order list (the GPU's keeps its own)
   gl::Buffer attributeBuffer_;
   bool attributesUploaded_ = false;  // attributeBuffer_ holds classified_.attributes

@@ -44,15 +44,26 @@ void LiveTransferFunction::buildFullSplats(LodRenderer& lod, const Classificatio
 bool LiveTransferFunction::takeBuilt(LodRenderer& lod, std::string* error) {
   try {
     std::optional<BuiltSplats> built = builder_.poll();
-    if (!built) return false;
-    lod.setFullSplats(std::move(built->splats), built->classification);
+    if (built) {
+      uploading_ = !lod.beginFullSplats(std::move(built->splats), built->classification);
+      return !uploading_;
+    }
+    if (!uploading_) return false;
+    if (lod.takeUploadedFullSplats()) {
+      uploading_ = false;
+      return true;
+    }
+    uploading_ = lod.uploadingFullSplats();  // else dropped: another volume or function
+    return false;
   } catch (const std::exception& e) {  // too many visible voxels: the old set stays
+    uploading_ = false;
     *error = e.what();
   }
   return true;
 }
 
 void LiveTransferFunction::dropBuild() {
+  uploading_ = false;
   try {
     builder_.finish();
   } catch (const std::exception&) {

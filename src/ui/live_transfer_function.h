@@ -30,12 +30,14 @@ class LiveTransferFunction {
   // The full splat level's set for another classification (gradients, surface splats), built
   // on the worker; the levels keep their functions.
   void buildFullSplats(LodRenderer& lod, const Classification& classification);
-  // Hands a finished set to the full level. Returns true when one arrived (it may also have
-  // failed: then `*error` says why and the old set stays).
+  // Hands a finished set to the full level, which may upload a big one on a worker
+  // (LodRenderer::beginFullSplats) and take it in a later call. Returns true when one arrived
+  // (it may also have failed: then `*error` says why and the old set stays).
   bool takeBuilt(LodRenderer& lod, std::string* error);
   // Waits for a running build and throws its result away (the renderers are replaced).
   void dropBuild();
-  bool building() const { return builder_.busy(); }
+  // A set is being built, or copied to the GPU: takeBuilt() will hand it over.
+  bool building() const { return builder_.busy() || uploading_; }
   // Undo (step < 0) or redo (step > 0) an edit of the function in the next drawAndApply.
   void stepHistory(int step) {
     if (editor_) editor_->requestHistoryStep(step);
@@ -56,6 +58,7 @@ class LiveTransferFunction {
   std::unique_ptr<TfEditor> editor_;
   AsyncSplatBuilder builder_;  // last: destroyed first, joining its worker
   uint64_t revision_ = 0;
+  bool uploading_ = false;  // the full level uploads the last set built
 };
 
 }  // namespace ewa

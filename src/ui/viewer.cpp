@@ -54,7 +54,9 @@ ViewerWindow::ViewerWindow(platform::GlfwWindowContext& window, LoadedVolume ini
       config_(config),
       saved_(config.saved),
       shaders_(config.shaderDir),
-      lod_([this] { return createRenderer(settings_.renderer, shaders_, &splatPrograms_); }),
+      uploadContext_(window.createUploadContext()),
+      lod_([this] { return createRenderer(settings_.renderer, shaders_, &splatPrograms_); },
+           uploadContext_.get()),
       refinement_(refineBudgetMs(), kRefineFrameTargetMs),
       controller_(config.camera),
       settings_(config.settings),
@@ -372,8 +374,8 @@ bool ViewerWindow::drawFrame(bool activity) {
     lastChange_ = Clock::now();
     rendered = true;
   } else if (splatsUploaded_) {
-    // This frame uploaded a new splat set (bonsai's 1.4 M: 90 ms on llvmpipe): the refinement
-    // starts or restarts in the next one, so that no frame holds both.
+    // This frame put a new splat set in place (copied to the GPU by a worker when it is big):
+    // the refinement starts or restarts in the next one.
   } else if (refinement_.active() || refineDue() || fullSplatsArrived_) {
     rendered = refine(fb, activity);
   } else if (warmUpDue()) {

@@ -216,7 +216,7 @@ LodRenderer::Factory ViewerWindow::rendererFactory() {
 void ViewerWindow::switchRendererIfAsked() {
   if (settings_.renderer == rendererKind_) return;
   liveTf_.dropBuild();
-  lod_ = LodRenderer(rendererFactory());
+  lod_ = LodRenderer(rendererFactory(), uploadContext_.get());
   lod_.setVolume(*current_.volume, current_.coarse);
   lod_.setTransferFunction(current_.tf);
   policy_.resetMeasurements();

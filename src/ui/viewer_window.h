@@ -188,6 +188,9 @@ class ViewerWindow {
   // The level-of-detail renderers' programs, one set for all (a level compiles nothing twice).
   std::shared_ptr<SplatProgramSet> splatPrograms_;
   LoadedVolume current_;
+  // Big splat sets are uploaded on a worker bound to it (null: on this thread); before lod_,
+  // whose uploads end before it goes.
+  std::unique_ptr<platform::UploadContext> uploadContext_;
   LodRenderer lod_;
   RendererKind rendererKind_ = RendererKind::Splat;
   std::string renderError_;  // the last render failure, until a render succeeds
@@ -240,7 +243,7 @@ class ViewerWindow {
   double levelRenderMs_ = -1.0;  // this frame's renderLevel time for the log; -1: none
   bool fullSplatsArrived_ = false;
   bool fullLevelAsked_ = false;  // the full level's build was asked for before the first picture
-  bool splatsUploaded_ = false;  // this frame took a worker's splat set (uploading it)
+  bool splatsUploaded_ = false;  // this frame put a worker's splat set in place
   bool calibrate_ = false;       // the next full frame picks the first moving level
   bool refineFailed_ = false;    // retried after the next change, not every frame
   std::optional<Classification> fullBuildFor_;  // the last full splat set asked of the worker

@@ -107,9 +107,15 @@ RenderSettings paperSettings() {
   return s;
 }
 
-LodScene::LodScene(const std::string& name)
+LodScene::LodScene(const std::string& name, platform::UploadContext* uploads)
     : synthetic(makeSyntheticVolume(name)),
-      lod([this] { return std::make_unique<SplatRenderer>(shaders); }) {
+      lod(
+          [this, uploads] {
+            auto renderer = std::make_unique<SplatRenderer>(shaders);
+            if (uploads) renderer->setWorkerUploadBytes(0);
+            return renderer;
+          },
+          uploads) {
   lod.setVolume(synthetic.volume, buildLodVolumes(synthetic.volume));
   lod.setTransferFunction(*synthetic.transferFunction);
   camera.frame(synthetic.volume.boundsMin(), synthetic.volume.boundsMax(), {0.3, 0.4, 1.0},

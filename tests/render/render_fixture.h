@@ -66,7 +66,8 @@ void expectSameInterval(const glm::vec2& got, const RayInterval& want, const std
 // A LodRenderer of splat renderers on a synthetic volume (its coarse volumes and transfer
 // function set) and a camera framing it, for the level-of-detail and refinement tests.
 struct LodScene {
-  explicit LodScene(const std::string& synthetic);
+  // With `uploads`, every splat set of the levels' renderers is uploaded on a worker bound to it.
+  explicit LodScene(const std::string& synthetic, platform::UploadContext* uploads = nullptr);
   SyntheticVolume synthetic;
   gl::ShaderLibrary shaders;
   LodRenderer lod;

@@ -1,0 +1,155 @@
+// Splat sets uploaded on a worker through a context of the renderer's share group: the picture
+// of an upload on the drawing thread, put in place by a later call or by the next frame, dropped
+// by a newer change; the coarse levels' warm-up the same way.
+#include <chrono>
+#include <thread>
+
+#include "core/async_splat_builder.h"
+#include "image_compare.h"
+#include "render_fixture.h"
+
+namespace ewa::test {
+namespace {
+
+class SplatUploadTest : public RenderFixture {
+ protected:
+  void SetUp() override {
+    RenderFixture::SetUp();
+    if (IsSkipped()) return;
+    uploads_ = context()->createUploadContext();
+    if (!uploads_) GTEST_SKIP() << context()->backendName() << " makes no upload context";
+    renderer()->setPartition(PartitionMode::Cpu);  // pictures compared to the bit
+    renderer()->setWorkerUploadBytes(0);           // every set on the worker
+    volume_ = makeVolume(14, 14, 14, glm::dvec3(1.0), [](int i, int j, int k) {
+      return (i - 7) * (i - 7) + (j - 6) * (j - 6) + (k - 7) * (k - 7) < 30;
+    });
+    camera_.frame(volume_.boundsMin(), volume_.boundsMax(), {0.3, 0.4, 1.0}, {0, 1, 0}, 1.0);
+  }
+  void TearDown() override {
+    if (!uploads_) return;
+    // Nothing of this test left uploading through its context.
+    renderer()->setVolume(volume_);
+    EXPECT_FALSE(renderer()->uploadingSplats());
+    renderer()->setWorkerUploadBytes(SplatRenderer::kWorkerUploadBytes);
+  }
+
+  // The picture with the set classified and uploaded on this thread.
+  Image8 direct(const TransferFunction& tf) {
+    renderer()->setVolume(volume_);
+    renderer()->setTransferFunction(tf);
+    renderer()->render(camera_, settings_, kSize, kSize);
+    return renderer()->readImage();
+  }
+  BuiltSplats built(const TransferFunction& tf) {
+    AsyncSplatBuilder builder;
+    builder.request(volume_, tf, splatClassification(settings_), renderer()->maxSplats());
+    std::optional<BuiltSplats> set = builder.finish();
+    EXPECT_TRUE(set.has_value());
+    return std::move(*set);
+  }
+  // Polls takeUploadedSplats() as the window's frames do; false after a minute (a hang).
+  static bool takeWhenUploaded() {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+    while (!renderer()->takeUploadedSplats()) {
+      if (std::chrono::steady_clock::now() > deadline) return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    return true;
+  }
+
+  static constexpr int kSize = 48;
+  std::unique_ptr<platform::UploadContext> uploads_;
+  Volume volume_;
+  Camera camera_;
+  // Pre-classified: no pair table, so a frame's classifyMs is 0 unless it classifies.
+  RenderSettings settings_ = paperSettings();
+};
+
+TEST_F(SplatUploadTest, AWorkerUploadDrawsThePictureOfAnUploadHere) {
+  const TransferFunction tf = whiteTf(0.4, 1.0);
+  const Image8 want = direct(tf);
+  // A transparent function first: an empty set on screen while the worker uploads.
+  renderer()->setTransferFunction(whiteTf(0.0, 1.0));
+  renderer()->render(camera_, settings_, kSize, kSize);
+  ASSERT_EQ(renderer()->splats().size(), 0u);
+  renderer()->updateTransferTexture(tf);
+  BuiltSplats set = built(tf);
+  const size_t count = set.splats.splats.size();
+  ASSERT_GT(count, 0u);
+  EXPECT_FALSE(renderer()->beginSplats(std::move(set.splats), set.classification, uploads_.get()));
+  EXPECT_TRUE(renderer()->uploadingSplats());
+  EXPECT_FALSE(renderer()->needsSplats(set.classification));  // the upload brings it
+  EXPECT_EQ(renderer()->splats().size(), 0u);                 // the set before, meanwhile
+  ASSERT_TRUE(takeWhenUploaded());
+  EXPECT_FALSE(renderer()->uploadingSplats());
+  EXPECT_EQ(renderer()->splats().size(), count);
+  renderer()->render(camera_, settings_, kSize, kSize);
+  EXPECT_EQ(renderer()->stats().classifyMs, 0.0);
+  EXPECT_EQ(renderer()->readImage().pixels, want.pixels);
+}
+
+TEST_F(SplatUploadTest, TheNextFrameTakesAnUploadUnderWay) {
+  const TransferFunction tf = whiteTf(0.4, 1.0);
+  const Image8 want = direct(tf);
+  BuiltSplats set = built(tf);
+  renderer()->setTransferFunction(whiteTf(0.2, 1.0));  // the set on screen goes stale
+  renderer()->updateTransferTexture(tf);
+  EXPECT_FALSE(renderer()->beginSplats(std::move(set.splats), set.classification, uploads_.get()));
+  // No take: the frame waits for the upload instead of classifying the volume itself.
+  renderer()->render(camera_, settings_, kSize, kSize);
+  EXPECT_FALSE(renderer()->uploadingSplats());
+  EXPECT_EQ(renderer()->stats().classifyMs, 0.0);
+  EXPECT_EQ(renderer()->readImage().pixels, want.pixels);
+}
+
+TEST_F(SplatUploadTest, ANewFunctionOrSetDropsTheUpload) {
+  const TransferFunction tf = whiteTf(0.4, 1.0);
+  const TransferFunction other = whiteTf(0.1, 1.0);
+  const Image8 wantOther = direct(other);
+  BuiltSplats set = built(tf);
+  EXPECT_FALSE(renderer()->beginSplats(std::move(set.splats), set.classification, uploads_.get()));
+  renderer()->setTransferFunction(other);  // the upload's set is of the function before
+  EXPECT_FALSE(renderer()->uploadingSplats());
+  EXPECT_FALSE(renderer()->takeUploadedSplats());
+  EXPECT_TRUE(renderer()->needsSplats(set.classification));
+  renderer()->render(camera_, settings_, kSize, kSize);
+  EXPECT_EQ(renderer()->readImage().pixels, wantOther.pixels);
+
+  // A set given at once replaces one still uploading; a set under the threshold is set at once.
+  BuiltSplats first = built(tf);
+  BuiltSplats second = built(other);
+  EXPECT_FALSE(
+      renderer()->beginSplats(std::move(first.splats), first.classification, uploads_.get()));
+  renderer()->setWorkerUploadBytes(SplatRenderer::kWorkerUploadBytes);
+  EXPECT_TRUE(
+      renderer()->beginSplats(std::move(second.splats), second.classification, uploads_.get()));
+  EXPECT_FALSE(renderer()->uploadingSplats());
+  renderer()->render(camera_, settings_, kSize, kSize);
+  EXPECT_EQ(renderer()->readImage().pixels, wantOther.pixels);
+}
+
+TEST_F(SplatUploadTest, CoarseLevelsWarmUpThroughWorkerUploads) {
+  LodScene s("marschner-lobb:32", uploads_.get());
+  const RenderSettings settings = paperSettings();
+  s.lod.render(LodPolicy::kLevelCount - 1, s.camera, settings, 64, 64);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  while (s.lod.warmUpNext(s.camera, settings)) {
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline);
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  EXPECT_FALSE(s.lod.warmUpPending());
+  // Every coarse level's set arrived through the worker: drawing it classifies nothing, and
+  // draws what a cold renderer's own classification and upload draw.
+  LodScene cold("marschner-lobb:32");
+  for (int level = 1; level < LodPolicy::kLevelCount; ++level) {
+    s.lod.render(level, s.camera, settings, 64, 64);
+    EXPECT_EQ(s.lod.last().stats().classifyMs, 0.0) << level;
+    cold.lod.render(level, cold.camera, settings, 64, 64);
+    EXPECT_LE(maxDifference(s.lod.last().readImage(), cold.lod.last().readImage()),
+              kGpuPartitionLevels)
+        << level;  // the GPU partition orders entries differently each frame
+  }
+}
+
+}  // namespace
+}  // namespace ewa::test
