@@ -185,12 +185,12 @@ class EglUploadContext final : public UploadContext {
  public:
   EglUploadContext(EGLDisplay display, EGLContext context) : display_(display), context_(context) {}
   ~EglUploadContext() override { eglDestroyContext(display_, context_); }
-  void bind() override {
+  void bindNative() override {
     if (!eglBindAPI(EGL_OPENGL_API) ||
         !eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
       throw ContextError("EGL: cannot bind the upload context (" + failed("eglMakeCurrent") + ")");
   }
-  void release() override {
+  void releaseNative() override {
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   }
 

@@ -23,12 +23,12 @@ class GlfwUploadContext final : public UploadContext {
  public:
   explicit GlfwUploadContext(GLFWwindow* window) : window_(window) {}
   ~GlfwUploadContext() override { glfwDestroyWindow(window_); }
-  void bind() override {
+  void bindNative() override {
     glfwMakeContextCurrent(window_);
     if (glfwGetCurrentContext() != window_)
       throw ContextError(std::string("GLFW: cannot bind the upload context: ") + glfwLastError());
   }
-  void release() override { glfwMakeContextCurrent(nullptr); }
+  void releaseNative() override { glfwMakeContextCurrent(nullptr); }
 
  private:
   GLFWwindow* window_;

@@ -50,11 +50,11 @@ class OsMesaUploadContext final : public UploadContext {
  public:
   explicit OsMesaUploadContext(OSMesaContext context) : context_(context), pixels_(4 * 4 * 4) {}
   ~OsMesaUploadContext() override { OSMesaDestroyContext(context_); }
-  void bind() override {
+  void bindNative() override {
     if (!OSMesaMakeCurrent(context_, pixels_.data(), GL_UNSIGNED_BYTE, 4, 4))
       throw ContextError("OSMesa: cannot bind the upload context");
   }
-  void release() override { OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0); }
+  void releaseNative() override { OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0); }
 
  private:
   OSMesaContext context_;

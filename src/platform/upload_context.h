@@ -2,6 +2,8 @@
 // to fill buffers while the main context draws.
 #pragma once
 
+#include <mutex>
+
 namespace ewa::platform {
 
 class UploadContext {
@@ -11,12 +13,28 @@ class UploadContext {
   UploadContext(const UploadContext&) = delete;
   UploadContext& operator=(const UploadContext&) = delete;
 
-  // Binds the context to the calling thread. GL calls there go through the function pointers
-  // loaded for the context it shares with (one library: the same entry points). Throws
-  // ContextError when it cannot be bound.
-  virtual void bind() = 0;
-  // Unbinds it from the calling thread: before another thread binds it, and before it goes.
-  virtual void release() = 0;
+  // Binds the context to the calling thread, first waiting while another thread has it bound
+  // (two uploads at once: the full level's set and a coarse level's). GL calls there go through
+  // the function pointers loaded for the context it shares with (one library: the same entry
+  // points). Throws ContextError when it cannot be bound.
+  void bind() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    bindNative();
+    lock.release();  // held until release()
+  }
+  // Unbinds it from the calling thread, which bound it: before another thread binds it, and
+  // before it goes.
+  void release() {
+    releaseNative();
+    mutex_.unlock();
+  }
+
+ protected:
+  virtual void bindNative() = 0;
+  virtual void releaseNative() = 0;
+
+ private:
+  std::mutex mutex_;
 };
 
 }  // namespace ewa::platform

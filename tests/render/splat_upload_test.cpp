@@ -128,6 +128,38 @@ TEST_F(SplatUploadTest, ANewFunctionOrSetDropsTheUpload) {
   EXPECT_EQ(renderer()->readImage().pixels, wantOther.pixels);
 }
 
+TEST_F(SplatUploadTest, TwoUploadsAtOnceTakeTurnsOnTheContext) {
+  // The full level's set and a coarse level's may be uploaded at the same time: their workers
+  // bind the one context in turn.
+  const TransferFunction tf = whiteTf(0.4, 1.0);
+  const Image8 want = direct(tf);
+  SplatRenderer second{gl::ShaderLibrary()};
+  second.setPartition(PartitionMode::Cpu);
+  second.setWorkerUploadBytes(0);
+  second.setVolume(volume_);
+  second.setTransferFunction(tf);
+  second.render(camera_, settings_, kSize, kSize);
+  const Image8 wantSecond = second.readImage();  // its own limits: not the fixture's
+  BuiltSplats a = built(tf), b = built(tf);
+  for (SplatRenderer* r : {renderer().get(), &second}) {
+    r->setTransferFunction(whiteTf(0.2, 1.0));
+    r->updateTransferTexture(tf);
+  }
+  EXPECT_FALSE(renderer()->beginSplats(std::move(a.splats), a.classification, uploads_.get()));
+  EXPECT_FALSE(second.beginSplats(std::move(b.splats), b.classification, uploads_.get()));
+  ASSERT_TRUE(takeWhenUploaded());
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  while (!second.takeUploadedSplats()) {
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  renderer()->render(camera_, settings_, kSize, kSize);
+  second.render(camera_, settings_, kSize, kSize);
+  EXPECT_EQ(second.stats().classifyMs, 0.0);
+  EXPECT_EQ(renderer()->readImage().pixels, want.pixels);
+  EXPECT_EQ(second.readImage().pixels, wantSecond.pixels);
+}
+
 TEST_F(SplatUploadTest, CoarseLevelsWarmUpThroughWorkerUploads) {
   LodScene s("marschner-lobb:32", uploads_.get());
   const RenderSettings settings = paperSettings();
