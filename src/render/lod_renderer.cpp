@@ -86,7 +86,7 @@ SplatRenderer* LodRenderer::existingFullSplatRenderer() const {
 
 bool LodRenderer::beginFullSplats(ClassifiedSplats splats, const Classification& classification) {
   SplatRenderer* splat = existingFullSplatRenderer();
-  return !splat || splat->beginSplats(std::move(splats), classification, uploads_);
+  return !splat || splat->beginSplats(std::move(splats), classification);
 }
 
 bool LodRenderer::takeUploadedFullSplats() {
@@ -110,6 +110,7 @@ Renderer& LodRenderer::rendererFor(int factor) {
   auto it = renderers_.find(factor);
   if (it != renderers_.end()) return *it->second;
   std::unique_ptr<Renderer> r = factory_();
+  if (auto* splat = dynamic_cast<SplatRenderer*>(r.get())) splat->setUploadContext(uploads_);
   const Volume* v = volume_;
   for (const auto& [f, vol] : coarse_.levels)
     if (f == factor) v = vol.get();
@@ -202,8 +203,7 @@ bool LodRenderer::warmUpNext(const Camera& camera, const RenderSettings& setting
     // more for bonsai's half-size volume).
     splat.updateTransferTexture(tf_);
     try {
-      warming_->uploading =
-          !splat.beginSplats(std::move(built->splats), built->classification, uploads_);
+      warming_->uploading = !splat.beginSplats(std::move(built->splats), built->classification);
     } catch (const std::exception&) {
       // Too many splats for the order entries: the level's first draw says so.
       warming_.reset();

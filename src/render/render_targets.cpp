@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/stopwatch.h"
@@ -67,11 +69,13 @@ void RenderTargets::resize(int w, int h, bool paired, bool quarter, bool normals
           std::numeric_limits<double>::infinity());
 }
 
-bool RenderTargets::prepare(const TargetLayout& want, double budgetMs) {
+bool RenderTargets::prepare(const TargetLayout& want, double budgetMs,
+                            platform::UploadContext* uploads) {
   const auto start = std::chrono::steady_clock::now();
   imagesMade_ = 0;
   if (ready(want)) return true;
   const TargetLayout l = normalized(want);
+  if (imageJob_ && !(imageJob_->layout == l)) imageJob_.reset();  // made for another layout
   if (!(l.width == width && l.height == height && l.halfSlabs == halfSlabs_)) {
     checkImageLimits(l.width, l.height);
     // The last finished picture stays shown until a frame finishes in the new images.
@@ -101,16 +105,33 @@ bool RenderTargets::prepare(const TargetLayout& want, double budgetMs) {
   }
   if (!l.coarseSlabs) coarseMarks = gl::Texture();
 
-  struct Image {
-    gl::Texture* texture;
-    GLenum format;
-    GLenum filter;  // coarser slab images (and their marks) are read bilinearly
-  };
+  const std::vector<MissingImage> missing = missingImages(l);
+  if (uploads && std::isfinite(budgetMs) && !missing.empty()) {
+    if (!makeOnWorker(l, missing, *uploads, budgetMs - millisecondsSince(start))) return false;
+  }
+  for (const MissingImage& image : missingImages(l)) {
+    const double bytes = double(width) * double(height) * double(bytesPerPixel(image.format));
+    // Twice the slowest pace seen: fresh memory's price varies (llvmpipe, 2400x1350: 10-110
+    // ms for the same 26-52 MB images, freed memory reused or not).
+    if (imagesMade_ > 0 && millisecondsSince(start) + 2.0 * msPerByte_ * bytes > budgetMs)
+      return false;
+    const auto made = std::chrono::steady_clock::now();
+    *image.slot = makeImage(image.format, image.filter, width, height);
+    gl::checkGlError("render targets");  // GL_OUT_OF_MEMORY for images too large to allocate
+    msPerByte_ = std::max(msPerByte_, millisecondsSince(made) / bytes);
+    ++imagesMade_;
+  }
+  makeFramebuffers();
+  layout_ = l;
+  return true;
+}
+
+std::vector<RenderTargets::MissingImage> RenderTargets::missingImages(const TargetLayout& l) {
   const GLenum slabFormat = l.halfSlabs ? GL_RGBA16F : GL_RGBA32F;
-  std::vector<Image> images = {{&slab, slabFormat, GL_LINEAR},
-                               {&accum, GL_RGBA32F, GL_NEAREST},
-                               {&output, GL_RGBA8, GL_NEAREST},
-                               {&stencil, GL_DEPTH24_STENCIL8, GL_LINEAR}};
+  std::vector<MissingImage> images = {{&slab, slabFormat, GL_LINEAR},
+                                      {&accum, GL_RGBA32F, GL_NEAREST},
+                                      {&output, GL_RGBA8, GL_NEAREST},
+                                      {&stencil, GL_DEPTH24_STENCIL8, GL_LINEAR}};
   if (l.normalSums) images.push_back({&slabNormal, GL_RGBA16F, GL_LINEAR});
   if (l.pairedSlabs) images.push_back({&slabOther, slabFormat, GL_LINEAR});
   if (l.quarters) {
@@ -118,21 +139,48 @@ bool RenderTargets::prepare(const TargetLayout& want, double budgetMs) {
     images.push_back({&slabOtherBack, slabFormat, GL_LINEAR});
   }
   if (l.coarseSlabs) images.push_back({&coarseMarks, GL_DEPTH24_STENCIL8, GL_LINEAR});
-  for (const Image& image : images) {
-    if (*image.texture) continue;
-    const double bytes = double(width) * double(height) * double(bytesPerPixel(image.format));
-    // Twice the slowest pace seen: fresh memory's price varies (llvmpipe, 2400x1350: 10-110
-    // ms for the same 26-52 MB images, freed memory reused or not).
-    if (imagesMade_ > 0 && millisecondsSince(start) + 2.0 * msPerByte_ * bytes > budgetMs)
-      return false;
-    const auto made = std::chrono::steady_clock::now();
-    *image.texture = makeImage(image.format, image.filter, width, height);
-    gl::checkGlError("render targets");  // GL_OUT_OF_MEMORY for images too large to allocate
-    msPerByte_ = std::max(msPerByte_, millisecondsSince(made) / bytes);
-    ++imagesMade_;
+  std::vector<MissingImage> missing;
+  for (const MissingImage& image : images)
+    if (!*image.slot) missing.push_back(image);
+  return missing;
+}
+
+bool RenderTargets::makeOnWorker(const TargetLayout& l, const std::vector<MissingImage>& missing,
+                                 platform::UploadContext& uploads, double waitMs) {
+  if (!imageJob_) {
+    imageJob_ = std::make_unique<ImageJob>();
+    imageJob_->layout = l;
+    std::vector<std::pair<GLenum, GLenum>> kinds;
+    for (const MissingImage& image : missing) {
+      imageJob_->slots.push_back(image.slot);
+      kinds.emplace_back(image.format, image.filter);
+    }
+    imageJob_->images = std::async(std::launch::async, [&uploads, kinds, w = width, h = height] {
+      uploads.bind();
+      std::vector<gl::Texture> made;
+      try {
+        for (const auto& [format, filter] : kinds) {
+          made.push_back(makeImage(format, filter, w, h));
+          gl::checkGlError("render targets");  // GL_OUT_OF_MEMORY for images too large
+        }
+        glFinish();  // all there before the drawing context uses them
+      } catch (...) {
+        made.clear();  // deleted while the context is bound
+        uploads.release();
+        throw;
+      }
+      uploads.release();
+      return made;
+    });
   }
-  makeFramebuffers();
-  layout_ = l;
+  // Waits at most what the step has left (a step that returned at once would have the window
+  // spin through empty UI frames meanwhile).
+  const auto wait = std::chrono::duration<double, std::milli>(std::max(0.0, waitMs));
+  if (imageJob_->images.wait_for(wait) != std::future_status::ready) return false;
+  const std::unique_ptr<ImageJob> job = std::move(imageJob_);
+  std::vector<gl::Texture> made = job->images.get();  // rethrows the worker's GlError
+  for (size_t i = 0; i < made.size(); ++i) *job->slots[i] = std::move(made[i]);
+  imagesMade_ = int(made.size());
   return true;
 }
 

@@ -2,9 +2,13 @@
 #pragma once
 
 #include <cstddef>
+#include <future>
+#include <memory>
+#include <vector>
 
 #include "gl/framebuffer.h"
 #include "gl/texture.h"
+#include "platform/upload_context.h"
 
 namespace ewa {
 
@@ -66,9 +70,13 @@ struct RenderTargets {
   // The same, an image at a time within `budgetMs` (at least one a call, the next only where
   // its bytes at twice the slowest pace seen still fit): a much larger image's first frame on a
   // software GL spends 10-110 ms on each 26-52 MB image (fresh memory cleared page by page),
-  // hundreds of ms in all, more than a window's UI frame may. True once every image and
-  // framebuffer is there.
-  bool prepare(const TargetLayout& layout, double budgetMs);
+  // hundreds of ms in all, more than a window's UI frame may. With `uploads` (a context of
+  // this one's share group) and a finite budget the missing images are made at once on a
+  // worker bound to it instead, where their fresh memory is touched, and the calls wait for it
+  // at most the budget and return false until it is done (the framebuffers are then made here).
+  // True once every image and framebuffer is there.
+  bool prepare(const TargetLayout& layout, double budgetMs,
+               platform::UploadContext* uploads = nullptr);
   // Whether the images of `layout` are all there (prepare would do nothing).
   bool ready(const TargetLayout& layout) const;
   bool halfSlabs() const { return halfSlabs_; }
@@ -116,6 +124,17 @@ struct RenderTargets {
                                   const gl::Texture& depth);
   void makeOutputFramebuffer();
   void makeFramebuffers();
+  // The missing images of `layout` in the order prepare makes them.
+  struct MissingImage {
+    gl::Texture* slot;
+    GLenum format;
+    GLenum filter;  // coarser slab images (and their marks) are read bilinearly
+  };
+  std::vector<MissingImage> missingImages(const TargetLayout& layout);
+  // Makes `missing` on a worker bound to `uploads`, waiting for it at most `waitMs`; true once
+  // they are in their slots.
+  bool makeOnWorker(const TargetLayout& layout, const std::vector<MissingImage>& missing,
+                    platform::UploadContext& uploads, double waitMs);
 
   bool halfSlabs_ = false;
   TargetLayout layout_;  // what the framebuffers were made for; width 0: none yet
@@ -126,6 +145,13 @@ struct RenderTargets {
   int previousWidth_ = 0, previousHeight_ = 0;
   gl::Texture spareOutput_;     // an RGBA8 image of this size for beginOutput
   bool outputSwapped_ = false;  // previousOutput_ is the one beginOutput swapped out
+  // Images being made on a worker for `layout`, to go into `slots` in order.
+  struct ImageJob {
+    TargetLayout layout;
+    std::vector<gl::Texture*> slots;
+    std::future<std::vector<gl::Texture>> images;
+  };
+  std::unique_ptr<ImageJob> imageJob_;  // waits for the worker when it goes
 };
 
 }  // namespace ewa

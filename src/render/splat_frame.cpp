@@ -148,7 +148,7 @@ void SplatRenderer::clearTargets() {
 
 bool SplatRenderer::prepareTargets(double budgetMs) {
   if (!frame_.targetsPending) return true;
-  if (!targets_.prepare(frame_.targetLayout, budgetMs)) return false;
+  if (!targets_.prepare(frame_.targetLayout, budgetMs, uploads_)) return false;
   clearTargets();
   frame_.targetsPending = false;
   return true;

@@ -162,15 +162,14 @@ void SplatRenderer::setSplats(ClassifiedSplats splats, const Classification& cla
   uploadSplats();
 }
 
-bool SplatRenderer::beginSplats(ClassifiedSplats splats, const Classification& classification,
-                                platform::UploadContext* context) {
-  if (!context || splats.splats.size() * sizeof(PackedSplat) < workerUploadBytes_) {
+bool SplatRenderer::beginSplats(ClassifiedSplats splats, const Classification& classification) {
+  if (!uploads_ || splats.splats.size() * sizeof(PackedSplat) < workerUploadBytes_) {
     setSplats(std::move(splats), classification);
     return true;
   }
   checkSplatCount(splats.splats.size());
   upload_.reset();  // waits for an upload under way
-  upload_ = std::make_unique<SplatUpload>(std::move(splats), classification, *context);
+  upload_ = std::make_unique<SplatUpload>(std::move(splats), classification, *uploads_);
   return false;
 }
 

@@ -85,14 +85,17 @@ class SplatRenderer : public Renderer {
   // current volume under `classification` and uploads it; the next render draws it (and does
   // not classify again unless the settings ask for another classification).
   void setSplats(ClassifiedSplats splats, const Classification& classification);
-  // setSplats without holding this thread for a big set: with a `context` of this renderer's
-  // share group, a set of kWorkerUploadBytes or more (setWorkerUploadBytes) is uploaded into a new
-  // buffer by a worker bound to it (SplatUpload) while frames draw the set before, and is put in
-  // place by a later takeUploadedSplats(), or by the next beginFrame() under its classification
-  // (which waits for it). Else the set is set at once. True when the set is in place now. Another
-  // set, volume, function or classification drops the one being uploaded.
-  bool beginSplats(ClassifiedSplats splats, const Classification& classification,
-                   platform::UploadContext* context);
+  // A context of this renderer's share group (outliving it, or null): big splat sets
+  // (beginSplats) and a stepped frame's images of a new size (RenderTargets::prepare) are then
+  // made on a worker bound to it.
+  void setUploadContext(platform::UploadContext* uploads) { uploads_ = uploads; }
+  // setSplats without holding this thread for a big set: with an upload context, a set of
+  // kWorkerUploadBytes or more (setWorkerUploadBytes) is uploaded into a new buffer by a worker
+  // (SplatUpload) while frames draw the set before, and is put in place by a later
+  // takeUploadedSplats(), or by the next beginFrame() under its classification (which waits for
+  // it). Else the set is set at once. True when the set is in place now. Another set, volume,
+  // function or classification drops the one being uploaded.
+  bool beginSplats(ClassifiedSplats splats, const Classification& classification);
   // Puts the set beginSplats() is uploading in place once the upload is done; true when it did.
   // Throws what the upload threw (the set before stays).
   bool takeUploadedSplats();
@@ -424,7 +427,8 @@ class SplatRenderer : public Renderer {
   static constexpr unsigned kGradientUnit = 12;
   gl::VertexArray emptyVao_;
   gl::Buffer splatBuffer_;
-  std::unique_ptr<SplatUpload> upload_;  // a set beginSplats() is uploading, or null
+  platform::UploadContext* uploads_ = nullptr;  // setUploadContext
+  std::unique_ptr<SplatUpload> upload_;         // a set beginSplats() is uploading, or null
   size_t workerUploadBytes_ = kWorkerUploadBytes;
   OrderPages orderPages_;  // the CPU partition's order list (the GPU's keeps its own)
   gl::Buffer attributeBuffer_;

@@ -1,6 +1,7 @@
 // Splat sets uploaded on a worker through a context of the renderer's share group: the picture
 // of an upload on the drawing thread, put in place by a later call or by the next frame, dropped
-// by a newer change; the coarse levels' warm-up the same way.
+// by a newer change; the coarse levels' warm-up the same way; a stepped frame's images of a new
+// size made there too.
 #include <chrono>
 #include <thread>
 
@@ -20,6 +21,7 @@ class SplatUploadTest : public RenderFixture {
     if (!uploads_) GTEST_SKIP() << context()->backendName() << " makes no upload context";
     renderer()->setPartition(PartitionMode::Cpu);  // pictures compared to the bit
     renderer()->setWorkerUploadBytes(0);           // every set on the worker
+    renderer()->setUploadContext(uploads_.get());
     volume_ = makeVolume(14, 14, 14, glm::dvec3(1.0), [](int i, int j, int k) {
       return (i - 7) * (i - 7) + (j - 6) * (j - 6) + (k - 7) * (k - 7) < 30;
     });
@@ -31,6 +33,7 @@ class SplatUploadTest : public RenderFixture {
     renderer()->setVolume(volume_);
     EXPECT_FALSE(renderer()->uploadingSplats());
     renderer()->setWorkerUploadBytes(SplatRenderer::kWorkerUploadBytes);
+    renderer()->setUploadContext(nullptr);
   }
 
   // The picture with the set classified and uploaded on this thread.
@@ -76,7 +79,7 @@ TEST_F(SplatUploadTest, AWorkerUploadDrawsThePictureOfAnUploadHere) {
   BuiltSplats set = built(tf);
   const size_t count = set.splats.splats.size();
   ASSERT_GT(count, 0u);
-  EXPECT_FALSE(renderer()->beginSplats(std::move(set.splats), set.classification, uploads_.get()));
+  EXPECT_FALSE(renderer()->beginSplats(std::move(set.splats), set.classification));
   EXPECT_TRUE(renderer()->uploadingSplats());
   EXPECT_FALSE(renderer()->needsSplats(set.classification));  // the upload brings it
   EXPECT_EQ(renderer()->splats().size(), 0u);                 // the set before, meanwhile
@@ -94,7 +97,7 @@ TEST_F(SplatUploadTest, TheNextFrameTakesAnUploadUnderWay) {
   BuiltSplats set = built(tf);
   renderer()->setTransferFunction(whiteTf(0.2, 1.0));  // the set on screen goes stale
   renderer()->updateTransferTexture(tf);
-  EXPECT_FALSE(renderer()->beginSplats(std::move(set.splats), set.classification, uploads_.get()));
+  EXPECT_FALSE(renderer()->beginSplats(std::move(set.splats), set.classification));
   // No take: the frame waits for the upload instead of classifying the volume itself.
   renderer()->render(camera_, settings_, kSize, kSize);
   EXPECT_FALSE(renderer()->uploadingSplats());
@@ -107,7 +110,7 @@ TEST_F(SplatUploadTest, ANewFunctionOrSetDropsTheUpload) {
   const TransferFunction other = whiteTf(0.1, 1.0);
   const Image8 wantOther = direct(other);
   BuiltSplats set = built(tf);
-  EXPECT_FALSE(renderer()->beginSplats(std::move(set.splats), set.classification, uploads_.get()));
+  EXPECT_FALSE(renderer()->beginSplats(std::move(set.splats), set.classification));
   renderer()->setTransferFunction(other);  // the upload's set is of the function before
   EXPECT_FALSE(renderer()->uploadingSplats());
   EXPECT_FALSE(renderer()->takeUploadedSplats());
@@ -118,11 +121,9 @@ TEST_F(SplatUploadTest, ANewFunctionOrSetDropsTheUpload) {
   // A set given at once replaces one still uploading; a set under the threshold is set at once.
   BuiltSplats first = built(tf);
   BuiltSplats second = built(other);
-  EXPECT_FALSE(
-      renderer()->beginSplats(std::move(first.splats), first.classification, uploads_.get()));
+  EXPECT_FALSE(renderer()->beginSplats(std::move(first.splats), first.classification));
   renderer()->setWorkerUploadBytes(SplatRenderer::kWorkerUploadBytes);
-  EXPECT_TRUE(
-      renderer()->beginSplats(std::move(second.splats), second.classification, uploads_.get()));
+  EXPECT_TRUE(renderer()->beginSplats(std::move(second.splats), second.classification));
   EXPECT_FALSE(renderer()->uploadingSplats());
   renderer()->render(camera_, settings_, kSize, kSize);
   EXPECT_EQ(renderer()->readImage().pixels, wantOther.pixels);
@@ -136,6 +137,7 @@ TEST_F(SplatUploadTest, TwoUploadsAtOnceTakeTurnsOnTheContext) {
   SplatRenderer second{gl::ShaderLibrary()};
   second.setPartition(PartitionMode::Cpu);
   second.setWorkerUploadBytes(0);
+  second.setUploadContext(uploads_.get());
   second.setVolume(volume_);
   second.setTransferFunction(tf);
   second.render(camera_, settings_, kSize, kSize);
@@ -145,8 +147,8 @@ TEST_F(SplatUploadTest, TwoUploadsAtOnceTakeTurnsOnTheContext) {
     r->setTransferFunction(whiteTf(0.2, 1.0));
     r->updateTransferTexture(tf);
   }
-  EXPECT_FALSE(renderer()->beginSplats(std::move(a.splats), a.classification, uploads_.get()));
-  EXPECT_FALSE(second.beginSplats(std::move(b.splats), b.classification, uploads_.get()));
+  EXPECT_FALSE(renderer()->beginSplats(std::move(a.splats), a.classification));
+  EXPECT_FALSE(second.beginSplats(std::move(b.splats), b.classification));
   ASSERT_TRUE(takeWhenUploaded());
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
   while (!second.takeUploadedSplats()) {
@@ -181,6 +183,57 @@ TEST_F(SplatUploadTest, CoarseLevelsWarmUpThroughWorkerUploads) {
               kGpuPartitionLevels)
         << level;  // the GPU partition orders entries differently each frame
   }
+}
+
+TEST_F(SplatUploadTest, ANewSizesImagesAreMadeOnTheWorker) {
+  RenderTargets t;
+  const TargetLayout layout{40, 30, true, true, true, true, true};  // all nine images
+  // A budget no image fits: on this thread it makes one a call; the worker makes them all.
+  EXPECT_FALSE(t.prepare(layout, 1e-6, uploads_.get()));
+  EXPECT_EQ(t.imagesMade(), 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  while (!t.prepare(layout, 1e-6, uploads_.get())) {
+    EXPECT_EQ(t.imagesMade(), 0);
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  EXPECT_EQ(t.imagesMade(), 9);
+  EXPECT_TRUE(t.ready(layout));
+  EXPECT_TRUE(t.slab && t.accum && t.output && t.stencil && t.slabOther && t.slabBack &&
+              t.slabOtherBack && t.slabNormal && t.coarseMarks);
+  // Another size asked for while the worker makes one: that job is dropped, the new one made.
+  const TargetLayout other{24, 20, true, false, false, true, false};
+  const TargetLayout third{32, 16, true, false, false, true, false};
+  EXPECT_FALSE(t.prepare(other, 1e-6, uploads_.get()));
+  while (!t.prepare(third, 1e-6, uploads_.get())) {
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  EXPECT_TRUE(t.ready(third));
+  EXPECT_EQ(t.width, 32);
+  EXPECT_EQ(t.imagesMade(), 5);  // slab, accumulation, output, stencil, the second slab image
+}
+
+TEST_F(SplatUploadTest, AFrameAtANewSizeDrawsWithImagesMadeOnTheWorker) {
+  LodScene scene("marschner-lobb:32", uploads_.get());
+  LodRenderer& lod = scene.lod;
+  const RenderSettings settings = rasterSettings();
+  lod.render(0, scene.camera, settings, 96, 80);  // whole frames: images made here
+  const Image8 larger = lod.last().readImage();
+  lod.render(0, scene.camera, settings, 64, 48);
+  const unsigned shownTexture = lod.outputTexture();
+  lod.beginFull(scene.camera, settings, 96, 80);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  while (!lod.stepFull(1e-6)) {
+    // The picture of the size before stays shown while the worker makes the new images.
+    if (lod.fullProgress() == 0.0) {
+      EXPECT_EQ(lod.outputTexture(), shownTexture);
+    }
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline);
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  EXPECT_EQ(lod.imageWidth(), 96);
+  EXPECT_LE(maxDifference(lod.last().readImage(), larger), 1);
 }
 
 }  // namespace
