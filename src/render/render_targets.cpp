@@ -106,8 +106,9 @@ bool RenderTargets::prepare(const TargetLayout& want, double budgetMs,
   if (!l.coarseSlabs) coarseMarks = gl::Texture();
 
   const std::vector<MissingImage> missing = missingImages(l);
-  if (uploads && std::isfinite(budgetMs) && !missing.empty()) {
-    if (!makeOnWorker(l, missing, *uploads, budgetMs - millisecondsSince(start))) return false;
+  // A job under way is finished (a whole frame waits for it); a stepped frame starts one.
+  if (imageJob_ || (uploads && std::isfinite(budgetMs) && !missing.empty())) {
+    if (!makeOnWorker(l, missing, uploads, budgetMs - millisecondsSince(start))) return false;
   }
   for (const MissingImage& image : missingImages(l)) {
     const double bytes = double(width) * double(height) * double(bytesPerPixel(image.format));
@@ -146,7 +147,7 @@ std::vector<RenderTargets::MissingImage> RenderTargets::missingImages(const Targ
 }
 
 bool RenderTargets::makeOnWorker(const TargetLayout& l, const std::vector<MissingImage>& missing,
-                                 platform::UploadContext& uploads, double waitMs) {
+                                 platform::UploadContext* uploads, double waitMs) {
   if (!imageJob_) {
     imageJob_ = std::make_unique<ImageJob>();
     imageJob_->layout = l;
@@ -155,8 +156,8 @@ bool RenderTargets::makeOnWorker(const TargetLayout& l, const std::vector<Missin
       imageJob_->slots.push_back(image.slot);
       kinds.emplace_back(image.format, image.filter);
     }
-    imageJob_->images = std::async(std::launch::async, [&uploads, kinds, w = width, h = height] {
-      uploads.bind();
+    imageJob_->images = std::async(std::launch::async, [uploads, kinds, w = width, h = height] {
+      uploads->bind();
       std::vector<gl::Texture> made;
       try {
         for (const auto& [format, filter] : kinds) {
@@ -166,17 +167,21 @@ bool RenderTargets::makeOnWorker(const TargetLayout& l, const std::vector<Missin
         glFinish();  // all there before the drawing context uses them
       } catch (...) {
         made.clear();  // deleted while the context is bound
-        uploads.release();
+        uploads->release();
         throw;
       }
-      uploads.release();
+      uploads->release();
       return made;
     });
   }
   // Waits at most what the step has left (a step that returned at once would have the window
   // spin through empty UI frames meanwhile).
-  const auto wait = std::chrono::duration<double, std::milli>(std::max(0.0, waitMs));
-  if (imageJob_->images.wait_for(wait) != std::future_status::ready) return false;
+  if (!std::isfinite(waitMs)) {
+    imageJob_->images.wait();
+  } else {
+    const auto wait = std::chrono::duration<double, std::milli>(std::max(0.0, waitMs));
+    if (imageJob_->images.wait_for(wait) != std::future_status::ready) return false;
+  }
   const std::unique_ptr<ImageJob> job = std::move(imageJob_);
   std::vector<gl::Texture> made = job->images.get();  // rethrows the worker's GlError
   for (size_t i = 0; i < made.size(); ++i) *job->slots[i] = std::move(made[i]);

@@ -131,10 +131,10 @@ struct RenderTargets {
     GLenum filter;  // coarser slab images (and their marks) are read bilinearly
   };
   std::vector<MissingImage> missingImages(const TargetLayout& layout);
-  // Makes `missing` on a worker bound to `uploads`, waiting for it at most `waitMs`; true once
-  // they are in their slots.
+  // Makes `missing` on a worker bound to `uploads` (or finishes the job under way for
+  // `layout`), waiting for it at most `waitMs`; true once they are in their slots.
   bool makeOnWorker(const TargetLayout& layout, const std::vector<MissingImage>& missing,
-                    platform::UploadContext& uploads, double waitMs);
+                    platform::UploadContext* uploads, double waitMs);
 
   bool halfSlabs_ = false;
   TargetLayout layout_;  // what the framebuffers were made for; width 0: none yet

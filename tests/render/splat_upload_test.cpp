@@ -3,6 +3,7 @@
 // by a newer change; the coarse levels' warm-up the same way; a stepped frame's images of a new
 // size made there too.
 #include <chrono>
+#include <limits>
 #include <thread>
 
 #include "core/async_splat_builder.h"
@@ -212,6 +213,11 @@ TEST_F(SplatUploadTest, ANewSizesImagesAreMadeOnTheWorker) {
   EXPECT_TRUE(t.ready(third));
   EXPECT_EQ(t.width, 32);
   EXPECT_EQ(t.imagesMade(), 5);  // slab, accumulation, output, stencil, the second slab image
+  // A whole frame's prepare while a job is under way for its layout takes the job's images.
+  EXPECT_FALSE(t.prepare(other, 1e-6, uploads_.get()));
+  EXPECT_TRUE(t.prepare(other, std::numeric_limits<double>::infinity()));
+  EXPECT_EQ(t.imagesMade(), 5);
+  EXPECT_TRUE(t.ready(other));
 }
 
 TEST_F(SplatUploadTest, AFrameAtANewSizeDrawsWithImagesMadeOnTheWorker) {
