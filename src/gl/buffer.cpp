@@ -27,13 +27,6 @@ Buffer Buffer::create(GLsizeiptr size, const void* data, GLenum usage) {
   return buffer;
 }
 
-Buffer Buffer::adopt(GLuint id, GLsizeiptr size) {
-  Buffer buffer;
-  buffer.id_ = id;
-  buffer.size_ = size;
-  return buffer;
-}
-
 Buffer::~Buffer() {
   release();
 }

@@ -11,9 +11,6 @@ class Buffer {
   Buffer() = default;
   // Creates a buffer of `size` bytes, initialised from `data` when it is not null.
   static Buffer create(GLsizeiptr size, const void* data = nullptr, GLenum usage = GL_DYNAMIC_DRAW);
-  // Takes ownership of buffer `id` of `size` bytes made elsewhere (another context of the same
-  // share group, e.g. a worker's upload context).
-  static Buffer adopt(GLuint id, GLsizeiptr size);
 
   ~Buffer();
   Buffer(Buffer&& other) noexcept;

@@ -49,7 +49,6 @@ std::string eglErrorName(EGLint error) {
   return text;
 }
 
-// "<call>: EGL_BAD_..." from the calling thread's last EGL error.
 const EGLint kCoreContextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION,
                                          4,
                                          EGL_CONTEXT_MINOR_VERSION,
@@ -58,6 +57,7 @@ const EGLint kCoreContextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION,
                                          EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                          EGL_NONE};
 
+// "<call>: EGL_BAD_..." from the calling thread's last EGL error.
 std::string failed(const char* call) {
   return std::string(call) + ": " + eglErrorName(eglGetError());
 }

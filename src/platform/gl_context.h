@@ -46,7 +46,8 @@ class GlContext {
   virtual void* getProcAddress(const char* name) = 0;
   // A second context sharing this one's objects, for a worker thread to upload data while this
   // one draws (made on this thread, which stays bound here); nullptr where the backend makes
-  // none (EGL here) or it fails: then uploads run on this thread.
+  // none (EGL on a display without surfaceless contexts) or it fails: then uploads run on this
+  // thread.
   virtual std::unique_ptr<UploadContext> createUploadContext();
   // One line: "<backend>: OpenGL <GL_VERSION>, <GL_RENDERER>".
   virtual std::string description() const;

@@ -28,10 +28,6 @@ std::string offeredVersion() {
   return version;
 }
 
-}  // namespace
-
-namespace {
-
 const int kCoreAttributes[] = {OSMESA_FORMAT,
                                OSMESA_RGBA,
                                OSMESA_DEPTH_BITS,

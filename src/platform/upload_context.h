@@ -37,4 +37,17 @@ class UploadContext {
   std::mutex mutex_;
 };
 
+// Binds an upload context to the calling thread for this object's life (declared before the GL
+// objects a worker makes, so those it does not hand out are deleted while it is bound).
+class UploadBinding {
+ public:
+  explicit UploadBinding(UploadContext& context) : context_(context) { context_.bind(); }
+  ~UploadBinding() { context_.release(); }
+  UploadBinding(const UploadBinding&) = delete;
+  UploadBinding& operator=(const UploadBinding&) = delete;
+
+ private:
+  UploadContext& context_;
+};
+
 }  // namespace ewa::platform

@@ -109,18 +109,19 @@ bool RenderTargets::prepare(const TargetLayout& want, double budgetMs,
   // A job under way is finished (a whole frame waits for it); a stepped frame starts one.
   if (imageJob_ || (uploads && std::isfinite(budgetMs) && !missing.empty())) {
     if (!makeOnWorker(l, missing, uploads, budgetMs - millisecondsSince(start))) return false;
-  }
-  for (const MissingImage& image : missingImages(l)) {
-    const double bytes = double(width) * double(height) * double(bytesPerPixel(image.format));
-    // Twice the slowest pace seen: fresh memory's price varies (llvmpipe, 2400x1350: 10-110
-    // ms for the same 26-52 MB images, freed memory reused or not).
-    if (imagesMade_ > 0 && millisecondsSince(start) + 2.0 * msPerByte_ * bytes > budgetMs)
-      return false;
-    const auto made = std::chrono::steady_clock::now();
-    *image.slot = makeImage(image.format, image.filter, width, height);
-    gl::checkGlError("render targets");  // GL_OUT_OF_MEMORY for images too large to allocate
-    msPerByte_ = std::max(msPerByte_, millisecondsSince(made) / bytes);
-    ++imagesMade_;
+  } else {
+    for (const MissingImage& image : missing) {
+      const double bytes = double(width) * double(height) * double(bytesPerPixel(image.format));
+      // Twice the slowest pace seen: fresh memory's price varies (llvmpipe, 2400x1350: 10-110
+      // ms for the same 26-52 MB images, freed memory reused or not).
+      if (imagesMade_ > 0 && millisecondsSince(start) + 2.0 * msPerByte_ * bytes > budgetMs)
+        return false;
+      const auto made = std::chrono::steady_clock::now();
+      *image.slot = makeImage(image.format, image.filter, width, height);
+      gl::checkGlError("render targets");  // GL_OUT_OF_MEMORY for images too large to allocate
+      msPerByte_ = std::max(msPerByte_, millisecondsSince(made) / bytes);
+      ++imagesMade_;
+    }
   }
   makeFramebuffers();
   layout_ = l;
@@ -157,20 +158,13 @@ bool RenderTargets::makeOnWorker(const TargetLayout& l, const std::vector<Missin
       kinds.emplace_back(image.format, image.filter);
     }
     imageJob_->images = std::async(std::launch::async, [uploads, kinds, w = width, h = height] {
-      uploads->bind();
+      const platform::UploadBinding bound(*uploads);
       std::vector<gl::Texture> made;
-      try {
-        for (const auto& [format, filter] : kinds) {
-          made.push_back(makeImage(format, filter, w, h));
-          gl::checkGlError("render targets");  // GL_OUT_OF_MEMORY for images too large
-        }
-        glFinish();  // all there before the drawing context uses them
-      } catch (...) {
-        made.clear();  // deleted while the context is bound
-        uploads->release();
-        throw;
+      for (const auto& [format, filter] : kinds) {
+        made.push_back(makeImage(format, filter, w, h));
+        gl::checkGlError("render targets");  // GL_OUT_OF_MEMORY for images too large
       }
-      uploads->release();
+      glFinish();  // all there before the drawing context uses them
       return made;
     });
   }

@@ -13,20 +13,13 @@ namespace ewa {
 namespace {
 
 // On the worker, `context` bound: a buffer holding `data`, finished (so the drawing context
-// sees all of it once it binds the buffer), or GlError.
-GLuint uploadOnWorker(platform::UploadContext& context, GLsizeiptr bytes, const void* data) {
-  context.bind();
-  GLuint id = 0;
-  glCreateBuffers(1, &id);
-  glNamedBufferData(id, bytes, data, GL_STATIC_DRAW);
-  const GLenum error = glGetError();
-  if (error != GL_NO_ERROR) glDeleteBuffers(1, &id);
+// sees all of it once it binds the buffer), or GlError (GL_OUT_OF_MEMORY: deleted here).
+gl::Buffer uploadOnWorker(platform::UploadContext& context, GLsizeiptr bytes, const void* data) {
+  const platform::UploadBinding bound(context);
+  gl::Buffer buffer = gl::Buffer::create(bytes, data, GL_STATIC_DRAW);
+  gl::checkGlError(("splat buffer upload (" + std::to_string(bytes) + " bytes)").c_str());
   glFinish();
-  context.release();
-  if (error != GL_NO_ERROR)
-    throw gl::GlError("splat buffer upload (" + std::to_string(bytes) + " bytes): GL error " +
-                      std::to_string(error));
-  return id;
+  return buffer;
 }
 
 }  // namespace
@@ -35,18 +28,16 @@ SplatUpload::SplatUpload(ClassifiedSplats splats, const Classification& classifi
                          platform::UploadContext& context)
     : splats_(std::move(splats)), classification_(classification) {
   const auto& records = splats_.splats.splats();
-  bytes_ = GLsizeiptr(std::max<size_t>(1, records.size()) * sizeof(PackedSplat));
+  const auto bytes = GLsizeiptr(std::max<size_t>(1, records.size()) * sizeof(PackedSplat));
   const void* data = records.empty() ? nullptr : records.data();
-  upload_ = std::async(std::launch::async, [&context, bytes = bytes_, data] {
-    return uploadOnWorker(context, bytes, data);
-  });
+  upload_ = std::async(std::launch::async,
+                       [&context, bytes, data] { return uploadOnWorker(context, bytes, data); });
 }
 
 SplatUpload::~SplatUpload() {
   if (!upload_.valid()) return;
   try {
-    // Not taken: deleted through the drawing context, bound here (one share group).
-    gl::Buffer::adopt(upload_.get(), bytes_);
+    upload_.get();  // not taken: deleted through the drawing context, bound here (one share group)
   } catch (const std::exception&) {
     // Its error is about a set nobody will draw.
   }
@@ -57,8 +48,7 @@ bool SplatUpload::done() const {
 }
 
 void SplatUpload::finish(ClassifiedSplats* splats, gl::Buffer* buffer) {
-  const GLuint id = upload_.get();
-  *buffer = gl::Buffer::adopt(id, bytes_);
+  *buffer = upload_.get();
   *splats = std::move(splats_);
 }
 

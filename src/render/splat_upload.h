@@ -37,8 +37,7 @@ class SplatUpload {
  private:
   ClassifiedSplats splats_;
   Classification classification_;
-  std::future<GLuint> upload_;
-  GLsizeiptr bytes_ = 0;
+  std::future<gl::Buffer> upload_;
 };
 
 }  // namespace ewa
