@@ -2,6 +2,7 @@
 #include "core/lod_policy.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace ewa {
 
@@ -31,6 +32,26 @@ void LodPolicy::startFromFullQuality(double fullMs) {
       return;
     }
   }
+}
+
+void LodPolicy::resized(double pixelRatio) {
+  if (!(pixelRatio > 1.0) || !std::isfinite(pixelRatio)) return;
+  for (double& ms : measured_)
+    if (ms >= 0.0) ms *= pixelRatio;
+  // The moving level's expected frame: its measurement, else the nearest coarser one's times
+  // the cost ratio as reportMovingFrame guesses it, else the nearest finer one's times the cost
+  // ratio as startFromFullQuality does.
+  auto expected = [this](int level) {
+    for (int l = level; l < kLevelCount; ++l)
+      if (measured_[size_t(l)] >= 0.0)
+        return measured_[size_t(l)] * std::max(std::pow(kMinStepRatio, l - level),
+                                               expectedCostRatio(level) / expectedCostRatio(l));
+    for (int l = level - 1; l >= 0; --l)
+      if (measured_[size_t(l)] >= 0.0)
+        return measured_[size_t(l)] * expectedCostRatio(level) / expectedCostRatio(l);
+    return 0.0;  // nothing measured: no reason to move
+  };
+  while (level_ < kLevelCount - 1 && expected(level_) >= 0.8 * targetMs_) ++level_;
 }
 
 void LodPolicy::reportMovingFrame(int index, double renderMs, double overheadMs) {

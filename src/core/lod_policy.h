@@ -61,6 +61,14 @@ class LodPolicy {
   double measuredMs(int level) const { return measured_[std::size_t(level)]; }
   // Forgets the measurements (a new volume or transfer function changes the costs).
   void resetMeasurements();
+  // The window now has `pixelRatio` times the pixels the measurements were made at. Larger:
+  // each measured frame is expected to cost that many times as much (the coarse levels' large
+  // footprints are fill-bound on llvmpipe, and the present and swap grow with the window too:
+  // a level 5 frame of the default volume, 34 ms at 1024x768, took 208 ms at 2400x1350), and
+  // the moving level goes coarser until its expected frame fits under 80% of the target.
+  // Smaller: the measurements stay as upper bounds, and moving frames measured at the new size
+  // take the level finer as usual.
+  void resized(double pixelRatio);
 
   // Expected cost of `level` relative to full quality: splats scale with 1/factor^3, pixels
   // with 1/divisor^2; the slower of the two dominates, so take their mean as a rough guess.

@@ -123,8 +123,7 @@ void LodRenderer::render(int level, const Camera& camera, const RenderSettings& 
                          int height) {
   if (!volume_) throw std::logic_error("LodRenderer::render before setVolume");
   level = std::clamp(level, 0, LodPolicy::kLevelCount - 1);
-  LodLevel lod = LodPolicy::level(level);
-  if (!hasFactor(lod.volumeFactor)) lod.volumeFactor = 1;  // still being built: full volume
+  const LodLevel lod = resolved(level);
   imageWidth_ = std::max(1, width / lod.imageDivisor);
   imageHeight_ = std::max(1, height / lod.imageDivisor);
   if (lod.volumeFactor == 1) fullPending_ = false;
@@ -132,6 +131,22 @@ void LodRenderer::render(int level, const Camera& camera, const RenderSettings& 
   drawn_.insert(lod.volumeFactor);
   lastFactor_ = lod.volumeFactor;
   lastLevel_ = level;
+}
+
+LodLevel LodRenderer::resolved(int level) const {
+  LodLevel lod = LodPolicy::level(std::clamp(level, 0, LodPolicy::kLevelCount - 1));
+  if (!hasFactor(lod.volumeFactor)) lod.volumeFactor = 1;  // still being built: full volume
+  return lod;
+}
+
+bool LodRenderer::prepareImages(int level, const RenderSettings& settings, int width, int height,
+                                double budgetMs) {
+  if (!volume_) throw std::logic_error("LodRenderer::prepareImages before setVolume");
+  const LodLevel lod = resolved(level);
+  Renderer& renderer = rendererFor(lod.volumeFactor);
+  const int w = std::max(1, width / lod.imageDivisor), h = std::max(1, height / lod.imageDivisor);
+  if (lod.volumeFactor == 1) fullPending_ = false;  // as render() of the full level does
+  return renderer.prepareImages(settings, w, h, budgetMs);
 }
 
 void LodRenderer::beginFull(const Camera& camera, const RenderSettings& settings, int width,

@@ -57,6 +57,14 @@ class LodRenderer {
   // picks the renderer, its image divisor shrinks the image (at least 1x1).
   void render(int level, const Camera& camera, const RenderSettings& settings, int width,
               int height);
+  // Makes the images render() of `level` at width x height will draw into, taking about
+  // `budgetMs` at most (Renderer::prepareImages: on a worker bound to the upload context where
+  // there is one); true once they are there. A window's new size: its first moving frame would
+  // otherwise make them itself (on llvmpipe 20-25 ms at 2400x1350, in a UI frame that already
+  // pays for the new window buffers). Abandons a full frame under way at the full level, as
+  // render() does.
+  bool prepareImages(int level, const RenderSettings& settings, int width, int height,
+                     double budgetMs);
 
   // Full quality drawn over several calls (a window's refinement): beginFull starts the full
   // level's frame for a width x height window, each stepFull draws about `budgetMs` of it and
@@ -108,6 +116,9 @@ class LodRenderer {
 
  private:
   Renderer& rendererFor(int factor);
+  // `level`'s volume factor (the full volume while that coarse one is being built) and image
+  // divisor.
+  LodLevel resolved(int level) const;
   // The full level's splat renderer if it has been made, else null (makes none).
   SplatRenderer* existingFullSplatRenderer() const;
 

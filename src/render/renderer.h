@@ -238,6 +238,14 @@ class Renderer {
   // images, tables), so that their first frame, or a window's first refinement step, does not
   // stall on it. Optional.
   virtual void prepare(const RenderSettings& /*settings*/, int /*width*/, int /*height*/) {}
+  // Makes the images a frame of width x height under `settings` draws into, taking about
+  // `budgetMs` at most (where the renderer has a worker for it, the images are made there and
+  // the call waits for it that long); true once they are all there, so the frame makes none. A
+  // frame under way is abandoned where its images change. Renderers without such images: true.
+  virtual bool prepareImages(const RenderSettings& /*settings*/, int /*width*/, int /*height*/,
+                             double /*budgetMs*/) {
+    return true;
+  }
   // Renders into the renderer's own output image of width x height pixels.
   virtual void render(const Camera& camera, const RenderSettings& settings, int width,
                       int height) = 0;

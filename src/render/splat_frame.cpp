@@ -61,13 +61,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
   frame_.pairedSlabs = pairedSlabs(settings);
   frame_.quarters = quarterSlabs(settings);
   frame_.slabPasses = slabPassesFor(settings);
-  frame_.targetLayout = TargetLayout{width,
-                                     height,
-                                     frame_.pairedSlabs,
-                                     frame_.quarters,
-                                     voxelNormalSums(settings),
-                                     halfFloatSlabs(settings),
-                                     coarseMarks(settings)};
+  frame_.targetLayout = targetLayout(settings, width, height);
   stats_ = RenderStats{};
   stats_.slabPasses = frame_.quarters ? frame_.slabPasses : 0;
   // Images of a new size are made in the steps (prepareTargets), a few a step.

@@ -57,6 +57,9 @@ class SplatRenderer : public Renderer {
   // pass's where coarse slabs are on), allocates the images and builds the pre-integration
   // tables, as beginFrame would (llvmpipe, 1024x768: the images 146 ms, tables 15-160 ms).
   void prepare(const RenderSettings& settings, int width, int height) override;
+  // On a worker bound to the upload context where there is one (RenderTargets::prepare).
+  bool prepareImages(const RenderSettings& settings, int width, int height,
+                     double budgetMs) override;
   using Clock = std::chrono::steady_clock;
 
   // render() = beginFrame + stepFrame(infinity): the whole frame at once.
@@ -249,6 +252,8 @@ class SplatRenderer : public Renderer {
   static bool pairedSlabs(const RenderSettings& settings);
   // Coarser slab images may be drawn: their marks need a depth image of their own.
   static bool coarseMarks(const RenderSettings& settings);
+  // The images a frame of width x height under `settings` draws into.
+  static TargetLayout targetLayout(const RenderSettings& settings, int width, int height);
   // Paired slabs with four depth samples a slab (RenderSettings::slabSamples): a second image
   // a slab for its back half.
   static bool quarterSlabs(const RenderSettings& settings);

@@ -1,6 +1,7 @@
 // SplatRenderer's choices from the settings: which program variants, slab images and tables a
 // frame needs (post-classification, pre-integration, normals), and making them ready.
 #include <algorithm>
+#include <limits>
 
 #include "core/clip_share.h"
 #include "render/splat_renderer.h"
@@ -62,10 +63,20 @@ SlabPassVariant SplatRenderer::slabPassVariant(const RenderSettings& settings, b
   return variant;
 }
 
+TargetLayout SplatRenderer::targetLayout(const RenderSettings& settings, int width, int height) {
+  return TargetLayout{width,
+                      height,
+                      pairedSlabs(settings),
+                      quarterSlabs(settings),
+                      voxelNormalSums(settings),
+                      halfFloatSlabs(settings),
+                      coarseMarks(settings)};
+}
+
 void SplatRenderer::prepare(const RenderSettings& settings, int width, int height) {
   if (width > 0 && height > 0)
-    targets_.resize(width, height, pairedSlabs(settings), quarterSlabs(settings),
-                    voxelNormalSums(settings), halfFloatSlabs(settings), coarseMarks(settings));
+    targets_.prepare(targetLayout(settings, width, height),
+                     std::numeric_limits<double>::infinity());
   splatPrograms_.select(splatVariant(settings, false));
   programs_->user = nullptr;  // the current variant changed: a frame under way sets its own again
   if (settings.mode != RenderMode::Composite) return;
@@ -73,6 +84,17 @@ void SplatRenderer::prepare(const RenderSettings& settings, int width, int heigh
   if (settings.coarseSlabs) slabPrograms_.select(slabPassVariant(settings, true));
   if (volume_ && pairedSlabs(settings)) preparePairTable(settings);
   requestGradients(settings);  // packed on a worker from now on
+}
+
+bool SplatRenderer::prepareImages(const RenderSettings& settings, int width, int height,
+                                  double budgetMs) {
+  const TargetLayout layout = targetLayout(settings, width, height);
+  if (targets_.ready(layout)) return true;
+  if (frame_.active) {  // drawn into the images about to change
+    waitForPartition();
+    frame_.active = false;
+  }
+  return targets_.prepare(layout, budgetMs, uploads_);
 }
 
 bool SplatRenderer::coarseMarks(const RenderSettings& settings) {

@@ -33,6 +33,9 @@ constexpr double kBuildPollSeconds = 0.02;
 // 10-30 ms of it).
 constexpr double kRefineBudgetMs = 30.0;
 constexpr double kRefineFrameTargetMs = 50.0;
+// The most a UI frame waits for a new size's images made on a worker (movingImagesReady): the
+// frame still presents the stretched picture at the new size, which on llvmpipe costs 30-70 ms.
+constexpr double kImageWaitMs = 15.0;
 
 bool envFlag(const char* name) {
   const char* value = std::getenv(name);
@@ -138,7 +141,7 @@ bool ViewerWindow::busy() const {
   // A save on its worker too: the panel counts its seconds, and its end is shown when it comes
   // (an idle window would see it only at its next wake, 10 s later).
   return loadJob_.running() || saveJob_.running() || capturing() || shotWrite_.valid() ||
-         buildPending_ || liveTf_.building();
+         buildPending_ || liveTf_.building() || imagesPending_;
 }
 
 void ViewerWindow::requestFullLevel() {
@@ -164,7 +167,7 @@ bool ViewerWindow::refineDue() const {
 }
 
 double ViewerWindow::waitSeconds() const {
-  if (capturing() || buildPending_ || refinement_.active()) return 0.0;
+  if (capturing() || buildPending_ || refinement_.active() || imagesPending_) return 0.0;
   if (liveTf_.building()) return kBuildPollSeconds;
   if (hasImage_ && !refineFailed_ && lod_.lastLevel() != 0)
     return std::max(0.0, (policy_.refineDelayMs() - millisecondsSince(lastChange_)) / 1000.0);
@@ -308,6 +311,24 @@ void ViewerWindow::logFrame(double ms) {
                  r.wallMs, r.frames, r.workMs, r.worstFrameMs);
 }
 
+bool ViewerWindow::movingImagesReady(const glm::ivec2& fb) {
+  if (!levelOfDetail_ || fb == renderedSize_) return true;
+  if (fb != policySize_) {
+    // The moving levels' measurements were made at policySize_.
+    if (policySize_.x > 0 && policySize_.y > 0)
+      policy_.resized(double(fb.x) * double(fb.y) /
+                      (double(policySize_.x) * double(policySize_.y)));
+    policySize_ = fb;
+  }
+  try {
+    if (!lod_.prepareImages(policy_.movingLevel(), settings_, fb.x, fb.y, kImageWaitMs))
+      imagesPending_ = true;
+  } catch (const std::exception&) {
+    // Drawing the level says what failed (renderFailed), as it would have without this.
+  }
+  return !imagesPending_;
+}
+
 bool ViewerWindow::drawFrame(bool activity) {
   input_.updateViewportSize();
   const glm::ivec2 fb = window_.framebufferSize();
@@ -321,6 +342,8 @@ bool ViewerWindow::drawFrame(bool activity) {
   drawPanels(fb, &screenshotNow);
 
   bool rendered = false;
+  bool presentNow = false;  // presents without a new picture
+  imagesPending_ = false;   // until movingImagesReady says otherwise
   // A resize under way (another size than the last UI frame's): this frame shows the last
   // picture stretched, and the view is drawn once a frame keeps the size, so a drag through
   // many sizes does not make a set of images at each (on llvmpipe a coarse level's new images
@@ -350,6 +373,7 @@ bool ViewerWindow::drawFrame(bool activity) {
       // The other coarse levels are readied after this picture (warmUpDue).
     }
     const double ms = renderLevel(level, controller_.camera(), fb);
+    policySize_ = fb;
     if (levelOfDetail_) {
       calibrate_ = true;
       lastChange_ = Clock::now() - std::chrono::seconds(10);  // refine at once
@@ -362,11 +386,16 @@ bool ViewerWindow::drawFrame(bool activity) {
                   frameStats_.render.splatsTotal, ms);
     note.finish(text);
     rendered = true;
+  } else if (stale && !movingImagesReady(fb)) {
+    // A new size: the stretched picture stays until the moving level's images are made.
+    lastChange_ = Clock::now();
+    presentNow = true;
   } else if (stale) {
     // Moving: the coarse level the policy picked (full quality with the switch off). Any
     // change abandons the refinement under way.
     const int level = levelOfDetail_ ? policy_.movingLevel() : 0;
     movingRenderMs_ = renderLevel(level, controller_.camera(), fb);
+    policySize_ = fb;
     if (levelOfDetail_) movingLevelDrawn_ = level;  // reported with the whole frame's time
     calibrate_ = false;
     refineFailed_ = false;
@@ -394,7 +423,7 @@ bool ViewerWindow::drawFrame(bool activity) {
   }
   if (screenshotNow) screenshot(fb);
 
-  if (!rendered && !screenshotNow && !refinement_.presentsStep(activity)) {
+  if (!rendered && !screenshotNow && !presentNow && !refinement_.presentsStep(activity)) {
     imgui_.endFrame();  // the screen keeps the last presented frame
   } else {
     presenter_.present(lod_.outputTexture(), lod_.imageWidth(), lod_.imageHeight(), fb.x, fb.y);

@@ -92,6 +92,10 @@ class ViewerWindow {
   double waitSeconds() const;
   // `activity`: input or new splats this frame (a frame that only refines may skip presenting).
   bool drawFrame(bool activity);
+  // With levels of detail, at a size not drawn before: makes the moving level's images there
+  // (on the upload context's worker), waiting kImageWaitMs at most; false while they are not
+  // all there (imagesPending_), so that the frame drawing the level does not make them.
+  bool movingImagesReady(const glm::ivec2& fb);
   // Renders one level of detail now, whole; returns the milliseconds it took.
   double renderLevel(int level, const Camera& camera, const glm::ivec2& fb);
   // Records a new picture on screen (rendered or refined) for the staleness checks and panel.
@@ -257,6 +261,8 @@ class ViewerWindow {
   uint64_t renderedSettings_ = 0;
   glm::ivec2 renderedSize_{0, 0};
   glm::ivec2 lastFrameSize_{0, 0};  // the framebuffer's size at the last UI frame
+  bool imagesPending_ = false;      // a new size's images are being made for the moving level
+  glm::ivec2 policySize_{0, 0};     // the window size policy_'s measurements were made at
   Clock::time_point lastChange_ = Clock::now();
 };
 

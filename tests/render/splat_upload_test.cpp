@@ -242,5 +242,37 @@ TEST_F(SplatUploadTest, AFrameAtANewSizeDrawsWithImagesMadeOnTheWorker) {
   EXPECT_LE(maxDifference(lod.last().readImage(), larger), 1);
 }
 
+TEST_F(SplatUploadTest, AMovingLevelsImagesOfANewSizeAreMadeAhead) {
+  LodScene scene("marschner-lobb:32", uploads_.get());
+  LodRenderer& lod = scene.lod;
+  const RenderSettings settings = rasterSettings();
+  const int level = 3;  // volume/4, image/2
+  lod.render(level, scene.camera, settings, 64, 48);
+  EXPECT_TRUE(lod.prepareImages(level, settings, 64, 48, 0.0));  // there: nothing to make
+  // A new size: the worker makes the images, a call with no time to wait returns at once.
+  EXPECT_FALSE(lod.prepareImages(level, settings, 128, 96, 1e-6));
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  while (!lod.prepareImages(level, settings, 128, 96, 1e-6)) {
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline);
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  EXPECT_TRUE(lod.prepareImages(level, settings, 128, 96, 0.0));
+  // The level drawn into them draws what a renderer that made its own draws.
+  lod.render(level, scene.camera, settings, 128, 96);
+  EXPECT_EQ(lod.imageWidth(), 64);
+  LodScene cold("marschner-lobb:32");
+  cold.lod.render(level, cold.camera, settings, 128, 96);
+  EXPECT_LE(maxDifference(lod.last().readImage(), cold.lod.last().readImage()), 1);
+  // The full level's images for another size abandon its frame under way, as its render does.
+  lod.beginFull(scene.camera, settings, 64, 48);
+  ASSERT_TRUE(lod.fullPending());
+  lod.prepareImages(1, settings, 96, 80, std::numeric_limits<double>::infinity());  // volume/2
+  EXPECT_TRUE(lod.fullPending());
+  EXPECT_TRUE(lod.prepareImages(0, settings, 96, 80, std::numeric_limits<double>::infinity()));
+  EXPECT_FALSE(lod.fullPending());
+  lod.render(0, scene.camera, settings, 96, 80);
+  EXPECT_EQ(lod.imageWidth(), 96);
+}
+
 }  // namespace
 }  // namespace ewa::test

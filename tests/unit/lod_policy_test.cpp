@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace ewa {
 namespace {
 
@@ -87,6 +89,46 @@ TEST(LodPolicy, FirstMovingLevelFromTheFullQualityFrame) {
   EXPECT_EQ(p.movingLevel(), 4);
   p.startFromFullQuality(1e6);  // nothing fits: the coarsest
   EXPECT_EQ(p.movingLevel(), LodPolicy::kLevelCount - 1);
+}
+
+TEST(LodPolicy, ALargerWindowScalesTheMeasurementsAndGoesCoarser) {
+  // Level 2 measured at 60 ms: with four times the pixels 240 ms expected, level 3 (measured at
+  // 15 ms: 60) fits.
+  LodPolicy p(100.0);
+  p.reportMovingFrame(3, 15.0);
+  p.reportMovingFrame(2, 60.0);
+  ASSERT_EQ(p.movingLevel(), 2);
+  p.resized(4.0);
+  EXPECT_EQ(p.movingLevel(), 3);
+  EXPECT_DOUBLE_EQ(p.measuredMs(2), 240.0);
+  EXPECT_DOUBLE_EQ(p.measuredMs(3), 60.0);
+  // Twice the pixels again: level 3 expected at 120 ms; level 4 has not been measured (nothing
+  // says it would not fit: its first moving frame will).
+  p.resized(2.0);
+  EXPECT_EQ(p.movingLevel(), 4);
+  // Only as coarse as needed: 1.2x the pixels of a level measured at 50 ms (60 ms) stays.
+  LodPolicy q(100.0);
+  q.reportMovingFrame(2, 50.0);
+  q.resized(1.2);
+  EXPECT_EQ(q.movingLevel(), 2);
+  EXPECT_DOUBLE_EQ(q.measuredMs(2), 60.0);
+  // Smaller windows, and ratios that say nothing, change nothing.
+  q.resized(0.25);
+  q.resized(std::nan(""));
+  EXPECT_EQ(q.movingLevel(), 2);
+  EXPECT_DOUBLE_EQ(q.measuredMs(2), 60.0);
+  // A level picked from the full-quality frame: 1600 ms picked level 4 (62 ms); with four
+  // times the pixels level 4 (250 ms) and level 5 (206 ms) are too slow, level 6 (56 ms) fits.
+  LodPolicy s(100.0);
+  s.startFromFullQuality(1600.0);
+  ASSERT_EQ(s.movingLevel(), 4);
+  s.resized(4.0);
+  EXPECT_EQ(s.movingLevel(), 6);
+  // The coarsest level stays the coarsest.
+  LodPolicy r(100.0);
+  r.reportMovingFrame(LodPolicy::kLevelCount - 1, 50.0);
+  r.resized(10.0);
+  EXPECT_EQ(r.movingLevel(), LodPolicy::kLevelCount - 1);
 }
 
 TEST(LodPolicy, RefineAfterTheQuietDelay) {
