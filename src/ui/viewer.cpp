@@ -141,7 +141,7 @@ bool ViewerWindow::busy() const {
   // A save on its worker too: the panel counts its seconds, and its end is shown when it comes
   // (an idle window would see it only at its next wake, 10 s later).
   return loadJob_.running() || saveJob_.running() || capturing() || shotWrite_.valid() ||
-         buildPending_ || liveTf_.building() || imagesPending_;
+         buildPending_ || liveTf_.building() || imagesPending_ || presentNext_;
 }
 
 void ViewerWindow::requestFullLevel() {
@@ -342,8 +342,10 @@ bool ViewerWindow::drawFrame(bool activity) {
   drawPanels(fb, &screenshotNow);
 
   bool rendered = false;
-  bool presentNow = false;  // presents without a new picture
-  imagesPending_ = false;   // until movingImagesReady says otherwise
+  bool presentNow = presentNext_;  // presents without a new picture
+  presentNext_ = false;
+  bool deferPresent = false;  // a new picture presented by the next UI frame
+  imagesPending_ = false;     // until movingImagesReady says otherwise
   // A resize under way (another size than the last UI frame's): this frame shows the last
   // picture stretched, and the view is drawn once a frame keeps the size, so a drag through
   // many sizes does not make a set of images at each (on llvmpipe a coarse level's new images
@@ -394,6 +396,10 @@ bool ViewerWindow::drawFrame(bool activity) {
     // Moving: the coarse level the policy picked (full quality with the switch off). Any
     // change abandons the refinement under way.
     const int level = levelOfDetail_ ? policy_.movingLevel() : 0;
+    // The first picture at a new size is presented in the next UI frame: llvmpipe compiles the
+    // blit of an image whose size is new to it (its sampler code depends on power-of-two
+    // sides) at the first present, 20-30 ms beside the level's own 30-50 ms and the swap.
+    deferPresent = levelOfDetail_ && fb != renderedSize_;
     movingRenderMs_ = renderLevel(level, controller_.camera(), fb);
     policySize_ = fb;
     if (levelOfDetail_) movingLevelDrawn_ = level;  // reported with the whole frame's time
@@ -423,7 +429,10 @@ bool ViewerWindow::drawFrame(bool activity) {
   }
   if (screenshotNow) screenshot(fb);
 
-  if (!rendered && !screenshotNow && !presentNow && !refinement_.presentsStep(activity)) {
+  if (deferPresent && !screenshotNow) {
+    imgui_.endFrame();
+    presentNext_ = true;
+  } else if (!rendered && !screenshotNow && !presentNow && !refinement_.presentsStep(activity)) {
     imgui_.endFrame();  // the screen keeps the last presented frame
   } else {
     presenter_.present(lod_.outputTexture(), lod_.imageWidth(), lod_.imageHeight(), fb.x, fb.y);
