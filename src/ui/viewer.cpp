@@ -376,6 +376,9 @@ bool ViewerWindow::drawFrame(bool activity) {
     }
     const double ms = renderLevel(level, controller_.camera(), fb);
     policySize_ = fb;
+    // Presented by the next UI frame (the refinement's first, which only starts it): the first
+    // present compiles llvmpipe's blits, 60-100 ms beside the level's first frame.
+    deferPresent = levelOfDetail_;
     if (levelOfDetail_) {
       calibrate_ = true;
       lastChange_ = Clock::now() - std::chrono::seconds(10);  // refine at once
