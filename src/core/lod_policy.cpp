@@ -35,9 +35,10 @@ void LodPolicy::startFromFullQuality(double fullMs) {
 }
 
 void LodPolicy::resized(double pixelRatio) {
-  if (!(pixelRatio > 1.0) || !std::isfinite(pixelRatio)) return;
+  if (!(pixelRatio > 0.0) || !std::isfinite(pixelRatio)) return;
   for (double& ms : measured_)
     if (ms >= 0.0) ms *= pixelRatio;
+  if (pixelRatio < 1.0) return;  // moving frames go finer as the smaller costs allow
   // The moving level's expected frame: its measurement, else the nearest coarser one's times
   // the cost ratio as reportMovingFrame guesses it, else the nearest finer one's times the cost
   // ratio as startFromFullQuality does.

@@ -66,8 +66,9 @@ class LodPolicy {
   // footprints are fill-bound on llvmpipe, and the present and swap grow with the window too:
   // a level 5 frame of the default volume, 34 ms at 1024x768, took 208 ms at 2400x1350), and
   // the moving level goes coarser until its expected frame fits under 80% of the target.
-  // Smaller: the measurements stay as upper bounds, and moving frames measured at the new size
-  // take the level finer as usual.
+  // Smaller: the measurements shrink the same way (a window made large and small again finds
+  // its levels as they were), the level stays, and moving frames take it finer as their
+  // expected costs allow (one that is over the target goes back at once).
   void resized(double pixelRatio);
 
   // Expected cost of `level` relative to full quality: splats scale with 1/factor^3, pixels

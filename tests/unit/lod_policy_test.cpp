@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 namespace ewa {
 namespace {
@@ -112,11 +113,22 @@ TEST(LodPolicy, ALargerWindowScalesTheMeasurementsAndGoesCoarser) {
   q.resized(1.2);
   EXPECT_EQ(q.movingLevel(), 2);
   EXPECT_DOUBLE_EQ(q.measuredMs(2), 60.0);
-  // Smaller windows, and ratios that say nothing, change nothing.
-  q.resized(0.25);
+  // Ratios that say nothing change nothing.
   q.resized(std::nan(""));
+  q.resized(0.0);
+  q.resized(std::numeric_limits<double>::infinity());
   EXPECT_EQ(q.movingLevel(), 2);
   EXPECT_DOUBLE_EQ(q.measuredMs(2), 60.0);
+  // Back to the first size: the measurements are as they were, the level stays until a moving
+  // frame there finds the finer one fits again (a window made large and small again is not
+  // stuck at the large size's level).
+  p.resized(1.0 / 8.0);
+  EXPECT_EQ(p.movingLevel(), 4);
+  EXPECT_DOUBLE_EQ(p.measuredMs(2), 60.0);
+  p.reportMovingFrame(4, 10.0);  // level 3 known at 15 ms: fits
+  EXPECT_EQ(p.movingLevel(), 3);
+  p.reportMovingFrame(3, 15.0);  // level 2 known at 60 ms: fits
+  EXPECT_EQ(p.movingLevel(), 2);
   // A level picked from the full-quality frame: 1600 ms picked level 4 (62 ms); with four
   // times the pixels level 4 (250 ms) and level 5 (206 ms) are too slow, level 6 (56 ms) fits.
   LodPolicy s(100.0);
