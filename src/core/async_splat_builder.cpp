@@ -3,6 +3,8 @@
 
 #include <chrono>
 
+#include "core/thread_priority.h"
+
 namespace ewa {
 
 AsyncSplatBuilder::~AsyncSplatBuilder() {
@@ -11,6 +13,9 @@ AsyncSplatBuilder::~AsyncSplatBuilder() {
 
 void AsyncSplatBuilder::start(Request request) {
   running_ = std::async(std::launch::async, [r = std::move(request)] {
+    // The window draws the set before meanwhile: its frames (and llvmpipe's threads) come
+    // first on a machine of few cores; the classification's own worker threads inherit this.
+    lowerThisThreadPriority();
     return BuiltSplats{classifySplats(*r.volume, r.tf, r.classification, r.maxSplats),
                        r.classification};
   });

@@ -2,6 +2,7 @@
 #include "ui/image_presenter.h"
 
 #include "gl/gl_api.h"
+#include "gl/texture.h"
 
 namespace ewa {
 
@@ -25,17 +26,29 @@ void ImagePresenter::present(unsigned texture, int texWidth, int texHeight, int 
   glNamedFramebufferTexture(source_.id(), GL_COLOR_ATTACHMENT0, texture, 0);
   // Same size (the usual case, the image is rendered at the framebuffer size): an exact copy.
   const bool sameSize = texWidth == fbWidth && texHeight == fbHeight;
-  if (!sameSize && !warmedExactCopy_) {
-    // The window's first pictures are coarse ones, stretched; the exact copy's first use would
-    // fall on the frame that shows full quality (llvmpipe compiles a blit shader per filter and
-    // formats at its first draw: 35-45 ms, more than the rest of that frame). One pixel copied
-    // now, with the filter the full picture will use, is drawn over by the stretch below.
-    glBlitNamedFramebuffer(source_.id(), 0, 0, 0, 1, 1, 0, 0, 1, 1, GL_COLOR_BUFFER_BIT,
-                           GL_NEAREST);
-    warmedExactCopy_ = true;
-  }
+  if (sameSize) warmedExactCopy_ = true;
   glBlitNamedFramebuffer(source_.id(), 0, 0, 0, texWidth, texHeight, 0, 0, fbWidth, fbHeight,
                          GL_COLOR_BUFFER_BIT, sameSize ? GL_NEAREST : GL_LINEAR);
+}
+
+void ImagePresenter::warmUpStretch(int width, int height) {
+  if (warmedStretch_ || width <= 0 || height <= 0) return;
+  const gl::Texture blank = gl::Texture::create2D(GL_RGBA8, width, height);
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glNamedFramebufferTexture(source_.id(), GL_COLOR_ATTACHMENT0, blank.id(), 0);
+  glBlitNamedFramebuffer(source_.id(), 0, 0, 0, 1, 1, 0, 0, 2, 2, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  glNamedFramebufferTexture(source_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
+  warmedStretch_ = true;
+}
+
+void ImagePresenter::warmUpExactCopy(unsigned texture) {
+  if (warmedExactCopy_ || texture == 0) return;
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glNamedFramebufferTexture(source_.id(), GL_COLOR_ATTACHMENT0, texture, 0);
+  glBlitNamedFramebuffer(source_.id(), 0, 0, 0, 1, 1, 0, 0, 1, 1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  warmedExactCopy_ = true;
 }
 
 }  // namespace ewa

@@ -437,10 +437,19 @@ bool ViewerWindow::drawFrame(bool activity) {
     presentNext_ = true;
   } else if (!rendered && !screenshotNow && !presentNow && !refinement_.presentsStep(activity)) {
     imgui_.endFrame();  // the screen keeps the last presented frame
+    // Not in the first picture's frames, which take 70-110 ms on llvmpipe without it.
+    if (pictureShown_) presenter_.warmUpExactCopy(lod_.outputTexture());
   } else {
+    if (!hasImage_ && levelOfDetail_) {
+      // Before the first picture: its size's blit compiled now (the picture's own frames take
+      // 60-90 ms each on llvmpipe without it), drawn over by the clear below.
+      const int divisor = LodPolicy::level(LodPolicy::kLevelCount - 1).imageDivisor;
+      presenter_.warmUpStretch(std::max(1, fb.x / divisor), std::max(1, fb.y / divisor));
+    }
     presenter_.present(lod_.outputTexture(), lod_.imageWidth(), lod_.imageHeight(), fb.x, fb.y);
     imgui_.render();
     window_.swapBuffers();
+    pictureShown_ = pictureShown_ || hasImage_;
     refinement_.notePresented();
   }
   // ImGui decides what it captures while building the frame; the next events obey that.

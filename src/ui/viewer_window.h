@@ -264,6 +264,7 @@ class ViewerWindow {
   bool imagesPending_ = false;      // a new size's images are being made for the moving level
   glm::ivec2 policySize_{0, 0};     // the window size policy_'s measurements were made at
   bool presentNext_ = false;        // the last UI frame left its new picture to this one
+  bool pictureShown_ = false;       // a picture has been presented
   Clock::time_point lastChange_ = Clock::now();
 };
 
