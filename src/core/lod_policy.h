@@ -64,7 +64,7 @@ class LodPolicy {
   // The window now has `pixelRatio` times the pixels the measurements were made at. Larger:
   // each measured frame is expected to cost that many times as much (the coarse levels' large
   // footprints are fill-bound on llvmpipe, and the present and swap grow with the window too:
-  // a level 5 frame of the default volume, 34 ms at 1024x768, took 208 ms at 2400x1350), and
+  // the default volume's level 5, picked at 1024x768, took a 208 ms frame at 2400x1350), and
   // the moving level goes coarser until its expected frame fits under 80% of the target.
   // Smaller: the measurements shrink the same way (a window made large and small again finds
   // its levels as they were), the level stays, and moving frames take it finer as their

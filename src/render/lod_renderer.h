@@ -60,9 +60,8 @@ class LodRenderer {
   // Makes the images render() of `level` at width x height will draw into, taking about
   // `budgetMs` at most (Renderer::prepareImages: on a worker bound to the upload context where
   // there is one); true once they are there. A window's new size: its first moving frame would
-  // otherwise make them itself (on llvmpipe 20-25 ms at 2400x1350, in a UI frame that already
-  // pays for the new window buffers). Abandons a full frame under way at the full level, as
-  // render() does.
+  // otherwise make them itself (fresh memory on llvmpipe: tens of ms for full-size images at
+  // 2400x1350). Abandons a full frame under way at the full level, as render() does.
   bool prepareImages(int level, const RenderSettings& settings, int width, int height,
                      double budgetMs);
 
