@@ -24,8 +24,9 @@ class ImagePresenter {
   // Stretches one pixel of a blank RGBA8 image of width x height to the default framebuffer,
   // once: llvmpipe compiles the blit of an image of a size new to it at its first draw (55-80
   // ms; its sampler code depends on the sides), so a frame before the window's first picture
-  // takes that off the picture's own present. Drawn over by the next present or clear.
+  // takes that off the picture's own present. Drawn over by the next present.
   void warmUpStretch(int width, int height);
+  bool stretchWarmedUp() const { return warmedStretch_; }
 
  private:
   gl::Framebuffer source_;        // wraps the texture as a blit source

@@ -364,6 +364,13 @@ bool ViewerWindow::drawFrame(bool activity) {
   } else if (buildPending_) {
     // This frame shows "building splats"; the next one does the work.
     buildPending_ = false;
+  } else if (!hasImage_ && levelOfDetail_ && !presenter_.stretchWarmedUp()) {
+    // A UI frame of its own before the first picture, not presented: the blit that will show
+    // that picture compiled (55-80 ms on llvmpipe; in the picture's present it made that frame
+    // 100-330 ms, in the window's first frame beside ImGui's set-up about 100 ms).
+    const int divisor = LodPolicy::level(LodPolicy::kLevelCount - 1).imageDivisor;
+    presenter_.warmUpStretch(std::max(1, fb.x / divisor), std::max(1, fb.y / divisor));
+    deferPresent = true;  // the next frame is drawn (the first picture's)
   } else if (!hasImage_) {
     // The first picture: the coarsest level at once, full quality refines from it (without
     // levels of detail: full quality, whole).
@@ -440,12 +447,6 @@ bool ViewerWindow::drawFrame(bool activity) {
     // Not in the first picture's frames, which take 70-110 ms on llvmpipe without it.
     if (pictureShown_) presenter_.warmUpExactCopy(lod_.outputTexture());
   } else {
-    if (!hasImage_ && levelOfDetail_) {
-      // Before the first picture: its size's blit compiled now (the picture's own frames take
-      // 60-90 ms each on llvmpipe without it), drawn over by the clear below.
-      const int divisor = LodPolicy::level(LodPolicy::kLevelCount - 1).imageDivisor;
-      presenter_.warmUpStretch(std::max(1, fb.x / divisor), std::max(1, fb.y / divisor));
-    }
     presenter_.present(lod_.outputTexture(), lod_.imageWidth(), lod_.imageHeight(), fb.x, fb.y);
     imgui_.render();
     window_.swapBuffers();
