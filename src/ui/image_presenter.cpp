@@ -31,23 +31,25 @@ void ImagePresenter::present(unsigned texture, int texWidth, int texHeight, int 
                          GL_COLOR_BUFFER_BIT, sameSize ? GL_NEAREST : GL_LINEAR);
 }
 
+void ImagePresenter::blitOnePixel(unsigned texture, int size, GLenum filter) {
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glNamedFramebufferTexture(source_.id(), GL_COLOR_ATTACHMENT0, texture, 0);
+  glBlitNamedFramebuffer(source_.id(), 0, 0, 0, 1, 1, 0, 0, size, size, GL_COLOR_BUFFER_BIT,
+                         filter);
+}
+
 void ImagePresenter::warmUpStretch(int width, int height) {
   if (warmedStretch_ || width <= 0 || height <= 0) return;
   const gl::Texture blank = gl::Texture::create2D(GL_RGBA8, width, height);
-  glDisable(GL_SCISSOR_TEST);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  glNamedFramebufferTexture(source_.id(), GL_COLOR_ATTACHMENT0, blank.id(), 0);
-  glBlitNamedFramebuffer(source_.id(), 0, 0, 0, 1, 1, 0, 0, 2, 2, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-  glNamedFramebufferTexture(source_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
+  blitOnePixel(blank.id(), 2, GL_LINEAR);
+  glNamedFramebufferTexture(source_.id(), GL_COLOR_ATTACHMENT0, 0, 0);  // before it goes
   warmedStretch_ = true;
 }
 
 void ImagePresenter::warmUpExactCopy(unsigned texture) {
   if (warmedExactCopy_ || texture == 0) return;
-  glDisable(GL_SCISSOR_TEST);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  glNamedFramebufferTexture(source_.id(), GL_COLOR_ATTACHMENT0, texture, 0);
-  glBlitNamedFramebuffer(source_.id(), 0, 0, 0, 1, 1, 0, 0, 1, 1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  blitOnePixel(texture, 1, GL_NEAREST);
   warmedExactCopy_ = true;
 }
 

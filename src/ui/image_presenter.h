@@ -29,6 +29,9 @@ class ImagePresenter {
   bool stretchWarmedUp() const { return warmedStretch_; }
 
  private:
+  // One pixel of `texture` to a size x size square at the default framebuffer's corner, the
+  // blit a present of that filter draws (compiled by llvmpipe at its first draw).
+  void blitOnePixel(unsigned texture, int size, GLenum filter);
   gl::Framebuffer source_;        // wraps the texture as a blit source
   bool warmedExactCopy_ = false;  // the same-size blit has been drawn (or warmed up) once
   bool warmedStretch_ = false;

@@ -197,6 +197,7 @@ void ViewerWindow::renderFailed(const std::exception& e, const glm::ivec2& fb) {
 double ViewerWindow::renderLevel(int level, const Camera& camera, const glm::ivec2& fb) {
   const Clock::time_point start = Clock::now();
   refinement_.cancel();  // a whole frame replaces the one being refined
+  policySize_ = fb;      // the moving levels' measurements are made at this size from now on
   try {
     lod_.render(level, camera, settings_, fb.x, fb.y);
     renderError_.clear();
@@ -382,9 +383,8 @@ bool ViewerWindow::drawFrame(bool activity) {
       // The other coarse levels are readied after this picture (warmUpDue).
     }
     const double ms = renderLevel(level, controller_.camera(), fb);
-    policySize_ = fb;
-    // Presented by the next UI frame (the refinement's first, which only starts it): the first
-    // present compiles llvmpipe's blits, 60-100 ms beside the level's first frame.
+    // Presented by the next UI frame (the refinement's first, which only starts it): the
+    // present and swap beside the level's first frame made it 100-330 ms on llvmpipe.
     deferPresent = levelOfDetail_;
     if (levelOfDetail_) {
       calibrate_ = true;
@@ -407,11 +407,10 @@ bool ViewerWindow::drawFrame(bool activity) {
     // change abandons the refinement under way.
     const int level = levelOfDetail_ ? policy_.movingLevel() : 0;
     // The first picture at a new size is presented in the next UI frame: llvmpipe compiles the
-    // blit of an image whose size is new to it (its sampler code depends on power-of-two
-    // sides) at the first present, 20-30 ms beside the level's own 30-50 ms and the swap.
+    // blit of an image of a size new to it at the first present, 30-50 ms beside the level's
+    // own 30-50 ms and the swap.
     deferPresent = levelOfDetail_ && fb != renderedSize_;
     movingRenderMs_ = renderLevel(level, controller_.camera(), fb);
-    policySize_ = fb;
     if (levelOfDetail_) movingLevelDrawn_ = level;  // reported with the whole frame's time
     calibrate_ = false;
     refineFailed_ = false;
