@@ -142,7 +142,7 @@ int run(int argc, char** argv) {
     lod.setTransferFunction(scene.transferFunction);
     const Camera start = initialCamera(scene.volume, o);
     // Classification and upload of every level happen on first use: not part of the timings.
-    for (int level = 0; level < LodPolicy::kLevelCount; ++level)
+    for (int level = 0; level <= lod.coarsestLevel(); ++level)
       lod.render(level, start, o.render, size, size);
     // As the window does: the first full-quality frame picks the first moving level.
     t = BenchClock::now();
@@ -151,6 +151,7 @@ int run(int argc, char** argv) {
     const size_t splats = lod.last().stats().splatsTotal;
 
     LodPolicy policy(target, refineDelay);
+    policy.setCoarsestLevel(lod.coarsestLevel());
     policy.startFromFullQuality(firstFullMs);
     Camera cam = start;
     std::vector<double> moving, full;

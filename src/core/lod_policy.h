@@ -17,14 +17,22 @@ struct LodLevel {
 
 class LodPolicy {
  public:
-  // Level 0 is full quality; each next level is cheaper. The volume factors (2, 4, 8) are the
-  // downsampled volumes the viewer keeps.
-  // The last one (volume/8, image/4) is for big volumes on slow (software) GL.
-  // The last, {8, 8}, is for fill-bound views of big volumes on slow GL (llvmpipe): CThead
-  // close up still took ~106 ms a frame at {8, 4}.
-  static constexpr std::array<LodLevel, 7> kLevels{
-      {{1, 1}, {2, 1}, {2, 2}, {4, 2}, {4, 4}, {8, 4}, {8, 8}}};
+  // Level 0 is full quality; each next level is cheaper. The volume factors (2, 4, 8, 16) are
+  // the downsampled volumes the viewer keeps (16 only for big volumes: keepsVolumeFactor).
+  // {8, 4} and {8, 8} are for big volumes and fill-bound views on slow GL (llvmpipe): CThead
+  // close up still took ~106 ms a frame at {8, 4}. {16, 8} is for splat-bound views of volumes
+  // of 512^3 and so: a dense one's volume/8 (262 k splats) took 125-155 ms a frame at {8, 8}.
+  static constexpr std::array<LodLevel, 8> kLevels{
+      {{1, 1}, {2, 1}, {2, 2}, {4, 2}, {4, 4}, {8, 4}, {8, 8}, {16, 8}}};
   static constexpr int kLevelCount = int(kLevels.size());
+  // A volume factor over 8 is kept only where volume/8 still holds more than this many voxels
+  // (volumes of about 320^3 and up): llvmpipe's vertex stage alone takes about 0.25 s a million
+  // slab entries, so volume/8 of a dense 256^3 volume (32 k voxels) fits a moving frame, and a
+  // volume/16 of it (16^3) would only blur a picture nothing needed to be faster.
+  static constexpr long long kMaxCoarseVoxels = 65536;
+  static bool keepsVolumeFactor(int factor, long long voxels);
+  // The coarsest level whose volume factor is kept for a volume of `voxels` voxels.
+  static int coarsestLevelFor(long long voxels);
   // Start at volume/2 and image/2: safe for both splat-bound (big volumes) and fill-bound
   // (magnified small volumes) cases; measurements move it from there.
   static constexpr int kStartLevel = 2;
@@ -35,6 +43,13 @@ class LodPolicy {
   // the slabs over the same pixels): that guess sent a UI frame past 100 ms at every
   // transfer-function drag.
   static constexpr double kMinStepRatio = 2.5;
+  // From volume/16 to volume/8 at once: volume/16 is kept only for volumes splat-bound at
+  // volume/8, which has 8 times the splats; a dense 512^3 volume's took 4.1-5.9x as long
+  // (125-155 against 26-38 ms on llvmpipe), and 2.5x sent a frame of every orbit to 164 ms.
+  static constexpr double kMinStepRatioFromSixteen = 4.0;
+  // The least ratio expected between `level` and the coarser level `coarser` (the product of
+  // the steps' least ratios).
+  static double minStepRatio(int level, int coarser);
 
   // targetMs: the frame time to stay under while moving; refineDelayMs: quiet time after the
   // last input before the full-quality frame.
@@ -47,7 +62,7 @@ class LodPolicy {
   // `overheadMs` the rest of the UI frame (panels, present, swap: the same at every level), and
   // picks the next moving level: coarser when the whole frame is over the target, finer when
   // the finer level is known (or expected: the overhead plus the render times its cost ratio,
-  // at least kMinStepRatio) to fit under 80% of the target.
+  // at least minStepRatio) to fit under 80% of the target.
   void reportMovingFrame(int level, double renderMs, double overheadMs = 0.0);
   // Picks the first moving level from a measured full-quality frame: the finest coarse level
   // expected (by expectedCostRatio) to fit under 80% of the target, else the coarsest. Moving
@@ -61,6 +76,10 @@ class LodPolicy {
   double measuredMs(int level) const { return measured_[std::size_t(level)]; }
   // Forgets the measurements (a new volume or transfer function changes the costs).
   void resetMeasurements();
+  // The coarsest level this volume has (coarsestLevelFor; every level until set): the moving
+  // level goes no coarser.
+  void setCoarsestLevel(int level);
+  int coarsestLevel() const { return coarsest_; }
   // The window now has `pixelRatio` times the pixels the measurements were made at. Larger:
   // each measured frame is expected to cost that many times as much (the coarse levels' large
   // footprints are fill-bound on llvmpipe, and the present and swap grow with the window too:
@@ -79,6 +98,7 @@ class LodPolicy {
   double targetMs_;
   double refineDelayMs_;
   int level_ = kStartLevel;
+  int coarsest_ = kLevelCount - 1;
   std::array<double, kLevelCount> measured_{};
 };
 

@@ -13,7 +13,7 @@ LodVolumes buildLodVolumes(const Volume& volume) {
   LodVolumes out;
   std::vector<int> factors;
   for (const LodLevel& l : LodPolicy::kLevels)
-    if (l.volumeFactor > 1 &&
+    if (l.volumeFactor > 1 && LodPolicy::keepsVolumeFactor(l.volumeFactor, volume.voxelCount()) &&
         std::find(factors.begin(), factors.end(), l.volumeFactor) == factors.end())
       factors.push_back(l.volumeFactor);
   std::shared_ptr<const Volume> previous;
@@ -122,7 +122,7 @@ Renderer& LodRenderer::rendererFor(int factor) {
 void LodRenderer::render(int level, const Camera& camera, const RenderSettings& settings, int width,
                          int height) {
   if (!volume_) throw std::logic_error("LodRenderer::render before setVolume");
-  level = std::clamp(level, 0, LodPolicy::kLevelCount - 1);
+  level = std::clamp(level, 0, coarsestLevel());
   const LodLevel lod = resolved(level);
   imageWidth_ = std::max(1, width / lod.imageDivisor);
   imageHeight_ = std::max(1, height / lod.imageDivisor);
@@ -133,8 +133,12 @@ void LodRenderer::render(int level, const Camera& camera, const RenderSettings& 
   lastLevel_ = level;
 }
 
+int LodRenderer::coarsestLevel() const {
+  return volume_ ? LodPolicy::coarsestLevelFor(volume_->voxelCount()) : 0;
+}
+
 LodLevel LodRenderer::resolved(int level) const {
-  LodLevel lod = LodPolicy::level(std::clamp(level, 0, LodPolicy::kLevelCount - 1));
+  LodLevel lod = LodPolicy::level(std::clamp(level, 0, coarsestLevel()));
   if (!hasFactor(lod.volumeFactor)) lod.volumeFactor = 1;  // still being built: full volume
   return lod;
 }

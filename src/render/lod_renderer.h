@@ -18,8 +18,9 @@ namespace ewa {
 
 class SplatRenderer;
 
-// The coarse volumes of every volume factor LodPolicy uses (2, 4, 8), made on the CPU; slow
-// for big volumes, so the viewer makes them on its loading thread.
+// The coarse volumes of every volume factor LodPolicy uses (2, 4, 8, and 16 for big volumes:
+// LodPolicy::keepsVolumeFactor), made on the CPU; slow for big volumes, so the viewer makes them
+// on its loading thread.
 struct LodVolumes {
   std::vector<std::pair<int, std::shared_ptr<const Volume>>> levels;  // (factor, volume)
 };
@@ -110,13 +111,16 @@ class LodRenderer {
   int lastLevel() const { return lastLevel_; }
   // Whether the coarse volume for `factor` is there (1 always is once a volume is set).
   bool hasFactor(int factor) const;
+  // The coarsest LodPolicy level this volume has (LodPolicy::coarsestLevelFor): a level past it
+  // is drawn as it; 0 before setVolume.
+  int coarsestLevel() const;
   // Bytes of GPU buffers and images all levels' renderers allocated (RenderStats::gpuBytes).
   size_t gpuBytes() const;
 
  private:
   Renderer& rendererFor(int factor);
   // `level`'s volume factor (the full volume while that coarse one is being built) and image
-  // divisor.
+  // divisor; a level past coarsestLevel() as that one.
   LodLevel resolved(int level) const;
   // The full level's splat renderer if it has been made, else null (makes none).
   SplatRenderer* existingFullSplatRenderer() const;

@@ -369,13 +369,13 @@ bool ViewerWindow::drawFrame(bool activity) {
     // A UI frame of its own before the first picture, not presented: the blit that will show
     // that picture compiled (55-80 ms on llvmpipe; in the picture's present it made that frame
     // 100-330 ms, in the window's first frame beside ImGui's set-up about 100 ms).
-    const int divisor = LodPolicy::level(LodPolicy::kLevelCount - 1).imageDivisor;
+    const int divisor = LodPolicy::level(lod_.coarsestLevel()).imageDivisor;
     presenter_.warmUpStretch(std::max(1, fb.x / divisor), std::max(1, fb.y / divisor));
     deferPresent = true;  // the next frame is drawn (the first picture's)
   } else if (!hasImage_) {
     // The first picture: the coarsest level at once, full quality refines from it (without
     // levels of detail: full quality, whole).
-    const int level = levelOfDetail_ ? LodPolicy::kLevelCount - 1 : 0;
+    const int level = levelOfDetail_ ? lod_.coarsestLevel() : 0;
     TerminalProgress note("ewaview: building splats for " + current_.name + ",");
     if (levelOfDetail_) {
       if (!fullLevelAsked_) requestFullLevel();

@@ -44,6 +44,7 @@ void ViewerWindow::adopt(LoadedVolume loaded, bool newCamera) {
   probe_.setMark(std::nullopt);  // a point of the old volume
   lod_.setVolume(*current_.volume, current_.coarse);
   lod_.setTransferFunction(current_.tf);
+  policy_.setCoarsestLevel(lod_.coarsestLevel());
   policy_.resetMeasurements();
   panel_.setVolume(current_.name, *current_.volume, !current_.path.empty());
   liveTf_.reset(
@@ -219,6 +220,7 @@ void ViewerWindow::switchRendererIfAsked() {
   lod_ = LodRenderer(rendererFactory(), uploadContext_.get());
   lod_.setVolume(*current_.volume, current_.coarse);
   lod_.setTransferFunction(current_.tf);
+  policy_.setCoarsestLevel(lod_.coarsestLevel());
   policy_.resetMeasurements();
   refinement_.cancel();
   hasImage_ = false;

@@ -121,7 +121,7 @@ TEST_F(LodRendererTest, LevelsShrinkImageAndSplatsButKeepThePicture) {
       64.0 / (2.0 * cam.distance() * std::tan(cam.viewAngleDeg * 3.14159265358979 / 360.0));
   writePng(testOutputDir() + "/lod_level0.png", full);
 
-  for (int level = 1; level < LodPolicy::kLevelCount; ++level) {
+  for (int level = 1; level <= lod.coarsestLevel(); ++level) {
     const LodLevel l = LodPolicy::level(level);
     lod.render(level, cam, settings, 64, 64);
     EXPECT_EQ(lod.imageWidth(), 64 / l.imageDivisor) << level;
@@ -159,6 +159,41 @@ TEST_F(LodRendererTest, LevelsShrinkImageAndSplatsButKeepThePicture) {
   EXPECT_GT(lod.gpuBytes(), fullSplats * 8);
 }
 
+// A volume of 328^3 keeps volume/16 (LodPolicy::keepsVolumeFactor): its coarsest level draws
+// about an eighth of volume/8's splats into an image of the same size, of the same ball. A small
+// volume has no such level: asked for it, its lod draws its own coarsest.
+TEST_F(LodRendererTest, ABigVolumesCoarsestLevelIsVolumeSixteen) {
+  LodScene scene("sphere:328");
+  LodRenderer& lod = scene.lod;
+  const int last = LodPolicy::kLevelCount - 1;
+  ASSERT_EQ(lod.coarsestLevel(), last);
+  EXPECT_TRUE(lod.hasFactor(16));
+  const RenderSettings settings;
+  lod.render(last - 1, scene.camera, settings, 256, 256);
+  const double eightSplats = double(lod.last().stats().splatsTotal);
+  const Image8 eight = lod.last().readImage();
+  lod.render(last, scene.camera, settings, 256, 256);
+  EXPECT_EQ(lod.lastLevel(), last);
+  const Image8 sixteen = lod.last().readImage();
+  writePng(testOutputDir() + "/lod_big_level" + std::to_string(last) + ".png", sixteen);
+  const double ratio = double(lod.last().stats().splatsTotal) / eightSplats;
+  std::printf("volume/16 against volume/8: %.3f of the splats, mean difference %.2f\n", ratio,
+              meanDifference(eight, sixteen));
+  EXPECT_GT(ratio, 0.08);
+  EXPECT_LT(ratio, 0.25);
+  EXPECT_EQ(sixteen.width, eight.width);
+  ASSERT_GT(meanValue(eight), 5.0);
+  EXPECT_NEAR(meanValue(sixteen), meanValue(eight), 0.15 * meanValue(eight));
+  EXPECT_LT(meanDifference(eight, sixteen), 1.5);  // measured 0.37
+
+  LodScene small("sphere:32");
+  ASSERT_EQ(small.lod.coarsestLevel(), last - 1);
+  EXPECT_FALSE(small.lod.hasFactor(16));
+  small.lod.render(last, small.camera, settings, 64, 64);
+  EXPECT_EQ(small.lod.lastLevel(), last - 1);
+  EXPECT_EQ(small.lod.imageWidth(), 64 / LodPolicy::level(last - 1).imageDivisor);
+}
+
 // Warming up classifies each coarse level not drawn yet on a worker (steps return at once
 // meanwhile), then uploads its splats and makes its programs, leaving the picture shown alone;
 // a level drawn already is skipped, a new volume starts over, and a build made stale by a new
@@ -169,13 +204,13 @@ TEST_F(LodRendererTest, WarmUpClassifiesEachUndrawnLevelOnceAndKeepsThePicture) 
   LodRenderer& lod = scene.lod;
   const Camera& cam = scene.camera;
   const RenderSettings settings;
-  const int last = LodPolicy::kLevelCount - 1;
+  const int last = lod.coarsestLevel();
   lod.render(last, cam, settings, 64, 64);
   EXPECT_GT(lod.last().stats().classifyMs, 0.0);  // a first draw classifies
   const unsigned shown = lod.outputTexture();
   const Image8 picture = lod.last().readImage();
   std::vector<int> coarseFactors;
-  for (int level = 1; level < LodPolicy::kLevelCount; ++level) {
+  for (int level = 1; level <= lod.coarsestLevel(); ++level) {
     const int f = LodPolicy::level(level).volumeFactor;
     if (f > 1 && std::find(coarseFactors.begin(), coarseFactors.end(), f) == coarseFactors.end())
       coarseFactors.push_back(f);
@@ -201,13 +236,13 @@ TEST_F(LodRendererTest, WarmUpClassifiesEachUndrawnLevelOnceAndKeepsThePicture) 
   // Classified already, by the worker: moving to any level now classifies nothing, and draws
   // what classifying there would have drawn.
   std::vector<Image8> warmed;
-  for (int level = 1; level < LodPolicy::kLevelCount; ++level) {
+  for (int level = 1; level <= lod.coarsestLevel(); ++level) {
     lod.render(level, cam, settings, 64, 64);
     EXPECT_EQ(lod.last().stats().classifyMs, 0.0) << level;
     warmed.push_back(lod.last().readImage());
   }
   LodScene cold("marschner-lobb:32");
-  for (int level = 1; level < LodPolicy::kLevelCount; ++level) {
+  for (int level = 1; level <= lod.coarsestLevel(); ++level) {
     cold.lod.render(level, cold.camera, settings, 64, 64);
     // Levels share a volume factor's renderer: the first of each classifies.
     if (LodPolicy::level(level).volumeFactor != LodPolicy::level(level - 1).volumeFactor) {
@@ -236,7 +271,7 @@ TEST_F(LodRendererTest, WarmUpClassifiesEachUndrawnLevelOnceAndKeepsThePicture) 
   int dropped = 0;
   for (int f : coarseFactors)
     if (f != drawnFactor) dropped = std::max(dropped, f);
-  for (int level = 1; level < LodPolicy::kLevelCount; ++level) {
+  for (int level = 1; level <= lod.coarsestLevel(); ++level) {
     const int f = LodPolicy::level(level).volumeFactor;
     if (f == 1 || f == drawnFactor) continue;
     lod.render(level, cam, settings, 64, 64);

@@ -166,7 +166,7 @@ TEST_F(SplatUploadTest, TwoUploadsAtOnceTakeTurnsOnTheContext) {
 TEST_F(SplatUploadTest, CoarseLevelsWarmUpThroughWorkerUploads) {
   LodScene s("marschner-lobb:32", uploads_.get());
   const RenderSettings settings = paperSettings();
-  s.lod.render(LodPolicy::kLevelCount - 1, s.camera, settings, 64, 64);
+  s.lod.render(s.lod.coarsestLevel(), s.camera, settings, 64, 64);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
   while (s.lod.warmUpNext(s.camera, settings)) {
     ASSERT_LT(std::chrono::steady_clock::now(), deadline);
@@ -176,7 +176,7 @@ TEST_F(SplatUploadTest, CoarseLevelsWarmUpThroughWorkerUploads) {
   // Every coarse level's set arrived through the worker: drawing it classifies nothing, and
   // draws what a cold renderer's own classification and upload draw.
   LodScene cold("marschner-lobb:32");
-  for (int level = 1; level < LodPolicy::kLevelCount; ++level) {
+  for (int level = 1; level <= s.lod.coarsestLevel(); ++level) {
     s.lod.render(level, s.camera, settings, 64, 64);
     EXPECT_EQ(s.lod.last().stats().classifyMs, 0.0) << level;
     cold.lod.render(level, cold.camera, settings, 64, 64);

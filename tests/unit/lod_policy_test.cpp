@@ -28,6 +28,55 @@ TEST(LodPolicy, SlowFramesGoCoarserUntilTheLast) {
   EXPECT_EQ(level, LodPolicy::kLevelCount - 1);
 }
 
+// Volume/16 only for volumes whose volume/8 holds more than kMaxCoarseVoxels voxels (328^3: 68 921
+// at volume/8; 320^3: 64 000): the policy then goes no coarser than the level that volume has.
+TEST(LodPolicy, OnlyBigVolumesHaveVolumeSixteenAndNoLevelPastTheCoarsest) {
+  const int sixteen = LodPolicy::kLevelCount - 1;
+  ASSERT_EQ(LodPolicy::level(sixteen).volumeFactor, 16);
+  ASSERT_EQ(LodPolicy::level(sixteen - 1).volumeFactor, 8);
+  for (int factor : {2, 4, 8}) EXPECT_TRUE(LodPolicy::keepsVolumeFactor(factor, 8));
+  EXPECT_TRUE(LodPolicy::keepsVolumeFactor(16, 328LL * 328 * 328));
+  EXPECT_FALSE(LodPolicy::keepsVolumeFactor(16, 320LL * 320 * 320));
+  EXPECT_FALSE(LodPolicy::keepsVolumeFactor(16, 256LL * 256 * 256));
+  EXPECT_EQ(LodPolicy::coarsestLevelFor(512LL * 512 * 512), sixteen);
+  EXPECT_EQ(LodPolicy::coarsestLevelFor(320LL * 320 * 320), sixteen - 1);
+  EXPECT_EQ(LodPolicy::coarsestLevelFor(41LL * 41 * 41), sixteen - 1);
+
+  // Slow frames stop at the coarsest level set; the full-quality frame's pick and a larger
+  // window too.
+  LodPolicy p(100.0);
+  p.setCoarsestLevel(sixteen - 1);
+  for (int n = 0; n < 10; ++n) p.reportMovingFrame(p.movingLevel(), 500.0);
+  EXPECT_EQ(p.movingLevel(), sixteen - 1);
+  p.reportMovingFrame(sixteen, 10.0);  // no such level here: ignored
+  EXPECT_LT(p.measuredMs(sixteen), 0.0);
+  p.startFromFullQuality(1e6);
+  EXPECT_EQ(p.movingLevel(), sixteen - 1);
+  p.resized(100.0);
+  EXPECT_EQ(p.movingLevel(), sixteen - 1);
+  // With volume/16: a frame of volume/8 over the target moves there; a new volume starts at
+  // the start level, or the coarsest where that is finer.
+  p.setCoarsestLevel(sixteen);
+  p.reportMovingFrame(sixteen - 1, 140.0);
+  EXPECT_EQ(p.movingLevel(), sixteen);
+  p.resetMeasurements();
+  EXPECT_EQ(p.movingLevel(), LodPolicy::kStartLevel);
+  // Volume/8 is expected at 4 times volume/16 at least (8 times the splats), 2.5 otherwise: a
+  // 30 ms render of volume/16 beside 12 ms of UI frame stays (132 ms expected; 87 with 2.5x,
+  // where volume/8 took 164 ms); at 10 ms it goes finer (52 ms).
+  EXPECT_DOUBLE_EQ(LodPolicy::minStepRatio(sixteen - 1, sixteen), 4.0);
+  EXPECT_DOUBLE_EQ(LodPolicy::minStepRatio(sixteen - 3, sixteen), 2.5 * 2.5 * 4.0);
+  EXPECT_DOUBLE_EQ(LodPolicy::minStepRatio(2, 4), 2.5 * 2.5);
+  p.reportMovingFrame(sixteen, 30.0, 12.0);
+  EXPECT_EQ(p.movingLevel(), sixteen);
+  p.reportMovingFrame(sixteen, 10.0, 12.0);
+  EXPECT_EQ(p.movingLevel(), sixteen - 1);
+  p.setCoarsestLevel(1);
+  EXPECT_EQ(p.movingLevel(), 1);
+  p.resetMeasurements();
+  EXPECT_EQ(p.movingLevel(), 1);
+}
+
 TEST(LodPolicy, FastFramesGoFinerOnlyWhenTheFinerLevelShouldFit) {
   LodPolicy p(100.0);
   // Level 1 costs 0.5625 of full; at 10 ms full quality is expected at ~18 ms (25 with the
