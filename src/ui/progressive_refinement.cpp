@@ -39,6 +39,8 @@ bool ProgressiveRefinement::step(LodRenderer& lod, bool presents) {
   if (!active_) return false;
   const Clock::time_point begin = Clock::now();
   lastBudgetMs_ = budgetMs(presents);
+  steppedThisFrame_ = true;
+  stepPresents_ = presents;
   const bool done = lod.stepFull(lastBudgetMs_);
   lastStepMs_ = millisecondsSince(begin);
   current_.workMs += lastStepMs_;
@@ -53,12 +55,15 @@ bool ProgressiveRefinement::step(LodRenderer& lod, bool presents) {
 }
 
 bool ProgressiveRefinement::presentsStep(bool activity) const {
-  return !active_ || activity || millisecondsSince(lastPresent_) >= kPresentIntervalMs;
+  if (!active_ || activity) return true;
+  if (steppedThisFrame_) return stepPresents_;
+  return millisecondsSince(lastPresent_) >= kPresentIntervalMs;
 }
 
 void ProgressiveRefinement::reportFrame(double ms) {
   const bool presented = presentedThisFrame_;
   presentedThisFrame_ = false;
+  steppedThisFrame_ = false;
   if (!active_ && !finishedThisFrame_) return;
   current_.worstFrameMs = std::max(current_.worstFrameMs, ms);
   if (finishedThisFrame_) {

@@ -419,6 +419,20 @@ TEST_F(ProgressiveFrame, RefiningFramesPresentOnActivityOrAfterTheInterval) {
   EXPECT_TRUE(refinement.presentsStep(false));
   refinement.notePresented();
   EXPECT_FALSE(refinement.presentsStep(false));
+  // A step budgeted as not presenting keeps its frame from presenting when the interval passes
+  // during it; the next frame presents.
+  ASSERT_FALSE(refinement.step(lod, false));
+  std::this_thread::sleep_for(
+      std::chrono::duration<double, std::milli>(ProgressiveRefinement::kPresentIntervalMs));
+  EXPECT_FALSE(refinement.presentsStep(false));
+  EXPECT_TRUE(refinement.presentsStep(true));  // input in that frame: presented after all
+  refinement.reportFrame(1.0);
+  EXPECT_TRUE(refinement.presentsStep(false));
+  ASSERT_FALSE(refinement.step(lod, true));
+  EXPECT_TRUE(refinement.presentsStep(false));
+  refinement.notePresented();
+  refinement.reportFrame(1.0);
+  EXPECT_FALSE(refinement.presentsStep(false));
   while (!refinement.step(lod)) {
   }
   EXPECT_TRUE(refinement.presentsStep(false));  // the finished picture
