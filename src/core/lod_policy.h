@@ -79,7 +79,6 @@ class LodPolicy {
   // The coarsest level this volume has (coarsestLevelFor; every level until set): the moving
   // level goes no coarser.
   void setCoarsestLevel(int level);
-  int coarsestLevel() const { return coarsest_; }
   // The window now has `pixelRatio` times the pixels the measurements were made at. Larger:
   // each measured frame is expected to cost that many times as much (the coarse levels' large
   // footprints are fill-bound on llvmpipe, and the present and swap grow with the window too:
