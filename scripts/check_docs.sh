@@ -5,7 +5,8 @@
 #   - a calendar date (2026-12-05),
 #   - "sitting" or "sittings",
 #   - a work session ("this session", "sessions", "the H200 session", "second session", ...),
-#   - a before/after story ("before/after", "against ... before"),
+#   - a before/after story ("before/after", "against 3.9 s for the build before",
+#     "before the fix"),
 #   - a commit hash (7 to 40 hex digits in backticks or parentheses),
 #   - an issue reference ("issue #12") or an issue's target ("the speed issue's target").
 # Exits 1 when anything matched, 0 otherwise. Run it from anywhere: scripts/check_docs.sh
@@ -19,7 +20,9 @@ patterns=(
   '\bsessions\b'
   '\bsession.s\b'
   '\bbefore\s*/\s*after\b'
-  '\bagainst\b[^.;:]*\bbefore\b'
+  '\bagainst\b[^.;:]*\b(builds?|code|commits?|versions?|shaders|programs|runs?|fix|change|sitting)\s+before\b'
+  '\b(the|a|its|that)\s+(build|version|commit|code)\s+before\b'
+  '\bbefore\s+(the|this|that|its)\s+(fix|change|commit|build|rewrite|patch)\b'
   '[`(](?=[0-9a-f]*[0-9])(?=[0-9a-f]*[a-f])[0-9a-f]{7,40}[`)]'
   '\bissues?\s*#[0-9]+'
   '\bissue.s\s+(target|limit|goal)'
