@@ -63,7 +63,7 @@ void addCompareOptions(CLI::App& app, CompareOptions& o) {
                  "EWA post-classification, pre-integrated: depth samples a slab, 4 (default) or 2")
       ->check(CLI::IsMember({2, 4}));
   app.add_option("--slab-thickness", o.settings.slabThickness,
-                 "EWA: slab thickness in voxels of the smallest spacing (default 2)")
+                 "EWA: slab thickness in voxel depths along the view (default 2)")
       ->check(CLI::Range(0.25, 1000.0));
   app.add_option("--slab-passes", o.text.slabPasses,
                  "EWA, 4 samples a slab: splat each slab once into both images (1) or once into "

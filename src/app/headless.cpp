@@ -7,20 +7,26 @@
 #include "app/frame_stats.h"
 #include "app/headless_session.h"
 #include "app/scene_render.h"
-#include "io/atomic_file.h"
+#include "io/input_guard.h"
 #include "io/png_io.h"
 
 namespace ewa {
 
-void refuseToOverwriteInputs(const std::string& output, const Options& o) {
-  for (const std::string& input : {o.file, o.tfFile}) {
-    if (!input.empty() && sameExistingFile(output, input))
-      throw std::runtime_error(output + ": is an input file; refusing to overwrite it");
-  }
+std::vector<std::string> sceneInputFiles(const Scene& scene, const Options& o) {
+  std::vector<std::string> inputs = scene.volume.sourceFiles();
+  for (const SceneChannel& channel : scene.moreChannels)
+    for (const std::string& file : channel.volume.sourceFiles()) inputs.push_back(file);
+  for (const std::string& file : {o.file, o.tfFile, o.bookmarks})
+    if (!file.empty()) inputs.push_back(file);
+  return inputs;
+}
+
+void refuseToOverwriteInputs(const std::string& output, const Scene& scene, const Options& o) {
+  refuseToReplaceInputs(output, sceneInputFiles(scene, o));
 }
 
 void renderHeadless(const Scene& scene, const Options& o) {
-  refuseToOverwriteInputs(o.output, o);
+  refuseToOverwriteInputs(o.output, scene, o);
   HeadlessSession session(o.backend, o.shaderDir);
   session.setAxes(o.axes);
   const std::vector<RenderLayer> layers = sceneLayers(scene);

@@ -127,11 +127,14 @@ int main(int argc, char** argv) {
   try {
     ewa::Scene scene = ewa::loadScene(options);
     if (!options.saveVolume.empty()) {
-      // With --crop, the box's voxels only; --info then describes what was written.
+      // With --crop, the box's voxels only; --info then describes what was written. The files
+      // read are kept from replacement whatever is written.
+      const std::vector<std::string> inputs = ewa::sceneInputFiles(scene, options);
       if (auto cropped = ewa::croppedForSaving(scene.volume, options.render.clip,
                                                options.file.empty() ? scene.name : options.file))
         scene.volume = std::move(*cropped);
-      for (const std::string& loss : ewa::writeVolumeAndLosses(options.saveVolume, scene.volume))
+      for (const std::string& loss :
+           ewa::writeVolumeAndLosses(options.saveVolume, scene.volume, inputs))
         std::cerr << "ewaview: note: " << options.saveVolume << ": " << loss << "\n";
       if (!options.info) return 0;
     }

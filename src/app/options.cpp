@@ -157,6 +157,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                  "--raw-spacing)")
       ->delimiter(',')
       ->expected(3);
+  bool allowOutsideData = false;
+  app.add_flag("--allow-outside-data", allowOutsideData,
+               "Let a detached header (.mhd, .nhdr, .dat) name data files outside its own folder");
   app.add_option("--camera-position", pos, "Camera position X,Y,Z")
       ->delimiter(',')
       ->expected(3)
@@ -197,14 +200,14 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
   app.add_option("--low-pass", lowPassText,
                  "EWA's screen low-pass filter: its variance in pixels^2, 0.1 to 1, or auto "
-                 "(default: 1 pre-classified, as the paper; 0.5 post-classified)")
+                 "(default auto: 1, the paper's, in every mode)")
       ->check(CLI::IsMember({"auto"}) | CLI::Range(0.1, 1.0));
   bool closeUp = false;
   app.add_flag("--close-up", closeUp,
                "Close-up setting, today the defaults: --classification post --slab-preintegration "
                "on --kernel-width 0.7 --cutoff 5; options given beside it win");
   app.add_option("--slab-thickness", o->render.slabThickness,
-                 "Slab thickness in voxels of the smallest spacing, 0.25 and up (default 2)")
+                 "Slab thickness in voxel depths along the view, 0.25 and up (default 2)")
       ->check(CLI::Range(0.25, 1000.0));
   std::string rendererName = "splat", lookup = "nearest", correction = "on", buffers = "slice";
   app.add_option("--renderer", rendererName,
@@ -368,6 +371,7 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       return usage("--spacing " + numberText(spacing[0]) + "," + numberText(spacing[1]) + "," +
                    numberText(spacing[2]) + ": each must be a positive number");
   o->load.spacing = toVec3(spacing);
+  if (allowOutsideData) o->load.dataFiles = DataFileScope::Anywhere;
   o->cameraPosition = toVec3(pos);
   o->cameraFocalPoint = toVec3(focal);
   o->cameraViewUp = toVec3(up);

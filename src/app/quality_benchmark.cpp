@@ -21,8 +21,8 @@ int referenceMargin(const QualityOptions& o) {
 FloatImage renderFloat(SplatRenderer& renderer, const Camera& camera, FilterMode filter, int size,
                        const QualityOptions& o) {
   RenderSettings settings;
-  // The filters are compared pre-classified, as the papers do and as the reference is made.
-  settings.classification.mode = ClassificationMode::Pre;
+  settings.classification.mode = o.classification;
+  settings.lowPass = o.lowPass;
   settings.filter = filter;
   settings.kernelWidth = o.kernelWidth;
   settings.cutoff = o.cutoff;

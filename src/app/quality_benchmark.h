@@ -24,6 +24,10 @@ struct QualityOptions {
   double sheetOpacity = -1.0;    // in (0, 1): replaces the sheet's opacity per voxel; else kept
   double kernelWidth = RenderSettings().kernelWidth;  // of the splats (and the splat reference)
   double cutoff = RenderSettings().cutoff;            // of their footprints
+  // The filters are compared pre-classified, as the papers do and as the reference is made;
+  // post-classified to hold the default mode to the same anti-aliasing.
+  ClassificationMode classification = ClassificationMode::Pre;
+  double lowPass = 0.0;  // RenderSettings::lowPass (0: automatic)
 };
 
 // Metrics of one image against the reference. Errors are over RGB in [0, 1].

@@ -26,9 +26,11 @@ namespace {
 // Renders `count` frames, frame f seen as `view(f)` says, into the sink --output names.
 void renderFrames(const Scene& scene, const Options& o, int count, const char* what,
                   const std::function<TourStop(int)>& view) {
-  refuseToOverwriteInputs(o.output, o);
+  refuseToOverwriteInputs(o.output, scene, o);
   // The sink checks or makes its folder or file first, so a bad path fails before rendering.
   const std::unique_ptr<FrameSink> sink = openFrameSink(o.output, count, o.fps);
+  // A frame's name may be a slice of the input stack (-o slices/ of the slices' own folder).
+  for (int f = 0; f < count; ++f) refuseToOverwriteInputs(sink->fileOf(f), scene, o);
   HeadlessSession session(o.backend, o.shaderDir);
   session.setAxes(o.axes);
   TerminalProgress progress(std::string("ewaview: ") + what);

@@ -31,10 +31,6 @@ struct FootprintParams {
   // 1/s^2 on a slab image s times coarser (slab_image_scale.h), the same filter in the picture.
   double lowPass = 1.0;
 };
-// The low-pass variance of post-classified splatting (RenderSettings::lowPass): the narrowest
-// round variance whose lattice of one-pixel footprints keeps its ripple under 1% at the default
-// cutoff 5 (0.16%; 0.45 gives 1.7%), as the kernel width 0.7 is chosen in voxels.
-constexpr double kPostClassifiedLowPass = 0.5;
 
 struct Footprint {
   bool visible = false;

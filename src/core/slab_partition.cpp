@@ -10,6 +10,14 @@
 
 namespace ewa {
 
+double viewSpacing(const glm::dmat3& rotation, const glm::dvec3& spacing) {
+  const double minSpacing = std::min({spacing.x, spacing.y, spacing.z});
+  const double depth = std::sqrt(cameraCovariance(rotation, spacing)[2][2]);
+  if (!(depth > minSpacing * (1.0 + 1e-9))) return minSpacing;
+  const double steps = std::round(8.0 * std::log2(depth / minSpacing));
+  return minSpacing * std::exp2(steps / 8.0);
+}
+
 void SlabPartition::build(const SplatSet& splats, const AttributeList& attributes,
                           const glm::dvec3& origin, const glm::dmat4& view, double thickness,
                           double nearCull, const DepthExtent& extent) {

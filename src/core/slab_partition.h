@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
@@ -28,6 +29,14 @@ struct DepthExtent {
   glm::dvec3 spacing{1.0};
   double kernelWidth = 1.0;  // kernels' sigma = kernelWidth * spacing (kernelSigma)
 };
+
+// The depth one voxel spans along the camera's view axis, the unit slab thicknesses are counted
+// in (RenderSettings::slabThickness): sqrt((W S W^T)_zz) for S = diag(spacing^2), so that a slab
+// holds as many voxel layers face-on to thick slices as to thin ones (7 mm slices of 0.86 mm
+// pixels seen face-on: 7 mm, not 0.86). Rounded to eighth-octave steps above the smallest
+// spacing, so that an orbiting camera changes it (and the pre-integration table built for it)
+// only now and then; exactly the spacing for isotropic voxels.
+double viewSpacing(const glm::dmat3& rotation, const glm::dvec3& spacing);
 
 class SlabPartition {
  public:

@@ -79,7 +79,9 @@ inline bool operator!=(const TransferFunction& a, const TransferFunction& b) {
 
 // A default for a volume, made from its histogram: transparent over the dominant background
 // values, a ramp of opacity above them, a warm bone-like color map, and
-// opacityUnitDistance = the smallest spacing.
+// opacityUnitDistance = the smallest spacing. A volume of at most 16 distinct values (a mask,
+// labels) gets its most common value transparent and every other value opaque, from a quarter
+// of the way to it on, in a colour each, so that structures one voxel thin stay visible.
 TransferFunction defaultTransferFunction(const Volume& volume);
 
 }  // namespace ewa

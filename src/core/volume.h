@@ -91,6 +91,10 @@ class Volume {
   // series in a folder. Warnings start with "warning: " and are printed when the file opens.
   const std::vector<std::string>& notes() const { return notes_; }
   void addNote(std::string note) { notes_.push_back(std::move(note)); }
+  // The files the volume was read from (the file opened, a header's data files, a series'
+  // slices), so that writers can refuse to replace any of them (--output, --save-volume).
+  const std::vector<std::string>& sourceFiles() const { return sourceFiles_; }
+  void addSourceFile(std::string path) { sourceFiles_.push_back(std::move(path)); }
   ScalarType type() const { return type_; }
   int64_t voxelCount() const { return dims_[0] * dims_[1] * dims_[2]; }
   const std::vector<uint8_t>& bytes() const { return bytes_; }
@@ -160,6 +164,7 @@ class Volume {
   int channel_ = 0, channelCount_ = 1;
   std::vector<SeriesChoice> seriesChoices_;
   std::vector<std::string> notes_;
+  std::vector<std::string> sourceFiles_;
   ScalarType type_ = ScalarType::UInt8;
   std::vector<uint8_t> bytes_;
   std::array<double, 2> range_{0.0, 0.0};

@@ -18,6 +18,7 @@
 #include "io/format_loaders.h"
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
+#include "io/scratch_cleanup.h"
 
 namespace ewa {
 
@@ -31,6 +32,10 @@ const std::vector<std::string>& archiveFileExtensions() {
 
 bool isArchiveName(const std::string& path) {
   return hasExtension(path, archiveFileExtensions());
+}
+
+ExtractedArchive::ExtractedArchive(std::string folder) : folder_(std::move(folder)) {
+  if (!folder_.empty()) registerScratchFolder(folder_);
 }
 
 ExtractedArchive::ExtractedArchive(ExtractedArchive&& other) noexcept
@@ -61,6 +66,7 @@ void ExtractedArchive::remove() {
   if (folder_.empty()) return;
   std::error_code ec;
   fs::remove_all(folder_, ec);
+  unregisterScratchFolder(folder_);
   folder_.clear();
 }
 
@@ -136,9 +142,46 @@ fs::path makeScratchFolder(const std::string& path) {
   failLoad(path, what + (why ? " (" + oneLine(why) + ")" : std::string()));
 }
 
+std::string sizeText(uint64_t bytes) {
+  return bytes >> 20 ? std::to_string(bytes >> 20) + " MiB" : std::to_string(bytes) + " bytes";
+}
+
+// What bounds an archive's unpacked size, and how to say it.
+struct UnpackBudget {
+  uint64_t bytes = 0;
+  std::string why;
+
+  [[noreturn]] void exceeded(const std::string& path) const {
+    failLoad(path, "unpacks to more than " + sizeText(bytes) + " (" + why + ")");
+  }
+};
+
+UnpackBudget unpackBudget(const std::string& path, const fs::path& root,
+                          const ArchiveLimits& limits) {
+  UnpackBudget budget{limits.maxBytes, "the limit set"};
+  if (budget.bytes == 0) {
+    std::error_code ec;
+    const fs::space_info space = fs::space(root, ec);
+    budget = {usableMemoryBytes(), "this machine's memory"};
+    if (!ec && space.available < budget.bytes)
+      budget = {space.available, "the scratch disk's free space"};
+  }
+  std::error_code ec;
+  const uint64_t packed = fs::file_size(path, ec);
+  if (!ec && limits.maxRatio > 0) {
+    const uint64_t byRatio =
+        packed > UINT64_MAX / limits.maxRatio ? UINT64_MAX : packed * limits.maxRatio;
+    const uint64_t cap = std::max(limits.ratioFloorBytes, byRatio);
+    if (cap < budget.bytes)
+      budget = {cap, std::to_string(limits.maxRatio) + " times the archive's " + sizeText(packed) +
+                         ": an archive bomb? unpack it yourself if it is not"};
+  }
+  return budget;
+}
+
 // Copies the current entry's data to `target`; `used` bytes are written already, of `budget`.
 uint64_t writeEntry(const std::string& path, archive* a, const fs::path& target,
-                    const std::string& name, uint64_t used, uint64_t budget) {
+                    const std::string& name, uint64_t used, const UnpackBudget& budget) {
   std::unique_ptr<FILE, decltype(&std::fclose)> out(std::fopen(target.c_str(), "wb"), &std::fclose);
   if (!out) failLoad(path, "cannot unpack " + quoteText(name) + " to the scratch folder");
   std::vector<char> buffer(1 << 18);
@@ -148,11 +191,7 @@ uint64_t writeEntry(const std::string& path, archive* a, const fs::path& target,
     if (got == 0) break;
     if (got < 0) failArchive(path, a, "a damaged archive: cannot read " + quoteText(name));
     written += uint64_t(got);
-    if (written > budget - used)
-      failLoad(path, "unpacks to more than " +
-                         (budget >> 20 ? std::to_string(budget >> 20) + " MiB"
-                                       : std::to_string(budget) + " bytes") +
-                         " (this machine's memory or the scratch disk's free space)");
+    if (written > budget.bytes - used) budget.exceeded(path);
     if (std::fwrite(buffer.data(), 1, size_t(got), out.get()) != size_t(got))
       failLoad(path, "cannot unpack " + quoteText(name) + " (is the scratch disk full?)");
   }
@@ -182,13 +221,7 @@ ExtractedArchive extractArchive(const std::string& path, const ArchiveLimits& li
 
   ExtractedArchive unpacked(makeScratchFolder(path).string());
   const fs::path root = unpacked.folder();
-  uint64_t budget = limits.maxBytes;
-  if (budget == 0) {
-    std::error_code ec;
-    const fs::space_info space = fs::space(root, ec);
-    budget = physicalMemoryBytes();
-    if (!ec) budget = std::min<uint64_t>(budget, space.available);
-  }
+  const UnpackBudget budget = unpackBudget(path, root, limits);
   for (;;) {
     archive_entry* entry = nullptr;
     const int status = archive_read_next_header(a, &entry);
@@ -201,6 +234,10 @@ ExtractedArchive extractArchive(const std::string& path, const ArchiveLimits& li
     }
     if (archive_entry_is_encrypted(entry))
       failLoad(path, quoteText(name.string()) + " is encrypted (unpack it with its password)");
+    // A declared size past the budget is refused before a byte of it is written.
+    if (archive_entry_size_is_set(entry) && archive_entry_size(entry) > 0 &&
+        uint64_t(archive_entry_size(entry)) > budget.bytes - unpacked.bytes)
+      budget.exceeded(path);
     if (unpacked.files >= limits.maxFiles)
       failLoad(path, "holds more than " + std::to_string(limits.maxFiles) + " files");
     std::error_code ec;

@@ -12,12 +12,18 @@ const std::vector<std::string>& archiveFileExtensions();
 // True when the file name of `path` ends in one of archiveFileExtensions().
 bool isArchiveName(const std::string& path);
 
-// Bounds on what one archive may unpack to, counted as it is written (the sizes its entries
-// declare are not trusted). 0 bytes: the machine's memory or the scratch disk's free space,
-// whichever is smaller (a volume unpacked must also fit in memory).
+// Bounds on what one archive may unpack to, counted as it is written; a size an entry declares
+// is checked before it is written, never trusted. maxBytes 0: the machine's memory or the
+// scratch disk's free space, whichever is smaller (a volume unpacked must also fit in memory).
+// Beyond ratioFloorBytes, the archive may unpack to at most maxRatio times its own size: real
+// volumes compress a few times to a few tens of times, archive bombs a thousand times and more,
+// and writing such a bomb out to the disk's limit would take minutes (libarchive and zlib
+// advise bounding the ratio for this reason).
 struct ArchiveLimits {
   uint64_t maxBytes = 0;
   uint64_t maxFiles = 100000;
+  uint64_t ratioFloorBytes = 1ull << 30;
+  uint64_t maxRatio = 100;
 };
 
 // A private folder (under the temporary directory, ewaview-archive-PID-XXXXXX) holding an
@@ -25,7 +31,8 @@ struct ArchiveLimits {
 // the process was killed first, by the next ewaview that unpacks an archive. Move-only.
 class ExtractedArchive {
  public:
-  explicit ExtractedArchive(std::string folder) : folder_(std::move(folder)) {}
+  // Registers `folder` for removal should a signal end the process (scratch_cleanup.h).
+  explicit ExtractedArchive(std::string folder);
   ExtractedArchive(ExtractedArchive&& other) noexcept;
   ExtractedArchive& operator=(ExtractedArchive&& other) noexcept;
   ExtractedArchive(const ExtractedArchive&) = delete;

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.h"
+#include "io/side_file.h"
 #include "io/clip_region_json.h"
 
 namespace ewa {
@@ -114,14 +115,14 @@ std::vector<CameraBookmark> bookmarksFromJson(const std::string& text, const std
       out.push_back(std::move(b));
     }
   } catch (const std::exception& e) {
-    throw std::runtime_error(name + ": " + e.what());
+    throw std::runtime_error(name + ": " + problemText(e));
   }
   return out;
 }
 
 std::vector<CameraBookmark> loadBookmarks(const std::string& path) {
   if (!std::filesystem::exists(path)) return {};
-  return bookmarksFromJson(readTextFile(path), path);
+  return bookmarksFromJson(readSideFile(path, "bookmarks file"), path);
 }
 
 void saveBookmarks(const std::string& path, const std::vector<CameraBookmark>& bookmarks,

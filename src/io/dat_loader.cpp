@@ -47,7 +47,7 @@ const std::string* findField(const std::map<std::string, std::string>& fields,
 
 }  // namespace
 
-Volume loadDat(const std::string& path) {
+Volume loadDat(const std::string& path, DataFileScope scope) {
   const uint64_t size = regularFileSize(path);
   if (size > kMaxHeaderBytes) failLoad(path, "too large for a .dat text header");
   const std::vector<uint8_t> raw = readFileRange(path, 0, size, "header");
@@ -106,6 +106,8 @@ Volume loadDat(const std::string& path) {
 
   const uint64_t total = dataByteCount(path, layout.dims, layout.type);
   const std::string dataPath = siblingPath(path, *fileName);
+  checkDataFileScope(path, dataPath, scope);
+  layout.sourceFiles.push_back(dataPath);
   std::vector<uint8_t> bytes = readFileRange(dataPath, static_cast<uint64_t>(skip), total);
   return makeVolume(path, layout, std::move(bytes));
 }

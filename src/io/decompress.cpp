@@ -120,20 +120,29 @@ std::vector<uint8_t> inflateExact(const std::string& path, const uint8_t* data, 
 
 std::vector<uint8_t> inflatePrefix(const std::string& path, const uint8_t* data, size_t size,
                                    uint64_t maxBytes, const std::string& what) {
+  return inflateWindow(path, data, size, 0, maxBytes, what);
+}
+
+std::vector<uint8_t> inflateWindow(const std::string& path, const uint8_t* data, size_t size,
+                                   uint64_t skip, uint64_t maxBytes, const std::string& what) {
   const std::string prefix = what + ": ";
-  checkAllocation(path, maxBytes, what + " after decompression");
+  if (skip > maxBytes) skip = maxBytes;
+  checkAllocation(path, maxBytes - skip, what + " after decompression");
   Inflater inflater;
   if (!inflater.ok()) failLoad(path, prefix + "cannot start zlib");
   z_stream& zs = inflater.stream();
-  const auto limit = static_cast<size_t>(maxBytes);
+  const auto limit = static_cast<size_t>(maxBytes - skip);
   // Grow as data comes, so a lying size costs nothing until the stream really holds the bytes.
   std::vector<uint8_t> out(std::min<size_t>(limit, size_t{1} << 16));
+  // The skipped bytes pass through this and are dropped: memory for the window alone.
+  std::vector<uint8_t> scratch(skip > 0 ? std::min<uint64_t>(skip, 1u << 20) : 0);
+  uint64_t skipLeft = skip;
   size_t produced = 0;
   const uint8_t* in = data;
   size_t inLeft = size;
   bool afterEnd = false;  // a gzip member ended: what follows may be another member or junk
   while (produced < limit) {
-    if (produced == out.size()) out.resize(std::min(limit, out.size() * 2));
+    if (skipLeft == 0 && produced == out.size()) out.resize(std::min(limit, out.size() * 2));
     if (zs.avail_in == 0 && inLeft > 0) {
       const size_t chunk = std::min(inLeft, kMaxChunk);
       zs.next_in = const_cast<Bytef*>(in);
@@ -141,11 +150,15 @@ std::vector<uint8_t> inflatePrefix(const std::string& path, const uint8_t* data,
       in += chunk;
       inLeft -= chunk;
     }
-    const size_t room = std::min(out.size() - produced, kMaxChunk);
-    zs.next_out = out.data() + produced;
+    const size_t room = skipLeft > 0 ? size_t(std::min<uint64_t>(skipLeft, scratch.size()))
+                                     : std::min(out.size() - produced, kMaxChunk);
+    zs.next_out = skipLeft > 0 ? scratch.data() : out.data() + produced;
     zs.avail_out = static_cast<uInt>(room);
     const int ret = inflate(&zs, Z_NO_FLUSH);
-    produced += room - zs.avail_out;
+    if (skipLeft > 0)
+      skipLeft -= room - zs.avail_out;
+    else
+      produced += room - zs.avail_out;
     if (room != zs.avail_out) afterEnd = false;
     if (ret == Z_OK) continue;
     if (ret == Z_STREAM_END) {

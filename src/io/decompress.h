@@ -22,6 +22,12 @@ std::vector<uint8_t> inflateExact(const std::string& path, const uint8_t* data, 
 std::vector<uint8_t> inflatePrefix(const std::string& path, const uint8_t* data, size_t size,
                                    uint64_t maxBytes, const std::string& what);
 
+// As inflatePrefix, but only bytes [skip, maxBytes) are kept (fewer when the stream ends
+// sooner): the bytes before `skip` are inflated and dropped, so reading one frame late in a
+// compressed file costs memory for that frame alone.
+std::vector<uint8_t> inflateWindow(const std::string& path, const uint8_t* data, size_t size,
+                                   uint64_t skip, uint64_t maxBytes, const std::string& what);
+
 // Decompresses a bzip2 stream (streams that follow one another are joined, as pbzip2 writes
 // them) that must yield exactly `expectedSize` bytes; otherwise as inflateExact.
 std::vector<uint8_t> bunzip2Exact(const std::string& path, const uint8_t* data, size_t size,

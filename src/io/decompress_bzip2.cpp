@@ -14,6 +14,12 @@ namespace {
 // libbz2 counts in unsigned int; feed and drain it in pieces it can count.
 constexpr size_t kMaxChunk = size_t{1} << 30;
 
+// bzip2, unlike deflate (at most 1032:1), has no useful bound on its ratio: a few kilobytes can
+// unpack to gigabytes of zeros. Real volumes compress a few times to a few hundred times, so a
+// header promising more than this ratio beyond this size is refused before decompressing.
+constexpr uint64_t kMaxPlausibleRatio = 2000;
+constexpr uint64_t kRatioFloorBytes = uint64_t{1} << 30;
+
 class Bunzipper {
  public:
   Bunzipper() { ok_ = BZ2_bzDecompressInit(&bs_, 0, 0) == BZ_OK; }
@@ -47,6 +53,11 @@ std::vector<uint8_t> bunzip2Exact(const std::string& path, const uint8_t* data, 
                                   uint64_t expectedSize, const std::string& what) {
   const std::string prefix = what + ": ";
   checkAllocation(path, expectedSize, what + " after decompression");
+  if (expectedSize > kRatioFloorBytes && expectedSize / kMaxPlausibleRatio > size)
+    failLoad(path, prefix + std::to_string(size) + " compressed bytes said to decompress to " +
+                       std::to_string(expectedSize) + " bytes, more than " +
+                       std::to_string(kMaxPlausibleRatio) +
+                       " times as many (a decompression bomb?)");
   Bunzipper bunzipper;
   if (!bunzipper.ok()) failLoad(path, prefix + "cannot start bzip2");
   bz_stream& bs = bunzipper.stream();

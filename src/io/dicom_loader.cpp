@@ -222,6 +222,7 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   else
     layout.type = fittingType(values, integral);
   layout.bigEndian = hostIsBigEndian();
+  for (const DicomSlice& s : files) layout.sourceFiles.push_back(s.file);
   return makeVolume(path, layout, encodeValues(values, layout.type));
 }
 

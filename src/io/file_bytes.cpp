@@ -145,6 +145,25 @@ std::string siblingPath(const std::string& headerPath, const std::string& name) 
   return (folder / file).string();
 }
 
+void checkDataFileScope(const std::string& headerPath, const std::string& dataPath,
+                        DataFileScope scope) {
+  if (scope == DataFileScope::Anywhere) return;
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path folderName = fs::path(headerPath).parent_path();
+  const fs::path folder = fs::weakly_canonical(folderName.empty() ? "." : folderName, ec);
+  std::error_code ec2;
+  const fs::path data = fs::weakly_canonical(dataPath, ec2);
+  bool inside = !ec && !ec2;
+  if (inside) {
+    const fs::path relative = data.lexically_relative(folder);
+    inside = !relative.empty() && *relative.begin() != ".." && relative.is_relative();
+  }
+  if (!inside)
+    failLoad(headerPath, "names the data file " + quoteText(dataPath) +
+                             " outside its own folder (--allow-outside-data opens it)");
+}
+
 FileSource::FileSource(std::string path, uint64_t base) : path_(std::move(path)), base_(base) {
   const uint64_t fileSize = regularFileSize(path_);
   if (base_ > fileSize) failLoad(path_, "data starts past the end of the file");

@@ -33,6 +33,18 @@ uint64_t skipLines(const std::string& path, uint64_t offset, int64_t lines);
 // A data file name from a header, relative to the header's folder unless absolute.
 std::string siblingPath(const std::string& headerPath, const std::string& name);
 
+// Where a detached header (MetaImage, NRRD, .dat) may name its data files.
+enum class DataFileScope {
+  HeaderFolder,  // the header's folder or below, links resolved (the default)
+  Anywhere       // any file the user can read (--allow-outside-data)
+};
+
+// Throws LoadError naming `headerPath` when `dataPath` (siblingPath's result) lies outside the
+// header's folder and `scope` is HeaderFolder: a header from elsewhere must not make ewaview
+// read, show or save files such as /etc/shadow or ../../secret.
+void checkDataFileScope(const std::string& headerPath, const std::string& dataPath,
+                        DataFileScope scope);
+
 // Random access to a block of bytes (part of a file or a decoded buffer), bounds-checked.
 class ByteSource {
  public:

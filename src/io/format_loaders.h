@@ -5,14 +5,19 @@
 #include <vector>
 
 #include "core/volume.h"
+#include "io/file_bytes.h"
 
 namespace ewa {
 
+// The detached headers below have their data files confined by `scope` (file_bytes.h).
 // .nrrd, .nhdr; of a 4D file, `frame` (time, lists) or `channel` (colour, vector kinds).
-Volume loadNrrd(const std::string& path, int frame, int channel);
+Volume loadNrrd(const std::string& path, int frame, int channel,
+                DataFileScope scope = DataFileScope::HeaderFolder);
 // .mhd, .mha; `channel` of ElementNumberOfChannels interleaved.
-Volume loadMetaImage(const std::string& path, int channel);
-Volume loadDat(const std::string& path);  // .dat (Voreen / Inviwo)
+Volume loadMetaImage(const std::string& path, int channel,
+                     DataFileScope scope = DataFileScope::HeaderFolder);
+// .dat (Voreen / Inviwo)
+Volume loadDat(const std::string& path, DataFileScope scope = DataFileScope::HeaderFolder);
 // .vti (VTK XML ImageData); `channel` of an array's NumberOfComponents.
 Volume loadVti(const std::string& path, int channel);
 // .nii, .nii.gz, .hdr/.img (NIfTI-1 and -2); `frame` of a 4D file, `channel` of RGB and RGBA.

@@ -174,6 +174,7 @@ Volume loadImageStack(const std::string& path, int channel) {
       });
   const bool grey = std::all_of(greyChunks.begin(), greyChunks.end(), [](char g) { return g; });
   layout.bigEndian = hostIsBigEndian();  // stb_image gives native order
+  layout.sourceFiles = files;
   layout.notes.push_back((files.size() == 1
                               ? std::string("1 image as a slice")
                               : std::to_string(files.size()) + " images as slices, in name order") +

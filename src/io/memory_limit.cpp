@@ -1,6 +1,7 @@
 // Physical-memory bound on header-driven allocations, so a lying header fails fast.
 #include "io/memory_limit.h"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cstddef>
@@ -26,11 +27,25 @@ uint64_t physicalMemoryBytes() {
   return bytes;
 }
 
+uint64_t usableMemoryBytes() {
+  uint64_t bytes = physicalMemoryBytes();
+  for (const int resource : {RLIMIT_AS, RLIMIT_DATA}) {
+    struct rlimit limit {};
+    if (getrlimit(resource, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY &&
+        uint64_t(limit.rlim_cur) < bytes)
+      bytes = uint64_t(limit.rlim_cur);
+  }
+  return bytes;
+}
+
 void checkAllocation(const std::string& path, uint64_t bytes, const std::string& what) {
-  if (bytes > std::numeric_limits<size_t>::max() || bytes > physicalMemoryBytes()) {
+  const uint64_t usable = usableMemoryBytes();
+  if (bytes > std::numeric_limits<size_t>::max() || bytes > usable) {
     failLoad(path, what + " of " + std::to_string(bytes) +
-                       " bytes is more than this machine's memory (" +
-                       std::to_string(physicalMemoryBytes()) + " bytes)");
+                       " bytes is more than this machine's memory (" + std::to_string(usable) +
+                       " bytes " +
+                       (usable < physicalMemoryBytes() ? "under this process's limit" : "in all") +
+                       ")");
   }
 }
 

@@ -64,9 +64,24 @@ void parseAxes(const std::string& path, const std::string& key, const std::strin
   for (size_t a = 0; a < count; ++a) out[a] = v[a];
 }
 
+// True for an AnatomicalOrientation that names one side of each patient axis ("RAI", "LPS"):
+// ITK writes "??" or "???" where it knows none, which says nothing about the axes.
+bool anatomicalCode(const std::string* value) {
+  if (!value) return false;
+  const std::string code = toLower(trim(*value));
+  if (code.size() != 3) return false;
+  bool seen[3] = {false, false, false};
+  for (const char c : code) {
+    const int axis = (c == 'r' || c == 'l') ? 0 : (c == 'a' || c == 'p') ? 1 : (c == 's' || c == 'i') ? 2 : -1;
+    if (axis < 0 || seen[axis]) return false;
+    seen[axis] = true;
+  }
+  return true;
+}
+
 }  // namespace
 
-Volume loadMetaImage(const std::string& path, int channel) {
+Volume loadMetaImage(const std::string& path, int channel, DataFileScope scope) {
   const uint64_t fileSize = regularFileSize(path);
   const std::string text = readFilePrefix(path, kMaxHeaderBytes, [](std::string_view t) {
     return headerEnd(t) != std::string_view::npos;
@@ -141,7 +156,7 @@ Volume loadMetaImage(const std::string& path, int channel) {
       break;
     }
   }
-  layout.patientFrame = field("anatomicalorientation") != nullptr;
+  layout.patientFrame = anatomicalCode(field("anatomicalorientation"));
   int64_t channels = 1;  // interleaved in each voxel (colour, vectors)
   if (const std::string* v = field("elementnumberofchannels"); v && !parseInt64(trim(*v), channels))
     failLoad(path, "bad ElementNumberOfChannels " + quoteText(*v));
@@ -164,6 +179,8 @@ Volume loadMetaImage(const std::string& path, int channel) {
     failLoad(path,
              "unsupported ElementDataFile " + quoteText(dataName) + " (need one file or LOCAL)");
   const std::string dataPath = local ? path : siblingPath(path, dataName);
+  checkDataFileScope(path, dataPath, scope);
+  layout.sourceFiles.push_back(dataPath);
   const uint64_t total = componentDataByteCount(path, layout.dims, layout.type, channels);
   const uint64_t dataFileSize = regularFileSize(dataPath);
 

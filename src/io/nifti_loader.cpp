@@ -125,14 +125,12 @@ Volume loadNifti(const std::string& path, int frame, int channel) {
       checkAllocation(dataPath, size, "compressed file");
       packed = readFileRange(dataPath, 0, size, "compressed file");
     }
-    std::vector<uint8_t> all = inflatePrefix(dataPath, packed.data(), packed.size(), end, "data");
-    if (all.size() < end)
-      failLoad(dataPath, "data inflate to " + std::to_string(all.size()) +
-                             " bytes, fewer than "
-                             "the " +
-                             std::to_string(end) +
+    // Only the frame is kept: the frames before it are inflated and dropped.
+    raw = inflateWindow(dataPath, packed.data(), packed.size(), start, end, "data");
+    if (raw.size() < frameBytes)
+      failLoad(dataPath, "data inflate to " + std::to_string(start + raw.size()) +
+                             " bytes, fewer than the " + std::to_string(end) +
                              " that vox_offset and the dims need (truncated file?)");
-    raw.assign(all.begin() + ptrdiff_t(start), all.end());
   } else {
     const uint64_t size = regularFileSize(dataPath);
     if (start > size)
@@ -155,6 +153,8 @@ Volume loadNifti(const std::string& path, int frame, int channel) {
   layout.bigEndian = hostIsBigEndian();
   layout.type = type;
   raw = pickComponent(headerPath, std::move(raw), components, channel, layout);
+  if (dataPath != path) layout.sourceFiles.push_back(dataPath);
+  if (headerPath != path) layout.sourceFiles.push_back(headerPath);
   if (!scaled) return makeVolume(path, layout, std::move(raw));
   const uint64_t count = frameBytes / typeSize;
   checkAllocation(headerPath, count * 4, "float32 volume");

@@ -137,9 +137,11 @@ int64_t pickVolume(const std::string& path, const NrrdHeader& h, int frame, int 
 
 }  // namespace
 
-Volume loadNrrd(const std::string& path, int frame, int channel) {
+Volume loadNrrd(const std::string& path, int frame, int channel, DataFileScope scope) {
   const NrrdHeader h = parseNrrdHeader(path);
   VolumeLayout layout = h.layout;
+  for (const std::string& file : h.dataFiles) checkDataFileScope(path, file, scope);
+  layout.sourceFiles = h.dataFiles;
   const uint64_t volumeBytes = dataByteCount(path, layout.dims, layout.type);
   int64_t index = 0;
   uint64_t total = volumeBytes;

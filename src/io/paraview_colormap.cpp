@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/side_file.h"
 #include "io/transfer_function_io.h"
 
 namespace ewa {
@@ -110,14 +111,7 @@ std::vector<ImportedColorMap> parseParaViewPresets(const std::string& text,
 }
 
 std::vector<ImportedColorMap> loadParaViewPresets(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw std::runtime_error(path + ": is a directory, not a preset file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open: " + std::strerror(errno));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return parseParaViewPresets(buffer.str(), path);
+  return parseParaViewPresets(readSideFile(path, "preset file"), path);
 }
 
 TransferFunction applyImportedColorMap(const TransferFunction& current, const ImportedColorMap& map,

@@ -163,6 +163,7 @@ std::optional<Volume> loadSinglePages(const std::string& path,
   });
   if (severalPages) return std::nullopt;
   layout.bigEndian = hostIsBigEndian();  // libtiff gives native order
+  layout.sourceFiles = files;
   return makeVolume(path, layout, std::move(bytes));
 }
 
@@ -267,6 +268,7 @@ Volume loadTiff(const std::string& path, int channel, int frame) {
   layout.dims = {int64_t(format.width), int64_t(format.height),
                  int64_t(bytes.size() / std::max<size_t>(pageBytes, 1))};
   layout.bigEndian = hostIsBigEndian();  // libtiff gives native order
+  layout.sourceFiles = files;
   return makeVolume(path, layout, std::move(bytes));
 }
 

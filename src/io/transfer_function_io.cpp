@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.h"
+#include "io/side_file.h"
 
 namespace ewa {
 namespace {
@@ -113,15 +114,7 @@ TransferFunction parseTransferFunctionJson(const std::string& text,
 }
 
 TransferFunction loadTransferFunction(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw std::runtime_error(path + ": is a directory, not a transfer-function file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open: " + std::strerror(errno));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw std::runtime_error(path + ": cannot read: " + std::strerror(errno));
-  return parseTransferFunctionJson(buffer.str(), path);
+  return parseTransferFunctionJson(readSideFile(path, "transfer-function file"), path);
 }
 
 std::string transferFunctionToJson(const TransferFunction& tf) {

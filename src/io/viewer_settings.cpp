@@ -10,6 +10,7 @@
 
 #include "core/kernel_lattice.h"
 #include "io/atomic_file.h"
+#include "io/side_file.h"
 #include "io/clip_region_json.h"
 
 namespace ewa {
@@ -147,14 +148,14 @@ ViewerSettings viewerSettingsFromJson(const std::string& text, const std::string
       }
     }
   } catch (const std::exception& e) {
-    throw std::runtime_error(name + ": " + e.what());
+    throw std::runtime_error(name + ": " + problemText(e));
   }
   return s;
 }
 
 ViewerSettings loadViewerSettings(const std::string& path) {
   if (!std::filesystem::exists(path)) return {};
-  return viewerSettingsFromJson(readTextFile(path), path);
+  return viewerSettingsFromJson(readSideFile(path, "settings file"), path);
 }
 
 void saveViewerSettings(const std::string& path, const ViewerSettings& settings) {

@@ -189,6 +189,9 @@ Volume makeVolume(const std::string& path, const VolumeLayout& layout, std::vect
     v.setChannel(layout.channel, layout.channelCount);
     v.setSeriesChoices(layout.seriesChoices);
     for (const std::string& note : layout.notes) v.addNote(note);
+    v.addSourceFile(path);
+    for (const std::string& file : layout.sourceFiles)
+      if (file != path) v.addSourceFile(file);
     for (std::string& note : notes) v.addNote(std::move(note));
     return v;
   } catch (const std::invalid_argument& e) {

@@ -27,6 +27,7 @@ struct VolumeLayout {
   int channel = 0, channelCount = 1;        // which of its channels (Volume::channel)
   std::vector<SeriesChoice> seriesChoices;  // Volume::seriesChoices
   std::vector<std::string> notes;           // for Volume::notes
+  std::vector<std::string> sourceFiles;     // read besides the file opened: Volume::sourceFiles
 };
 
 // Bytes of data the dims describe, after checking that every size is positive and that the

@@ -87,9 +87,10 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options,
   const std::string inner =
       gz ? toLower(std::filesystem::path(name.substr(0, name.size() - 3)).extension().string())
          : ext;
-  if (ext == ".nrrd" || ext == ".nhdr") return loadNrrd(path, options.frame, options.channel);
-  if (ext == ".mhd" || ext == ".mha") return loadMetaImage(path, options.channel);
-  if (ext == ".dat") return loadDat(path);
+  if (ext == ".nrrd" || ext == ".nhdr")
+    return loadNrrd(path, options.frame, options.channel, options.dataFiles);
+  if (ext == ".mhd" || ext == ".mha") return loadMetaImage(path, options.channel, options.dataFiles);
+  if (ext == ".dat") return loadDat(path, options.dataFiles);
   if (ext == ".vti") return loadVti(path, options.channel);
   if (ext == ".vtk") return loadVtkLegacy(path, options.channel);
   if (inner == ".nii" || inner == ".hdr" || inner == ".img")

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/volume.h"
+#include "io/file_bytes.h"
 #include "io/volume_layout.h"
 
 namespace ewa {
@@ -44,6 +45,8 @@ struct LoadOptions {
   int channel = 0;     // multi-channel TIFF, RGB DICOM: the channel to open
   // Replaces the file's spacing (--spacing: image slices have none, some files a wrong one).
   std::optional<glm::dvec3> spacing;
+  // Where a detached header may name its data files (--allow-outside-data: anywhere).
+  DataFileScope dataFiles = DataFileScope::HeaderFolder;
 };
 
 // Sets `spacing` (positive and finite; throws LoadError naming `path` otherwise) with a note

@@ -2,12 +2,15 @@
 // (--save-volume).
 #include "io/volume_writer.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <utility>
 
 #include "io/atomic_file.h"
 #include "io/deflate_encode.h"
+#include "io/input_guard.h"
 #include "io/metaimage_writer.h"
 #include "io/nifti_writer.h"
 #include "io/nrrd_writer.h"
@@ -27,6 +30,11 @@ const std::pair<const char*, SavedVolumeFormat> kFormats[] = {
     {".mhd", SavedVolumeFormat::MetaImageHeader},
     {".tif", SavedVolumeFormat::Tiff},
     {".tiff", SavedVolumeFormat::Tiff}};
+
+// The second name of a header's data file: NAME.1.raw, used when NAME.raw is the old pair's.
+std::string pairedName(const std::string& path) {
+  return std::filesystem::path(path).replace_extension(".1.raw").string();
+}
 
 }  // namespace
 
@@ -82,20 +90,40 @@ std::vector<std::string> savedVolumeLosses(const std::string& path, const Volume
 }
 
 void writeVolume(const std::string& path, const Volume& volume) {
+  writeVolume(path, volume, volume.sourceFiles());
+}
+
+void writeVolume(const std::string& path, const Volume& volume,
+                 const std::vector<std::string>& inputs) {
   const auto format = savedVolumeFormat(path);
   if (!format)
     throw std::runtime_error(path + ": volumes are saved as " + savedVolumeExtensionsText());
+  refuseToReplaceInputs(path, inputs);
   if (*format == SavedVolumeFormat::Nrrd) return writeFileAtomically(path, encodeNrrd(volume));
   if (*format == SavedVolumeFormat::MetaImage)
     return writeFileAtomically(path, encodeMetaImage(volume));
   if (*format == SavedVolumeFormat::MetaImageHeader) {
-    // The data first: a header is never left naming a file not yet there.
-    const std::string data = metaImageDataPath(path);
+    // The data first, under a name the old header does not use: the header's rename is the one
+    // step that swaps the old pair for the new.
+    const std::string old = metaImageDataFileOf(path);
+    const std::string data = metaImageDataPath(path, inputs);
+    refuseToReplaceInputs(data, inputs);
     const std::vector<uint8_t> bytes = metaImageData(volume);
     writeFileAtomically(
         data, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-    return writeFileAtomically(
+    writeFileAtomically(
         path, encodeMetaImageHeader(volume, std::filesystem::path(data).filename().string()));
+    // The old data, only where it is one of the names this writer gives and no input.
+    const std::vector<std::string> ours = {
+        std::filesystem::path(path).replace_extension(".raw").string(), pairedName(path)};
+    if (!old.empty() && !sameExistingFile(old, data) &&
+        std::any_of(ours.begin(), ours.end(), [&](const std::string& n) { return n == old; }) &&
+        std::none_of(inputs.begin(), inputs.end(),
+                     [&](const std::string& in) { return sameExistingFile(in, old); })) {
+      std::error_code ec;
+      std::filesystem::remove(old, ec);
+    }
+    return;
   }
   if (*format == SavedVolumeFormat::Tiff)
     return writeFileAtomically(path, encodeTiff(volume, path));
@@ -105,13 +133,41 @@ void writeVolume(const std::string& path, const Volume& volume) {
                       gzipBytes(reinterpret_cast<const uint8_t*>(nifti.data()), nifti.size()));
 }
 
-std::vector<std::string> writeVolumeAndLosses(const std::string& path, const Volume& volume) {
-  writeVolume(path, volume);
+std::vector<std::string> writeVolumeAndLosses(const std::string& path, const Volume& volume,
+                                              const std::vector<std::string>& inputs) {
+  writeVolume(path, volume, inputs);
   return savedVolumeLosses(path, volume);
 }
 
-std::string metaImageDataPath(const std::string& path) {
-  return std::filesystem::path(path).replace_extension(".raw").string();
+std::vector<std::string> writeVolumeAndLosses(const std::string& path, const Volume& volume) {
+  return writeVolumeAndLosses(path, volume, volume.sourceFiles());
+}
+
+std::string metaImageDataPath(const std::string& path, const std::vector<std::string>& inputs) {
+  const std::string first = std::filesystem::path(path).replace_extension(".raw").string();
+  const std::string old = metaImageDataFileOf(path);
+  const bool taken = (!old.empty() && (old == first || sameExistingFile(old, first))) ||
+                     std::any_of(inputs.begin(), inputs.end(), [&](const std::string& in) {
+                       return in == first || sameExistingFile(in, first);
+                     });
+  return taken ? pairedName(path) : first;
+}
+
+std::string metaImageDataFileOf(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return "";
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  // A header is a few hundred bytes; a line this far in is no header line of ours.
+  for (int n = 0; n < 64 && std::getline(in, line); ++n) {
+    const size_t eq = line.find('=');
+    if (eq == std::string::npos) continue;
+    if (toLower(trim(line.substr(0, eq))) != "elementdatafile") continue;
+    const std::string name = trim(line.substr(eq + 1));
+    if (name.empty() || toLower(name) == "local") return "";
+    return (std::filesystem::path(path).parent_path() / name).string();
+  }
+  return "";
 }
 
 }  // namespace ewa

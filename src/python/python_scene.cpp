@@ -288,7 +288,7 @@ void PythonScene::saveVolume(const std::string& path, const py::object& crop) co
                      savedVolumeExtensionsText());
   // What the format leaves out comes as Python warnings, as --save-volume's notes.
   auto write = [&](const Volume& v) {
-    for (const std::string& loss : writeVolumeAndLosses(path, v))
+    for (const std::string& loss : writeVolumeAndLosses(path, v, volume_->sourceFiles()))
       py::module_::import("warnings").attr("warn")(path + ": " + loss);
   };
   if (crop.is_none()) return write(*volume_);

@@ -84,11 +84,8 @@ struct RenderSettings {
   // ray caster close up, cheaper, and the filter-quality findings hold (the paper's is 1).
   double kernelWidth = 0.7;
   // EWA's screen-space low-pass filter: its variance in pixels^2, at most 1 (the paper's); 0:
-  // automatic (lowPassVariance): 1 pre-classified, where it band-limits the picture's colours
-  // as the paper does, and 0.5 post-classified, where it smooths the splatted field before the
-  // transfer function (which no filter on the field band-limits): the narrowest variance whose
-  // lattice of one-pixel footprints keeps its ripple under 1%, as the kernel width is chosen
-  // (docs/rendering.md, "Low-pass filter").
+  // automatic (lowPassVariance): 1 in every mode, so that minified kernels are band-limited
+  // pre- and post-classified alike (docs/dev/rendering.md, "Low-pass filter").
   double lowPass = 0.0;
   // Kernels' depth extent in squared standard deviations (at most the cutoff): each kernel's
   // depth profile is cut there (DepthProfile) and it is listed only in the slabs it reaches.

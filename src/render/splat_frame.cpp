@@ -84,14 +84,15 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     const FootprintParams params = footprintParams(settings, sp);
     const bool composite = settings.mode == RenderMode::Composite;
     // X-ray and MIP take every splat at once: a single slab of unbounded thickness.
-    const double thickness = composite ? slabThickness(settings, sp) : 1e30;
+    lastRotation_ = camera.rotation();
+    const double thickness = composite ? slabThickness(settings, sp, lastRotation_) : 1e30;
     DepthExtent extent;
     extent.reach = kernelReach(proj, settings.filter, settings.cutoff, sp, settings.kernelWidth,
                                settings.depthCutoff);
     extent.rotation = camera.rotation();
     extent.spacing = sp;
     extent.kernelWidth = settings.kernelWidth;
-    if (frame_.pairedSlabs) stats_.classifyMs += preparePairTable(settings);
+    if (frame_.pairedSlabs) stats_.classifyMs += preparePairTable(settings, thickness);
     syncAttributes(settings);
     frame_.gradientsPending = requestGradients(settings);  // on a worker: stepFrame waits
     stageStart = Clock::now();

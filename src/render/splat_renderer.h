@@ -259,11 +259,13 @@ class SplatRenderer : public Renderer {
   static bool quarterSlabs(const RenderSettings& settings);
   // The passes a slab of a frame with `settings` takes: the setting's, or auto's choice.
   int slabPassesFor(const RenderSettings& settings) const;
-  // The slabs' thickness in world units for a volume of this spacing.
-  static double slabThickness(const RenderSettings& settings, const glm::dvec3& spacing);
-  // Builds the pre-integration tables for `settings` unless they are up to date; returns the
-  // milliseconds it took (0 when nothing was built).
-  double preparePairTable(const RenderSettings& settings);
+  // The slabs' thickness in world units for a volume of this spacing seen through a camera of
+  // this rotation (viewSpacing).
+  static double slabThickness(const RenderSettings& settings, const glm::dvec3& spacing,
+                              const glm::dmat3& rotation);
+  // Builds the pre-integration tables for `settings` and slabs of `thickness` unless they are
+  // up to date; returns the milliseconds it took (0 when nothing was built).
+  double preparePairTable(const RenderSettings& settings, double thickness);
   // Post-classified and shaded from voxel normals: splats sum them into the normal image.
   static bool voxelNormalSums(const RenderSettings& settings);
   // The splat programs' variant for `settings` (clip: the volume is cut; texel buffers: the
@@ -530,6 +532,7 @@ class SplatRenderer : public Renderer {
   std::future<void> pendingPartition_;  // the CPU partition of frame_ on a worker thread
   // Measured, kept across frames: what budgeted steps' entries and slab finishes cost.
   StepCostModel stepCost_;
+  glm::dmat3 lastRotation_{1.0};  // the last frame's camera rotation (slabThickness)
   double finalMsPerPixel_ = 0.0;  // the last final pass timed by its wait (not by GPU timers)
 };
 

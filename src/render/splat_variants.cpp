@@ -82,7 +82,9 @@ void SplatRenderer::prepare(const RenderSettings& settings, int width, int heigh
   if (settings.mode != RenderMode::Composite) return;
   slabPrograms_.select(slabPassVariant(settings, false));
   if (settings.coarseSlabs) slabPrograms_.select(slabPassVariant(settings, true));
-  if (volume_ && pairedSlabs(settings)) preparePairTable(settings);
+  // The last frame's view; the table is built again if the next frame's differs.
+  if (volume_ && pairedSlabs(settings))
+    preparePairTable(settings, slabThickness(settings, volume_->spacing(), lastRotation_));
   requestGradients(settings);  // packed on a worker from now on
 }
 
@@ -116,14 +118,14 @@ int SplatRenderer::slabPassesFor(const RenderSettings& settings) const {
   return gpuTimers_ ? 1 + passTuner_.choice() : 1;
 }
 
-double SplatRenderer::slabThickness(const RenderSettings& settings, const glm::dvec3& spacing) {
-  return std::max(0.25, settings.slabThickness) * footprintParams(settings, spacing).minSpacing;
+double SplatRenderer::slabThickness(const RenderSettings& settings, const glm::dvec3& spacing,
+                                    const glm::dmat3& rotation) {
+  return std::max(0.25, settings.slabThickness) * viewSpacing(rotation, spacing);
 }
 
-double SplatRenderer::preparePairTable(const RenderSettings& settings) {
+double SplatRenderer::preparePairTable(const RenderSettings& settings, double thickness) {
   // Segments run between the values of half (quarter) slabs: the table's colours (their
   // self-attenuation) are for that length.
-  const double thickness = slabThickness(settings, volume_->spacing());
   const double samples = quarterSlabs(settings) ? 4.0 : 2.0;
   return pairTable_.prepare(tf_, volume_->minValue(), volume_->maxValue(), thickness / samples);
 }

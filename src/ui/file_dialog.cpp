@@ -68,11 +68,11 @@ std::optional<std::string> FileDialog::accept() {
     error_ = "no such folder: " + path.parent_path().string();
     return std::nullopt;
   }
-  // A MetaImage header (.mhd) replaces its NAME.raw too.
+  // A MetaImage header (.mhd) replaces the data file it names too.
   std::vector<std::string> existing;
   if (fs::exists(path, ec)) existing.push_back(path.filename().string());
   if (savedVolumeFormat(path.string()) == SavedVolumeFormat::MetaImageHeader) {
-    const fs::path data = metaImageDataPath(path.string());
+    const fs::path data = metaImageDataFileOf(path.string());
     if (fs::exists(data, ec)) existing.push_back(data.filename().string());
   }
   if (!existing.empty()) {

@@ -11,6 +11,7 @@
 #include "core/stopwatch.h"
 #include "gl/gpu_memory.h"
 #include "io/atomic_file.h"
+#include "io/side_file.h"
 #include "render/renderer_factory.h"
 #include "render/splat_renderer.h"
 #include "ui/viewer_window.h"
@@ -68,7 +69,7 @@ ViewerWindow::ViewerWindow(platform::GlfwWindowContext& window, LoadedVolume ini
       panel_(initial.name, *initial.volume) {
   if (!config_.configDir.empty()) {
     try {
-      imgui_.loadLayout(readTextFile(imguiIniPathIn(config_.configDir)));
+      imgui_.loadLayout(readSideFile(imguiIniPathIn(config_.configDir), "window layout file"));
     } catch (const std::exception&) {
       // No layout saved yet: ImGui's defaults.
     }

@@ -30,14 +30,14 @@ void VolumeSaveJob::start(std::shared_ptr<const Volume> volume, TransferFunction
       std::async(std::launch::async, [volume = std::move(volume), tf = std::move(tf), path, crop] {
         // The volume itself is not copied.
         const std::vector<std::string> losses =
-            crop ? writeVolumeAndLosses(path, cropVolume(*volume, *crop))
+            crop ? writeVolumeAndLosses(path, cropVolume(*volume, *crop), volume->sourceFiles())
                  : writeVolumeAndLosses(path, *volume);
         const std::string sidecar = sidecarTransferFunctionPath(path);
         saveTransferFunction(sidecar, tf);
         std::error_code ec;
         auto bytes = std::filesystem::file_size(path, ec);
         if (!ec && savedVolumeFormat(path) == SavedVolumeFormat::MetaImageHeader)
-          bytes += std::filesystem::file_size(metaImageDataPath(path), ec);  // and its data
+          bytes += std::filesystem::file_size(metaImageDataFileOf(path), ec);  // and its data
         char size[48];
         std::snprintf(size, sizeof size, " (%.1f MB)", ec ? 0.0 : double(bytes) / 1e6);
         return Saved{"saved " + path + size + " and its transfer function " +

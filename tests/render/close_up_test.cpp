@@ -79,13 +79,13 @@ TEST(CloseUp, PrefilterOptionTakesItsRangeOnly) {
 }
 
 TEST(CloseUp, LowPassSlabSamplesAndPassesOptions) {
-  // Automatic: the paper's unit variance pre-classified, 0.5 post-classified (and 1 again in
-  // X-ray and MIP, which are always pre-classified); a variance given is taken in any mode.
+  // Automatic: the paper's unit variance, post-classified too (and in X-ray and MIP); a
+  // variance given is taken in any mode.
   const Parsed plain = parse({"--synthetic", "sphere:8"});
   ASSERT_TRUE(plain.result.run);
   EXPECT_EQ(plain.options.render.slabSamples, 4);
   RenderSettings s = plain.options.render;
-  EXPECT_DOUBLE_EQ(lowPassVariance(s), kPostClassifiedLowPass);
+  EXPECT_DOUBLE_EQ(lowPassVariance(s), 1.0);
   s.mode = RenderMode::Mip;
   EXPECT_DOUBLE_EQ(lowPassVariance(s), 1.0);
   const Parsed pre = parse({"--synthetic", "sphere:8", "--classification", "pre"});

@@ -114,6 +114,38 @@ TEST(GlFaults, OutputNamingAnInputIsRefusedAndTheInputKept) {
   EXPECT_NE(readWholeFile(tf).find("opacity"), std::string::npos);
 }
 
+// The files a volume is read from, not only the one named: a stack's slices, a header's data.
+TEST(GlFaults, OutputNamingASliceOrDataFileOfTheInputIsRefused) {
+  const fs::path dir = scratch();
+  const fs::path slices = dir / "slices";
+  fs::create_directories(slices);
+  Image8 slice;
+  slice.width = 4, slice.height = 4, slice.channels = 3;
+  slice.pixels.assign(4 * 4 * 3, 90);
+  for (int n = 0; n < 3; ++n) writePng((slices / ("s" + std::to_string(n) + ".png")).string(), slice);
+  const std::string before = readWholeFile(slices / "s1.png");
+  CliRun r = ewaview(dir, slices.string() + " --resolution 16,16 --output " +
+                              (slices / "s1.png").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("is an input file"), std::string::npos) << r.err;
+  // A turntable whose frames would land on the slices: refused before a frame is drawn.
+  r = ewaview(dir, slices.string() + " --resolution 16,16 --turntable 3 --output " +
+                       (slices / "s%d.png").string());
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(readWholeFile(slices / "s1.png"), before);
+  // A MetaImage pair saved where its data file would be the input's: the input is kept, the new
+  // pair takes another data name.
+  const fs::path raw = dir / "scan.raw";
+  std::ofstream(raw, std::ios::binary) << std::string(8, '\x40');
+  std::ofstream(dir / "in.mhd") << "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\n"
+                                   "ElementType = MET_UCHAR\nElementDataFile = scan.raw\n";
+  r = ewaview(dir, (dir / "in.mhd").string() + " --save-volume " + (dir / "scan.mhd").string());
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(readWholeFile(raw), std::string(8, '\x40'));
+  EXPECT_TRUE(fs::exists(dir / "scan.1.raw"));
+}
+
 TEST(GlFaults, ScreenshotReplacesAFileWholeAndLeavesNoTemporaryFile) {
   const fs::path dir = scratch();
   const fs::path out = dir / "shot.png";

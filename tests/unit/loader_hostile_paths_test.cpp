@@ -1,6 +1,7 @@
 // Detached headers that name hostile data files: devices, FIFOs, folders, /proc files and
-// the header itself. Reading ordinary files is allowed (NRRD allows any path); these must fail
-// fast with one line, never block, and never write anything.
+// the header itself. Outside the header's folder they are refused by default; with
+// --allow-outside-data (any path, as NRRD allows) these must still fail fast with one line,
+// never block, and never write anything.
 #include <sys/stat.h>
 
 #include "loader_test_files.h"
@@ -8,8 +9,15 @@
 namespace ewa {
 namespace {
 
-using testing::expectVolumeLoadError;
+using testing::expectLoadError;
 using testing::TempDir;
+
+// Loads as --allow-outside-data does, so that the data file's own checks are what refuses it.
+void expectVolumeLoadError(const std::string& path, const std::string& fragment) {
+  LoadOptions anywhere;
+  anywhere.dataFiles = DataFileScope::Anywhere;
+  expectLoadError([&] { loadVolume(path, anywhere); }, path, fragment);
+}
 
 std::string nhdr(const std::string& dataFile) {
   return "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 4 4 4\nencoding: raw\ndata file: " +
@@ -18,6 +26,9 @@ std::string nhdr(const std::string& dataFile) {
 
 TEST(LoaderHostilePaths, DevicesFifosFoldersAndProcFilesAreRefused) {
   TempDir dir;
+  // By default a header may not name them at all.
+  testing::expectVolumeLoadError(dir.write("etc.nhdr", nhdr("/dev/zero")),
+                                 "outside its own folder");
   expectVolumeLoadError(dir.write("zero.nhdr", nhdr("/dev/zero")), "not a regular file");
   expectVolumeLoadError(dir.write("null.nhdr", nhdr("/dev/null")), "not a regular file");
   ASSERT_EQ(mkfifo(dir.path("pipe").c_str(), 0600), 0);

@@ -71,7 +71,7 @@ TEST(MetaImageWriter, AHeaderAndItsDataBesideItReadBack) {
     EXPECT_EQ(header.size(), header.find("ElementDataFile = ") + 18 + 7)  // "vN.raw\n" ends it
         << header;
     EXPECT_EQ(headerLine(header, "CompressedData"), "CompressedData = False");
-    EXPECT_EQ(readTextFile(metaImageDataPath(path)),
+    EXPECT_EQ(readTextFile(metaImageDataFileOf(path)),
               std::string(v.bytes().begin(), v.bytes().end()));  // a little-endian host
   }
   EXPECT_EQ(metaImageDataPath("/a/ct.scan.mhd"), "/a/ct.scan.raw");

@@ -202,6 +202,27 @@ TEST(DefaultTransferFunction, AVolumeWithoutBackgroundShowsItsMainMaterial) {
   EXPECT_LT(tf.alphaAt(150.0), tf.alphaAt(250.0));
 }
 
+// Masks and labels: the background clear, every label opaque from a quarter of the way to it
+// (a structure one voxel thin reconstructs to about a third of its value), each its own colour.
+TEST(DefaultTransferFunction, MasksAndLabelsShowEveryLabelFromAQuarterOfTheWay) {
+  const int n = 16;
+  std::vector<uint8_t> mask(n * n * n, 0), labels(n * n * n, 0);
+  for (int v = 0; v < n * n * n; v += 97) mask[v] = 255;
+  for (int v = 0; v < n * n * n; v += 31) labels[v] = uint8_t(1 + v % 3);
+  const TransferFunction binary = defaultTransferFunction(
+      Volume({n, n, n}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8, mask));
+  EXPECT_NO_THROW(binary.validate());
+  EXPECT_EQ(binary.alphaAt(0.0), 0.0);
+  EXPECT_GT(binary.alphaAt(0.3 * 255.0), 0.5);
+  EXPECT_GT(binary.alphaAt(255.0), 0.5);
+  const TransferFunction tf = defaultTransferFunction(
+      Volume({n, n, n}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8, labels));
+  EXPECT_EQ(tf.alphaAt(0.0), 0.0);
+  for (double v : {0.3, 1.0, 2.0, 3.0}) EXPECT_GT(tf.alphaAt(v), 0.5) << v;
+  EXPECT_NE(tf.colorAt(1.0), tf.colorAt(2.0));
+  EXPECT_NE(tf.colorAt(2.0), tf.colorAt(3.0));
+}
+
 TEST(DefaultTransferFunction, ConstantAndEmptyVolumesGiveValidFunctions) {
   const Volume constant({4, 4, 4}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8,
                         std::vector<uint8_t>(64, 7));
