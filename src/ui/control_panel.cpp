@@ -84,7 +84,6 @@ PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& le
   layout_.window("panel");
   if (visible) {
     drawVolume(edits);
-    call(sections.status);
     call(sections.files);
     drawView(settings, camera, axes, edits);
     const bool clipOpen = ImGui::CollapsingHeader("Crop and clip");
@@ -108,6 +107,8 @@ PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& le
     ImGui::TextDisabled("double-click: centre  M: mark");
     ImGui::SameLine();
     edits.keysHelp = ImGui::SmallButton("keys (F1)");
+    // Last, so that a message coming or going moves no control above it.
+    call(sections.status);
   }
   ImGui::End();
   return edits;

@@ -55,7 +55,7 @@ struct PanelEdits {
 // (what a person exploring a volume changes first, the renderer's own knobs last); any may be
 // empty.
 struct PanelSections {
-  std::function<void()> status;    // loading progress, busy work, messages
+  std::function<void()> status;    // loading progress, busy work, messages (at the end)
   std::function<void()> files;     // "File": open, save, reload, recent files
   std::function<void()> clip;      // under the "Crop and clip" header, while it is open
   std::function<void()> captures;  // "Camera bookmarks", "Capture": screenshot, turntable, tour
@@ -68,7 +68,8 @@ class ControlPanel {
 
   // Builds the panel between ImGuiLayer::beginFrame and render, editing `settings` and
   // `camera` in place: the volume, its file, the view (render mode, colours, camera), crop and
-  // clip, bookmarks and capture, then the collapsed "Advanced rendering" and the statistics.
+  // clip, bookmarks and capture, then the collapsed "Advanced rendering", the statistics and
+  // the messages.
   // `levelOfDetail` is the "coarser while moving" switch, `axes` the orientation axes'.
   PanelEdits draw(RenderSettings& settings, Camera& camera, bool& levelOfDetail, bool& axes,
                   const FrameStats& stats, const PanelSections& sections = {});
