@@ -27,7 +27,7 @@ void setPlaneOffset(ClipPlane& plane, const glm::dvec3& centre, double offset) {
 }
 
 ClipPanelEdits drawClipControls(ClipRegion& region, const glm::dvec3& lo, const glm::dvec3& hi,
-                             const Camera& camera) {
+                                const Camera& camera) {
   ClipPanelEdits edits;
   const auto note = [&edits](bool changed) {
     edits.changed |= changed;

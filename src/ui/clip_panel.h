@@ -20,7 +20,7 @@ struct ClipPanelEdits {
 // crop box starts as it, sliders span it); new planes go through `camera`'s focal point with
 // their normal towards the camera (the half facing the viewer is cut away).
 ClipPanelEdits drawClipControls(ClipRegion& region, const glm::dvec3& boundsMin,
-                             const glm::dvec3& boundsMax, const Camera& camera);
+                                const glm::dvec3& boundsMax, const Camera& camera);
 
 // The plane through camera's focal point facing the camera, keeping the far half.
 ClipPlane planeFacingCamera(const Camera& camera);

@@ -95,8 +95,8 @@ PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& le
     }
     call(sections.captures);
     bool lodChanged = false;
-    edits.settings |= drawAdvancedRendering(settings, valueRange_[0], valueRange_[1],
-                                            levelOfDetail, &lodChanged, layout_);
+    edits.settings |= drawAdvancedRendering(settings, valueRange_[0], valueRange_[1], levelOfDetail,
+                                            &lodChanged, layout_);
     edits.levelOfDetail = lodChanged;
     const bool statsOpen = ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen);
     layout_.lastItem("section-stats");

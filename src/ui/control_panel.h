@@ -36,18 +36,18 @@ void drawRefinementOverlay(double progress);
 
 // What the user changed this frame.
 struct PanelEdits {
-  bool settings = false;              // the RenderSettings were edited
-  bool camera = false;                // the Camera was edited (projection, view angle)
-  bool resetCamera = false;           // "Reset camera" was pressed
-  bool copyView = false;              // "Copy view": the view as command-line options
-  bool keysHelp = false;              // "keys (F1)": the keys window shown or hidden
-  std::optional<AxisView> axisView;   // a view along an axis was asked for
-  bool levelOfDetail = false;         // the level-of-detail checkbox changed
-  bool axes = false;                  // the orientation axes checkbox changed
-  int frameStep = 0;                  // -1 or +1: the file's previous or next volume
-  int channelStep = 0;                // -1 or +1: its previous or next channel
-  std::optional<std::string> series;  // another series of the folder was chosen: its id
-  std::optional<glm::dvec3> spacing;  // the file to be opened again with this voxel spacing
+  bool settings = false;                // the RenderSettings were edited
+  bool camera = false;                  // the Camera was edited (projection, view angle)
+  bool resetCamera = false;             // "Reset camera" was pressed
+  bool copyView = false;                // "Copy view": the view as command-line options
+  bool keysHelp = false;                // "keys (F1)": the keys window shown or hidden
+  std::optional<AxisView> axisView;     // a view along an axis was asked for
+  bool levelOfDetail = false;           // the level-of-detail checkbox changed
+  bool axes = false;                    // the orientation axes checkbox changed
+  int frameStep = 0;                    // -1 or +1: the file's previous or next volume
+  int channelStep = 0;                  // -1 or +1: its previous or next channel
+  std::optional<std::string> series;    // another series of the folder was chosen: its id
+  std::optional<glm::dvec3> spacing;    // the file to be opened again with this voxel spacing
   std::optional<std::string> tfPreset;  // a transfer-function preset was chosen: its name
 };
 

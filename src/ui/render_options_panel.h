@@ -1,5 +1,4 @@
-// The panel's render-mode row (composite, X-ray, MIP; X-ray's map and scale) and the advanced
-// section's compositing order, termination, shading terms and surface splats.
+// The panel's render-mode row and the advanced section's compositing, shading and surfaces.
 #pragma once
 
 #include "render/renderer.h"
