@@ -66,7 +66,7 @@ header capture-header "Capture (collapsed): screenshot (F12) and its size, turnt
 header section-advanced "Advanced rendering (collapsed): the renderer's own knobs (renderer, filter, cutoff, depth cutoff, kernel width, classification, prefilter, slab floats and thickness, coarse slabs, coarser while moving, compositing and surfaces)"
 header section-stats "Statistics: render and frame times, refinement, image size and level, GPU memory, splats and slabs"
 label $((px + pw - 16)) $((py + ph - 18)) "mouse hints and 'keys (F1)': the list of keys"
-read -r _ tx ty tw th <<<"$(place_of tf-canvas)"
+read -r _ tx ty tw _ <<<"$(place_of tf-canvas)"
 label $((tx + tw - 20)) $((ty + 20)) "Transfer-function editor: opacity points over the histogram, colour bar, undo/redo, presets, save, load, ParaView import"
 label $(((px + pw + tx) / 2)) $((height / 2 + 150)) "The view: the volume (left drag orbits, right drag or wheel zooms, middle drag pans, double-click centres)"
 label $((width - 115)) $((height - 150)) "Orientation axes (X switches them)"

@@ -89,7 +89,7 @@ awk -v c="$coverage" 'BEGIN { exit !(c > 0.15) }' ||
   fail "the default volume covers only $coverage of the picture's middle"
 
 # Opened, "Advanced rendering" shows the knobs below its header.
-read -r _ ax ay aw ah <<<"$(place_of section-advanced)"
+read -r _ ax ay _ ah <<<"$(place_of section-advanced)"
 xdotool mousemove --window "$wid" $((ax + 40)) $((ay + ah / 2)); sleep 0.3; xdotool click 1
 poll "the cutoff slider's layout line" has knob-cutoff
 for knob in $knobs; do
