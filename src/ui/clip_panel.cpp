@@ -1,4 +1,4 @@
-// The "Crop and clip" window (ImGui): crop box numbers, planes from the view, offsets, on/off.
+// The panel's "Crop and clip" section: crop box numbers, planes from the view, offsets, on/off.
 #include "ui/clip_panel.h"
 
 #include <imgui.h>
@@ -26,23 +26,13 @@ void setPlaneOffset(ClipPlane& plane, const glm::dvec3& centre, double offset) {
   plane.point += (offset - glm::dot(plane.point - centre, n)) * n;
 }
 
-ClipPanelEdits drawClipPanel(ClipRegion& region, const glm::dvec3& lo, const glm::dvec3& hi,
-                             const Camera& camera) {
+ClipPanelEdits drawClipControls(ClipRegion& region, const glm::dvec3& lo, const glm::dvec3& hi,
+                                const Camera& camera) {
   ClipPanelEdits edits;
   const auto note = [&edits](bool changed) {
     edits.changed |= changed;
     edits.dragging |= ImGui::IsItemActive();
   };
-  // Out of the way until asked for: a collapsed title bar below the transfer-function editor
-  // (its left edge: tf_editor.cpp), off the middle of the picture.
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x - 386.0f, 360.0f), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowBgAlpha(0.85f);
-  if (!ImGui::Begin("Crop and clip", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::End();
-    return edits;
-  }
   const glm::dvec3 size = hi - lo, centre = 0.5 * (lo + hi);
   ImGui::PushItemWidth(220.0f);
   bool crop = region.cropEnabled;
@@ -136,7 +126,6 @@ ClipPanelEdits drawClipPanel(ClipRegion& region, const glm::dvec3& lo, const glm
       ImGui::SetTooltip("Through the focal point, facing the camera: the near half is cut away");
   }
   ImGui::PopItemWidth();
-  ImGui::End();
   return edits;
 }
 

@@ -8,16 +8,13 @@
 #include <cstdio>
 #include <utility>
 
-#include "core/kernel_lattice.h"
+#include "core/transfer_function_presets.h"
+#include "ui/advanced_rendering_panel.h"
 #include "ui/render_options_panel.h"
 
 namespace ewa {
 
 namespace {
-
-// The combo's order, best filter first.
-constexpr FilterMode kFilters[] = {FilterMode::Ewa, FilterMode::Swan, FilterMode::Plain};
-constexpr RenderMode kModes[] = {RenderMode::Composite, RenderMode::XRay, RenderMode::Mip};
 
 // A slider over a double (the settings are doubles; ImGui's float sliders would round them).
 bool sliderDouble(const char* label, double* value, double lo, double hi, const char* format,
@@ -76,217 +73,127 @@ std::optional<glm::dvec3> ControlPanel::drawSpacing() {
 }
 
 PanelEdits ControlPanel::draw(RenderSettings& settings, Camera& camera, bool& levelOfDetail,
-                              bool& axes, const FrameStats& stats) {
+                              bool& axes, const FrameStats& stats, const PanelSections& sections) {
   PanelEdits edits;
+  const auto call = [](const std::function<void()>& section) {
+    if (section) section();
+  };
   ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.85f);
-  if (ImGui::Begin("ewaview", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::TextUnformatted(volumeName_.c_str());
-    ImGui::TextDisabled("%s", volumeText_.c_str());
-    if (frameCount_ > 1) {  // a 4D file: page through its volumes
-      if (ImGui::ArrowButton("##previous frame", ImGuiDir_Left)) edits.frameStep = -1;
-      ImGui::SameLine();
-      if (ImGui::ArrowButton("##next frame", ImGuiDir_Right)) edits.frameStep = 1;
-      ImGui::SameLine();
-      ImGui::Text("frame %d of %d (Page Up, Page Down)", frame_, frameCount_);
+  const bool visible = ImGui::Begin("ewaview", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  layout_.window("panel");
+  if (visible) {
+    drawVolume(edits);
+    call(sections.files);
+    drawView(settings, camera, axes, edits);
+    const bool clipOpen = ImGui::CollapsingHeader("Crop and clip");
+    layout_.lastItem("section-clip");
+    if (clipOpen) {
+      ImGui::PushID("clip");  // its planes' buttons beside the bookmarks' ("x")
+      call(sections.clip);
+      ImGui::PopID();
     }
-    if (channelCount_ > 1) {  // RGB, a microscope's channels: one at a time
-      if (ImGui::ArrowButton("##previous channel", ImGuiDir_Left)) edits.channelStep = -1;
-      ImGui::SameLine();
-      if (ImGui::ArrowButton("##next channel", ImGuiDir_Right)) edits.channelStep = 1;
-      ImGui::SameLine();
-      ImGui::Text("channel %d of %d (C, Shift+C)", channel_, channelCount_);
-    }
-    if (series_.size() > 1) edits.series = drawSeries();
-    if (fromFile_) edits.spacing = drawSpacing();
+    call(sections.captures);
+    bool lodChanged = false;
+    edits.settings |= drawAdvancedRendering(settings, valueRange_[0], valueRange_[1], levelOfDetail,
+                                            &lodChanged, layout_);
+    edits.levelOfDetail = lodChanged;
+    const bool statsOpen = ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen);
+    layout_.lastItem("section-stats");
+    if (statsOpen) drawStats(stats);
     ImGui::Separator();
-    edits.settings = drawSettings(settings);
-    ImGui::Separator();
-    edits.camera = drawCamera(camera);
-    edits.axisView = drawAxisViews();
-    ImGui::SameLine();
-    edits.copyView = ImGui::SmallButton("copy view");
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip(
-          "Ctrl+C: the camera, picture size and crop as command-line options, to render this "
-          "view headless");
-    edits.resetCamera = ImGui::Button("Reset camera (R)");
-    ImGui::SameLine();
-    edits.levelOfDetail = ImGui::Checkbox("coarser while moving", &levelOfDetail);
-    ImGui::SameLine();
-    edits.axes = ImGui::Checkbox("axes (X)", &axes);
-    ImGui::Separator();
-    drawStats(stats);
-    // Short, so the button beside it keeps the panel's width; F1 lists the rest.
+    // Short, so that the panel stays narrow and leaves the picture room; F1 lists the rest.
     ImGui::TextDisabled("left: orbit  right/wheel: zoom  middle: pan");
+    ImGui::TextDisabled("double-click: centre  M: mark");
     ImGui::SameLine();
     edits.keysHelp = ImGui::SmallButton("keys (F1)");
-    ImGui::TextDisabled("double-click: centre there  M: mark (probe gives distance)");
+    // Last, so that a message coming or going moves no control above it.
+    call(sections.status);
   }
   ImGui::End();
   return edits;
 }
 
-bool ControlPanel::drawSettings(RenderSettings& settings) {
-  bool changed = false;
-  ImGui::PushItemWidth(180.0f);
-
-  int kind = int(settings.renderer);
-  const char* kinds[] = {"EWA splatting (GPU)", "shear-warp (CPU)"};
-  if (ImGui::Combo("renderer", &kind, kinds, 2) && kind != int(settings.renderer)) {
-    settings.renderer = RendererKind(kind);
-    changed = true;
+// The volume's name and size, and its file's other frames, channels and series.
+void ControlPanel::drawVolume(PanelEdits& edits) {
+  ImGui::TextUnformatted(volumeName_.c_str());
+  ImGui::TextDisabled("%s", volumeText_.c_str());
+  if (frameCount_ > 1) {  // a 4D file: page through its volumes
+    if (ImGui::ArrowButton("##previous frame", ImGuiDir_Left)) edits.frameStep = -1;
+    ImGui::SameLine();
+    if (ImGui::ArrowButton("##next frame", ImGuiDir_Right)) edits.frameStep = 1;
+    ImGui::SameLine();
+    ImGui::Text("frame %d of %d (Page Up, Page Down)", frame_, frameCount_);
   }
-  const bool shearWarp = settings.renderer == RendererKind::ShearWarp;
-  if (shearWarp) changed |= drawShearWarp(settings.shearWarp);
-  ImGui::BeginDisabled(shearWarp);  // the splat renderer's own settings
-
-  int filter = 0;
-  for (int i = 0; i < 3; ++i)
-    if (kFilters[i] == settings.filter) filter = i;
-  if (ImGui::BeginCombo("filter", filterModeName(kFilters[filter]))) {
-    for (int i = 0; i < 3; ++i) {
-      if (ImGui::Selectable(filterModeName(kFilters[i]), i == filter) && i != filter) {
-        settings.filter = kFilters[i];
-        changed = true;
-      }
-    }
-    ImGui::EndCombo();
+  if (channelCount_ > 1) {  // RGB, a microscope's channels: one at a time
+    if (ImGui::ArrowButton("##previous channel", ImGuiDir_Left)) edits.channelStep = -1;
+    ImGui::SameLine();
+    if (ImGui::ArrowButton("##next channel", ImGuiDir_Right)) edits.channelStep = 1;
+    ImGui::SameLine();
+    ImGui::Text("channel %d of %d (C, Shift+C)", channel_, channelCount_);
   }
-
-  changed |= sliderDouble("cutoff", &settings.cutoff, 1.0, 16.0, "%.2f");
-  // The kernels' depth profile: cut at sqrt(depth cutoff) sigma (fewer slabs a kernel), or not.
-  bool cut = std::isfinite(settings.depthCutoff);
-  if (ImGui::Checkbox("cut depth profile", &cut)) {
-    settings.depthCutoff = cut ? RenderSettings().depthCutoff : INFINITY;
-    changed = true;
+  if (series_.size() > 1) edits.series = drawSeries();
+  // Rarely wanted (image slices have none, a few files a wrong one): folded away.
+  if (fromFile_ && ImGui::TreeNode("voxel spacing")) {
+    edits.spacing = drawSpacing();
+    ImGui::TreePop();
   }
-  if (cut) changed |= sliderDouble("depth cutoff", &settings.depthCutoff, 0.25, 16.0, "%.2f");
-  changed |=
-      sliderDouble("kernel width", &settings.kernelWidth, kMinKernelWidth, kMaxKernelWidth, "%.2f");
-  // Post-classification splats values and classifies per pixel: no surface splats there.
-  bool post = settings.classification.mode == ClassificationMode::Post;
-  if (ImGui::Checkbox("post-classified", &post)) {
-    settings.classification.mode = post ? ClassificationMode::Post : ClassificationMode::Pre;
-    if (post) settings.classification.surface = SurfaceCriterion::None;
-    changed = true;
-  }
-  ImGui::BeginDisabled(!post);
-  ImGui::SameLine();
-  changed |= ImGui::Checkbox("pre-integrated", &settings.slabPreintegration);
-  ImGui::EndDisabled();
-  // Depth samples a slab: its quarters (nearer a ray caster close up) or its halves (cheaper).
-  ImGui::BeginDisabled(!post || !settings.slabPreintegration);
-  bool quarters = settings.slabSamples >= 4;
-  if (ImGui::Checkbox("4 samples a slab", &quarters)) {
-    settings.slabSamples = quarters ? 4 : 2;
-    changed = true;
-  }
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip(
-        "Post-classified, pre-integrated: each slab's value at 4 depths (its quarters) or 2 "
-        "(its halves: cheaper, softer in depth; ewaview --slab-samples)");
-  ImGui::EndDisabled();
-  ImGui::SameLine();
-  if (ImGui::Button("close-up")) {
-    applyCloseUpSettings(&settings);
-    changed = true;
-  }
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "Post-classified, pre-integrated, kernel width 0.7, cutoff 5, prefilter 0.04: nearest "
-        "to a ray caster close up (ewaview --close-up)");
-  int precision = int(settings.slabPrecision);
-  const char* precisions[] = {"auto", "half", "float"};
-  ImGui::SetNextItemWidth(90.0f);
-  if (ImGui::Combo("slab floats", &precision, precisions, 3)) {
-    settings.slabPrecision = SlabPrecision(precision);
-    changed = true;
-  }
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "Slab images of half floats (about twice as fast on a GPU, within a few levels) or "
-        "floats; auto: half for kernel widths up to 1 unless shaded and post-classified "
-        "(ewaview --slab-precision)");
-  ImGui::BeginDisabled(!post);
-  changed |=
-      sliderDouble("prefilter", &settings.classification.prefilter, 0.0, kMaxPrefilter, "%.3f");
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip(
-        "Post-classified: each splat's value sharpened by this times its discrete Laplacian, "
-        "nearer interpolating the voxels (0: the data's values; ewaview --prefilter)");
-  ImGui::EndDisabled();
-  // Shaded post-classification's normals: the data's gradient along each ray, the field's
-  // (pre-integrated only) or the voxels'. In PostNormals' order.
-  ImGui::BeginDisabled(!post);
-  int normals = int(settings.postNormals);
-  const char* normalNames[] = {"field", "voxel", "ray"};
-  ImGui::SetNextItemWidth(90.0f);
-  if (ImGui::Combo("normals", &normals, normalNames, 3)) {
-    settings.postNormals = PostNormals(normals);
-    changed = true;
-  }
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip(
-        "Shaded, post-classified: normals from the data's gradient along each pixel's ray (ray, "
-        "as a ray caster shades), the gradient of the reconstructed field (field; "
-        "pre-integrated only) or the voxels' normals (voxel); ewaview --post-normals");
-  ImGui::EndDisabled();
-  changed |= sliderDouble("slab (voxels)", &settings.slabThickness, 0.25, 8.0, "%.2f",
-                          ImGuiSliderFlags_Logarithmic);
-  changed |= ImGui::Checkbox("coarse slabs", &settings.coarseSlabs);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "Slabs whose kernels are all at least 2.5 pixels wide are splatted into images 1.25 "
-        "to 4 times coarser (each kernel 2 texels wide) and read back bilinearly: faster close "
-        "up, within a few levels (ewaview --slab-resolution auto; off: full)");
-
-  for (RenderMode mode : kModes) {
-    if (mode != kModes[0]) ImGui::SameLine();
-    if (ImGui::RadioButton(renderModeName(mode), settings.mode == mode) && settings.mode != mode) {
-      settings.mode = mode;
-      changed = true;
-    }
-  }
-  ImGui::EndDisabled();
-
-  changed |= drawRenderOptions(settings, valueRange_[0], valueRange_[1]);
-
-  float background[3] = {float(settings.background.r), float(settings.background.g),
-                         float(settings.background.b)};
-  if (ImGui::ColorEdit3("background", background)) {
-    settings.background = glm::dvec3(background[0], background[1], background[2]);
-    changed = true;
-  }
-  ImGui::PopItemWidth();
-  return changed;
 }
 
-bool ControlPanel::drawShearWarp(ShearWarpSettings& s) {
-  bool changed = ImGui::Checkbox("pre-integrated", &s.preintegrated);
-  if (s.preintegrated) {
-    bool bilinear = s.lookup == TableLookup::Bilinear;
-    if (ImGui::Checkbox("bilinear table lookup", &bilinear)) {
-      s.lookup = bilinear ? TableLookup::Bilinear : TableLookup::Nearest;
-      changed = true;
-    }
-    bool image = s.buffers == BufferSlices::Image;
-    if (ImGui::Checkbox("image-sized buffer slice", &image)) {
-      s.buffers = image ? BufferSlices::Image : BufferSlices::Slice;
-      changed = true;
-    }
-  }
-  changed |= ImGui::Checkbox("opacity correction", &s.opacityCorrection);
+// What a person looking at a volume turns first: how it is drawn and coloured, where from.
+void ControlPanel::drawView(RenderSettings& settings, Camera& camera, bool& axes,
+                            PanelEdits& edits) {
+  const bool open = ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen);
+  layout_.lastItem("section-view");
+  if (!open) return;
   ImGui::PushItemWidth(180.0f);
-  // Finer than the picture gains nothing; 1 is the paper's (close-ups magnified by the warp).
-  changed |= sliderDouble("intermediate px/voxel", &s.intermediateScale, 1.0, 4.0, "%.2f");
+  // Composite, X-ray and MIP are the splat renderer's; shear-warp composites only.
+  ImGui::BeginDisabled(settings.renderer == RendererKind::ShearWarp);
+  edits.settings |= drawRenderMode(settings);
+  ImGui::EndDisabled();
+  layout_.lastItem("view-mode");
+  edits.tfPreset = drawColourPresets();
+  edits.settings |= ImGui::Checkbox("shading", &settings.lighting.enabled);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Lit by a light at the camera (its terms: Advanced rendering)");
+  ImGui::SameLine();
+  edits.axes = ImGui::Checkbox("axes (X)", &axes);
+  ImGui::SameLine();
+  float background[3] = {float(settings.background.r), float(settings.background.g),
+                         float(settings.background.b)};
+  if (ImGui::ColorEdit3("background", background, ImGuiColorEditFlags_NoInputs)) {
+    settings.background = glm::dvec3(background[0], background[1], background[2]);
+    edits.settings = true;
+  }
+  edits.axisView = drawAxisViews();
+  ImGui::SameLine();
+  edits.copyView = ImGui::SmallButton("copy view");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Ctrl+C: the camera, picture size and crop as command-line options, to render this "
+        "view headless");
+  edits.resetCamera = ImGui::Button("Reset camera (R)");
+  ImGui::SameLine();
+  edits.camera = drawCamera(camera);
   ImGui::PopItemWidth();
-  return changed;
+}
+
+// The transfer function's presets (the editor's menu too): a quick way to another look.
+std::optional<std::string> ControlPanel::drawColourPresets() {
+  std::optional<std::string> chosen;
+  if (ImGui::BeginCombo("transfer function", "preset...")) {
+    for (const TransferFunctionPresetInfo& p : transferFunctionPresets())
+      if (ImGui::Selectable(p.name.c_str())) chosen = p.name;
+    ImGui::EndCombo();
+  }
+  layout_.lastItem("view-colours");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("A transfer-function preset (the editor on the right edits its points)");
+  return chosen;
 }
 
 bool ControlPanel::drawCamera(Camera& camera) {
   bool changed = false;
-  ImGui::PushItemWidth(180.0f);
   bool perspective = !camera.orthographic;
   if (ImGui::Checkbox("perspective", &perspective)) {
     camera.orthographic = !perspective;
@@ -295,7 +202,6 @@ bool ControlPanel::drawCamera(Camera& camera) {
   // Orthographic views use the angle too: they show the height the perspective view shows at
   // the focal point, so the slider zooms both.
   changed |= sliderDouble("view angle", &camera.viewAngleDeg, 5.0, 120.0, "%.1f deg");
-  ImGui::PopItemWidth();
   return changed;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,18 +36,29 @@ void drawRefinementOverlay(double progress);
 
 // What the user changed this frame.
 struct PanelEdits {
-  bool settings = false;              // the RenderSettings were edited
-  bool camera = false;                // the Camera was edited (projection, view angle)
-  bool resetCamera = false;           // "Reset camera" was pressed
-  bool copyView = false;              // "Copy view": the view as command-line options
-  bool keysHelp = false;              // "keys (F1)": the keys window shown or hidden
-  std::optional<AxisView> axisView;   // a view along an axis was asked for
-  bool levelOfDetail = false;         // the level-of-detail checkbox changed
-  bool axes = false;                  // the orientation axes checkbox changed
-  int frameStep = 0;                  // -1 or +1: the file's previous or next volume
-  int channelStep = 0;                // -1 or +1: its previous or next channel
-  std::optional<std::string> series;  // another series of the folder was chosen: its id
-  std::optional<glm::dvec3> spacing;  // the file to be opened again with this voxel spacing
+  bool settings = false;                // the RenderSettings were edited
+  bool camera = false;                  // the Camera was edited (projection, view angle)
+  bool resetCamera = false;             // "Reset camera" was pressed
+  bool copyView = false;                // "Copy view": the view as command-line options
+  bool keysHelp = false;                // "keys (F1)": the keys window shown or hidden
+  std::optional<AxisView> axisView;     // a view along an axis was asked for
+  bool levelOfDetail = false;           // the level-of-detail checkbox changed
+  bool axes = false;                    // the orientation axes checkbox changed
+  int frameStep = 0;                    // -1 or +1: the file's previous or next volume
+  int channelStep = 0;                  // -1 or +1: its previous or next channel
+  std::optional<std::string> series;    // another series of the folder was chosen: its id
+  std::optional<glm::dvec3> spacing;    // the file to be opened again with this voxel spacing
+  std::optional<std::string> tfPreset;  // a transfer-function preset was chosen: its name
+};
+
+// Sections other objects draw into the panel's window, each called at its place in the panel
+// (what a person exploring a volume changes first, the renderer's own knobs last); any may be
+// empty.
+struct PanelSections {
+  std::function<void()> status;    // loading progress, busy work, messages (at the end)
+  std::function<void()> files;     // "File": open, save, reload, recent files
+  std::function<void()> clip;      // under the "Crop and clip" header, while it is open
+  std::function<void()> captures;  // "Camera bookmarks", "Capture": screenshot, turntable, tour
 };
 
 class ControlPanel {
@@ -55,20 +67,24 @@ class ControlPanel {
   ControlPanel(std::string volumeName, const Volume& volume);
 
   // Builds the panel between ImGuiLayer::beginFrame and render, editing `settings` and
-  // `camera` in place.
+  // `camera` in place: the volume, its file, the view (render mode, colours, camera), crop and
+  // clip, bookmarks and capture, then the collapsed "Advanced rendering", the statistics and
+  // the messages.
   // `levelOfDetail` is the "coarser while moving" switch, `axes` the orientation axes'.
   PanelEdits draw(RenderSettings& settings, Camera& camera, bool& levelOfDetail, bool& axes,
-                  const FrameStats& stats);
+                  const FrameStats& stats, const PanelSections& sections = {});
   // A new volume was opened; `fromFile`: it has a file to open again with another spacing.
   void setVolume(std::string volumeName, const Volume& volume, bool fromFile = false);
-  // EWAVIEW_PRINT_LAYOUT: the series list's place and its entries' on stdout, for the window
-  // test ("series-list X Y W H", "series-entry I X Y W H"), each once while it stays put.
+  // EWAVIEW_PRINT_LAYOUT: the series list's place and its entries', the sections' headers
+  // ("section-view X Y W H", ...) and the advanced knobs' ("knob-cutoff ...", drawn only while
+  // their section is open) on stdout, for the window tests, each once while it stays put.
   void setPrintLayout(bool on) { layout_.setOn(on); }
 
  private:
-  bool drawSettings(RenderSettings& settings);
-  bool drawShearWarp(ShearWarpSettings& settings);
+  void drawVolume(PanelEdits& edits);
+  void drawView(RenderSettings& settings, Camera& camera, bool& axes, PanelEdits& edits);
   bool drawCamera(Camera& camera);
+  std::optional<std::string> drawColourPresets();
   std::optional<AxisView> drawAxisViews();
   std::optional<std::string> drawSeries();
   std::optional<glm::dvec3> drawSpacing();

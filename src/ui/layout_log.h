@@ -18,8 +18,17 @@ class LayoutLog {
   // Prints every item again from the next frame (a new volume: its lines mark it ready).
   void forget() { printed_.clear(); }
   void lastItem(const std::string& name) {
+    if (on_) print(name, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+  }
+  // The current window's place and size (call between its Begin and End).
+  void window(const std::string& name) {
     if (!on_) return;
-    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    const ImVec2 a = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    print(name, a, ImVec2(a.x + size.x, a.y + size.y));
+  }
+
+ private:
+  void print(const std::string& name, ImVec2 a, ImVec2 b) {
     char line[160];
     std::snprintf(line, sizeof line, "%s %.0f %.0f %.0f %.0f", name.c_str(), a.x, a.y, b.x - a.x,
                   b.y - a.y);
@@ -30,7 +39,6 @@ class LayoutLog {
     std::fflush(stdout);
   }
 
- private:
   bool on_ = false;
   std::map<std::string, std::string> printed_;  // the last line printed for each name
 };

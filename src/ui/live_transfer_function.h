@@ -46,6 +46,10 @@ class LiveTransferFunction {
   void loadFile(const std::string& path) {
     if (editor_) editor_->requestFile(path);
   }
+  // A preset (its name or key) applied to the function in the next drawAndApply.
+  void applyPreset(const std::string& name) {
+    if (editor_) editor_->requestPreset(name);
+  }
   uint64_t revision() const { return revision_; }
 
   // The transfer function for the settings file: the file last saved or loaded in the

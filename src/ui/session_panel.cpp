@@ -15,16 +15,9 @@ const ImVec4 kErrorColor(1.0f, 0.45f, 0.4f, 1.0f);
 const ImVec4 kInfoColor(0.6f, 0.9f, 0.6f, 1.0f);
 }  // namespace
 
-SessionEdits SessionPanel::draw(const SessionView& view) {
-  SessionEdits edits;
-  if (ImGui::Begin("ewaview")) {
-    drawStatus(view);
-    drawFiles(view, edits);
-    drawBookmarks(view, edits);
-    drawCapture(view, edits);
-  }
-  ImGui::End();
-  return edits;
+void SessionPanel::drawCaptures(const SessionView& view, SessionEdits& edits) {
+  drawBookmarks(view, edits);
+  drawCapture(view, edits);
 }
 
 void SessionPanel::drawStatus(const SessionView& view) {
@@ -49,7 +42,9 @@ void SessionPanel::drawStatus(const SessionView& view) {
 }
 
 void SessionPanel::drawFiles(const SessionView& view, SessionEdits& edits) {
-  if (!ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const bool open = ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen);
+  layout_.lastItem("section-file");
+  if (!open) return;
   edits.openDialog = ImGui::Button("Open... (Ctrl+O)");
   ImGui::SameLine();
   edits.saveDialog = ImGui::Button("Save volume... (Ctrl+S)");
@@ -69,7 +64,9 @@ void SessionPanel::drawFiles(const SessionView& view, SessionEdits& edits) {
 }
 
 void SessionPanel::drawBookmarks(const SessionView& view, SessionEdits& edits) {
-  if (!ImGui::CollapsingHeader("Camera bookmarks")) return;
+  const bool open = ImGui::CollapsingHeader("Camera bookmarks");
+  layout_.lastItem("section-bookmarks");
+  if (!open) return;
   if (view.bookmarks) {
     for (int n = 0; n < int(view.bookmarks->size()); ++n) {
       ImGui::PushID(n);

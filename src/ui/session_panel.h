@@ -48,17 +48,21 @@ struct SessionEdits {
 
 class SessionPanel {
  public:
-  // Adds the sections to the "ewaview" window (ImGui appends to a window begun twice).
-  SessionEdits draw(const SessionView& view);
-  // EWAVIEW_PRINT_LAYOUT: the places of the bookmark and capture sections' headers and the
-  // Tour button on stdout, for the window test ("capture-header X Y W H", "tour-button ...").
+  // The sections, drawn into the current window (the control panel's, at the places it gives
+  // them: PanelSections); what the user asked for is added to `edits`.
+  // Loading progress, busy work and messages.
+  void drawStatus(const SessionView& view);
+  // "File": open, save, reload, watch, recent files.
+  void drawFiles(const SessionView& view, SessionEdits& edits);
+  // "Camera bookmarks" and "Capture" (screenshot, turntable, tour).
+  void drawCaptures(const SessionView& view, SessionEdits& edits);
+  // EWAVIEW_PRINT_LAYOUT: the places of the sections' headers and the Tour button on stdout,
+  // for the window test ("section-file X Y W H", "capture-header ...", "tour-button ...").
   void setPrintLayout(bool on) { layout_.setOn(on); }
 
  private:
-  void drawFiles(const SessionView& view, SessionEdits& edits);
   void drawBookmarks(const SessionView& view, SessionEdits& edits);
   void drawCapture(const SessionView& view, SessionEdits& edits);
-  void drawStatus(const SessionView& view);
 
   char bookmarkName_[64] = "view 1";
   int turntableFrames_ = 36;

@@ -58,6 +58,7 @@ bool TfEditor::draw() {
     ImGui::SameLine(0.0f, 40.0f);
     changed |= drawHistory();
     changed |= loadPendingFile();
+    if (!pendingPreset_.empty()) changed |= applyPreset(std::exchange(pendingPreset_, {}));
     changed |= drawSelectedPoint();
     ImGui::Separator();
     changed |= drawPresets();
@@ -240,6 +241,19 @@ bool TfEditor::loadPendingFile() {
   }
 }
 
+bool TfEditor::applyPreset(const std::string& name) {
+  try {
+    tf_ = applyTransferFunctionPreset(tf_, name, volume_.minValue(), volume_.maxValue());
+  } catch (const std::exception& e) {  // an unknown name, or a volume of one value
+    reportError(e.what());
+    return false;
+  }
+  selectedOpacity_ = selectedColor_ = -1;
+  status_ = "preset: " + name;
+  statusIsError_ = false;
+  return true;
+}
+
 bool TfEditor::drawHistory() {
   int step = pendingStep_;
   pendingStep_ = 0;
@@ -299,13 +313,7 @@ bool TfEditor::drawPresets() {
   ImGui::PushItemWidth(200.0f);
   if (ImGui::BeginCombo("preset", "choose...")) {
     for (const TransferFunctionPresetInfo& p : transferFunctionPresets()) {
-      if (ImGui::Selectable(p.name.c_str())) {
-        tf_ = applyTransferFunctionPreset(tf_, p.name, volume_.minValue(), volume_.maxValue());
-        selectedOpacity_ = selectedColor_ = -1;
-        status_ = "preset: " + p.name;
-        statusIsError_ = false;
-        changed = true;
-      }
+      if (ImGui::Selectable(p.name.c_str())) changed |= applyPreset(p.name);
     }
     ImGui::EndCombo();
   }

@@ -29,6 +29,8 @@ class TfEditor {
   // Loads a transfer function (or a ParaView preset file's first map) in the next draw: a JSON
   // file dropped on the window.
   void requestFile(const std::string& path) { pendingFile_ = path; }
+  // Applies a preset (its name or key) in the next draw: the main panel's colour menu.
+  void requestPreset(const std::string& name) { pendingPreset_ = name; }
   // True while a point is being dragged (a viewer may draw a coarser level meanwhile).
   bool dragging() const { return dragOpacity_ >= 0 || dragColor_ >= 0; }
   // Set by EWAVIEW_PRINT_LAYOUT=1 in the environment: prints "tf-canvas X Y W H" (window
@@ -47,6 +49,7 @@ class TfEditor {
   bool drawFiles();
   bool drawHistory();
   bool loadPendingFile();
+  bool applyPreset(const std::string& name);
   void reportError(const std::string& message);
 
   const Volume& volume_;
@@ -55,6 +58,7 @@ class TfEditor {
   UndoHistory<TransferFunction> history_;
   int pendingStep_ = 0;
   std::string pendingFile_;
+  std::string pendingPreset_;
   bool logHistogram_ = true;
   int dragOpacity_ = -1, dragColor_ = -1;          // point under the mouse drag, or -1
   int selectedOpacity_ = -1, selectedColor_ = -1;  // last point clicked, or -1

@@ -23,7 +23,20 @@ namespace ewa {
 void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   imgui_.beginFrame();
   Camera camera = controller_.camera();
-  const PanelEdits edits = panel_.draw(settings_, camera, levelOfDetail_, axes_, frameStats_);
+  // The session's and the clip region's sections sit in the panel at the places it gives them.
+  const SessionView session = sessionView();
+  SessionEdits sessionEdits;
+  ClipPanelEdits clip;
+  PanelSections sections;
+  sections.status = [&] { session_.drawStatus(session); };
+  sections.files = [&] { session_.drawFiles(session, sessionEdits); };
+  sections.clip = [&] {
+    clip = drawClipControls(settings_.clip, current_.volume->worldBoundsMin(),
+                            current_.volume->worldBoundsMax(), controller_.camera());
+  };
+  sections.captures = [&] { session_.drawCaptures(session, sessionEdits); };
+  const PanelEdits edits =
+      panel_.draw(settings_, camera, levelOfDetail_, axes_, frameStats_, sections);
   if (edits.axes) axesSwitched();
   if (edits.frameStep != 0) stepFrame(edits.frameStep);
   if (edits.channelStep != 0) stepChannel(edits.channelStep);
@@ -34,11 +47,9 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   if (edits.copyView) copyView();
   if (edits.keysHelp) keysHelp_ = !keysHelp_;
   if (edits.axisView) showAxisView(*edits.axisView, fb);
+  if (edits.tfPreset) liveTf_.applyPreset(*edits.tfPreset);
   if (edits.settings) ++settingsRevision_;
   // A dragged crop box or plane renders like a moving camera: coarse levels until it stops.
-  const ClipPanelEdits clip =
-      drawClipPanel(settings_.clip, current_.volume->worldBoundsMin(),
-                    current_.volume->worldBoundsMax(), controller_.camera());
   const glm::dvec3 extent = current_.volume->worldBoundsMax() - current_.volume->worldBoundsMin();
   const CropHandleEdits handles = drawCropBoxHandles(
       settings_.clip, controller_.camera(), 0.01 * std::min({extent.x, extent.y, extent.z}));
@@ -46,7 +57,7 @@ void ViewerWindow::drawPanels(const glm::ivec2& fb, bool* screenshotNow) {
   if (const TransferFunction* tf = liveTf_.drawAndApply(lod_, splatClassification(settings_)))
     current_.tf = *tf;
   switchRendererIfAsked();
-  applySessionEdits(session_.draw(sessionView()), fb, screenshotNow);
+  applySessionEdits(sessionEdits, fb, screenshotNow);
   drawKeysHelp(&keysHelp_);
   if (printLayout_ && keysPrinted_ != keysHelp_) {  // F1, the button or the window's close box
     keysPrinted_ = keysHelp_;
