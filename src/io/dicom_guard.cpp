@@ -5,6 +5,7 @@
 #include <gdcmGlobal.h>
 #include <gdcmVR.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -13,6 +14,7 @@
 
 #include "io/byte_order.h"
 #include "io/dicom_colour.h"
+#include "io/dicom_inflate.h"
 #include "io/dicom_series.h"
 #include "io/file_bytes.h"
 #include "io/file_listing.h"
@@ -63,6 +65,12 @@ struct Container {
   size_t items = 0;  // fragments: those walked (the first is the offset table)
 };
 constexpr size_t kUndefined = SIZE_MAX;
+
+// How deep sequences may nest. GDCM reads nested items recursively and overflows its stack
+// (SIGSEGV) a few thousand levels down; real files need a handful (enhanced functional groups
+// 3, structured report content trees rarely 20), and DCMTK- or GDCM-based tools are never
+// tested deeper, so a file past this is hostile.
+constexpr size_t kMaxSequenceDepth = 128;
 
 struct Walk {
   const std::vector<uint8_t>& bytes;
@@ -176,10 +184,18 @@ struct Walk {
       } else {
         length = readUnsigned(&bytes[pos + 4], 4, big);
         pos += 8;
+        // GDCM reads a defined-length value that starts with an item tag as a sequence (the
+        // implicit VR does not say so): walked as one, its nesting counted.
+        sequence = !pixelData && length >= 8 && length != 0xffffffffu && length <= n - pos &&
+                   readUnsigned(&bytes[pos], 2, big) == 0xfffe &&
+                   readUnsigned(&bytes[pos + 2], 2, big) == 0xe000;
       }
       if (evenLengths && !open.empty() && length != 0xffffffffu && length % 2 != 0)
         return fail(pos, "element (" + hex(group) + "," + hex(element) + ") of odd length " +
                              std::to_string(length));
+      if ((sequence || length == 0xffffffffu) && sequenceDepth() >= kMaxSequenceDepth)
+        return fail(pos, "sequences nested more than " + std::to_string(kMaxSequenceDepth) +
+                             " deep");
       if (length == 0xffffffffu) {  // undefined length: items follow, then a delimiter
         open.push_back({group == 0x7fe0 ? Container::Fragments : Container::Sequence, kUndefined});
         continue;
@@ -213,6 +229,11 @@ struct Walk {
     if (problem.empty() && !metaOnly && !open.empty())
       return fail(pos, "a sequence or item is not closed (truncated file?)");
     return pos;
+  }
+
+  size_t sequenceDepth() const {
+    return size_t(std::count_if(open.begin(), open.end(),
+                                [](const Container& c) { return c.kind != Container::Item; }));
   }
 
   bool recognitionCodeOk(size_t pos, uint64_t length) const {
@@ -352,7 +373,21 @@ DicomStructure checkDicomStructure(const std::string& path) {
                        std::to_string(metaEnd - 144) + " bytes");
   const std::string syntax = transferSyntax(bytes, 132, metaEnd);
   if (syntax.empty()) failLoad(path, "DICOM meta header without a transfer syntax");
-  if (syntax == "1.2.840.10008.1.2.1.99") return DicomStructure::Plausible;  // deflated
+  if (syntax == "1.2.840.10008.1.2.1.99") {
+    // GDCM inflates the data set and reads it as explicit little endian, asserting and
+    // allocating by its lengths as in any other: the inflated bytes are walked the same way.
+    if (bytes.size() - metaEnd < 2) failLoad(path, "no data set after the DICOM meta header");
+    const std::vector<uint8_t> inflated =
+        inflateDicomDataSet(path, &bytes[metaEnd], bytes.size() - metaEnd);
+    if (inflated.size() < 8) failLoad(path, "no data set in the deflated DICOM data");
+    Walk inner{inflated, {}, {}};
+    inner.run(0, true, false, false);
+    if (!inner.problem.empty())
+      failLoad(path, "corrupt or truncated DICOM data (deflated; inflated): " + inner.problem);
+    const std::string problem = colourCodingProblem(inner.photometric, syntax, false);
+    if (!problem.empty()) failLoad(path, problem);
+    return DicomStructure::Plausible;
+  }
   const bool explicitVr = syntax != "1.2.840.10008.1.2";
   const bool bigEndian = syntax == "1.2.840.10008.1.2.2";
   if (bytes.size() - metaEnd < 8) failLoad(path, "no data set after the DICOM meta header");

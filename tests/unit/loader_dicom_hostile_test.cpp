@@ -1,0 +1,128 @@
+// Hostile DICOM files the pre-check (dicom_guard) must stop before GDCM crashes, allocates or
+// aborts on them: nesting bombs, deflated data sets that lie or explode.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "dicom_byte_files.h"
+#include "io/dicom_guard.h"
+#include "io/dicom_inflate.h"
+#include "io/volume_loader.h"
+#include "medical_test_files.h"
+
+namespace ewa {
+namespace {
+
+using namespace testing;
+
+// An image data set with `depth` nested sequences before its pixels (Content Sequence is group
+// 0040: between 0028 and 7FE0, in tag order).
+std::string nestedImage(int depth, const ByteImageSpec& base = {}) {
+  ByteImageSpec spec = base;
+  spec.beforePixels = nestedSequences(depth);
+  return imageDataSet(spec);
+}
+
+TEST(DicomHostile, DeepNestingIsRefusedBeforeGdcmRecursesIntoIt) {
+  TempDir dir;
+  // 20 and 128 levels are read; 129 and a bomb of 5,000 (a 180 KB file that overflowed GDCM's
+  // stack) are refused in one line.
+  for (const int depth : {20, 128})
+    EXPECT_EQ(checkDicomStructure(dir.write("ok" + std::to_string(depth) + ".dcm",
+                                            part10(nestedImage(depth), kExplicitLittle))),
+              DicomStructure::Plausible)
+        << depth;
+  EXPECT_EQ(loadVolume(dir.path("ok128.dcm")).dims(), (std::array<int64_t, 3>{4, 3, 1}));
+  for (const int depth : {129, 5000, 200000}) {
+    const std::string file = dir.write("deep" + std::to_string(depth) + ".dcm",
+                                       part10(nestedImage(depth), kExplicitLittle));
+    expectVolumeLoadError(file, "sequences nested more than 128 deep");
+  }
+  // In the implicit syntax too, where a defined-length value that opens with an item is read
+  // as a sequence.
+  std::string implicitBomb;
+  for (int d = 0; d < 5000; ++d) implicitBomb = itemStart(uint32_t(implicitBomb.size() + 8)) +
+                                                implicitElement(0x0040, 0xa730, implicitBomb);
+  const std::string implicitFile = dir.write(
+      "implicit.dcm",
+      part10(implicitElement(0x0008, 0x0016, evenText("1.2.840.10008.5.1.4.1.1.7", '\0')) +
+                 implicitElement(0x0040, 0xa730, implicitBomb),
+             kImplicitLittle));
+  expectVolumeLoadError(implicitFile, "sequences nested more than 128 deep");
+}
+
+TEST(DicomHostile, AFolderWithABombLoadsItsGoodFilesAndNamesTheBomb) {
+  TempDir dir;
+  const std::string series = dicomSeries(dir, "s", 4);
+  dir.write("s/bomb.dcm", part10(nestedImage(20000), kExplicitLittle));
+  dir.write("s/deflated.dcm", part10(rawDeflate(undefinedLength(0x0008, 0x0016, "OB")),
+                                     kDeflated));
+  const Volume v = loadVolume(series);
+  EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{5, 4, 4}));
+  EXPECT_TRUE(hasNoteWith(v, "warning: skipped " + series + "/bomb.dcm: corrupt or truncated "
+                             "DICOM data: sequences nested more than 128 deep"))
+      << allNotes(v);
+  EXPECT_TRUE(hasNoteWith(v, "warning: skipped " + series + "/deflated.dcm: "))
+      << allNotes(v);
+}
+
+TEST(DicomHostile, DeflatedDataSetsAreWalkedAsOthersAre) {
+  TempDir dir;
+  // A good deflated image loads as the same data set uncompressed does.
+  const std::string plain = dir.write("plain.dcm", part10(imageDataSet({}), kExplicitLittle));
+  const std::string deflated =
+      dir.write("deflated.dcm", part10(rawDeflate(imageDataSet({})), kDeflated));
+  EXPECT_EQ(loadVolume(deflated).bytes(), loadVolume(plain).bytes());
+  // What GDCM asserted (SIGABRT) or allocated gigabytes on once inflated: refused in one line.
+  ByteImageSpec columnsSs;
+  std::string data = imageDataSet(columnsSs);
+  const std::string columns = explicitElement(0x0028, 0x0011, "US", uintBytes(4, 2));
+  data.replace(data.find(columns), columns.size(),
+               explicitElement(0x0028, 0x0011, "SS", uintBytes(4, 2)));
+  ByteImageSpec openItem;
+  openItem.beforePixels = undefinedLength(0x0040, 0xa730, "SQ") + itemStart() +
+                          explicitElement(0x0040, 0xa160, "UT", "never ends");
+  ByteImageSpec openOb;
+  openOb.beforePixels = undefinedLength(0x0040, 0xa170, "OB") + std::string(16, 'x');
+  ByteImageSpec liar;  // 4.4 GB claimed by 30 bytes
+  liar.beforePixels = uintBytes(0x0040, 2) + uintBytes(0xa170, 2) + "OB" + std::string(2, '\0') +
+                      uintBytes(0xfffffff0u, 4) + std::string(30, 'x');
+  const std::pair<std::string, std::string> cases[] = {
+      {data, "element (0028,0011) of VR SS"},
+      {imageDataSet(openItem), "a sequence or item is not closed"},
+      {imageDataSet(openOb), "an undefined length for VR OB"},
+      {imageDataSet(liar), "element (0040,A170) claims 4294967280 bytes but only"},
+  };
+  int n = 0;
+  for (const auto& [dataSet, problem] : cases) {
+    const std::string file =
+        dir.write("bad" + std::to_string(n++) + ".dcm", part10(rawDeflate(dataSet), kDeflated));
+    expectVolumeLoadError(file, "corrupt or truncated DICOM data (deflated; inflated): " + problem);
+  }
+  // A stream cut short or corrupt.
+  const std::string stream = rawDeflate(imageDataSet({}));
+  expectVolumeLoadError(dir.write("cut.dcm", part10(stream.substr(0, stream.size() / 2),
+                                                    kDeflated)),
+                        "the deflated DICOM data set is cut short");
+  expectVolumeLoadError(dir.write("corrupt.dcm", part10(std::string(40, '\xff'), kDeflated)),
+                        "the deflated DICOM data set is corrupt");
+}
+
+TEST(DicomHostile, DeflateBombsAreRefusedAtTheirBound) {
+  TempDir dir;
+  // 96 MiB of zeros in an OB deflate to about 100 KB: past the 64 MiB floor and 256:1.
+  ByteImageSpec spec;
+  const size_t zeros = size_t(96) << 20;
+  spec.beforePixels = explicitElement(0x0040, 0xa170, "OB", std::string(zeros, '\0'));
+  const std::string stream = rawDeflate(imageDataSet(spec));
+  ASSERT_LT(stream.size() * kDicomInflateRatio, kDicomInflateFloor);
+  expectVolumeLoadError(dir.write("bomb.dcm", part10(stream, kDeflated)),
+                        "the deflated DICOM data set inflates to more than 67108864 bytes");
+  EXPECT_EQ(dicomInflateLimit(1000), kDicomInflateFloor);
+  EXPECT_EQ(dicomInflateLimit(uint64_t(1) << 20), uint64_t(256) << 20);
+  EXPECT_EQ(dicomInflateLimit(uint64_t(1) << 40), kDicomInflateCap);
+}
+
+}  // namespace
+}  // namespace ewa
