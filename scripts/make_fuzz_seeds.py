@@ -405,14 +405,16 @@ def dicom_seeds():
     write("dicom", "bare_implicit_slice.dcm", without_meta(small_dicom(pet, 0)))
     write("dicom", "pet_three_slices.dcm",
           small_dicom(pet, 0) + MARK + small_dicom(pet, 3.375) + MARK + small_dicom(pet, 6.75))
-    # The classes hostile files came in: nesting past the pre-check's limit (refused), a
-    # deflated data set (inflated and walked).
+    # The classes hostile files came in: zero padding after the last element (legal), nesting
+    # past the pre-check's limit (refused), a deflated data set (inflated and walked).
+    write("dicom", "pet_slice_zero_padded.dcm", small_dicom(pet, 0) + bytes(1000))
     write("dicom", "nested_200_deep.dcm", part10(explicit_image(0, nested_sequences(200)),
                                                  EXPLICIT_LE))
     write("dicom", "deflated_slice.dcm", part10(raw_deflate(explicit_image(0)), DEFLATED))
     # The deflating target's inputs are inflated data sets (it deflates them into a file).
     write("dicom_deflate", "slice.bin", explicit_image(0))
     write("dicom_deflate", "slice_nested_20.bin", explicit_image(0, nested_sequences(20)))
+    write("dicom_deflate", "slice_zero_padded.bin", explicit_image(0) + bytes(3))
 
 
 def tiff_file(pages, bits, sample_format, description=b""):

@@ -83,6 +83,10 @@ struct Walk {
   // items, and asserts on an item whose contents' length is odd (found by fuzzing), so items
   // and the elements inside them must have even lengths, as the standard has it.
   bool evenLengths = false;
+  // Zero padding after the data set: GDCM stops cleanly at fewer than 4 bytes (no whole tag);
+  // in a little-endian file it reads each 8 zero bytes as an empty element (0000,0000) first
+  // (its deflate and big-endian readers do not), and asserts on a tag with 4 to 7 bytes left.
+  bool zeroElements = false;
   // The data set's own (0028,0010), (0011), (0002), (0100).
   int64_t rows = 0, columns = 0, samples = 1, bitsAllocated = 0;
   std::string photometric{};  // (0028,0004), trimmed
@@ -98,6 +102,14 @@ struct Walk {
         open.pop_back();
       }
       if (pos >= n) break;
+      // Zero bytes after the last top-level element are padding, where GDCM reads them.
+      if (open.empty() && !metaOnly && zeroFrom(pos)) {
+        if (!paddingReadable(n - pos))
+          return fail(pos, std::to_string(n - pos) +
+                               " zero bytes after the last element: padding of a length GDCM "
+                               "cannot read");
+        break;
+      }
       if (n - pos < 8) return fail(pos, "an element header is cut short");
       const bool big = bigEndian && !metaOnly;
       const auto group = uint16_t(readUnsigned(&bytes[pos], 2, big));
@@ -231,9 +243,19 @@ struct Walk {
     return pos;
   }
 
+  bool paddingReadable(size_t zeros) const {
+    return zeros < 4 || (zeroElements && zeros % 8 < 4);
+  }
+
   size_t sequenceDepth() const {
     return size_t(std::count_if(open.begin(), open.end(),
                                 [](const Container& c) { return c.kind != Container::Item; }));
+  }
+
+  // Whether every byte from `pos` to the end is zero.
+  bool zeroFrom(size_t pos) const {
+    return std::all_of(bytes.begin() + ptrdiff_t(pos), bytes.end(),
+                       [](uint8_t b) { return b == 0; });
   }
 
   bool recognitionCodeOk(size_t pos, uint64_t length) const {
@@ -356,6 +378,7 @@ DicomStructure checkDicomStructure(const std::string& path) {
   if (start != DicomStart::Part10) {
     const bool explicitVr = start == DicomStart::BareExplicit;
     walk.evenLengths = !explicitVr;
+    walk.zeroElements = true;
     walk.run(0, explicitVr, false, false);
     if (!walk.problem.empty()) failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
     const std::string syntax = explicitVr ? "1.2.840.10008.1.2.1" : "1.2.840.10008.1.2";
@@ -394,6 +417,7 @@ DicomStructure checkDicomStructure(const std::string& path) {
   walk.jpeg = isJpegTransferSyntax(syntax);
   walk.jpeg2000 = isJpeg2000TransferSyntax(syntax);
   walk.jpegLs = isJpegLsTransferSyntax(syntax);
+  walk.zeroElements = !bigEndian;
   walk.run(metaEnd, explicitVr, bigEndian, false);
   if (!walk.problem.empty()) failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
   // GDCM's pixmap reader already decodes RLE to tell whether the image is lossy, and asserts

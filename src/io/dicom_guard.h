@@ -18,9 +18,9 @@ enum class DicomStructure {
 // items (at most 128 sequences deep: GDCM recurses into them until its stack overflows), and
 // checks each defined length against the bytes left. GDCM sizes its buffers by those lengths
 // before reading (up to 4 GiB for one element) and asserts (aborts) on items out of place, so
-// such files must be caught here. Throws LoadError naming the file when a DICOM file is cut
-// short or corrupt, or is a big-endian ACR-NEMA file; returns NotDicom for other files, which
-// never reach GDCM.
+// such files must be caught here. Zero bytes after the last element are padding, passed where
+// GDCM reads them. Throws LoadError naming the file when a DICOM file is cut short or corrupt,
+// or is a big-endian ACR-NEMA file; returns NotDicom for other files, which never reach GDCM.
 DicomStructure checkDicomStructure(const std::string& path);
 
 }  // namespace ewa

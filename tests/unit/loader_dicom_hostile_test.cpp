@@ -1,5 +1,6 @@
 // Hostile DICOM files the pre-check (dicom_guard) must stop before GDCM crashes, allocates or
-// aborts on them: nesting bombs, deflated data sets that lie or explode.
+// aborts on them: nesting bombs, deflated data sets that lie or explode; and legal padding it
+// must let through.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -122,6 +123,57 @@ TEST(DicomHostile, DeflateBombsAreRefusedAtTheirBound) {
   EXPECT_EQ(dicomInflateLimit(1000), kDicomInflateFloor);
   EXPECT_EQ(dicomInflateLimit(uint64_t(1) << 20), uint64_t(256) << 20);
   EXPECT_EQ(dicomInflateLimit(uint64_t(1) << 40), kDicomInflateCap);
+}
+
+TEST(DicomHostile, ZeroPaddingAfterTheLastElementIsTheEnd) {
+  TempDir dir;
+  // 20 slices, one with 2.4 MB of zeros after its pixel data: GDCM reads it, so must we.
+  const std::string series = dicomSeries(dir, "s", 20);
+  const Volume before = loadVolume(series);
+  const std::string padded = series + "/im7.dcm";
+  dir.write("s/im7.dcm", fileBytes(padded) + std::string(2400000, '\0'));
+  const Volume after = loadVolume(series);
+  EXPECT_EQ(after.dims(), (std::array<int64_t, 3>{5, 4, 20}));
+  EXPECT_EQ(after.bytes(), before.bytes());
+  EXPECT_EQ(after.notes(), before.notes());
+  // Any count of zeros GDCM reads (fewer than 4; in a little-endian file, 8-byte empty
+  // elements and fewer than 4 over), in each syntax; other counts, on which GDCM fails or
+  // asserts, and a non-zero byte after zeros are refused in one line.
+  const std::string image = imageDataSet({});
+  const Volume reference = loadVolume(dir.write("plain.dcm", part10(image, kExplicitLittle)));
+  for (const size_t count : {1, 3, 8, 11, 4096, 4099}) {
+    const std::string file = dir.write("pad" + std::to_string(count) + ".dcm",
+                                       part10(image + std::string(count, '\0'), kExplicitLittle));
+    EXPECT_EQ(checkDicomStructure(file), DicomStructure::Plausible) << file;
+    EXPECT_EQ(loadVolume(file).bytes(), reference.bytes()) << file;
+  }
+  for (const size_t count : {1, 2, 3}) {
+    const std::string file = dir.write("padd" + std::to_string(count) + ".dcm",
+                                       part10(rawDeflate(image + std::string(count, '\0')),
+                                              kDeflated));
+    EXPECT_EQ(loadVolume(file).bytes(), reference.bytes()) << file;
+  }
+  for (const size_t count : {4, 7, 12, 100}) {
+    const std::string zeros(count, '\0');
+    expectVolumeLoadError(dir.write("bad" + std::to_string(count) + ".dcm",
+                                    part10(image + zeros, kExplicitLittle)),
+                          std::to_string(count) + " zero bytes after the last element");
+    expectVolumeLoadError(dir.write("badd" + std::to_string(count) + ".dcm",
+                                    part10(rawDeflate(image + zeros), kDeflated)),
+                          std::to_string(count) + " zero bytes after the last element");
+  }
+  // GDCM's own implicit file, padded.
+  const std::string implicit = dicomSeries(dir, "i", 1) + "/im0.dcm";
+  ASSERT_TRUE(recompressDicom(implicit, gdcm::TransferSyntax::ImplicitVRLittleEndian));
+  const std::vector<uint8_t> unpadded = loadVolume(implicit).bytes();
+  const std::string implicitBytes = fileBytes(implicit);
+  dir.write("i/im0.dcm", implicitBytes + std::string(8 * 1000 + 3, '\0'));
+  EXPECT_EQ(loadVolume(implicit).bytes(), unpadded);
+  dir.write("i/im0.dcm", implicitBytes + std::string(5, '\0'));
+  expectVolumeLoadError(implicit, "5 zero bytes after the last element");
+  expectVolumeLoadError(dir.write("junk.dcm", part10(image + std::string(64, '\0') + "x",
+                                                     kExplicitLittle)),
+                        "corrupt or truncated DICOM data");
 }
 
 }  // namespace
