@@ -14,6 +14,7 @@
 
 #include "io/byte_order.h"
 #include "io/dicom_colour.h"
+#include "io/dicom_dose_grid.h"
 #include "io/dicom_inflate.h"
 #include "io/dicom_series.h"
 #include "io/file_bytes.h"
@@ -90,6 +91,11 @@ struct Walk {
   // The data set's own (0028,0010), (0011), (0002), (0100).
   int64_t rows = 0, columns = 0, samples = 1, bitsAllocated = 0;
   std::string photometric{};  // (0028,0004), trimmed
+  // The data set's own values GDCM's RT Dose reading depends on (doseGridHeaderProblem):
+  // SOP class (0008,0016) or, in the meta header, (0002,0002); (3004,000C); whether (0028,0008)
+  // is there.
+  std::string sopClass{}, gridFrameOffsets{};
+  bool hasFrameCount = false;
 
   // Walks elements from `pos` to the end (or, with `metaOnly`, while the group is 0002). Items
   // and delimiters must sit where they belong: GDCM asserts (aborts) on one out of place.
@@ -228,6 +234,7 @@ struct Walk {
         if (element == 0x0002) samples = value;
         if (element == 0x0100) bitsAllocated = value;
       }
+      if (open.empty()) noteDoseValue(group, element, pos, length);
       if (group == 0x0028 && element == 0x0004 && open.empty() && length <= 64) {
         photometric.assign(reinterpret_cast<const char*>(&bytes[pos]), size_t(length));
         while (!photometric.empty() && (photometric.back() == ' ' || photometric.back() == '\0'))
@@ -241,6 +248,19 @@ struct Walk {
     if (problem.empty() && !metaOnly && !open.empty())
       return fail(pos, "a sequence or item is not closed (truncated file?)");
     return pos;
+  }
+
+  void noteDoseValue(uint16_t group, uint16_t element, size_t pos, uint64_t length) {
+    const auto text = [&] {
+      return std::string(reinterpret_cast<const char*>(&bytes[pos]),
+                         size_t(std::min<uint64_t>(length, 1 << 20)));
+    };
+    if ((group == 0x0002 && element == 0x0002) || (group == 0x0008 && element == 0x0016)) {
+      const std::string uid = text();
+      if (sopClass.empty() || uid.rfind(kRtDoseStorageUid, 0) == 0) sopClass = uid;
+    }
+    if (group == 0x3004 && element == 0x000c) gridFrameOffsets = text();
+    if (group == 0x0028 && element == 0x0008) hasFrameCount = true;
   }
 
   bool paddingReadable(size_t zeros) const {
@@ -356,6 +376,16 @@ DicomStart dicomStart(const std::string& path) {
   return DicomStart::None;
 }
 
+// GDCM's image reader asserts on some RT Dose headers (doseGridHeaderProblem); the SOP class
+// from the meta header (`metaSopClass`) or the data set's own.
+void checkDoseGrid(const std::string& path, const std::string& metaSopClass, const Walk& walk) {
+  const bool dose = metaSopClass.rfind(kRtDoseStorageUid, 0) == 0 ||
+                    walk.sopClass.rfind(kRtDoseStorageUid, 0) == 0;
+  const std::string problem =
+      dose ? doseGridHeaderProblem(walk.gridFrameOffsets, walk.hasFrameCount) : std::string();
+  if (!problem.empty()) failLoad(path, problem);
+}
+
 }  // namespace
 
 bool looksLikeDicom(const std::string& path) {
@@ -381,6 +411,7 @@ DicomStructure checkDicomStructure(const std::string& path) {
     walk.zeroElements = true;
     walk.run(0, explicitVr, false, false);
     if (!walk.problem.empty()) failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
+    checkDoseGrid(path, "", walk);
     const std::string syntax = explicitVr ? "1.2.840.10008.1.2.1" : "1.2.840.10008.1.2";
     const std::string problem = colourCodingProblem(walk.photometric, syntax, false);
     if (!problem.empty()) failLoad(path, problem);
@@ -407,6 +438,7 @@ DicomStructure checkDicomStructure(const std::string& path) {
     inner.run(0, true, false, false);
     if (!inner.problem.empty())
       failLoad(path, "corrupt or truncated DICOM data (deflated; inflated): " + inner.problem);
+    checkDoseGrid(path, walk.sopClass, inner);
     const std::string problem = colourCodingProblem(inner.photometric, syntax, false);
     if (!problem.empty()) failLoad(path, problem);
     return DicomStructure::Plausible;
@@ -420,6 +452,7 @@ DicomStructure checkDicomStructure(const std::string& path) {
   walk.zeroElements = !bigEndian;
   walk.run(metaEnd, explicitVr, bigEndian, false);
   if (!walk.problem.empty()) failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
+  checkDoseGrid(path, walk.sopClass, walk);
   // GDCM's pixmap reader already decodes RLE to tell whether the image is lossy, and asserts
   // when a colour space's size disagrees with the codec's (found with YBR_FULL_422 in RLE).
   const bool encapsulated = syntax != "1.2.840.10008.1.2" && syntax != "1.2.840.10008.1.2.1" &&

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "io/byte_order.h"
+#include "io/dicom_dose_grid.h"
 #include "io/dicom_duplicates.h"
 #include "io/dicom_frames.h"
 #include "io/dicom_gaps.h"
@@ -117,6 +118,11 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   const DicomSlice whole = slices.front();
   std::vector<DicomSlice> frames;
   if (slices.size() == 1 && whole.frames > 1) frames = dicomFrameSlices(whole);
+  if (slices.size() == 1 && whole.frames > 1 && frames.empty()) {
+    frames = doseGridFrameSlices(whole);
+    if (!frames.empty())
+      layout.notes.push_back("RT Dose: frames placed by GridFrameOffsetVector (3004,000C)");
+  }
   glm::dvec3 step(0.0);
   std::vector<PlaneMix> planes;  // uneven steps: the regular planes made below, else empty
   if (!frames.empty()) {

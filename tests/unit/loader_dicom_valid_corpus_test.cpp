@@ -42,7 +42,7 @@ void expectPassed(const std::vector<std::string>& files) {
 }
 
 // Every kind of DICOM file the tests make: GDCM's writers in each syntax, enhanced files, bare
-// data sets, hand-made ones (deflated, padded, nested).
+// data sets, hand-made ones (deflated, padded, nested, RT Dose).
 std::vector<std::string> generatedCorpus(const TempDir& dir) {
   gdcm::Trace::WarningOff();
   std::vector<std::string> files;
@@ -94,7 +94,7 @@ std::vector<std::string> generatedCorpus(const TempDir& dir) {
   // Bare data sets (ACR-NEMA style), explicit and implicit.
   files.push_back(dir.write("IM0001", bareDataSet(files[0])));
   files.push_back(dir.write("IM0002", bareDataSet(files[3])));
-  // Hand-made: plain, deflated, padded in each, nested to the limit.
+  // Hand-made: plain, deflated, padded in each, nested to the limit, an RT Dose grid.
   const std::string image = imageDataSet({});
   files.push_back(dir.write("bytes.dcm", part10(image, kExplicitLittle)));
   files.push_back(dir.write("bytes_deflated.dcm", part10(rawDeflate(image), kDeflated)));
@@ -107,13 +107,19 @@ std::vector<std::string> generatedCorpus(const TempDir& dir) {
   ByteImageSpec nested;
   nested.beforePixels = nestedSequences(128);
   files.push_back(dir.write("nested.dcm", part10(imageDataSet(nested), kExplicitLittle)));
+  ByteImageSpec dose;
+  dose.sopClass = "1.2.840.10008.5.1.4.1.1.481.2";
+  dose.modality = "RTDOSE";
+  dose.frames = 3;
+  dose.beforePixels = explicitElement(0x3004, 0x000c, "DS", evenText("0\\5\\10"));
+  files.push_back(dir.write("dose.dcm", part10(imageDataSet(dose), kExplicitLittle)));
   return files;
 }
 
 TEST(DicomValidCorpus, ThePreCheckPassesEveryGeneratedFileGdcmReads) {
   TempDir dir;
   const std::vector<std::string> files = generatedCorpus(dir);
-  EXPECT_GE(files.size(), 27u);
+  EXPECT_GE(files.size(), 28u);
   expectPassed(files);
 }
 
@@ -151,7 +157,11 @@ TEST(DicomValidCorpus, ThePreCheckRefusesEveryHostileFile) {
   openItem.beforePixels = undefinedLength(0x0040, 0xa730, "SQ") + itemStart();
   liar.beforePixels = uintBytes(0x0040, 2) + uintBytes(0xa170, 2) + "OB" + std::string(2, '\0') +
                       uintBytes(0xfffffff0u, 4);
+  ByteImageSpec dose;  // one frame, one offset: GDCM's reader asserts
+  dose.sopClass = "1.2.840.10008.5.1.4.1.1.481.2";
+  dose.beforePixels = explicitElement(0x3004, 0x000c, "DS", evenText("0"));
   const std::vector<std::string> hostile = {
+      part10(imageDataSet(dose), kExplicitLittle, dose.sopClass),
       part10(imageDataSet(deep), kExplicitLittle),
       part10(rawDeflate(imageDataSet(deep)), kDeflated),
       part10(rawDeflate(imageDataSet(openItem)), kDeflated),
