@@ -48,6 +48,13 @@ void noteSkipped(const std::vector<std::string>& skipped, const std::string& pre
                     more);
 }
 
+// How much a series holds, for the series list: its slices, or a multi-frame file's frames.
+std::string seriesSize(const DicomSeries& s) {
+  const int64_t frames = s.slices.size() == 1 ? s.slices.front().frames : 1;
+  if (frames > 1) return std::to_string(frames) + " frames";
+  return std::to_string(s.slices.size()) + (s.slices.size() == 1 ? " slice" : " slices");
+}
+
 // The folder of `file` relative to `root` (where a series lies in a CD's tree).
 std::string relativeFolder(const std::string& file, const std::string& root) {
   const std::filesystem::path rel =
@@ -103,7 +110,7 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   if (all.size() > 1 || below)  // below: where the series lies, even alone
     for (const DicomSeries& s : all) {
       const std::string label =
-          std::to_string(s.slices.size()) + " slices" +
+          seriesSize(s) +
           (s.description.empty() ? "" : ", " + s.description) +
           (s.partOf.empty() ? "" : " (" + s.partOf + ")") +
           (below ? " in " + quoteText(relativeFolder(s.slices.front().file, dir), 80) : "");
