@@ -1,4 +1,5 @@
-// Folders of DICOM files: a multi-frame file in the series list.
+// Folders of DICOM files beside other files: a TIFF export beside the series, a multi-frame file
+// in the series list.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -11,6 +12,23 @@ namespace ewa {
 namespace {
 
 using namespace testing;
+
+TEST(DicomFolders, ASeriesBesideTiffFilesOpensAsTheSeries) {
+  TempDir dir;
+  const std::string series = dicomSeries(dir, "s", 3);
+  const Volume alone = loadVolume(series);
+  // A viewer's TIFF export beside the slices, of another size.
+  ASSERT_TRUE(writeTiff<uint8_t>(series + "/export.tif", 7, 6, {std::vector<uint8_t>(42, 9)}, 1));
+  const Volume v = loadVolume(series);
+  EXPECT_EQ(v.dims(), alone.dims());
+  EXPECT_EQ(v.bytes(), alone.bytes());
+  // A folder of TIFF files alone is still a TIFF stack.
+  ASSERT_TRUE(writeTiff<uint8_t>(dir.path("t.tif"), 7, 6, {std::vector<uint8_t>(42, 9)}, 1));
+  std::filesystem::create_directories(dir.path("tiffs"));
+  std::filesystem::copy_file(dir.path("t.tif"), dir.path("tiffs/a.tif"));
+  std::filesystem::copy_file(dir.path("t.tif"), dir.path("tiffs/b.tif"));
+  EXPECT_EQ(loadVolume(dir.path("tiffs")).dims(), (std::array<int64_t, 3>{7, 6, 2}));
+}
 
 TEST(DicomFolders, TheSeriesListGivesAMultiFrameFilesFrames) {
   TempDir dir;
