@@ -18,8 +18,8 @@ std::string littleEndian(uint64_t v, int width) {
 // An explicit VR little-endian meta element of a short VR.
 std::string metaElement(uint16_t element, const char* vr, std::string value) {
   if (value.size() % 2) value += '\0';
-  return littleEndian(0x0002, 2) + littleEndian(element, 2) + vr +
-         littleEndian(value.size(), 2) + value;
+  return littleEndian(0x0002, 2) + littleEndian(element, 2) + vr + littleEndian(value.size(), 2) +
+         value;
 }
 
 // A Part 10 file: preamble, meta header naming the deflated syntax, `data` raw-deflated.

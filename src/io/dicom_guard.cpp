@@ -212,8 +212,8 @@ struct Walk {
         return fail(pos, "element (" + hex(group) + "," + hex(element) + ") of odd length " +
                              std::to_string(length));
       if ((sequence || length == 0xffffffffu) && sequenceDepth() >= kMaxSequenceDepth)
-        return fail(pos, "sequences nested more than " + std::to_string(kMaxSequenceDepth) +
-                             " deep");
+        return fail(pos,
+                    "sequences nested more than " + std::to_string(kMaxSequenceDepth) + " deep");
       if (length == 0xffffffffu) {  // undefined length: items follow, then a delimiter
         open.push_back({group == 0x7fe0 ? Container::Fragments : Container::Sequence, kUndefined});
         continue;
@@ -263,9 +263,7 @@ struct Walk {
     if (group == 0x0028 && element == 0x0008) hasFrameCount = true;
   }
 
-  bool paddingReadable(size_t zeros) const {
-    return zeros < 4 || (zeroElements && zeros % 8 < 4);
-  }
+  bool paddingReadable(size_t zeros) const { return zeros < 4 || (zeroElements && zeros % 8 < 4); }
 
   size_t sequenceDepth() const {
     return size_t(std::count_if(open.begin(), open.end(),

@@ -33,9 +33,9 @@ class RawInflater {
 }  // namespace
 
 uint64_t dicomInflateLimit(uint64_t deflatedBytes) {
-  const uint64_t byRatio =
-      deflatedBytes > kDicomInflateCap / kDicomInflateRatio ? kDicomInflateCap
-                                                            : deflatedBytes * kDicomInflateRatio;
+  const uint64_t byRatio = deflatedBytes > kDicomInflateCap / kDicomInflateRatio
+                               ? kDicomInflateCap
+                               : deflatedBytes * kDicomInflateRatio;
   return std::min(kDicomInflateCap, std::max(kDicomInflateFloor, byRatio));
 }
 
@@ -54,8 +54,8 @@ std::vector<uint8_t> inflateDicomDataSet(const std::string& path, const uint8_t*
       failLoad(path, prefix + "inflates to more than " + std::to_string(limit) + " bytes (" +
                          std::to_string(size) + " deflated): a deflate bomb?");
     // Doubling (from 1 MiB) up to the limit: memory follows what the stream really yields.
-    const size_t grown = size_t(std::min<uint64_t>(
-        limit, std::max<uint64_t>(uint64_t(1) << 20, uint64_t(out.size()) * 2)));
+    const size_t grown = size_t(
+        std::min<uint64_t>(limit, std::max<uint64_t>(uint64_t(1) << 20, uint64_t(out.size()) * 2)));
     checkAllocation(path, grown, "inflated DICOM data set");
     const size_t have = out.size();
     out.resize(grown);

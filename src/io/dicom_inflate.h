@@ -24,7 +24,6 @@ uint64_t dicomInflateLimit(uint64_t deflatedBytes);
 // bytes at `data`, which must end within them (bytes after its end are ignored, as GDCM does).
 // Throws LoadError naming `path` when the stream is corrupt or cut short, or inflates to more
 // than dicomInflateLimit(size) bytes; the buffer grows only as the data fills it.
-std::vector<uint8_t> inflateDicomDataSet(const std::string& path, const uint8_t* data,
-                                         size_t size);
+std::vector<uint8_t> inflateDicomDataSet(const std::string& path, const uint8_t* data, size_t size);
 
 }  // namespace ewa

@@ -17,8 +17,8 @@ namespace ewa {
 
 namespace {
 
-// True when a file of the folder that is no slice image or TIFF is DICOM (or a CD's DICOMDIR); the first
-// thousand such files are looked into.
+// True when a file of the folder that is no slice image or TIFF is DICOM (or a CD's DICOMDIR); the
+// first thousand such files are looked into.
 bool holdsDicom(const std::string& folder) {
   std::error_code ec;
   int looked = 0;

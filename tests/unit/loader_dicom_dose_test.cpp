@@ -15,16 +15,16 @@ using namespace testing;
 
 // A dose grid of `offsets.size()` frames (frame f's values i + 10 j + 1000 f) with those offsets
 // and a scaling.
-std::string doseFile(const TempDir& dir, const std::string& name,
-                     const std::string& offsets, int frames, const std::string& scaling = "") {
+std::string doseFile(const TempDir& dir, const std::string& name, const std::string& offsets,
+                     int frames, const std::string& scaling = "") {
   ByteImageSpec spec;
   spec.sopClass = "1.2.840.10008.5.1.4.1.1.481.2";
   spec.modality = "RTDOSE";
   spec.frames = frames;
   spec.z = 0.0;
-  spec.beforePixels = explicitElement(0x3004, 0x000c, "DS", evenText(offsets)) +
-                      (scaling.empty() ? std::string()
-                                       : explicitElement(0x3004, 0x000e, "DS", evenText(scaling)));
+  spec.beforePixels =
+      explicitElement(0x3004, 0x000c, "DS", evenText(offsets)) +
+      (scaling.empty() ? std::string() : explicitElement(0x3004, 0x000e, "DS", evenText(scaling)));
   return dir.write(name, part10(imageDataSet(spec), kExplicitLittle, spec.sopClass));
 }
 
@@ -78,9 +78,9 @@ TEST(DicomDose, HeadersGdcmAbortsOnAreRefusedInOneLine) {
   ByteImageSpec spec;
   spec.sopClass = "1.2.840.10008.5.1.4.1.1.481.2";
   spec.beforePixels = explicitElement(0x3004, 0x000c, "DS", evenText("0\\5"));
-  expectVolumeLoadError(dir.write("deflated.dcm", part10(rawDeflate(imageDataSet(spec)), kDeflated,
-                                                         spec.sopClass)),
-                        "without NumberOfFrames");
+  expectVolumeLoadError(
+      dir.write("deflated.dcm", part10(rawDeflate(imageDataSet(spec)), kDeflated, spec.sopClass)),
+      "without NumberOfFrames");
   // No offsets, or an empty element: GDCM leaves the spacing alone, and so do we.
   EXPECT_EQ(loadVolume(doseFile(dir, "none.dcm", "", 2)).dims()[2], 2);
 }

@@ -43,8 +43,9 @@ TEST(DicomHostile, DeepNestingIsRefusedBeforeGdcmRecursesIntoIt) {
   // In the implicit syntax too, where a defined-length value that opens with an item is read
   // as a sequence.
   std::string implicitBomb;
-  for (int d = 0; d < 5000; ++d) implicitBomb = itemStart(uint32_t(implicitBomb.size() + 8)) +
-                                                implicitElement(0x0040, 0xa730, implicitBomb);
+  for (int d = 0; d < 5000; ++d)
+    implicitBomb = itemStart(uint32_t(implicitBomb.size() + 8)) +
+                   implicitElement(0x0040, 0xa730, implicitBomb);
   const std::string implicitFile = dir.write(
       "implicit.dcm",
       part10(implicitElement(0x0008, 0x0016, evenText("1.2.840.10008.5.1.4.1.1.7", '\0')) +
@@ -57,15 +58,14 @@ TEST(DicomHostile, AFolderWithABombLoadsItsGoodFilesAndNamesTheBomb) {
   TempDir dir;
   const std::string series = dicomSeries(dir, "s", 4);
   dir.write("s/bomb.dcm", part10(nestedImage(20000), kExplicitLittle));
-  dir.write("s/deflated.dcm", part10(rawDeflate(undefinedLength(0x0008, 0x0016, "OB")),
-                                     kDeflated));
+  dir.write("s/deflated.dcm", part10(rawDeflate(undefinedLength(0x0008, 0x0016, "OB")), kDeflated));
   const Volume v = loadVolume(series);
   EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{5, 4, 4}));
-  EXPECT_TRUE(hasNoteWith(v, "warning: skipped " + series + "/bomb.dcm: corrupt or truncated "
-                             "DICOM data: sequences nested more than 128 deep"))
+  EXPECT_TRUE(hasNoteWith(v, "warning: skipped " + series +
+                                 "/bomb.dcm: corrupt or truncated "
+                                 "DICOM data: sequences nested more than 128 deep"))
       << allNotes(v);
-  EXPECT_TRUE(hasNoteWith(v, "warning: skipped " + series + "/deflated.dcm: "))
-      << allNotes(v);
+  EXPECT_TRUE(hasNoteWith(v, "warning: skipped " + series + "/deflated.dcm: ")) << allNotes(v);
 }
 
 TEST(DicomHostile, DeflatedDataSetsAreWalkedAsOthersAre) {
@@ -103,9 +103,9 @@ TEST(DicomHostile, DeflatedDataSetsAreWalkedAsOthersAre) {
   }
   // A stream cut short or corrupt.
   const std::string stream = rawDeflate(imageDataSet({}));
-  expectVolumeLoadError(dir.write("cut.dcm", part10(stream.substr(0, stream.size() / 2),
-                                                    kDeflated)),
-                        "the deflated DICOM data set is cut short");
+  expectVolumeLoadError(
+      dir.write("cut.dcm", part10(stream.substr(0, stream.size() / 2), kDeflated)),
+      "the deflated DICOM data set is cut short");
   expectVolumeLoadError(dir.write("corrupt.dcm", part10(std::string(40, '\xff'), kDeflated)),
                         "the deflated DICOM data set is corrupt");
 }
@@ -148,16 +148,16 @@ TEST(DicomHostile, ZeroPaddingAfterTheLastElementIsTheEnd) {
     EXPECT_EQ(loadVolume(file).bytes(), reference.bytes()) << file;
   }
   for (const size_t count : {1, 2, 3}) {
-    const std::string file = dir.write("padd" + std::to_string(count) + ".dcm",
-                                       part10(rawDeflate(image + std::string(count, '\0')),
-                                              kDeflated));
+    const std::string file =
+        dir.write("padd" + std::to_string(count) + ".dcm",
+                  part10(rawDeflate(image + std::string(count, '\0')), kDeflated));
     EXPECT_EQ(loadVolume(file).bytes(), reference.bytes()) << file;
   }
   for (const size_t count : {4, 7, 12, 100}) {
     const std::string zeros(count, '\0');
-    expectVolumeLoadError(dir.write("bad" + std::to_string(count) + ".dcm",
-                                    part10(image + zeros, kExplicitLittle)),
-                          std::to_string(count) + " zero bytes after the last element");
+    expectVolumeLoadError(
+        dir.write("bad" + std::to_string(count) + ".dcm", part10(image + zeros, kExplicitLittle)),
+        std::to_string(count) + " zero bytes after the last element");
     expectVolumeLoadError(dir.write("badd" + std::to_string(count) + ".dcm",
                                     part10(rawDeflate(image + zeros), kDeflated)),
                           std::to_string(count) + " zero bytes after the last element");
@@ -171,9 +171,9 @@ TEST(DicomHostile, ZeroPaddingAfterTheLastElementIsTheEnd) {
   EXPECT_EQ(loadVolume(implicit).bytes(), unpadded);
   dir.write("i/im0.dcm", implicitBytes + std::string(5, '\0'));
   expectVolumeLoadError(implicit, "5 zero bytes after the last element");
-  expectVolumeLoadError(dir.write("junk.dcm", part10(image + std::string(64, '\0') + "x",
-                                                     kExplicitLittle)),
-                        "corrupt or truncated DICOM data");
+  expectVolumeLoadError(
+      dir.write("junk.dcm", part10(image + std::string(64, '\0') + "x", kExplicitLittle)),
+      "corrupt or truncated DICOM data");
 }
 
 }  // namespace

@@ -1,9 +1,8 @@
 // The pre-check (dicom_guard) held to valid files and hostile ones: it must never refuse a file
 // GDCM reads correctly (a refused slice is a slice lost from its series), and must refuse what
 // would crash, abort or exhaust GDCM.
-#include <gtest/gtest.h>
-
 #include <gdcmImageReader.h>
+#include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -103,7 +102,8 @@ std::vector<std::string> generatedCorpus(const TempDir& dir) {
   files.push_back(dir.write("bytes_deflated_padded.dcm",
                             part10(rawDeflate(image + std::string(3, '\0')), kDeflated)));
   files.push_back(dir.write("gdcm_padded.dcm", fileBytes(files[0]) + std::string(2400000, '\0')));
-  files.push_back(dir.write("gdcm_implicit_padded.dcm", fileBytes(files[3]) + std::string(3, '\0')));
+  files.push_back(
+      dir.write("gdcm_implicit_padded.dcm", fileBytes(files[3]) + std::string(3, '\0')));
   ByteImageSpec nested;
   nested.beforePixels = nestedSequences(128);
   files.push_back(dir.write("nested.dcm", part10(imageDataSet(nested), kExplicitLittle)));
@@ -137,8 +137,7 @@ TEST(DicomValidCorpus, ThePreCheckPassesEverySharedDicomFile) {
     // Zipped series, unpacked by unzip (not our reader) where it is installed.
     if (it->path().extension() == ".zip" && file.find("dicom") != std::string::npos) {
       const std::string to = dir.path("zip" + std::to_string(files.size()));
-      const std::string command =
-          "unzip -q -o '" + file + "' -d '" + to + "' >/dev/null 2>&1";
+      const std::string command = "unzip -q -o '" + file + "' -d '" + to + "' >/dev/null 2>&1";
       if (std::system(command.c_str()) != 0) continue;
       for (const auto& inner : fs::recursive_directory_iterator(to))
         if (inner.is_regular_file() && looksLikeDicom(inner.path().string()))
