@@ -47,7 +47,9 @@ inline std::string undefinedLength(uint16_t group, uint16_t element, const std::
 inline std::string itemStart(uint32_t length = 0xffffffffu) {
   return uintBytes(0xfffe, 2) + uintBytes(0xe000, 2) + uintBytes(length, 4);
 }
-inline std::string itemEnd() { return uintBytes(0xfffe, 2) + uintBytes(0xe00d, 2) + uintBytes(0, 4); }
+inline std::string itemEnd() {
+  return uintBytes(0xfffe, 2) + uintBytes(0xe00d, 2) + uintBytes(0, 4);
+}
 inline std::string sequenceEnd() {
   return uintBytes(0xfffe, 2) + uintBytes(0xe0dd, 2) + uintBytes(0, 4);
 }
@@ -101,28 +103,30 @@ struct ByteImageSpec {
   std::string sopInstance = "1.2.826.0.1.3680043.2.1125.77.1";
   std::string modality = "OT";
   std::string sopClass = "1.2.840.10008.5.1.4.1.1.7";
-  int frames = 1;            // more: NumberOfFrames, frame f's pixels plus 1000 f
-  std::string beforePixels;  // further elements (in tag order) between group 0028 and 7FE0
+  int frames = 1;                // more: NumberOfFrames, frame f's pixels plus 1000 f
+  std::vector<uint16_t> pixels;  // instead of the pattern above
+  // Further elements, in tag order: before (0008,0016); between (0008,0060) and (0020,000E);
+  // between (0020,000E) and (0020,0032); between group 0028 and (7FE0,0010).
+  std::string beforeSopClass, beforeSeries, beforePosition, beforePixels;
 };
 inline std::string imageDataSet(const ByteImageSpec& s) {
-  std::vector<uint16_t> pixels;
-  for (int f = 0; f < s.frames; ++f)
+  std::vector<uint16_t> pixels = s.pixels;
+  for (int f = 0; f < s.frames && s.pixels.empty(); ++f)
     for (int j = 0; j < s.rows; ++j)
       for (int i = 0; i < s.columns; ++i)
         pixels.push_back(uint16_t(i + 10 * j + 100 * int(s.z) + 1000 * f));
   char position[64];
   std::snprintf(position, sizeof position, "0\\0\\%g", s.z);
-  return explicitElement(0x0008, 0x0016, "UI", evenText(s.sopClass, '\0')) +
+  return s.beforeSopClass + explicitElement(0x0008, 0x0016, "UI", evenText(s.sopClass, '\0')) +
          explicitElement(0x0008, 0x0018, "UI", evenText(s.sopInstance, '\0')) +
-         explicitElement(0x0008, 0x0060, "CS", evenText(s.modality)) +
-         explicitElement(0x0020, 0x000e, "UI", evenText(s.seriesUid, '\0')) +
+         explicitElement(0x0008, 0x0060, "CS", evenText(s.modality)) + s.beforeSeries +
+         explicitElement(0x0020, 0x000e, "UI", evenText(s.seriesUid, '\0')) + s.beforePosition +
          explicitElement(0x0020, 0x0032, "DS", evenText(position)) +
          explicitElement(0x0020, 0x0037, "DS", evenText("1\\0\\0\\0\\1\\0")) +
          explicitElement(0x0028, 0x0002, "US", uintBytes(1, 2)) +
          explicitElement(0x0028, 0x0004, "CS", evenText("MONOCHROME2")) +
-         (s.frames > 1
-              ? explicitElement(0x0028, 0x0008, "IS", evenText(std::to_string(s.frames)))
-              : std::string()) +
+         (s.frames > 1 ? explicitElement(0x0028, 0x0008, "IS", evenText(std::to_string(s.frames)))
+                       : std::string()) +
          explicitElement(0x0028, 0x0010, "US", uintBytes(uint64_t(s.rows), 2)) +
          explicitElement(0x0028, 0x0011, "US", uintBytes(uint64_t(s.columns), 2)) +
          explicitElement(0x0028, 0x0030, "DS", evenText("0.5\\0.5")) +
