@@ -360,13 +360,14 @@ def nested_sequences(depth):
             explicit_element(0x0040, 0xA160, b"UT", b"deep") + (item_end + seq_end) * depth)
 
 
-def explicit_image(z, extra=b"", rows=3, cols=4):
-    # A small secondary-capture image data set in explicit VR little endian, in tag order,
-    # `extra` (elements of groups 0029 to 7FDF) before its pixels.
+def explicit_image(z, extra=b"", rows=3, cols=4, first=b"", before_series=b"", pixels=None):
+    # A small secondary-capture image data set in explicit VR little endian, in tag order:
+    # `first` before (0008,0016), `before_series` before (0020,000E), `extra` (elements of
+    # groups 0029 to 7FDF) before its pixels.
     e = explicit_element
-    return (e(0x0008, 0x0016, b"UI", b"1.2.840.10008.5.1.4.1.1.7") +
+    return (first + e(0x0008, 0x0016, b"UI", b"1.2.840.10008.5.1.4.1.1.7") +
             e(0x0008, 0x0018, b"UI", b"1.2.826.0.1.3680043.2.1125.77.1") +
-            e(0x0008, 0x0060, b"CS", b"OT") +
+            e(0x0008, 0x0060, b"CS", b"OT") + before_series +
             e(0x0020, 0x000E, b"UI", b"1.2.826.0.1.3680043.2.1125.77") +
             e(0x0020, 0x0032, b"DS", ("0\\0\\%g" % z).encode()) +
             e(0x0020, 0x0037, b"DS", b"1\\0\\0\\0\\1\\0") +
@@ -379,7 +380,29 @@ def explicit_image(z, extra=b"", rows=3, cols=4):
             e(0x0028, 0x0101, b"US", struct.pack("<H", 16)) +
             e(0x0028, 0x0102, b"US", struct.pack("<H", 15)) +
             e(0x0028, 0x0103, b"US", struct.pack("<H", 0)) + extra +
-            e(0x7FE0, 0x0010, b"OW", payload(rows * cols, 2, int(z))))
+            e(0x7FE0, 0x0010, b"OW", payload(rows * cols, 2, int(z)) if pixels is None else pixels))
+
+
+def csa_header(elements):
+    # A Siemens CSA header in syngo's SV10 format: (name, [values]) elements of IS values.
+    out = b"SV10\4\3\2\1" + struct.pack("<II", len(elements), 77)
+    for name, values in elements:
+        out += struct.pack("<64si4s3i", name.encode(), len(values), b"IS", 6, len(values), 77)
+        for v in values:
+            t = v.encode() + b"\0"
+            out += struct.pack("<4i", len(t), len(t), 77, len(t)) + t + b"\0" * (-len(t) % 4)
+    return out
+
+
+def mosaic_image():
+    # A Siemens mosaic: 4 slices of 2 x 2 in 2 x 2 tiles, as the CSA header counts them.
+    e = explicit_element
+    csa = csa_header([("NumberOfImagesInMosaic", ["4"]), ("SliceNormalVector", ["0", "0", "1"])])
+    return explicit_image(0, rows=4, cols=4, pixels=payload(16, 2, 5),
+                          first=e(0x0008, 0x0008, b"CS", b"ORIGINAL\\PRIMARY\\M\\MOSAIC"),
+                          before_series=e(0x0018, 0x0088, b"DS", b"3"),
+                          extra=e(0x0029, 0x0010, b"LO", b"SIEMENS CSA HEADER") +
+                          e(0x0029, 0x1010, b"OB", csa))
 
 
 def part10(data_set, syntax):
@@ -411,6 +434,7 @@ def dicom_seeds():
     write("dicom", "nested_200_deep.dcm", part10(explicit_image(0, nested_sequences(200)),
                                                  EXPLICIT_LE))
     write("dicom", "deflated_slice.dcm", part10(raw_deflate(explicit_image(0)), DEFLATED))
+    write("dicom", "siemens_mosaic.dcm", part10(mosaic_image(), EXPLICIT_LE))
     # The deflating target's inputs are inflated data sets (it deflates them into a file).
     write("dicom_deflate", "slice.bin", explicit_image(0))
     write("dicom_deflate", "slice_nested_20.bin", explicit_image(0, nested_sequences(20)))
