@@ -201,12 +201,10 @@ struct Walk {
         sequence = vr[0] == 'S' && vr[1] == 'Q';
       } else {
         length = readUnsigned(&bytes[pos + 4], 4, big);
+        // A defined length in the implicit syntax is opaque here: GDCM keeps such a value's
+        // bytes and parses them only when asked (a 5,000-level bomb of them reads), so only
+        // undefined lengths nest.
         pos += 8;
-        // GDCM reads a defined-length value that starts with an item tag as a sequence (the
-        // implicit VR does not say so): walked as one, its nesting counted.
-        sequence = !pixelData && length >= 8 && length != 0xffffffffu && length <= n - pos &&
-                   readUnsigned(&bytes[pos], 2, big) == 0xfffe &&
-                   readUnsigned(&bytes[pos + 2], 2, big) == 0xe000;
       }
       if (evenLengths && !open.empty() && length != 0xffffffffu && length % 2 != 0)
         return fail(pos, "element (" + hex(group) + "," + hex(element) + ") of odd length " +

@@ -40,18 +40,25 @@ TEST(DicomHostile, DeepNestingIsRefusedBeforeGdcmRecursesIntoIt) {
                                        part10(nestedImage(depth), kExplicitLittle));
     expectVolumeLoadError(file, "sequences nested more than 128 deep");
   }
-  // In the implicit syntax too, where a defined-length value that opens with an item is read
-  // as a sequence.
-  std::string implicitBomb;
-  for (int d = 0; d < 5000; ++d)
-    implicitBomb = itemStart(uint32_t(implicitBomb.size() + 8)) +
-                   implicitElement(0x0040, 0xa730, implicitBomb);
-  const std::string implicitFile = dir.write(
-      "implicit.dcm",
-      part10(implicitElement(0x0008, 0x0016, evenText("1.2.840.10008.5.1.4.1.1.7", '\0')) +
-                 implicitElement(0x0040, 0xa730, implicitBomb),
-             kImplicitLittle));
-  expectVolumeLoadError(implicitFile, "sequences nested more than 128 deep");
+  // In the implicit syntax too, with undefined lengths. Defined lengths nest in GDCM only
+  // when asked for (it keeps their bytes), so a bomb of them passes and GDCM reads the file.
+  const std::string sopClass =
+      implicitElement(0x0008, 0x0016, evenText("1.2.840.10008.5.1.4.1.1.7", '\0'));
+  std::string undefinedBomb, definedBomb;
+  for (int d = 0; d < 5000; ++d) {
+    undefinedBomb = uintBytes(0x0040, 2) + uintBytes(0xa730, 2) + uintBytes(0xffffffffu, 4) +
+                    itemStart() + undefinedBomb + itemEnd() + sequenceEnd();
+    definedBomb =
+        itemStart(uint32_t(definedBomb.size() + 8)) + implicitElement(0x0040, 0xa730, definedBomb);
+  }
+  expectVolumeLoadError(
+      dir.write("implicit.dcm", part10(sopClass + undefinedBomb, kImplicitLittle)),
+      "sequences nested more than 128 deep");
+  const std::string defined =
+      dir.write("defined.dcm",
+                part10(sopClass + implicitElement(0x0040, 0xa730, definedBomb), kImplicitLittle));
+  EXPECT_EQ(checkDicomStructure(defined), DicomStructure::Plausible);
+  expectVolumeLoadError(defined, "not a DICOM image");  // read, and no image in it
 }
 
 TEST(DicomHostile, AFolderWithABombLoadsItsGoodFilesAndNamesTheBomb) {
