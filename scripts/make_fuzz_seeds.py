@@ -335,12 +335,110 @@ def without_meta(raw):
     return raw[first - 8:]
 
 
+EXPLICIT_LE = b"1.2.840.10008.1.2.1"
+DEFLATED = b"1.2.840.10008.1.2.1.99"
+
+
+def explicit_element(group, elem, vr, value):
+    # One explicit VR little-endian element, its value padded to even length.
+    if len(value) % 2:
+        value += b"\0" if vr == b"UI" else b" "
+    if vr in (b"OB", b"OW", b"SQ", b"UN", b"UT"):
+        return struct.pack("<HH2s2xI", group, elem, vr, len(value)) + value
+    return struct.pack("<HH2sH", group, elem, vr, len(value)) + value
+
+
+def undefined_length(group, elem, vr):
+    return struct.pack("<HH2s2xI", group, elem, vr, 0xFFFFFFFF)
+
+
+def nested_sequences(depth):
+    # `depth` undefined-length Content Sequences, each the one item of the one above.
+    item, item_end, seq_end = (struct.pack("<HHI", 0xFFFE, e, length) for e, length in
+                               ((0xE000, 0xFFFFFFFF), (0xE00D, 0), (0xE0DD, 0)))
+    return ((undefined_length(0x0040, 0xA730, b"SQ") + item) * depth +
+            explicit_element(0x0040, 0xA160, b"UT", b"deep") + (item_end + seq_end) * depth)
+
+
+def explicit_image(z, extra=b"", rows=3, cols=4, first=b"", before_series=b"", pixels=None):
+    # A small secondary-capture image data set in explicit VR little endian, in tag order:
+    # `first` before (0008,0016), `before_series` before (0020,000E), `extra` (elements of
+    # groups 0029 to 7FDF) before its pixels.
+    e = explicit_element
+    return (first + e(0x0008, 0x0016, b"UI", b"1.2.840.10008.5.1.4.1.1.7") +
+            e(0x0008, 0x0018, b"UI", b"1.2.826.0.1.3680043.2.1125.77.1") +
+            e(0x0008, 0x0060, b"CS", b"OT") + before_series +
+            e(0x0020, 0x000E, b"UI", b"1.2.826.0.1.3680043.2.1125.77") +
+            e(0x0020, 0x0032, b"DS", ("0\\0\\%g" % z).encode()) +
+            e(0x0020, 0x0037, b"DS", b"1\\0\\0\\0\\1\\0") +
+            e(0x0028, 0x0002, b"US", struct.pack("<H", 1)) +
+            e(0x0028, 0x0004, b"CS", b"MONOCHROME2") +
+            e(0x0028, 0x0010, b"US", struct.pack("<H", rows)) +
+            e(0x0028, 0x0011, b"US", struct.pack("<H", cols)) +
+            e(0x0028, 0x0030, b"DS", b"0.5\\0.5") +
+            e(0x0028, 0x0100, b"US", struct.pack("<H", 16)) +
+            e(0x0028, 0x0101, b"US", struct.pack("<H", 16)) +
+            e(0x0028, 0x0102, b"US", struct.pack("<H", 15)) +
+            e(0x0028, 0x0103, b"US", struct.pack("<H", 0)) + extra +
+            e(0x7FE0, 0x0010, b"OW", payload(rows * cols, 2, int(z)) if pixels is None else pixels))
+
+
+def csa_header(elements):
+    # A Siemens CSA header in syngo's SV10 format: (name, [values]) elements of IS values.
+    out = b"SV10\4\3\2\1" + struct.pack("<II", len(elements), 77)
+    for name, values in elements:
+        out += struct.pack("<64si4s3i", name.encode(), len(values), b"IS", 6, len(values), 77)
+        for v in values:
+            t = v.encode() + b"\0"
+            out += struct.pack("<4i", len(t), len(t), 77, len(t)) + t + b"\0" * (-len(t) % 4)
+    return out
+
+
+def mosaic_image():
+    # A Siemens mosaic: 4 slices of 2 x 2 in 2 x 2 tiles, as the CSA header counts them.
+    e = explicit_element
+    csa = csa_header([("NumberOfImagesInMosaic", ["4"]), ("SliceNormalVector", ["0", "0", "1"])])
+    return explicit_image(0, rows=4, cols=4, pixels=payload(16, 2, 5),
+                          first=e(0x0008, 0x0008, b"CS", b"ORIGINAL\\PRIMARY\\M\\MOSAIC"),
+                          before_series=e(0x0018, 0x0088, b"DS", b"3"),
+                          extra=e(0x0029, 0x0010, b"LO", b"SIEMENS CSA HEADER") +
+                          e(0x0029, 0x1010, b"OB", csa))
+
+
+def part10(data_set, syntax):
+    # Preamble and meta header (its group length first) before `data_set`.
+    e = explicit_element
+    meta = (e(0x0002, 0x0001, b"OB", b"\0\1") +
+            e(0x0002, 0x0002, b"UI", b"1.2.840.10008.5.1.4.1.1.7") +
+            e(0x0002, 0x0003, b"UI", b"1.2.826.0.1.3680043.2.1125.77.1") +
+            e(0x0002, 0x0010, b"UI", syntax))
+    return b"\0" * 128 + b"DICM" + e(0x0002, 0x0000, b"UL", struct.pack("<I", len(meta))) + meta + \
+        data_set
+
+
+def raw_deflate(data):
+    # The deflated syntax's stream: raw deflate, no zlib header or trailer.
+    c = zlib.compressobj(9, zlib.DEFLATED, -15)
+    return c.compress(data) + c.flush()
+
+
 def dicom_seeds():
     pet = read_text(os.path.join(DATA, "dicom-pet", "000000.dcm"))
     write("dicom", "pet_slice.dcm", small_dicom(pet, 0))
     write("dicom", "bare_implicit_slice.dcm", without_meta(small_dicom(pet, 0)))
     write("dicom", "pet_three_slices.dcm",
           small_dicom(pet, 0) + MARK + small_dicom(pet, 3.375) + MARK + small_dicom(pet, 6.75))
+    # The classes hostile files came in: zero padding after the last element (legal), nesting
+    # past the pre-check's limit (refused), a deflated data set (inflated and walked).
+    write("dicom", "pet_slice_zero_padded.dcm", small_dicom(pet, 0) + bytes(1000))
+    write("dicom", "nested_200_deep.dcm", part10(explicit_image(0, nested_sequences(200)),
+                                                 EXPLICIT_LE))
+    write("dicom", "deflated_slice.dcm", part10(raw_deflate(explicit_image(0)), DEFLATED))
+    write("dicom", "siemens_mosaic.dcm", part10(mosaic_image(), EXPLICIT_LE))
+    # The deflating target's inputs are inflated data sets (it deflates them into a file).
+    write("dicom_deflate", "slice.bin", explicit_image(0))
+    write("dicom_deflate", "slice_nested_20.bin", explicit_image(0, nested_sequences(20)))
+    write("dicom_deflate", "slice_zero_padded.bin", explicit_image(0) + bytes(3))
 
 
 def tiff_file(pages, bits, sample_format, description=b""):

@@ -5,6 +5,7 @@
 #include <gdcmGlobal.h>
 #include <gdcmVR.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -13,6 +14,8 @@
 
 #include "io/byte_order.h"
 #include "io/dicom_colour.h"
+#include "io/dicom_dose_grid.h"
+#include "io/dicom_inflate.h"
 #include "io/dicom_series.h"
 #include "io/file_bytes.h"
 #include "io/file_listing.h"
@@ -64,6 +67,12 @@ struct Container {
 };
 constexpr size_t kUndefined = SIZE_MAX;
 
+// How deep sequences may nest. GDCM reads nested items recursively and overflows its stack
+// (SIGSEGV) a few thousand levels down (3,000 still load); real files need a handful (enhanced
+// functional groups 3, structured report content trees rarely 20): 128 leaves room for any of
+// them and stays far below the crash, so a file past it is hostile.
+constexpr size_t kMaxSequenceDepth = 128;
+
 struct Walk {
   const std::vector<uint8_t>& bytes;
   std::string problem;  // empty while the walk is fine
@@ -75,9 +84,18 @@ struct Walk {
   // items, and asserts on an item whose contents' length is odd (found by fuzzing), so items
   // and the elements inside them must have even lengths, as the standard has it.
   bool evenLengths = false;
+  // Zero padding after the data set: GDCM stops cleanly at fewer than 4 bytes (no whole tag);
+  // in a little-endian file it reads each 8 zero bytes as an empty element (0000,0000) first
+  // (its deflate and big-endian readers do not), and asserts on a tag with 4 to 7 bytes left.
+  bool zeroElements = false;
   // The data set's own (0028,0010), (0011), (0002), (0100).
   int64_t rows = 0, columns = 0, samples = 1, bitsAllocated = 0;
   std::string photometric{};  // (0028,0004), trimmed
+  // The data set's own values GDCM's RT Dose reading depends on (doseGridHeaderProblem):
+  // SOP class (0008,0016) or, in the meta header, (0002,0002); (3004,000C); whether (0028,0008)
+  // is there.
+  std::string sopClass{}, gridFrameOffsets{};
+  bool hasFrameCount = false;
 
   // Walks elements from `pos` to the end (or, with `metaOnly`, while the group is 0002). Items
   // and delimiters must sit where they belong: GDCM asserts (aborts) on one out of place.
@@ -90,6 +108,14 @@ struct Walk {
         open.pop_back();
       }
       if (pos >= n) break;
+      // Zero bytes after the last top-level element are padding, where GDCM reads them.
+      if (open.empty() && !metaOnly && zeroFrom(pos)) {
+        if (!paddingReadable(n - pos))
+          return fail(pos, std::to_string(n - pos) +
+                               " zero bytes after the last element: padding of a length GDCM "
+                               "cannot read");
+        break;
+      }
       if (n - pos < 8) return fail(pos, "an element header is cut short");
       const bool big = bigEndian && !metaOnly;
       const auto group = uint16_t(readUnsigned(&bytes[pos], 2, big));
@@ -175,11 +201,17 @@ struct Walk {
         sequence = vr[0] == 'S' && vr[1] == 'Q';
       } else {
         length = readUnsigned(&bytes[pos + 4], 4, big);
+        // A defined length in the implicit syntax is opaque here: GDCM keeps such a value's
+        // bytes and parses them only when asked (a 5,000-level bomb of them reads), so only
+        // undefined lengths nest.
         pos += 8;
       }
       if (evenLengths && !open.empty() && length != 0xffffffffu && length % 2 != 0)
         return fail(pos, "element (" + hex(group) + "," + hex(element) + ") of odd length " +
                              std::to_string(length));
+      if ((sequence || length == 0xffffffffu) && sequenceDepth() >= kMaxSequenceDepth)
+        return fail(pos,
+                    "sequences nested more than " + std::to_string(kMaxSequenceDepth) + " deep");
       if (length == 0xffffffffu) {  // undefined length: items follow, then a delimiter
         open.push_back({group == 0x7fe0 ? Container::Fragments : Container::Sequence, kUndefined});
         continue;
@@ -200,6 +232,7 @@ struct Walk {
         if (element == 0x0002) samples = value;
         if (element == 0x0100) bitsAllocated = value;
       }
+      if (open.empty()) noteDoseValue(group, element, pos, length);
       if (group == 0x0028 && element == 0x0004 && open.empty() && length <= 64) {
         photometric.assign(reinterpret_cast<const char*>(&bytes[pos]), size_t(length));
         while (!photometric.empty() && (photometric.back() == ' ' || photometric.back() == '\0'))
@@ -213,6 +246,32 @@ struct Walk {
     if (problem.empty() && !metaOnly && !open.empty())
       return fail(pos, "a sequence or item is not closed (truncated file?)");
     return pos;
+  }
+
+  void noteDoseValue(uint16_t group, uint16_t element, size_t pos, uint64_t length) {
+    const auto text = [&] {
+      return std::string(reinterpret_cast<const char*>(&bytes[pos]),
+                         size_t(std::min<uint64_t>(length, 1 << 20)));
+    };
+    if ((group == 0x0002 && element == 0x0002) || (group == 0x0008 && element == 0x0016)) {
+      const std::string uid = text();
+      if (sopClass.empty() || uid.rfind(kRtDoseStorageUid, 0) == 0) sopClass = uid;
+    }
+    if (group == 0x3004 && element == 0x000c) gridFrameOffsets = text();
+    if (group == 0x0028 && element == 0x0008) hasFrameCount = true;
+  }
+
+  bool paddingReadable(size_t zeros) const { return zeros < 4 || (zeroElements && zeros % 8 < 4); }
+
+  size_t sequenceDepth() const {
+    return size_t(std::count_if(open.begin(), open.end(),
+                                [](const Container& c) { return c.kind != Container::Item; }));
+  }
+
+  // Whether every byte from `pos` to the end is zero.
+  bool zeroFrom(size_t pos) const {
+    return std::all_of(bytes.begin() + ptrdiff_t(pos), bytes.end(),
+                       [](uint8_t b) { return b == 0; });
   }
 
   bool recognitionCodeOk(size_t pos, uint64_t length) const {
@@ -313,6 +372,16 @@ DicomStart dicomStart(const std::string& path) {
   return DicomStart::None;
 }
 
+// GDCM's image reader asserts on some RT Dose headers (doseGridHeaderProblem); the SOP class
+// from the meta header (`metaSopClass`) or the data set's own.
+void checkDoseGrid(const std::string& path, const std::string& metaSopClass, const Walk& walk) {
+  const bool dose = metaSopClass.rfind(kRtDoseStorageUid, 0) == 0 ||
+                    walk.sopClass.rfind(kRtDoseStorageUid, 0) == 0;
+  const std::string problem =
+      dose ? doseGridHeaderProblem(walk.gridFrameOffsets, walk.hasFrameCount) : std::string();
+  if (!problem.empty()) failLoad(path, problem);
+}
+
 }  // namespace
 
 bool looksLikeDicom(const std::string& path) {
@@ -335,8 +404,10 @@ DicomStructure checkDicomStructure(const std::string& path) {
   if (start != DicomStart::Part10) {
     const bool explicitVr = start == DicomStart::BareExplicit;
     walk.evenLengths = !explicitVr;
+    walk.zeroElements = true;
     walk.run(0, explicitVr, false, false);
     if (!walk.problem.empty()) failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
+    checkDoseGrid(path, "", walk);
     const std::string syntax = explicitVr ? "1.2.840.10008.1.2.1" : "1.2.840.10008.1.2";
     const std::string problem = colourCodingProblem(walk.photometric, syntax, false);
     if (!problem.empty()) failLoad(path, problem);
@@ -352,15 +423,32 @@ DicomStructure checkDicomStructure(const std::string& path) {
                        std::to_string(metaEnd - 144) + " bytes");
   const std::string syntax = transferSyntax(bytes, 132, metaEnd);
   if (syntax.empty()) failLoad(path, "DICOM meta header without a transfer syntax");
-  if (syntax == "1.2.840.10008.1.2.1.99") return DicomStructure::Plausible;  // deflated
+  if (syntax == "1.2.840.10008.1.2.1.99") {
+    // GDCM inflates the data set and reads it as explicit little endian, asserting and
+    // allocating by its lengths as in any other: the inflated bytes are walked the same way.
+    if (bytes.size() - metaEnd < 2) failLoad(path, "no data set after the DICOM meta header");
+    const std::vector<uint8_t> inflated =
+        inflateDicomDataSet(path, &bytes[metaEnd], bytes.size() - metaEnd);
+    if (inflated.size() < 8) failLoad(path, "no data set in the deflated DICOM data");
+    Walk inner{inflated, {}, {}};
+    inner.run(0, true, false, false);
+    if (!inner.problem.empty())
+      failLoad(path, "corrupt or truncated DICOM data (deflated; inflated): " + inner.problem);
+    checkDoseGrid(path, walk.sopClass, inner);
+    const std::string problem = colourCodingProblem(inner.photometric, syntax, false);
+    if (!problem.empty()) failLoad(path, problem);
+    return DicomStructure::Plausible;
+  }
   const bool explicitVr = syntax != "1.2.840.10008.1.2";
   const bool bigEndian = syntax == "1.2.840.10008.1.2.2";
   if (bytes.size() - metaEnd < 8) failLoad(path, "no data set after the DICOM meta header");
   walk.jpeg = isJpegTransferSyntax(syntax);
   walk.jpeg2000 = isJpeg2000TransferSyntax(syntax);
   walk.jpegLs = isJpegLsTransferSyntax(syntax);
+  walk.zeroElements = !bigEndian;
   walk.run(metaEnd, explicitVr, bigEndian, false);
   if (!walk.problem.empty()) failLoad(path, "corrupt or truncated DICOM data: " + walk.problem);
+  checkDoseGrid(path, walk.sopClass, walk);
   // GDCM's pixmap reader already decodes RLE to tell whether the image is lossy, and asserts
   // when a colour space's size disagrees with the codec's (found with YBR_FULL_422 in RLE).
   const bool encapsulated = syntax != "1.2.840.10008.1.2" && syntax != "1.2.840.10008.1.2.1" &&

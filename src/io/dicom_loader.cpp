@@ -4,11 +4,14 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <optional>
 
 #include "io/byte_order.h"
+#include "io/dicom_dose_grid.h"
 #include "io/dicom_duplicates.h"
 #include "io/dicom_frames.h"
 #include "io/dicom_gaps.h"
+#include "io/dicom_mosaic.h"
 #include "io/dicom_pixels.h"
 #include "io/dicom_series.h"
 #include "io/dicom_unplaced.h"
@@ -45,6 +48,27 @@ void noteSkipped(const std::vector<std::string>& skipped, const std::string& pre
   if (skipped.size() > kNamed)
     notes.push_back(prefix + "skipped " + std::to_string(skipped.size() - kNamed) + " more " +
                     more);
+}
+
+// How much a series holds, for the series list: its slices, or a multi-frame file's frames.
+std::string seriesSize(const DicomSeries& s) {
+  const int64_t frames = s.slices.size() == 1 ? s.slices.front().frames : 1;
+  if (frames > 1) return std::to_string(frames) + " frames";
+  return std::to_string(s.slices.size()) + (s.slices.size() == 1 ? " slice" : " slices");
+}
+
+// A mosaic's grid: its tiles' size, their count, their spacing along the normal from the
+// first plane (the last stored one when the slices run against row x column).
+void placeMosaic(const DicomMosaic& m, VolumeLayout& layout) {
+  layout.dims = {m.tileColumns, m.tileRows, m.count};
+  layout.spacing.z = m.spacing;
+  layout.origin =
+      m.first + (m.reversed ? -double(m.count - 1) * m.spacing : 0.0) * layout.direction[2];
+  layout.notes.push_back("Siemens mosaic: " + std::to_string(m.count) + " slices of " +
+                         std::to_string(m.tileColumns) + " x " + std::to_string(m.tileRows) +
+                         " from its " + std::to_string(m.perRow) + " x " +
+                         std::to_string(m.perRow) + " tiles (CSA NumberOfImagesInMosaic)" +
+                         (m.spacingAssumed ? ", slice spacing 1 assumed" : ""));
 }
 
 // The folder of `file` relative to `root` (where a series lies in a CD's tree).
@@ -102,8 +126,7 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   if (all.size() > 1 || below)  // below: where the series lies, even alone
     for (const DicomSeries& s : all) {
       const std::string label =
-          std::to_string(s.slices.size()) + " slices" +
-          (s.description.empty() ? "" : ", " + s.description) +
+          seriesSize(s) + (s.description.empty() ? "" : ", " + s.description) +
           (s.partOf.empty() ? "" : " (" + s.partOf + ")") +
           (below ? " in " + quoteText(relativeFolder(s.slices.front().file, dir), 80) : "");
       layout.notes.push_back("series " + s.uid + ": " + label +
@@ -117,9 +140,19 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
   const DicomSlice whole = slices.front();
   std::vector<DicomSlice> frames;
   if (slices.size() == 1 && whole.frames > 1) frames = dicomFrameSlices(whole);
+  if (slices.size() == 1 && whole.frames > 1 && frames.empty()) {
+    frames = doseGridFrameSlices(whole);
+    if (!frames.empty())
+      layout.notes.push_back("RT Dose: frames placed by GridFrameOffsetVector (3004,000C)");
+  }
   glm::dvec3 step(0.0);
   std::vector<PlaneMix> planes;  // uneven steps: the regular planes made below, else empty
-  if (!frames.empty()) {
+  // A Siemens mosaic (or a series of them, one a volume): its tiles are the slices.
+  std::optional<DicomMosaic> mosaic = frames.empty() ? dicomMosaic(whole) : std::nullopt;
+  if (mosaic) {
+    slices = {selectMosaicVolume(path, std::move(slices), frame, layout.notes, &layout.frameCount)};
+    mosaic = dicomMosaic(slices.front());  // the volume's own
+  } else if (!frames.empty()) {
     // An enhanced file of several volumes (diffusion, time points): the one asked for.
     frames = selectDicomVolume(path, std::move(frames), frame, layout.notes, &layout.frameCount);
     try {
@@ -172,6 +205,7 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
     layout.notes.push_back("multi-frame file: slice spacing 1 assumed");
   }
   layout.origin = base.position;
+  if (mosaic) placeMosaic(*mosaic, layout);
   // Doubles while rescaling: the planes made, and the stored ones they are made from.
   uint64_t total = dataByteCount(path, layout.dims, FileScalar::Float32);
   if (!planes.empty())
@@ -195,6 +229,7 @@ Volume loadDicom(const std::string& path, const std::string& seriesUid, int chan
     sameRescale = sameRescale && px.slope == slope0 && px.intercept == intercept0;
     values.insert(values.end(), px.values.begin(), px.values.end());
   }
+  if (mosaic) values = mosaicPlanes(values, whole.columns, *mosaic);
   if (!frames.empty()) {
     // The file's frames in stored order, put in the slices' order.
     const size_t plane = size_t(whole.columns) * size_t(whole.rows);

@@ -42,6 +42,7 @@ const gdcm::Tag kSpacingBetweenSlices(0x0018, 0x0088);
 const gdcm::Tag kSopInstance(0x0008, 0x0018);
 const gdcm::Tag kRetiredPosition(0x0020, 0x0030);
 const gdcm::Tag kRetiredOrientation(0x0020, 0x0035);
+const gdcm::Tag kImageType(0x0008, 0x0008);
 // What the scanner reads from every file (and dicom_guard checks first: isScannedDicomTag).
 const gdcm::Tag kScannedTags[] = {kSeriesUid,
                                   kSeriesDescription,
@@ -64,7 +65,8 @@ const gdcm::Tag kScannedTags[] = {kSeriesUid,
                                   kSpacingBetweenSlices,
                                   kRetiredPosition,
                                   kRetiredOrientation,
-                                  kSopInstance};
+                                  kSopInstance,
+                                  kImageType};
 
 int64_t integer(const char* text) {
   int64_t v = 0;
@@ -196,6 +198,9 @@ std::vector<DicomSeries> scanDicomFolder(const std::string& folder, const std::s
     if (const char* pi = scanner.GetValue(file.c_str(), kPhotometric)) s.photometric = trim(pi);
     if (const char* sop = scanner.GetValue(file.c_str(), kSopInstance))
       s.sopInstanceUid = trim(sop);
+    if (const char* type = scanner.GetValue(file.c_str(), kImageType))
+      for (const std::string& word : splitWords(std::string(type), "\\"))
+        s.mosaic = s.mosaic || trim(word) == "MOSAIC";
     const char* uid = scanner.GetValue(file.c_str(), kSeriesUid);
     DicomSeries& series = byUid[uid ? trim(std::string(uid)) : std::string()];
     series.uid = uid ? trim(std::string(uid)) : std::string();

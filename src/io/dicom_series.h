@@ -37,8 +37,9 @@ struct DicomSlice {
   int64_t planarConfiguration = 0;  // 0 when absent; -1 when present but not a number
   std::string photometric;          // PhotometricInterpretation, trimmed; empty when absent
   std::string
-      sopInstanceUid;  // SOPInstanceUID, trimmed: tells a file's copies (dicom_duplicates.h)
-  bool named = false;  // the file the user named (scanDicomFolder's namedFile)
+      sopInstanceUid;   // SOPInstanceUID, trimmed: tells a file's copies (dicom_duplicates.h)
+  bool named = false;   // the file the user named (scanDicomFolder's namedFile)
+  bool mosaic = false;  // ImageType (0008,0008) holds MOSAIC: a Siemens mosaic (dicom_mosaic.h)
 };
 
 struct DicomSeries {

@@ -17,8 +17,8 @@ namespace ewa {
 
 namespace {
 
-// True when a file of the folder that is no slice image is DICOM (or a CD's DICOMDIR); the first
-// thousand such files are looked into.
+// True when a file of the folder that is no slice image or TIFF is DICOM (or a CD's DICOMDIR); the
+// first thousand such files are looked into.
 bool holdsDicom(const std::string& folder) {
   std::error_code ec;
   int looked = 0;
@@ -26,7 +26,9 @@ bool holdsDicom(const std::string& folder) {
        it.increment(ec)) {
     const std::string file = it->path().string();
     std::error_code statError;
-    if (!it->is_regular_file(statError) || hasExtension(file, sliceImageExtensions())) continue;
+    if (!it->is_regular_file(statError) || hasExtension(file, sliceImageExtensions()) ||
+        hasExtension(file, {".tif", ".tiff"}))
+      continue;
     ++looked;
     if (toLower(it->path().filename().string()) == "dicomdir" || looksLikeDicom(file)) return true;
   }
@@ -34,7 +36,8 @@ bool holdsDicom(const std::string& folder) {
 }
 
 // A folder holds a TIFF stack, a stack of other images (PNG, JPEG, ...) or a DICOM series (also
-// a CD's tree of folders, which may hold a viewer's images beside it: any DICOM file wins).
+// a CD's tree of folders, which may hold a viewer's images or TIFF exports beside it: any DICOM
+// file wins).
 Volume loadFolder(const std::string& path, const LoadOptions& options) {
   std::error_code ec;
   bool tiff = false, images = false, others = false;
@@ -48,8 +51,9 @@ Volume loadFolder(const std::string& path, const LoadOptions& options) {
       others = true;
   }
   if (ec) failLoad(path, "cannot list the folder (" + ec.message() + ")");
-  if (tiff) return loadTiff(path, options.channel, options.frame);
-  if (images && !(others && holdsDicom(path))) return loadImageStack(path, options.channel);
+  const bool dicom = others && (tiff || images) && holdsDicom(path);
+  if (tiff && !dicom) return loadTiff(path, options.channel, options.frame);
+  if (images && !dicom) return loadImageStack(path, options.channel);
   return loadDicom(path, options.series, options.channel, options.frame);
 }
 

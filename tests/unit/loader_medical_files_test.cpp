@@ -491,7 +491,7 @@ TEST(DicomFiles, SeriesMixingSizesOrientationsAndMultiFrameFilesAreSplit) {
        {"series " + uid + ": 3 slices (open)",
         "series " + uid + "#2: 2 slices (part of " + uid +
             ": another orientation) (--series UID opens it)",
-        "series " + uid + "#3: 1 slices (part of " + uid + ": 5 x 6) (--series UID opens it)"})
+        "series " + uid + "#3: 1 slice (part of " + uid + ": 5 x 6) (--series UID opens it)"})
     EXPECT_NE(notes.find(line + "\n"), std::string::npos) << line << "\n" << notes;
   // The same as choices for the window's list: the --series argument, a label, the open one.
   const std::vector<SeriesChoice>& choices = stack.seriesChoices();
@@ -500,13 +500,13 @@ TEST(DicomFiles, SeriesMixingSizesOrientationsAndMultiFrameFilesAreSplit) {
   EXPECT_EQ(choices[0].label, "3 slices");
   EXPECT_TRUE(choices[0].open);
   EXPECT_EQ(choices[2].id, uid + "#3");
-  EXPECT_EQ(choices[2].label, "1 slices (part of " + uid + ": 5 x 6)");
+  EXPECT_EQ(choices[2].label, "1 slice (part of " + uid + ": 5 x 6)");
   EXPECT_FALSE(choices[2].open);
   EXPECT_TRUE(loadVolume(mixed + "/big.dcm").seriesChoices()[2].open);
   // The file named opens its own part; --series opens any.
   const Volume one = loadVolume(mixed + "/big.dcm");
   EXPECT_EQ(one.dims(), (std::array<int64_t, 3>{5, 6, 1}));
-  EXPECT_NE(allNotes(one).find(uid + "#3: 1 slices (part of " + uid + ": 5 x 6) (open)"),
+  EXPECT_NE(allNotes(one).find(uid + "#3: 1 slice (part of " + uid + ": 5 x 6) (open)"),
             std::string::npos)
       << allNotes(one);
   const Volume localizer = loadVolume(mixed, {uid + "#2", 0, 0, {}});
@@ -534,7 +534,7 @@ TEST(DicomFiles, SeriesMixingSizesOrientationsAndMultiFrameFilesAreSplit) {
   const Volume b = loadVolume(dir.path("frames/b.dcm"));
   EXPECT_EQ(b.dims()[2], 3);
   notes = allNotes(b);
-  EXPECT_NE(notes.find("series " + uid + "#2: 1 slices (part of " + uid +
+  EXPECT_NE(notes.find("series " + uid + "#2: 3 frames (part of " + uid +
                        ": another multi-frame file) (open)"),
             std::string::npos)
       << notes;
