@@ -302,10 +302,10 @@ std::vector<double> labelValues(const Volume& volume) {
 }
 
 // Labels and masks: the most common value (the background) transparent, every other value
-// opaque from a quarter of the way to it, each in a colour of its own. The post-classified
-// field of a structure one voxel thin peaks at about a third of its value (a Gaussian kernel's
-// weighted mean over its neighbours), so opacity that starts only at the label value would
-// erase it.
+// opaque from a quarter of the way to it (rising from a twentieth), each in a colour of its
+// own. The post-classified field of a structure one voxel thin peaks at about a third of its
+// value (a Gaussian kernel's weighted mean over its neighbours), so opacity that starts only at
+// the label value would erase it.
 TransferFunction labelTransferFunction(const Volume& volume, const std::vector<double>& labels) {
   static const glm::dvec3 kPalette[] = {{0.95, 0.85, 0.70}, {0.90, 0.35, 0.25}, {0.30, 0.60, 0.90},
                                         {0.45, 0.80, 0.35}, {0.95, 0.75, 0.20}, {0.70, 0.40, 0.85},
@@ -323,11 +323,21 @@ TransferFunction labelTransferFunction(const Volume& volume, const std::vector<d
                                                      std::abs(b - modeCentre);
                                             }) -
                            labels.begin());
-  constexpr double kOpacity = 0.7;
+  // Clear for the first 5% about the background, so that the background's own values (and the
+  // table bin holding them) stay transparent and its voxels are no splats.
+  constexpr double kOpacity = 0.7, kClear = 0.05, kOpaque = 0.25;
   const double b = labels[bg];
   tf.opacity.push_back({b, 0.0});
-  if (bg > 0) tf.opacity.push_back({b - 0.25 * (b - labels[bg - 1]), kOpacity});
-  if (bg + 1 < labels.size()) tf.opacity.push_back({b + 0.25 * (labels[bg + 1] - b), kOpacity});
+  if (bg > 0) {
+    const double gap = b - labels[bg - 1];
+    tf.opacity.push_back({b - kClear * gap, 0.0});
+    tf.opacity.push_back({b - kOpaque * gap, kOpacity});
+  }
+  if (bg + 1 < labels.size()) {
+    const double gap = labels[bg + 1] - b;
+    tf.opacity.push_back({b + kClear * gap, 0.0});
+    tf.opacity.push_back({b + kOpaque * gap, kOpacity});
+  }
   size_t colour = 0;
   tf.color.push_back({b, kPalette[0]});
   for (size_t n = 0; n < labels.size(); ++n)

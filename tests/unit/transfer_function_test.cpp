@@ -213,6 +213,8 @@ TEST(DefaultTransferFunction, MasksAndLabelsShowEveryLabelFromAQuarterOfTheWay) 
       Volume({n, n, n}, glm::dvec3(1.0), glm::dvec3(0.0), ScalarType::UInt8, mask));
   EXPECT_NO_THROW(binary.validate());
   EXPECT_EQ(binary.alphaAt(0.0), 0.0);
+  // The background's table bin stays clear, so its voxels are no splats.
+  EXPECT_EQ(binary.alphaAt(2.0 * 255.0 / Volume::histogramBins()), 0.0);
   EXPECT_GT(binary.alphaAt(0.3 * 255.0), 0.5);
   EXPECT_GT(binary.alphaAt(255.0), 0.5);
   const TransferFunction tf = defaultTransferFunction(
