@@ -150,21 +150,32 @@ std::string sizeText(uint64_t bytes) {
 struct UnpackBudget {
   uint64_t bytes = 0;
   std::string why;
+  uint64_t ratioFloor = 0, maxRatio = 0;  // the running ratio's bound (ArchiveLimits)
 
   [[noreturn]] void exceeded(const std::string& path) const {
     failLoad(path, "unpacks to more than " + sizeText(bytes) + " (" + why + ")");
+  }
+  // Past the floor, `unpacked` bytes from `read` compressed ones at most maxRatio to 1.
+  void checkRatio(const std::string& path, uint64_t unpacked, uint64_t read) const {
+    if (maxRatio == 0 || unpacked <= ratioFloor || unpacked / maxRatio <= read) return;
+    failLoad(path, "unpacks to more than " + std::to_string(maxRatio) + " times the " +
+                       sizeText(read) + " read of it (" + sizeText(unpacked) +
+                       " so far): an archive bomb? unpack it yourself if it is not");
   }
 };
 
 UnpackBudget unpackBudget(const std::string& path, const fs::path& root,
                           const ArchiveLimits& limits) {
-  UnpackBudget budget{limits.maxBytes, "the limit set"};
+  UnpackBudget budget{limits.maxBytes, "the limit set", limits.ratioFloorBytes, limits.maxRatio};
   if (budget.bytes == 0) {
     std::error_code ec;
     const fs::space_info space = fs::space(root, ec);
-    budget = {usableMemoryBytes(), "this machine's memory"};
-    if (!ec && space.available < budget.bytes)
-      budget = {space.available, "the scratch disk's free space"};
+    budget.bytes = usableMemoryBytes();
+    budget.why = "this machine's memory";
+    if (!ec && space.available < budget.bytes) {
+      budget.bytes = space.available;
+      budget.why = "the scratch disk's free space";
+    }
   }
   std::error_code ec;
   const uint64_t packed = fs::file_size(path, ec);
@@ -172,9 +183,11 @@ UnpackBudget unpackBudget(const std::string& path, const fs::path& root,
     const uint64_t byRatio =
         packed > UINT64_MAX / limits.maxRatio ? UINT64_MAX : packed * limits.maxRatio;
     const uint64_t cap = std::max(limits.ratioFloorBytes, byRatio);
-    if (cap < budget.bytes)
-      budget = {cap, std::to_string(limits.maxRatio) + " times the archive's " + sizeText(packed) +
-                         ": an archive bomb? unpack it yourself if it is not"};
+    if (cap < budget.bytes) {
+      budget.bytes = cap;
+      budget.why = std::to_string(limits.maxRatio) + " times the archive's " + sizeText(packed) +
+                   ": an archive bomb? unpack it yourself if it is not";
+    }
   }
   return budget;
 }
@@ -192,6 +205,7 @@ uint64_t writeEntry(const std::string& path, archive* a, const fs::path& target,
     if (got < 0) failArchive(path, a, "a damaged archive: cannot read " + quoteText(name));
     written += uint64_t(got);
     if (written > budget.bytes - used) budget.exceeded(path);
+    budget.checkRatio(path, used + written, uint64_t(std::max<la_int64_t>(archive_filter_bytes(a, -1), 0)));
     if (std::fwrite(buffer.data(), 1, size_t(got), out.get()) != size_t(got))
       failLoad(path, "cannot unpack " + quoteText(name) + " (is the scratch disk full?)");
   }

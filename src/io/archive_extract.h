@@ -15,14 +15,15 @@ bool isArchiveName(const std::string& path);
 // Bounds on what one archive may unpack to, counted as it is written; a size an entry declares
 // is checked before it is written, never trusted. maxBytes 0: the machine's memory or the
 // scratch disk's free space, whichever is smaller (a volume unpacked must also fit in memory).
-// Beyond ratioFloorBytes, the archive may unpack to at most maxRatio times its own size: real
-// volumes compress a few times to a few tens of times, archive bombs a thousand times and more,
-// and writing such a bomb out to the disk's limit would take minutes (libarchive and zlib
-// advise bounding the ratio for this reason).
+// Beyond ratioFloorBytes, the archive may unpack to at most maxRatio times its own size, and
+// what it has unpacked so far to at most maxRatio times the compressed bytes read so far (so a
+// bomb stops near the floor, not at its whole file's ratio): real volumes compress a few times
+// to a few tens of times, archive bombs a thousand times and more, and writing such a bomb out
+// to the disk's limit would take minutes (libarchive and zlib advise bounding the ratio).
 struct ArchiveLimits {
   uint64_t maxBytes = 0;
   uint64_t maxFiles = 100000;
-  uint64_t ratioFloorBytes = 1ull << 30;
+  uint64_t ratioFloorBytes = 256ull << 20;
   uint64_t maxRatio = 100;
 };
 

@@ -159,6 +159,24 @@ TEST(HostileArchives, AnArchiveUnpacksToAtMostItsRatioBeyondTheFloor) {
   EXPECT_EQ(whole.bytes, uint64_t(8) << 20);
 }
 
+// A bomb inside an archive whose whole ratio looks honest (an incompressible member after it)
+// is stopped by the running ratio near the floor, not after writing it all.
+TEST(HostileArchives, ABombAheadOfIncompressibleDataStopsAtTheRunningRatio) {
+  TempDir dir;
+  std::string noise(4 << 20, '\0');
+  uint32_t x = 12345;
+  for (char& c : noise) c = char((x = x * 1664525u + 1013904223u) >> 24);
+  const std::string zeros(64 << 20, '\0');
+  const std::string bombFirst = dir.write(
+      "bomb_first.tar.gz", gzipBytes(tarBytes({{"zeros.raw", zeros}, {"noise.raw", noise}})));
+  const std::string noiseFirst = dir.write(
+      "noise_first.tar.gz", gzipBytes(tarBytes({{"noise.raw", noise}, {"zeros.raw", zeros}})));
+  const ArchiveLimits limits{0, 100, 16 << 20, 100};
+  expectLoadError([&] { extractArchive(bombFirst, limits); }, bombFirst, "read of it");
+  // Read in order, the same members never pass 100:1.
+  EXPECT_EQ(extractArchive(noiseFirst, limits).bytes, uint64_t(68) << 20);
+}
+
 TEST(HostileArchives, ASignalRemovesTheScratchFolderBeforeTheProcessEnds) {
   TempDir dir;
   const std::string scratch = dir.path("ewaview-archive-test");
