@@ -12,9 +12,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string folder = argv[1];
-  for (const auto& [name, text] : {std::pair<std::string, std::string>{"options.md",
-                                                                       ewa::optionsMarkdown()},
-                                   {"keys.md", ewa::keysMarkdown()}}) {
+  for (const auto& [name, text] :
+       {std::pair<std::string, std::string>{"options.md", ewa::optionsMarkdown()},
+        {"keys.md", ewa::keysMarkdown()}}) {
     std::ofstream out(folder + "/" + name, std::ios::binary);
     out << text;
     if (!out.flush()) {

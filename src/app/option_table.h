@@ -19,10 +19,10 @@ enum class OptionGroup {
   ShearWarp,
   Advanced
 };
-constexpr OptionGroup kOptionGroups[] = {
-    OptionGroup::Input,     OptionGroup::Output,  OptionGroup::Camera,
-    OptionGroup::TransferFunction, OptionGroup::Rendering, OptionGroup::Shading,
-    OptionGroup::ShearWarp, OptionGroup::Advanced};
+constexpr OptionGroup kOptionGroups[] = {OptionGroup::Input,     OptionGroup::Output,
+                                         OptionGroup::Camera,    OptionGroup::TransferFunction,
+                                         OptionGroup::Rendering, OptionGroup::Shading,
+                                         OptionGroup::ShearWarp, OptionGroup::Advanced};
 const char* optionGroupTitle(OptionGroup group);  // "Input", "Transfer function", ...
 
 // One option. The setters chain, so each row of the table reads as one statement.
@@ -30,13 +30,13 @@ struct OptionSpec {
   std::string name;       // "--kernel-width"; "file" for the positional
   std::string shortName;  // "o" for -o; empty: none
   OptionGroup group = OptionGroup::Advanced;
-  std::string valueName;              // "S", "X,Y,Z"; empty: a flag, or one of `choices`
-  std::vector<std::string> choices;   // the words it accepts (from the parser's name tables)
-  std::optional<double> min, max;     // the range its numbers must lie in
-  std::string defaultText;            // read from the settings' defaults; empty: none
-  std::string help;                   // one line for --help and the page's table
-  std::string longHelp;               // markdown below the page's table; may be empty
-  bool python = true;                 // the Python module takes it as a keyword
+  std::string valueName;             // "S", "X,Y,Z"; empty: a flag, or one of `choices`
+  std::vector<std::string> choices;  // the words it accepts (from the parser's name tables)
+  std::optional<double> min, max;    // the range its numbers must lie in
+  std::string defaultText;           // read from the settings' defaults; empty: none
+  std::string help;                  // one line for --help and the page's table
+  std::string longHelp;              // markdown below the page's table; may be empty
+  bool python = true;                // the Python module takes it as a keyword
 
   OptionSpec& shortLetter(std::string s) { return shortName = std::move(s), *this; }
   OptionSpec& value(std::string v) { return valueName = std::move(v), *this; }

@@ -184,9 +184,10 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
   CLI::App app{kAbout, "ewaview"};
   ParsedText text;
   addOptions(app, o, &text);
-  std::vector<double>&pick = text.pick, &pos = text.pos, &focal = text.focal, &up = text.up,
-                      &bg = text.bg, &spacing = text.spacing;
-  std::vector<int>& res = text.res;
+  const std::vector<double>& pick = text.pick;
+  const std::vector<double>& spacing = text.spacing;
+  const std::vector<double>& bg = text.bg;
+  const std::vector<int>& res = text.res;
   const std::string& channel = text.channel;
   if (const std::string nan = optionWithNan(argc, argv); !nan.empty()) {
     std::cerr << "ewaview: " << nan << ": not a finite number (see --help)\n";
@@ -302,9 +303,9 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
                    numberText(spacing[2]) + ": each must be a positive number");
   o->load.spacing = toVec3(spacing);
   if (text.allowOutsideData) o->load.dataFiles = DataFileScope::Anywhere;
-  o->cameraPosition = toVec3(pos);
-  o->cameraFocalPoint = toVec3(focal);
-  o->cameraViewUp = toVec3(up);
+  o->cameraPosition = toVec3(text.pos);
+  o->cameraFocalPoint = toVec3(text.focal);
+  o->cameraViewUp = toVec3(text.up);
   if (!bg.empty()) o->render.background = glm::dvec3(bg[0], bg[1], bg[2]);
   parseFilterMode(text.filter, &o->render.filter);
   parseRenderMode(text.mode, &o->render.mode);

@@ -22,8 +22,8 @@ std::string code(const std::string& text) {
 
 std::string nameText(const OptionSpec& spec) {
   if (spec.name.rfind("--", 0) != 0) return code("FILE");  // the positional
-  return spec.shortName.empty() ? code(spec.name) : code("-" + spec.shortName) + ", " +
-                                                        code(spec.name);
+  return spec.shortName.empty() ? code(spec.name)
+                                : code("-" + spec.shortName) + ", " + code(spec.name);
 }
 
 std::string valueText(const OptionSpec& spec) {

@@ -164,8 +164,8 @@ SyntheticVolume makeSyntheticVolume(const std::string& spec) {
   for (size_t k = 0; k < count; ++k) {
     const SyntheticKind& kind = kSyntheticKinds[k];
     if (name == kind.name)
-      return kind.make(parseParameter(spec, number, hasNumber, kind.fallback, kind.lo, kind.hi,
-                                      kind.what));
+      return kind.make(
+          parseParameter(spec, number, hasNumber, kind.fallback, kind.lo, kind.hi, kind.what));
     names += (k == 0 ? "" : k + 1 == count ? " or " : ", ") + std::string(kind.name);
   }
   throw specError(spec, "unknown volume '" + name + "' (expected " + names + ")");

@@ -16,7 +16,8 @@ std::vector<KeyBinding> makeKeyBindings() {
       {GLFW_KEY_X, 0, C::ToggleAxes, "orientation axes on or off",
        "show or hide the orientation axes (bottom right, above the probe line; also the panel's "
        "\"axes\" checkbox; on at first, and kept in the settings)"},
-      {GLFW_KEY_M, 0, C::MarkPoint, "mark the point under the cursor (the probe gives the distance)",
+      {GLFW_KEY_M, 0, C::MarkPoint,
+       "mark the point under the cursor (the probe gives the distance)",
        "mark the point under the cursor (a yellow ring): the probe line then also gives the "
        "distance from it, in world units, named when the file names them (`mm` for DICOM and most "
        "NIfTI files, `µm` for microscopy); `M` over empty space clears it"},
@@ -52,7 +53,8 @@ std::vector<KeyBinding> makeKeyBindings() {
       {GLFW_KEY_F12, 0, C::Screenshot, "screenshot", "screenshot (also the panel's button)"},
       {GLFW_KEY_F1, 0, C::KeysHelp, "this list",
        "show or hide the list of keys (also the panel's \"keys (F1)\")"},
-      {GLFW_KEY_O, kCtrl, C::OpenFile, "open a volume (or drop a file; a .json: a transfer function)",
+      {GLFW_KEY_O, kCtrl, C::OpenFile,
+       "open a volume (or drop a file; a .json: a transfer function)",
        "open a volume (also the panel's \"Open...\" button)"},
       {GLFW_KEY_S, kCtrl, C::SaveVolume, "save the volume (NRRD, NIfTI, MetaImage, TIFF)",
        "save the volume on screen as NRRD, NIfTI, MetaImage (`.mha`, `.mhd`) or TIFF, with its "

@@ -10,7 +10,6 @@ struct GLFWwindow;
 
 namespace ewa {
 
-
 class CameraController;
 
 class WindowInput {

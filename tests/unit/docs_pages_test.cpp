@@ -26,7 +26,8 @@ constexpr const char* kRegenerate =
     "`cmake --build build --target ewaview-docs && build/ewaview-docs docs/user` and commit it";
 
 TEST(DocsPages, OptionsPageIsGenerated) {
-  EXPECT_TRUE(optionsMarkdown() == committed("options.md")) << "docs/user/options.md" << kRegenerate;
+  EXPECT_TRUE(optionsMarkdown() == committed("options.md"))
+      << "docs/user/options.md" << kRegenerate;
 }
 
 TEST(DocsPages, KeysPageIsGenerated) {
@@ -38,9 +39,9 @@ TEST(DocsPages, OptionsPageStatesTheCodesDefaults) {
   EXPECT_NE(page.find("| `--kernel-width` | `S`: 0.3 to 2 | `" +
                       numberText(RenderSettings{}.kernelWidth) + "` |"),
             std::string::npos);
-  EXPECT_NE(page.find("| `--cutoff` | `C`: 0.25 to 64 | `" + numberText(RenderSettings{}.cutoff) +
-                      "` |"),
-            std::string::npos);
+  EXPECT_NE(
+      page.find("| `--cutoff` | `C`: 0.25 to 64 | `" + numberText(RenderSettings{}.cutoff) + "` |"),
+      std::string::npos);
   for (OptionGroup group : kOptionGroups)
     EXPECT_NE(page.find(std::string("\n## ") + optionGroupTitle(group) + "\n"), std::string::npos);
 }

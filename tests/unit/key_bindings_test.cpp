@@ -52,8 +52,7 @@ TEST(KeyBindings, ModifiersPickTheRow) {
 }
 
 TEST(KeyBindings, KeyText) {
-  EXPECT_EQ(keyText(*keyBindingFor(GLFW_KEY_Z, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT)),
-            "Ctrl+Shift+Z");
+  EXPECT_EQ(keyText(*keyBindingFor(GLFW_KEY_Z, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT)), "Ctrl+Shift+Z");
   EXPECT_EQ(keyText(*keyBindingFor(GLFW_KEY_PAGE_DOWN, 0)), "Page Down");
   EXPECT_EQ(keyText(*keyBindingFor(GLFW_KEY_F1, 0)), "F1");
   EXPECT_EQ(keyText(*keyBindingFor(GLFW_KEY_6, 0)), "6");

@@ -23,10 +23,10 @@ std::string settingsText(const Options& o) {
       << o.orthographic << o.axes << o.stats << o.info << o.watch << '|' << o.tfFile << '|'
       << o.backend << '|' << o.load.frame << ',' << o.load.channel << ',' << o.overlay << '|'
       << o.rawSpacing << o.rawEndian << '|' << int(r.renderer) << int(r.filter) << int(r.mode)
-      << '|' << r.cutoff << ',' << r.kernelWidth << ',' << r.lowPass << ',' << r.depthCutoff
-      << ',' << r.slabThickness << '|' << r.background.x << r.background.y << r.background.z
-      << '|' << int(r.order) << ',' << r.terminationOpacity << ',' << int(r.occlusionCulling)
-      << '|' << int(r.xrayMap) << ',' << r.xrayScale << '|' << r.lighting.enabled << ','
+      << '|' << r.cutoff << ',' << r.kernelWidth << ',' << r.lowPass << ',' << r.depthCutoff << ','
+      << r.slabThickness << '|' << r.background.x << r.background.y << r.background.z << '|'
+      << int(r.order) << ',' << r.terminationOpacity << ',' << int(r.occlusionCulling) << '|'
+      << int(r.xrayMap) << ',' << r.xrayScale << '|' << r.lighting.enabled << ','
       << r.lighting.ambient << ',' << r.lighting.diffuse << ',' << r.lighting.specular << ','
       << r.lighting.shininess << '|' << int(r.classification.mode) << ','
       << int(r.classification.gradient) << ',' << r.classification.prefilter << ','
@@ -34,8 +34,8 @@ std::string settingsText(const Options& o) {
       << r.slabPreintegration << ',' << r.slabSamples << ',' << r.slabPasses << ','
       << int(r.slabPrecision) << ',' << int(r.postNormals) << ',' << int(r.splatter) << ','
       << r.coarseSlabs << ',' << r.surfaceOpacity << '|' << r.shearWarp.preintegrated
-      << int(r.shearWarp.lookup) << r.shearWarp.opacityCorrection << int(r.shearWarp.buffers)
-      << ',' << r.shearWarp.intermediateScale << '|' << r.clip.active();
+      << int(r.shearWarp.lookup) << r.shearWarp.opacityCorrection << int(r.shearWarp.buffers) << ','
+      << r.shearWarp.intermediateScale << '|' << r.clip.active();
   return out.str();
 }
 
@@ -67,8 +67,8 @@ TEST(OptionTable, HelpListsTheGroupsInOrder) {
   // --tf among the transfer function's options, not after the renderer's internals.
   EXPECT_LT(help.find("--tf "), help.find("Rendering:"));
   // The --synthetic line names every synthetic volume the parser makes.
-  for (const char* spec : {"marschner-lobb[:N]", "sphere[:N]", "box[:N]", "checkerboard[:S]",
-                           "zebra[:RATIO]"})
+  for (const char* spec :
+       {"marschner-lobb[:N]", "sphere[:N]", "box[:N]", "checkerboard[:S]", "zebra[:RATIO]"})
     EXPECT_NE(help.find(spec), std::string::npos) << spec;
 }
 
@@ -76,8 +76,9 @@ TEST(OptionTable, DefaultsAreTheSettingsDefaults) {
   EXPECT_EQ(optionSpec("--kernel-width").defaultText, numberText(RenderSettings{}.kernelWidth));
   EXPECT_EQ(optionSpec("--cutoff").defaultText, numberText(RenderSettings{}.cutoff));
   EXPECT_EQ(optionSpec("--filter").defaultText, filterModeName(RenderSettings{}.filter));
-  EXPECT_NE(optionSpec("--kernel-width").description().find(
-                "(default " + numberText(RenderSettings{}.kernelWidth) + ")"),
+  EXPECT_NE(optionSpec("--kernel-width")
+                .description()
+                .find("(default " + numberText(RenderSettings{}.kernelWidth) + ")"),
             std::string::npos);
 }
 
@@ -87,7 +88,7 @@ TEST(OptionTable, GivingTheDefaultChangesNothing) {
   const std::string none = settingsText(parsed({}));
   for (const OptionSpec& spec : optionTable()) {
     if (spec.defaultText.empty() || spec.name.rfind("--raw-", 0) == 0) continue;  // --raw-dims
-    if (spec.name == "--surface-min-gradient") continue;  // below
+    if (spec.name == "--surface-min-gradient") continue;                          // below
     EXPECT_EQ(settingsText(parsed({spec.name + "=" + spec.defaultText})), none)
         << spec.name << "=" << spec.defaultText;
   }
