@@ -539,8 +539,8 @@ std::vector<OptionSpec> makeTable() {
       .defaultsTo(numberText(r.terminationOpacity))
       .describe("Front to back: stop a pixel at this opacity (1 never stops)")
       .explain(
-          "Front to back: a pixel takes no more slabs once its opacity reaches `A` (default "
-          "0.99; 1 never stops)");
+          "Front to back: a pixel takes no more slabs once its opacity reaches `A` (1 never "
+          "stops)");
   add(rows, "--xray-map", OptionGroup::Rendering)
       .accepts(xrayMapNames())
       .defaultsTo(xrayMapName(r.xrayMap))
@@ -660,8 +660,8 @@ std::vector<OptionSpec> makeTable() {
           "Shear-warp: at most this many intermediate-image pixels a voxel where the picture is "
           "finer (1: Lacroute's one a voxel)")
       .explain(
-          "Shear-warp: at most N intermediate-image pixels a voxel (1 to 4, default 2) where "
-          "the picture is finer; 1 is Lacroute's one a voxel, whose close-ups the warp "
+          "Shear-warp: at most N intermediate-image pixels a voxel where the picture is finer; 1 "
+          "is Lacroute's one a voxel, whose close-ups the warp "
           "magnifies into blocks");
   add(rows, "--splatter", OptionGroup::Advanced)
       .accepts(splatterNames())
@@ -757,8 +757,8 @@ std::vector<OptionSpec> makeTable() {
       .defaultsTo(platform::headlessBackendNames().front())
       .describe("Headless OpenGL (EWAVIEW_BACKEND names the default)")
       .explain(
-          "Headless OpenGL (default `osmesa`, or what the environment variable "
-          "`EWAVIEW_BACKEND` names; `egl` runs where OSMesa is gone and on GPU machines without "
+          "Headless OpenGL (the default, or what the environment variable `EWAVIEW_BACKEND` "
+          "names; `egl` runs where OSMesa is gone and on GPU machines without "
           "X: [On a GPU](../performance.md#on-a-gpu))");
   add(rows, "--shader-dir", OptionGroup::Advanced)
       .value("DIR")
