@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ewa {
@@ -47,7 +48,6 @@ struct OptionSpec {
   OptionSpec& explain(std::string h) { return longHelp = std::move(h), *this; }
   OptionSpec& notInPython() { return python = false, *this; }
 
-  bool flag() const { return valueName.empty() && choices.empty(); }
   // "-o,--output" as CLI11 takes it.
   std::string cliName() const;
   // The keyword the Python module takes for it: "kernel_width".
