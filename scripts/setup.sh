@@ -15,6 +15,7 @@ packages=(build-essential cmake pkg-config
   xvfb xauth xdotool imagemagick  # tests/window/window_test.sh
   unzip  # the DICOM test series in a zip
   clang libclang-rt-14-dev  # scripts/fuzz.sh: clang with libFuzzer
+  clang-format  # scripts/check_format.sh
   libavformat-dev libavcodec-dev libswscale-dev libavutil-dev  # turntable videos (.mp4, .webm)
   pybind11-dev python3-dev python3-numpy python3-pytest)  # Python module in build/python
 missing=()
@@ -32,5 +33,5 @@ fi
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release
 targets=(ewaview)
 # The module's target exists only where pybind11 and the Python headers were found.
-[ -d "$build/CMakeFiles/ewaview_python.dir" ] && targets+=(ewaview_python)
+if [ -d "$build/CMakeFiles/ewaview_python.dir" ]; then targets+=(ewaview_python); fi
 cmake --build "$build" -j"$(nproc)" --target "${targets[@]}"
