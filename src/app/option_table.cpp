@@ -78,7 +78,7 @@ std::vector<OptionSpec> makeTable() {
           "series, its own or in the folders below it, as on a CD with a `DICOMDIR`; or TIFF "
           "slices), an archive of any of these as downloads and PACS exports come (`.zip`, "
           "`.tar`, `.tar.gz`/`.tgz`, `.tar.bz2`, `.tar.xz`, `.tar.zst`, `.7z`), or raw data "
-          "with `--raw-*` ([Formats](../../README.md#formats-and-bad-input))");
+          "with `--raw-*` ([Formats](formats.md))");
   add(rows, "--synthetic", OptionGroup::Input)
       .value("SPEC")
       .describe("Synthetic volume: " + joined(syntheticVolumeForms(), ", ", " or "));
@@ -136,7 +136,7 @@ std::vector<OptionSpec> makeTable() {
           "colours), grey, cyan, magenta, yellow (the opacities say how much colour each value "
           "gives off; `--tf-preset` applies to each over its range). Its price is the channels' "
           "own frames, twice each over a background that is not black "
-          "([docs/performance.md](../performance.md#channels-overlaid): two channels 1.29× one "
+          "([docs/performance.md](../dev/performance.md): two channels 1.29× one "
           "over black, 2.17× over grey). Not with `--tf`, `--info`, `--pick` or "
           "`--save-volume`; `--stats` reports the channels' sums and each channel in "
           "`channels`; a file of one channel is drawn as it is; in Python, `Scene(path, "
@@ -225,7 +225,8 @@ std::vector<OptionSpec> makeTable() {
           "`splats_drawn`, `slabs`, `slabs_drawn` (before early termination stopped the slab "
           "loop), `slab_entries`, `entries_culled` (of the slab entries, those occlusion "
           "culling did not draw), `slabs_coarse` (slabs splatted into a coarser image: [Slab "
-          "image scale](../rendering.md#how-it-renders)), `slab_passes` (four samples a slab: "
+          "image scale](../dev/rendering.md#slab-image-scale)), `slab_passes` (four samples a "
+          "slab: "
           "the passes each slab took, 1 or 2; 0 otherwise, and for frames drawn in compute "
           "tiles), `splatter` (`raster`, or `tiles` where `--splatter` drew the frame in "
           "compute tiles), `note` (only when the frame was not drawn as asked: why, in one "
@@ -235,11 +236,11 @@ std::vector<OptionSpec> makeTable() {
           "picture to the bit), `gpu_bytes` (GL buffers and textures the renderer holds; 0 "
           "where it does not count them), `gpu_bytes_per_splat` (null then), `peak_rss` (bytes) "
           "and `huge_pages` (whether large allocations get transparent huge pages: [What the "
-          "default costs](../performance.md#what-the-default-costs), \"Huge pages\"). With "
+          "default costs](../dev/performance.md), \"Huge pages\"). With "
           "`--channel all` (or a list of channels) the times, counts and bytes are the "
           "channels' sums (`slab_passes` the most any took, the notes joined) and `channels` "
           "lists each channel's own, in the order drawn. See "
-          "[Performance](../performance.md#performance)");
+          "[Performance](../dev/performance.md#reading---stats)");
   add(rows, "--turntable", OptionGroup::Output)
       .value("N")
       .range(1, 100000)
@@ -255,7 +256,8 @@ std::vector<OptionSpec> makeTable() {
           "`frame_000.png`, `frame_001.png`, ... PNG frames are encoded on worker threads while "
           "the next frames render (a 36-frame 1024² turntable on an H200: 0.9–1.4 s, against "
           "7–9 s when each frame was encoded in turn: [Turntables and PNG "
-          "frames](../performance.md#turntables-and-png-frames)). Progress shows on a terminal");
+          "frames](../dev/performance.md#one-shot-pictures-and-files)). Progress shows on a "
+          "terminal");
   add(rows, "--tour", OptionGroup::Output)
       .value("N")
       .range(2, 100000)
@@ -303,7 +305,7 @@ std::vector<OptionSpec> makeTable() {
           "`value` (the data's trilinear value there), `opacity` (the ray's total), `distance` "
           "(from the eye, or from the view plane in parallel projection); `\"hit\":false` where "
           "the pixel shows nothing (total opacity under 0.01). The window shows the same under "
-          "the cursor ([The window](../../README.md#the-window))");
+          "the cursor ([The window](window.md))");
   add(rows, "--save-volume", OptionGroup::Output)
       .value("FILE")
       .notInPython()
@@ -392,12 +394,12 @@ std::vector<OptionSpec> makeTable() {
       .value("FILE")
       .notInPython()
       .describe(
-          "Window: write the cameras of the session to this file on exit, for "
+          "Window: write the cameras the window drew to this file on exit, for "
           "ewaview-interact-bench --path")
       .explain(
-          "Window: on exit, write the camera of each moving frame of the session to FILE, in "
+          "Window: on exit, write the camera of each moving frame the window drew to FILE, in "
           "the format `ewaview-interact-bench --path` replays ([interaction "
-          "speed](../performance.md#interaction-speed))");
+          "speed](../dev/performance.md#interaction))");
   add(rows, "--tf", OptionGroup::TransferFunction)
       .value("FILE")
       .describe("Transfer function JSON file");
@@ -432,7 +434,7 @@ std::vector<OptionSpec> makeTable() {
       .describe("splat (GPU EWA splatting) or shearwarp (CPU)")
       .explain(
           "EWA splatting on the GPU (default) or the CPU shear-warp renderer ([shear-warp "
-          "renderer](../rendering.md#shear-warp-renderer))");
+          "renderer](../dev/rendering.md#shear-warp-renderer))");
   add(rows, "--render-mode", OptionGroup::Rendering)
       .accepts(renderModeNames())
       .defaultsTo(renderModeName(r.mode))
@@ -440,7 +442,7 @@ std::vector<OptionSpec> makeTable() {
           "Slab compositing, the summed optical depth as gray (xray) or the largest value (mip)")
       .explain(
           "Slab compositing (default), the summed optical depth as gray, or the maximum value "
-          "([render modes](../rendering.md#how-it-renders))");
+          "([render modes](../dev/rendering.md#shading-surface-splats-and-render-modes))");
   add(rows, "--filter", OptionGroup::Rendering)
       .accepts(filterModeNames())
       .defaultsTo(filterModeName(r.filter))
@@ -454,7 +456,7 @@ std::vector<OptionSpec> makeTable() {
           "Kernel standard deviation in voxel spacings per axis (the default, with "
           "cutoff 5 the narrowest kernel that does not show the lattice; the paper's is 1); the "
           "mass per voxel is unchanged ([Kernel "
-          "width](../rendering.md#kernel-width-and-post-classification))");
+          "width](../dev/rendering.md#kernel-width))");
   add(rows, "--cutoff", OptionGroup::Rendering)
       .value("C")
       .range(0.25, 64.0)
@@ -470,14 +472,15 @@ std::vector<OptionSpec> makeTable() {
           "Kernels' depth extent in squared standard deviations, 0.25 and up, or `inf`: each "
           "kernel's depth profile is cut at `√D·σ` (at most the cutoff) and it is drawn only in "
           "the slabs that reach; `inf` is the uncut Gaussian ([Depth "
-          "profile](../rendering.md#depth-profile))");
+          "profile](../dev/rendering.md#depth-profile))");
   add(rows, "--low-pass", OptionGroup::Rendering)
       .value("V")
       .accepts({"auto"})
       .range(0.1, 1.0)
       .defaultsTo(r.lowPass == 0.0 ? "auto" : numberText(r.lowPass))
-      .describe("EWA's screen low-pass filter: its variance in pixels^2, or auto (1, the paper's, "
-                "in every mode)")
+      .describe(
+          "EWA's screen low-pass filter: its variance in pixels^2, or auto (1, the paper's, "
+          "in every mode)")
       .explain("[Low-pass filter](../dev/rendering.md#low-pass-filter)");
   add(rows, "--close-up", OptionGroup::Rendering)
       .describe("Close-up setting, today the defaults: " + closeUpWords +
@@ -485,7 +488,7 @@ std::vector<OptionSpec> makeTable() {
       .explain("The close-up setting, today the defaults: `" + closeUpWords +
                "` (the panel's \"close-up\" button restores them and the default `--prefilter`; "
                "options given beside it win) "
-               "([Kernel width](../rendering.md#narrower-kernels-and-a-thinner-margin))");
+               "([Kernel width](../dev/rendering.md#kernel-width))");
   add(rows, "--slab-preintegration", OptionGroup::Rendering)
       .accepts(onOff())
       .defaultsTo(onOff(r.slabPreintegration))
@@ -497,7 +500,7 @@ std::vector<OptionSpec> makeTable() {
           "as a pair through the pre-integration table (`on`, default; thin transfer-function "
           "peaks are not missed between slabs) or each slab's value alone (`off`) "
           "([Pre-integration between "
-          "slabs](../rendering.md#kernel-width-and-post-classification))");
+          "slabs](../dev/rendering.md#pre-integration-between-slabs))");
   add(rows, "--slab-samples", OptionGroup::Rendering)
       .accepts({"4", "2"})
       .defaultsTo(std::to_string(r.slabSamples))
@@ -508,7 +511,7 @@ std::vector<OptionSpec> makeTable() {
           "With `--classification post` and pre-integration: each slab's values at 4 depths, "
           "its quarters (default: nearer a ray caster close up) or 2, its halves (cheaper, "
           "softer in depth) ([Four samples a "
-          "slab](../rendering.md#kernel-width-and-post-classification))");
+          "slab](../dev/rendering.md#four-samples-a-slab))");
   add(rows, "--prefilter", OptionGroup::Rendering)
       .value("B")
       .range(0.0, kMaxPrefilter)
@@ -522,7 +525,7 @@ std::vector<OptionSpec> makeTable() {
           "kernels come nearer interpolating the voxels as a ray caster's trilinear samples do; "
           "0: the data's values. Which voxels are drawn, their "
           "normals, pre-classification, X-ray and MIP are untouched ([Value "
-          "prefilter](../rendering.md#value-prefilter))");
+          "prefilter](../dev/rendering.md#value-prefilter))");
   add(rows, "--slab-thickness", OptionGroup::Rendering)
       .value("T")
       .range(0.25, 1000.0)
@@ -560,7 +563,7 @@ std::vector<OptionSpec> makeTable() {
       .describe("Keep only the world-space box X0,X1,Y0,Y1,Z0,Z1 (every renderer and mode)")
       .explain(
           "Draw only the world-space box `[X0,X1]×[Y0,Y1]×[Z0,Z1]` (every renderer and render "
-          "mode; [below](../../README.md#cropping-and-clipping))");
+          "mode; [below](crop-and-clip.md))");
   add(rows, "--clip-plane", OptionGroup::Rendering)
       .value("PX,PY,PZ,NX,NY,NZ")
       .describe(
@@ -612,7 +615,7 @@ std::vector<OptionSpec> makeTable() {
           "reconstructed field (`field`, pre-integrated only; shows the slab period as stripes "
           "on oblique surfaces) or by the splats' voxel normals (`voxel`); also the panel's "
           "\"normals\" "
-          "([Post-classification](../rendering.md#kernel-width-and-post-classification))");
+          "([Post-classification](../dev/rendering.md#post-classification))");
   add(rows, "--surface-threshold", OptionGroup::Shading)
       .value("V")
       .describe("Surface splats on the iso-surface of this data value");
@@ -676,7 +679,7 @@ std::vector<OptionSpec> makeTable() {
           "are splatted: rasterized slab by slab (`raster`), in compute tiles (`tiles`: each "
           "screen tile's slabs added up, classified and composited in one work group, no "
           "rasterizer and no blending; [Compute EWA "
-          "splatting](../performance.md#compute-ewa-splatting)), or `auto` (default): "
+          "splatting](../dev/performance.md#compute-ewa-splatting)), or `auto` (default): "
           "rasterized on a software rasterizer; on a GPU the first timed frame in tiles (a "
           "frame that compiled the tiles' programs or made their buffers is not counted: the "
           "next tries them again), the next rasterized, then the faster a slab entry, the other "
@@ -699,7 +702,8 @@ std::vector<OptionSpec> makeTable() {
           "llvmpipe tiles are 5–14× slower (the default post-classified frame 11–14×); on an "
           "H200 the default post-classified frame in tiles took 0.06–0.09× the rasterized one "
           "at 1024² (8.0, 4.7 and 11.7 ms for engine, bonsai and CThead: [On a "
-          "GPU](../performance.md#on-a-gpu)). Command line and Python only: the window takes it "
+          "GPU](../dev/performance.md#on-a-gpu)). Command line and Python only: the window takes "
+          "it "
           "from its command line for its coarse levels and its refinement; not in the panel or "
           "the saved settings");
   add(rows, "--slab-passes", OptionGroup::Advanced)
@@ -715,14 +719,15 @@ std::vector<OptionSpec> makeTable() {
           "kernels that reach both halves of the slab, twice the fragments, for half the "
           "blending a pass; each pass leaves out the kernels whose cut depth profile misses its "
           "half of the slab ([Two passes, each its "
-          "half](../performance.md#two-passes-each-its-half)). On an H200 at 1024², before that "
+          "half](../dev/performance.md#two-passes-each-its-half)). On an H200 at 1024², before "
+          "that "
           "culling, 0.57–0.64× the frame for CThead and engine, 1.16× for bonsai; 1.4–1.7× the "
           "splat stage on llvmpipe. `auto` (default): one pass on software rasterizers; on a "
           "GPU, whose timers time each frame, the first frames try one pass and two (a way's "
           "first frame in a renderer not counted: it pays for what the driver makes on first "
           "use), later frames take the faster (the other retried every 32 frames, less often "
           "when it is more than twice as dear: `TwoWayTuner`), so a single headless picture "
-          "takes one pass ([On a GPU](../performance.md#on-a-gpu)). `--stats` reports "
+          "takes one pass ([On a GPU](../dev/performance.md#on-a-gpu)). `--stats` reports "
           "`slab_passes`. Command line only (not in the panel or the saved settings)");
   add(rows, "--occlusion-culling", OptionGroup::Advanced)
       .accepts(occlusionCullingNames())
@@ -733,7 +738,8 @@ std::vector<OptionSpec> makeTable() {
       .explain(
           "Front to back with termination: splats whose whole rectangle lies over pixels "
           "already that opaque are not drawn; the picture is the same ([how it "
-          "renders](../rendering.md#how-it-renders)). `auto` (default): on, but off on software "
+          "renders](../dev/rendering.md#occlusion-culling)). `auto` (default): on, but off on "
+          "software "
           "rasterizers (llvmpipe), where it measured slower unless most splats are hidden. "
           "Pre-classified frames only: post-classified ones are never culled (culling changed "
           "their picture)");
@@ -759,7 +765,7 @@ std::vector<OptionSpec> makeTable() {
       .explain(
           "Headless OpenGL (the default, or what the environment variable `EWAVIEW_BACKEND` "
           "names; `egl` runs where OSMesa is gone and on GPU machines without "
-          "X: [On a GPU](../performance.md#on-a-gpu))");
+          "X: [On a GPU](../dev/performance.md#on-a-gpu))");
   add(rows, "--shader-dir", OptionGroup::Advanced)
       .value("DIR")
       .describe("Load shaders from this folder (development)")
