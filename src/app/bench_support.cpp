@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "app/heap_tuning.h"
+#include "app/option_binding.h"
 #include "app/options.h"
 #include "platform/headless_context.h"
 
@@ -47,8 +48,7 @@ TimingSummary summarize(std::vector<double> values) {
 
 void addBackendOption(CLI::App& app, std::string& backend) {
   backend = platform::defaultHeadlessBackend();
-  app.add_option("--backend", backend, "osmesa (default; EWAVIEW_BACKEND names another) or egl")
-      ->check(CLI::IsMember({"osmesa", "egl"}));
+  addTableOption(app, "--backend", backend);
 }
 
 std::string sharedDataDir() {

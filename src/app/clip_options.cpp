@@ -3,14 +3,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/option_binding.h"
+
 namespace ewa {
 
 void addClipOptions(CLI::App& app, ClipOptionText& text) {
-  app.add_option("--crop", text.crop,
-                 "Keep only the world-space box X0,X1,Y0,Y1,Z0,Z1 (every renderer and mode)");
-  app.add_option("--clip-plane", text.planes,
-                 "Keep the half-space in front of the plane through PX,PY,PZ with normal "
-                 "NX,NY,NZ (repeat for up to 6 planes; --clip-plane=-1,... for a leading minus)")
+  addTableOption(app, "--crop", text.crop);
+  addTableOption(app, "--clip-plane", text.planes)
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }

@@ -5,8 +5,8 @@
 #include <cstdio>
 
 #include "app/bench_support.h"
+#include "app/option_binding.h"
 #include "app/vtk_runner.h"
-#include "core/kernel_lattice.h"
 #include "core/post_classification.h"
 #include "core/value_prefilter.h"
 
@@ -44,63 +44,34 @@ void addCompareOptions(CLI::App& app, CompareOptions& o) {
       ->check(CLI::IsMember({"sprites", "tiles", "tile-ewa", "shearwarp"}));
   app.add_option("--vtk-script", o.script, "Path of vtk_raycast_bench.py");
   app.add_flag("--orthographic", o.orthographic, "Parallel projection (default: perspective)");
-  app.add_option("--kernel-width", o.settings.kernelWidth,
-                 "EWA kernel sigma in voxel spacings, 0.3 to 2 (default 0.7)")
-      ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
-  app.add_option("--cutoff", o.settings.cutoff, "EWA footprint cutoff r = dx^T Q dx (default 5)")
-      ->check(CLI::Range(0.25, 64.0));
-  app.add_option("--depth-cutoff", o.settings.depthCutoff,
-                 "EWA kernels' depth extent in squared sigmas, or inf (default 1)")
-      ->check(CLI::Range(0.25, double(INFINITY)));
-  app.add_option("--classification", o.text.classification,
-                 "EWA: transfer function per pixel (post, default) or per voxel (pre)")
-      ->check(CLI::IsMember({"pre", "post"}));
-  app.add_option("--slab-preintegration", o.text.slabPreintegration,
-                 "EWA post-classification: slab value pairs through the pre-integration table "
-                 "(on, default) or each slab's value alone (off)")
-      ->check(CLI::IsMember({"on", "off"}));
-  app.add_option("--slab-samples", o.settings.slabSamples,
-                 "EWA post-classification, pre-integrated: depth samples a slab, 4 (default) or 2")
-      ->check(CLI::IsMember({2, 4}));
-  app.add_option("--slab-thickness", o.settings.slabThickness,
-                 "EWA: slab thickness in voxel depths along the view (default 2)")
-      ->check(CLI::Range(0.25, 1000.0));
-  app.add_option("--slab-passes", o.text.slabPasses,
-                 "EWA, 4 samples a slab: splat each slab once into both images (1) or once into "
-                 "each (2); auto (default): 1 on software rasterizers, else the faster as timed")
-      ->check(CLI::IsMember({"auto", "1", "2"}));
-  app.add_option("--prefilter", o.settings.classification.prefilter,
-                 "EWA post-classification: value prefilter strength (default 0.04)")
-      ->check(CLI::Range(0.0, kMaxPrefilter));
-  app.add_option("--occlusion-culling", o.text.occlusionCulling,
-                 "EWA: occlusion culling auto (default: off on software rasterizers), on or off")
-      ->check(CLI::IsMember({"auto", "on", "off"}));
+  // The EWA column's settings: ewaview's own options, as its --help describes them.
+  addTableOption(app, "--kernel-width", o.settings.kernelWidth);
+  addTableOption(app, "--cutoff", o.settings.cutoff);
+  addTableOption(app, "--depth-cutoff", o.settings.depthCutoff);
+  addTableOption(app, "--classification", o.text.classification);
+  addTableOption(app, "--slab-preintegration", o.text.slabPreintegration);
+  addTableOption(app, "--slab-samples", o.settings.slabSamples);
+  addTableOption(app, "--slab-thickness", o.settings.slabThickness);
+  addTableOption(app, "--slab-passes", o.text.slabPasses);
+  addTableOption(app, "--prefilter", o.settings.classification.prefilter);
+  addTableOption(app, "--occlusion-culling", o.text.occlusionCulling);
   app.add_option("--slab-rects", o.slabRects,
                  "EWA: each slab's passes cut to the pixels its kernels reach (on, default) or "
                  "over the whole image (off)")
       ->check(CLI::IsMember({"on", "off"}));
-  app.add_option("--slab-resolution", o.text.slabResolution,
-                 "EWA: slabs splatted into images as coarse as their kernels allow (auto, "
-                 "default) or at full resolution (full)")
-      ->check(CLI::IsMember({"auto", "full"}));
-  app.add_option("--slab-precision", o.text.slabPrecision,
-                 "EWA: slab images of half floats (half) or floats (float); auto (default): "
-                 "half for kernel widths up to 1 unless shaded and post-classified. The bare "
-                 "sprites draw into the same")
-      ->check(CLI::IsMember({"auto", "half", "float"}));
+  addTableOption(app, "--slab-resolution", o.text.slabResolution);
+  addTableOption(app, "--slab-precision", o.text.slabPrecision);  // the bare sprites' too
   app.add_option("--partition", o.partition,
                  "EWA: where the slab partition is built: auto (default: the CPU on software "
                  "rasterizers, the GPU elsewhere), gpu or cpu")
       ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
-  app.add_flag("--shading", o.settings.lighting.enabled, "EWA: Phong shading with a head light");
-  app.add_option("--post-normals", o.text.postNormals,
-                 "EWA post-classified, with --shading: field, voxel or ray (default) normals")
-      ->check(CLI::IsMember({"field", "voxel", "ray"}));
+  addTableFlag(app, "--shading", o.settings.lighting.enabled);
+  addTableOption(app, "--post-normals", o.text.postNormals);
   app.add_option("--tile-size", o.tileSize,
                  "Pixels a side of the compute tiles of the tiles_ms and tile_ewa_ms columns (8 or "
                  "16, default 16)")
       ->check(CLI::IsMember({8, 16}));
-  app.add_option("--shader-dir", o.shaderDir, "Load shaders from this folder (development)");
+  addTableOption(app, "--shader-dir", o.shaderDir);
   addBackendOption(app, o.backend);
 }
 

@@ -18,7 +18,6 @@ std::vector<std::string> sceneInputFiles(const Scene& scene, const Options& opti
 
 // Throws std::runtime_error("output: is an input file; ...") when `output` is one of
 // sceneInputFiles.
-void refuseToOverwriteInputs(const std::string& output, const Scene& scene,
-                             const Options& options);
+void refuseToOverwriteInputs(const std::string& output, const Scene& scene, const Options& options);
 
 }  // namespace ewa

@@ -10,10 +10,9 @@
 #include <vector>
 
 #include "app/clip_options.h"
+#include "app/option_binding.h"
 #include "app/render_options.h"
 #include "app/version.h"
-#include "core/kernel_lattice.h"
-#include "core/transfer_function_presets.h"
 #include "io/text_fields.h"
 #include "io/volume_writer.h"
 #include "platform/headless_context.h"
@@ -75,189 +74,121 @@ std::string optionWithNan(int argc, const char* const* argv) {
   return "";
 }
 
-ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
-  CLI::App app{
-      "ewaview: a volume viewer built on EWA volume splatting.\n"
-      "Without --output it opens a window; with --output it renders headless and exits.",
-      "ewaview"};
-  app.set_version_flag("--version", std::string("ewaview ") + versionString());
-  app.add_option(
-      "file", o->file,
-      "Volume file (.nrrd .nhdr .mhd .mha .dat .vti .vtk .nii .nii.gz .hdr .img .dcm .tif "
-      ".tiff .ome .slc .mrc .map .rec), a folder of DICOM, TIFF or .png .jpg .bmp .pgm slices, "
-      "an archive of one (.zip .tar .tar.gz .7z ...), or raw with --raw-*");
-  app.add_option("--synthetic", o->synthetic,
-                 "Synthetic volume: marschner-lobb[:N], sphere[:N], checkerboard, zebra[:RATIO]");
-  app.add_option(
-      "-o,--output", o->output,
-      "Render headless to this PNG and exit (with --turntable or --tour: frames or a video)");
-  app.add_option("--turntable", o->turntable,
-                 "Render N frames over 360 degrees about view-up; --output is a pattern with one "
-                 "%d (frame_%03d.png), a folder, or a video (.mp4: H.264, .webm: VP9)")
-      ->check(CLI::Range(1, 100000));
-  app.add_option("--tour", o->tour,
-                 "Render N frames flying through the camera bookmarks in order (the window's, "
-                 "with their crop boxes and planes), resting at each; --output as --turntable")
-      ->check(CLI::Range(2, 100000));
-  app.add_option("--bookmarks", o->bookmarks,
-                 "The camera bookmarks --tour flies through (default: the window's for the "
-                 "volume, NAME.bookmarks.json beside it or under the settings folder)");
-  app.add_option("--fps", o->fps, "Frames per second of a --turntable or --tour video (default 30)")
-      ->check(CLI::Range(1, 240));
-  app.add_option("--config-dir", o->configDir,
-                 "Window settings folder (default $EWAVIEW_CONFIG_DIR, else "
-                 "$XDG_CONFIG_HOME/ewaview or ~/.config/ewaview)");
-  app.add_flag("--watch", o->watch,
-               "Window: reload the volume, keeping the view and transfer function, whenever its "
-               "file changes (a simulation or scanner writing it; also F5 and the panel)");
-  app.add_option("--record-camera-path", o->recordCameraPath,
-                 "Window: write the cameras of the session to this file on exit, for "
-                 "ewaview-interact-bench --path");
-  app.add_flag("--stats", o->stats,
-               "With --output: print the frame's statistics as one JSON line (times, splats, "
-               "gpu_bytes, gpu_bytes_per_splat, peak_rss)");
-  app.add_flag("--info", o->info,
-               "Print dims, spacing, type, value range, direction and notes as JSON and exit");
-  app.add_option("--save-volume", o->saveVolume,
-                 "Write the volume as opened (any format, after --frame, --channel, --series, "
-                 "--spacing; with --crop only the box's voxels) to this file and exit: .nrrd "
-                 "(gzip), .nii or .nii.gz (NIfTI-1), .mha or .mhd with .raw (MetaImage), .tif "
-                 "or .tiff (OME-TIFF)");
-  std::vector<double> pick;
-  app.add_option("--pick", pick,
-                 "Print what pixel X,Y (column, row from the top left) of the --resolution "
-                 "picture shows (world point, voxel, value) as JSON and exit")
-      ->delimiter(',')
-      ->expected(2);
-  app.add_option("--series", o->load.series,
-                 "DICOM: open the series with this SeriesInstanceUID (UID#2, ... a part of one "
-                 "that mixes sizes, orientations or multi-frame files)");
-  app.add_option("--frame", o->load.frame,
-                 "4D NIfTI or NRRD, an OME-TIFF's or ImageJ hyperstack's time point, or a DICOM "
-                 "series of several volumes at the same positions: open this volume (default 0)")
-      ->check(CLI::Range(0, 1 << 30));
-  std::string channel;
-  app.add_option("--channel", channel,
-                 "Colour or vector data (TIFF, DICOM, image slices and NIfTI: 0 red, 1 green, 2 "
-                 "blue; MetaImage channels, VTK components and vectors, a 4D NRRD's colour or "
-                 "vector axis): open this channel (default 0); 'all' or a list (0,2): those "
-                 "channels overlaid, each in its colour, the colours added (headless: --output, "
-                 "--turntable, --tour)");
+namespace {
+
+// What CLI11 reads as text or lists, turned into Options after the parse.
+struct ParsedText {
+  std::vector<double> pick, pos, focal, up, bg, spacing;
   std::vector<int> res;
+  std::string channel, filter, mode, lowPass = "auto", renderer, lookup, correction, buffers;
+  bool closeUp = false, allowOutsideData = false;
+  RenderOptionText render;
+  ClipOptionText clip;
+};
+
+// Every option, in the table's order (option_table.cpp gives their help, groups and checks).
+void addOptions(CLI::App& app, Options* o, ParsedText* t) {
+  addHelpAndVersion(app, std::string("ewaview ") + versionString());
+  app.formatter(std::make_shared<GroupedHelpFormatter>());
   // Given twice (a copied view pasted after one's own options), the last one counts.
   constexpr auto kLast = CLI::MultiOptionPolicy::TakeLast;
-  app.add_option("--resolution", res, "Image size W,H (default 800,600)")
+  addTableOption(app, "file", o->file);
+  addTableOption(app, "--synthetic", o->synthetic);
+  addTableOption(app, "--series", o->load.series);
+  addTableOption(app, "--frame", o->load.frame);
+  addTableOption(app, "--channel", t->channel);
+  addTableOption(app, "--spacing", t->spacing)->delimiter(',')->expected(3);
+  auto* rawDims = addTableOption(app, "--raw-dims", o->rawDims);
+  addTableOption(app, "--raw-type", o->rawType)->needs(rawDims);
+  addTableOption(app, "--raw-spacing", o->rawSpacing)->needs(rawDims);
+  addTableOption(app, "--raw-endian", o->rawEndian)->needs(rawDims);
+  addTableFlag(app, "--allow-outside-data", t->allowOutsideData);
+  addTableFlag(app, "--watch", o->watch);
+  addTableFlag(app, "--info", o->info);
+  addTableOption(app, "--output", o->output);
+  addTableOption(app, "--resolution", t->res)
       ->delimiter(',')
       ->expected(2)
-      ->multi_option_policy(kLast)
-      ->check(CLI::Range(1, 16384));
-  std::vector<double> pos, focal, up, bg, spacing;
-  app.add_option("--spacing", spacing,
-                 "Voxel spacing X,Y,Z replacing the file's (image stacks have none; raw files: "
-                 "--raw-spacing)")
-      ->delimiter(',')
-      ->expected(3);
-  bool allowOutsideData = false;
-  app.add_flag("--allow-outside-data", allowOutsideData,
-               "Let a detached header (.mhd, .nhdr, .dat) name data files outside its own folder");
-  app.add_option("--camera-position", pos, "Camera position X,Y,Z")
+      ->multi_option_policy(kLast);
+  addTableFlag(app, "--stats", o->stats);
+  addTableOption(app, "--turntable", o->turntable);
+  addTableOption(app, "--tour", o->tour);
+  addTableOption(app, "--bookmarks", o->bookmarks);
+  addTableOption(app, "--fps", o->fps);
+  addTableOption(app, "--pick", t->pick)->delimiter(',')->expected(2);
+  addTableOption(app, "--save-volume", o->saveVolume);
+  addTableOption(app, "--camera-position", t->pos)
       ->delimiter(',')
       ->expected(3)
       ->multi_option_policy(kLast);
-  app.add_option("--camera-focal-point", focal, "Camera focal point X,Y,Z")
+  addTableOption(app, "--camera-focal-point", t->focal)
       ->delimiter(',')
       ->expected(3)
       ->multi_option_policy(kLast);
-  app.add_option("--camera-view-up", up, "Camera view-up X,Y,Z")
+  addTableOption(app, "--camera-view-up", t->up)
       ->delimiter(',')
       ->expected(3)
       ->multi_option_policy(kLast);
-  app.add_option("--camera-view-angle", o->cameraViewAngle,
-                 "Vertical view angle in degrees (default 30)")
-      ->multi_option_policy(kLast)
-      ->check(CLI::Range(0.01, 179.0));
-  app.add_flag("--camera-orthographic", o->orthographic, "Orthographic projection");
-  app.add_flag("--axis", o->axes,
-               "Draw the orientation axes in the picture's bottom-right corner (X, Y, Z; L, P, S "
-               "for patient axes); the window shows them unless switched off (X key)");
-  std::string filter = "ewa", mode = "composite";
-  app.add_option("--filter", filter, "Splat filter: ewa (default), swan, plain")
-      ->check(CLI::IsMember({"ewa", "swan", "plain"}));
-  app.add_option("--render-mode", mode, "composite (default), xray or mip")
-      ->check(CLI::IsMember({"composite", "xray", "mip"}));
-  RenderOptionText renderText;
-  addShadingOptions(app, o->render, renderText);
-  ClipOptionText clipText;
-  std::string lowPassText = "auto";
-  addClipOptions(app, clipText);
-  app.add_option("--cutoff", o->render.cutoff, "Footprint cutoff r = dx^T Q dx (default 5)")
-      ->check(CLI::Range(0.25, 64.0));
-  app.add_option("--depth-cutoff", o->render.depthCutoff,
-                 "Kernels' depth extent in squared sigmas, 0.25 and up or inf (default 1)")
-      ->check(CLI::Range(0.25, double(INFINITY)));
-  app.add_option("--kernel-width", o->render.kernelWidth,
-                 "Kernel sigma in voxel spacings, 0.3 to 2 (default 0.7)")
-      ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
-  app.add_option("--low-pass", lowPassText,
-                 "EWA's screen low-pass filter: its variance in pixels^2, 0.1 to 1, or auto "
-                 "(default auto: 1, the paper's, in every mode)")
-      ->check(CLI::IsMember({"auto"}) | CLI::Range(0.1, 1.0));
-  bool closeUp = false;
-  app.add_flag("--close-up", closeUp,
-               "Close-up setting, today the defaults: --classification post --slab-preintegration "
-               "on --kernel-width 0.7 --cutoff 5; options given beside it win");
-  app.add_option("--slab-thickness", o->render.slabThickness,
-                 "Slab thickness in voxel depths along the view, 0.25 and up (default 2)")
-      ->check(CLI::Range(0.25, 1000.0));
-  std::string rendererName = "splat", lookup = "nearest", correction = "on", buffers = "slice";
-  app.add_option("--renderer", rendererName,
-                 "splat (default, GPU EWA splatting) or shearwarp (CPU)")
-      ->check(CLI::IsMember({"splat", "shearwarp"}));
-  app.add_flag("--preintegrated", o->render.shearWarp.preintegrated,
-               "Shear-warp: pre-integrated slabs between slices");
-  app.add_option("--table-lookup", lookup,
-                 "Shear-warp pre-integration lookup: nearest (default) or bilinear")
-      ->check(CLI::IsMember({"nearest", "bilinear"}));
-  app.add_option("--opacity-correction", correction,
-                 "Shear-warp opacity and colour correction for the view's sample distance: on "
-                 "(default) or off")
-      ->check(CLI::IsMember({"on", "off"}));
-  app.add_option("--buffer-slices", buffers,
-                 "Shear-warp buffer slices: slice (two slice-sized, default) or image (one "
-                 "intermediate-image-sized)")
-      ->check(CLI::IsMember({"slice", "image"}));
-  app.add_option("--intermediate-scale", o->render.shearWarp.intermediateScale,
-                 "Shear-warp: at most this many intermediate-image pixels a voxel where the "
-                 "picture is finer, 1 (Lacroute's one a voxel) to 4 (default 2)")
-      ->check(CLI::Range(1.0, 4.0));
-  app.add_option("--tf", o->tfFile, "Transfer function JSON file");
-  std::vector<std::string> presetKeys;
-  for (const TransferFunctionPresetInfo& p : transferFunctionPresets()) presetKeys.push_back(p.key);
-  app.add_option("--tf-preset", o->tfPresets,
-                 "Apply a preset to the transfer function (--tf's, the sidecar's or the "
-                 "histogram's): ct-bone, ct-soft-tissue, mr, grayscale-ramp replace it; the colour "
-                 "maps viridis, inferno, cool-to-warm, rainbow recolour it (repeat: in order)")
-      ->check(CLI::IsMember(presetKeys))
+  addTableOption(app, "--camera-view-angle", o->cameraViewAngle)->multi_option_policy(kLast);
+  addTableFlag(app, "--camera-orthographic", o->orthographic);
+  addTableFlag(app, "--axis", o->axes);
+  addTableOption(app, "--record-camera-path", o->recordCameraPath);
+  addTableOption(app, "--tf", o->tfFile);
+  addTableOption(app, "--tf-preset", o->tfPresets)
       ->expected(1)  // one a time, so a file named after it is not taken for a preset
       ->allow_extra_args(false)
       ->take_all();
-  app.add_option("--background", bg, "Background colour R,G,B in [0,1] (default 0,0,0)")
-      ->delimiter(',')
-      ->expected(3)
-      ->check(CLI::Range(0.0, 1.0));
-  app.add_option("--backend", o->backend,
-                 "Headless OpenGL: osmesa (default; EWAVIEW_BACKEND names another) or egl")
-      ->check(CLI::IsMember({"osmesa", "egl"}));
-  app.add_option("--shader-dir", o->shaderDir, "Load shaders from this folder (development)");
-  auto* rawDims = app.add_option("--raw-dims", o->rawDims, "Raw input: dims X,Y,Z");
-  app.add_option(
-         "--raw-type", o->rawType,
-         "Raw input: int8, uint8, int16, uint16, int32, uint32, int64, uint64, float32 or float64")
-      ->needs(rawDims);
-  app.add_option("--raw-spacing", o->rawSpacing, "Raw input: spacing X,Y,Z (default 1,1,1)")
-      ->needs(rawDims);
-  app.add_option("--raw-endian", o->rawEndian, "Raw input: little (default) or big")
-      ->needs(rawDims);
+  t->renderer = rendererKindName(o->render.renderer);
+  addTableOption(app, "--renderer", t->renderer);
+  t->mode = renderModeName(o->render.mode);
+  addTableOption(app, "--render-mode", t->mode);
+  t->filter = filterModeName(o->render.filter);
+  addTableOption(app, "--filter", t->filter);
+  addTableOption(app, "--kernel-width", o->render.kernelWidth);
+  addTableOption(app, "--cutoff", o->render.cutoff);
+  addTableOption(app, "--depth-cutoff", o->render.depthCutoff);
+  addTableOption(app, "--low-pass", t->lowPass);
+  addTableFlag(app, "--close-up", t->closeUp);
+  addTableOption(app, "--slab-thickness", o->render.slabThickness);
+  addTableOption(app, "--background", t->bg)->delimiter(',')->expected(3);
+  addClipOptions(app, t->clip);
+  addShadingOptions(app, o->render, t->render);
+  addTableFlag(app, "--preintegrated", o->render.shearWarp.preintegrated);
+  t->lookup = tableLookupName(o->render.shearWarp.lookup);
+  addTableOption(app, "--table-lookup", t->lookup);
+  t->correction = o->render.shearWarp.opacityCorrection ? "on" : "off";
+  addTableOption(app, "--opacity-correction", t->correction);
+  t->buffers = bufferSlicesName(o->render.shearWarp.buffers);
+  addTableOption(app, "--buffer-slices", t->buffers);
+  addTableOption(app, "--intermediate-scale", o->render.shearWarp.intermediateScale);
+  addTableOption(app, "--backend", o->backend);
+  addTableOption(app, "--shader-dir", o->shaderDir);
+  addTableOption(app, "--config-dir", o->configDir);
+}
+
+const char* const kAbout =
+    "ewaview: a volume viewer built on EWA volume splatting.\n"
+    "Without --output it opens a window; with --output it renders headless and exits.";
+
+}  // namespace
+
+std::string commandLineHelp() {
+  CLI::App app{kAbout, "ewaview"};
+  Options options;
+  ParsedText text;
+  addOptions(app, &options, &text);
+  return app.help();
+}
+
+ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
+  CLI::App app{kAbout, "ewaview"};
+  ParsedText text;
+  addOptions(app, o, &text);
+  const std::vector<double>& pick = text.pick;
+  const std::vector<double>& spacing = text.spacing;
+  const std::vector<double>& bg = text.bg;
+  const std::vector<int>& res = text.res;
+  const std::string& channel = text.channel;
   if (const std::string nan = optionWithNan(argc, argv); !nan.empty()) {
     std::cerr << "ewaview: " << nan << ": not a finite number (see --help)\n";
     return {false, 2};
@@ -371,17 +302,17 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
       return usage("--spacing " + numberText(spacing[0]) + "," + numberText(spacing[1]) + "," +
                    numberText(spacing[2]) + ": each must be a positive number");
   o->load.spacing = toVec3(spacing);
-  if (allowOutsideData) o->load.dataFiles = DataFileScope::Anywhere;
-  o->cameraPosition = toVec3(pos);
-  o->cameraFocalPoint = toVec3(focal);
-  o->cameraViewUp = toVec3(up);
+  if (text.allowOutsideData) o->load.dataFiles = DataFileScope::Anywhere;
+  o->cameraPosition = toVec3(text.pos);
+  o->cameraFocalPoint = toVec3(text.focal);
+  o->cameraViewUp = toVec3(text.up);
   if (!bg.empty()) o->render.background = glm::dvec3(bg[0], bg[1], bg[2]);
-  parseFilterMode(filter, &o->render.filter);
-  parseRenderMode(mode, &o->render.mode);
-  if (closeUp) applyCloseUp(app, &renderText, &o->render);
-  if (const std::string e = finishShadingOptions(renderText, &o->render); !e.empty())
+  parseFilterMode(text.filter, &o->render.filter);
+  parseRenderMode(text.mode, &o->render.mode);
+  if (text.closeUp) applyCloseUp(app, &text.render, &o->render);
+  if (const std::string e = finishShadingOptions(text.render, &o->render); !e.empty())
     return usage(e);
-  if (const std::string e = finishClipOptions(clipText, &o->render.clip); !e.empty())
+  if (const std::string e = finishClipOptions(text.clip, &o->render.clip); !e.empty())
     return usage(e);
   if (o->tour > 0 && o->render.clip.active())
     return usage(
@@ -391,11 +322,11 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
     return usage(
         "--save-volume cuts the volume to --crop's box; a clipping plane cannot cut a grid: "
         "leave --clip-plane out");
-  if (lowPassText != "auto") o->render.lowPass = std::stod(lowPassText);  // checked above
-  parseRendererKind(rendererName, &o->render.renderer);
-  parseTableLookup(lookup, &o->render.shearWarp.lookup);
-  parseBufferSlices(buffers, &o->render.shearWarp.buffers);
-  o->render.shearWarp.opacityCorrection = correction == "on";
+  if (text.lowPass != "auto") o->render.lowPass = std::stod(text.lowPass);  // checked above
+  parseRendererKind(text.renderer, &o->render.renderer);
+  parseTableLookup(text.lookup, &o->render.shearWarp.lookup);
+  parseBufferSlices(text.buffers, &o->render.shearWarp.buffers);
+  o->render.shearWarp.opacityCorrection = text.correction == "on";
   return {true, 0};
 }
 

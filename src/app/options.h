@@ -63,6 +63,8 @@ struct ParseResult {
 };
 
 ParseResult parseCommandLine(int argc, const char* const* argv, Options* options);
+// What --help prints: the options in the table's groups (option_table.cpp).
+std::string commandLineHelp();
 
 // The option whose value (or one of its comma-separated numbers) reads as NaN, if any, else "":
 // CLI11's Range checks compare, and NaN passes every comparison, so a NaN cutoff or kernel

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "app/bench_support.h"
+#include "app/option_binding.h"
 #include "app/quality_benchmark.h"
 #include "app/quality_report.h"
 #include "core/kernel_lattice.h"
@@ -55,12 +56,8 @@ int run(int argc, char** argv) {
   app.add_option("--sheet-opacity", o.sheetOpacity,
                  "Opacity of one voxel of the sheets, replacing their own 0.98")
       ->check(CLI::Range(0.001, 0.999));
-  app.add_option("--kernel-width", o.kernelWidth,
-                 "Splat kernel sigma in voxel spacings, 0.3 to 2 (default: ewaview's, 0.7)")
-      ->check(CLI::Range(kMinKernelWidth, kMaxKernelWidth));
-  app.add_option("--cutoff", o.cutoff,
-                 "Splat footprint cutoff r = dx^T Q dx (default: ewaview's, 5)")
-      ->check(CLI::Range(0.25, 64.0));
+  addTableOption(app, "--kernel-width", o.kernelWidth);  // ewaview's, with its default
+  addTableOption(app, "--cutoff", o.cutoff);
   app.add_flag("--no-reference-flicker", noReferenceFlicker,
                "Skip rendering the reference at every move (its own flicker)");
   app.add_flag("--no-splat-reference", noSplatReference,

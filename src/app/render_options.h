@@ -12,19 +12,21 @@ class App;
 
 namespace ewa {
 
-// Text-valued options as CLI11 reads them, turned into settings after parsing.
+// Text-valued options as CLI11 reads them, turned into settings after parsing; each starts as
+// the name of the settings' default.
 struct RenderOptionText {
-  std::string compositing = "front-to-back";
-  std::string xrayMap = "exp";
-  std::string gradient = "central";
+  explicit RenderOptionText(const RenderSettings& defaults = RenderSettings{});
+  std::string compositing;
+  std::string xrayMap;
+  std::string gradient;
   std::string classification;  // empty: post, or pre with surface splats
-  std::string slabPreintegration = "on";
-  std::string postNormals = "ray";
-  std::string splatter = "auto";
-  std::string occlusionCulling = "auto";
-  std::string slabResolution = "auto";
-  std::string slabPrecision = "auto";
-  std::string slabPasses = "auto";
+  std::string slabPreintegration;
+  std::string postNormals;
+  std::string splatter;
+  std::string occlusionCulling;
+  std::string slabResolution;
+  std::string slabPrecision;
+  std::string slabPasses;
   std::optional<double> surfaceValue;
   std::optional<double> surfaceOpacity;
 };

@@ -2,5 +2,7 @@
 #include "app/version.h"
 
 namespace ewa {
-const char* versionString() { return EWA_VERSION; }
+const char* versionString() {
+  return EWA_VERSION;
+}
 }  // namespace ewa

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -11,7 +10,9 @@ namespace ewa {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-double radians(double deg) { return deg * kPi / 180.0; }
+double radians(double deg) {
+  return deg * kPi / 180.0;
+}
 
 // An up vector that is not parallel to `dir`.
 glm::dvec3 safeUp(const glm::dvec3& dir, const glm::dvec3& up) {
@@ -24,11 +25,17 @@ glm::dmat4 Camera::viewMatrix() const {
   return glm::lookAt(position, focalPoint, safeUp(direction(), viewUp));
 }
 
-glm::dmat3 Camera::rotation() const { return glm::dmat3(viewMatrix()); }
+glm::dmat3 Camera::rotation() const {
+  return glm::dmat3(viewMatrix());
+}
 
-glm::dvec3 Camera::direction() const { return glm::normalize(focalPoint - position); }
+glm::dvec3 Camera::direction() const {
+  return glm::normalize(focalPoint - position);
+}
 
-double Camera::distance() const { return glm::length(focalPoint - position); }
+double Camera::distance() const {
+  return glm::length(focalPoint - position);
+}
 
 Projection Camera::projection(int width, int height) const {
   Projection p;

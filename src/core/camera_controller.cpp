@@ -20,9 +20,15 @@ void CameraController::setViewportSize(int width, int height) {
 void CameraController::pressButton(MouseButton button, bool shift, double x, double y) {
   if (dragging()) return;
   switch (button) {
-    case MouseButton::Left: mode_ = shift ? DragMode::Pan : DragMode::Orbit; break;
-    case MouseButton::Middle: mode_ = DragMode::Pan; break;
-    case MouseButton::Right: mode_ = DragMode::Dolly; break;
+    case MouseButton::Left:
+      mode_ = shift ? DragMode::Pan : DragMode::Orbit;
+      break;
+    case MouseButton::Middle:
+      mode_ = DragMode::Pan;
+      break;
+    case MouseButton::Right:
+      mode_ = DragMode::Dolly;
+      break;
   }
   dragButton_ = button;
   lastX_ = x;
@@ -61,7 +67,8 @@ bool CameraController::moveCursor(double x, double y) {
       camera_.pan(-dx * units, dy * units);
       break;
     }
-    case DragMode::None: return false;
+    case DragMode::None:
+      return false;
   }
   changed();
   return true;

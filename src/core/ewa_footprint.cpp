@@ -46,6 +46,10 @@ bool parseFilterMode(const std::string& text, FilterMode* mode) {
   return parseIn(kFilterModeNames, text, mode);
 }
 
+std::vector<std::string> filterModeNames() {
+  return namesIn(kFilterModeNames);
+}
+
 glm::dvec3 kernelSigma(const glm::dvec3& spacing, double kernelWidth) {
   return spacing * kernelWidth;
 }

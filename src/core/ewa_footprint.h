@@ -7,6 +7,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <string>
+#include <vector>
 
 #include "core/camera.h"
 
@@ -17,6 +18,7 @@ enum class FilterMode { Ewa = 0, Plain = 1, Swan = 2 };
 const char* filterModeName(FilterMode mode);
 // Parses "ewa", "plain" or "swan"; returns false for anything else.
 bool parseFilterMode(const std::string& text, FilterMode* mode);
+std::vector<std::string> filterModeNames();  // every name parseFilterMode accepts
 
 struct FootprintParams {
   FilterMode filter = FilterMode::Ewa;

@@ -17,7 +17,9 @@ struct FloatImage {
   FloatImage(int w, int h, int c, float fill = 0.0f)
       : width(w), height(h), channels(c), values(std::size_t(w) * h * c, fill) {}
   float& at(int x, int y, int c = 0) { return values[(std::size_t(y) * width + x) * channels + c]; }
-  float at(int x, int y, int c = 0) const { return values[(std::size_t(y) * width + x) * channels + c]; }
+  float at(int x, int y, int c = 0) const {
+    return values[(std::size_t(y) * width + x) * channels + c];
+  }
 };
 
 // Rec. 709 luminance of an RGB(A) image; a one-channel image is returned as it is.

@@ -12,11 +12,11 @@
 namespace ewa {
 
 struct KernelReach {
-  double cutoff = 4.0;      // footprint cutoff r = dx^T Q dx: the ellipsoid r <= cutoff
+  double cutoff = 4.0;  // footprint cutoff r = dx^T Q dx: the ellipsoid r <= cutoff
   // Depth extent in squared standard deviations: the slab partition lists a kernel in the slabs
   // within sqrt(depthCutoff) sigma of its centre (at most the cutoff; see DepthProfile).
   double depthCutoff = 4.0;
-  double maxSigma = 1.0;    // largest standard deviation of a kernel: kernel width * spacing
+  double maxSigma = 1.0;     // largest standard deviation of a kernel: kernel width * spacing
   double swanSpacing = 1.0;  // Swan's s (FootprintParams::swanSpacing): kernel width * spacing
   bool swan = false;
   bool orthographic = false;

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace ewa {
 
@@ -19,6 +20,14 @@ const char* nameIn(const NamedValue<E> (&table)[N], E value) {
   for (const NamedValue<E>& entry : table)
     if (entry.value == value) return entry.name;
   return "?";
+}
+
+// Every name in `table`, in order: the values an option accepts, for its check and its help.
+template <typename E, size_t N>
+std::vector<std::string> namesIn(const NamedValue<E> (&table)[N]) {
+  std::vector<std::string> names;
+  for (const NamedValue<E>& entry : table) names.emplace_back(entry.name);
+  return names;
 }
 
 // The value named `text` in `table` into *value; false (and *value untouched) for any other text.

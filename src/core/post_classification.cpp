@@ -155,6 +155,10 @@ bool parseClassificationMode(const std::string& text, ClassificationMode* mode) 
   return parseIn(kClassificationModeNames, text, mode);
 }
 
+std::vector<std::string> classificationModeNames() {
+  return namesIn(kClassificationModeNames);
+}
+
 int postClassificationMarginSquared(double cutoff, double kernelWidth) {
   // Every voxel whose centre lies within a kernel's reach of a visible voxel's centre (reach^2 =
   // cutoff * width^2, in voxel steps): wherever a visible kernel reaches, the voxels it shares

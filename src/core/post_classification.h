@@ -19,6 +19,7 @@ enum class ClassificationMode { Pre = 0, Post = 1 };
 const char* classificationModeName(ClassificationMode mode);
 // Parses "pre" or "post"; false for anything else.
 bool parseClassificationMode(const std::string& text, ClassificationMode* mode);
+std::vector<std::string> classificationModeNames();  // every name parseClassificationMode accepts
 
 // The squared distance in voxel steps within which a kernel reaches (cutoff * kernel width^2,
 // rounded down), 1 to 225: the margin of zero-opacity voxels that must stay beside visible ones

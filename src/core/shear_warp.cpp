@@ -29,6 +29,10 @@ bool parseTableLookup(const std::string& text, TableLookup* lookup) {
   return parseIn(kTableLookupNames, text, lookup);
 }
 
+std::vector<std::string> tableLookupNames() {
+  return namesIn(kTableLookupNames);
+}
+
 namespace {
 constexpr NamedValue<BufferSlices> kBufferSlicesNames[] = {{BufferSlices::Slice, "slice"},
                                                            {BufferSlices::Image, "image"}};
@@ -40,6 +44,10 @@ const char* bufferSlicesName(BufferSlices buffers) {
 
 bool parseBufferSlices(const std::string& text, BufferSlices* buffers) {
   return parseIn(kBufferSlicesNames, text, buffers);
+}
+
+std::vector<std::string> bufferSlicesNames() {
+  return namesIn(kBufferSlicesNames);
 }
 
 int shearWarpThreads(const ShearWarpSettings& settings) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace ewa {
 
@@ -34,7 +35,9 @@ struct ShearWarpSettings {
 
 const char* tableLookupName(TableLookup lookup);
 bool parseTableLookup(const std::string& text, TableLookup* lookup);
+std::vector<std::string> tableLookupNames();  // every name parseTableLookup accepts
 const char* bufferSlicesName(BufferSlices buffers);
 bool parseBufferSlices(const std::string& text, BufferSlices* buffers);
+std::vector<std::string> bufferSlicesNames();  // every name parseBufferSlices accepts
 
 }  // namespace ewa

@@ -12,8 +12,8 @@ namespace {
 // In-place running min (or max) along one axis of an x-fastest grid over [x, x + reach]
 // (step +1) or [x - reach, x] (step -1), clamped at the ends: a separable pass of a box filter.
 template <typename Op>
-void extend(std::vector<uint8_t>& a, const std::array<int64_t, 3>& d, int axis, int reach,
-            int step, Op op) {
+void extend(std::vector<uint8_t>& a, const std::array<int64_t, 3>& d, int axis, int reach, int step,
+            Op op) {
   const int64_t stride = axis == 0 ? 1 : axis == 1 ? d[0] : d[0] * d[1];
   const int64_t n = d[axis];
   const int64_t total = d[0] * d[1] * d[2];

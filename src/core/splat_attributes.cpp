@@ -28,6 +28,10 @@ bool parseGradientMode(const std::string& text, GradientMode* mode) {
   return parseIn(kGradientModeNames, text, mode);
 }
 
+std::vector<std::string> gradientModeNames() {
+  return namesIn(kGradientModeNames);
+}
+
 PackedAttributes packAttributes(const glm::dvec3& n, bool surface, double offset) {
   const float kind = surface ? float(3.0 + std::clamp(offset, -1.0, 1.0)) : 0.0f;
   return {glm::packHalf2x16(glm::vec2(n.x, n.y)), glm::packHalf2x16(glm::vec2(float(n.z), kind))};

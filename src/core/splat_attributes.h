@@ -21,6 +21,7 @@ enum class SurfaceCriterion { None = 0, Value = 1, Opacity = 2 };
 
 const char* gradientModeName(GradientMode mode);
 bool parseGradientMode(const std::string& text, GradientMode* mode);
+std::vector<std::string> gradientModeNames();  // every name parseGradientMode accepts
 
 // What decides which voxels are splats, and of which kind. Changing it rebuilds the splats;
 // the camera and the light never do.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <stdexcept>
 
 namespace ewa {
@@ -132,22 +133,49 @@ double marschnerLobb(double x, double y, double z) {
   return (1.0 - std::sin(kPi * z / 2.0) + alpha * (1.0 + rho)) / (2.0 * (1.0 + alpha));
 }
 
+namespace {
+
+// Each synthetic volume: its name, its number's letter, meaning, default and range.
+struct SyntheticKind {
+  const char* name;
+  const char* letter;  // in the spec's form, "sphere[:N]"
+  const char* what;    // in error messages
+  int fallback, lo, hi;
+  SyntheticVolume (*make)(int);
+};
+
+constexpr SyntheticKind kSyntheticKinds[] = {
+    {"marschner-lobb", "N", "size", 41, 2, 512, marschnerLobbVolume},
+    {"sphere", "N", "size", 64, 2, 512, sphereVolume},
+    {"box", "N", "size", 32, 2, 512, boxVolume},
+    {"checkerboard", "S", "square size", 10, 1, 200, checkerboardVolume},
+    {"zebra", "RATIO", "ratio", 4, 1, 16, zebraVolume},
+};
+
+}  // namespace
+
 SyntheticVolume makeSyntheticVolume(const std::string& spec) {
   const size_t colon = spec.find(':');
   const std::string name = spec.substr(0, colon);
   const bool hasNumber = colon != std::string::npos;
   const std::string number = hasNumber ? spec.substr(colon + 1) : std::string();
-  if (name == "marschner-lobb")
-    return marschnerLobbVolume(parseParameter(spec, number, hasNumber, 41, 2, 512, "size"));
-  if (name == "sphere")
-    return sphereVolume(parseParameter(spec, number, hasNumber, 64, 2, 512, "size"));
-  if (name == "box") return boxVolume(parseParameter(spec, number, hasNumber, 32, 2, 512, "size"));
-  if (name == "checkerboard")
-    return checkerboardVolume(parseParameter(spec, number, hasNumber, 10, 1, 200, "square size"));
-  if (name == "zebra")
-    return zebraVolume(parseParameter(spec, number, hasNumber, 4, 1, 16, "ratio"));
-  throw specError(spec, "unknown volume '" + name +
-                            "' (expected marschner-lobb, sphere, box, checkerboard or zebra)");
+  std::string names;  // "a, b or c"
+  const size_t count = std::size(kSyntheticKinds);
+  for (size_t k = 0; k < count; ++k) {
+    const SyntheticKind& kind = kSyntheticKinds[k];
+    if (name == kind.name)
+      return kind.make(
+          parseParameter(spec, number, hasNumber, kind.fallback, kind.lo, kind.hi, kind.what));
+    names += (k == 0 ? "" : k + 1 == count ? " or " : ", ") + std::string(kind.name);
+  }
+  throw specError(spec, "unknown volume '" + name + "' (expected " + names + ")");
+}
+
+std::vector<std::string> syntheticVolumeForms() {
+  std::vector<std::string> forms;
+  for (const SyntheticKind& kind : kSyntheticKinds)
+    forms.push_back(std::string(kind.name) + "[:" + kind.letter + "]");
+  return forms;
 }
 
 }  // namespace ewa

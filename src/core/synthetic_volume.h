@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/transfer_function.h"
 #include "core/volume.h"
@@ -29,6 +30,8 @@ struct SyntheticVolume {
 // N must lie in [2, 512]. Throws std::invalid_argument("--synthetic <spec>: problem") for unknown
 // names, malformed or out-of-range numbers.
 SyntheticVolume makeSyntheticVolume(const std::string& spec);
+// The specs' forms, "marschner-lobb[:N]", ... in the order above (the --synthetic help).
+std::vector<std::string> syntheticVolumeForms();
 
 // The Marschner-Lobb test signal at (x, y, z) in [-1, 1]³ (fM = 6, alpha = 0.25), in [0, 1].
 double marschnerLobb(double x, double y, double z);

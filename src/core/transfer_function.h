@@ -1,9 +1,9 @@
 // TransferFunction: piecewise-linear opacity and color by scalar value; a default from a histogram.
 #pragma once
 
+#include <cstddef>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
-#include <cstddef>
 #include <vector>
 
 #include "core/volume.h"

@@ -33,10 +33,10 @@ struct OrientedGrid {
 };
 
 // Leaves grid.direction a rotation without moving any voxel in world space: a non-orthonormal
-// direction (gantry tilt, shear) is orthonormalized (so those voxels do move, with a warning), and a reflection (det < 0) is undone by
-// reversing the data along the third axis (origin moved to the last slice, third column
-// negated). Returns the notes to show the user (a warning for the orthonormalization, a note
-// for the flip); empty when nothing changed.
+// direction (gantry tilt, shear) is orthonormalized (so those voxels do move, with a warning), and
+// a reflection (det < 0) is undone by reversing the data along the third axis (origin moved to the
+// last slice, third column negated). Returns the notes to show the user (a warning for the
+// orthonormalization, a note for the flip); empty when nothing changed.
 std::vector<std::string> makeRotation(OrientedGrid& grid);
 
 // The camera that, looking at the volume drawn in its own frame (origin + (i,j,k) * spacing, no

@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "io/atomic_file.h"
-#include "io/side_file.h"
 #include "io/clip_region_json.h"
+#include "io/side_file.h"
 
 namespace ewa {
 

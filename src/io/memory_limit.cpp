@@ -41,11 +41,10 @@ uint64_t usableMemoryBytes() {
 void checkAllocation(const std::string& path, uint64_t bytes, const std::string& what) {
   const uint64_t usable = usableMemoryBytes();
   if (bytes > std::numeric_limits<size_t>::max() || bytes > usable) {
-    failLoad(path, what + " of " + std::to_string(bytes) +
-                       " bytes is more than this machine's memory (" + std::to_string(usable) +
-                       " bytes " +
-                       (usable < physicalMemoryBytes() ? "under this process's limit" : "in all") +
-                       ")");
+    failLoad(path,
+             what + " of " + std::to_string(bytes) + " bytes is more than this machine's memory (" +
+                 std::to_string(usable) + " bytes " +
+                 (usable < physicalMemoryBytes() ? "under this process's limit" : "in all") + ")");
   }
 }
 

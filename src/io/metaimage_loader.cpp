@@ -72,7 +72,10 @@ bool anatomicalCode(const std::string* value) {
   if (code.size() != 3) return false;
   bool seen[3] = {false, false, false};
   for (const char c : code) {
-    const int axis = (c == 'r' || c == 'l') ? 0 : (c == 'a' || c == 'p') ? 1 : (c == 's' || c == 'i') ? 2 : -1;
+    const int axis = (c == 'r' || c == 'l')   ? 0
+                     : (c == 'a' || c == 'p') ? 1
+                     : (c == 's' || c == 'i') ? 2
+                                              : -1;
     if (axis < 0 || seen[axis]) return false;
     seen[axis] = true;
   }

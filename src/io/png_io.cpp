@@ -1,16 +1,15 @@
 // PNG reading and writing through stb_image / stb_image_write, the writer's deflate zlib's.
 #include "io/png_io.h"
 
-#include <string_view>
+#include <stb_image.h>
+#include <zlib.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
-
-#include <stb_image.h>
-#include <zlib.h>
+#include <string_view>
 
 namespace {
 

@@ -53,8 +53,8 @@ std::string readSideFile(const std::string& path, const std::string& what, uint6
   }
   if (uint64_t(st.st_size) > maxBytes) {
     ::close(fd);
-    fail(path, "is " + sizeText(uint64_t(st.st_size)) + ", too big for a " + what +
-                   " (at most " + sizeText(maxBytes) + ")");
+    fail(path, "is " + sizeText(uint64_t(st.st_size)) + ", too big for a " + what + " (at most " +
+                   sizeText(maxBytes) + ")");
   }
   std::string text(size_t(st.st_size), '\0');
   size_t done = 0;

@@ -17,7 +17,6 @@ extern "C" {
 }
 
 #include "io/atomic_file.h"
-
 #include "io/av_error.h"
 
 namespace ewa {

@@ -10,8 +10,8 @@
 
 #include "core/kernel_lattice.h"
 #include "io/atomic_file.h"
-#include "io/side_file.h"
 #include "io/clip_region_json.h"
+#include "io/side_file.h"
 
 namespace ewa {
 

@@ -93,7 +93,8 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options,
          : ext;
   if (ext == ".nrrd" || ext == ".nhdr")
     return loadNrrd(path, options.frame, options.channel, options.dataFiles);
-  if (ext == ".mhd" || ext == ".mha") return loadMetaImage(path, options.channel, options.dataFiles);
+  if (ext == ".mhd" || ext == ".mha")
+    return loadMetaImage(path, options.channel, options.dataFiles);
   if (ext == ".dat") return loadDat(path, options.dataFiles);
   if (ext == ".vti") return loadVti(path, options.channel);
   if (ext == ".vtk") return loadVtkLegacy(path, options.channel);

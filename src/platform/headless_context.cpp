@@ -34,6 +34,10 @@ const char* headlessBackendName(HeadlessBackend backend) {
   return backend == HeadlessBackend::OsMesa ? "osmesa" : "egl";
 }
 
+std::vector<std::string> headlessBackendNames() {
+  return {headlessBackendName(HeadlessBackend::OsMesa), headlessBackendName(HeadlessBackend::Egl)};
+}
+
 std::string defaultHeadlessBackend() {
   const char* value = std::getenv("EWAVIEW_BACKEND");
   if (!value || !*value) return "osmesa";

@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "platform/gl_context.h"
 
@@ -20,6 +21,8 @@ std::unique_ptr<GlContext> createHeadlessContext(HeadlessBackend backend, int wi
 HeadlessBackend parseHeadlessBackend(const std::string& name);
 // "osmesa" or "egl".
 const char* headlessBackendName(HeadlessBackend backend);
+// Every backend's name, the default first (the --backend option's values).
+std::vector<std::string> headlessBackendNames();
 // The backend programs use when none is named: EWAVIEW_BACKEND's ("osmesa" or "egl", say on a
 // GPU server), else "osmesa". Throws std::invalid_argument naming the variable for another value.
 std::string defaultHeadlessBackend();

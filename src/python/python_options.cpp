@@ -5,17 +5,13 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/option_table.h"
+
 namespace py = pybind11;
 
 namespace ewa::python {
 
 namespace {
-
-// What the module does itself (render() instead of --output and --turntable) or cannot do.
-const char* const kNotOptions[] = {"output",    "turntable", "fps",         "info",
-                                   "help",      "version",   "config_dir",  "record_camera_path",
-                                   "file",      "pick",      "save_volume", "tour",
-                                   "bookmarks", "watch"};
 
 // Collects what parseCommandLine writes to std::cerr while it lives.
 class CerrCapture {
@@ -62,7 +58,9 @@ std::vector<std::string> optionWords(const py::dict& options) {
   std::vector<std::string> words;
   for (const auto& [k, value] : options) {
     const std::string key = py::str(k).cast<std::string>();
-    if (std::find(std::begin(kNotOptions), std::end(kNotOptions), key) != std::end(kNotOptions))
+    // What the module does itself (render() instead of --output and --turntable) or cannot do:
+    // the option table's rows marked so. A keyword with no row is left to the parser's message.
+    if (const OptionSpec* spec = optionForKeyword(key); spec && !spec->python)
       throw UsageError(key + ": not an option of the Python module");
     // NumPy's bool (from comparisons on arrays) counts as a bool too.
     const bool isBool = py::isinstance<py::bool_>(value) ||

@@ -37,6 +37,10 @@ bool parseOcclusionCulling(const std::string& text, OcclusionCulling* mode) {
   return parseIn(kOcclusionCulling, text, mode);
 }
 
+std::vector<std::string> occlusionCullingNames() {
+  return namesIn(kOcclusionCulling);
+}
+
 const char* slabPrecisionName(SlabPrecision precision) {
   return nameIn(kSlabPrecision, precision);
 }
@@ -45,8 +49,20 @@ bool parseSlabPrecision(const std::string& text, SlabPrecision* precision) {
   return parseIn(kSlabPrecision, text, precision);
 }
 
+std::vector<std::string> slabPrecisionNames() {
+  return namesIn(kSlabPrecision);
+}
+
 bool parseSlabPasses(const std::string& text, int* passes) {
   return parseIn(kSlabPasses, text, passes);
+}
+
+const char* slabPassesName(int passes) {
+  return nameIn(kSlabPasses, passes);
+}
+
+std::vector<std::string> slabPassesNames() {
+  return namesIn(kSlabPasses);
 }
 
 const char* postNormalsName(PostNormals normals) {
@@ -57,12 +73,20 @@ bool parsePostNormals(const std::string& text, PostNormals* normals) {
   return parseIn(kPostNormals, text, normals);
 }
 
+std::vector<std::string> postNormalsNames() {
+  return namesIn(kPostNormals);
+}
+
 const char* splatterName(Splatter splatter) {
   return nameIn(kSplatter, splatter);
 }
 
 bool parseSplatter(const std::string& text, Splatter* splatter) {
   return parseIn(kSplatter, text, splatter);
+}
+
+std::vector<std::string> splatterNames() {
+  return namesIn(kSplatter);
 }
 
 const char* renderModeName(RenderMode mode) {
@@ -73,12 +97,20 @@ bool parseRenderMode(const std::string& text, RenderMode* mode) {
   return parseIn(kRenderMode, text, mode);
 }
 
+std::vector<std::string> renderModeNames() {
+  return namesIn(kRenderMode);
+}
+
 const char* compositeOrderName(CompositeOrder order) {
   return nameIn(kCompositeOrder, order);
 }
 
 bool parseCompositeOrder(const std::string& text, CompositeOrder* order) {
   return parseIn(kCompositeOrder, text, order);
+}
+
+std::vector<std::string> compositeOrderNames() {
+  return namesIn(kCompositeOrder);
 }
 
 const char* xrayMapName(XRayMap map) {
@@ -89,12 +121,20 @@ bool parseXRayMap(const std::string& text, XRayMap* map) {
   return parseIn(kXRayMap, text, map);
 }
 
+std::vector<std::string> xrayMapNames() {
+  return namesIn(kXRayMap);
+}
+
 const char* rendererKindName(RendererKind kind) {
   return nameIn(kRendererKind, kind);
 }
 
 bool parseRendererKind(const std::string& text, RendererKind* kind) {
   return parseIn(kRendererKind, text, kind);
+}
+
+std::vector<std::string> rendererKindNames() {
+  return namesIn(kRendererKind);
 }
 
 bool halfFloatSlabs(const RenderSettings& settings) {

@@ -30,14 +30,18 @@ enum class XRayMap { Attenuation = 0, Sum = 1 };
 
 const char* renderModeName(RenderMode mode);
 bool parseRenderMode(const std::string& text, RenderMode* mode);
+std::vector<std::string> renderModeNames();  // every name parseRenderMode accepts
 const char* compositeOrderName(CompositeOrder order);
 bool parseCompositeOrder(const std::string& text, CompositeOrder* order);
+std::vector<std::string> compositeOrderNames();  // every name parseCompositeOrder accepts
 const char* xrayMapName(XRayMap map);
 bool parseXRayMap(const std::string& text, XRayMap* map);
+std::vector<std::string> xrayMapNames();  // every name parseXRayMap accepts
 
 enum class PostNormals { Field = 0, Voxel = 1, Ray = 2 };
 const char* postNormalsName(PostNormals normals);
 bool parsePostNormals(const std::string& text, PostNormals* normals);
+std::vector<std::string> postNormalsNames();  // every name parsePostNormals accepts
 
 // How the splat renderer draws a whole composite frame: rasterized slab by slab (points and
 // quads blended into slab images), or in compute tiles (TileEwaSplatter: each screen tile's
@@ -51,6 +55,7 @@ bool parsePostNormals(const std::string& text, PostNormals* normals);
 enum class Splatter { Raster = 0, Tiles = 1, Auto = 2 };
 const char* splatterName(Splatter splatter);
 bool parseSplatter(const std::string& text, Splatter* splatter);
+std::vector<std::string> splatterNames();  // every name parseSplatter accepts
 
 enum class RendererKind { Splat = 0, ShearWarp = 1 };
 // Occlusion culling (splats over pixels already opaque are not drawn; the same picture). Auto:
@@ -59,17 +64,22 @@ enum class RendererKind { Splat = 0, ShearWarp = 1 };
 enum class OcclusionCulling { Auto = 0, On = 1, Off = 2 };
 const char* occlusionCullingName(OcclusionCulling mode);
 bool parseOcclusionCulling(const std::string& text, OcclusionCulling* mode);
+std::vector<std::string> occlusionCullingNames();  // every name parseOcclusionCulling accepts
 // Slab images' floats (RenderSettings::slabPrecision): "auto", "half" or "float".
 enum class SlabPrecision { Auto = 0, Half = 1, Float = 2 };
 const char* slabPrecisionName(SlabPrecision precision);
 bool parseSlabPrecision(const std::string& text, SlabPrecision* precision);
+std::vector<std::string> slabPrecisionNames();  // every name parseSlabPrecision accepts
 // RenderSettings::slabPasses from "auto" (0), "1" or "2"; false for any other text.
 bool parseSlabPasses(const std::string& text, int* passes);
+std::vector<std::string> slabPassesNames();  // every name parseSlabPasses accepts
+const char* slabPassesName(int passes);
 // Whether `settings` draw into half-float slab images (the composite mode, by slabPrecision).
 struct RenderSettings;
 bool halfFloatSlabs(const RenderSettings& settings);
 const char* rendererKindName(RendererKind kind);
 bool parseRendererKind(const std::string& text, RendererKind* kind);
+std::vector<std::string> rendererKindNames();  // every name parseRendererKind accepts
 
 struct RenderSettings {
   RendererKind renderer = RendererKind::Splat;  // which renderer the program creates

@@ -132,66 +132,17 @@ void WindowInput::onKey(GLFWwindow* window, int key, int scancode, int action, i
   WindowInput& self = from(window);
   self.activity_ = true;
   if (action != GLFW_PRESS || self.uiWantsKeyboard_) return;
-  switch (key) {
-    case GLFW_KEY_R:
+  const KeyBinding* binding = keyBindingFor(key, mods);  // the key table, key_bindings.cpp
+  if (!binding) return;
+  switch (binding->command) {
+    case KeyCommand::ResetCamera:
       self.controller_.reset();
       break;
-    case GLFW_KEY_M:
-      self.commands_.push_back(KeyCommand::MarkPoint);
-      break;
-    case GLFW_KEY_PAGE_DOWN:
-      self.commands_.push_back(KeyCommand::NextFrame);
-      break;
-    case GLFW_KEY_PAGE_UP:
-      self.commands_.push_back(KeyCommand::PreviousFrame);
-      break;
-    case GLFW_KEY_X:
-      self.commands_.push_back(KeyCommand::ToggleAxes);
-      break;
-    case GLFW_KEY_F1:
-      self.commands_.push_back(KeyCommand::KeysHelp);
-      break;
-    case GLFW_KEY_F5:
-      self.commands_.push_back(KeyCommand::Reload);
-      break;
-    case GLFW_KEY_F12:
-      self.commands_.push_back(KeyCommand::Screenshot);
-      break;
-    case GLFW_KEY_O:
-      if (mods & GLFW_MOD_CONTROL) self.commands_.push_back(KeyCommand::OpenFile);
-      break;
-    case GLFW_KEY_S:
-      if (mods & GLFW_MOD_CONTROL) self.commands_.push_back(KeyCommand::SaveVolume);
-      break;
-    case GLFW_KEY_Z:
-      if (mods & GLFW_MOD_CONTROL)
-        self.commands_.push_back((mods & GLFW_MOD_SHIFT) ? KeyCommand::Redo : KeyCommand::Undo);
-      break;
-    case GLFW_KEY_Y:
-      if (mods & GLFW_MOD_CONTROL) self.commands_.push_back(KeyCommand::Redo);
-      break;
-    case GLFW_KEY_C:
-      if (mods & GLFW_MOD_CONTROL)
-        self.commands_.push_back(KeyCommand::CopyView);
-      else
-        self.commands_.push_back((mods & GLFW_MOD_SHIFT) ? KeyCommand::PreviousChannel
-                                                         : KeyCommand::NextChannel);
-      break;
-    // 1..6: views along +X, -X, +Y, -Y, +Z, -Z (the order of the panel's buttons).
-    case GLFW_KEY_1:
-    case GLFW_KEY_2:
-    case GLFW_KEY_3:
-    case GLFW_KEY_4:
-    case GLFW_KEY_5:
-    case GLFW_KEY_6:
-      self.commands_.push_back(KeyCommand(int(KeyCommand::ViewPlusX) + (key - GLFW_KEY_1)));
-      break;
-    case GLFW_KEY_ESCAPE:
-    case GLFW_KEY_Q:
+    case KeyCommand::Quit:
       glfwSetWindowShouldClose(window, GLFW_TRUE);
       break;
     default:
-      break;
+      self.commands_.push_back(binding->command);
   }
 }
 

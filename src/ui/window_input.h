@@ -4,34 +4,11 @@
 #include <string>
 #include <vector>
 
+#include "ui/key_bindings.h"
+
 struct GLFWwindow;
 
 namespace ewa {
-
-// Keys (and a double-click) that ask the viewer, not the camera, to do something.
-enum class KeyCommand {
-  Screenshot,
-  OpenFile,
-  SaveVolume,  // Ctrl+S: the volume on screen as NRRD
-  Undo,        // Ctrl+Z: the last transfer-function edit
-  Redo,        // Ctrl+Y, Ctrl+Shift+Z
-  CopyView,    // Ctrl+C: the view as command-line options, to the clipboard
-  Reload,      // F5: the volume's file read again, keeping the view
-  KeysHelp,    // F1: the list of keys
-  ViewPlusX,   // the six views in the order of keys 1..6 (onKey counts on it)
-  ViewMinusX,
-  ViewPlusY,
-  ViewMinusY,
-  ViewPlusZ,
-  ViewMinusZ,
-  CentreOnCursor,
-  MarkPoint,
-  ToggleAxes,
-  NextFrame,  // Page Down: the file's next volume (4D NIfTI, DICOM volumes at one place)
-  PreviousFrame,
-  NextChannel,  // C: the file's next channel (RGB, OME-TIFF channels); Shift+C the previous
-  PreviousChannel
-};
 
 class CameraController;
 

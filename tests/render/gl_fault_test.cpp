@@ -122,10 +122,11 @@ TEST(GlFaults, OutputNamingASliceOrDataFileOfTheInputIsRefused) {
   Image8 slice;
   slice.width = 4, slice.height = 4, slice.channels = 3;
   slice.pixels.assign(4 * 4 * 3, 90);
-  for (int n = 0; n < 3; ++n) writePng((slices / ("s" + std::to_string(n) + ".png")).string(), slice);
+  for (int n = 0; n < 3; ++n)
+    writePng((slices / ("s" + std::to_string(n) + ".png")).string(), slice);
   const std::string before = readWholeFile(slices / "s1.png");
-  CliRun r = ewaview(dir, slices.string() + " --resolution 16,16 --output " +
-                              (slices / "s1.png").string());
+  CliRun r = ewaview(
+      dir, slices.string() + " --resolution 16,16 --output " + (slices / "s1.png").string());
   EXPECT_EQ(r.code, 1);
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("is an input file"), std::string::npos) << r.err;

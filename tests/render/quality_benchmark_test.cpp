@@ -114,8 +114,9 @@ TEST_F(QualityBenchmark, PostClassifiedDefaultFlickersNoMoreThanThePaperFilter) 
   const SceneQuality halfQ = measureScene(*renderer(), sceneNamed("checkerboard:10"), v, o);
   const double post = mode(q, "ewa").flicker, swan = mode(q, "swan").flicker,
                plain = mode(q, "plain").flicker, half = mode(halfQ, "ewa").flicker;
-  std::printf("post-classified flicker beyond k: ewa %.5f (0.5 px^2: %.5f), swan %.5f, plain %.5f\n",
-              post, half, swan, plain);
+  std::printf(
+      "post-classified flicker beyond k: ewa %.5f (0.5 px^2: %.5f), swan %.5f, plain %.5f\n", post,
+      half, swan, plain);
   // Swan's invariant (DESIGN.md, "Anti-aliasing far"): no more flicker than Swan's filter, which
   // half the low-pass filter breaks (measured 0.074 and 0.092 against Swan's 0.077).
   EXPECT_LE(post, swan);

@@ -1,11 +1,10 @@
 // Unit tests of the mouse-to-camera mapping of the interactive viewer (pure logic, no window).
+#include "core/camera_controller.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
 #include <glm/geometric.hpp>
-
-#include "core/camera_controller.h"
 
 namespace ewa {
 namespace {
@@ -38,9 +37,9 @@ void drag(CameraController& c, MouseButton button, bool shift, double x0, double
 TEST(CameraController, LeftDragRightSwingsTheEyeLeftAboutTheFocalPoint) {
   CameraController c = controller();
   drag(c, MouseButton::Left, false, 400, 300, 430, 300);
-  EXPECT_LT(c.camera().position.x, -0.1);            // the grabbed surface follows the cursor
-  EXPECT_NEAR(c.camera().position.y, 0.0, 1e-9);     // no elevation
-  EXPECT_NEAR(c.camera().distance(), 10.0, 1e-9);    // an orbit keeps the distance
+  EXPECT_LT(c.camera().position.x, -0.1);          // the grabbed surface follows the cursor
+  EXPECT_NEAR(c.camera().position.y, 0.0, 1e-9);   // no elevation
+  EXPECT_NEAR(c.camera().distance(), 10.0, 1e-9);  // an orbit keeps the distance
   EXPECT_EQ(c.camera().focalPoint, glm::dvec3(0.0));
   // 30 pixels of a 600-pixel-high viewport: 10 degrees.
   const double degrees = std::atan2(-c.camera().position.x, c.camera().position.z) * 180 / kPi;
@@ -60,8 +59,8 @@ TEST(CameraController, LeftDragUpSwingsTheEyeDown) {
 TEST(CameraController, RightDragUpAndScrollUpMoveTheEyeCloser) {
   CameraController c = controller();
   drag(c, MouseButton::Right, false, 400, 300, 400, 150);
-  EXPECT_NEAR(c.camera().distance(), 10.0 / std::pow(CameraController::kDollyFactorPerViewport,
-                                                     0.25), 1e-9);
+  EXPECT_NEAR(c.camera().distance(),
+              10.0 / std::pow(CameraController::kDollyFactorPerViewport, 0.25), 1e-9);
   EXPECT_EQ(c.camera().focalPoint, glm::dvec3(0.0));
 
   CameraController s = controller();

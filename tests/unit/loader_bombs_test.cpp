@@ -41,7 +41,10 @@ std::string tarBytes(const std::vector<std::pair<std::string, std::string>>& fil
     std::snprintf(h.data() + 124, 12, "%011llo", static_cast<unsigned long long>(bytes.size()));
     std::snprintf(h.data() + 136, 12, "%011o", 0);
     h[156] = '0';
-    std::memcpy(h.data() + 257, "ustar\0" "00", 8);
+    std::memcpy(h.data() + 257,
+                "ustar\0"
+                "00",
+                8);
     std::memset(h.data() + 148, ' ', 8);
     unsigned sum = 0;
     for (const char c : h) sum += static_cast<unsigned char>(c);
@@ -70,10 +73,10 @@ TEST(HostileHeaders, ADetachedHeaderReadsDataOnlyFromItsOwnFolder) {
   const std::string etc = dir.write("case/etc.mhd", mhd("/etc/passwd"));
   for (const std::string& header : {up, absolute, linked, etc})
     expectVolumeLoadError(header, "outside its own folder (--allow-outside-data opens it)");
-  const std::string nhdr = dir.write(
-      "case/up.nhdr",
-      "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 4 4 4\nencoding: raw\ndata file: "
-      "../secret.raw\n");
+  const std::string nhdr =
+      dir.write("case/up.nhdr",
+                "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 4 4 4\nencoding: raw\ndata file: "
+                "../secret.raw\n");
   expectVolumeLoadError(nhdr, "outside its own folder");
   const std::string dat =
       dir.write("case/up.dat", "ObjectFileName: ../secret.raw\nResolution: 4 4 4\nFormat: UCHAR\n");
@@ -90,22 +93,21 @@ TEST(HostileHeaders, ABzip2PromiseBeyondAnyRealRatioIsRefusedBeforeDecompressing
   TempDir dir;
   // 2 GiB promised by a few hundred bytes: refused at once, not decompressed to find out.
   const std::string packed = bzip2Bytes(std::string(1 << 20, '\0'));
-  const std::string path =
-      dir.write("bomb.nrrd",
-                "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 1024 1024 2048\nencoding: bzip2\n\n" +
-                    packed);
+  const std::string path = dir.write(
+      "bomb.nrrd",
+      "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 1024 1024 2048\nencoding: bzip2\n\n" + packed);
   expectVolumeLoadError(path, "a decompression bomb?");
   // A byte skip counts decompressed bytes: the same bound holds for it.
-  const std::string skip = dir.write(
-      "skip.nrrd", "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 4 4 4\nencoding: bzip2\n"
-                   "byte skip: 21474836480\n\n" +
-                       packed);
+  const std::string skip =
+      dir.write("skip.nrrd",
+                "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 4 4 4\nencoding: bzip2\n"
+                "byte skip: 21474836480\n\n" +
+                    packed);
   expectVolumeLoadError(skip, "bzip2 data");
   // Real ratios still load.
   const std::string fine = dir.write(
-      "fine.nrrd",
-      "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 64 64 64\nencoding: bzip2\n\n" +
-          bzip2Bytes(std::string(64 * 64 * 64, '\3')));
+      "fine.nrrd", "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 64 64 64\nencoding: bzip2\n\n" +
+                       bzip2Bytes(std::string(64 * 64 * 64, '\3')));
   EXPECT_EQ(loadVolume(fine).valueAt(1000), 3.0);
 }
 
@@ -153,8 +155,11 @@ TEST(HostileArchives, AnArchiveUnpacksToAtMostItsRatioBeyondTheFloor) {
     const std::string tar = tarBytes({{"zeros.raw", zeros}});
     dir.write("bomb.tar.gz", gzipBytes(tar));
   }
-  expectLoadError([&] { extractArchive(path, {0, 100, 1 << 20, 100}); }, path,
-                  "times the archive's");
+  expectLoadError(
+      [&] {
+        extractArchive(path, {0, 100, 1 << 20, 100});
+      },
+      path, "times the archive's");
   ExtractedArchive whole = extractArchive(path, {0, 100, 16 << 20, 100});
   EXPECT_EQ(whole.bytes, uint64_t(8) << 20);
 }

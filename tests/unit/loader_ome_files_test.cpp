@@ -116,10 +116,10 @@ TEST(OmeFiles, CompanionMetadataFile) {
       "<BinaryOnly MetadataFile=\"cells.companion.ome\" UUID=\"urn:uuid:1\"/></OME>";
   ASSERT_TRUE(writeOme(dir.path("t0.ome.tif"), planeRange("ZCT", 0, 6), binaryOnly));
   ASSERT_TRUE(writeOme(dir.path("t1.ome.tif"), planeRange("ZCT", 6, 12), binaryOnly));
-  const std::string companion = dir.write(
-      "cells.companion.ome",
-      omeXml("ZCT", block("FirstT=\"0\" IFD=\"0\" PlaneCount=\"6\"", "t0.ome.tif") +
-                        block("FirstT=\"1\" IFD=\"0\" PlaneCount=\"6\"", "t1.ome.tif")));
+  const std::string companion =
+      dir.write("cells.companion.ome",
+                omeXml("ZCT", block("FirstT=\"0\" IFD=\"0\" PlaneCount=\"6\"", "t0.ome.tif") +
+                                  block("FirstT=\"1\" IFD=\"0\" PlaneCount=\"6\"", "t1.ome.tif")));
   expectEveryPlane(companion);
   expectEveryPlane(dir.path("t1.ome.tif"));
   const Volume v = loadVolume(dir.path(""), {"", 1, 1, {}});

@@ -16,15 +16,15 @@ TEST(RealHeaders, AnUnknownAnatomicalOrientationNamesNoPatientAxes) {
   const std::string body =
       "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\nElementType = MET_UCHAR\n";
   for (const std::string& unknown : {"??", "???", "RRA", "XYZ", ""}) {
-    const std::string path = dir.write(
-        "u.mha", body + "AnatomicalOrientation = " + unknown + "\nElementDataFile = LOCAL\n" +
-                     std::string(8, '\1'));
+    const std::string path =
+        dir.write("u.mha", body + "AnatomicalOrientation = " + unknown +
+                               "\nElementDataFile = LOCAL\n" + std::string(8, '\1'));
     EXPECT_FALSE(loadVolume(path).patientFrame()) << unknown;
   }
   for (const std::string& known : {"RAI", "LPS", "ail"}) {
-    const std::string path = dir.write(
-        "k.mha", body + "AnatomicalOrientation = " + known + "\nElementDataFile = LOCAL\n" +
-                     std::string(8, '\1'));
+    const std::string path =
+        dir.write("k.mha", body + "AnatomicalOrientation = " + known +
+                               "\nElementDataFile = LOCAL\n" + std::string(8, '\1'));
     EXPECT_TRUE(loadVolume(path).patientFrame()) << known;
   }
 }

@@ -1,5 +1,7 @@
 // Side files (transfer functions, bookmarks, settings) that are FIFOs, folders or huge are refused
 // at once with one line naming the file, and JSON errors name the file in words.
+#include "io/side_file.h"
+
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -9,7 +11,6 @@
 #include <string>
 
 #include "io/camera_bookmarks.h"
-#include "io/side_file.h"
 #include "io/transfer_function_io.h"
 #include "io/viewer_settings.h"
 #include "loader_test_files.h"
@@ -50,7 +51,8 @@ TEST(SideFile, AHugeSparseFileIsRefusedBeforeItIsRead) {
   dir.write("huge.tf.json", "{");
   ASSERT_EQ(truncate(huge.c_str(), off_t(12) << 30), 0);  // 12 GiB of holes, no disk used
   const std::string problem = problemOf([&] { loadTransferFunction(huge); });
-  EXPECT_EQ(problem, huge + ": is 12288 MiB, too big for a transfer-function file (at most 64 MiB)");
+  EXPECT_EQ(problem,
+            huge + ": is 12288 MiB, too big for a transfer-function file (at most 64 MiB)");
   const std::string folder = dir.path("sub");
   std::filesystem::create_directory(folder);
   EXPECT_EQ(problemOf([&] { readSideFile(folder, "settings file"); }),
