@@ -42,9 +42,10 @@ void addShadingOptions(CLI::App& app, RenderSettings& s, RenderOptionText& p) {
          "Whole composite frames (headless): rasterized slab by slab (raster), in "
          "compute tiles (tiles: no rasterizer, no blending; front to back, "
          "post-classified only with 4 samples a slab and, shaded, field or ray "
-         "normals, else rasterized), or auto (default: raster on software GL, else the faster as "
+         "normals, else rasterized), on the CPU (cpu: front to back, pre-classified only, else "
+         "rasterized), or auto (default: raster on software GL, else the faster as "
          "timed frames find it)")
-      ->check(CLI::IsMember({"raster", "tiles", "auto"}));
+      ->check(CLI::IsMember({"raster", "tiles", "cpu", "auto"}));
   app.add_option("--compositing", p.compositing,
                  "Slab order: front-to-back (default) or back-to-front")
       ->check(CLI::IsMember({"front-to-back", "back-to-front"}));
