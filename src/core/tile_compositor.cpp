@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "core/clip_share.h"
+#include "core/footprint_formulas.h"
 #include "core/stopwatch.h"
 
 namespace ewa {
@@ -90,6 +91,10 @@ void TileCompositor::compositeTile(int tx, int ty, const std::vector<SplatRecord
           clipped ? clippedDepths(s.clipPlanes, s.proj, glm::dvec2(px0 + x + 0.5, py0 + y + 0.5))
                   : RayInterval{-kClipUnbounded, kClipUnbounded};
   const float cutoff = float(s.cutoff);
+  const float termination = float(s.termination);
+  const bool series = usesErfSeries(s.profile);
+  const float erfReach = float(std::min(s.profile.erfReach, kClipUnbounded));
+  const float halfScale = 0.5f * float(s.profile.scale);
   int open = w * h;               // pixels below the termination opacity
   uint32_t current = UINT32_MAX;  // the slab being summed
   bool any = false;               // it has sums
@@ -106,7 +111,7 @@ void TileCompositor::compositeTile(int tx, int ty, const std::vector<SplatRecord
           p += (1.0f - p.a) * glm::vec4(glm::vec3(q) / q.a * alpha, alpha);
         }
         q = glm::vec4(0.0f);
-        open += p.a < float(s.termination);
+        open += p.a < termination;
       }
     any = false;
   };
@@ -128,21 +133,36 @@ void TileCompositor::compositeTile(int tx, int ty, const std::vector<SplatRecord
       const bool openFar = (item.entry & SlabPartition::kLastSlab) != 0;
       const Slab& slab = slabs[item.slab];
       const glm::vec3 rgb(rec.color);
+      const float a = rec.conic.x, b = rec.conic.y, c = rec.conic.z;
+      const float toErf = 1.0f / (std::sqrt(2.0f) * rec.depth.w);  // slabFraction's s
+      // Unclipped, every pixel's share lies between the same depths.
+      const RayInterval whole = slabShareBounds(slab.nearDepth, slab.farDepth, openNear, openFar,
+                                                {-kClipUnbounded, kClipUnbounded});
       for (int y = y0; y <= y1; ++y) {
         const float dy = float(py0 + y) + 0.5f - rec.box.y;
-        for (int x = x0; x <= x1; ++x) {
+        // The row's offsets within the cutoff ellipse, a dx^2 + 2 b dy dx + c dy^2 <= cutoff,
+        // a pixel wider each side (the test below is exact).
+        const float disc = b * b * dy * dy - a * (c * dy * dy - cutoff);
+        if (!(disc >= 0.0f) || !(a > 0.0f)) continue;
+        const float root = std::sqrt(disc);
+        const float left = rec.box.x + (-b * dy - root) / a - 0.5f - float(px0);
+        const float right = rec.box.x + (-b * dy + root) / a - 0.5f - float(px0);
+        const int xa = std::max(x0, int(std::floor(left))), xb = std::min(x1, int(right) + 1);
+        for (int x = xa; x <= xb; ++x) {
           const size_t p = size_t(y * kTile + x);
-          if (!(image[p].a < float(s.termination))) continue;  // this pixel takes no more
+          if (!(image[p].a < termination)) continue;  // this pixel takes no more
           const float dx = float(px0 + x) + 0.5f - rec.box.x;
-          const float r =
-              rec.conic.x * dx * dx + 2.0f * rec.conic.y * dx * dy + rec.conic.z * dy * dy;
+          const float r = a * dx * dx + 2.0f * b * dx * dy + c * dy * dy;
           if (!(r <= cutoff)) continue;
-          const double mu =
-              double(rec.depth.x) + double(rec.depth.y) * dx + double(rec.depth.z) * dy;
-          const double share = clippedSlabFraction(mu, rec.depth.w, slab.nearDepth, slab.farDepth,
-                                                   openNear, openFar, kept[p], s.profile);
-          const float depth =
-              float(double(rec.conic.w) * windowedGaussian(double(r), s.cutoff) * share);
+          const RayInterval bounds =
+              clipped ? slabShareBounds(slab.nearDepth, slab.farDepth, openNear, openFar, kept[p])
+                      : whole;
+          if (!(bounds.far > bounds.near)) continue;
+          // clippedSlabFraction in float, as the shaders take it.
+          const float mu = rec.depth.x + rec.depth.y * dx + rec.depth.z * dy;
+          const float share = slabShareOf(mu, toErf, float(bounds.near), float(bounds.far),
+                                          erfReach, halfScale, series);
+          const float depth = rec.conic.w * windowedGaussianOf(r, cutoff) * share;
           sums[p] += glm::vec4(rgb * depth, depth);
           any = true;
         }

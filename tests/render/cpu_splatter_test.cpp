@@ -259,5 +259,34 @@ TEST(CpuSplatterCli, SplatterCpuDrawsPreClassifiedFrames) {
   EXPECT_GT(maxDifference(picture("cpu_crop_c"), picture("cpu_cpu")), 40) << "the crop shows";
 }
 
+// ewaview-compare times the CPU splatter beside the others (cpu_ms) where it draws the frame
+// (pre-classified), and leaves the column empty where it does not (post-classified) or when
+// skipped.
+TEST(CpuSplatterCli, CompareTimesTheCpuSplatter) {
+  using nlohmann::json;
+  const std::string tiny =
+      "--no-vtk --synthetic sphere:24 --sizes 48 --repeats 1 --skip sprites,tiles,tile-ewa,"
+      "shearwarp --json";
+  const std::string dir = testOutputDir() + "/cpu_compare";
+  const CliRun pre =
+      runProgram(EWA_COMPARE_BINARY, tiny + " --classification pre --images " + dir, "compare");
+  const CliRun post = runProgram(EWA_COMPARE_BINARY, tiny, "compare");
+  const CliRun skipped =
+      runProgram(EWA_COMPARE_BINARY,
+                 "--no-vtk --synthetic sphere:24 --sizes 48 --repeats 1 --skip cpu "
+                 "--classification pre --json",
+                 "compare");
+  for (const CliRun* run : {&pre, &post, &skipped}) ASSERT_EQ(run->code, 0) << run->err;
+  const json row = json::parse(pre.out)["rows"][0];
+  EXPECT_GT(row["cpu_ms"].get<double>(), 0.0) << pre.out;
+  EXPECT_TRUE(row["cpu_per_vtk_cpu"].is_null());  // no VTK
+  EXPECT_TRUE(json::parse(post.out)["rows"][0]["cpu_ms"].is_null());
+  EXPECT_TRUE(json::parse(skipped.out)["rows"][0]["cpu_ms"].is_null());
+  // Its picture beside the rasterized one, within the tolerance.
+  EXPECT_LE(
+      maxDifference(readPng(dir + "/sphere-24_48_cpu.png"), readPng(dir + "/sphere-24_48_ewa.png")),
+      kMaxLevels);
+}
+
 }  // namespace
 }  // namespace ewa::test
