@@ -106,8 +106,9 @@ RayInterval clippedDepths(const std::vector<HalfSpace>& planes, const Projection
 
 RayInterval slabShareBounds(double zNear, double zFar, bool openNear, bool openFar,
                             const RayInterval& kept) {
-  return {openNear ? kept.near : std::max(zNear, kept.near),
-          openFar ? kept.far : std::min(zFar, kept.far)};
+  RayInterval bounds;
+  slabShareBoundsOf(zNear, zFar, openNear, openFar, kept.near, kept.far, bounds.near, bounds.far);
+  return bounds;
 }
 
 double clippedSlabFraction(double mu, double sigma, double zNear, double zFar, bool openNear,

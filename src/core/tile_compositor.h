@@ -35,6 +35,13 @@ class TileCompositor {
   // Pixels a side of a tile: its slab sums (4 KiB) and picture stay in the core's cache.
   static constexpr int kTile = 16;
 
+  // A slab entry listed for a tile: the splat index with SlabPartition's first/last-slab flags,
+  // and its slab.
+  struct Item {
+    uint32_t entry;
+    uint32_t slab;
+  };
+
   struct Timing {
     double binMs = 0.0;
     double compositeMs = 0.0;
@@ -48,18 +55,11 @@ class TileCompositor {
               std::vector<glm::vec4>& picture);
 
  private:
-  struct Item {
-    uint32_t entry;  // splat index with SlabPartition's first/last-slab flags
-    uint32_t slab;
-  };
   // Lists per run of slabs (bins_[run][tile]), filled in parallel, one run a task, each in slab
   // order: a tile reads its runs in turn, front to back. Kept between frames (their capacity).
   std::vector<std::vector<std::vector<Item>>> bins_;
   void bin(const std::vector<SplatRecord>& records, const std::vector<uint32_t>& order,
            const std::vector<Slab>& slabs, int width, int height);
-  void compositeTile(int tx, int ty, const std::vector<SplatRecord>& records,
-                     const std::vector<Slab>& slabs, const TileCompositeSettings& settings,
-                     std::vector<glm::vec4>& picture) const;
 };
 
 }  // namespace ewa

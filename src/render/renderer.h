@@ -47,10 +47,10 @@ bool parsePostNormals(const std::string& text, PostNormals* normals);
 // rasterized. Auto: rasterized where the GPU's timers are not used (software rasterizers, where
 // tiles cost 11-14x the rasterized frame); elsewhere the faster as timed frames find it
 // (TwoWayTuner: a rasterized frame first, then one in tiles, docs/performance.md "Compute EWA
-// splatting"). Cpu: splatted on the CPU in the tiles' shape (CpuSplatter: SIMD-free so far, one
-// tile a task over all cores), for machines whose GL is a software rasterizer; it draws
-// front-to-back pre-classified composite frames, the rest is rasterized (RenderStats::note).
-// Auto does not choose it yet.
+// splatting"). Cpu: splatted on the CPU in the tiles' shape (CpuSplatter: pixel loops the
+// compiler vectorizes, one tile a task over all cores), for machines whose GL is a software
+// rasterizer; it draws front-to-back pre-classified composite frames, the rest is rasterized
+// (RenderStats::note). Auto does not choose it yet.
 enum class Splatter { Raster = 0, Tiles = 1, Auto = 2, Cpu = 3 };
 const char* splatterName(Splatter splatter);
 bool parseSplatter(const std::string& text, Splatter* splatter);
