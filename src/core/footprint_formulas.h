@@ -84,10 +84,12 @@ inline void slabShareBoundsOf(T zNear, T zFar, bool openNear, bool openFar, T ke
 // windowedGaussian: exp(-r/2) windowed by (1 - r/c)^2, 0 beyond the cutoff.
 template <typename T>
 inline T windowedGaussianOf(T r, T cutoff) {
-  // Both computed, then selected: the CPU splatter's pixel loops stay free of branches.
-  const T t = T(1) - r / cutoff;
-  const T w = expOf(T(-0.5) * r) * t * t;
-  return r > cutoff ? T(0) : w;
+  // Computed (t clamped at 0 beyond the cutoff), then masked by a product, not a select, which
+  // GCC may turn into a branch around the exp: the CPU splatter's pixel loops vectorize.
+  const T inside = std::min(r, cutoff);
+  const T t = T(1) - inside / cutoff;
+  const T w = expOf(T(-0.5) * inside) * t * t;
+  return w * (r > cutoff ? T(0) : T(1));
 }
 
 }  // namespace ewa

@@ -53,11 +53,15 @@ class TileCompositor {
   Timing draw(const std::vector<SplatRecord>& records, const std::vector<uint32_t>& order,
               const std::vector<Slab>& slabs, const TileCompositeSettings& settings,
               std::vector<glm::vec4>& picture);
+  // Test hook: false draws with the build's baseline composite even where the machine runs its
+  // AVX2 and FMA build (tile_compositor_avx2.cpp), to hold the two equal.
+  void setAvx2(bool allowed) { avx2Allowed_ = allowed; }
 
  private:
   // Lists per run of slabs (bins_[run][tile]), filled in parallel, one run a task, each in slab
   // order: a tile reads its runs in turn, front to back. Kept between frames (their capacity).
   std::vector<std::vector<std::vector<Item>>> bins_;
+  bool avx2Allowed_ = true;
   void bin(const std::vector<SplatRecord>& records, const std::vector<uint32_t>& order,
            const std::vector<Slab>& slabs, int width, int height);
 };
