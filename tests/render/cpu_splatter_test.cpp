@@ -204,6 +204,25 @@ TEST_F(CpuSplatterTest, WeakPerspectiveFootprintFailsTheTolerance) {
                              << good.ssim;
 }
 
+// The window's budgeted steps: the CPU draws the whole frame in one step, the final pass in
+// bands after it; the picture is the whole frame's.
+TEST_F(CpuSplatterTest, BudgetedStepsDrawTheWholeFramesPicture) {
+  const SyntheticVolume sphere = makeSyntheticVolume("sphere:32");
+  SplatRenderer& r = *renderer();
+  r.setVolume(sphere.volume);
+  r.setTransferFunction(*sphere.transferFunction);
+  RenderSettings s = preSettings();
+  s.splatter = Splatter::Cpu;
+  const Camera cam = viewOf(sphere.volume, {0.3, 0.4, 1.0}, 1.6, false);
+  r.render(cam, s, 96, 80);
+  const Image8 whole = r.readImage();
+  r.beginFrame(cam, s, 96, 80);
+  int steps = 1;
+  while (!r.stepFrame(2.0) && steps < 10000) ++steps;
+  EXPECT_TRUE(r.stats().cpu);
+  EXPECT_EQ(maxDifference(r.readImage(), whole), 0) << steps << " steps";
+}
+
 TEST_F(CpuSplatterTest, FramesItDoesNotDrawAreRasterizedWithANote) {
   const SyntheticVolume sphere = makeSyntheticVolume("sphere:24");
   SplatRenderer& r = *renderer();
