@@ -12,6 +12,7 @@ packages=(build-essential cmake pkg-config
   libimgui-dev libstb-dev libcli11-dev nlohmann-json3-dev zlib1g-dev libbz2-dev libgtest-dev
   libgdcm-dev libtiff-dev  # DICOM series, TIFF stacks
   libarchive-dev  # volumes in .zip, .tar.gz, .7z archives
+  libtbb-dev  # the CPU splatter's tasks (--splatter cpu)
   xvfb xauth xdotool imagemagick  # tests/window/window_test.sh
   unzip  # the DICOM test series in a zip
   clang libclang-rt-14-dev  # scripts/fuzz.sh: clang with libFuzzer

@@ -24,6 +24,7 @@
 #include "gl/shader_library.h"
 #include "io/png_io.h"
 #include "platform/headless_context.h"
+#include "render/cpu_splatter.h"
 #include "render/renderer_factory.h"
 #include "render/splat_renderer.h"
 #include "render/sprite_baseline.h"
@@ -75,6 +76,7 @@ struct Methods {
   TileSplatBaseline& tiles;
   TileEwaSplatter& tileEwa;
   Renderer& shearWarp;
+  Image8& cpuPicture;  // the CPU splatter's last picture (cpu_ms), where it drew the frame
   // Methods --skip leaves out (their columns stay '-'): the compute tiles take seconds a frame
   // on a software rasterizer, the default post-classified frame in tiles tens of seconds.
   std::set<std::string> skip;
@@ -115,12 +117,28 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
     return millisecondsSince(start) + m.tileEwa.draw(size, size).totalMs();
   };
   if (tileEwa) tileEwaDraw();  // warm-up: the programs' first use
+  // The same frame splatted on the CPU by the same renderer (Splatter::Cpu), where it draws the
+  // settings: before the rasterized frame of each round, so the renderer's statistics and
+  // picture stay the rasterized frame's.
+  RenderSettings cpuSettings = rs;
+  cpuSettings.splatter = Splatter::Cpu;
+  const bool cpu = m.timed("cpu") && cpuSplatterDraws(rs);
+  const auto cpuDraw = [&] {
+    const auto start = BenchClock::now();
+    m.ewa.render(cam, cpuSettings, size, size);
+    glFinish();
+    const double ms = millisecondsSince(start);
+    m.cpuPicture = m.ewa.readImage();
+    return ms;
+  };
+  if (cpu) cpuDraw();  // warm-up: its buffers
   RenderSettings sw = rs;
   sw.renderer = RendererKind::ShearWarp;
   if (shearWarp) m.shearWarp.render(cam, sw, size, size);
   std::vector<double> ewa, partition, splat, final, spriteMs, tileMs, tileBins, tileEwaMs,
-      shearWarpMs;
+      shearWarpMs, cpuMs;
   for (int r = 0; r < repeats; ++r) {
+    if (cpu) cpuMs.push_back(cpuDraw());
     auto start = BenchClock::now();
     m.ewa.render(cam, rs, size, size);
     glFinish();
@@ -162,6 +180,7 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
     row.tilesBinMs = summarize(tileBins).median;
   }
   if (tileEwa) row.tileEwaMs = summarize(tileEwaMs).median;
+  if (cpu) row.cpuMs = summarize(cpuMs).median;
   if (shearWarp) row.shearWarpMs = summarize(shearWarpMs).median;
 }
 
@@ -200,6 +219,7 @@ int run(int argc, char** argv) {
   SpriteBaseline sprites(shaders);
   TileSplatBaseline tiles(shaders, o.tileSize);
   TileEwaSplatter tileEwa(shaders, o.tileSize);
+  Image8 cpuPicture;
   const std::unique_ptr<Renderer> shearWarp = createRenderer(RendererKind::ShearWarp, shaders);
   bool vtkWorks = !o.noVtk, failed = false;
   for (Input& in : inputs) {
@@ -227,8 +247,8 @@ int run(int argc, char** argv) {
       row.dims = dimsText(scene.volume);
       row.size = size;
       try {
-        timeOpenGlMethods({ewa, sprites, tiles, tileEwa, *shearWarp, skipped}, scene, cam, rs, size,
-                          o.repeats, row);
+        timeOpenGlMethods({ewa, sprites, tiles, tileEwa, *shearWarp, cpuPicture, skipped}, scene,
+                          cam, rs, size, o.repeats, row);
       } catch (const std::exception& e) {
         // Too big for this GL (the splat buffer's limit): the other volumes still run.
         const std::string note =
@@ -249,6 +269,7 @@ int run(int argc, char** argv) {
         if (row.tileEwaMs >= 0)
           writePng(stem + "tile-ewa.png",
                    tileEwaImage(tileEwa.picture(), size, size, rs.background));
+        if (row.cpuMs >= 0) writePng(stem + "cpu.png", cpuPicture);
       }
       for (const char* mapper : {"cpu", "gpu"}) {
         if (!vtkWorks) break;

@@ -39,9 +39,9 @@ void addCompareOptions(CLI::App& app, CompareOptions& o) {
   app.add_flag("--no-vtk", o.noVtk, "Do not time VTK's ray casters");
   app.add_option("--skip", o.skip,
                  "Methods not to time, their columns left '-': sprites, tiles (tiles_ms), "
-                 "tile-ewa (tile_ewa_ms), shearwarp")
+                 "tile-ewa (tile_ewa_ms), cpu (cpu_ms), shearwarp")
       ->delimiter(',')
-      ->check(CLI::IsMember({"sprites", "tiles", "tile-ewa", "shearwarp"}));
+      ->check(CLI::IsMember({"sprites", "tiles", "tile-ewa", "cpu", "shearwarp"}));
   app.add_option("--vtk-script", o.script, "Path of vtk_raycast_bench.py");
   app.add_flag("--orthographic", o.orthographic, "Parallel projection (default: perspective)");
   // The EWA column's settings: ewaview's own options, as its --help describes them.

@@ -26,12 +26,17 @@ struct CompareRow {
   // (SplatRenderer::tileComposite: front to back, post-classified only pre-integrated in
   // quarters).
   double tileEwaMs = -1;
+  // The same frame splatted on the CPU (Splatter::Cpu), where it draws the frame's settings
+  // (cpuSplatterDraws: front to back, pre-classified).
+  double cpuMs = -1;
   size_t gpuBytes = 0;  // 0: the renderer does not count it
   double gpuBytesPerSplat = 0;
   size_t peakRss = 0;  // of the benchmark process after this row
 
   // EWA's full frame over the other method's frame; negative when either is missing.
   double ratio(double otherMs) const { return ewaMs > 0 && otherMs > 0 ? ewaMs / otherMs : -1; }
+  // The CPU splatter's frame over VTK's CPU ray caster's; negative when either is missing.
+  double cpuPerVtkCpu() const { return cpuMs > 0 && vtkCpuMs > 0 ? cpuMs / vtkCpuMs : -1; }
 };
 
 struct CompareReport {

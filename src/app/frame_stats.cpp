@@ -37,7 +37,7 @@ void putFrame(const RenderStats& s, nlohmann::ordered_json& j) {
   j["entries_culled"] = s.entriesCulled;
   j["slabs_coarse"] = s.slabsCoarse;
   j["gpu_partition"] = s.gpuPartition;
-  j["splatter"] = s.tiles ? "tiles" : "raster";
+  j["splatter"] = s.cpu ? "cpu" : s.tiles ? "tiles" : "raster";
   j["slab_passes"] = s.slabPasses;
   j["gpu_bytes"] = s.gpuBytes;
   const double perSplat = gpuBytesPerSplat(s);
@@ -58,6 +58,7 @@ RenderStats summed(const std::vector<RenderStats>& channels) {
     t.quadPass |= s.quadPass;
     t.gpuPartition |= s.gpuPartition;
     t.tiles |= s.tiles;
+    t.cpu |= s.cpu;
     if (!s.note.empty()) t.note += (t.note.empty() ? "" : "; ") + s.note;
     t.slabPasses = std::max(t.slabPasses, s.slabPasses);
     t.renderMs += s.renderMs;

@@ -672,11 +672,14 @@ std::vector<OptionSpec> makeTable() {
       .describe(
           "Whole composite frames: rasterized slab by slab (raster), in compute tiles (tiles: "
           "no rasterizer, no blending; front to back, post-classified only with 4 samples a "
-          "slab and, shaded, field or ray normals, else rasterized), or auto (raster on "
-          "software GL, else the faster as timed frames find it)")
+          "slab and, shaded, field or ray normals, else rasterized), on the CPU (cpu: front "
+          "to back, pre-classified only, else rasterized), or auto (raster on software GL, "
+          "else the faster as timed frames find it)")
       .explain(
           "How composite frames (headless pictures, turntables, Python's `render`, the window) "
-          "are splatted: rasterized slab by slab (`raster`), in compute tiles (`tiles`: each "
+          "are splatted: on the CPU in screen tiles over every core (`cpu`: front-to-back "
+          "pre-classified frames; other frames are rasterized, with a `note`), "
+          "rasterized slab by slab (`raster`), in compute tiles (`tiles`: each "
           "screen tile's slabs added up, classified and composited in one work group, no "
           "rasterizer and no blending; [Compute EWA "
           "splatting](../dev/performance.md#compute-ewa-splatting)), or `auto` (default): "

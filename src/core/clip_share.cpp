@@ -8,6 +8,7 @@
 #include <glm/matrix.hpp>
 
 #include "core/ewa_footprint.h"
+#include "core/footprint_formulas.h"
 
 namespace ewa {
 
@@ -103,14 +104,20 @@ RayInterval clippedDepths(const std::vector<HalfSpace>& planes, const Projection
   return kept;
 }
 
+RayInterval slabShareBounds(double zNear, double zFar, bool openNear, bool openFar,
+                            const RayInterval& kept) {
+  RayInterval bounds;
+  slabShareBoundsOf(zNear, zFar, openNear, openFar, kept.near, kept.far, bounds.near, bounds.far);
+  return bounds;
+}
+
 double clippedSlabFraction(double mu, double sigma, double zNear, double zFar, bool openNear,
                            bool openFar, const RayInterval& kept, const DepthProfile& profile) {
-  const double lo = openNear ? kept.near : std::max(zNear, kept.near);
-  const double hi = openFar ? kept.far : std::min(zFar, kept.far);
+  const RayInterval bounds = slabShareBounds(zNear, zFar, openNear, openFar, kept);
+  const double lo = bounds.near, hi = bounds.far;
   if (!(hi > lo)) return 0.0;
-  const double s = 1.0 / (std::sqrt(2.0) * sigma);
-  return 0.5 * profile.scale *
-         (profileErf((hi - mu) * s, profile) - profileErf((lo - mu) * s, profile));
+  return slabShareOf(mu, 1.0 / (std::sqrt(2.0) * sigma), lo, hi, profile.erfReach,
+                     0.5 * profile.scale, usesErfSeries(profile));
 }
 
 bool clipCullsKernel(const std::vector<HalfSpace>& planes, const glm::dvec3& u, double reach) {

@@ -42,6 +42,12 @@ DataBox keptBoxInVolumeFrame(const ClipRegion& region, const Volume& volume, dou
 RayInterval clippedDepths(const std::vector<HalfSpace>& cameraPlanes, const Projection& proj,
                           const glm::dvec2& pixel);
 
+// The depths a slab share integrates between: [zNear, zFar] inside `kept`, an open bound
+// (the kernel's tail) the kept one; empty where nothing is left (clippedSlabFraction's bounds,
+// which the CPU splatter takes once a kernel and pixel).
+RayInterval slabShareBounds(double zNear, double zFar, bool openNear, bool openFar,
+                            const RayInterval& kept);
+
 // The share of a depth Gaussian (mean mu, deviation sigma) between zNear and zFar (an open
 // bound: the kernel's tail, as slabFraction's infinities) and inside `kept`: the slab split
 // and the clip cut in one erf difference, so a kernel straddling a plane gives only its part

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/footprint_formulas.h"
 #include "core/named_values.h"
 
 namespace ewa {
@@ -28,9 +29,7 @@ double windowIntegral(double c) {
 }
 
 double windowedGaussian(double r, double cutoff) {
-  if (r > cutoff) return 0.0;
-  const double t = 1.0 - r / cutoff;
-  return std::exp(-0.5 * r) * t * t;
+  return windowedGaussianOf(r, cutoff);
 }
 
 namespace {
@@ -76,25 +75,11 @@ double surfaceSplatMass(const glm::dvec3& h, const glm::dvec3& n, double tauSurf
 }
 
 double erfApprox(double x) {
-  // 1 - 1 / p(|x|)^16 with p a polynomial of degree 6: no exp, which costs the shader most.
-  const double ax = std::abs(x);
-  double p =
-      1.0 + ax * (0.0705230784 +
-                  ax * (0.0422820123 +
-                        ax * (0.0092705272 +
-                              ax * (0.0001520143 + ax * (0.0002765672 + ax * 0.0000430638)))));
-  p *= p;  // p^2, p^4, p^8, p^16
-  p *= p;
-  p *= p;
-  p *= p;
-  const double y = 1.0 - 1.0 / p;
-  return x < 0.0 ? -y : y;
+  return erfApproxOf(x);
 }
 
 double erfSeries(double x) {
-  const double x2 = x * x;
-  return x * (1.12837876 +
-              x2 * (-0.37611182 + x2 * (0.11269018 + x2 * (-0.02624959 + x2 * 0.00407206))));
+  return erfSeriesOf(x);
 }
 
 bool usesErfSeries(const DepthProfile& profile) {
@@ -102,8 +87,7 @@ bool usesErfSeries(const DepthProfile& profile) {
 }
 
 double profileErf(double t, const DepthProfile& profile) {
-  const double x = std::clamp(t, -profile.erfReach, profile.erfReach);
-  return usesErfSeries(profile) ? erfSeries(x) : erfApprox(x);
+  return profileErfOf(t, profile.erfReach, usesErfSeries(profile));
 }
 
 DepthProfile depthProfile(double depthCutoff) {

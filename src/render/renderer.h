@@ -51,8 +51,11 @@ std::vector<std::string> postNormalsNames();  // every name parsePostNormals acc
 // rasterized. Auto: rasterized where the GPU's timers are not used (software rasterizers, where
 // tiles cost 11-14x the rasterized frame); elsewhere the faster as timed frames find it
 // (TwoWayTuner: a rasterized frame first, then one in tiles, docs/performance.md "Compute EWA
-// splatting").
-enum class Splatter { Raster = 0, Tiles = 1, Auto = 2 };
+// splatting"). Cpu: splatted on the CPU in the tiles' shape (CpuSplatter: pixel loops the
+// compiler vectorizes, one tile a task over all cores), for machines whose GL is a software
+// rasterizer; it draws front-to-back pre-classified composite frames, the rest is rasterized
+// (RenderStats::note). Auto does not choose it yet.
+enum class Splatter { Raster = 0, Tiles = 1, Auto = 2, Cpu = 3 };
 const char* splatterName(Splatter splatter);
 bool parseSplatter(const std::string& text, Splatter* splatter);
 std::vector<std::string> splatterNames();  // every name parseSplatter accepts
@@ -217,6 +220,7 @@ struct RenderStats {
   // rounding of their sums with it) may vary between frames; false: the CPU's, or none.
   bool gpuPartition = false;
   bool tiles = false;  // the splat stage ran in compute tiles (RenderSettings::splatter)
+  bool cpu = false;    // the splat stage ran on the CPU (Splatter::Cpu)
   // Why the frame was not drawn as asked, in one line (the compute splatter's programs did not
   // build on this GL, so it was rasterized); empty when it was.
   std::string note;

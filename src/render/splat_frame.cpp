@@ -100,7 +100,8 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     frame_.reach = extent.reach;
     // Splats beyond a storage block: the GPU partition cannot read them, the CPU's can.
     frame_.texelBuffers = texelBuffers();
-    frame_.gpuSlabs = gpuPartition() && !frame_.texelBuffers;
+    // The CPU splatter reads the CPU partition's lists.
+    frame_.gpuSlabs = gpuPartition() && !frame_.texelBuffers && settings.splatter != Splatter::Cpu;
     stats_.gpuPartition = frame_.gpuSlabs;
     if (frame_.gpuSlabs) {
       if (!gpuPartition_) gpuPartition_ = std::make_unique<GpuSlabPartition>(shaders_);
@@ -272,7 +273,8 @@ void SplatRenderer::drawFinalPass(int y0, int y1) {
   }
   targets_.slab.bindUnit(1);
   // Front to back, premultiplied, over nothing: the tiles' picture is what the slab loop leaves.
-  (frame_.tiles ? tiles_->pictureTexture() : targets_.accum).bindUnit(2);
+  (frame_.tiles ? tiles_->pictureTexture()
+                : frame_.cpu ? cpu_->pictureTexture() : targets_.accum).bindUnit(2);
   finalProgram_.setInt("uSlab", 1);
   finalProgram_.setInt("uImage", 2);
   finalProgram_.setInt("uMode", int(settings.mode));

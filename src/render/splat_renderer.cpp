@@ -97,7 +97,8 @@ RenderStats SplatRenderer::stats() const {
   s.gpuBytes = size_t(splatBuffer_.size() + attributeBuffer_.size()) + orderPages_.bytes() +
                size_t(kTransferSamples) * 4 * sizeof(float) + targets_.bytes() +
                (gpuPartition_ ? gpuPartition_->bytes() : 0) + occlusion_.bytes() +
-               pairTable_.bytes() + (tiles_ ? tiles_->bytes() : 0) + gradients_.bytes();
+               pairTable_.bytes() + (tiles_ ? tiles_->bytes() : 0) + (cpu_ ? cpu_->bytes() : 0) +
+               gradients_.bytes();
   return s;
 }
 
@@ -143,8 +144,8 @@ void SplatRenderer::rebuildSplats(const Classification& classification) {
 
 void SplatRenderer::uploadTransferTexture() {
   const double lo = volume_->minValue(), hi = volume_->maxValue();
-  const std::vector<glm::vec4> table = tf_.bake(lo, hi, kTransferSamples);
-  transferTexture_.subImage1D(0, 0, kTransferSamples, GL_RGBA, GL_FLOAT, table.data());
+  transferTable_ = tf_.bake(lo, hi, kTransferSamples);
+  transferTexture_.subImage1D(0, 0, kTransferSamples, GL_RGBA, GL_FLOAT, transferTable_.data());
   pairTable_.invalidate();
 }
 

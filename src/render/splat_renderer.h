@@ -21,6 +21,7 @@
 #include "gl/shader_library.h"
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
+#include "render/cpu_splatter.h"
 #include "render/gpu_slab_partition.h"
 #include "render/gradient_texture.h"
 #include "render/occlusion_pyramid.h"
@@ -212,6 +213,11 @@ class SplatRenderer : public Renderer {
   // (prepareTileComposite). False, and nothing handed over, where the tiles do not draw the
   // frame (tileComposite) or it has no splats.
   bool loadTiles(TileEwaSplatter& tiles);
+  // Test hook: the footprint the CPU splatter (Splatter::Cpu) gives each splat
+  // (computeFootprint by default), to show a wrong one fails its tests.
+  void setCpuFootprint(FootprintFunction footprint) { cpuFootprint_ = std::move(footprint); }
+  // The CPU splatter's picture of the last frame it drew (premultiplied, rows bottom up).
+  const std::vector<glm::vec4>& cpuPicture() const;
 
  private:
   void rebuildSplats(const Classification& classification);
@@ -289,6 +295,9 @@ class SplatRenderer : public Renderer {
   // nothing drawn, where tileComposite says the tiles do not draw these settings.
   bool drawTiles();
   bool drawTilesNow();  // drawTiles, failures thrown
+  // Draws the whole frame on the CPU (Splatter::Cpu) if it can: false, nothing drawn and the
+  // reason in the statistics' note, where cpuSplatterDraws says it does not.
+  bool drawCpu();
   // The compute splatter's programs, in the set this renderer may share (SplatProgramSet).
   const std::shared_ptr<TileEwaPrograms>& tilePrograms();
   // Sets the crop box's and clipping planes' uniforms and, post-classified, the
@@ -411,6 +420,9 @@ class SplatRenderer : public Renderer {
   bool softwareGl_ = false;                         // GL_RENDERER names a software rasterizer
   std::unique_ptr<GpuSlabPartition> gpuPartition_;  // made on first use
   std::unique_ptr<TileEwaSplatter> tiles_;          // RenderSettings::splatter; on first use
+  std::unique_ptr<CpuSplatter> cpu_;                // Splatter::Cpu; on first use
+  FootprintFunction cpuFootprint_ = computeFootprint;  // setCpuFootprint
+  std::vector<glm::vec4> transferTable_;  // the transfer texture's table, for the CPU splatter
   gl::ShaderLibrary shaders_;                       // for the GPU partition, built on first use
   std::optional<std::pair<double, double>> depthWindow_;
   bool slabScissor_ = true;
@@ -504,6 +516,7 @@ class SplatRenderer : public Renderer {
     PixelRect markRect;                // slabs composited since the last opacity marks
     bool gpuSlabs = false;             // slabs come from gpuPartition_
     bool tiles = false;                // drawn in compute tiles: the picture is tiles_'s
+    bool cpu = false;                  // drawn on the CPU: the picture is cpu_'s
     bool tilesFirstUse = false;        // tiles: programs compiled or the splatter made for it
     bool indirect = false;          // GPU slabs whose counts only the GPU knows (empty ones kept)
     size_t nextSlab = 0;            // composite: the next slab in drawing order

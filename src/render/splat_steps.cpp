@@ -250,6 +250,12 @@ bool SplatRenderer::stepFrame(double budgetMs) {
     frame_.drawSplats = false;
     stats_.splatMs += millisecondsSince(drawStart);  // the tiles wait for their passes
   }
+  // A whole composite frame on the CPU, if asked for and it draws the frame's settings.
+  if (frame_.drawSplats && !frame_.slabsDone && frame_.settings.splatter == Splatter::Cpu &&
+      frame_.nextSlab == 0 && drawCpu()) {
+    frame_.drawSplats = false;
+    stats_.splatMs += millisecondsSince(drawStart);
+  }
   bool drewSlabs = false;  // this step: the final pass may not fit beside them
   if (frame_.drawSplats && !frame_.slabsDone) {
     // Another renderer sharing the programs drew since this frame set them up.

@@ -1,0 +1,87 @@
+// makeSplatRecords: splatSetup of shaders/splat_common.glsl on the CPU, splat by splat in
+// parallel, from the footprint, reach, clip and shading C++ the shaders mirror.
+#include "core/splat_records.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "core/clip_share.h"
+
+namespace ewa {
+
+glm::vec4 transferAt(const std::vector<glm::vec4>& table, float value) {
+  // GL_LINEAR at (value * (n - 1) + 0.5) / n: between entries floor(x) and floor(x) + 1.
+  const int n = int(table.size());
+  if (n == 0) return glm::vec4(0.0f);
+  const float x = std::clamp(value, 0.0f, 1.0f) * float(n - 1);
+  const int i = std::min(int(x), n - 1);
+  const int j = std::min(i + 1, n - 1);
+  const float t = x - float(i);
+  return table[size_t(i)] * (1.0f - t) + table[size_t(j)] * t;
+}
+
+namespace {
+
+// One splat's record; false (the record left zero) where nothing is drawn.
+bool setupSplat(const PackedSplat& s, const PackedAttributes* attributes, const SplatFrameSetup& f,
+                const glm::dmat3& rotation, const glm::dmat3& volumeCov, const glm::dvec3& sigma,
+                double voxelVolume, SplatRecord& out) {
+  const float value = SplatSet::normalizedValue(s);
+  const glm::vec4 tf = transferAt(f.transfer, value);
+  UnpackedAttributes a;
+  if (attributes) a = unpackAttributes(*attributes);
+  if (!a.surface && !(tf.a > 0.0f)) return false;
+  glm::dvec3 at = f.origin + glm::dvec3(SplatSet::i(s), SplatSet::j(s), SplatSet::k(s)) * f.spacing;
+  glm::dmat3 cov = volumeCov;
+  double mass = double(tf.a) * voxelVolume;
+  if (a.surface) {
+    at += a.normal * (a.offset * f.params.minSpacing);
+    cov = surfaceCovariance(rotation, sigma, a.normal);
+    mass = surfaceSplatMass(f.spacing, a.normal, f.surfaceTau);
+  }
+  const glm::dvec3 u(f.view * glm::dvec4(at, 1.0));
+  // Cull before forming the Jacobian; kernels wholly outside the clip region (twice the reach:
+  // the tail left on the kept side is negligible).
+  const double radius = worldReach(f.reach, -u.z);
+  if (cullKernel(u, radius, f.proj, f.params)) return false;
+  if (!f.clipPlanes.empty() && clipCullsKernel(f.clipPlanes, u, 2.0 * radius)) return false;
+  const Footprint fp = f.footprint(u, cov, f.proj, f.params);
+  if (!fp.visible) return false;
+  const glm::dvec3 toEye = f.proj.orthographic ? glm::dvec3(0.0, 0.0, 1.0) : glm::normalize(-u);
+  const glm::dvec3 rgb = headlightShade(glm::dvec3(tf), rotation * a.normal, toEye, f.lighting);
+  const double cutoff = f.params.cutoff;
+  out.box = glm::vec4(glm::dvec4(fp.center, std::sqrt(cutoff * fp.covariance[0][0]),
+                                 std::sqrt(cutoff * fp.covariance[1][1])));
+  out.conic = glm::vec4(glm::dvec4(fp.conic[0][0], fp.conic[0][1], fp.conic[1][1], mass * fp.peak));
+  out.depth = glm::vec4(glm::dvec4(fp.depth, fp.depthSlope, fp.depthSigma));
+  out.color = glm::vec4(glm::vec3(rgb), value);
+  return true;
+}
+
+}  // namespace
+
+void makeSplatRecords(const SplatSet& splats, const AttributeList& attributes,
+                      const SplatFrameSetup& setup, std::vector<SplatRecord>& out) {
+  const size_t n = splats.size();
+  out.resize(n);
+  const glm::dmat3 rotation(setup.view);
+  const glm::dvec3 sigma = kernelSigma(setup.spacing, setup.kernelWidth);
+  const glm::dmat3 cov = cameraCovariance(rotation, sigma);
+  const double voxelVolume = setup.spacing.x * setup.spacing.y * setup.spacing.z;
+  const bool withAttributes = attributes.size() == n;
+  const PackedSplat* list = splats.splats().data();
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096),
+                    [&](const tbb::blocked_range<size_t>& r) {
+                      for (size_t i = r.begin(); i != r.end(); ++i) {
+                        SplatRecord record;
+                        setupSplat(list[i], withAttributes ? &attributes[i] : nullptr, setup,
+                                   rotation, cov, sigma, voxelVolume, record);
+                        out[i] = record;
+                      }
+                    });
+}
+
+}  // namespace ewa

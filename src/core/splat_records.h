@@ -1,0 +1,70 @@
+// SplatRecord: one splat's footprint, optical depth and colour for a frame, made on the CPU by
+// the same C++ the splat shaders mirror (shaders/splat_common.glsl, splatSetup), for the CPU
+// splatter (core/tile_compositor.h).
+#pragma once
+
+#include <functional>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/clip_region.h"
+#include "core/ewa_footprint.h"
+#include "core/kernel_reach.h"
+#include "core/shading.h"
+#include "core/splat_attributes.h"
+#include "core/splat_set.h"
+
+namespace ewa {
+
+// As the compute tiles' TileEwaSplat: (centre x, centre y, half width, half height) in pixels
+// (y up, pixel centres at +0.5); (conic xx, xy, yy, optical depth at the centre); (camera
+// depth, depth slope per pixel x and y, depth sigma); (colour rgb, normalized value). A splat
+// not drawn has a zero record (no optical depth).
+struct SplatRecord {
+  glm::vec4 box{0.0f};
+  glm::vec4 conic{0.0f};
+  glm::vec4 depth{0.0f};
+  glm::vec4 color{0.0f};
+};
+
+// The footprint of a kernel at camera-space `u` with camera covariance `cov`: computeFootprint,
+// or (tests) a deliberately wrong one.
+using FootprintFunction =
+    std::function<Footprint(const glm::dvec3& u, const glm::dmat3& cov, const Projection& proj,
+                            const FootprintParams& params)>;
+
+// What every splat of a frame shares (the splat programs' uniforms, SplatRenderer's
+// setCommonUniforms): the camera in the volume's own frame, the kernels, the projection, the
+// transfer function's table and the clip region's camera-space half-spaces.
+struct SplatFrameSetup {
+  glm::dmat4 view{1.0};    // volume frame -> camera
+  glm::dvec3 origin{0.0};  // voxel (i, j, k) sits at origin + (i, j, k) * spacing
+  glm::dvec3 spacing{1.0};
+  double kernelWidth = 1.0;  // kernelSigma
+  Projection proj;
+  FootprintParams params;
+  KernelReach reach;
+  double surfaceTau = 0.0;  // optical depth of a surface-splat layer along its normal
+  Lighting lighting;
+  // TransferFunction::bake over the volume's value range: (rgb, extinction per world unit),
+  // read with linear interpolation as the GL's 1D texture reads it.
+  std::vector<glm::vec4> transfer;
+  std::vector<HalfSpace> clipPlanes;  // camera space; empty: nothing clipped
+  FootprintFunction footprint = computeFootprint;
+};
+
+// The transfer table at normalized `value` as the splat shaders' texture() reads it.
+glm::vec4 transferAt(const std::vector<glm::vec4>& table, float value);
+
+// One record per splat of `splats` (attributes: one per splat, or none), pre-classified: the
+// colour shaded with the voxel normal where the lighting is on and the splat has one, the
+// optical depth the voxel's extinction times its volume (a surface splat's its layer's). In
+// parallel; `out` is resized.
+void makeSplatRecords(const SplatSet& splats, const AttributeList& attributes,
+                      const SplatFrameSetup& setup, std::vector<SplatRecord>& out);
+
+}  // namespace ewa

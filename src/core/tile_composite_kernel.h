@@ -1,0 +1,209 @@
+// The CPU splatter's per-tile composite (core/tile_compositor.h), compiled once per instruction
+// set: tile_compositor.cpp for the build's baseline, tile_compositor_avx2.cpp for AVX2 and FMA,
+// each in its own namespace (EWA_TILE_ISA, defined before this header), so no inline function
+// of one is taken for the other. Include it from those two files only.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <type_traits>
+#include <vector>
+
+#include "core/clip_share.h"
+#include "core/footprint_formulas.h"
+#include "core/tile_compositor.h"
+
+#ifndef EWA_TILE_ISA
+#error "define EWA_TILE_ISA (the instruction set's namespace) before including this header"
+#endif
+
+namespace ewa::tile_kernel {
+
+// What a tile's pixel loops share.
+struct TileWork {
+  const std::vector<std::vector<std::vector<TileCompositor::Item>>>* bins;
+  const std::vector<SplatRecord>* records;
+  const std::vector<Slab>* slabs;
+  const TileCompositeSettings* settings;
+  std::vector<glm::vec4>* picture;
+  size_t tile;
+  int px0, py0, w, h;
+};
+
+namespace EWA_TILE_ISA {
+
+constexpr int kPixels = TileCompositor::kTile * TileCompositor::kTile;
+
+// The pixels whose centres lie in `box` (centre, half extents; shaders/tile_range.glsl's
+// boxTiles before the division): false where none lies in the picture.
+inline bool boxPixels(const glm::vec4& box, int width, int height, int& x0, int& y0, int& x1,
+                      int& y1) {
+  if (!(box.z > 0.0f) || !(box.w > 0.0f)) return false;
+  x0 = int(std::ceil(box.x - box.z - 0.5f));
+  y0 = int(std::ceil(box.y - box.w - 0.5f));
+  x1 = int(std::floor(box.x + box.z - 0.5f));
+  y1 = int(std::floor(box.y + box.w - 0.5f));
+  if (x0 > width - 1 || y0 > height - 1 || x1 < 0 || y1 < 0) return false;
+  x0 = std::max(x0, 0);
+  y0 = std::max(y0, 0);
+  x1 = std::min(x1, width - 1);
+  y1 = std::min(y1, height - 1);
+  return true;
+}
+
+// One tile's pixels as planes (structure of arrays, rows kTile apart): a row of 16 pixels is
+// two AVX2 vectors.
+struct TilePlanes {
+  alignas(32) float r[kPixels];
+  alignas(32) float g[kPixels];
+  alignas(32) float b[kPixels];
+  alignas(32) float a[kPixels];
+};
+
+// The tile's slabs summed and composited front to back. Each row of a splat's box is walked over
+// an aligned run of 8 pixels (a footprint within one half of the tile's row) or the whole row of
+// 16, the pixels outside its box, its ellipse or the picture or already opaque adding 0: no
+// branches in the pixel loop, which the compiler vectorizes.
+template <bool Series, bool Clipped>
+__attribute__((always_inline)) inline void compositeTileOf(const TileWork& work) {
+  constexpr int kTile = TileCompositor::kTile;
+  const TileCompositeSettings& s = *work.settings;
+  const int px0 = work.px0, py0 = work.py0, w = work.w, h = work.h;
+  const float cutoff = float(s.cutoff);
+  const float termination = float(s.termination);
+  const float erfReach = float(std::min(s.profile.erfReach, kClipUnbounded));
+  const float halfScale = 0.5f * float(s.profile.scale);
+  TilePlanes image, sums;
+  alignas(32) float keptNear[kPixels], keptFar[kPixels];  // the clip region along each ray
+  alignas(32) float centreX[kTile];                       // pixel centres, x
+  alignas(32) float live[kPixels];  // 1 where the pixel is in the picture and takes more
+  for (int p = 0; p < kPixels; ++p) {
+    image.r[p] = image.g[p] = image.b[p] = image.a[p] = 0.0f;
+    sums.r[p] = sums.g[p] = sums.b[p] = sums.a[p] = 0.0f;
+    const int x = p % kTile, y = p / kTile;
+    live[p] = x < w && y < h ? 1.0f : 0.0f;
+    keptNear[p] = -float(kClipUnbounded);
+    keptFar[p] = float(kClipUnbounded);
+    if (Clipped && x < w && y < h) {
+      const RayInterval kept =
+          clippedDepths(s.clipPlanes, s.proj, glm::dvec2(px0 + x + 0.5, py0 + y + 0.5));
+      keptNear[p] = float(std::clamp(kept.near, -kClipUnbounded, kClipUnbounded));
+      keptFar[p] = float(std::clamp(kept.far, -kClipUnbounded, kClipUnbounded));
+    }
+  }
+  for (int x = 0; x < kTile; ++x) centreX[x] = float(px0 + x) + 0.5f;
+  int open = w * h;               // pixels below the termination opacity
+  uint32_t current = UINT32_MAX;  // the slab being summed
+  bool any = false;               // it has sums
+  const auto finishSlab = [&]() __attribute__((always_inline)) {
+    if (!any) return;
+    open = 0;
+    for (int p = 0; p < kPixels; ++p) {
+      // The slab pass's pre-classified composite: opacity 1 - exp(-depth), front to back.
+      const float depth = sums.a[p];
+      const float alpha = depth > 0.0f ? 1.0f - expOf(-depth) : 0.0f;
+      const float weight = depth > 0.0f ? (1.0f - image.a[p]) * alpha / depth : 0.0f;
+      image.r[p] += weight * sums.r[p];
+      image.g[p] += weight * sums.g[p];
+      image.b[p] += weight * sums.b[p];
+      image.a[p] += (1.0f - image.a[p]) * alpha;
+      sums.r[p] = sums.g[p] = sums.b[p] = sums.a[p] = 0.0f;
+      live[p] = live[p] > 0.0f && image.a[p] < termination ? 1.0f : 0.0f;
+      open += live[p] > 0.0f;
+    }
+    any = false;
+  };
+  for (const std::vector<std::vector<TileCompositor::Item>>& run : *work.bins) {
+    for (const TileCompositor::Item& item : run[work.tile]) {
+      if (item.slab != current) {
+        finishSlab();
+        if (open == 0) break;  // every pixel opaque: the tile is done
+        current = item.slab;
+      }
+      const SplatRecord& rec = (*work.records)[item.entry & SlabPartition::kIndexMask];
+      int x0, y0, x1, y1;
+      if (!boxPixels(rec.box, s.width, s.height, x0, y0, x1, y1)) continue;
+      x0 = std::max(x0, px0) - px0;
+      y0 = std::max(y0, py0) - py0;
+      x1 = std::min(x1, px0 + w - 1) - px0;
+      y1 = std::min(y1, py0 + h - 1) - py0;
+      const bool openNear = (item.entry & SlabPartition::kFirstSlab) != 0;
+      const bool openFar = (item.entry & SlabPartition::kLastSlab) != 0;
+      const Slab& slab = (*work.slabs)[item.slab];
+      const float zNear = float(std::clamp(slab.nearDepth, -kClipUnbounded, kClipUnbounded));
+      const float zFar = float(std::clamp(slab.farDepth, -kClipUnbounded, kClipUnbounded));
+      const float cr = rec.color.r, cg = rec.color.g, cb = rec.color.b;
+      const float qa = rec.conic.x, qb = rec.conic.y, qc = rec.conic.z, amplitude = rec.conic.w;
+      const float cx = rec.box.x, mu0 = rec.depth.x, slopeX = rec.depth.y, slopeY = rec.depth.z;
+      const float toErf = 1.0f / (std::sqrt(2.0f) * rec.depth.w);  // slabFraction's s
+      // Unclipped, every pixel's share lies between the same depths.
+      float wholeLo, wholeHi;
+      slabShareBoundsOf(zNear, zFar, openNear, openFar, -float(kClipUnbounded),
+                        float(kClipUnbounded), wholeLo, wholeHi);
+      any = true;
+      for (int y = y0; y <= y1; ++y) {
+        const float dy = float(py0 + y) + 0.5f - rec.box.y;
+        const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
+        // Pixels [first, first + n) of the row, 32-byte aligned; every term computed, each
+        // pixel's share masked.
+        const auto addRun = [&](int first, auto n) __attribute__((always_inline)) {
+          const int at = y * kTile + first;
+          float* __restrict sr = static_cast<float*>(__builtin_assume_aligned(sums.r + at, 32));
+          float* __restrict sg = static_cast<float*>(__builtin_assume_aligned(sums.g + at, 32));
+          float* __restrict sb = static_cast<float*>(__builtin_assume_aligned(sums.b + at, 32));
+          float* __restrict sa = static_cast<float*>(__builtin_assume_aligned(sums.a + at, 32));
+          const float* lv = static_cast<const float*>(__builtin_assume_aligned(live + at, 32));
+          const float* kn = static_cast<const float*>(__builtin_assume_aligned(keptNear + at, 32));
+          const float* kf = static_cast<const float*>(__builtin_assume_aligned(keptFar + at, 32));
+          const float* xc =
+              static_cast<const float*>(__builtin_assume_aligned(centreX + first, 32));
+          for (int i = 0; i < decltype(n)::value; ++i) {
+            const int x = first + i;
+            const float dx = xc[i] - cx;
+            const float r = qa * dx * dx + 2.0f * qb * dx * dy + rowR;
+            float lo = wholeLo, hi = wholeHi;
+            if (Clipped) slabShareBoundsOf(zNear, zFar, openNear, openFar, kn[i], kf[i], lo, hi);
+            // clippedSlabFraction in float, as the shaders take it.
+            const float mu = rowMu + slopeX * dx;
+            const float share = slabShareOf(mu, toErf, lo, hi, erfReach, halfScale, Series);
+            const bool take = (x >= x0) & (x <= x1) & (lv[i] > 0.0f) & (hi > lo);
+            const float weight =
+                amplitude * windowedGaussianOf(std::min(r, cutoff), cutoff) * share;
+            const float mask = take ? 1.0f : 0.0f;  // a product: no branch
+            const float depth = weight * mask;
+            sr[i] += cr * depth;
+            sg[i] += cg * depth;
+            sb[i] += cb * depth;
+            sa[i] += depth;
+          }
+        };
+        // A footprint within one half of the tile's row takes one vector of 8, else the row.
+        if ((x0 >> 3) == (x1 >> 3))
+          addRun(x0 & ~7, std::integral_constant<int, 8>());
+        else
+          addRun(0, std::integral_constant<int, kTile>());
+      }
+    }
+    if (open == 0) break;
+  }
+  finishSlab();
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int p = y * kTile + x;
+      (*work.picture)[size_t(py0 + y) * size_t(s.width) + size_t(px0 + x)] =
+          glm::vec4(image.r[p], image.g[p], image.b[p], image.a[p]);
+    }
+}
+
+// The tile's composite for the frame's depth profile and clipping: its pixel loops are
+// compiled without those tests.
+inline void compositeTileFor(const TileWork& work, bool series, bool clipped) {
+  if (series)
+    clipped ? compositeTileOf<true, true>(work) : compositeTileOf<true, false>(work);
+  else
+    clipped ? compositeTileOf<false, true>(work) : compositeTileOf<false, false>(work);
+}
+
+}  // namespace EWA_TILE_ISA
+
+}  // namespace ewa::tile_kernel

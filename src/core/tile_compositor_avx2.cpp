@@ -1,0 +1,19 @@
+// The CPU splatter's tile composite compiled for AVX2 and FMA (CMakeLists.txt gives this file
+// -mavx2 -mfma on x86-64; tile_compositor.cpp calls it where the machine has them). flatten
+// inlines everything it calls, so this file emits no inline function another file could take.
+#if defined(__AVX2__) && defined(__FMA__)
+
+#define EWA_TILE_ISA avx2
+#include "core/tile_composite_kernel.h"
+
+namespace ewa::tile_kernel::avx2 {
+
+void compositeTile(const TileWork& work, bool series, bool clipped);
+
+__attribute__((flatten)) void compositeTile(const TileWork& work, bool series, bool clipped) {
+  compositeTileFor(work, series, clipped);
+}
+
+}  // namespace ewa::tile_kernel::avx2
+
+#endif

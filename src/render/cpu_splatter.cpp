@@ -1,0 +1,89 @@
+// CpuSplatter: the frame's setup from the render settings, the CPU splatting, the upload.
+#include "render/cpu_splatter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/clip_share.h"
+#include "core/stopwatch.h"
+#include "gl/gl_error.h"
+
+namespace ewa {
+
+bool cpuSplatterDraws(const RenderSettings& s, std::string* why) {
+  const char* reason = nullptr;
+  if (s.mode != RenderMode::Composite)
+    reason = "the CPU splatter draws composite frames only: rasterized";
+  else if (s.order != CompositeOrder::FrontToBack)
+    reason = "the CPU splatter draws front-to-back frames only: rasterized";
+  else if (postClassified(s))
+    reason =
+        "the CPU splatter draws pre-classified frames only (--classification pre): "
+        "rasterized";
+  if (reason && why) *why = reason;
+  return reason == nullptr;
+}
+
+SplatFrameSetup cpuSplatSetup(const Volume& volume, const Camera& camera, const Projection& proj,
+                              const RenderSettings& settings, const KernelReach& reach,
+                              const std::vector<glm::vec4>& transfer) {
+  SplatFrameSetup f;
+  f.view = camera.viewMatrix();
+  f.origin = volume.origin();
+  f.spacing = volume.spacing();
+  f.kernelWidth = settings.kernelWidth;
+  f.proj = proj;
+  f.params = footprintParams(settings, f.spacing);
+  f.reach = reach;
+  f.surfaceTau = -std::log(1.0 - std::clamp(settings.surfaceOpacity, 0.0, 0.999999));
+  f.lighting = settings.lighting;
+  f.transfer = transfer;
+  // As setClipUniforms: the region's half-spaces in this camera's space, as many as the
+  // shaders take.
+  for (const HalfSpace& h : halfSpacesInVolumeFrame(settings.clip, volume)) {
+    if (f.clipPlanes.size() == size_t(ClipRegion::kMaxHalfSpaces)) break;
+    f.clipPlanes.push_back(transformed(h, f.view));
+  }
+  return f;
+}
+
+CpuSplatter::Timing CpuSplatter::draw(const ClassifiedSplats& splats,
+                                      const std::vector<uint32_t>& order,
+                                      const std::vector<Slab>& slabs, const SplatFrameSetup& setup,
+                                      const RenderSettings& settings, bool upload) {
+  Timing t;
+  auto start = std::chrono::steady_clock::now();
+  makeSplatRecords(splats.splats, splats.attributes, setup, records_);
+  t.recordsMs = millisecondsSince(start);
+  TileCompositeSettings composite;
+  composite.width = setup.proj.width;
+  composite.height = setup.proj.height;
+  composite.cutoff = settings.cutoff;
+  composite.profile = depthProfile(settings);
+  composite.termination = settings.terminationOpacity;
+  composite.clipPlanes = setup.clipPlanes;
+  composite.proj = setup.proj;
+  const TileCompositor::Timing c = compositor_.draw(records_, order, slabs, composite, picture_);
+  t.binMs = c.binMs;
+  t.compositeMs = c.compositeMs;
+  t.entries = c.entries;
+  if (!upload) return t;
+  start = std::chrono::steady_clock::now();
+  const int w = composite.width, h = composite.height;
+  if (!texture_ || width_ != w || height_ != h) {
+    texture_ = gl::Texture::create2D(GL_RGBA32F, w, h);
+    width_ = w;
+    height_ = h;
+  }
+  texture_.subImage2D(0, 0, 0, w, h, GL_RGBA, GL_FLOAT, picture_.data());
+  gl::checkGlError("CPU splatter picture upload");
+  t.uploadMs = millisecondsSince(start);
+  return t;
+}
+
+size_t CpuSplatter::bytes() const {
+  return size_t(width_) * size_t(height_) * sizeof(glm::vec4);
+}
+
+}  // namespace ewa
