@@ -278,7 +278,6 @@ double quantile(const std::vector<uint64_t>& h, int first, double fraction, doub
   return lo + double(h.size()) * width;
 }
 
-
 // The volume's distinct values, when it has at most kMaxLabels set apart from each other (a
 // binary mask, a label volume); empty otherwise. Values in neighbouring histogram bins are a
 // material's noise (18 to 22 about 20), not labels. Only volumes whose histogram fills that few
@@ -286,8 +285,7 @@ double quantile(const std::vector<uint64_t>& h, int first, double fraction, doub
 constexpr int kMaxLabels = 16;
 std::vector<double> labelValues(const Volume& volume) {
   const std::vector<uint64_t>& h = volume.histogram();
-  if (std::count_if(h.begin(), h.end(), [](uint64_t c) { return c > 0; }) > kMaxLabels)
-    return {};
+  if (std::count_if(h.begin(), h.end(), [](uint64_t c) { return c > 0; }) > kMaxLabels) return {};
   for (size_t b = 1; b < h.size(); ++b)
     if (h[b] > 0 && h[b - 1] > 0) return {};
   std::vector<double> values;
@@ -317,12 +315,12 @@ TransferFunction labelTransferFunction(const Volume& volume, const std::vector<d
   const double lo = volume.minValue(), hi = volume.maxValue();
   const int mode = int(std::max_element(h.begin(), h.end()) - h.begin());
   const double modeCentre = lo + (mode + 0.5) * (hi - lo) / double(h.size());
-  const size_t bg = size_t(std::min_element(labels.begin(), labels.end(),
-                                            [&](double a, double b) {
-                                              return std::abs(a - modeCentre) <
-                                                     std::abs(b - modeCentre);
-                                            }) -
-                           labels.begin());
+  const size_t bg =
+      size_t(std::min_element(labels.begin(), labels.end(),
+                              [&](double a, double b) {
+                                return std::abs(a - modeCentre) < std::abs(b - modeCentre);
+                              }) -
+             labels.begin());
   // Clear for the first 5% about the background, so that the background's own values (and the
   // table bin holding them) stay transparent and its voxels are no splats.
   constexpr double kOpacity = 0.7, kClear = 0.05, kOpaque = 0.25;

@@ -205,7 +205,8 @@ uint64_t writeEntry(const std::string& path, archive* a, const fs::path& target,
     if (got < 0) failArchive(path, a, "a damaged archive: cannot read " + quoteText(name));
     written += uint64_t(got);
     if (written > budget.bytes - used) budget.exceeded(path);
-    budget.checkRatio(path, used + written, uint64_t(std::max<la_int64_t>(archive_filter_bytes(a, -1), 0)));
+    budget.checkRatio(path, used + written,
+                      uint64_t(std::max<la_int64_t>(archive_filter_bytes(a, -1), 0)));
     if (std::fwrite(buffer.data(), 1, size_t(got), out.get()) != size_t(got))
       failLoad(path, "cannot unpack " + quoteText(name) + " (is the scratch disk full?)");
   }

@@ -16,9 +16,10 @@ constexpr NamedValue<SlabPrecision> kSlabPrecision[] = {
     {SlabPrecision::Auto, "auto"}, {SlabPrecision::Half, "half"}, {SlabPrecision::Float, "float"}};
 constexpr NamedValue<PostNormals> kPostNormals[] = {
     {PostNormals::Field, "field"}, {PostNormals::Voxel, "voxel"}, {PostNormals::Ray, "ray"}};
-constexpr NamedValue<Splatter> kSplatter[] = {
-    {Splatter::Raster, "raster"}, {Splatter::Tiles, "tiles"}, {Splatter::Auto, "auto"},
-    {Splatter::Cpu, "cpu"}};
+constexpr NamedValue<Splatter> kSplatter[] = {{Splatter::Raster, "raster"},
+                                              {Splatter::Tiles, "tiles"},
+                                              {Splatter::Auto, "auto"},
+                                              {Splatter::Cpu, "cpu"}};
 constexpr NamedValue<RenderMode> kRenderMode[] = {
     {RenderMode::Composite, "composite"}, {RenderMode::XRay, "xray"}, {RenderMode::Mip, "mip"}};
 constexpr NamedValue<CompositeOrder> kCompositeOrder[] = {

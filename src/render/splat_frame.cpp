@@ -274,7 +274,9 @@ void SplatRenderer::drawFinalPass(int y0, int y1) {
   targets_.slab.bindUnit(1);
   // Front to back, premultiplied, over nothing: the tiles' picture is what the slab loop leaves.
   (frame_.tiles ? tiles_->pictureTexture()
-                : frame_.cpu ? cpu_->pictureTexture() : targets_.accum).bindUnit(2);
+   : frame_.cpu ? cpu_->pictureTexture()
+                : targets_.accum)
+      .bindUnit(2);
   finalProgram_.setInt("uSlab", 1);
   finalProgram_.setInt("uImage", 2);
   finalProgram_.setInt("uMode", int(settings.mode));

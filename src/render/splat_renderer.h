@@ -417,13 +417,13 @@ class SplatRenderer : public Renderer {
   ClassifiedSplats classified_;
   SlabPartition partition_;
   PartitionMode partitionMode_ = PartitionMode::Auto;
-  bool softwareGl_ = false;                         // GL_RENDERER names a software rasterizer
-  std::unique_ptr<GpuSlabPartition> gpuPartition_;  // made on first use
-  std::unique_ptr<TileEwaSplatter> tiles_;          // RenderSettings::splatter; on first use
-  std::unique_ptr<CpuSplatter> cpu_;                // Splatter::Cpu; on first use
+  bool softwareGl_ = false;                            // GL_RENDERER names a software rasterizer
+  std::unique_ptr<GpuSlabPartition> gpuPartition_;     // made on first use
+  std::unique_ptr<TileEwaSplatter> tiles_;             // RenderSettings::splatter; on first use
+  std::unique_ptr<CpuSplatter> cpu_;                   // Splatter::Cpu; on first use
   FootprintFunction cpuFootprint_ = computeFootprint;  // setCpuFootprint
   std::vector<glm::vec4> transferTable_;  // the transfer texture's table, for the CPU splatter
-  gl::ShaderLibrary shaders_;                       // for the GPU partition, built on first use
+  gl::ShaderLibrary shaders_;             // for the GPU partition, built on first use
   std::optional<std::pair<double, double>> depthWindow_;
   bool slabScissor_ = true;
 
