@@ -1,6 +1,6 @@
 // The filter-quality benchmark: its regions and camera moves, and the orderings the papers
 // predict, measured small (96x96, 4x4 supersampled reference) so a broken filter fails here.
-#include "app/quality_benchmark.h"
+#include "bench/quality_benchmark.h"
 
 #include <gtest/gtest.h>
 

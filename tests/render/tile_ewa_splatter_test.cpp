@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "app/bench_tile_ewa.h"
+#include "bench/bench_tile_ewa.h"
 #include "cli_run.h"
 #include "core/ewa_footprint.h"
 #include "core/slab_partition.h"

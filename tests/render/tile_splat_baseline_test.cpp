@@ -1,7 +1,7 @@
 // The benchmarks' compute tile splatter against a C++ sum of the same footprints: every pixel of
 // both tile sizes, with footprints across tile borders, beyond the picture's edges and piled
 // many deep in one tile (more than one batch of the group's shared memory).
-#include "render/tile_splat_baseline.h"
+#include "bench/tile_splat_baseline.h"
 
 #include <gtest/gtest.h>
 

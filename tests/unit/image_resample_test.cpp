@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "core/image_statistics.h"
+#include "bench/image_statistics.h"
 
 namespace ewa {
 namespace {

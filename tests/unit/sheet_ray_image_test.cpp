@@ -1,6 +1,6 @@
 // The quality reference's CPU ray integration against closed forms: a uniform sheet has optical
 // depth tau * thickness / cos(theta) along a ray at angle theta to its normal.
-#include "core/sheet_ray_image.h"
+#include "bench/sheet_ray_image.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
 // tileEwaFrame: footprints, colours and slab lists of a pre-classified frame, made on the CPU as
 // the splat shaders and the CPU partition make them.
-#include "app/bench_tile_ewa.h"
+#include "bench/bench_tile_ewa.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "app/bench_sprites.h"
+#include "bench/bench_sprites.h"
 #include "core/kernel_reach.h"
 #include "core/slab_partition.h"
 #include "core/volume_orientation.h"

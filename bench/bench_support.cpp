@@ -1,5 +1,5 @@
 // The benchmark programs' shared main(), clock, timing summaries and options.
-#include "app/bench_support.h"
+#include "bench/bench_support.h"
 
 #include <time.h>
 

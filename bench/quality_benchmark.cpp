@@ -1,11 +1,11 @@
 // Filter-quality measurement: renders, the supersampled reference, the metrics per mode.
-#include "app/quality_benchmark.h"
+#include "bench/quality_benchmark.h"
 
 #include <cmath>
 #include <stdexcept>
 
+#include "bench/sheet_ray_image.h"
 #include "core/image_resample.h"
-#include "core/sheet_ray_image.h"
 #include "io/image_convert.h"
 
 namespace ewa {

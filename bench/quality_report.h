@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "app/quality_benchmark.h"
+#include "bench/quality_benchmark.h"
 #include "io/png_io.h"
 
 namespace ewa {

@@ -1,5 +1,5 @@
 // The comparison benchmark's three output formats, with the same columns in each.
-#include "app/compare_report.h"
+#include "bench/compare_report.h"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>

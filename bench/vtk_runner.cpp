@@ -1,5 +1,5 @@
 // VtkRunner: temporary input files, the script's command line and its one-line answer.
-#include "app/vtk_runner.h"
+#include "bench/vtk_runner.h"
 
 #include <unistd.h>
 

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "app/bench_support.h"
 #include "app/options.h"
 #include "app/scene.h"
-#include "app/vtk_runner.h"
+#include "bench/bench_support.h"
+#include "bench/vtk_runner.h"
 #include "core/shear_warp.h"
 #include "gl/shader_library.h"
 #include "platform/headless_context.h"

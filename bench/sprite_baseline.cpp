@@ -1,5 +1,5 @@
 // SpriteBaseline: one draw call of bare point sprites, timed with glFinish.
-#include "render/sprite_baseline.h"
+#include "bench/sprite_baseline.h"
 
 #include <chrono>
 

@@ -1,5 +1,5 @@
 // Benchmark scenes, per-pixel sheet depth and footprint shape, sub-pixel camera moves.
-#include "app/quality_scene.h"
+#include "bench/quality_scene.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "app/bench_support.h"
 #include "app/option_binding.h"
-#include "app/quality_benchmark.h"
-#include "app/quality_report.h"
+#include "bench/bench_support.h"
+#include "bench/quality_benchmark.h"
+#include "bench/quality_report.h"
 #include "core/kernel_lattice.h"
 #include "gl/shader_library.h"
 #include "platform/headless_context.h"

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "app/quality_scene.h"
+#include "bench/quality_scene.h"
 #include "core/ewa_footprint.h"
 #include "core/image_metrics.h"
 #include "core/synthetic_volume.h"

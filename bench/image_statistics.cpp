@@ -1,5 +1,5 @@
 // Region statistics: masked mean absolute difference, RMS contrast, regression gain.
-#include "core/image_statistics.h"
+#include "bench/image_statistics.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,13 +5,13 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
+#include "bench/tile_splat_baseline.h"
 #include "core/camera.h"
 #include "core/ewa_footprint.h"
 #include "core/volume.h"
 #include "core/volume_orientation.h"
 #include "render/renderer.h"
 #include "render/splat_renderer.h"
-#include "render/tile_splat_baseline.h"
 
 namespace ewa {
 

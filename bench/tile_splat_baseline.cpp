@@ -1,5 +1,5 @@
 // TileSplatBaseline: the four passes of shaders/tile_splat.comp.glsl, timed with glFinish.
-#include "render/tile_splat_baseline.h"
+#include "bench/tile_splat_baseline.h"
 
 #include <algorithm>
 #include <chrono>

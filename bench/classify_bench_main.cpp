@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "app/bench_support.h"
 #include "app/options.h"
 #include "app/scene.h"
+#include "bench/bench_support.h"
 #include "core/parallel_chunks.h"
 #include "core/splat_attributes.h"
 #include "render/renderer.h"

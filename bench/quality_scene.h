@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "bench/image_statistics.h"
 #include "core/camera.h"
-#include "core/image_statistics.h"
 #include "core/volume.h"
 
 namespace ewa {

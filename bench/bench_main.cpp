@@ -6,14 +6,14 @@
 #include <filesystem>
 #include <vector>
 
-#include "app/bench_sprites.h"
-#include "app/bench_support.h"
 #include "app/options.h"
 #include "app/scene.h"
+#include "bench/bench_sprites.h"
+#include "bench/bench_support.h"
+#include "bench/sprite_baseline.h"
 #include "gl/shader_library.h"
 #include "platform/headless_context.h"
 #include "render/splat_renderer.h"
-#include "render/sprite_baseline.h"
 
 namespace ewa {
 namespace {

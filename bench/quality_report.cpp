@@ -1,5 +1,5 @@
 // Markdown table and montage of the filter-quality measurements.
-#include "app/quality_report.h"
+#include "bench/quality_report.h"
 
 #include <algorithm>
 #include <cmath>

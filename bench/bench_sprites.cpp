@@ -1,6 +1,6 @@
 // spriteSizes, tileFootprints: the splat renderer's footprints, computed on the CPU as its shaders
 // do.
-#include "app/bench_sprites.h"
+#include "bench/bench_sprites.h"
 
 #include <algorithm>
 #include <cmath>

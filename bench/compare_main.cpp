@@ -11,15 +11,17 @@
 #include <string>
 #include <vector>
 
-#include "app/bench_sprites.h"
-#include "app/bench_support.h"
-#include "app/bench_tile_ewa.h"
-#include "app/compare_options.h"
-#include "app/compare_report.h"
 #include "app/frame_stats.h"
 #include "app/options.h"
 #include "app/scene.h"
-#include "app/vtk_runner.h"
+#include "bench/bench_sprites.h"
+#include "bench/bench_support.h"
+#include "bench/bench_tile_ewa.h"
+#include "bench/compare_options.h"
+#include "bench/compare_report.h"
+#include "bench/sprite_baseline.h"
+#include "bench/tile_splat_baseline.h"
+#include "bench/vtk_runner.h"
 #include "gl/gl_api.h"
 #include "gl/shader_library.h"
 #include "io/png_io.h"
@@ -27,9 +29,7 @@
 #include "render/cpu_splatter.h"
 #include "render/renderer_factory.h"
 #include "render/splat_renderer.h"
-#include "render/sprite_baseline.h"
 #include "render/tile_ewa_splatter.h"
-#include "render/tile_splat_baseline.h"
 
 namespace ewa {
 namespace {

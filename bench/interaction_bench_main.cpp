@@ -9,9 +9,9 @@
 #include <sstream>
 #include <vector>
 
-#include "app/bench_support.h"
 #include "app/options.h"
 #include "app/scene.h"
+#include "bench/bench_support.h"
 #include "core/camera_path.h"
 #include "core/lod_policy.h"
 #include "gl/shader_library.h"

@@ -1,5 +1,5 @@
 // CPU ray integration through a sheet of 3D Gaussian kernels: the independent quality reference.
-#include "core/sheet_ray_image.h"
+#include "bench/sheet_ray_image.h"
 
 #include <algorithm>
 #include <cmath>

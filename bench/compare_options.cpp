@@ -1,12 +1,12 @@
 // ewaview-compare's command line: its options, the EWA settings they make, the settings line.
-#include "app/compare_options.h"
+#include "bench/compare_options.h"
 
 #include <cmath>
 #include <cstdio>
 
-#include "app/bench_support.h"
 #include "app/option_binding.h"
-#include "app/vtk_runner.h"
+#include "bench/bench_support.h"
+#include "bench/vtk_runner.h"
 #include "core/post_classification.h"
 #include "core/value_prefilter.h"
 
