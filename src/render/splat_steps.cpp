@@ -22,11 +22,11 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
   // termination test, every few slabs). A chunk holds whole slabs while they fit; a slab too costly
   // for the time left is drawn in ranges of entries over several steps (its sums are
   // order-independent, so the picture is the same), and its finish, a pass over the slab's
-  // rectangle that on llvmpipe at 1024x768 costs more than a UI frame's whole budget (60-140 ms on
-  // engine), in bands of rows (each pixel's pass is its own) over as many steps as it needs.
-  // Entries drawn before anything is measured, and the fewest a range holds; both fewer where
-  // the largest footprints are huge (a small volume filling the window: a few of its splats
-  // cost as much as thousands of an ordinary view's).
+  // rectangle that on llvmpipe can cost more than a UI frame's whole budget, in bands of rows (each
+  // pixel's pass is its own) over as many steps as it needs. Entries drawn before anything is
+  // measured, and the fewest a range holds; both fewer where the largest footprints are huge (a
+  // small volume filling the window: a few of its splats cost as much as thousands of an ordinary
+  // view's).
   constexpr double kFirstFragments = 2.0e6;
   const size_t kFirstChunk =
       size_t(std::clamp(kFirstFragments / frame_.fragmentsPerEntry, 1.0, 2048.0));
@@ -283,8 +283,8 @@ bool SplatRenderer::stepFrame(double budgetMs) {
     frame_.slabsDone = drewSlabs = true;
   }
   if (std::isfinite(budgetMs)) {
-    // The final pass, over the whole picture (llvmpipe: 10 ms at 1024x768, 45 ms at 2200x1600,
-    // about 100 ms at 3840x2160), in bands of rows that fit what the step has left, over as
+    // The final pass, over the whole picture (its cost grows with the pixels: on llvmpipe in a
+    // large window past a step's budget), in bands of rows that fit what the step has left, over as
     // many steps as it needs (at least a band where it is a step's first work).
     bool drewFinal = false;
     while (frame_.finalRow < frame_.height) {
