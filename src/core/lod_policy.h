@@ -44,8 +44,8 @@ class LodPolicy {
   // transfer-function drag.
   static constexpr double kMinStepRatio = 2.5;
   // From volume/16 to volume/8 at once: volume/16 is kept only for volumes splat-bound at
-  // volume/8, which has 8 times the splats, so its frames cost several times as much (a dense
-  // 512^3 volume's on llvmpipe), and 2.5x would overrun the bound on every orbit.
+  // volume/8, which has 8 times the splats: on llvmpipe a dense 512^3 volume's volume/8 frame
+  // costs several times its volume/16 one, and a guess of 2.5x lets every orbit overrun the bound.
   static constexpr double kMinStepRatioFromSixteen = 4.0;
   // The least ratio expected between `level` and the coarser level `coarser` (the product of
   // the steps' least ratios).

@@ -478,8 +478,8 @@ class SplatRenderer : public Renderer {
   bool passHalfCulling_ = true;  // setPassHalfCulling
   TwoWayTuner passTuner_;        // slabPasses auto: one pass a slab (way 0) or two (way 1)
   unsigned passWaysDrawn_ = 0;   // bit w: a frame drew way w (its first use paid for)
-  // Splatter auto: rasterized (way 0) or in tiles (way 1), the tiles tried first: on the H200
-  // they drew the default frames in 0.05-0.09x the rasterizer's time, so a single picture (and
+  // Splatter auto: rasterized (way 0) or in tiles (way 1), the tiles tried first: on a GPU
+  // they draw the default frames in a small part of the rasterizer's time, so a single picture (and
   // the window's first refinement) takes them.
   TwoWayTuner splatterTuner_{1};
   // The compute splatter's programs failed to build on this GL: auto rasterizes from then on,

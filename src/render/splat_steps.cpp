@@ -324,8 +324,8 @@ bool SplatRenderer::stepFrame(double budgetMs) {
   }
   // Auto passes: this frame's splat stage a slab entry, for the way it took (the GPU
   // partition's entries are only counted above). A way's first frame in this renderer is not
-  // counted: it pays once for what the driver makes on first use (the H200 timed engine's
-  // first two-pass frame dearer than one pass, and kept one pass at 1.8x the frame).
+  // counted: it pays once for what the driver makes on first use (counted, that cost could make
+  // the faster way look dearer, and the slower one would be kept).
   if (frame_.quarters && !frame_.tiles) {
     const int way = frame_.slabPasses - 1;
     const bool firstUse = (passWaysDrawn_ & (1u << way)) == 0;

@@ -97,7 +97,7 @@ const std::shared_ptr<TileEwaPrograms>& SplatRenderer::tilePrograms() {
 
 bool SplatRenderer::drawTilesNow() {
   // The tiles read their records as one storage block: past its end they read nothing (the
-  // H200's 2 GiB block and 512^3 Marschner-Lobb's 4.8 GB of records drew rings with gaps).
+  // records of a 512^3 volume, larger than a GPU's block may be, drew rings with gaps).
   if (!tileRecordsFit()) {
     constexpr uint64_t kMiB = 1024 * 1024;
     const uint64_t records = uint64_t(classified_.splats.size()) * sizeof(TileEwaSplat);
