@@ -71,8 +71,8 @@ glm::dmat3 surfaceCovariance(const glm::dmat3& rotation, const glm::dvec3& spaci
 // have areal density max_i(|n_i| h_i) / (hx hy hz), and each tangent Gaussian integrates to 1.
 double surfaceSplatMass(const glm::dvec3& spacing, const glm::dvec3& normal, double tauSurface);
 
-// erf by Abramowitz and Stegun 7.1.28 (|error| < 3e-7; a polynomial, no exp: 7.1.26's exp made
-// frames 1.14x longer on llvmpipe): the GLSL has no erf, and the C++ uses the same formula so
+// erf by Abramowitz and Stegun 7.1.28 (|error| < 3e-7; a polynomial, no exp: 7.1.26's exp
+// makes frames longer on llvmpipe): the GLSL has no erf, and the C++ uses the same formula so
 // the two agree to float rounding.
 double erfApprox(double x);
 // A kernel's depth profile along a pixel's ray, which splits its ray integral between slabs:

@@ -19,16 +19,16 @@ class LodPolicy {
  public:
   // Level 0 is full quality; each next level is cheaper. The volume factors (2, 4, 8, 16) are
   // the downsampled volumes the viewer keeps (16 only for big volumes: keepsVolumeFactor).
-  // {8, 4} and {8, 8} are for big volumes and fill-bound views on slow GL (llvmpipe): CThead
-  // close up still took ~106 ms a frame at {8, 4}. {16, 8} is for splat-bound views of volumes
-  // of 512^3 and so: a dense one's volume/8 (262 k splats) took 125-155 ms a frame at {8, 8}.
+  // {8, 4} and {8, 8} are for big volumes and fill-bound views on slow GL (llvmpipe): a
+  // close-up of CThead still overruns a UI frame at {8, 4}. {16, 8} is for splat-bound views of
+  // volumes of 512^3 and so: a dense one's volume/8 (262 k splats) overruns one at {8, 8}.
   static constexpr std::array<LodLevel, 8> kLevels{
       {{1, 1}, {2, 1}, {2, 2}, {4, 2}, {4, 4}, {8, 4}, {8, 8}, {16, 8}}};
   static constexpr int kLevelCount = int(kLevels.size());
   // A volume factor over 8 is kept only where volume/8 still holds more than this many voxels
-  // (volumes of about 320^3 and up): llvmpipe's vertex stage alone takes about 0.25 s a million
-  // slab entries, so volume/8 of a dense 256^3 volume (32 k voxels) fits a moving frame, and a
-  // volume/16 of it (16^3) would only blur a picture nothing needed to be faster.
+  // (volumes of about 320^3 and up): below that, volume/8 has few enough slab entries for
+  // llvmpipe's vertex stage, so volume/8 of a dense 256^3 volume (32 k voxels) fits a moving frame,
+  // and a volume/16 of it (16^3) would only blur a picture nothing needed to be faster.
   static constexpr long long kMaxCoarseVoxels = 65536;
   static bool keepsVolumeFactor(int factor, long long voxels);
   // The coarsest level whose volume factor is kept for a volume of `voxels` voxels.
@@ -37,15 +37,15 @@ class LodPolicy {
   // (magnified small volumes) cases; measurements move it from there.
   static constexpr int kStartLevel = 2;
   // A finer level not measured yet is expected to render at least this many times as long as
-  // the level just measured: each step halves the volume or the image per axis, and llvmpipe
-  // took 2.2-2.6x a step at the coarse levels (the default volume and engine in the window),
-  // where the mean in expectedCostRatio says 1.2x for volume/8 to volume/4 at image/4 (twice
-  // the slabs over the same pixels): that guess sent a UI frame past 100 ms at every
+  // the level just measured: each step halves the volume or the image per axis, and on llvmpipe
+  // a step at the coarse levels costs about this much (the default volume and engine in the
+  // window), where the mean in expectedCostRatio says 1.2x for volume/8 to volume/4 at image/4
+  // (twice the slabs over the same pixels): a guess that low overruns the 100 ms bound at every
   // transfer-function drag.
   static constexpr double kMinStepRatio = 2.5;
   // From volume/16 to volume/8 at once: volume/16 is kept only for volumes splat-bound at
-  // volume/8, which has 8 times the splats; a dense 512^3 volume's took 4.1-5.9x as long
-  // (125-155 against 26-38 ms on llvmpipe), and 2.5x sent a frame of every orbit to 164 ms.
+  // volume/8, which has 8 times the splats: on llvmpipe a dense 512^3 volume's volume/8 frame
+  // costs several times its volume/16 one, and a guess of 2.5x lets every orbit overrun the bound.
   static constexpr double kMinStepRatioFromSixteen = 4.0;
   // The least ratio expected between `level` and the coarser level `coarser` (the product of
   // the steps' least ratios).
@@ -81,8 +81,8 @@ class LodPolicy {
   void setCoarsestLevel(int level);
   // The window now has `pixelRatio` times the pixels the measurements were made at. Larger:
   // each measured frame is expected to cost that many times as much (the coarse levels' large
-  // footprints are fill-bound on llvmpipe, and the present and swap grow with the window too:
-  // the default volume's level 5, picked at 1024x768, took a 208 ms frame at 2400x1350), and
+  // footprints are fill-bound on llvmpipe, and the present and swap grow with the window too, so
+  // a level picked in a small window overruns the target in a much larger one), and
   // the moving level goes coarser until its expected frame fits under 80% of the target.
   // Smaller: the measurements shrink the same way (a window made large and small again finds
   // its levels as they were), the level stays, and moving frames take it finer as their

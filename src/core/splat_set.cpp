@@ -32,7 +32,7 @@ SplatSet SplatSet::build(const Volume& volume, const std::function<bool(double)>
   // Slices of layers on the machine's cores, joined in order: the sequential loop's list.
   const size_t layers = size_t((d[2] + s - 1) / s);
   // Each chunk's splats in blocks of a fixed size: a growing vector's copies and freed pages
-  // (whose unmapping interrupts every core) made 16 threads only 3x as fast as one.
+  // (whose unmapping interrupts every core) kept many threads from being much faster than a few.
   constexpr size_t kBlock = size_t(1) << 18;
   const size_t minLayers = minItemsPerChunk(size_t((d[0] + s - 1) / s * ((d[1] + s - 1) / s)));
   std::atomic<size_t> kept{0};  // all chunks' splats so far, checked a row at a time

@@ -20,10 +20,9 @@ namespace ewa {
 
 namespace {
 
-// Each frame its own PNG, written atomically, encoded on worker threads: a 1024² frame's
-// encoding (about 40 ms) is several times what a GPU takes to render it, so the next frames
-// render meanwhile. A few frames wait at most; a failed frame's error comes from the next
-// add() or from finish().
+// Each frame its own PNG, written atomically, encoded on worker threads: a frame's encoding
+// costs several times what a GPU takes to render it, so the next frames render meanwhile. A few
+// frames wait at most; a failed frame's error comes from the next add() or from finish().
 class PngFrameSink : public FrameSink {
  public:
   PngFrameSink(FrameNaming naming, int count)

@@ -64,7 +64,7 @@ bool GradientTexture::ready(double budgetMs) {
 
 bool GradientTexture::uploadParts(double budgetMs, std::chrono::steady_clock::time_point start) {
   const auto& d = packed_.dims;
-  // Parts of about 4 MB: a few milliseconds each on llvmpipe, and a small staging copy.
+  // Parts of about 4 MB: small beside a step's budget even on llvmpipe, and a small staging copy.
   const int64_t slice = d[0] * d[1];
   const int64_t step = std::max<int64_t>(1, (int64_t(4) << 20) / (4 * slice));
   while (uploaded_ < d[2]) {

@@ -218,8 +218,8 @@ bool LodRenderer::warmUpNext(const Camera& camera, const RenderSettings& setting
       return true;
     }
     // Uploaded (a big set on a worker, taken in a later call), and the programs, images and
-    // tables made: a tiny draw would also run every splat through the vertex stage (0.3 s or
-    // more for bonsai's half-size volume).
+    // tables made: a tiny draw would also run every splat through the vertex stage (on llvmpipe
+    // far more than a UI frame's budget for any but small volumes).
     splat.updateTransferTexture(tf_);
     try {
       warming_->uploading = !splat.beginSplats(std::move(built->splats), built->classification);

@@ -89,9 +89,9 @@ class LodRenderer {
   }
 
   // One step of readying the coarsest level not drawn since the volume was set, so the first
-  // moving frame there does not pay for it: its splats are classified on a worker thread (1 s
-  // on llvmpipe's machine for bonsai's half-size volume), then a later call uploads them and
-  // makes the level's programs, images and tables (Renderer::prepare; 70-85 ms for bonsai's).
+  // moving frame there does not pay for it: its splats are classified on a worker thread (many
+  // UI frames' worth of work), then a later call uploads them and makes the level's programs,
+  // images and tables (Renderer::prepare; on llvmpipe most of a UI frame's budget).
   // Calls while the worker classifies return at once; a renderer other than the splat renderer
   // draws a tiny image instead. false when every level had been drawn. Leaves last() as it was;
   // may throw as a draw of the level would.

@@ -11,16 +11,16 @@
 
 namespace ewa {
 
-// One buffer for the whole list made a 512^3 volume's first refinement hold one UI frame for
-// 2 s on llvmpipe: creating a buffer zero-fills all of it (0.6-0.9 GB) before anything is
-// copied. Pages end where slabs do: llvmpipe ends its scene (binning) when a draw brings in a
-// new buffer once the scene holds 64 MB of resources, and pages that cut through slabs made
-// that 512^3 frame 1.3x as long. Buffers are kept between frames (allocating costs far more
-// than copying) and grow as the pages do.
+// One buffer for the whole list made a 512^3 volume's first refinement hold one UI frame far
+// past its budget on llvmpipe: creating a buffer zero-fills all of it (for such a volume, most
+// of a gigabyte) before anything is copied. Pages end where slabs do: llvmpipe ends its scene
+// (binning) when a draw brings in a new buffer once the scene holds 64 MB of resources, and
+// pages that cut through slabs end scenes mid-slab, which lengthened that 512^3 frame. Buffers
+// are kept between frames (allocating costs far more than copying) and grow as the pages do.
 class OrderPages {
  public:
-  // 1 Mi entries, 4 MiB: made and filled in about 25 ms on llvmpipe here, within a window
-  // step's 30 ms budget (16 MiB took about 100 ms).
+  // 1 Mi entries, 4 MiB: small enough that making and filling one on llvmpipe fits within a
+  // window step's 30 ms budget (a 16 MiB page does not).
   static constexpr size_t kDefaultPageEntries = size_t(1) << 20;
 
   explicit OrderPages(size_t pageEntries = kDefaultPageEntries);

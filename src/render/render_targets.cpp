@@ -112,8 +112,8 @@ bool RenderTargets::prepare(const TargetLayout& want, double budgetMs,
   } else {
     for (const MissingImage& image : missing) {
       const double bytes = double(width) * double(height) * double(bytesPerPixel(image.format));
-      // Twice the slowest pace seen: fresh memory's price varies (llvmpipe, 2400x1350: 10-110
-      // ms for the same 26-52 MB images, freed memory reused or not).
+      // Twice the slowest pace seen: fresh memory's price varies (on llvmpipe the same images
+      // cost many times more or less, as freed memory is reused or not).
       if (imagesMade_ > 0 && millisecondsSince(start) + 2.0 * msPerByte_ * bytes > budgetMs)
         return false;
       const auto made = std::chrono::steady_clock::now();

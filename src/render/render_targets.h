@@ -67,13 +67,13 @@ struct RenderTargets {
   // gl::GlError if incomplete.
   void resize(int w, int h, bool pairedSlabs = false, bool quarters = false,
               bool normalSums = false, bool halfSlabs = false, bool coarseSlabs = false);
-  // The same, an image at a time within `budgetMs` (at least one a call, the next only where
-  // its bytes at twice the slowest pace seen still fit): a much larger image's first frame on a
-  // software GL spends 10-110 ms on each 26-52 MB image (fresh memory cleared page by page),
-  // hundreds of ms in all, more than a window's UI frame may. With `uploads` (a context of
-  // this one's share group) and a finite budget the missing images are made at once on a
-  // worker bound to it instead, where their fresh memory is touched, and the calls wait for it
-  // at most the budget and return false until it is done (the framebuffers are then made here).
+  // The same, an image at a time within `budgetMs` (at least one a call, the next only where its
+  // bytes at twice the slowest pace seen still fit): a much larger image's first frame on a
+  // software GL spends long on each image (fresh memory cleared page by page), more in all than a
+  // window's UI frame may. With `uploads` (a context of this one's share group) and a finite
+  // budget the missing images are made at once on a worker bound to it instead, where their fresh
+  // memory is touched, and the calls wait for it at most the budget and return false until it is
+  // done (the framebuffers are then made here).
   // True once every image and framebuffer is there.
   bool prepare(const TargetLayout& layout, double budgetMs,
                platform::UploadContext* uploads = nullptr);

@@ -49,7 +49,7 @@ std::vector<std::string> postNormalsNames();  // every name parsePostNormals acc
 // front-to-back frames (cropped and clipped too), pre-classified or post-classified with four
 // samples a slab and field normals, and only frames drawn at once (headless); the rest is
 // rasterized. Auto: rasterized where the GPU's timers are not used (software rasterizers, where
-// tiles cost 11-14x the rasterized frame); elsewhere the faster as timed frames find it
+// tiles cost many times the rasterized frame); elsewhere the faster as timed frames find it
 // (TwoWayTuner: a rasterized frame first, then one in tiles, docs/performance.md "Compute EWA
 // splatting"). Cpu: splatted on the CPU in the tiles' shape (CpuSplatter: pixel loops the
 // compiler vectorizes, one tile a task over all cores), for machines whose GL is a software
@@ -103,9 +103,9 @@ struct RenderSettings {
   // Kernels' depth extent in squared standard deviations (at most the cutoff): each kernel's
   // depth profile is cut there (DepthProfile) and it is listed only in the slabs it reaches.
   // Infinite: uncut, listed to the cutoff, the first and last slab taking the tails. 1 (one
-  // sigma) lists a kernel in 2 slabs of the default thickness instead of 3: frames 0.62-0.75x
-  // as long on llvmpipe, pictures within a few levels, nearer thin slabs' (docs/rendering.md,
-  // "Depth profile").
+  // sigma) lists a kernel in 2 slabs of the default thickness instead of 3: fewer entries, so
+  // frames markedly shorter on llvmpipe, pictures within a few levels, nearer thin slabs'
+  // (docs/rendering.md, "Depth profile").
   double depthCutoff = 1.0;
   // In units of the smallest voxel spacing, at least 0.25. 2 by default: kernels split exactly
   // between slabs, so thinner slabs change the picture little (tests) and cost more draws.
@@ -135,10 +135,10 @@ struct RenderSettings {
   int slabSamples = 4;
   // Four samples a slab: each slab's kernels splatted once into both of its images (1), or once
   // into each (2): twice the vertex and fragment work for half the blending a pass, the same
-  // picture to the bit. On an H200 two passes made engine's and CThead's frames at 1024^2 0.63x
-  // and 0.57x as long, bonsai's 1.16x (docs/performance.md, "On a GPU"); on llvmpipe, whose cost is
-  // the fragments, they cost more. 0 (auto): one pass where the GPU's timers are not used (software
-  // rasterizers); elsewhere the faster as timed frames find it (TwoWayTuner).
+  // picture to the bit. On a GPU two passes make some volumes' frames faster and others' slower
+  // (docs/performance.md, "On a GPU"); on llvmpipe, whose cost is the fragments, they cost more. 0
+  // (auto): one pass where the GPU's timers are not used (software rasterizers); elsewhere the
+  // faster as timed frames find it (TwoWayTuner).
   int slabPasses = 0;
   // Composite: slab images of half floats (RGBA16F) or floats. Auto: half floats for kernels
   // at most one spacing wide (the default's 0.7), floats for wider ones, which overlap so many
@@ -147,8 +147,8 @@ struct RenderSettings {
   // field or voxel normals, whose normals are differences or sums in the slabs (half floats'
   // rounding in field normals moved shaded pixels by up to 7 levels; ray normals, read from the
   // gradient texture, move them by at most 3). Otherwise within a few levels of the floats'
-  // pictures (docs/performance.md, "Slab image precision"), while blending half the bytes made
-  // frames 2.2-2.6x as fast on a GPU. X-ray and MIP, whose one image sums or takes the maximum over
+  // pictures (docs/performance.md, "Slab image precision"), while blending half the bytes makes
+  // frames much faster on a GPU. X-ray and MIP, whose one image sums or takes the maximum over
   // the whole volume, always use floats.
   SlabPrecision slabPrecision = SlabPrecision::Auto;
   // Post-classified and shaded: each ray segment's normal is the data's gradient read along the

@@ -56,7 +56,8 @@ class SplatRenderer : public Renderer {
   void setTransferFunction(const TransferFunction& tf) override;
   // Compiles the splat and slab-pass programs of `settings`' variant (and the coarser slab
   // pass's where coarse slabs are on), allocates the images and builds the pre-integration
-  // tables, as beginFrame would (llvmpipe, 1024x768: the images 146 ms, tables 15-160 ms).
+  // tables, as beginFrame would (on llvmpipe the images or the tables alone can cost more than a
+  // UI frame's budget).
   void prepare(const RenderSettings& settings, int width, int height) override;
   // On a worker bound to the upload context where there is one (RenderTargets::prepare).
   bool prepareImages(const RenderSettings& settings, int width, int height,
@@ -181,7 +182,7 @@ class SplatRenderer : public Renderer {
   // A budgeted frame (the window's refinement) is drawn whole in tiles in one step where auto
   // chooses them and their last frame here, at the cost a slab entry it took, would take at
   // most this long: a UI frame under the 100 ms the window keeps to. Before the tiles' first
-  // frame here they are tried (on a GPU they took a tenth of the rasterizer's time).
+  // frame here they are tried (on a GPU they can cost a small part of the rasterizer's time).
   static constexpr double kTileStepMs = 80.0;
   // Test hooks: another limit than kTileStepMs; the auto splatter's costs.
   void setTileStepMs(double ms) { tileStepMs_ = ms; }
@@ -477,8 +478,8 @@ class SplatRenderer : public Renderer {
   bool passHalfCulling_ = true;  // setPassHalfCulling
   TwoWayTuner passTuner_;        // slabPasses auto: one pass a slab (way 0) or two (way 1)
   unsigned passWaysDrawn_ = 0;   // bit w: a frame drew way w (its first use paid for)
-  // Splatter auto: rasterized (way 0) or in tiles (way 1), the tiles tried first: on the H200
-  // they drew the default frames in 0.05-0.09x the rasterizer's time, so a single picture (and
+  // Splatter auto: rasterized (way 0) or in tiles (way 1), the tiles tried first: on a GPU
+  // they draw the default frames in a small part of the rasterizer's time, so a single picture (and
   // the window's first refinement) takes them.
   TwoWayTuner splatterTuner_{1};
   // The compute splatter's programs failed to build on this GL: auto rasterizes from then on,

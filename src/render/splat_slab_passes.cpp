@@ -111,7 +111,7 @@ int SplatRenderer::slabImageOf(size_t s) const {
 
 void SplatRenderer::beginCompositeSlab(size_t s) {
   // Whole-image clears: llvmpipe clears a whole image by marking its tiles (scissored, it
-  // writes every pixel: engine's frames took 6% longer), GPUs have fast clears too, and on
+  // writes every pixel, which lengthens frames), GPUs have fast clears too, and on
   // llvmpipe (Mesa 22.3) a scissored clear of the second buffer left old normal sums behind.
   // With paired slabs this also empties, outside this slab's rectangle, the image the next
   // slab reads as its neighbour's.

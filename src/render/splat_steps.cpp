@@ -22,11 +22,11 @@ bool SplatRenderer::drawSlabChunks(double budgetMs, Clock::time_point start) {
   // termination test, every few slabs). A chunk holds whole slabs while they fit; a slab too costly
   // for the time left is drawn in ranges of entries over several steps (its sums are
   // order-independent, so the picture is the same), and its finish, a pass over the slab's
-  // rectangle that on llvmpipe at 1024x768 costs more than a UI frame's whole budget (60-140 ms on
-  // engine), in bands of rows (each pixel's pass is its own) over as many steps as it needs.
-  // Entries drawn before anything is measured, and the fewest a range holds; both fewer where
-  // the largest footprints are huge (a small volume filling the window: a few of its splats
-  // cost as much as thousands of an ordinary view's).
+  // rectangle that on llvmpipe can cost more than a UI frame's whole budget, in bands of rows (each
+  // pixel's pass is its own) over as many steps as it needs. Entries drawn before anything is
+  // measured, and the fewest a range holds; both fewer where the largest footprints are huge (a
+  // small volume filling the window: a few of its splats cost as much as thousands of an ordinary
+  // view's).
   constexpr double kFirstFragments = 2.0e6;
   const size_t kFirstChunk =
       size_t(std::clamp(kFirstFragments / frame_.fragmentsPerEntry, 1.0, 2048.0));
@@ -283,8 +283,8 @@ bool SplatRenderer::stepFrame(double budgetMs) {
     frame_.slabsDone = drewSlabs = true;
   }
   if (std::isfinite(budgetMs)) {
-    // The final pass, over the whole picture (llvmpipe: 10 ms at 1024x768, 45 ms at 2200x1600,
-    // about 100 ms at 3840x2160), in bands of rows that fit what the step has left, over as
+    // The final pass, over the whole picture (its cost grows with the pixels: on llvmpipe in a
+    // large window past a step's budget), in bands of rows that fit what the step has left, over as
     // many steps as it needs (at least a band where it is a step's first work).
     bool drewFinal = false;
     while (frame_.finalRow < frame_.height) {
@@ -324,8 +324,8 @@ bool SplatRenderer::stepFrame(double budgetMs) {
   }
   // Auto passes: this frame's splat stage a slab entry, for the way it took (the GPU
   // partition's entries are only counted above). A way's first frame in this renderer is not
-  // counted: it pays once for what the driver makes on first use (the H200 timed engine's
-  // first two-pass frame dearer than one pass, and kept one pass at 1.8x the frame).
+  // counted: it pays once for what the driver makes on first use (counted, that cost could make
+  // the faster way look dearer, and the slower one would be kept).
   if (frame_.quarters && !frame_.tiles) {
     const int way = frame_.slabPasses - 1;
     const bool firstUse = (passWaysDrawn_ & (1u << way)) == 0;

@@ -61,9 +61,9 @@ void SplatRenderer::reportSplatterCost() {
   if (!autoTiles(frame_.settings) || !tileComposite(post, shading)) return;
   // Per entry of the whole frame: early termination leaves the rasterizer's later slabs
   // undrawn, and what it saves counts for it.
-  // A tile frame that compiled programs or made the splatter's buffers paid once for them (the
-  // H200's first volume in the window: its tiles measured dearer than the rasterizer and were
-  // not tried again for 256 frames): not counted, so the next frame tries the tiles again.
+  // A tile frame that compiled programs or made the splatter's buffers paid once for them
+  // (counted, that cost could make the tiles look dearer than the rasterizer, and they would not
+  // be tried again for many frames): not counted, so the next frame tries the tiles again.
   if (frame_.tiles && frame_.tilesFirstUse) return;
   const size_t entries = frameEntryCount();
   if (entries > 0) splatterTuner_.report(frame_.tiles ? 1 : 0, stats_.splatMs / double(entries));
@@ -97,7 +97,7 @@ const std::shared_ptr<TileEwaPrograms>& SplatRenderer::tilePrograms() {
 
 bool SplatRenderer::drawTilesNow() {
   // The tiles read their records as one storage block: past its end they read nothing (the
-  // H200's 2 GiB block and 512^3 Marschner-Lobb's 4.8 GB of records drew rings with gaps).
+  // records of a 512^3 volume, larger than a GPU's block may be, drew rings with gaps).
   if (!tileRecordsFit()) {
     constexpr uint64_t kMiB = 1024 * 1024;
     const uint64_t records = uint64_t(classified_.splats.size()) * sizeof(TileEwaSplat);

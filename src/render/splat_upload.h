@@ -11,8 +11,8 @@
 namespace ewa {
 
 // On llvmpipe a buffer's upload costs what touching its fresh memory costs: Mesa clears a new
-// buffer, then copies the data in (bonsai's 4.6 M splats, 37 MB: 60-80 ms of one UI frame; a
-// 512^3 volume's 590 MB: 1.1 s). Here a worker binds `context` (one of the same share group),
+// buffer, then copies the data in (a mid-size volume's splats take most of a UI frame, a 512^3
+// volume's many frames' worth). Here a worker binds `context` (one of the same share group),
 // makes the buffer and finishes it, and the drawing thread takes it over once that is done.
 // Neither movable nor copyable: the worker reads this object's splats.
 class SplatUpload {

@@ -17,7 +17,7 @@ class ImagePresenter {
   // Copies one pixel of `texture` to the default framebuffer the way a same-size present does,
   // once: the window's first pictures are coarse ones, stretched, and the exact copy's first
   // use would fall on the frame that shows full quality (llvmpipe compiles a blit shader per
-  // filter and formats at its first draw: 35-45 ms, more than the rest of that frame). Called
+  // filter and formats at its first draw, which costs more than the rest of that frame). Called
   // in a UI frame that does not present, after one that did (the pixel is drawn over by the
   // next present before any swap).
   void warmUpExactCopy(unsigned texture);

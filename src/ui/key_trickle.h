@@ -17,7 +17,7 @@ struct KeyEvent {
 };
 
 // Dear ImGui 1.86 samples which keys are down once a frame, in NewFrame (its input queue came
-// in 1.87): a key pressed and released between two NewFrames (a quick tap while a 50 ms frame
+// in 1.87): a key pressed and released between two NewFrames (a quick tap while a slow frame
 // is drawn, or xdotool's 12 ms) was never seen down, so Enter, Backspace or Ctrl+A in a text
 // field were lost. This holds an event back, and every event after it so that order is kept,
 // when its key already changed since the last NewFrame, or when it is a release and some key

@@ -50,21 +50,21 @@ class ProgressiveRefinement {
   const RefinementReport& last() const { return last_; }
 
   // Whether a UI frame whose work was an unfinished step presents: the picture on screen stays
-  // the coarse one until the last step, so drawing it again (the image, the panels and the swap:
-  // 8 ms of a 40 ms frame on llvmpipe, a quarter of the time to full quality) is needed only
+  // the coarse one until the last step, so drawing it again (the image, the panels and the swap,
+  // on llvmpipe a large share of such a frame and of the time to full quality) is needed only
   // after `activity` (input, new splats) and every kPresentIntervalMs for the progress bar.
   // Once a frame's step has run, that step's own answer holds to the frame's end: a step given
   // the budget of a frame that does not present must not present when the interval passes
-  // during it (at 2400x1350 such frames took 70-114 ms, their present 40-80 ms beside a 30 ms
-  // step).
+  // during it (in a large window a present can cost more than the step itself, so such a frame
+  // would overrun its target).
   bool presentsStep(bool activity) const;
   // The frame was presented (any frame: the interval counts from it).
   void notePresented() {
     lastPresent_ = Clock::now();
     presentedThisFrame_ = true;
   }
-  // Four times a second: at 100 ms the presents took 4-7% of the default volume's time to full
-  // quality (docs/performance.md, "Progressive refinement").
+  // Four times a second: often enough for the progress bar, rarely enough that the presents add
+  // little to the time to full quality (docs/performance.md, "Progressive refinement").
   static constexpr double kPresentIntervalMs = 250.0;
 
  private:

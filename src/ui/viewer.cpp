@@ -30,12 +30,12 @@ constexpr double kLoadingWaitSeconds = 0.1;
 // Wait while splats are built on the worker thread: short, so the new set shows soon.
 constexpr double kBuildPollSeconds = 0.02;
 // Renderer time a UI frame gives the full-quality refinement at most, and the UI frame time
-// to stay under meanwhile (the bound is 100 ms; llvmpipe's swap and panel take
-// 10-30 ms of it).
+// to stay under meanwhile (the bound is 100 ms; the target leaves room in it for the
+// swap and the panel, which are slow on llvmpipe).
 constexpr double kRefineBudgetMs = 30.0;
 constexpr double kRefineFrameTargetMs = 50.0;
 // The most a UI frame waits for a new size's images made on a worker (movingImagesReady): the
-// frame still presents the stretched picture at the new size, which on llvmpipe costs 30-70 ms.
+// frame still presents the stretched picture at the new size, itself costly on llvmpipe.
 constexpr double kImageWaitMs = 15.0;
 
 bool envFlag(const char* name) {
@@ -90,7 +90,8 @@ ViewerWindow::ViewerWindow(platform::GlfwWindowContext& window, LoadedVolume ini
   // the first picture.
   if (levelOfDetail_) requestFullLevel();
   // Shader failures throw here: one line, exit 1. The window's first full-quality frame then
-  // finds its programs, images and tables made (they held its first refinement step 190 ms).
+  // finds its programs, images and tables made (made there, they would stall its first
+  // refinement step well past a UI frame's budget).
   const glm::ivec2 fb = window_.framebufferSize();
   lod_.prepareFullLevel(settings_, fb.x, fb.y);
 }
@@ -140,7 +141,7 @@ double ViewerWindow::now() const {
 
 bool ViewerWindow::busy() const {
   // A save on its worker too: the panel counts its seconds, and its end is shown when it comes
-  // (an idle window would see it only at its next wake, 10 s later).
+  // (an idle window would see it only at its next idle wake).
   return loadJob_.running() || saveJob_.running() || capturing() || shotWrite_.valid() ||
          buildPending_ || liveTf_.building() || imagesPending_ || presentNext_;
 }
@@ -351,7 +352,7 @@ bool ViewerWindow::drawFrame(bool activity) {
   // A resize under way (another size than the last UI frame's): this frame shows the last
   // picture stretched, and the view is drawn once a frame keeps the size, so a drag through
   // many sizes does not make a set of images at each (on llvmpipe a coarse level's new images
-  // and the window's new buffers in one frame passed 100 ms).
+  // and the window's new buffers in one frame overrun the 100 ms bound).
   const bool resizing = hasImage_ && fb != lastFrameSize_;
   lastFrameSize_ = fb;
   const bool stale = !hasImage_ || renderedCamera_ != controller_.revision() ||
@@ -368,8 +369,8 @@ bool ViewerWindow::drawFrame(bool activity) {
     buildPending_ = false;
   } else if (!hasImage_ && levelOfDetail_ && !presenter_.stretchWarmedUp()) {
     // A UI frame of its own before the first picture, not presented: the blit that will show
-    // that picture compiled (55-80 ms on llvmpipe; in the picture's present it made that frame
-    // 100-330 ms, in the window's first frame beside ImGui's set-up about 100 ms).
+    // that picture compiled (slow on llvmpipe: in the picture's present, or in the window's
+    // first frame beside ImGui's set-up, it would push that frame past the bound).
     const int divisor = LodPolicy::level(lod_.coarsestLevel()).imageDivisor;
     presenter_.warmUpStretch(std::max(1, fb.x / divisor), std::max(1, fb.y / divisor));
     deferPresent = true;  // the next frame is drawn (the first picture's)
@@ -385,7 +386,7 @@ bool ViewerWindow::drawFrame(bool activity) {
     }
     const double ms = renderLevel(level, controller_.camera(), fb);
     // Presented by the next UI frame (the refinement's first, which only starts it): the
-    // present and swap beside the level's first frame made it 100-330 ms on llvmpipe.
+    // present and swap beside the level's first frame would push it past the bound on llvmpipe.
     deferPresent = levelOfDetail_;
     if (levelOfDetail_) {
       calibrate_ = true;
@@ -408,8 +409,8 @@ bool ViewerWindow::drawFrame(bool activity) {
     // change abandons the refinement under way.
     const int level = levelOfDetail_ ? policy_.movingLevel() : 0;
     // The first picture at a new size is presented in the next UI frame: llvmpipe compiles the
-    // blit of an image of a size new to it at the first present, 30-50 ms beside the level's
-    // own 30-50 ms and the swap.
+    // blit of an image of a size new to it at the first present, which costs about as much as
+    // drawing the level, and the swap comes on top.
     deferPresent = levelOfDetail_ && fb != renderedSize_;
     movingRenderMs_ = renderLevel(level, controller_.camera(), fb);
     if (levelOfDetail_) movingLevelDrawn_ = level;  // reported with the whole frame's time
@@ -444,7 +445,7 @@ bool ViewerWindow::drawFrame(bool activity) {
     presentNext_ = true;
   } else if (!rendered && !screenshotNow && !presentNow && !refinement_.presentsStep(activity)) {
     imgui_.endFrame();  // the screen keeps the last presented frame
-    // Not in the first picture's frames, which take 70-110 ms on llvmpipe without it.
+    // Not in the first picture's frames, already near the bound on llvmpipe without it.
     if (pictureShown_) presenter_.warmUpExactCopy(lod_.outputTexture());
   } else {
     presenter_.present(lod_.outputTexture(), lod_.imageWidth(), lod_.imageHeight(), fb.x, fb.y);

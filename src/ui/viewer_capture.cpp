@@ -77,7 +77,7 @@ void ViewerWindow::screenshot(const glm::ivec2& fb) {
   }
   // Full quality of this view at this size on screen: written now. Else it is refined over the
   // next UI frames (a coarse picture on screen, a refinement under way, a larger size), never
-  // drawn whole in one frame (seconds on llvmpipe).
+  // drawn whole in one frame (on llvmpipe far longer than a UI frame may take).
   const bool onScreen = hasImage_ && lod_.lastLevel() == 0 && !refinement_.active() &&
                         lod_.imageWidth() == c.size.x && lod_.imageHeight() == c.size.y &&
                         renderedCamera_ == c.cameraRevision &&

@@ -200,8 +200,8 @@ class ViewerWindow {
   std::string renderError_;  // the last render failure, until a render succeeds
   LodPolicy policy_;
   // The moving level drawFrame drew and its render time, reported to the policy with the rest of
-  // the UI frame (panels, present and swap: 10-30 ms on llvmpipe; the limit is on UI frames);
-  // level -1: none.
+  // the UI frame (panels, present and swap, a real share of it on llvmpipe; the limit is on UI
+  // frames); level -1: none.
   int movingLevelDrawn_ = -1;
   double movingRenderMs_ = 0.0;
   ProgressiveRefinement refinement_;
@@ -233,8 +233,9 @@ class ViewerWindow {
   WindowTurntable turntable_;
   PendingCapture capture_;
   std::deque<PendingCapture> queuedShots_;  // screenshots asked for while another capture ran
-  // A screenshot's PNG being encoded and written on a worker (150 ms at 2048x1536), and its
-  // file; the future's destructor waits for it, so a file begun is finished on exit.
+  // A screenshot's PNG being encoded and written on a worker (a large one takes longer than a UI
+  // frame may), and its file; the future's destructor waits for it, so a file begun is finished
+  // on exit.
   std::future<void> shotWrite_;
   std::string shotPath_;
   std::string recorded_;  // camera path lines, when recording
