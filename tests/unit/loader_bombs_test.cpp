@@ -112,6 +112,11 @@ TEST(HostileHeaders, ABzip2PromiseBeyondAnyRealRatioIsRefusedBeforeDecompressing
 }
 
 TEST(HostileHeaders, AnAddressSpaceLimitBoundsWhatAHeaderMayAllocate) {
+#if defined(__SANITIZE_ADDRESS__)
+  // AddressSanitizer reserves terabytes of address space for its shadow: under a 3 GiB limit
+  // its allocator cannot map the exception the check throws.
+  GTEST_SKIP() << "not under AddressSanitizer";
+#endif
   const pid_t child = fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
