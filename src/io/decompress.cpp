@@ -7,6 +7,7 @@
 
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
+#include "io/zlib_inflater.h"
 
 namespace ewa {
 
@@ -16,25 +17,6 @@ namespace {
 constexpr uint64_t kMaxRatio = 1032;
 // zlib counts in uInt; feed and drain it in pieces it can count.
 constexpr size_t kMaxChunk = size_t{1} << 30;
-
-class Inflater {
- public:
-  Inflater() {
-    // 15 + 32: maximum window, automatic zlib or gzip header detection.
-    ok_ = inflateInit2(&zs_, 15 + 32) == Z_OK;
-  }
-  ~Inflater() {
-    if (ok_) inflateEnd(&zs_);
-  }
-  Inflater(const Inflater&) = delete;
-  Inflater& operator=(const Inflater&) = delete;
-  bool ok() const { return ok_; }
-  z_stream& stream() { return zs_; }
-
- private:
-  z_stream zs_{};
-  bool ok_ = false;
-};
 
 }  // namespace
 
@@ -46,7 +28,7 @@ std::vector<uint8_t> inflateExact(const std::string& path, const uint8_t* data, 
     failLoad(path, prefix + std::to_string(size) + " compressed bytes cannot inflate to the " +
                        std::to_string(expectedSize) + " bytes the header promises");
   }
-  Inflater inflater;
+  ZlibInflater inflater(15 + 32);  // maximum window, zlib or gzip header detected
   if (!inflater.ok()) failLoad(path, prefix + "cannot start zlib");
   z_stream& zs = inflater.stream();
 
@@ -128,7 +110,7 @@ std::vector<uint8_t> inflateWindow(const std::string& path, const uint8_t* data,
   const std::string prefix = what + ": ";
   if (skip > maxBytes) skip = maxBytes;
   checkAllocation(path, maxBytes - skip, what + " after decompression");
-  Inflater inflater;
+  ZlibInflater inflater(15 + 32);  // maximum window, zlib or gzip header detected
   if (!inflater.ok()) failLoad(path, prefix + "cannot start zlib");
   z_stream& zs = inflater.stream();
   const auto limit = static_cast<size_t>(maxBytes - skip);

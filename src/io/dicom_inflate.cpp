@@ -8,29 +8,9 @@
 
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
+#include "io/zlib_inflater.h"
 
 namespace ewa {
-
-namespace {
-
-// A raw-deflate z_stream, ended however the caller leaves.
-class RawInflater {
- public:
-  RawInflater() { ok_ = inflateInit2(&zs_, -MAX_WBITS) == Z_OK; }
-  ~RawInflater() {
-    if (ok_) inflateEnd(&zs_);
-  }
-  RawInflater(const RawInflater&) = delete;
-  RawInflater& operator=(const RawInflater&) = delete;
-  bool ok() const { return ok_; }
-  z_stream& stream() { return zs_; }
-
- private:
-  z_stream zs_{};
-  bool ok_ = false;
-};
-
-}  // namespace
 
 uint64_t dicomInflateLimit(uint64_t deflatedBytes) {
   const uint64_t byRatio = deflatedBytes > kDicomInflateCap / kDicomInflateRatio
@@ -43,7 +23,7 @@ std::vector<uint8_t> inflateDicomDataSet(const std::string& path, const uint8_t*
                                          size_t size) {
   const std::string prefix = "the deflated DICOM data set ";
   const uint64_t limit = dicomInflateLimit(size);
-  RawInflater inflater;
+  ZlibInflater inflater(-MAX_WBITS);  // raw deflate
   if (!inflater.ok()) failLoad(path, prefix + "cannot be read: zlib does not start");
   z_stream& zs = inflater.stream();
   std::vector<uint8_t> out;
