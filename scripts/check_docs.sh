@@ -9,7 +9,6 @@
 #     "before the fix"),
 #   - a commit hash (7 to 40 hex digits in backticks or parentheses),
 #   - an issue reference ("issue #12") or an issue's target ("the speed issue's target").
-# Benchmark run folders (bench/runs/YYYY-MM-DD-MACHINE) may be named.
 # Exits 1 when anything matched, 0 otherwise. Run it from anywhere: scripts/check_docs.sh
 set -u
 cd "$(dirname "$0")/.." || exit 2
@@ -39,13 +38,10 @@ if [ ${#files[@]} -eq 0 ]; then
   exit 2
 fi
 
-# A benchmark run's folder name (bench/runs/2026-12-05-llvmpipe-2core) is a path, not a date
-# in the prose: it is blanked before matching.
 hits=$(REGEX="$regex" perl -ne '
   BEGIN { $re = $ENV{REGEX} }
   my $line = $_;
-  (my $text = $line) =~ s{(?:bench/runs/)?\b\d{4}-\d\d-\d\d-[A-Za-z0-9][A-Za-z0-9-]*}{RUN}g;
-  if ($text =~ /$re/i) { chomp $line; print "$ARGV:$.: $line\n" }
+  if ($line =~ /$re/i) { chomp $line; print "$ARGV:$.: $line\n" }
   close ARGV if eof;
 ' "${files[@]}")
 if [ -n "$hits" ]; then
