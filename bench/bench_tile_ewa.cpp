@@ -43,7 +43,7 @@ TileEwaFrame tileEwaFrame(const SplatRenderer& r, const Volume& vol, const Trans
   extent.kernelWidth = s.kernelWidth;
   SlabPartition partition;
   // The renderer's slab thickness (SplatRenderer::slabThickness).
-  const double thickness = std::max(0.25, s.slabThickness) * viewSpacing(local.rotation(), sp);
+  const double thickness = slabThicknessAlongView(s.slabThickness, local.rotation(), sp);
   partition.build(splats, {}, vol.origin(), local.viewMatrix(), thickness, params.cullDepth,
                   extent);
   for (size_t k = 0; k < partition.slabs().size(); ++k) {

@@ -18,6 +18,11 @@ double viewSpacing(const glm::dmat3& rotation, const glm::dvec3& spacing) {
   return minSpacing * std::exp2(steps / 8.0);
 }
 
+double slabThicknessAlongView(double voxels, const glm::dmat3& rotation,
+                              const glm::dvec3& spacing) {
+  return std::max(0.25, voxels) * viewSpacing(rotation, spacing);
+}
+
 void SlabPartition::build(const SplatSet& splats, const AttributeList& attributes,
                           const glm::dvec3& origin, const glm::dmat4& view, double thickness,
                           double nearCull, const DepthExtent& extent) {

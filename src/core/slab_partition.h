@@ -38,6 +38,10 @@ struct DepthExtent {
 // only now and then; exactly the spacing for isotropic voxels.
 double viewSpacing(const glm::dmat3& rotation, const glm::dvec3& spacing);
 
+// Slabs of `voxels` voxel depths (RenderSettings::slabThickness, at least 0.25) in world units
+// for a volume of this spacing seen through a camera of this rotation.
+double slabThicknessAlongView(double voxels, const glm::dmat3& rotation, const glm::dvec3& spacing);
+
 class SlabPartition {
  public:
   // Order entries carry the splat index in the low 30 bits and these flags: the slab is the

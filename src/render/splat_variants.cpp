@@ -120,7 +120,7 @@ int SplatRenderer::slabPassesFor(const RenderSettings& settings) const {
 
 double SplatRenderer::slabThickness(const RenderSettings& settings, const glm::dvec3& spacing,
                                     const glm::dmat3& rotation) {
-  return std::max(0.25, settings.slabThickness) * viewSpacing(rotation, spacing);
+  return slabThicknessAlongView(settings.slabThickness, rotation, spacing);
 }
 
 double SplatRenderer::preparePairTable(const RenderSettings& settings, double thickness) {
