@@ -39,6 +39,11 @@ void putFrame(const RenderStats& s, nlohmann::ordered_json& j) {
   j["gpu_partition"] = s.gpuPartition;
   j["splatter"] = s.cpu ? "cpu" : s.tiles ? "tiles" : "raster";
   j["slab_passes"] = s.slabPasses;
+  if (s.cpu) {
+    j["cpu_records_ms"] = s.cpuRecordsMs;
+    j["cpu_bin_ms"] = s.cpuBinMs;
+    j["cpu_tiles_ms"] = s.cpuTilesMs;
+  }
   j["gpu_bytes"] = s.gpuBytes;
   const double perSplat = gpuBytesPerSplat(s);
   j["gpu_bytes_per_splat"] = perSplat > 0.0 ? nlohmann::ordered_json(perSplat) : nullptr;
@@ -66,6 +71,9 @@ RenderStats summed(const std::vector<RenderStats>& channels) {
     t.partitionMs += s.partitionMs;
     t.splatMs += s.splatMs;
     t.compositeMs += s.compositeMs;
+    t.cpuRecordsMs += s.cpuRecordsMs;
+    t.cpuBinMs += s.cpuBinMs;
+    t.cpuTilesMs += s.cpuTilesMs;
     t.gpuBytes += s.gpuBytes;
   }
   return t;

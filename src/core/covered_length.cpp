@@ -47,10 +47,7 @@ RayInterval boxDepths(const glm::dvec3& origin, const glm::dvec3& direction, con
 }
 
 double coveredLength(double a, double b, const RayInterval& inBox, double stretch, double weight) {
-  const double nearDepth = std::max(a, inBox.near), farDepth = std::min(b, inBox.far);
-  const double inside = std::max(farDepth - nearDepth, 0.0) * stretch;
-  // Uncut: farDepth - nearDepth is b - a, and the weight is kept as it is.
-  return (nearDepth > a || farDepth < b) ? std::min(weight, inside) : weight;
+  return coveredLengthOf(a, b, inBox.near, inBox.far, stretch, weight);
 }
 
 }  // namespace ewa

@@ -2,6 +2,7 @@
 // the data's box. Mirrored line for line by shaders/covered_length.glsl.
 #pragma once
 
+#include <algorithm>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -38,5 +39,14 @@ RayInterval boxDepths(const glm::dvec3& origin, const glm::dvec3& direction, con
 // cuts the stretch at most the length inside (`stretch`: world length a unit of depth), so
 // the kernels' tails beyond the face add nothing.
 double coveredLength(double a, double b, const RayInterval& inBox, double stretch, double weight);
+// The same in the float type T, the box's depths as two numbers: coveredLength is its double
+// instance, the CPU splatter's per-pixel classification its float one.
+template <typename T>
+inline T coveredLengthOf(T a, T b, T boxNear, T boxFar, T stretch, T weight) {
+  const T nearDepth = std::max(a, boxNear), farDepth = std::min(b, boxFar);
+  const T inside = std::max(farDepth - nearDepth, T(0)) * stretch;
+  // Uncut: farDepth - nearDepth is b - a, and the weight is kept as it is.
+  return (nearDepth > a || farDepth < b) ? std::min(weight, inside) : weight;
+}
 
 }  // namespace ewa

@@ -96,4 +96,10 @@ void SlabPartition::build(const SplatSet& splats, const AttributeList& attribute
   }
 }
 
+bool slabsAdjacent(const Slab& a, const Slab& b) {
+  const double gap =
+      std::min(std::abs(a.farDepth - b.nearDepth), std::abs(b.farDepth - a.nearDepth));
+  return gap <= 1e-6 * std::max(a.farDepth - a.nearDepth, b.farDepth - b.nearDepth);
+}
+
 }  // namespace ewa

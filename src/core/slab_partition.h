@@ -21,6 +21,10 @@ struct Slab {
   uint32_t count = 0;
 };
 
+// True when one slab ends where the other begins (in either order): the pre-integrated
+// segment runs on from the one to the other.
+bool slabsAdjacent(const Slab& a, const Slab& b);
+
 // What the partition needs to know of the kernels: their reach (kernel_reach.h), and the
 // camera rotation, voxel spacing and kernel width that give each kernel's depth variance.
 struct DepthExtent {

@@ -6,19 +6,6 @@
 
 namespace ewa {
 
-namespace {
-
-// GL_LINEAR at coordinate (v (n - 1) + 0.5) / n: texel position v (n - 1), between the texels
-// i0 and i1 on either side (clamped to the edge), t of the way to i1.
-void linearTexels(double v, int n, int* i0, int* i1, double* t) {
-  const double x = std::clamp(v, 0.0, 1.0) * double(n - 1);
-  *i0 = std::min(int(std::floor(x)), n - 1);
-  *i1 = std::min(*i0 + 1, n - 1);
-  *t = x - double(*i0);
-}
-
-}  // namespace
-
 std::vector<glm::vec4> slabPairTexels(const PreintegrationTable& table,
                                       const TransferFunction& tf) {
   const int n = table.size();
@@ -53,32 +40,14 @@ std::vector<float> extinctionPrefix(const TransferFunction& tf, double lo, doubl
 }
 
 double segmentExtinction(const std::vector<float>& prefix, double front, double back) {
-  const int n = int(prefix.size());
-  const auto at = [&](double x) {
-    int i0, i1;
-    double t;
-    linearTexels(x, n, &i0, &i1, &t);
-    return (1.0 - t) * double(prefix[size_t(i0)]) + t * double(prefix[size_t(i1)]);
-  };
-  const double mid = 0.5 * (front + back);
-  const double half = 0.5 * std::max(std::abs(back - front), 1.0 / double(n - 1));
-  const double a = std::clamp(mid - half, 0.0, 1.0), b = std::clamp(mid + half, 0.0, 1.0);
-  return b > a ? std::max(0.0, (at(b) - at(a)) / (b - a)) : 0.0;
+  return segmentExtinctionOf(prefix.data(), int(prefix.size()), front, back);
 }
 
 glm::dvec4 classifySlabPair(const std::vector<glm::vec4>& texels, int size,
                             const std::vector<float>& prefix, double front, double back,
                             double length) {
-  int f0, f1, b0, b1;
-  double tf, tb;
-  linearTexels(front, size, &f0, &f1, &tf);
-  linearTexels(back, size, &b0, &b1, &tb);
-  const auto at = [&](int f, int b) { return glm::dvec4(texels[size_t(f) * size + b]); };
-  const glm::dvec4 e = (1.0 - tf) * ((1.0 - tb) * at(f0, b0) + tb * at(f0, b1)) +
-                       tf * ((1.0 - tb) * at(f1, b0) + tb * at(f1, b1));
-  const double tau = segmentExtinction(prefix, front, back);
-  const double alpha = -std::expm1(-std::max(0.0, length) * tau);
-  return glm::dvec4(glm::dvec3(e) * alpha, alpha);
+  return classifySlabPairOf(texels.data(), size, prefix.data(), int(prefix.size()), front, back,
+                            length);
 }
 
 }  // namespace ewa

@@ -2,6 +2,8 @@
 // and the per-pixel classification of a pair of slab values that the slab shader mirrors.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <glm/vec4.hpp>
 #include <vector>
 
@@ -43,5 +45,49 @@ double segmentExtinction(const std::vector<float>& prefix, double front, double 
 glm::dvec4 classifySlabPair(const std::vector<glm::vec4>& texels, int size,
                             const std::vector<float>& prefix, double front, double back,
                             double length);
+
+// The formulas above in the float type T over bare arrays: the double functions are their
+// double instances, the CPU splatter's per-pixel classification their float ones.
+
+// GL_LINEAR at coordinate (v (n - 1) + 0.5) / n: texel position v (n - 1), between texels i0
+// and i1 on either side (clamped to the edge), t of the way to i1.
+template <typename T>
+inline void linearTexelsOf(T v, int n, int& i0, int& i1, T& t) {
+  const T x = std::clamp(v, T(0), T(1)) * T(n - 1);
+  i0 = std::min(int(x), n - 1);  // x >= 0: int() is floor
+  i1 = std::min(i0 + 1, n - 1);
+  t = x - T(i0);
+}
+
+template <typename T>
+inline T segmentExtinctionOf(const float* prefix, int n, T front, T back) {
+  const auto at = [&](T x) {
+    int i0, i1;
+    T t;
+    linearTexelsOf(x, n, i0, i1, t);
+    return (T(1) - t) * T(prefix[i0]) + t * T(prefix[i1]);
+  };
+  const T mid = T(0.5) * (front + back);
+  const T half = T(0.5) * std::max(std::abs(back - front), T(1) / T(n - 1));
+  const T a = std::clamp(mid - half, T(0), T(1)), b = std::clamp(mid + half, T(0), T(1));
+  return b > a ? std::max(T(0), (at(b) - at(a)) / (b - a)) : T(0);
+}
+
+// classifySlabPair: premultiplied (r, g, b, alpha); `texels` size x size, `prefix` n long.
+template <typename T>
+inline glm::vec<4, T> classifySlabPairOf(const glm::vec4* texels, int size, const float* prefix,
+                                         int n, T front, T back, T length) {
+  const T tau = segmentExtinctionOf(prefix, n, front, back);
+  const T alpha = -std::expm1(-std::max(T(0), length) * tau);
+  if (!(alpha > T(0))) return glm::vec<4, T>(T(0));  // the colour would be scaled by 0
+  int f0, f1, b0, b1;
+  T tf, tb;
+  linearTexelsOf(front, size, f0, f1, tf);
+  linearTexelsOf(back, size, b0, b1, tb);
+  const auto at = [&](int f, int b) { return glm::vec<4, T>(texels[size_t(f) * size + b]); };
+  const glm::vec<4, T> e = (T(1) - tf) * ((T(1) - tb) * at(f0, b0) + tb * at(f0, b1)) +
+                           tf * ((T(1) - tb) * at(f1, b0) + tb * at(f1, b1));
+  return glm::vec<4, T>(glm::vec<3, T>(e) * alpha, alpha);
+}
 
 }  // namespace ewa

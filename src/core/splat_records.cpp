@@ -13,14 +13,17 @@
 namespace ewa {
 
 glm::vec4 transferAt(const std::vector<glm::vec4>& table, float value) {
+  return transferAt(table.data(), int(table.size()), value);
+}
+
+glm::vec4 transferAt(const glm::vec4* table, int n, float value) {
   // GL_LINEAR at (value * (n - 1) + 0.5) / n: between entries floor(x) and floor(x) + 1.
-  const int n = int(table.size());
   if (n == 0) return glm::vec4(0.0f);
   const float x = std::clamp(value, 0.0f, 1.0f) * float(n - 1);
   const int i = std::min(int(x), n - 1);
   const int j = std::min(i + 1, n - 1);
   const float t = x - float(i);
-  return table[size_t(i)] * (1.0f - t) + table[size_t(j)] * t;
+  return table[i] * (1.0f - t) + table[j] * t;
 }
 
 namespace {
@@ -33,10 +36,11 @@ bool setupSplat(const PackedSplat& s, const PackedAttributes* attributes, const 
   const glm::vec4 tf = transferAt(f.transfer, value);
   UnpackedAttributes a;
   if (attributes) a = unpackAttributes(*attributes);
-  if (!a.surface && !(tf.a > 0.0f)) return false;
+  // Post: zero-opacity voxels next to visible ones shape the mean value; they stay.
+  if (!f.postClassified && !a.surface && !(tf.a > 0.0f)) return false;
   glm::dvec3 at = f.origin + glm::dvec3(SplatSet::i(s), SplatSet::j(s), SplatSet::k(s)) * f.spacing;
   glm::dmat3 cov = volumeCov;
-  double mass = double(tf.a) * voxelVolume;
+  double mass = (f.postClassified ? 1.0 : double(tf.a)) * voxelVolume;
   if (a.surface) {
     at += a.normal * (a.offset * f.params.minSpacing);
     cov = surfaceCovariance(rotation, sigma, a.normal);
@@ -51,7 +55,9 @@ bool setupSplat(const PackedSplat& s, const PackedAttributes* attributes, const 
   const Footprint fp = f.footprint(u, cov, f.proj, f.params);
   if (!fp.visible) return false;
   const glm::dvec3 toEye = f.proj.orthographic ? glm::dvec3(0.0, 0.0, 1.0) : glm::normalize(-u);
-  const glm::dvec3 rgb = headlightShade(glm::dvec3(tf), rotation * a.normal, toEye, f.lighting);
+  const glm::dvec3 rgb =
+      f.postClassified ? rotation * a.normal
+                       : headlightShade(glm::dvec3(tf), rotation * a.normal, toEye, f.lighting);
   const double cutoff = f.params.cutoff;
   out.box = glm::vec4(glm::dvec4(fp.center, std::sqrt(cutoff * fp.covariance[0][0]),
                                  std::sqrt(cutoff * fp.covariance[1][1])));

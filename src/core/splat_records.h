@@ -54,15 +54,20 @@ struct SplatFrameSetup {
   // read with linear interpolation as the GL's 1D texture reads it.
   std::vector<glm::vec4> transfer;
   std::vector<HalfSpace> clipPlanes;  // camera space; empty: nothing clipped
+  // Post-classified composite: a splat carries its value and a unit extinction (its weight),
+  // transparent voxels beside visible ones included (they shape the mean value).
+  bool postClassified = false;
   FootprintFunction footprint = computeFootprint;
 };
 
 // The transfer table at normalized `value` as the splat shaders' texture() reads it.
 glm::vec4 transferAt(const std::vector<glm::vec4>& table, float value);
+glm::vec4 transferAt(const glm::vec4* table, int size, float value);
 
-// One record per splat of `splats` (attributes: one per splat, or none), pre-classified: the
+// One record per splat of `splats` (attributes: one per splat, or none). Pre-classified: the
 // colour shaded with the voxel normal where the lighting is on and the splat has one, the
-// optical depth the voxel's extinction times its volume (a surface splat's its layer's). In
+// optical depth the voxel's extinction times its volume (a surface splat's its layer's).
+// Post-classified: the weight the voxel's volume, the colour its camera-space normal. In
 // parallel; `out` is resized.
 void makeSplatRecords(const SplatSet& splats, const AttributeList& attributes,
                       const SplatFrameSetup& setup, std::vector<SplatRecord>& out);

@@ -51,6 +51,25 @@ inline bool boxPixels(const glm::vec4& box, int width, int height, int& x0, int&
   return true;
 }
 
+// Calls `take(item)` for the tile's items in slab order, front to back or (`reverse`) back to
+// front, until it returns false.
+template <typename Take>
+__attribute__((always_inline)) inline void forEachTileItem(const TileWork& work, bool reverse,
+                                                           Take&& take) {
+  const auto& runs = *work.bins;
+  if (!reverse) {
+    for (const auto& run : runs)
+      for (const TileCompositor::Item& item : run[work.tile])
+        if (!take(item)) return;
+    return;
+  }
+  for (size_t r = runs.size(); r-- > 0;) {
+    const std::vector<TileCompositor::Item>& list = runs[r][work.tile];
+    for (size_t i = list.size(); i-- > 0;)
+      if (!take(list[i])) return;
+  }
+}
+
 // One tile's pixels as planes (structure of arrays, rows kTile apart): a row of 16 pixels is
 // two AVX2 vectors.
 struct TilePlanes {
@@ -70,7 +89,9 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
   const TileCompositeSettings& s = *work.settings;
   const int px0 = work.px0, py0 = work.py0, w = work.w, h = work.h;
   const float cutoff = float(s.cutoff);
-  const float termination = float(s.termination);
+  const bool backToFront = s.backToFront;
+  // Back to front nothing terminates: every slab is drawn.
+  const float termination = backToFront ? 2.0f : float(s.termination);
   const float erfReach = float(std::min(s.profile.erfReach, kClipUnbounded));
   const float halfScale = 0.5f * float(s.profile.scale);
   TilePlanes image, sums;
@@ -102,90 +123,91 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
       // The slab pass's pre-classified composite: opacity 1 - exp(-depth), front to back.
       const float depth = sums.a[p];
       const float alpha = depth > 0.0f ? 1.0f - expOf(-depth) : 0.0f;
-      const float weight = depth > 0.0f ? (1.0f - image.a[p]) * alpha / depth : 0.0f;
-      image.r[p] += weight * sums.r[p];
-      image.g[p] += weight * sums.g[p];
-      image.b[p] += weight * sums.b[p];
-      image.a[p] += (1.0f - image.a[p]) * alpha;
+      // Front to back the slab goes under what is there, back to front over it.
+      const float under = backToFront ? 1.0f : 1.0f - image.a[p];
+      const float over = backToFront ? 1.0f - alpha : 1.0f;
+      const float weight = depth > 0.0f ? under * alpha / depth : 0.0f;
+      image.r[p] = over * image.r[p] + weight * sums.r[p];
+      image.g[p] = over * image.g[p] + weight * sums.g[p];
+      image.b[p] = over * image.b[p] + weight * sums.b[p];
+      image.a[p] = over * image.a[p] + under * alpha;
       sums.r[p] = sums.g[p] = sums.b[p] = sums.a[p] = 0.0f;
       live[p] = live[p] > 0.0f && image.a[p] < termination ? 1.0f : 0.0f;
       open += live[p] > 0.0f;
     }
     any = false;
   };
-  for (const std::vector<std::vector<TileCompositor::Item>>& run : *work.bins) {
-    for (const TileCompositor::Item& item : run[work.tile]) {
-      if (item.slab != current) {
-        finishSlab();
-        if (open == 0) break;  // every pixel opaque: the tile is done
-        current = item.slab;
-      }
-      const SplatRecord& rec = (*work.records)[item.entry & SlabPartition::kIndexMask];
-      int x0, y0, x1, y1;
-      if (!boxPixels(rec.box, s.width, s.height, x0, y0, x1, y1)) continue;
-      x0 = std::max(x0, px0) - px0;
-      y0 = std::max(y0, py0) - py0;
-      x1 = std::min(x1, px0 + w - 1) - px0;
-      y1 = std::min(y1, py0 + h - 1) - py0;
-      const bool openNear = (item.entry & SlabPartition::kFirstSlab) != 0;
-      const bool openFar = (item.entry & SlabPartition::kLastSlab) != 0;
-      const Slab& slab = (*work.slabs)[item.slab];
-      const float zNear = float(std::clamp(slab.nearDepth, -kClipUnbounded, kClipUnbounded));
-      const float zFar = float(std::clamp(slab.farDepth, -kClipUnbounded, kClipUnbounded));
-      const float cr = rec.color.r, cg = rec.color.g, cb = rec.color.b;
-      const float qa = rec.conic.x, qb = rec.conic.y, qc = rec.conic.z, amplitude = rec.conic.w;
-      const float cx = rec.box.x, mu0 = rec.depth.x, slopeX = rec.depth.y, slopeY = rec.depth.z;
-      const float toErf = 1.0f / (std::sqrt(2.0f) * rec.depth.w);  // slabFraction's s
-      // Unclipped, every pixel's share lies between the same depths.
-      float wholeLo, wholeHi;
-      slabShareBoundsOf(zNear, zFar, openNear, openFar, -float(kClipUnbounded),
-                        float(kClipUnbounded), wholeLo, wholeHi);
-      any = true;
-      for (int y = y0; y <= y1; ++y) {
-        const float dy = float(py0 + y) + 0.5f - rec.box.y;
-        const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
-        // Pixels [first, first + n) of the row, 32-byte aligned; every term computed, each
-        // pixel's share masked.
-        const auto addRun = [&](int first, auto n) __attribute__((always_inline)) {
-          const int at = y * kTile + first;
-          float* __restrict sr = static_cast<float*>(__builtin_assume_aligned(sums.r + at, 32));
-          float* __restrict sg = static_cast<float*>(__builtin_assume_aligned(sums.g + at, 32));
-          float* __restrict sb = static_cast<float*>(__builtin_assume_aligned(sums.b + at, 32));
-          float* __restrict sa = static_cast<float*>(__builtin_assume_aligned(sums.a + at, 32));
-          const float* lv = static_cast<const float*>(__builtin_assume_aligned(live + at, 32));
-          const float* kn = static_cast<const float*>(__builtin_assume_aligned(keptNear + at, 32));
-          const float* kf = static_cast<const float*>(__builtin_assume_aligned(keptFar + at, 32));
-          const float* xc =
-              static_cast<const float*>(__builtin_assume_aligned(centreX + first, 32));
-          for (int i = 0; i < decltype(n)::value; ++i) {
-            const int x = first + i;
-            const float dx = xc[i] - cx;
-            const float r = qa * dx * dx + 2.0f * qb * dx * dy + rowR;
-            float lo = wholeLo, hi = wholeHi;
-            if (Clipped) slabShareBoundsOf(zNear, zFar, openNear, openFar, kn[i], kf[i], lo, hi);
-            // clippedSlabFraction in float, as the shaders take it.
-            const float mu = rowMu + slopeX * dx;
-            const float share = slabShareOf(mu, toErf, lo, hi, erfReach, halfScale, Series);
-            const bool take = (x >= x0) & (x <= x1) & (lv[i] > 0.0f) & (hi > lo);
-            const float weight =
-                amplitude * windowedGaussianOf(std::min(r, cutoff), cutoff) * share;
-            const float mask = take ? 1.0f : 0.0f;  // a product: no branch
-            const float depth = weight * mask;
-            sr[i] += cr * depth;
-            sg[i] += cg * depth;
-            sb[i] += cb * depth;
-            sa[i] += depth;
-          }
-        };
-        // A footprint within one half of the tile's row takes one vector of 8, else the row.
-        if ((x0 >> 3) == (x1 >> 3))
-          addRun(x0 & ~7, std::integral_constant<int, 8>());
-        else
-          addRun(0, std::integral_constant<int, kTile>());
-      }
+  forEachTileItem(work, backToFront, [&](const TileCompositor::Item& item) {
+    if (item.slab != current) {
+      finishSlab();
+      if (open == 0) return false;  // every pixel opaque: the tile is done
+      current = item.slab;
     }
-    if (open == 0) break;
-  }
+    const SplatRecord& rec = (*work.records)[item.entry & SlabPartition::kIndexMask];
+    int x0, y0, x1, y1;
+    if (!boxPixels(rec.box, s.width, s.height, x0, y0, x1, y1)) return true;
+    x0 = std::max(x0, px0) - px0;
+    y0 = std::max(y0, py0) - py0;
+    x1 = std::min(x1, px0 + w - 1) - px0;
+    y1 = std::min(y1, py0 + h - 1) - py0;
+    const bool openNear = (item.entry & SlabPartition::kFirstSlab) != 0;
+    const bool openFar = (item.entry & SlabPartition::kLastSlab) != 0;
+    const Slab& slab = (*work.slabs)[item.slab];
+    const float zNear = float(std::clamp(slab.nearDepth, -kClipUnbounded, kClipUnbounded));
+    const float zFar = float(std::clamp(slab.farDepth, -kClipUnbounded, kClipUnbounded));
+    const float cr = rec.color.r, cg = rec.color.g, cb = rec.color.b;
+    const float qa = rec.conic.x, qb = rec.conic.y, qc = rec.conic.z, amplitude = rec.conic.w;
+    const float cx = rec.box.x, mu0 = rec.depth.x;
+    const float slopeX = s.flatDepths ? 0.0f : rec.depth.y;
+    const float slopeY = s.flatDepths ? 0.0f : rec.depth.z;
+    const float toErf = 1.0f / (std::sqrt(2.0f) * rec.depth.w);  // slabFraction's s
+    // Unclipped, every pixel's share lies between the same depths.
+    float wholeLo, wholeHi;
+    slabShareBoundsOf(zNear, zFar, openNear, openFar, -float(kClipUnbounded), float(kClipUnbounded),
+                      wholeLo, wholeHi);
+    any = true;
+    for (int y = y0; y <= y1; ++y) {
+      const float dy = float(py0 + y) + 0.5f - rec.box.y;
+      const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
+      // Pixels [first, first + n) of the row, 32-byte aligned; every term computed, each
+      // pixel's share masked.
+      const auto addRun = [&](int first, auto n) __attribute__((always_inline)) {
+        const int at = y * kTile + first;
+        float* __restrict sr = static_cast<float*>(__builtin_assume_aligned(sums.r + at, 32));
+        float* __restrict sg = static_cast<float*>(__builtin_assume_aligned(sums.g + at, 32));
+        float* __restrict sb = static_cast<float*>(__builtin_assume_aligned(sums.b + at, 32));
+        float* __restrict sa = static_cast<float*>(__builtin_assume_aligned(sums.a + at, 32));
+        const float* lv = static_cast<const float*>(__builtin_assume_aligned(live + at, 32));
+        const float* kn = static_cast<const float*>(__builtin_assume_aligned(keptNear + at, 32));
+        const float* kf = static_cast<const float*>(__builtin_assume_aligned(keptFar + at, 32));
+        const float* xc = static_cast<const float*>(__builtin_assume_aligned(centreX + first, 32));
+        for (int i = 0; i < decltype(n)::value; ++i) {
+          const int x = first + i;
+          const float dx = xc[i] - cx;
+          const float r = qa * dx * dx + 2.0f * qb * dx * dy + rowR;
+          float lo = wholeLo, hi = wholeHi;
+          if (Clipped) slabShareBoundsOf(zNear, zFar, openNear, openFar, kn[i], kf[i], lo, hi);
+          // clippedSlabFraction in float, as the shaders take it.
+          const float mu = rowMu + slopeX * dx;
+          const float share = slabShareOf(mu, toErf, lo, hi, erfReach, halfScale, Series);
+          const bool take = (x >= x0) & (x <= x1) & (lv[i] > 0.0f) & (hi > lo);
+          const float weight = amplitude * windowedGaussianOf(std::min(r, cutoff), cutoff) * share;
+          const float mask = take ? 1.0f : 0.0f;  // a product: no branch
+          const float depth = weight * mask;
+          sr[i] += cr * depth;
+          sg[i] += cg * depth;
+          sb[i] += cb * depth;
+          sa[i] += depth;
+        }
+      };
+      // A footprint within one half of the tile's row takes one vector of 8, else the row.
+      if ((x0 >> 3) == (x1 >> 3))
+        addRun(x0 & ~7, std::integral_constant<int, 8>());
+      else
+        addRun(0, std::integral_constant<int, kTile>());
+    }
+    return true;
+  });
   finishSlab();
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
@@ -193,15 +215,6 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
       (*work.picture)[size_t(py0 + y) * size_t(s.width) + size_t(px0 + x)] =
           glm::vec4(image.r[p], image.g[p], image.b[p], image.a[p]);
     }
-}
-
-// The tile's composite for the frame's depth profile and clipping: its pixel loops are
-// compiled without those tests.
-inline void compositeTileFor(const TileWork& work, bool series, bool clipped) {
-  if (series)
-    clipped ? compositeTileOf<true, true>(work) : compositeTileOf<true, false>(work);
-  else
-    clipped ? compositeTileOf<false, true>(work) : compositeTileOf<false, false>(work);
 }
 
 }  // namespace EWA_TILE_ISA

@@ -12,12 +12,13 @@
 
 #define EWA_TILE_ISA baseline
 #include "core/tile_composite_kernel.h"
+#include "core/tile_post_kernel.h"
 
 namespace ewa {
 
 #if EWA_TILE_AVX2
 namespace tile_kernel::avx2 {
-// tile_compositor_avx2.cpp: compositeTileFor compiled for AVX2 and FMA.
+// tile_compositor_avx2.cpp: gatherTileFor compiled for AVX2 and FMA.
 void compositeTile(const TileWork& work, bool series, bool clipped);
 }  // namespace tile_kernel::avx2
 #endif
@@ -95,7 +96,7 @@ TileCompositor::Timing TileCompositor::draw(const std::vector<SplatRecord>& reco
       return;
     }
 #endif
-    tile_kernel::baseline::compositeTileFor(work, series, clipped);
+    tile_kernel::baseline::gatherTileFor(work, series, clipped);
   });
   t.compositeMs = millisecondsSince(start);
   return t;

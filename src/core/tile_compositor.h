@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 #include <vector>
 
@@ -14,8 +15,26 @@
 #include "core/ewa_footprint.h"
 #include "core/slab_partition.h"
 #include "core/splat_records.h"
+#include "core/volume.h"
 
 namespace ewa {
+
+// What a tile's pixels gather (the splat shaders' variants): pre-classified optical depth and
+// colour composited slab by slab; post-classified kernel-weighted values classified per pixel
+// (TileCompositeSettings::samples); X-ray's summed optical depth; MIP's largest weighted value.
+enum class TileGather { Pre, Post, XRay, Mip };
+
+// Post-classification's tables (the textures the slab pass reads), borrowed for the frame.
+struct TileClassifyTables {
+  // Pre-integrated: slabPairTexels (pairSize squared) and the extinction prefix.
+  const glm::vec4* pairTexels = nullptr;
+  int pairSize = 0;
+  const float* prefix = nullptr;
+  int prefixSize = 0;
+  // Without pre-integration: the baked 1D transfer function (rgb, extinction per world unit).
+  const glm::vec4* transfer = nullptr;
+  int transferSize = 0;
+};
 
 // The frame's scalars: picture size, footprint cutoff, the kernels' depth profile (the slab
 // split), termination opacity, and the clip region (camera space) with the projection its
@@ -28,6 +47,18 @@ struct TileCompositeSettings {
   double termination = 0.99;  // a pixel stops taking slabs at this opacity (>= 1: never)
   std::vector<HalfSpace> clipPlanes;
   Projection proj;
+  TileGather gather = TileGather::Pre;
+  bool backToFront = false;  // the slabs composited from the back, with no termination
+  // Post: depth samples a slab, 4 (quarters) or 2 (halves), pre-integrated between them and
+  // the neighbouring slab's; 1: each slab's mean value classified alone.
+  int samples = 4;
+  TileClassifyTables tables;
+  // Post: the covered lengths end at the data's box (core/covered_length.h).
+  glm::dmat4 cameraToIndex{1.0};
+  DataBox dataBox;
+  // Test hook: every pixel takes a kernel's slab shares at the kernel centre's depth (its
+  // depth slopes dropped), a wrong slab split that the tests must catch.
+  bool flatDepths = false;
 };
 
 class TileCompositor {
@@ -47,9 +78,11 @@ class TileCompositor {
     double compositeMs = 0.0;
     size_t entries = 0;  // (slab entry, tile) pairs binned
   };
-  // Draws the pre-classified picture of `records` (one per splat) from the slab lists `order`
-  // and `slabs` (SlabPartition's, front to back) into `picture`: premultiplied colour and
-  // opacity over nothing, width x height, rows bottom up (y up, as the GL's images).
+  // Draws the picture of `records` (one per splat) from the slab lists `order` and `slabs`
+  // (SlabPartition's, front to back) into `picture`, width x height, rows bottom up (y up, as
+  // the GL's images): composite, premultiplied colour and opacity over nothing; X-ray, the
+  // summed optical depth in alpha; MIP, the largest weighted value in red (the slab image the
+  // final pass reads).
   Timing draw(const std::vector<SplatRecord>& records, const std::vector<uint32_t>& order,
               const std::vector<Slab>& slabs, const TileCompositeSettings& settings,
               std::vector<glm::vec4>& picture);

@@ -5,13 +5,14 @@
 
 #define EWA_TILE_ISA avx2
 #include "core/tile_composite_kernel.h"
+#include "core/tile_post_kernel.h"
 
 namespace ewa::tile_kernel::avx2 {
 
 void compositeTile(const TileWork& work, bool series, bool clipped);
 
 __attribute__((flatten)) void compositeTile(const TileWork& work, bool series, bool clipped) {
-  compositeTileFor(work, series, clipped);
+  gatherTileFor(work, series, clipped);
 }
 
 }  // namespace ewa::tile_kernel::avx2

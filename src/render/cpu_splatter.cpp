@@ -13,14 +13,10 @@ namespace ewa {
 
 bool cpuSplatterDraws(const RenderSettings& s, std::string* why) {
   const char* reason = nullptr;
-  if (s.mode != RenderMode::Composite)
-    reason = "the CPU splatter draws composite frames only: rasterized";
-  else if (s.order != CompositeOrder::FrontToBack)
-    reason = "the CPU splatter draws front-to-back frames only: rasterized";
-  else if (postClassified(s))
+  if (postClassified(s) && s.lighting.enabled)
     reason =
-        "the CPU splatter draws pre-classified frames only (--classification pre): "
-        "rasterized";
+        "the CPU splatter draws unshaded post-classified frames only (shading: --classification "
+        "pre): rasterized";
   if (reason && why) *why = reason;
   return reason == nullptr;
 }
@@ -39,6 +35,7 @@ SplatFrameSetup cpuSplatSetup(const Volume& volume, const Camera& camera, const 
   f.surfaceTau = -std::log(1.0 - std::clamp(settings.surfaceOpacity, 0.0, 0.999999));
   f.lighting = settings.lighting;
   f.transfer = transfer;
+  f.postClassified = postClassified(settings);
   // As setClipUniforms: the region's half-spaces in this camera's space, as many as the
   // shaders take.
   for (const HalfSpace& h : halfSpacesInVolumeFrame(settings.clip, volume)) {
@@ -48,10 +45,19 @@ SplatFrameSetup cpuSplatSetup(const Volume& volume, const Camera& camera, const 
   return f;
 }
 
+TileGather tileGather(const RenderSettings& settings) {
+  if (settings.mode == RenderMode::XRay) return TileGather::XRay;
+  if (settings.mode == RenderMode::Mip) return TileGather::Mip;
+  return postClassified(settings) ? TileGather::Post : TileGather::Pre;
+}
+
 CpuSplatter::Timing CpuSplatter::draw(const ClassifiedSplats& splats,
                                       const std::vector<uint32_t>& order,
                                       const std::vector<Slab>& slabs, const SplatFrameSetup& setup,
-                                      const RenderSettings& settings, bool upload) {
+                                      const RenderSettings& settings,
+                                      const TileClassifyTables& tables,
+                                      const glm::dmat4& cameraToIndex, const DataBox& dataBox,
+                                      bool upload, bool flatDepths) {
   Timing t;
   auto start = std::chrono::steady_clock::now();
   makeSplatRecords(splats.splats, splats.attributes, setup, records_);
@@ -64,6 +70,13 @@ CpuSplatter::Timing CpuSplatter::draw(const ClassifiedSplats& splats,
   composite.termination = settings.terminationOpacity;
   composite.clipPlanes = setup.clipPlanes;
   composite.proj = setup.proj;
+  composite.gather = tileGather(settings);
+  composite.backToFront = settings.order == CompositeOrder::BackToFront;
+  composite.samples = !settings.slabPreintegration ? 1 : settings.slabSamples >= 4 ? 4 : 2;
+  composite.tables = tables;
+  composite.cameraToIndex = cameraToIndex;
+  composite.dataBox = dataBox;
+  composite.flatDepths = flatDepths;
   const TileCompositor::Timing c = compositor_.draw(records_, order, slabs, composite, picture_);
   t.binMs = c.binMs;
   t.compositeMs = c.compositeMs;

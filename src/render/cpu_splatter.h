@@ -16,9 +16,9 @@
 
 namespace ewa {
 
-// Whether the CPU splatter draws frames under `settings`: composite, front to back,
-// pre-classified (post-classification is not drawn on the CPU yet). `why`: the reason it does
-// not, for RenderStats::note.
+// Whether the CPU splatter draws frames under `settings`: every mode and order, pre-classified
+// and post-classified unshaded (shaded post-classification is rasterized). `why`: the reason
+// it does not, for RenderStats::note.
 bool cpuSplatterDraws(const RenderSettings& settings, std::string* why = nullptr);
 
 // The splat programs' per-frame state (SplatRenderer::setCommonUniforms) for `volume` seen by
@@ -27,6 +27,9 @@ bool cpuSplatterDraws(const RenderSettings& settings, std::string* why = nullptr
 SplatFrameSetup cpuSplatSetup(const Volume& volume, const Camera& volumeCamera,
                               const Projection& proj, const RenderSettings& settings,
                               const KernelReach& reach, const std::vector<glm::vec4>& transfer);
+
+// What the tiles gather for `settings`' mode and classification.
+TileGather tileGather(const RenderSettings& settings);
 
 class CpuSplatter {
  public:
@@ -39,12 +42,16 @@ class CpuSplatter {
     double totalMs() const { return recordsMs + binMs + compositeMs + uploadMs; }
   };
   // Draws the frame: the splats' records under `setup`, the partition's slab lists (`order`,
-  // `slabs`, front to back) composited in tiles, the picture uploaded to pictureTexture() (with
-  // `upload`; a GL context must be current).
+  // `slabs`, front to back) gathered in tiles, post-classified through `tables` with the
+  // covered lengths ended at `dataBox` (index coordinates, `cameraToIndex` from camera space),
+  // the picture uploaded to pictureTexture() (with `upload`; a GL context must be current).
   Timing draw(const ClassifiedSplats& splats, const std::vector<uint32_t>& order,
               const std::vector<Slab>& slabs, const SplatFrameSetup& setup,
-              const RenderSettings& settings, bool upload = true);
-  // The last picture: premultiplied RGBA over nothing, rows bottom up.
+              const RenderSettings& settings, const TileClassifyTables& tables,
+              const glm::dmat4& cameraToIndex, const DataBox& dataBox, bool upload = true,
+              bool flatDepths = false);
+  // The last picture (TileCompositor::draw's): composite, premultiplied RGBA over nothing;
+  // X-ray and MIP, the slab image the final pass reads; rows bottom up.
   const std::vector<glm::vec4>& picture() const { return picture_; }
   const gl::Texture& pictureTexture() const { return texture_; }
   size_t bytes() const;

@@ -236,6 +236,11 @@ struct RenderStats {
   double partitionMs = 0.0;
   double splatMs = 0.0;
   double compositeMs = 0.0;
+  // The CPU splatter's part of splatMs (cpu): each splat's footprint and colour, the binning
+  // of slab entries to tiles, the tiles' splatting, classification and compositing.
+  double cpuRecordsMs = 0.0;
+  double cpuBinMs = 0.0;
+  double cpuTilesMs = 0.0;
   size_t gpuBytes = 0;  // bytes of GL buffers and textures the renderer allocated; 0: not counted
 };
 

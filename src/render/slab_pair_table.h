@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstddef>
+#include <glm/vec4.hpp>
+#include <vector>
 
 #include "core/transfer_function.h"
 #include "gl/texture.h"
@@ -20,6 +22,8 @@ class SlabPairTable {
   void release() {
     texture_ = gl::Texture();
     prefix_ = gl::Texture();
+    texels_ = {};
+    prefixValues_ = {};
     valid_ = false;
   }
   // Makes the texture hold the table of `tf` over values [lo, hi] (mapped to texture
@@ -33,10 +37,16 @@ class SlabPairTable {
     prefix_.bindUnit(prefixUnit);
   }
   size_t bytes() const;
+  // What the textures hold, for the CPU splatter's classification: slabPairTexels (kSize
+  // squared) and the extinction prefix (kExtinctionPrefixSize).
+  const std::vector<glm::vec4>& texels() const { return texels_; }
+  const std::vector<float>& prefix() const { return prefixValues_; }
 
  private:
   gl::Texture texture_;
   gl::Texture prefix_;
+  std::vector<glm::vec4> texels_;
+  std::vector<float> prefixValues_;
   bool valid_ = false;
   double lo_ = 0.0, hi_ = 0.0, distance_ = 0.0;
 };

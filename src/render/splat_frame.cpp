@@ -271,7 +271,9 @@ void SplatRenderer::drawFinalPass(int y0, int y1) {
     glEnable(GL_SCISSOR_TEST);
     glScissor(0, y0, frame_.width, y1 - y0);
   }
-  targets_.slab.bindUnit(1);
+  // X-ray and MIP drawn on the CPU: its picture is the slab image.
+  (frame_.cpu && settings.mode != RenderMode::Composite ? cpu_->pictureTexture() : targets_.slab)
+      .bindUnit(1);
   // Front to back, premultiplied, over nothing: the tiles' picture is what the slab loop leaves.
   (frame_.tiles ? tiles_->pictureTexture()
    : frame_.cpu ? cpu_->pictureTexture()

@@ -217,6 +217,8 @@ class SplatRenderer : public Renderer {
   // Test hook: the footprint the CPU splatter (Splatter::Cpu) gives each splat
   // (computeFootprint by default), to show a wrong one fails its tests.
   void setCpuFootprint(FootprintFunction footprint) { cpuFootprint_ = std::move(footprint); }
+  // Test hook: the CPU splatter's slab split made wrong (TileCompositeSettings::flatDepths).
+  void setCpuFlatDepths(bool flat) { cpuFlatDepths_ = flat; }
   // The CPU splatter's picture of the last frame it drew (premultiplied, rows bottom up).
   const std::vector<glm::vec4>& cpuPicture() const;
 
@@ -339,8 +341,6 @@ class SplatRenderer : public Renderer {
   // where its splats reach, rising from slab to slab by slabMarkStep (passSlabRows).
   float slabMark(size_t slabIndex) const;
   float slabMarkStep() const;
-  // True when one slab ends where the other begins (in either order).
-  static bool slabsAdjacent(const Slab& a, const Slab& b);
   // Each slab's rectangle and image scale (frame_.slabRects, frame_.slabScales, in
   // frame_.slabs order) for this frame's slabs.
   void computeSlabRects();
@@ -423,6 +423,7 @@ class SplatRenderer : public Renderer {
   std::unique_ptr<TileEwaSplatter> tiles_;             // RenderSettings::splatter; on first use
   std::unique_ptr<CpuSplatter> cpu_;                   // Splatter::Cpu; on first use
   FootprintFunction cpuFootprint_ = computeFootprint;  // setCpuFootprint
+  bool cpuFlatDepths_ = false;                         // setCpuFlatDepths
   std::vector<glm::vec4> transferTable_;  // the transfer texture's table, for the CPU splatter
   gl::ShaderLibrary shaders_;             // for the GPU partition, built on first use
   std::optional<std::pair<double, double>> depthWindow_;

@@ -224,7 +224,7 @@ void SplatRenderer::passSlabRows(size_t s, int y0, int y1) {
     // not drawn): a segment runs from its nearer half's value to this slab's.
     targets_.slabImage(slabImageOf(s + 1)).bindUnit(kNeighbourSlabUnit);
     if (frame_.quarters) targets_.slabBackImage(slabImageOf(s + 1)).bindUnit(kNeighbourBackUnit);
-    const bool adjacent = s > 0 && slabsAdjacent(slabInOrder(s - 1), slabInOrder(s));
+    const bool adjacent = s > 0 && ewa::slabsAdjacent(slabInOrder(s - 1), slabInOrder(s));
     pass.setInt("uNeighbour", adjacent ? 1 : 0);
     pass.setFloat("uNeighbourScale", s > 0 ? float(slabScale(s - 1)) : 1.0f);
   }
@@ -283,12 +283,6 @@ void SplatRenderer::closeSlab(size_t s) {
 
 bool SplatRenderer::finishChecks(size_t s) const {
   return terminates() && (s + 1) % kCheckEvery == 0 && s + 1 < frame_.slabs.size();
-}
-
-bool SplatRenderer::slabsAdjacent(const Slab& a, const Slab& b) {
-  const double gap =
-      std::min(std::abs(a.farDepth - b.nearDepth), std::abs(b.farDepth - a.nearDepth));
-  return gap <= 1e-6 * std::max(a.farDepth - a.nearDepth, b.farDepth - b.nearDepth);
 }
 
 }  // namespace ewa

@@ -1,0 +1,402 @@
+// The CPU splatter's per-tile gathers besides the pre-classified composite: post-classified
+// slabs (kernel-weighted values in 1, 2 or 4 depth samples a slab, classified per pixel as the
+// slab pass classifies them, shaders/slab_composite.frag.glsl), X-ray and MIP. Compiled once
+// per instruction set like tile_composite_kernel.h, which it follows; include it after that
+// header, from tile_compositor.cpp and tile_compositor_avx2.cpp only.
+#pragma once
+
+#include "core/covered_length.h"
+#include "core/slab_preintegration.h"
+#include "core/splat_records.h"
+
+namespace ewa::tile_kernel::EWA_TILE_ISA {
+
+// A post-classified slab's shares between `Samples` + 1 depth bounds: the slab's planes split
+// in equal parts (the quarters' third bound is the far plane less a quarter, the halves' middle
+// the planes' mean, as shaders/ewa_footprint.glsl's slabQuarters and slabHalves), an open bound
+// unbounded, each clamped to the kept depths.
+template <int Samples>
+__attribute__((always_inline)) inline void sampleBounds(float zNear, float zFar, bool openNear,
+                                                        bool openFar, float bounds[Samples + 1]) {
+  const float unbounded = float(kClipUnbounded);
+  bounds[0] = openNear ? -unbounded : zNear;
+  bounds[Samples] = openFar ? unbounded : zFar;
+  if (Samples == 2) bounds[1] = 0.5f * (zNear + zFar);
+  if (Samples == 4) {
+    const float q = 0.25f * (zFar - zNear);
+    bounds[1] = zNear + q;
+    bounds[2] = 0.5f * (zNear + zFar);
+    bounds[3] = zFar - q;
+  }
+}
+
+// The depth bounds each of a slab's samples covers for its covered length.
+template <int Samples>
+inline void sampleSpans(float zNear, float zFar, float lo[Samples], float hi[Samples]) {
+  float b[Samples + 1];
+  sampleBounds<Samples>(zNear, zFar, false, false, b);
+  for (int k = 0; k < Samples; ++k) {
+    lo[k] = b[k];
+    hi[k] = b[k + 1];
+  }
+}
+
+// A pixel's post-classified slab: its samples' values (kernel-weighted means; a sample
+// without weight takes the slab's mean, a half the other half's) and covered lengths.
+template <int Samples>
+struct SlabSamples {
+  float value[Samples];
+  float length[Samples];
+};
+
+template <int Samples>
+inline SlabSamples<Samples> slabSamplesOf(const float* sv, const float* sw, float boxNear,
+                                          float boxFar, float stretch, float zNear, float zFar) {
+  SlabSamples<Samples> out;
+  float lo[Samples], hi[Samples];
+  sampleSpans<Samples>(zNear, zFar, lo, hi);
+  for (int k = 0; k < Samples; ++k)
+    out.length[k] = coveredLengthOf(lo[k], hi[k], boxNear, boxFar, stretch, sw[k]);
+  if (Samples == 2) {  // halfValues
+    const float front = sw[0] > 0.0f ? sv[0] / sw[0] : sv[1] / sw[1];
+    const float back = sw[1] > 0.0f ? sv[1] / sw[1] : front;
+    out.value[0] = std::clamp(front, 0.0f, 1.0f);
+    out.value[Samples - 1] = std::clamp(back, 0.0f, 1.0f);
+    return out;
+  }
+  // quarterValues; one sample: the slab's mean.
+  float sum = 0.0f, weight = 0.0f;
+  for (int k = 0; k < Samples; ++k) {
+    sum += sv[k];
+    weight += sw[k];
+  }
+  const float mean = sum / std::max(weight, 1e-30f);
+  for (int k = 0; k < Samples; ++k)
+    out.value[k] = std::clamp(sw[k] > 0.0f ? sv[k] / sw[k] : mean, 0.0f, 1.0f);
+  return out;
+}
+
+// The slab's premultiplied colour at a pixel: pre-integrated, the segments between its samples'
+// values and, on the side of the slab drawn before it, the neighbour's nearest value
+// (`neighbour`; none: the slab's own), over each sample's covered length; one sample, its mean
+// value classified through the 1D transfer function over its covered length.
+template <int Samples>
+inline glm::vec4 classifySlab(const SlabSamples<Samples>& s, bool hasNeighbour, float neighbour,
+                              bool backToFront, const TileClassifyTables& t) {
+  if (Samples == 1) {
+    const glm::vec4 tf = transferAt(t.transfer, t.transferSize, s.value[0]);
+    const float depth = s.length[0] * tf.a;
+    if (!(depth > 0.0f)) return glm::vec4(0.0f);
+    const float alpha = 1.0f - expOf(-depth);
+    return glm::vec4(glm::vec3(tf) * alpha, alpha);
+  }
+  // The values in depth order; segment i runs from value i to value i + 1.
+  float v[Samples + 1];
+  for (int k = 0; k < Samples; ++k) v[backToFront ? k : k + 1] = s.value[k];
+  if (backToFront)
+    v[Samples] = hasNeighbour ? neighbour : s.value[Samples - 1];
+  else
+    v[0] = hasNeighbour ? neighbour : s.value[0];
+  glm::vec4 sum(0.0f);
+  for (int i = 0; i < Samples; ++i) {
+    const glm::vec4 c = classifySlabPairOf(t.pairTexels, t.pairSize, t.prefix, t.prefixSize, v[i],
+                                           v[i + 1], s.length[i]);
+    sum += (1.0f - sum.a) * c;
+  }
+  return sum;
+}
+
+// The post-classified tile: each slab's kernels add (weight * value, weight) per pixel and
+// sample (their share of each sample's depths, exactly, cut to the kept depths), then every
+// pixel classifies the slab and composites it, the slab before kept for its nearest value.
+template <int Samples, bool Series, bool Clipped>
+__attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
+  constexpr int kTile = TileCompositor::kTile;
+  const TileCompositeSettings& s = *work.settings;
+  const int px0 = work.px0, py0 = work.py0, w = work.w, h = work.h;
+  const float cutoff = float(s.cutoff);
+  const bool backToFront = s.backToFront;
+  const float termination = backToFront ? 2.0f : float(s.termination);
+  const float erfReach = float(std::min(s.profile.erfReach, kClipUnbounded));
+  const float halfScale = 0.5f * float(s.profile.scale);
+  TilePlanes image;
+  alignas(32) float sv[Samples][kPixels], sw[Samples][kPixels];  // weight * value, weight
+  alignas(32) float keptNear[kPixels], keptFar[kPixels];
+  alignas(32) float boxNear[kPixels], boxFar[kPixels], stretch[kPixels];
+  alignas(32) float centreX[kTile];
+  alignas(32) float live[kPixels];
+  float last[kPixels];  // the slab before's nearest value
+  bool hasLast[kPixels];
+  for (int p = 0; p < kPixels; ++p) {
+    image.r[p] = image.g[p] = image.b[p] = image.a[p] = 0.0f;
+    for (int k = 0; k < Samples; ++k) sv[k][p] = sw[k][p] = 0.0f;
+    const int x = p % kTile, y = p / kTile;
+    const bool inside = x < w && y < h;
+    live[p] = inside ? 1.0f : 0.0f;
+    last[p] = 0.0f;
+    hasLast[p] = false;
+    keptNear[p] = -float(kClipUnbounded);
+    keptFar[p] = float(kClipUnbounded);
+    boxNear[p] = boxFar[p] = 0.0f;
+    stretch[p] = 1.0f;
+    if (!inside) continue;
+    const glm::dvec2 centre(px0 + x + 0.5, py0 + y + 0.5);
+    if (Clipped) {
+      const RayInterval kept = clippedDepths(s.clipPlanes, s.proj, centre);
+      keptNear[p] = float(std::clamp(kept.near, -kClipUnbounded, kClipUnbounded));
+      // Nothing kept: every bound at one depth, every share 0 (slabQuarters).
+      keptFar[p] =
+          std::max(keptNear[p], float(std::clamp(kept.far, -kClipUnbounded, kClipUnbounded)));
+    }
+    const IndexRay ray = indexRay(s.cameraToIndex, s.proj, centre);
+    const RayInterval box = boxDepths(ray.origin, ray.direction, s.dataBox);
+    boxNear[p] = float(std::clamp(box.near, -kClipUnbounded, kClipUnbounded));
+    boxFar[p] = float(std::clamp(box.far, -kClipUnbounded, kClipUnbounded));
+    stretch[p] = float(rayStretch(s.proj, centre));
+  }
+  for (int x = 0; x < kTile; ++x) centreX[x] = float(px0 + x) + 0.5f;
+  int open = w * h;
+  uint32_t current = UINT32_MAX, previous = UINT32_MAX;  // the slab summed, the one before
+  bool any = false;
+  const auto finishSlab = [&]() {
+    if (!any) return;
+    const Slab& slab = (*work.slabs)[current];
+    const bool neighbour =
+        previous != UINT32_MAX &&
+        previous + (backToFront ? -1 : 1) == current &&  // no slab between them in this tile
+        slabsAdjacent((*work.slabs)[previous], slab);
+    const float zNear = float(slab.nearDepth), zFar = float(slab.farDepth);
+    open = 0;
+    for (int p = 0; p < kPixels; ++p) {
+      float psv[Samples], psw[Samples], weight = 0.0f;
+      for (int k = 0; k < Samples; ++k) {
+        psv[k] = sv[k][p];
+        psw[k] = sw[k][p];
+        weight += psw[k];
+        sv[k][p] = sw[k][p] = 0.0f;
+      }
+      const bool had = hasLast[p];
+      hasLast[p] = false;
+      if (!(live[p] > 0.0f)) continue;
+      if (weight > 0.0f) {
+        const SlabSamples<Samples> samples =
+            slabSamplesOf<Samples>(psv, psw, boxNear[p], boxFar[p], stretch[p], zNear, zFar);
+        const glm::vec4 c =
+            classifySlab<Samples>(samples, neighbour && had, last[p], backToFront, s.tables);
+        if (backToFront) {
+          const float keep = 1.0f - c.a;
+          image.r[p] = c.r + keep * image.r[p];
+          image.g[p] = c.g + keep * image.g[p];
+          image.b[p] = c.b + keep * image.b[p];
+          image.a[p] = c.a + keep * image.a[p];
+        } else {
+          const float keep = 1.0f - image.a[p];
+          image.r[p] += keep * c.r;
+          image.g[p] += keep * c.g;
+          image.b[p] += keep * c.b;
+          image.a[p] += keep * c.a;
+        }
+        // The value the next slab's segments start from: this one's nearest to it.
+        last[p] = samples.value[backToFront ? 0 : Samples - 1];
+        hasLast[p] = true;
+      }
+      live[p] = image.a[p] < termination ? 1.0f : 0.0f;
+      open += live[p] > 0.0f;
+    }
+    previous = current;
+    any = false;
+  };
+  forEachTileItem(work, backToFront, [&](const TileCompositor::Item& item) {
+    if (item.slab != current) {
+      finishSlab();
+      if (open == 0) return false;
+      current = item.slab;
+    }
+    const SplatRecord& rec = (*work.records)[item.entry & SlabPartition::kIndexMask];
+    int x0, y0, x1, y1;
+    if (!boxPixels(rec.box, s.width, s.height, x0, y0, x1, y1)) return true;
+    x0 = std::max(x0, px0) - px0;
+    y0 = std::max(y0, py0) - py0;
+    x1 = std::min(x1, px0 + w - 1) - px0;
+    y1 = std::min(y1, py0 + h - 1) - py0;
+    const bool openNear = (item.entry & SlabPartition::kFirstSlab) != 0;
+    const bool openFar = (item.entry & SlabPartition::kLastSlab) != 0;
+    const Slab& slab = (*work.slabs)[item.slab];
+    const float zNear = float(std::clamp(slab.nearDepth, -kClipUnbounded, kClipUnbounded));
+    const float zFar = float(std::clamp(slab.farDepth, -kClipUnbounded, kClipUnbounded));
+    float bounds[Samples + 1];
+    sampleBounds<Samples>(zNear, zFar, openNear, openFar, bounds);
+    const float value = rec.color.a;
+    const float qa = rec.conic.x, qb = rec.conic.y, qc = rec.conic.z, amplitude = rec.conic.w;
+    const float cx = rec.box.x, mu0 = rec.depth.x;
+    const float slopeX = s.flatDepths ? 0.0f : rec.depth.y;
+    const float slopeY = s.flatDepths ? 0.0f : rec.depth.z;
+    const float toErf = 1.0f / (std::sqrt(2.0f) * rec.depth.w);
+    any = true;
+    for (int y = y0; y <= y1; ++y) {
+      const float dy = float(py0 + y) + 0.5f - rec.box.y;
+      const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
+      const auto addRun = [&](int first, auto n) __attribute__((always_inline)) {
+        const int at = y * kTile + first;
+        const float* lv = live + at;
+        const float* kn = keptNear + at;
+        const float* kf = keptFar + at;
+        const float* xc = centreX + first;
+        float* __restrict v[Samples];
+        float* __restrict wt[Samples];
+        for (int k = 0; k < Samples; ++k) {
+          v[k] = sv[k] + at;
+          wt[k] = sw[k] + at;
+        }
+        for (int i = 0; i < decltype(n)::value; ++i) {
+          const int x = first + i;
+          const float dx = xc[i] - cx;
+          const float r = qa * dx * dx + 2.0f * qb * dx * dy + rowR;
+          const float mu = rowMu + slopeX * dx;
+          const bool take = (x >= x0) & (x <= x1) & (lv[i] > 0.0f);
+          const float g =
+              amplitude * windowedGaussianOf(std::min(r, cutoff), cutoff) * (take ? 1.0f : 0.0f);
+          float e[Samples + 1];
+          for (int k = 0; k <= Samples; ++k) {
+            const float b = Clipped ? std::min(std::max(bounds[k], kn[i]), kf[i]) : bounds[k];
+            e[k] = profileErfOf((b - mu) * toErf, erfReach, Series);
+          }
+          for (int k = 0; k < Samples; ++k) {
+            const float d = g * halfScale * std::max(e[k + 1] - e[k], 0.0f);
+            wt[k][i] += d;
+            v[k][i] += value * d;
+          }
+        }
+      };
+      if ((x0 >> 3) == (x1 >> 3))
+        addRun(x0 & ~7, std::integral_constant<int, 8>());
+      else
+        addRun(0, std::integral_constant<int, kTile>());
+    }
+    return true;
+  });
+  finishSlab();
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int p = y * kTile + x;
+      (*work.picture)[size_t(py0 + y) * size_t(s.width) + size_t(px0 + x)] =
+          glm::vec4(image.r[p], image.g[p], image.b[p], image.a[p]);
+    }
+}
+
+// X-ray (`Mip` false): each pixel's summed optical depth, every kernel whole (cut to the kept
+// depths); MIP: the largest kernel-weighted value (no optical depth), as the splat fragments
+// blend them into the one image of the whole volume.
+template <bool Mip, bool Series, bool Clipped>
+__attribute__((always_inline)) inline void wholeTileOf(const TileWork& work) {
+  constexpr int kTile = TileCompositor::kTile;
+  const TileCompositeSettings& s = *work.settings;
+  const int px0 = work.px0, py0 = work.py0, w = work.w, h = work.h;
+  const float cutoff = float(s.cutoff);
+  const float erfReach = float(std::min(s.profile.erfReach, kClipUnbounded));
+  const float halfScale = 0.5f * float(s.profile.scale);
+  alignas(32) float gathered[kPixels];
+  alignas(32) float keptNear[kPixels], keptFar[kPixels];
+  alignas(32) float centreX[kTile];
+  for (int p = 0; p < kPixels; ++p) {
+    gathered[p] = 0.0f;
+    keptNear[p] = -float(kClipUnbounded);
+    keptFar[p] = float(kClipUnbounded);
+    const int x = p % kTile, y = p / kTile;
+    if (Clipped && x < w && y < h) {
+      const RayInterval kept =
+          clippedDepths(s.clipPlanes, s.proj, glm::dvec2(px0 + x + 0.5, py0 + y + 0.5));
+      keptNear[p] = float(std::clamp(kept.near, -kClipUnbounded, kClipUnbounded));
+      keptFar[p] = float(std::clamp(kept.far, -kClipUnbounded, kClipUnbounded));
+    }
+  }
+  for (int x = 0; x < kTile; ++x) centreX[x] = float(px0 + x) + 0.5f;
+  forEachTileItem(work, false, [&](const TileCompositor::Item& item) {
+    const SplatRecord& rec = (*work.records)[item.entry & SlabPartition::kIndexMask];
+    int x0, y0, x1, y1;
+    if (!boxPixels(rec.box, s.width, s.height, x0, y0, x1, y1)) return true;
+    x0 = std::max(x0, px0) - px0;
+    y0 = std::max(y0, py0) - py0;
+    x1 = std::min(x1, px0 + w - 1) - px0;
+    y1 = std::min(y1, py0 + h - 1) - py0;
+    const float scale = Mip ? rec.color.a : rec.conic.w;  // value, or optical depth at the centre
+    const float qa = rec.conic.x, qb = rec.conic.y, qc = rec.conic.z;
+    const float cx = rec.box.x, mu0 = rec.depth.x;
+    const float slopeX = s.flatDepths ? 0.0f : rec.depth.y;
+    const float slopeY = s.flatDepths ? 0.0f : rec.depth.z;
+    const float toErf = 1.0f / (std::sqrt(2.0f) * rec.depth.w);
+    for (int y = y0; y <= y1; ++y) {
+      const float dy = float(py0 + y) + 0.5f - rec.box.y;
+      const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
+      const auto addRun = [&](int first, auto n) __attribute__((always_inline)) {
+        const int at = y * kTile + first;
+        float* __restrict out = gathered + at;
+        const float* kn = keptNear + at;
+        const float* kf = keptFar + at;
+        const float* xc = centreX + first;
+        for (int i = 0; i < decltype(n)::value; ++i) {
+          const int x = first + i;
+          const float dx = xc[i] - cx;
+          const float r = qa * dx * dx + 2.0f * qb * dx * dy + rowR;
+          float share = 1.0f;  // uncut: the whole kernel
+          if (Clipped) {
+            const float mu = rowMu + slopeX * dx;
+            share = kf[i] > kn[i]
+                        ? slabShareOf(mu, toErf, kn[i], kf[i], erfReach, halfScale, Series)
+                        : 0.0f;
+          }
+          const bool take = (x >= x0) & (x <= x1);
+          const float c = scale * windowedGaussianOf(std::min(r, cutoff), cutoff) * share *
+                          (take ? 1.0f : 0.0f);
+          out[i] = Mip ? std::max(out[i], c) : out[i] + c;
+        }
+      };
+      if ((x0 >> 3) == (x1 >> 3))
+        addRun(x0 & ~7, std::integral_constant<int, 8>());
+      else
+        addRun(0, std::integral_constant<int, kTile>());
+    }
+    return true;
+  });
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const float g = gathered[y * kTile + x];
+      (*work.picture)[size_t(py0 + y) * size_t(s.width) + size_t(px0 + x)] =
+          Mip ? glm::vec4(g, 0.0f, 0.0f, 0.0f) : glm::vec4(0.0f, 0.0f, 0.0f, g);
+    }
+}
+
+// The tile's gather for the frame's settings: each variant's pixel loops compiled without the
+// tests that pick it.
+template <bool Series, bool Clipped>
+inline void gatherTileWith(const TileWork& work) {
+  const TileCompositeSettings& s = *work.settings;
+  switch (s.gather) {
+    case TileGather::Pre:
+      compositeTileOf<Series, Clipped>(work);
+      return;
+    case TileGather::Post:
+      if (s.samples >= 4)
+        postTileOf<4, Series, Clipped>(work);
+      else if (s.samples == 2)
+        postTileOf<2, Series, Clipped>(work);
+      else
+        postTileOf<1, Series, Clipped>(work);
+      return;
+    case TileGather::XRay:
+      wholeTileOf<false, Series, Clipped>(work);
+      return;
+    case TileGather::Mip:
+      wholeTileOf<true, Series, Clipped>(work);
+      return;
+  }
+}
+
+inline void gatherTileFor(const TileWork& work, bool series, bool clipped) {
+  if (series)
+    clipped ? gatherTileWith<true, true>(work) : gatherTileWith<true, false>(work);
+  else
+    clipped ? gatherTileWith<false, true>(work) : gatherTileWith<false, false>(work);
+}
+
+}  // namespace ewa::tile_kernel::EWA_TILE_ISA
