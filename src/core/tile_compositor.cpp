@@ -66,7 +66,8 @@ TileCompositor::Timing TileCompositor::draw(const std::vector<SplatRecord>& reco
                                             const std::vector<uint32_t>& order,
                                             const std::vector<Slab>& slabs,
                                             const TileCompositeSettings& settings,
-                                            std::vector<glm::vec4>& picture) {
+                                            std::vector<glm::vec4>& picture,
+                                            const std::atomic<bool>* cancel) {
   Timing t;
   const int width = std::max(settings.width, 1), height = std::max(settings.height, 1);
   picture.assign(size_t(width) * size_t(height), glm::vec4(0.0f));
@@ -84,6 +85,7 @@ TileCompositor::Timing TileCompositor::draw(const std::vector<SplatRecord>& reco
   const bool avx2 = machineAvx2 && avx2Allowed_;
 #endif
   tbb::parallel_for(0, tilesX * tilesY, [&](int tile) {
+    if (cancel && cancel->load(std::memory_order_relaxed)) return;
     tile_kernel::TileWork work{&bins_,       &records, &slabs, &settings, &picture,
                                size_t(tile), 0,        0,      0,         0};
     work.px0 = (tile % tilesX) * kTile;

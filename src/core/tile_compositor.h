@@ -4,6 +4,7 @@
 // every pixel is opaque, one tile a task over all cores.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
@@ -83,9 +84,10 @@ class TileCompositor {
   // the GL's images): composite, premultiplied colour and opacity over nothing; X-ray, the
   // summed optical depth in alpha; MIP, the largest weighted value in red (the slab image the
   // final pass reads).
+  // Once `cancel` (if given) is set the tiles not begun are left empty.
   Timing draw(const std::vector<SplatRecord>& records, const std::vector<uint32_t>& order,
               const std::vector<Slab>& slabs, const TileCompositeSettings& settings,
-              std::vector<glm::vec4>& picture);
+              std::vector<glm::vec4>& picture, const std::atomic<bool>* cancel = nullptr);
   // Test hook: false draws with the build's baseline composite even where the machine runs its
   // AVX2 and FMA build (tile_compositor_avx2.cpp), to hold the two equal.
   void setAvx2(bool allowed) { avx2Allowed_ = allowed; }

@@ -236,35 +236,61 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
     for (int y = y0; y <= y1; ++y) {
       const float dy = float(py0 + y) + 0.5f - rec.box.y;
       const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
+      // Every plane a restrict pointer of its own, the samples written out: the loop vectorizes.
       const auto addRun = [&](int first, auto n) __attribute__((always_inline)) {
         const int at = y * kTile + first;
-        const float* lv = live + at;
-        const float* kn = keptNear + at;
-        const float* kf = keptFar + at;
-        const float* xc = centreX + first;
-        float* __restrict v[Samples];
-        float* __restrict wt[Samples];
-        for (int k = 0; k < Samples; ++k) {
-          v[k] = sv[k] + at;
-          wt[k] = sw[k] + at;
-        }
+        const auto plane = [&](float(&planes)[Samples][kPixels], int k) {
+          return static_cast<float*>(
+              __builtin_assume_aligned(planes[std::min(k, Samples - 1)] + at, 32));
+        };
+        float* __restrict w0 = plane(sw, 0);
+        float* __restrict w1 = plane(sw, 1);
+        float* __restrict w2 = plane(sw, 2);
+        float* __restrict w3 = plane(sw, 3);
+        float* __restrict v0 = plane(sv, 0);
+        float* __restrict v1 = plane(sv, 1);
+        float* __restrict v2 = plane(sv, 2);
+        float* __restrict v3 = plane(sv, 3);
+        const float* lv = static_cast<const float*>(__builtin_assume_aligned(live + at, 32));
+        const float* kn = static_cast<const float*>(__builtin_assume_aligned(keptNear + at, 32));
+        const float* kf = static_cast<const float*>(__builtin_assume_aligned(keptFar + at, 32));
+        const float* xc = static_cast<const float*>(__builtin_assume_aligned(centreX + first, 32));
+        const float b0 = bounds[0], b1 = bounds[std::min(1, Samples)];
+        const float b2 = bounds[std::min(2, Samples)], b3 = bounds[std::min(3, Samples)];
+        const float b4 = bounds[std::min(4, Samples)];
         for (int i = 0; i < decltype(n)::value; ++i) {
           const int x = first + i;
           const float dx = xc[i] - cx;
           const float r = qa * dx * dx + 2.0f * qb * dx * dy + rowR;
           const float mu = rowMu + slopeX * dx;
           const bool take = (x >= x0) & (x <= x1) & (lv[i] > 0.0f);
-          const float g =
-              amplitude * windowedGaussianOf(std::min(r, cutoff), cutoff) * (take ? 1.0f : 0.0f);
-          float e[Samples + 1];
-          for (int k = 0; k <= Samples; ++k) {
-            const float b = Clipped ? std::min(std::max(bounds[k], kn[i]), kf[i]) : bounds[k];
-            e[k] = profileErfOf((b - mu) * toErf, erfReach, Series);
-          }
-          for (int k = 0; k < Samples; ++k) {
-            const float d = g * halfScale * std::max(e[k + 1] - e[k], 0.0f);
-            wt[k][i] += d;
-            v[k][i] += value * d;
+          const float g = amplitude * halfScale *
+                          windowedGaussianOf(r < cutoff ? r : cutoff, cutoff) *
+                          (take ? 1.0f : 0.0f);
+          const auto erfAt = [&](float b) __attribute__((always_inline)) {
+            // Values, not std::min's references: a select of addresses does not vectorize.
+            if (Clipped) {
+              const float lo = kn[i], hi = kf[i];
+              b = b < lo ? lo : b > hi ? hi : b;
+            }
+            return profileErfOf((b - mu) * toErf, erfReach, Series);
+          };
+          const auto add = [&](float* __restrict w, float* __restrict v, float share)
+              __attribute__((always_inline)) {
+            const float d = g * std::max(share, 0.0f);
+            w[i] += d;
+            v[i] += value * d;
+          };
+          const float e0 = erfAt(b0), e1 = erfAt(b1);
+          add(w0, v0, e1 - e0);
+          if constexpr (Samples >= 2) {
+            const float e2 = erfAt(b2);
+            add(w1, v1, e2 - e1);
+            if constexpr (Samples >= 4) {
+              const float e3 = erfAt(b3), e4 = erfAt(b4);
+              add(w2, v2, e3 - e2);
+              add(w3, v3, e4 - e3);
+            }
           }
         }
       };
@@ -346,7 +372,7 @@ __attribute__((always_inline)) inline void wholeTileOf(const TileWork& work) {
                         : 0.0f;
           }
           const bool take = (x >= x0) & (x <= x1);
-          const float c = scale * windowedGaussianOf(std::min(r, cutoff), cutoff) * share *
+          const float c = scale * windowedGaussianOf(r < cutoff ? r : cutoff, cutoff) * share *
                           (take ? 1.0f : 0.0f);
           out[i] = Mip ? std::max(out[i], c) : out[i] + c;
         }

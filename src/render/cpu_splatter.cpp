@@ -51,17 +51,11 @@ TileGather tileGather(const RenderSettings& settings) {
   return postClassified(settings) ? TileGather::Post : TileGather::Pre;
 }
 
-CpuSplatter::Timing CpuSplatter::draw(const ClassifiedSplats& splats,
-                                      const std::vector<uint32_t>& order,
-                                      const std::vector<Slab>& slabs, const SplatFrameSetup& setup,
-                                      const RenderSettings& settings,
-                                      const TileClassifyTables& tables,
-                                      const glm::dmat4& cameraToIndex, const DataBox& dataBox,
-                                      bool upload, bool flatDepths) {
-  Timing t;
-  auto start = std::chrono::steady_clock::now();
-  makeSplatRecords(splats.splats, splats.attributes, setup, records_);
-  t.recordsMs = millisecondsSince(start);
+TileCompositeSettings cpuCompositeSettings(const SplatFrameSetup& setup,
+                                           const RenderSettings& settings,
+                                           const TileClassifyTables& tables,
+                                           const glm::dmat4& cameraToIndex,
+                                           const DataBox& dataBox) {
   TileCompositeSettings composite;
   composite.width = setup.proj.width;
   composite.height = setup.proj.height;
@@ -76,27 +70,44 @@ CpuSplatter::Timing CpuSplatter::draw(const ClassifiedSplats& splats,
   composite.tables = tables;
   composite.cameraToIndex = cameraToIndex;
   composite.dataBox = dataBox;
-  composite.flatDepths = flatDepths;
-  const TileCompositor::Timing c = compositor_.draw(records_, order, slabs, composite, picture_);
+  return composite;
+}
+
+CpuSplatter::Timing CpuSplatter::compute(const ClassifiedSplats& splats,
+                                         const std::vector<uint32_t>& order,
+                                         const std::vector<Slab>& slabs,
+                                         const SplatFrameSetup& setup,
+                                         const TileCompositeSettings& composite,
+                                         const std::atomic<bool>* cancel) {
+  Timing t;
+  const auto start = std::chrono::steady_clock::now();
+  makeSplatRecords(splats.splats, splats.attributes, setup, records_);
+  t.recordsMs = millisecondsSince(start);
+  if (cancel && cancel->load()) return t;
+  const TileCompositor::Timing c =
+      compositor_.draw(records_, order, slabs, composite, picture_, cancel);
   t.binMs = c.binMs;
   t.compositeMs = c.compositeMs;
   t.entries = c.entries;
-  if (!upload) return t;
-  start = std::chrono::steady_clock::now();
-  const int w = composite.width, h = composite.height;
-  if (!texture_ || width_ != w || height_ != h) {
-    texture_ = gl::Texture::create2D(GL_RGBA32F, w, h);
-    width_ = w;
-    height_ = h;
-  }
-  texture_.subImage2D(0, 0, 0, w, h, GL_RGBA, GL_FLOAT, picture_.data());
-  gl::checkGlError("CPU splatter picture upload");
-  t.uploadMs = millisecondsSince(start);
+  width_ = composite.width;
+  height_ = composite.height;
   return t;
 }
 
+double CpuSplatter::upload() {
+  const auto start = std::chrono::steady_clock::now();
+  if (!texture_ || textureWidth_ != width_ || textureHeight_ != height_) {
+    texture_ = gl::Texture::create2D(GL_RGBA32F, width_, height_);
+    textureWidth_ = width_;
+    textureHeight_ = height_;
+  }
+  texture_.subImage2D(0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, picture_.data());
+  gl::checkGlError("CPU splatter picture upload");
+  return millisecondsSince(start);
+}
+
 size_t CpuSplatter::bytes() const {
-  return size_t(width_) * size_t(height_) * sizeof(glm::vec4);
+  return size_t(textureWidth_) * size_t(textureHeight_) * sizeof(glm::vec4);
 }
 
 }  // namespace ewa

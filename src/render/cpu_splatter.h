@@ -3,6 +3,7 @@
 // picture handed to the GL as the texture the final pass reads.
 #pragma once
 
+#include <atomic>
 #include <glm/vec4.hpp>
 #include <vector>
 
@@ -31,6 +32,14 @@ SplatFrameSetup cpuSplatSetup(const Volume& volume, const Camera& volumeCamera,
 // What the tiles gather for `settings`' mode and classification.
 TileGather tileGather(const RenderSettings& settings);
 
+// The tiles' settings for a frame of `setup` under `settings`, post-classified through
+// `tables` with the covered lengths ended at `dataBox` (index coordinates, `cameraToIndex`
+// from camera space).
+TileCompositeSettings cpuCompositeSettings(const SplatFrameSetup& setup,
+                                           const RenderSettings& settings,
+                                           const TileClassifyTables& tables,
+                                           const glm::dmat4& cameraToIndex, const DataBox& dataBox);
+
 class CpuSplatter {
  public:
   struct Timing {
@@ -41,15 +50,15 @@ class CpuSplatter {
     size_t entries = 0;     // (slab entry, tile) pairs
     double totalMs() const { return recordsMs + binMs + compositeMs + uploadMs; }
   };
-  // Draws the frame: the splats' records under `setup`, the partition's slab lists (`order`,
-  // `slabs`, front to back) gathered in tiles, post-classified through `tables` with the
-  // covered lengths ended at `dataBox` (index coordinates, `cameraToIndex` from camera space),
-  // the picture uploaded to pictureTexture() (with `upload`; a GL context must be current).
-  Timing draw(const ClassifiedSplats& splats, const std::vector<uint32_t>& order,
-              const std::vector<Slab>& slabs, const SplatFrameSetup& setup,
-              const RenderSettings& settings, const TileClassifyTables& tables,
-              const glm::dmat4& cameraToIndex, const DataBox& dataBox, bool upload = true,
-              bool flatDepths = false);
+  // Draws the frame on the CPU without GL (from any thread): the splats' records under
+  // `setup`, the partition's slab lists (`order`, `slabs`, front to back) gathered in tiles
+  // under `composite` (cpuCompositeSettings) into picture(). Stops early, the picture
+  // unfinished, once `cancel` (if given) is set.
+  Timing compute(const ClassifiedSplats& splats, const std::vector<uint32_t>& order,
+                 const std::vector<Slab>& slabs, const SplatFrameSetup& setup,
+                 const TileCompositeSettings& composite, const std::atomic<bool>* cancel = nullptr);
+  // The picture to pictureTexture() (a GL context must be current); its milliseconds.
+  double upload();
   // The last picture (TileCompositor::draw's): composite, premultiplied RGBA over nothing;
   // X-ray and MIP, the slab image the final pass reads; rows bottom up.
   const std::vector<glm::vec4>& picture() const { return picture_; }
@@ -61,7 +70,8 @@ class CpuSplatter {
   TileCompositor compositor_;
   std::vector<glm::vec4> picture_;
   gl::Texture texture_;
-  int width_ = 0, height_ = 0;
+  int width_ = 0, height_ = 0;                // the picture's
+  int textureWidth_ = 0, textureHeight_ = 0;  // the texture's
 };
 
 }  // namespace ewa

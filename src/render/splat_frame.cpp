@@ -101,7 +101,8 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     // Splats beyond a storage block: the GPU partition cannot read them, the CPU's can.
     frame_.texelBuffers = texelBuffers();
     // The CPU splatter reads the CPU partition's lists.
-    frame_.gpuSlabs = gpuPartition() && !frame_.texelBuffers && settings.splatter != Splatter::Cpu;
+    frame_.cpuFrame = cpuWanted(settings) && cpuSplatterDraws(settings);
+    frame_.gpuSlabs = gpuPartition() && !frame_.texelBuffers && !cpuWanted(settings);
     stats_.gpuPartition = frame_.gpuSlabs;
     if (frame_.gpuSlabs) {
       if (!gpuPartition_) gpuPartition_ = std::make_unique<GpuSlabPartition>(shaders_);
@@ -159,6 +160,12 @@ void SplatRenderer::takeCpuPartition(bool budgeted) {
     throw;
   }
   const auto& order = partition_.order();
+  frame_.slabs = partition_.slabs();
+  stats_.splatsDrawn = partition_.splatCount();
+  if (frame_.cpuFrame) {  // the CPU splatter reads the lists where they are
+    prepareSlabs(partition_.nearestCenter());
+    return;
+  }
   // The store's pages end where slabs do and are kept while big enough (OrderPages). A list of
   // more than one page goes up a page at a time over the following steps, each made as it is
   // reached (uploadOrderPieces); a whole frame copies it at once.
@@ -168,9 +175,7 @@ void SplatRenderer::takeCpuPartition(bool budgeted) {
   frame_.orderUploading = budgeted && orderPages_.pages() > 1;
   frame_.orderUploaded = 0;
   if (!frame_.orderUploading) orderPages_.uploadAll(order.data());
-  frame_.slabs = partition_.slabs();
   computeSlabRects();
-  stats_.splatsDrawn = partition_.splatCount();
   prepareSlabs(partition_.nearestCenter());
 }
 
@@ -184,6 +189,7 @@ bool SplatRenderer::uploadOrderPieces(double budgetMs, Clock::time_point start) 
 }
 
 void SplatRenderer::waitForPartition() {
+  cancelCpu();  // it reads the partition's lists
   if (pendingPartition_.valid()) pendingPartition_.wait();
 }
 
@@ -200,7 +206,7 @@ void SplatRenderer::prepareSlabs(double nearest) {
   frame_.fragmentsPerEntry = std::max(1.0, side * side);
   // Not post-classified: there culling changed the picture (some 5000 pixels of a 96x80 test
   // scene), so it stays pre-classification's until that is understood.
-  frame_.occlusion = occlusionCulling(settings.occlusionCulling) &&
+  frame_.occlusion = !frame_.cpuFrame && occlusionCulling(settings.occlusionCulling) &&
                      settings.mode == RenderMode::Composite &&
                      settings.order == CompositeOrder::FrontToBack &&
                      settings.terminationOpacity < 1.0 && !postClassified(settings);
@@ -208,7 +214,7 @@ void SplatRenderer::prepareSlabs(double nearest) {
     occlusion_.resize(frame_.width, frame_.height);
     occlusion_.resetCount();
   }
-  setFrameUniforms();
+  if (!frame_.cpuFrame) setFrameUniforms();  // the CPU frame's state is C++ (cpuSplatSetup)
   frame_.drawSplats = true;
   setFrameWeights();
   // The partition (its upload or its compute passes and the range read back; on the CPU, from

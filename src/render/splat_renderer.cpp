@@ -143,6 +143,7 @@ void SplatRenderer::rebuildSplats(const Classification& classification) {
 }
 
 void SplatRenderer::uploadTransferTexture() {
+  cancelCpu();  // it reads the tables
   const double lo = volume_->minValue(), hi = volume_->maxValue();
   transferTable_ = tf_.bake(lo, hi, kTransferSamples);
   transferTexture_.subImage1D(0, 0, kTransferSamples, GL_RGBA, GL_FLOAT, transferTable_.data());
@@ -320,6 +321,12 @@ Image8 SplatRenderer::readImage() const {
 }
 
 std::vector<float> SplatRenderer::readOpticalDepth() const {
+  if (frame_.cpu) {  // the CPU splatter's picture holds it
+    const std::vector<glm::vec4>& picture = cpu_->picture();
+    std::vector<float> depth(picture.size());
+    for (size_t p = 0; p < depth.size(); ++p) depth[p] = picture[p].a;
+    return depth;
+  }
   std::vector<float> rgba(size_t(targets_.width) * targets_.height * 4);
   if (rgba.empty() || !targets_.slab) return {};
   targets_.slab.getImage(0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <future>
@@ -170,6 +171,9 @@ class SplatRenderer : public Renderer {
   // rasterizers, which draw everything when it is waited for anyway). Budgeted steps time
   // their chunks with glFinish either way: the next chunk is sized from the last one's time.
   void setGpuTimers(bool on) { gpuTimers_ = on; }
+  // Test hook: whether auto takes the GL for a software rasterizer, and so splats on the CPU
+  // (cpuWanted); found from GL_RENDERER at construction.
+  void setSoftwareRasterizer(bool software) { softwareGl_ = software; }
   // Test hook: with two splat passes a slab, each pass leaves out the kernels whose cut depth
   // profile misses its half of the slab (on by default; the picture is the same either way).
   void setPassHalfCulling(bool on) { passHalfCulling_ = on; }
@@ -298,9 +302,21 @@ class SplatRenderer : public Renderer {
   // nothing drawn, where tileComposite says the tiles do not draw these settings.
   bool drawTiles();
   bool drawTilesNow();  // drawTiles, failures thrown
-  // Draws the whole frame on the CPU (Splatter::Cpu) if it can: false, nothing drawn and the
-  // reason in the statistics' note, where cpuSplatterDraws says it does not.
-  bool drawCpu();
+  // Whether the frame's splats go to the CPU splatter: asked for (Splatter::Cpu), or auto on a
+  // software rasterizer, where it is many times faster than rasterizing the kernels.
+  bool cpuWanted(const RenderSettings& settings) const;
+  // Draws the whole frame on the CPU if it can (Drawn), else Skipped: nothing drawn and the
+  // reason in the statistics' note, where cpuSplatterDraws says it does not. Within a budget
+  // (a window's step) the work runs on a worker thread and steps return Pending, after
+  // waiting at most `budgetMs`, until it is done.
+  enum class CpuStep { Drawn, Skipped, Pending };
+  CpuStep drawCpu(double budgetMs);
+  // Stops a CPU frame under way and waits for it (its inputs are about to change); the next
+  // step starts it again.
+  void cancelCpu();
+  // The CPU frame's picture uploaded and its figures in the statistics; `waitedMs`: the wall
+  // time of a worker's frame beyond its own stages.
+  void finishCpu(const CpuSplatter::Timing& t, double waitedMs);
   // The compute splatter's programs, in the set this renderer may share (SplatProgramSet).
   const std::shared_ptr<TileEwaPrograms>& tilePrograms();
   // Sets the crop box's and clipping planes' uniforms and, post-classified, the
@@ -519,6 +535,9 @@ class SplatRenderer : public Renderer {
     bool gpuSlabs = false;             // slabs come from gpuPartition_
     bool tiles = false;                // drawn in compute tiles: the picture is tiles_'s
     bool cpu = false;                  // drawn on the CPU: the picture is cpu_'s
+    bool cpuFrame = false;             // meant for the CPU splatter (cpuWanted, and it draws it)
+    bool cpuPending = false;           // its work runs on pendingCpu_
+    Clock::time_point cpuStart;        // when that work began
     bool tilesFirstUse = false;        // tiles: programs compiled or the splatter made for it
     bool indirect = false;          // GPU slabs whose counts only the GPU knows (empty ones kept)
     size_t nextSlab = 0;            // composite: the next slab in drawing order
@@ -544,7 +563,9 @@ class SplatRenderer : public Renderer {
     bool timed = false;  // the stage times come from timers_ (setGpuTimers)
   };
   FrameState frame_;
-  std::future<void> pendingPartition_;  // the CPU partition of frame_ on a worker thread
+  std::future<void> pendingPartition_;           // the CPU partition of frame_ on a worker thread
+  std::future<CpuSplatter::Timing> pendingCpu_;  // the CPU splatter's frame on a worker thread
+  std::atomic<bool> cpuCancel_{false};           // tells pendingCpu_ to stop
   // Measured, kept across frames: what budgeted steps' entries and slab finishes cost.
   StepCostModel stepCost_;
   glm::dmat3 lastRotation_{1.0};  // the last frame's camera rotation (slabThickness)

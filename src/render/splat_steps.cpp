@@ -250,11 +250,16 @@ bool SplatRenderer::stepFrame(double budgetMs) {
     frame_.drawSplats = false;
     stats_.splatMs += millisecondsSince(drawStart);  // the tiles wait for their passes
   }
-  // A whole composite frame on the CPU, if asked for and it draws the frame's settings.
-  if (frame_.drawSplats && !frame_.slabsDone && frame_.settings.splatter == Splatter::Cpu &&
-      frame_.nextSlab == 0 && drawCpu()) {
-    frame_.drawSplats = false;
-    stats_.splatMs += millisecondsSince(drawStart);
+  // A whole frame on the CPU, if wanted and it draws the frame's settings; within a budget
+  // the steps wait for its worker.
+  if (frame_.drawSplats && !frame_.slabsDone && cpuWanted(frame_.settings) &&
+      frame_.nextSlab == 0) {
+    const CpuStep step = drawCpu(budgetMs);
+    if (step == CpuStep::Pending) {
+      stats_.renderMs += millisecondsSince(start);
+      return false;
+    }
+    if (step == CpuStep::Drawn) frame_.drawSplats = false;
   }
   bool drewSlabs = false;  // this step: the final pass may not fit beside them
   if (frame_.drawSplats && !frame_.slabsDone) {

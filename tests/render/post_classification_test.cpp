@@ -194,7 +194,7 @@ TEST_F(PostClassification, QuartersAreTheHalvesOfSlabsHalfAsThick) {
   cam.position = {60.0, -40.0, 70.0};
   cam.viewUp = {0.0, 0.0, 1.0};
   auto picture = [&](int samples, double thickness) {
-    RenderSettings settings;
+    RenderSettings settings = rasterSettings();  // measured on the rasterizer's slab images
     settings.slabSamples = samples;
     settings.slabThickness = thickness;
     renderer()->render(cam, settings, 96, 96);

@@ -515,6 +515,7 @@ TEST_F(TileEwaSplatterTest, AutoSplatterRasterizesWhereTheTilesDoNotBuild) {
   r.setVolume(vol);
   r.setTransferFunction(tf);
   r.setGpuTimers(true);
+  r.setSoftwareRasterizer(false);  // auto as on a GPU: tiles or rasterized, not the CPU
   const Camera cam = obliqueCamera();
   RenderSettings settings = tileSettings();
   settings.splatter = Splatter::Auto;
