@@ -10,6 +10,7 @@
 #include <string>
 
 #include "ci_skip.h"
+#include "fuzz_case.h"
 #include "io/region_read.h"
 #include "io/volume_loader.h"
 #include "loader_test_files.h"
@@ -351,6 +352,27 @@ TEST_F(ZarrHandMade, BadMultiscalesFailInOneLine) {
   expectVolumeLoadError(image, "a Zarr group without OME-NGFF multiscales");
   std::filesystem::create_directories(dir_.path("empty.zarr"));
   expectVolumeLoadError(dir_.path("empty.zarr"), "not a Zarr image");
+}
+
+TEST_F(ZarrHandMade, FuzzSeedsAreArraysThatLoad) {
+  // fuzz/zarr_fuzzer.cpp's input: the .zarray, then chunks 0.0.0 and 0.0.1.
+  int seeds = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(EWA_FUZZ_DIR) + "/corpus/zarr")) {
+    const std::string bytes = testing::fileBytes(entry.path().string());
+    const std::vector<std::string> sections =
+        fuzz::splitSections(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+    ASSERT_EQ(sections.size(), 3u) << entry.path();
+    const std::string a = array("seed.zarr", sections[0]);
+    dir_.write("seed.zarr/0.0.0", sections[1]);
+    dir_.write("seed.zarr/0.0.1", sections[2]);
+    const Volume v = loadVolume(a);
+    EXPECT_EQ(v.dims(), (std::array<int64_t, 3>{4, 2, 2})) << entry.path();
+    EXPECT_EQ(v.value(3, 1, 1), 45) << entry.path();
+    std::filesystem::remove_all(a);
+    ++seeds;
+  }
+  EXPECT_GE(seeds, 3);
 }
 
 }  // namespace
