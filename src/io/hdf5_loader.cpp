@@ -210,7 +210,12 @@ auto withFile(const std::string& path, F&& f) -> decltype(f(hid_t())) {
     H5Eclear2(H5E_DEFAULT);
     failLoad(path, "not an HDF5 file (no HDF5 signature)");
   }
-  const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  // Read only, so no lock is needed: without one, the file opens on file systems that have no
+  // locks (some parallel ones) and while a writer holds it, as every process of a run reads it.
+  const Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (access.valid()) H5Pset_file_locking(access.get(), false, true);
+  const Handle file(
+      H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.valid() ? access.get() : H5P_DEFAULT), H5Fclose);
   if (!file.valid()) failLoad(path, "cannot open the HDF5 file" + libraryProblem());
   try {
     return f(file.get());
