@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "app/options.h"
 #include "ci_skip.h"
 #include "fuzz_case.h"
 #include "io/region_read.h"
@@ -352,6 +353,16 @@ TEST_F(ZarrHandMade, BadMultiscalesFailInOneLine) {
   expectVolumeLoadError(image, "a Zarr group without OME-NGFF multiscales");
   std::filesystem::create_directories(dir_.path("empty.zarr"));
   expectVolumeLoadError(dir_.path("empty.zarr"), "not a Zarr image");
+}
+
+TEST(ZarrOptions, LevelAndDatasetReachTheLoadOptions) {
+  const char* argv[] = {"ewaview", "img.zarr", "--level", "2", "--dataset", "/group/raw"};
+  Options o;
+  ASSERT_TRUE(parseCommandLine(6, argv, &o).run);
+  EXPECT_EQ(o.load.level, 2);
+  EXPECT_EQ(o.load.dataset, "/group/raw");
+  const char* negative[] = {"ewaview", "img.zarr", "--level", "-1"};
+  EXPECT_EQ(parseCommandLine(4, negative, &o).exitCode, 2);
 }
 
 TEST_F(ZarrHandMade, FuzzSeedsAreArraysThatLoad) {
