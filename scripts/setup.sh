@@ -12,6 +12,8 @@ packages=(build-essential cmake pkg-config
   libimgui-dev libstb-dev libcli11-dev nlohmann-json3-dev zlib1g-dev libbz2-dev libgtest-dev
   libgdcm-dev libtiff-dev  # DICOM series, TIFF stacks
   libarchive-dev  # volumes in .zip, .tar.gz, .7z archives
+  libblosc-dev libzstd-dev libhdf5-dev  # OME-Zarr chunks, HDF5 files
+  python3-zarr python3-h5py  # the OME-Zarr and HDF5 tests write their files with them
   libtbb-dev  # the CPU splatter's tasks (--splatter cpu)
   xvfb xauth xdotool imagemagick  # tests/window/window_test.sh
   unzip  # the DICOM test series in a zip

@@ -76,14 +76,21 @@ int runWindow(ewa::Scene scene, const ewa::Options& options) {
     ewa::Options fileOptions = base;
     // The command line's raw file, opened again with another spacing, keeps its raw options.
     std::error_code ec;
-    if (base.file.empty() || !std::filesystem::equivalent(path, base.file, ec))
-      fileOptions.rawDims.clear();
+    const bool commandLineFile =
+        !base.file.empty() && std::filesystem::equivalent(path, base.file, ec);
+    if (!commandLineFile) fileOptions.rawDims.clear();
     fileOptions.file = path;
     fileOptions.synthetic.clear();
     fileOptions.tfFile.clear();  // --tf was for the first volume; others use their sidecar
     fileOptions.tfPresets.clear();
     fileOptions.load = load;  // so were --series, --frame, --channel and --spacing: the
                               // window's own
+    // The window pages frames and channels, not pyramid levels or HDF5 datasets: the command
+    // line's file keeps its --level and --dataset.
+    if (commandLineFile) {
+      fileOptions.load.level = base.load.level;
+      fileOptions.load.dataset = base.load.dataset;
+    }
     ewa::Scene s = ewa::loadScene(fileOptions);
     ewa::LoadedVolume loaded;
     loaded.spacing = load.spacing;

@@ -67,14 +67,17 @@ std::vector<OptionSpec> makeTable() {
       .notInPython()
       .describe(
           "Volume file (.nrrd .nhdr .mhd .mha .dat .vti .vtk .nii .nii.gz .hdr .img .dcm .tif "
-          ".tiff .ome .slc .mrc .map .rec), a folder of DICOM, TIFF or .png .jpg .bmp .pgm "
+          ".tiff .ome .slc .mrc .map .rec .h5 .hdf5), an OME-Zarr folder (.zarr), a folder of "
+          "DICOM, TIFF or .png .jpg .bmp .pgm "
           "slices, an archive of one (.zip .tar .tar.gz .7z ...), or raw with --raw-*")
       .explain(
           "`.nrrd`/`.nhdr`, `.mhd`/`.mha`, `.dat`, `.vti`, legacy VTK `.vtk` (structured "
           "points), `.nii`/`.nii.gz`/`.hdr`/`.img` (NIfTI), any file of a DICOM series (`.dcm`, "
           "with the `DICM` preamble, or an old ACR-NEMA file: a bare data set), `.tif`/`.tiff`, "
           "an OME-TIFF dataset's companion `.ome`/`.ome.xml`, `.slc`, MRC and CCP4 maps "
-          "(`.mrc`, `.mrcs`, `.map`, `.ccp4`, `.rec`: cryo-EM and tomography), a folder (DICOM "
+          "(`.mrc`, `.mrcs`, `.map`, `.ccp4`, `.rec`: cryo-EM and tomography), HDF5 (`.h5`, "
+          "`.hdf5`: one 3D dataset, `--dataset`), an OME-Zarr image's folder (`.zarr`, or any "
+          "Zarr v2 array's folder, or its `.zattrs` or `.zarray` file: `--level`), a folder (DICOM "
           "series, its own or in the folders below it, as on a CD with a `DICOMDIR`; or TIFF "
           "slices), an archive of any of these as downloads and PACS exports come (`.zip`, "
           "`.tar`, `.tar.gz`/`.tgz`, `.tar.bz2`, `.tar.xz`, `.tar.zst`, `.7z`), or raw data "
@@ -98,11 +101,12 @@ std::vector<OptionSpec> makeTable() {
       .range(0, 1 << 30)
       .defaultsTo(std::to_string(o.load.frame))
       .describe(
-          "4D NIfTI or NRRD, an OME-TIFF's or ImageJ hyperstack's time point, or a DICOM series "
-          "of several volumes at the same positions: open this volume")
+          "4D NIfTI or NRRD, an OME-TIFF's, OME-Zarr image's or ImageJ hyperstack's time point, "
+          "or a DICOM series of several volumes at the same positions: open this volume")
       .explain(
           "4D NIfTI or NRRD (its last axis a time or list axis, as 3D Slicer's sequences and "
-          "DWI files have it), an OME-TIFF's or ImageJ hyperstack's time point, or a DICOM "
+          "DWI files have it), an OME-TIFF's, OME-Zarr image's or ImageJ hyperstack's time "
+          "point, or a DICOM "
           "series (or enhanced multi-frame file) of several volumes at the same slice positions "
           "(diffusion directions, echoes, time points): open volume N; `--info` says how many "
           "there are. A DICOM series' volumes are told apart by position: the k-th slice at "
@@ -112,7 +116,8 @@ std::vector<OptionSpec> makeTable() {
       .defaultsTo(std::to_string(o.load.channel))
       .describe(
           "Colour or vector data (TIFF, DICOM, image slices and NIfTI: 0 red, 1 green, 2 blue; "
-          "MetaImage channels, VTK components and vectors, a 4D NRRD's colour or vector axis): "
+          "MetaImage channels, VTK components and vectors, a 4D NRRD's colour or vector axis, an "
+          "OME-Zarr image's channel axis): "
           "open this channel; 'all' or a list (0,2): those channels overlaid, each in its "
           "colour, the colours added (headless: --output, --turntable, --tour)")
       .explain(
@@ -121,7 +126,8 @@ std::vector<OptionSpec> makeTable() {
           "blue), colour image slices, NIfTI RGB24/RGBA32, MetaImage's "
           "`ElementNumberOfChannels`, a `.vti` array's `NumberOfComponents`, legacy VTK's "
           "SCALARS of several components, COLOR_SCALARS and VECTORS, or a 4D NRRD whose first "
-          "axis is colour or vectors (`kinds: RGB-color ...`): open channel N. `--channel all`, "
+          "axis is colour or vectors (`kinds: RGB-color ...`), or an OME-Zarr image's channel "
+          "axis: open channel N. `--channel all`, "
           "headless (with `--output`, `--turntable` or `--tour`): every channel of the file (16 "
           "at most) overlaid (`--channel 0,2`: those channels, in any order, each in the colour "
           "its place in the file gives it; two the same, an empty entry or a channel the file "
@@ -141,6 +147,23 @@ std::vector<OptionSpec> makeTable() {
           "`--save-volume`; `--stats` reports the channels' sums and each channel in "
           "`channels`; a file of one channel is drawn as it is; in Python, `Scene(path, "
           "channel=\"all\")` or `channel=(0, 2)`");
+  add(rows, "--level", OptionGroup::Input)
+      .value("N")
+      .range(0, 63)
+      .defaultsTo(std::to_string(o.load.level))
+      .describe("OME-Zarr: open this pyramid level (0: full resolution, each next one coarser)")
+      .explain(
+          "OME-Zarr: open level N of the image's multiscales pyramid, the N-th of its "
+          "`datasets` (0 is full resolution, each next one coarser); the voxel spacing is the "
+          "level's scale. `--info` says how many levels there are. A Zarr array without "
+          "multiscales has level 0 alone");
+  add(rows, "--dataset", OptionGroup::Input)
+      .value("NAME")
+      .describe("HDF5: open this 3D dataset (default: the file's only 3D dataset)")
+      .explain(
+          "HDF5: open the 3D dataset at this path in the file (`/volume`, `exported_data`, "
+          "`group/raw`). Without it the file must hold exactly one 3D dataset; otherwise the "
+          "error lists them");
   add(rows, "--spacing", OptionGroup::Input)
       .value("X,Y,Z")
       .describe(

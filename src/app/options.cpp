@@ -97,6 +97,8 @@ void addOptions(CLI::App& app, Options* o, ParsedText* t) {
   addTableOption(app, "--series", o->load.series);
   addTableOption(app, "--frame", o->load.frame);
   addTableOption(app, "--channel", t->channel);
+  addTableOption(app, "--level", o->load.level);
+  addTableOption(app, "--dataset", o->load.dataset);
   addTableOption(app, "--spacing", t->spacing)->delimiter(',')->expected(3);
   auto* rawDims = addTableOption(app, "--raw-dims", o->rawDims);
   addTableOption(app, "--raw-type", o->rawType)->needs(rawDims);

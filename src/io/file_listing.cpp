@@ -23,10 +23,10 @@ std::string lower(std::string s) {
 
 const std::vector<std::string>& volumeFileExtensions() {
   static const std::vector<std::string> kExtensions = [] {
-    std::vector<std::string> all = {".nrrd", ".nhdr", ".mhd",    ".mha",  ".dat",     ".vti",
-                                    ".vtk",  ".nii",  ".nii.gz", ".hdr",  ".img",     ".dcm",
-                                    ".ima",  ".tif",  ".tiff",   ".ome",  ".ome.xml", ".slc",
-                                    ".mrc",  ".mrcs", ".map",    ".ccp4", ".rec"};
+    std::vector<std::string> all = {".nrrd", ".nhdr",   ".mhd",     ".mha", ".dat", ".vti",  ".vtk",
+                                    ".nii",  ".nii.gz", ".hdr",     ".img", ".dcm", ".ima",  ".tif",
+                                    ".tiff", ".ome",    ".ome.xml", ".slc", ".mrc", ".mrcs", ".map",
+                                    ".ccp4", ".rec",    ".h5",      ".hdf5"};
     const std::vector<std::string>& archives = archiveFileExtensions();
     all.insert(all.end(), archives.begin(), archives.end());
     const std::vector<std::string>& images = sliceImageExtensions();

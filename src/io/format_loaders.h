@@ -37,6 +37,16 @@ Volume loadTiff(const std::string& path, int channel, int frame);
 // An OME-XML companion file (.companion.ome, .ome.xml) of an OME-TIFF dataset over several files.
 Volume loadOmeCompanion(const std::string& path, int channel, int frame);
 
+// An OME-Zarr image (Zarr v2: a folder with .zattrs multiscales, or a bare array's folder with
+// .zarray) at pyramid `level`; `frame` and `channel` of its time and channel axes. Chunk files
+// are confined to the image's folder by `scope`. region_read.h reads a box of it.
+Volume loadZarr(const std::string& path, int level, int frame, int channel,
+                DataFileScope scope = DataFileScope::HeaderFolder);
+// True for a Zarr image or array: a folder holding .zattrs, .zgroup or .zarray, or such a file.
+bool isZarrPath(const std::string& path);
+// .h5, .hdf5: the 3D dataset `dataset` (a path inside the file; "": the file's only 3D one).
+Volume loadHdf5(const std::string& path, const std::string& dataset);
+
 // Ordinary images as slices (PNG, 8 or 16 bits; JPEG; BMP; PGM/PPM): the images of a folder, or
 // of the named image's folder, in natural name order; `channel` of colour images.
 Volume loadImageStack(const std::string& path, int channel);

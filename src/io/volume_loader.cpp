@@ -82,6 +82,10 @@ Volume loadArchive(const std::string& path, const LoadOptions& options, ArchiveC
 Volume loadByExtension(const std::string& path, const LoadOptions& options,
                        ArchiveCache* archives) {
   std::error_code ec;
+  // A Zarr image is a folder (or its metadata file) whatever its name.
+  if (isZarrPath(path) ||
+      (hasExtension(path, {".zarr"}) && std::filesystem::is_directory(path, ec)))
+    return loadZarr(path, options.level, options.frame, options.channel, options.dataFiles);
   if (std::filesystem::is_directory(path, ec)) return loadFolder(path, options);
   // Missing files get the same message whatever their extension.
   regularFileSize(path);
@@ -101,6 +105,7 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options,
   if (inner == ".nii" || inner == ".hdr" || inner == ".img")
     return loadNifti(path, options.frame, options.channel);
   if (ext == ".slc") return loadSlc(path);
+  if (ext == ".h5" || ext == ".hdf5") return loadHdf5(path, options.dataset);
   if (ext == ".mrc" || ext == ".mrcs" || ext == ".map" || ext == ".ccp4" || ext == ".rec")
     return loadMrc(path);
   if (ext == ".tif" || ext == ".tiff") return loadTiff(path, options.channel, options.frame);
@@ -113,7 +118,8 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options,
   failLoad(path,
            "unknown volume file extension " + quoteText(ext) +
                " (supported: .nrrd .nhdr .mhd .mha .dat .vti .vtk .nii .nii.gz .hdr .img .dcm "
-               ".tif .tiff .ome .slc .mrc .map .rec, DICOM files and folders, folders of .png "
+               ".tif .tiff .ome .slc .mrc .map .rec .h5 .hdf5, .zarr folders, DICOM files and "
+               "folders, folders of .png "
                ".jpg .bmp .pgm slices, archives of them: .zip .tar .tar.gz .7z ...; raw files "
                "need their dimensions and type given)");
 }

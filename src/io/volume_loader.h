@@ -47,6 +47,8 @@ struct LoadOptions {
   std::optional<glm::dvec3> spacing;
   // Where a detached header may name its data files (--allow-outside-data: anywhere).
   DataFileScope dataFiles = DataFileScope::HeaderFolder;
+  int level = 0;          // OME-Zarr: the pyramid level (0: full resolution)
+  std::string dataset{};  // HDF5: the dataset's path in the file; empty: its only 3D dataset
 };
 
 // Sets `spacing` (positive and finite; throws LoadError naming `path` otherwise) with a note
@@ -57,7 +59,8 @@ void overrideSpacing(const std::string& path, Volume& volume, const glm::dvec3& 
 // .dat (Voreen/Inviwo text header), .vti (VTK XML image data), .nii/.nii.gz/.hdr/.img
 // (NIfTI), .dcm or any DICOM file (its series), .tif/.tiff (TIFF stack), .ome/.ome.xml (an
 // OME-TIFF dataset's companion metadata), .slc (VTK SLC), .mrc/.mrcs/.map/.ccp4/.rec (MRC2014
-// and CCP4 maps, cryo-EM and tomography); a
+// and CCP4 maps, cryo-EM and tomography), .zarr folders (OME-Zarr; also a Zarr array's folder
+// or its .zattrs/.zarray file), .h5/.hdf5 (HDF5); a
 // folder opens its DICOM series or its TIFF files; an archive (.zip, .tar, .tar.gz, .7z, ...)
 // opens the one volume file or the DICOM series or TIFF stack it holds (archive_extract.h). Throws
 // LoadError. Signed 8-bit data (which Volume has no type for) is widened to Int16; negative

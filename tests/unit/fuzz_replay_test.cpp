@@ -32,8 +32,8 @@ std::vector<fs::path> filesIn(const fs::path& folder) {
 }
 
 TEST(FuzzReplay, EveryParserHasATargetWithSeeds) {
-  for (const char* name :
-       {"nrrd", "metaimage", "dat", "vti", "raw", "tf_json", "archive", "mrc", "vtk", "image"}) {
+  for (const char* name : {"nrrd", "metaimage", "dat", "vti", "raw", "tf_json", "archive", "mrc",
+                           "vtk", "image", "zarr"}) {
     ASSERT_TRUE(fuzzTargets().count(name)) << name;
     EXPECT_FALSE(filesIn(fs::path(EWA_FUZZ_DIR) / "corpus" / name).empty()) << name;
   }
