@@ -13,6 +13,7 @@ packages=(build-essential cmake pkg-config
   libgdcm-dev libtiff-dev  # DICOM series, TIFF stacks
   libarchive-dev  # volumes in .zip, .tar.gz, .7z archives
   libtbb-dev  # the CPU splatter's tasks (--splatter cpu)
+  libopenmpi-dev openmpi-bin  # distributed rendering (ewaview-mpi, IceT in third_party/icet)
   xvfb xauth xdotool imagemagick  # tests/window/window_test.sh
   unzip  # the DICOM test series in a zip
   clang libclang-rt-14-dev  # scripts/fuzz.sh: clang with libFuzzer
