@@ -319,6 +319,19 @@ Image8 SplatRenderer::readImage() const {
   return img;
 }
 
+std::vector<float> SplatRenderer::readFramePicture() const {
+  const bool composite = frame_.settings.mode == RenderMode::Composite;
+  const gl::Texture& picture = !composite     ? targets_.slab
+                               : frame_.tiles ? tiles_->pictureTexture()
+                               : frame_.cpu   ? cpu_->pictureTexture()
+                                              : targets_.accum;
+  if (!picture) return {};
+  std::vector<float> rgba(size_t(picture.width()) * size_t(picture.height()) * 4);
+  if (rgba.empty()) return {};
+  picture.getImage(0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
+  return rgba;
+}
+
 std::vector<float> SplatRenderer::readOpticalDepth() const {
   std::vector<float> rgba(size_t(targets_.width) * targets_.height * 4);
   if (rgba.empty() || !targets_.slab) return {};
