@@ -321,7 +321,8 @@ Image8 SplatRenderer::readImage() const {
 
 std::vector<float> SplatRenderer::readFramePicture() const {
   const bool composite = frame_.settings.mode == RenderMode::Composite;
-  const gl::Texture& picture = !composite     ? targets_.slab
+  // As drawFinalPass binds them (X-ray and MIP drawn on the CPU: the CPU's picture).
+  const gl::Texture& picture = !composite ? (frame_.cpu ? cpu_->pictureTexture() : targets_.slab)
                                : frame_.tiles ? tiles_->pictureTexture()
                                : frame_.cpu   ? cpu_->pictureTexture()
                                               : targets_.accum;
