@@ -15,6 +15,7 @@ packages=(build-essential cmake pkg-config
   libblosc-dev libzstd-dev libhdf5-dev  # OME-Zarr chunks, HDF5 files
   python3-zarr python3-h5py  # the OME-Zarr and HDF5 tests write their files with them
   libtbb-dev  # the CPU splatter's tasks (--splatter cpu)
+  libopenmpi-dev openmpi-bin  # distributed rendering (ewaview-mpi, IceT in third_party/icet)
   xvfb xauth xdotool imagemagick  # tests/window/window_test.sh
   unzip  # the DICOM test series in a zip
   clang libclang-rt-14-dev  # scripts/fuzz.sh: clang with libFuzzer

@@ -320,6 +320,20 @@ Image8 SplatRenderer::readImage() const {
   return img;
 }
 
+std::vector<float> SplatRenderer::readFramePicture() const {
+  const bool composite = frame_.settings.mode == RenderMode::Composite;
+  // As drawFinalPass binds them (X-ray and MIP drawn on the CPU: the CPU's picture).
+  const gl::Texture& picture = !composite ? (frame_.cpu ? cpu_->pictureTexture() : targets_.slab)
+                               : frame_.tiles ? tiles_->pictureTexture()
+                               : frame_.cpu   ? cpu_->pictureTexture()
+                                              : targets_.accum;
+  if (!picture) return {};
+  std::vector<float> rgba(size_t(picture.width()) * size_t(picture.height()) * 4);
+  if (rgba.empty()) return {};
+  picture.getImage(0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
+  return rgba;
+}
+
 std::vector<float> SplatRenderer::readOpticalDepth() const {
   if (frame_.cpu) {  // the CPU splatter's picture holds it
     const std::vector<glm::vec4>& picture = cpu_->picture();

@@ -132,6 +132,11 @@ class SplatRenderer : public Renderer {
 
   // X-ray mode only: the summed optical depth per pixel, bottom row first (for tests).
   std::vector<float> readOpticalDepth() const;
+  // What the last frame's final pass turned into the picture, before the background: RGBA
+  // floats per pixel, bottom row first. Composite: premultiplied colour and opacity (the
+  // rasterizer's, the tiles' or the CPU's picture); X-ray: the summed optical depth in alpha;
+  // MIP: the maximum in red. Distributed rendering composites these across ranks (src/dist).
+  std::vector<float> readFramePicture() const;
   // The splats of the current volume and transfer function (built on the next render()).
   const SplatSet& splats() const { return classified_.splats; }
   const AttributeList& attributes() const { return classified_.attributes; }

@@ -1,0 +1,40 @@
+// ewaview-mpi entry point: mpirun -np P ewaview-mpi FILE --output out.png [ewaview's options].
+#include <mpi.h>
+
+#include <iostream>
+#include <sstream>
+
+#include "app/options.h"
+#include "dist/mpi_render.h"
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  ewa::Options options;
+  ewa::ParseResult parsed;
+  {
+    // The same command line on every rank: only rank 0 prints what the parser says.
+    std::ostringstream quietOut, quietErr;
+    std::streambuf* out = std::cout.rdbuf();
+    std::streambuf* err = std::cerr.rdbuf();
+    if (rank != 0) {
+      std::cout.rdbuf(quietOut.rdbuf());
+      std::cerr.rdbuf(quietErr.rdbuf());
+    }
+    parsed = ewa::parseCommandLine(argc, argv, &options);
+    std::cout.rdbuf(out);
+    std::cerr.rdbuf(err);
+  }
+  int status = parsed.exitCode;
+  if (parsed.run) {
+    if (const std::string problem = ewa::dist::distributedUsageProblem(options); !problem.empty()) {
+      if (rank == 0) std::cerr << "ewaview-mpi: " << problem << std::endl;
+      status = 2;
+    } else {
+      status = ewa::dist::renderDistributed(options, MPI_COMM_WORLD);
+    }
+  }
+  MPI_Finalize();
+  return status;
+}

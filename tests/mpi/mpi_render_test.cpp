@@ -1,0 +1,143 @@
+// ewaview-mpi under mpirun against the one-process ewaview picture (early termination off): on
+// 1 to 4 ranks, perspective and orthographic, oblique views, composite, X-ray and MIP, a
+// synthetic and a shared volume, SSIM >= 0.999 and no channel off by more than 10 levels; a file
+// missing on every rank or on one ends all ranks with one line, and usage errors are one line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "cli_run.h"
+#include "core/image_metrics.h"
+#include "image_compare.h"
+#include "io/png_io.h"
+
+namespace ewa::test {
+namespace {
+
+constexpr double kMinSsim = 0.999;
+constexpr int kMaxLevels = 10;
+constexpr int kTimeout = 120;  // seconds: a hung rank fails the test instead of hanging CTest
+
+const std::string kSynthetic = "--synthetic marschner-lobb:41 --resolution 128,128";
+
+std::string outPath(const std::string& name) {
+  return testOutputDir() + "/mpi_" + name + ".png";
+}
+
+CliRun runRanks(int ranks, const std::string& args, const std::string& prefix) {
+  return runProgram(EWA_MPIEXEC, std::to_string(ranks) + " " + EWA_MPI_BINARY + " " + args, prefix,
+                    kTimeout);
+}
+
+FloatImage floatImage(const Image8& image) {
+  FloatImage out(image.width, image.height, image.channels);
+  for (size_t i = 0; i < image.pixels.size(); ++i) out.values[i] = float(image.pixels[i]);
+  return out;
+}
+
+// The one-process picture of `args`, and each rank count's against it.
+void expectSamePicture(const std::string& name, const std::string& args,
+                       std::initializer_list<int> rankCounts) {
+  const std::string common = args + " --termination 1";
+  const CliRun one = runEwaview(common + " --output " + outPath(name + "_one"), name);
+  ASSERT_EQ(one.code, 0) << one.err;
+  const Image8 reference = readPng(outPath(name + "_one"));
+  for (int ranks : rankCounts) {
+    SCOPED_TRACE(std::to_string(ranks) + " ranks");
+    const std::string out = outPath(name + "_np" + std::to_string(ranks));
+    const CliRun run = runRanks(ranks, common + " --output " + out, name);
+    ASSERT_EQ(run.code, 0) << run.err;
+    const Image8 picture = readPng(out);
+    ASSERT_EQ(picture.width, reference.width);
+    ASSERT_EQ(picture.height, reference.height);
+    EXPECT_LE(maxDifference(picture, reference), kMaxLevels);
+    EXPECT_GE(structuralSimilarity(floatImage(picture), floatImage(reference), 255.0), kMinSsim);
+    EXPECT_GT(meanValue(picture), 1.0) << "an empty picture";
+  }
+}
+
+TEST(MpiRender, OneToFourRanksDrawTheOneProcessPicture) {
+  expectSamePicture("default", kSynthetic, {1, 2, 3, 4});
+}
+
+TEST(MpiRender, ObliqueOrthographicAndPerspectiveViews) {
+  // Pre-classified: every kernel's share is cut exactly at the brick faces, so the bricks add up
+  // to the whole picture to the 8-bit noise floor from any side.
+  const std::string oblique = kSynthetic + " --camera-position 75,-40,95 --classification pre";
+  expectSamePicture("oblique", oblique, {3});
+  expectSamePicture("orthographic", oblique + " --camera-orthographic", {3});
+}
+
+TEST(MpiRender, PostClassifiedSlabsAcrossBrickFacesStayNearTheWholePicture) {
+  // Post-classified, a slab that a brick face crosses obliquely is classified on each side
+  // apart (its mean value over part of its kernels), so pixels along the faces' edges on screen
+  // may differ where the transfer function is steep: Marschner-Lobb's opaque boundary seen
+  // close up, 3 ranks, leaves a few pixels off by up to about 50 levels.
+  const std::string args = kSynthetic + " --camera-position 75,-40,95 --termination 1 --output ";
+  ASSERT_EQ(runEwaview(args + outPath("post_one"), "post").code, 0);
+  const CliRun run = runRanks(3, args + outPath("post_np3"), "post");
+  ASSERT_EQ(run.code, 0) << run.err;
+  const Image8 reference = readPng(outPath("post_one")), picture = readPng(outPath("post_np3"));
+  EXPECT_GE(structuralSimilarity(floatImage(picture), floatImage(reference), 255.0), kMinSsim);
+  const ImageDifference d = compareCovered(picture, reference, backgroundRgb8(0, 0, 0), kMaxLevels);
+  EXPECT_LE(d.badFraction, 0.002) << d.badFraction * d.covered << " pixels";
+  EXPECT_LE(d.mean, 0.2);
+}
+
+TEST(MpiRender, XRaySumsAndMipTakesTheMaximum) {
+  expectSamePicture("xray", kSynthetic + " --render-mode xray --xray-scale 0.05", {3});
+  expectSamePicture("mip", kSynthetic + " --render-mode mip --background 0.2,0.3,0.4", {2});
+}
+
+TEST(MpiRender, SharedVolumeWithAnOpaqueBackground) {
+  const std::string file = std::string(EWA_SHARED_DATA) + "/neghip/neghip.slc";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " absent";
+  expectSamePicture("neghip",
+                    file +
+                        " --resolution 160,160 --camera-position 150,-90,110 "
+                        "--background 0.1,0.1,0.2",
+                    {2, 3});
+}
+
+TEST(MpiRender, AFileMissingOnEveryRankEndsAllWithOneLine) {
+  const CliRun run =
+      runRanks(2, "/nonexistent/volume.nrrd --output " + outPath("missing"), "missing");
+  EXPECT_EQ(run.code, 1);
+  const size_t at = run.err.find("ewaview-mpi: rank 0 of 2: ");
+  ASSERT_NE(at, std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("ewaview-mpi:", at + 1), std::string::npos) << "said twice: " << run.err;
+  EXPECT_NE(run.err.find("/nonexistent/volume.nrrd"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(outPath("missing")));
+}
+
+TEST(MpiRender, AFileMissingOnOneRankEndsAllWithItsLine) {
+  // Rank 0 reads a volume, rank 1 (a second program of the same run) a file it does not have.
+  const std::string out = " --resolution 32,32 --output " + outPath("missing_one");
+  const CliRun run =
+      runProgram(EWA_MPIEXEC,
+                 std::string("1 ") + EWA_MPI_BINARY + " " + kSynthetic + out + " : " +
+                     EWA_MPI_NP_FLAG + " 1 " + EWA_MPI_BINARY + " /nonexistent/brick.nrrd" + out,
+                 "missing_one", kTimeout);
+  EXPECT_EQ(run.code, 1);
+  const size_t at = run.err.find("ewaview-mpi: rank 1 of 2: ");
+  ASSERT_NE(at, std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("ewaview-mpi:", at + 1), std::string::npos) << "said twice: " << run.err;
+  EXPECT_EQ(run.err.find("ewaview-mpi: rank 0"), std::string::npos) << run.err;
+}
+
+TEST(MpiRender, UsageErrorsAreOneLine) {
+  const CliRun noOutput = runRanks(2, kSynthetic, "usage");
+  EXPECT_EQ(noOutput.code, 2);
+  EXPECT_NE(noOutput.err.find("ewaview-mpi: --output FILE.png is needed"), std::string::npos)
+      << noOutput.err;
+  const CliRun badOption = runRanks(2, "--no-such-option", "usage");
+  EXPECT_EQ(badOption.code, 2);
+  // The parser's message from rank 0 only (mpirun adds its own report of the exit status).
+  const size_t said = badOption.err.find("no-such-option");
+  ASSERT_NE(said, std::string::npos) << badOption.err;
+  EXPECT_EQ(badOption.err.find("no-such-option", said + 1), std::string::npos) << badOption.err;
+}
+
+}  // namespace
+}  // namespace ewa::test
