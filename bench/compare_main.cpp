@@ -9,6 +9,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "app/frame_stats.h"
@@ -123,15 +124,27 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
   RenderSettings cpuSettings = rs;
   cpuSettings.splatter = Splatter::Cpu;
   const bool cpu = m.timed("cpu") && cpuSplatterDraws(rs);
+  std::vector<double> cpuPartition, cpuRecords, cpuBins, cpuTiles;
   const auto cpuDraw = [&] {
     const auto start = BenchClock::now();
     m.ewa.render(cam, cpuSettings, size, size);
     glFinish();
     const double ms = millisecondsSince(start);
+    const RenderStats& c = m.ewa.stats();
+    cpuPartition.push_back(c.partitionMs);
+    cpuRecords.push_back(c.cpuRecordsMs);
+    cpuBins.push_back(c.cpuBinMs);
+    cpuTiles.push_back(c.cpuTilesMs);
     m.cpuPicture = m.ewa.readImage();
     return ms;
   };
-  if (cpu) cpuDraw();  // warm-up: its buffers
+  if (cpu) {
+    cpuDraw();  // warm-up: its buffers
+    cpuPartition.clear();
+    cpuRecords.clear();
+    cpuBins.clear();
+    cpuTiles.clear();
+  }
   RenderSettings sw = rs;
   sw.renderer = RendererKind::ShearWarp;
   if (shearWarp) m.shearWarp.render(cam, sw, size, size);
@@ -180,7 +193,13 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
     row.tilesBinMs = summarize(tileBins).median;
   }
   if (tileEwa) row.tileEwaMs = summarize(tileEwaMs).median;
-  if (cpu) row.cpuMs = summarize(cpuMs).median;
+  if (cpu) {
+    row.cpuMs = summarize(cpuMs).median;
+    row.cpuPartitionMs = summarize(cpuPartition).median;
+    row.cpuRecordsMs = summarize(cpuRecords).median;
+    row.cpuBinMs = summarize(cpuBins).median;
+    row.cpuTilesMs = summarize(cpuTiles).median;
+  }
   if (shearWarp) row.shearWarpMs = summarize(shearWarpMs).median;
 }
 
@@ -206,7 +225,9 @@ int run(int argc, char** argv) {
   if (!o.imagesDir.empty()) std::filesystem::create_directories(o.imagesDir);
 
   auto context = platform::createHeadlessContext(platform::parseHeadlessBackend(o.backend));
-  report.context = context->description();
+  // The cores the CPU splatter and VTK's CPU ray caster spread over.
+  report.context = context->description() + "; " +
+                   std::to_string(std::thread::hardware_concurrency()) + " CPU cores";
   const std::set<std::string> skipped(o.skip.begin(), o.skip.end());
   const gl::ShaderLibrary shaders(o.shaderDir);
   SplatRenderer ewa(shaders);

@@ -27,8 +27,10 @@ struct CompareRow {
   // quarters).
   double tileEwaMs = -1;
   // The same frame splatted on the CPU (Splatter::Cpu), where it draws the frame's settings
-  // (cpuSplatterDraws: front to back, pre-classified).
+  // (cpuSplatterDraws), and its stages: the slab partition, each splat's record (footprint and
+  // colour), the binning to tiles, the tiles' splatting, classification and compositing.
   double cpuMs = -1;
+  double cpuPartitionMs = -1, cpuRecordsMs = -1, cpuBinMs = -1, cpuTilesMs = -1;
   size_t gpuBytes = 0;  // 0: the renderer does not count it
   double gpuBytesPerSplat = 0;
   size_t peakRss = 0;  // of the benchmark process after this row

@@ -70,6 +70,35 @@ __attribute__((always_inline)) inline void forEachTileItem(const TileWork& work,
   }
 }
 
+// The columns [xa, xb] (tile-local, within [x0, x1]) of the footprint row `dy` pixels from its
+// centre whose pixel centres may lie within the cutoff: the conic's quadratic in dx solved
+// (`cx`: the centre's tile-local x), widened by a pixel against rounding, so the pixel loops'
+// own test decides as before and the picture is the same. False where the row misses.
+inline bool rowSpan(float qa, float qb, float qc, float dy, float cutoff, float cx, int x0, int x1,
+                    int& xa, int& xb) {
+  xa = x0;
+  xb = x1;
+  if (!(qa > 0.0f)) return true;
+  const float b = qb * dy;
+  const float disc = b * b - qa * (qc * dy * dy - cutoff);
+  if (disc < 0.0f) return false;
+  const float root = std::sqrt(disc);
+  // Pixel x's centre lies dx = x + 0.5 - cx from the footprint's.
+  xa = std::max(x0, int(std::floor(cx - 0.5f + (-b - root) / qa)) - 1);
+  xb = std::min(x1, int(std::ceil(cx - 0.5f + (-b + root) / qa)) + 1);
+  return xa <= xb;
+}
+
+// Calls `run(first, n)` for the row's columns [xa, xb]: one run of 8 pixels (one AVX2 vector)
+// where they fit in one, else the tile's whole row of 16.
+template <typename Run>
+__attribute__((always_inline)) inline void forRowRun(int xa, int xb, Run&& run) {
+  if (xb - xa < 8)
+    run(std::min(xa, TileCompositor::kTile - 8), std::integral_constant<int, 8>());
+  else
+    run(0, std::integral_constant<int, TileCompositor::kTile>());
+}
+
 // One tile's pixels as planes (structure of arrays, rows kTile apart): a row of 16 pixels is
 // two AVX2 vectors.
 struct TilePlanes {
@@ -169,18 +198,19 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
     for (int y = y0; y <= y1; ++y) {
       const float dy = float(py0 + y) + 0.5f - rec.box.y;
       const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
-      // Pixels [first, first + n) of the row, 32-byte aligned; every term computed, each
-      // pixel's share masked.
+      int rowX0, rowX1;
+      if (!rowSpan(qa, qb, qc, dy, cutoff, cx - float(px0), x0, x1, rowX0, rowX1)) continue;
+      // Pixels [first, first + n) of the row; every term computed, each pixel's share masked.
       const auto addRun = [&](int first, auto n) __attribute__((always_inline)) {
         const int at = y * kTile + first;
-        float* __restrict sr = static_cast<float*>(__builtin_assume_aligned(sums.r + at, 32));
-        float* __restrict sg = static_cast<float*>(__builtin_assume_aligned(sums.g + at, 32));
-        float* __restrict sb = static_cast<float*>(__builtin_assume_aligned(sums.b + at, 32));
-        float* __restrict sa = static_cast<float*>(__builtin_assume_aligned(sums.a + at, 32));
-        const float* lv = static_cast<const float*>(__builtin_assume_aligned(live + at, 32));
-        const float* kn = static_cast<const float*>(__builtin_assume_aligned(keptNear + at, 32));
-        const float* kf = static_cast<const float*>(__builtin_assume_aligned(keptFar + at, 32));
-        const float* xc = static_cast<const float*>(__builtin_assume_aligned(centreX + first, 32));
+        float* __restrict sr = sums.r + at;
+        float* __restrict sg = sums.g + at;
+        float* __restrict sb = sums.b + at;
+        float* __restrict sa = sums.a + at;
+        const float* lv = live + at;
+        const float* kn = keptNear + at;
+        const float* kf = keptFar + at;
+        const float* xc = centreX + first;
         for (int i = 0; i < decltype(n)::value; ++i) {
           const int x = first + i;
           const float dx = xc[i] - cx;
@@ -190,7 +220,7 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
           // clippedSlabFraction in float, as the shaders take it.
           const float mu = rowMu + slopeX * dx;
           const float share = slabShareOf(mu, toErf, lo, hi, erfReach, halfScale, Series);
-          const bool take = (x >= x0) & (x <= x1) & (lv[i] > 0.0f) & (hi > lo);
+          const bool take = (x >= rowX0) & (x <= rowX1) & (lv[i] > 0.0f) & (hi > lo);
           const float weight = amplitude * windowedGaussianOf(std::min(r, cutoff), cutoff) * share;
           const float mask = take ? 1.0f : 0.0f;  // a product: no branch
           const float depth = weight * mask;
@@ -201,10 +231,7 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
         }
       };
       // A footprint within one half of the tile's row takes one vector of 8, else the row.
-      if ((x0 >> 3) == (x1 >> 3))
-        addRun(x0 & ~7, std::integral_constant<int, 8>());
-      else
-        addRun(0, std::integral_constant<int, kTile>());
+      forRowRun(rowX0, rowX1, addRun);
     }
     return true;
   });

@@ -236,12 +236,13 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
     for (int y = y0; y <= y1; ++y) {
       const float dy = float(py0 + y) + 0.5f - rec.box.y;
       const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
+      int rowX0, rowX1;
+      if (!rowSpan(qa, qb, qc, dy, cutoff, cx - float(px0), x0, x1, rowX0, rowX1)) continue;
       // Every plane a restrict pointer of its own, the samples written out: the loop vectorizes.
       const auto addRun = [&](int first, auto n) __attribute__((always_inline)) {
         const int at = y * kTile + first;
         const auto plane = [&](float(&planes)[Samples][kPixels], int k) {
-          return static_cast<float*>(
-              __builtin_assume_aligned(planes[std::min(k, Samples - 1)] + at, 32));
+          return planes[std::min(k, Samples - 1)] + at;
         };
         float* __restrict w0 = plane(sw, 0);
         float* __restrict w1 = plane(sw, 1);
@@ -251,10 +252,10 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
         float* __restrict v1 = plane(sv, 1);
         float* __restrict v2 = plane(sv, 2);
         float* __restrict v3 = plane(sv, 3);
-        const float* lv = static_cast<const float*>(__builtin_assume_aligned(live + at, 32));
-        const float* kn = static_cast<const float*>(__builtin_assume_aligned(keptNear + at, 32));
-        const float* kf = static_cast<const float*>(__builtin_assume_aligned(keptFar + at, 32));
-        const float* xc = static_cast<const float*>(__builtin_assume_aligned(centreX + first, 32));
+        const float* lv = live + at;
+        const float* kn = keptNear + at;
+        const float* kf = keptFar + at;
+        const float* xc = centreX + first;
         const float b0 = bounds[0], b1 = bounds[std::min(1, Samples)];
         const float b2 = bounds[std::min(2, Samples)], b3 = bounds[std::min(3, Samples)];
         const float b4 = bounds[std::min(4, Samples)];
@@ -263,7 +264,7 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
           const float dx = xc[i] - cx;
           const float r = qa * dx * dx + 2.0f * qb * dx * dy + rowR;
           const float mu = rowMu + slopeX * dx;
-          const bool take = (x >= x0) & (x <= x1) & (lv[i] > 0.0f);
+          const bool take = (x >= rowX0) & (x <= rowX1) & (lv[i] > 0.0f);
           const float g = amplitude * halfScale *
                           windowedGaussianOf(r < cutoff ? r : cutoff, cutoff) *
                           (take ? 1.0f : 0.0f);
@@ -294,10 +295,7 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
           }
         }
       };
-      if ((x0 >> 3) == (x1 >> 3))
-        addRun(x0 & ~7, std::integral_constant<int, 8>());
-      else
-        addRun(0, std::integral_constant<int, kTile>());
+      forRowRun(rowX0, rowX1, addRun);
     }
     return true;
   });
@@ -354,6 +352,8 @@ __attribute__((always_inline)) inline void wholeTileOf(const TileWork& work) {
     for (int y = y0; y <= y1; ++y) {
       const float dy = float(py0 + y) + 0.5f - rec.box.y;
       const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
+      int rowX0, rowX1;
+      if (!rowSpan(qa, qb, qc, dy, cutoff, cx - float(px0), x0, x1, rowX0, rowX1)) continue;
       const auto addRun = [&](int first, auto n) __attribute__((always_inline)) {
         const int at = y * kTile + first;
         float* __restrict out = gathered + at;
@@ -371,16 +371,13 @@ __attribute__((always_inline)) inline void wholeTileOf(const TileWork& work) {
                         ? slabShareOf(mu, toErf, kn[i], kf[i], erfReach, halfScale, Series)
                         : 0.0f;
           }
-          const bool take = (x >= x0) & (x <= x1);
+          const bool take = (x >= rowX0) & (x <= rowX1);
           const float c = scale * windowedGaussianOf(r < cutoff ? r : cutoff, cutoff) * share *
                           (take ? 1.0f : 0.0f);
           out[i] = Mip ? std::max(out[i], c) : out[i] + c;
         }
       };
-      if ((x0 >> 3) == (x1 >> 3))
-        addRun(x0 & ~7, std::integral_constant<int, 8>());
-      else
-        addRun(0, std::integral_constant<int, kTile>());
+      forRowRun(rowX0, rowX1, addRun);
     }
     return true;
   });
