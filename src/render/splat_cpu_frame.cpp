@@ -22,7 +22,7 @@ void SplatRenderer::cancelCpu() {
   frame_.cpuPending = false;
 }
 
-SplatRenderer::CpuStep SplatRenderer::drawCpu(double budgetMs) {
+SplatRenderer::CpuStep SplatRenderer::drawCpu(double budgetMs, Clock::time_point stepStart) {
   if (!frame_.cpuPending) {
     std::string why;
     if (!cpuSplatterDraws(frame_.settings, &why)) {
@@ -56,11 +56,19 @@ SplatRenderer::CpuStep SplatRenderer::drawCpu(double budgetMs) {
       return CpuStep::Drawn;
     }
     frame_.cpuStart = Clock::now();
-    pendingCpu_ = std::async(std::launch::async, std::move(work));
+    // A window's frame: in the background arena, so the UI frames keep their time.
+    if (!cpuArena_) cpuArena_ = std::make_unique<BackgroundArena>();
+    pendingCpu_ = std::async(std::launch::async,
+                             [this, work = std::move(work)] { return cpuArena_->execute(work); });
     frame_.cpuPending = true;
   }
-  const auto budget = std::chrono::duration<double, std::milli>(std::min(budgetMs, 1e9));
-  if (pendingCpu_.wait_for(budget) != std::future_status::ready) return CpuStep::Pending;
+  // Waits at most what is left of the step's budget; a picture ready late in it goes up in the
+  // next step (its upload and final pass would push this UI frame past its bound).
+  const double left = std::min(budgetMs, 1e9) - millisecondsSince(stepStart);
+  const auto wait = std::chrono::duration<double, std::milli>(std::max(0.0, left));
+  if (pendingCpu_.wait_for(wait) != std::future_status::ready) return CpuStep::Pending;
+  if (std::isfinite(budgetMs) && millisecondsSince(stepStart) > 0.5 * budgetMs)
+    return CpuStep::Pending;
   frame_.cpuPending = false;
   const CpuSplatter::Timing t = pendingCpu_.get();  // rethrows what the work threw
   finishCpu(t, millisecondsSince(frame_.cpuStart) - t.totalMs());

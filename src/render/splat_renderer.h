@@ -10,6 +10,7 @@
 #include <optional>
 #include <utility>
 
+#include "core/background_arena.h"
 #include "core/slab_image_scale.h"
 #include "core/slab_partition.h"
 #include "core/slab_rect.h"
@@ -312,10 +313,10 @@ class SplatRenderer : public Renderer {
   bool cpuWanted(const RenderSettings& settings) const;
   // Draws the whole frame on the CPU if it can (Drawn), else Skipped: nothing drawn and the
   // reason in the statistics' note, where cpuSplatterDraws says it does not. Within a budget
-  // (a window's step) the work runs on a worker thread and steps return Pending, after
-  // waiting at most `budgetMs`, until it is done.
+  // (a window's step, begun at `stepStart`) the work runs on a worker thread and steps return
+  // Pending, after waiting at most what is left of `budgetMs`, until it is done.
   enum class CpuStep { Drawn, Skipped, Pending };
-  CpuStep drawCpu(double budgetMs);
+  CpuStep drawCpu(double budgetMs, Clock::time_point stepStart);
   // Stops a CPU frame under way and waits for it (its inputs are about to change); the next
   // step starts it again.
   void cancelCpu();
@@ -571,6 +572,7 @@ class SplatRenderer : public Renderer {
   std::future<void> pendingPartition_;           // the CPU partition of frame_ on a worker thread
   std::future<CpuSplatter::Timing> pendingCpu_;  // the CPU splatter's frame on a worker thread
   std::atomic<bool> cpuCancel_{false};           // tells pendingCpu_ to stop
+  std::unique_ptr<BackgroundArena> cpuArena_;    // where pendingCpu_'s loops run; on first use
   // Measured, kept across frames: what budgeted steps' entries and slab finishes cost.
   StepCostModel stepCost_;
   glm::dmat3 lastRotation_{1.0};  // the last frame's camera rotation (slabThickness)

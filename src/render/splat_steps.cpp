@@ -254,7 +254,7 @@ bool SplatRenderer::stepFrame(double budgetMs) {
   // the steps wait for its worker.
   if (frame_.drawSplats && !frame_.slabsDone && cpuWanted(frame_.settings) &&
       frame_.nextSlab == 0) {
-    const CpuStep step = drawCpu(budgetMs);
+    const CpuStep step = drawCpu(budgetMs, start);
     if (step == CpuStep::Pending) {
       stats_.renderMs += millisecondsSince(start);
       return false;
