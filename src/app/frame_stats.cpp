@@ -37,7 +37,7 @@ void putFrame(const RenderStats& s, nlohmann::ordered_json& j) {
   j["entries_culled"] = s.entriesCulled;
   j["slabs_coarse"] = s.slabsCoarse;
   j["gpu_partition"] = s.gpuPartition;
-  j["splatter"] = s.cpu ? "cpu" : s.tiles ? "tiles" : "raster";
+  j["splatter"] = splatterUsed(s);
   j["slab_passes"] = s.slabPasses;
   if (s.cpu) {
     j["cpu_records_ms"] = s.cpuRecordsMs;

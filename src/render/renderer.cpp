@@ -169,6 +169,10 @@ FootprintParams footprintParams(const RenderSettings& settings, const glm::dvec3
   return params;
 }
 
+const char* splatterUsed(const RenderStats& stats) {
+  return stats.cpu ? "cpu" : stats.tiles ? "tiles" : "raster";
+}
+
 bool postClassified(const RenderSettings& settings) {
   return settings.classification.mode == ClassificationMode::Post &&
          settings.mode == RenderMode::Composite;

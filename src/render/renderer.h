@@ -244,6 +244,10 @@ struct RenderStats {
   size_t gpuBytes = 0;  // bytes of GL buffers and textures the renderer allocated; 0: not counted
 };
 
+// Which splatter drew the frame of `stats`: "cpu", "tiles" or "raster" (--stats' `splatter`,
+// the window's statistics panel).
+const char* splatterUsed(const RenderStats& stats);
+
 class Renderer {
  public:
   virtual ~Renderer() = default;

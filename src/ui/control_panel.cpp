@@ -288,8 +288,12 @@ void ControlPanel::drawStats(const FrameStats& stats) {
   ImGui::Text("splats %zu / %zu", r.splatsDrawn, r.splatsTotal);
   ImGui::Text("slabs %zu (drawn %zu)   quad path %s", r.slabs, r.slabsDrawn,
               r.quadPass ? "yes" : "no");
-  // --splatter auto may draw a GPU's whole frames (the coarse levels) in compute tiles.
-  ImGui::Text("splatter %s   passes a slab %d", r.tiles ? "tiles" : "raster", r.slabPasses);
+  // --splatter auto may draw a GPU's whole frames (the coarse levels) in compute tiles, a
+  // software rasterizer's on the CPU.
+  ImGui::Text("splatter %s   passes a slab %d", splatterUsed(r), r.slabPasses);
+  if (r.cpu)
+    ImGui::Text("CPU: records %.1f  bins %.1f  tiles %.1f ms", r.cpuRecordsMs, r.cpuBinMs,
+                r.cpuTilesMs);
   if (!r.note.empty()) ImGui::TextWrapped("%s", r.note.c_str());
   ImGui::Text("surface splats %zu   splat draws %zu", r.surfaceSplats, r.slabEntries);
   ImGui::Text("splat draws culled (occluded) %zu", r.entriesCulled);
