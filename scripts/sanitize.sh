@@ -8,7 +8,10 @@ here="$(pwd)"
 # Line tables only (-g1): reports keep their file:line, the build takes about a sixth less time.
 # -O1, ASan's own advice: instrumented objects compile in about half the time they take at -O2
 # (CLI11's options.cpp 46 s against 92 s), and the tests wait on llvmpipe, not on our code.
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DEWA_SANITIZE=ON \
+# Without MPI (ewaview-mpi, IceT): Open MPI unloads its plug-ins at MPI_Finalize, so LSan cannot
+# name what they leak, and the MPI tests would run unchecked for leaks anyway; they run in the
+# Release build (scripts/test.sh), which keeps CI within its time.
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DEWA_SANITIZE=ON -DEWA_MPI=OFF \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
   >/dev/null
 nice cmake --build "$build" -j"$(nproc)"
