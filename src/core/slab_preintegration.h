@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/vec4.hpp>
+#include <type_traits>
 #include <vector>
 
+#include "core/footprint_formulas.h"
 #include "core/preintegration_table.h"
 #include "core/transfer_function.h"
 
@@ -78,7 +80,14 @@ template <typename T>
 inline glm::vec<4, T> classifySlabPairOf(const glm::vec4* texels, int size, const float* prefix,
                                          int n, T front, T back, T length) {
   const T tau = segmentExtinctionOf(prefix, n, front, back);
-  const T alpha = -std::expm1(-std::max(T(0), length) * tau);
+  // Double: -expm1, exact for tiny opacities; float: 1 - exp as the shader takes it, by the
+  // CPU splatter's polynomial exp (footprint_formulas.h) rather than a library call.
+  const T depth = std::max(T(0), length) * tau;
+  T alpha;
+  if constexpr (std::is_same_v<T, float>)
+    alpha = 1.0f - expOf(-depth);
+  else
+    alpha = -std::expm1(-depth);
   if (!(alpha > T(0))) return glm::vec<4, T>(T(0));  // the colour would be scaled by 0
   int f0, f1, b0, b1;
   T tf, tb;
