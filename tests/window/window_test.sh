@@ -59,9 +59,13 @@ poll() {  # poll DESCRIPTION COMMAND...
 # Window 1100x600: the control panel covers x < ~405, the editor x >= 714; the volume region
 # between them is what the camera checks look at.
 width=1100; height=600
+# EWA_WINDOW_TEST_SPLATTER (scripts/sanitize.sh: raster) picks every window's splatter; unset,
+# auto's (on llvmpipe the CPU splatter).
+splatter=()
+[ -n "${EWA_WINDOW_TEST_SPLATTER:-}" ] && splatter=(--splatter "$EWA_WINDOW_TEST_SPLATTER")
 volume_crop="290x600+415+0"
 mkdir -p "$work/config"  # a scratch settings folder: no saved layout or window size applies
-(cd "$work" && EWAVIEW_CONFIG_DIR="$work/config" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" --synthetic marschner-lobb:32 \
+(cd "$work" && EWAVIEW_CONFIG_DIR="$work/config" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" "${splatter[@]}" --synthetic marschner-lobb:32 \
   --tf "$here/ml_test.tf.json" --slab-thickness 4 --resolution "$width,$height" >stdout 2>stderr) &
 pid=$!
 have_layout() { grep -q '^tf-canvas ' "$work/stdout"; }
@@ -126,7 +130,7 @@ start_window() {  # start_window NAME FILE [OPTION...]
   mkdir -p "$work/$1"
   local config="$work/$1" file="$2"
   shift 2
-  (cd "$work" && EWAVIEW_CONFIG_DIR="$config" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" "$file" \
+  (cd "$work" && EWAVIEW_CONFIG_DIR="$config" EWAVIEW_PRINT_LAYOUT=1 exec "$binary" "${splatter[@]}" "$file" \
     --resolution "$width,$height" "$@" >stdout 2>stderr) &
   pid=$!
   poll "the ewaview window" find_window
@@ -288,7 +292,7 @@ log "refinement: starting a second window"
 : >"$work/stdout"
 mkdir -p "$work/config2"  # not the first window's saved transfer function and layout
 (cd "$work" && EWAVIEW_CONFIG_DIR="$work/config2" EWAVIEW_PRINT_LAYOUT=1 EWAVIEW_REFINE_BUDGET_MS=1 \
-  exec "$binary" --synthetic marschner-lobb:64 --slab-thickness 0.5 \
+  exec "$binary" "${splatter[@]}" --synthetic marschner-lobb:64 --slab-thickness 0.5 \
   --resolution "$width,$height" >stdout 2>stderr) &
 pid=$!
 refining() { grep -q '^refine start' "$work/stdout"; }
