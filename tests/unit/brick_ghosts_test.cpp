@@ -18,7 +18,7 @@ namespace {
 GhostReach orthographicReach(double cutoff, double kernelWidth, ClassificationMode mode) {
   Projection proj;
   proj.orthographic = true;
-  proj.pixelsPerUnit = 1e9;  // pixels far below a voxel: only the kernel reaches
+  proj.pixelsPerUnit = 1e3;  // pixels of a thousandth of a voxel
   GhostReach g;
   g.reach = kernelReach(proj, FilterMode::Ewa, cutoff, glm::dvec3(1.0), kernelWidth);
   g.farDepth = 100.0;
@@ -35,9 +35,10 @@ TEST(BrickGhosts, TheKernelsReachPlusWhatItsClassificationReads) {
   // Post: margin squared 2 -> radius 2, and one voxel for the crossing test.
   EXPECT_EQ(ghostVoxels(orthographicReach(5.0, 0.7, ClassificationMode::Post), glm::dvec3(1.0)),
             (std::array<int64_t, 3>{5, 5, 5}));
-  // Cutoff 4, width 1 (the paper's): reach 2, margin squared 4 -> radius 2.
+  // Cutoff 4, width 1 (the paper's): reach 2 and the low-pass filter's pixel (a kernel exactly
+  // 2 voxels out still touches the brick) -> 3; margin squared 4 -> radius 2, and one more.
   EXPECT_EQ(ghostVoxels(orthographicReach(4.0, 1.0, ClassificationMode::Post), glm::dvec3(1.0)),
-            (std::array<int64_t, 3>{5, 5, 5}));
+            (std::array<int64_t, 3>{6, 6, 6}));
   // A level of detail's stride scales it.
   GhostReach coarse = orthographicReach(5.0, 0.7, ClassificationMode::Pre);
   coarse.stride = 2;
@@ -48,12 +49,13 @@ TEST(BrickGhosts, AnisotropicSpacingAndWidePixelsWidenIt) {
   // The reach is in world units from the largest sigma: thin axes need more voxels.
   Projection proj;
   proj.orthographic = true;
-  proj.pixelsPerUnit = 1e9;
+  proj.pixelsPerUnit = 1e3;
   GhostReach g;
   g.reach = kernelReach(proj, FilterMode::Ewa, 4.0, glm::dvec3(1.0, 1.0, 2.0), 1.0);
   g.classification.mode = ClassificationMode::Pre;
-  // sqrt(4) * 1.0 * 2 = 4 world units: 4 voxels along x and y, 2 along z; plus one.
-  EXPECT_EQ(ghostVoxels(g, glm::dvec3(1.0, 1.0, 2.0)), (std::array<int64_t, 3>{5, 5, 3}));
+  // sqrt(4) * (1.0 * 2 + 0.001) = 4.002 world units: 5 voxels along x and y, 3 along z; plus
+  // one.
+  EXPECT_EQ(ghostVoxels(g, glm::dvec3(1.0, 1.0, 2.0)), (std::array<int64_t, 3>{6, 6, 4}));
   // A pixel of 2 voxels (zoomed out) widens the low-pass filter's reach: sqrt(4) * (1 + 2) = 6.
   proj.pixelsPerUnit = 0.5;
   g.reach = kernelReach(proj, FilterMode::Ewa, 4.0, glm::dvec3(1.0), 1.0);
