@@ -91,7 +91,6 @@ struct MetaImageHeader {
   bool local = false, compressed = false;
   int64_t channels = 1, headerSize = 0;
   uint64_t dataOffset = 0;  // LOCAL: where the data start after the header
-  uint64_t total = 0;       // data bytes, every channel
   std::optional<std::string> compressedDataSize;
 };
 
@@ -195,7 +194,6 @@ MetaImageHeader readMetaImageHeader(const std::string& path, DataFileScope scope
   const std::string dataPath = local ? path : siblingPath(path, dataName);
   checkDataFileScope(path, dataPath, scope);
   layout.sourceFiles.push_back(dataPath);
-  const uint64_t total = componentDataByteCount(path, layout.dims, layout.type, channels);
 
   MetaImageHeader h;
   h.layout = std::move(layout);
@@ -205,7 +203,6 @@ MetaImageHeader readMetaImageHeader(const std::string& path, DataFileScope scope
   h.channels = channels;
   h.headerSize = headerSize;
   h.dataOffset = dataOffset;
-  h.total = total;
   if (const std::string* v = field("compresseddatasize")) h.compressedDataSize = *v;
   return h;
 }
@@ -218,7 +215,8 @@ Volume loadMetaImage(const std::string& path, int channel, DataFileScope scope) 
   const std::string& dataPath = h.dataPath;
   const bool local = h.local, compressed = h.compressed;
   const int64_t channels = h.channels, headerSize = h.headerSize;
-  const uint64_t dataOffset = h.dataOffset, total = h.total;
+  const uint64_t dataOffset = h.dataOffset;
+  const uint64_t total = componentDataByteCount(path, layout.dims, layout.type, channels);
   const uint64_t dataFileSize = regularFileSize(dataPath);
   uint64_t start = local ? dataOffset : static_cast<uint64_t>(std::max<int64_t>(headerSize, 0));
   std::vector<uint8_t> bytes;
@@ -256,6 +254,8 @@ Volume loadMetaImage(const std::string& path, int channel, DataFileScope scope) 
 std::optional<RawPlacement> metaImageRawPlacement(const std::string& path, DataFileScope scope) {
   const MetaImageHeader h = readMetaImageHeader(path, scope);
   if (h.compressed || h.channels != 1) return std::nullopt;
+  // The whole need not fit this process's memory: a box of it is read.
+  const uint64_t total = wholeDataBytes(path, h.layout.dims, h.layout.type);
   RawPlacement p;
   p.layout = h.layout;
   p.file = h.dataPath;
@@ -263,12 +263,12 @@ std::optional<RawPlacement> metaImageRawPlacement(const std::string& path, DataF
   if (h.local) {
     p.offset = h.dataOffset;
   } else if (h.headerSize == -1) {
-    if (size < h.total) return std::nullopt;  // the whole-file reader says why
-    p.offset = size - h.total;
+    if (size < total) return std::nullopt;  // the whole-file reader says why
+    p.offset = size - total;
   } else {
     p.offset = uint64_t(h.headerSize);
   }
-  if (p.offset > size || size - p.offset < h.total) return std::nullopt;
+  if (p.offset > size || size - p.offset < total) return std::nullopt;
   return p;
 }
 

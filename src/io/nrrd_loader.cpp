@@ -188,7 +188,7 @@ std::optional<RawPlacement> nrrdRawPlacement(const std::string& path, DataFileSc
   p.layout = h.layout;
   p.layout.sourceFiles = h.dataFiles;
   p.file = piece.file;
-  p.offset = rawDataOffset(h, piece, dataByteCount(path, h.layout.dims, h.layout.type));
+  p.offset = rawDataOffset(h, piece, wholeDataBytes(path, h.layout.dims, h.layout.type));
   return p;
 }
 

@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "io/file_bytes.h"
 #include "io/load_failure.h"
 #include "io/region_read.h"
 
@@ -22,6 +23,16 @@ RawPlacement rawFilePlacement(const std::string& path, const std::array<int64_t,
   p.layout.bigEndian = bigEndian;
   p.file = path;
   return p;
+}
+
+uint64_t wholeDataBytes(const std::string& path, const std::array<int64_t, 3>& dims,
+                        FileScalar type) {
+  uint64_t bytes = fileScalarSize(type);
+  for (int64_t d : dims)
+    if (d <= 0 || __builtin_mul_overflow(bytes, uint64_t(d), &bytes) ||
+        bytes > uint64_t{INT64_MAX} / 2)
+      failLoad(path, "the volume's sizes must be positive and within 64-bit byte counts");
+  return bytes;
 }
 
 bool placementKeepsVoxelOrder(const RawPlacement& placement) {
@@ -53,8 +64,14 @@ Volume loadRawRegion(const std::string& path, const RawPlacement& placement,
   layout.dims = size;
   const uint64_t value = fileScalarSize(whole.type);
   const uint64_t bytesWanted = dataByteCount(path, size, whole.type);
-  // The whole file's extent is checked too: a truncated file fails as the whole load would.
-  dataByteCount(path, whole.dims, whole.type);
+  // The file must hold the whole volume (a truncated file fails as the whole load would); the
+  // whole need not fit this process's memory, only the box (dataByteCount above).
+  const uint64_t wholeBytes = wholeDataBytes(path, whole.dims, whole.type);
+  const uint64_t fileSize = regularFileSize(placement.file);
+  if (fileSize < placement.offset || fileSize - placement.offset < wholeBytes)
+    failLoad(placement.file, "file has " + std::to_string(fileSize) + " bytes, too few for the " +
+                                 std::to_string(wholeBytes) + " bytes of data at offset " +
+                                 std::to_string(placement.offset));
   std::vector<uint8_t> bytes(static_cast<size_t>(bytesWanted));
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(placement.file.c_str(), "rb"),
                                                        std::fclose);

@@ -65,6 +65,12 @@ std::optional<RawPlacement> nrrdRawPlacement(const std::string& path, DataFileSc
 // A MetaImage file's, when its data are uncompressed, of one channel. Throws LoadError.
 std::optional<RawPlacement> metaImageRawPlacement(const std::string& path, DataFileScope scope);
 
+// The bytes of a volume of `dims` values of `type` in a file, checked for positive sizes and
+// 64-bit overflow but not against this process's memory (dataByteCount's check): a rank reads a
+// box of a volume larger than its memory. Throws LoadError.
+uint64_t wholeDataBytes(const std::string& path, const std::array<int64_t, 3>& dims,
+                        FileScalar type);
+
 // Whether loading the placement's whole volume (makeVolume) would only convert the values:
 // the direction a rotation already, so nothing is resampled or reversed and a box of the file's
 // voxels is that box of the loaded volume.
