@@ -84,19 +84,25 @@ Scene loadScene(const Options& o) {
       if (note.compare(0, 9, "warning: ") == 0)
         std::cerr << "ewaview: " << path << ": " << note << "\n";
   }
-  if (!o.tfFile.empty()) {
-    scene.transferFunction = loadTransferFunction(o.tfFile);
-  } else if (!sidecar.empty() && std::filesystem::is_regular_file(sidecar)) {
-    scene.transferFunction = loadTransferFunction(sidecar);
-  } else if (ownTf) {
-    scene.transferFunction = *ownTf;
-  } else {
-    scene.transferFunction = defaultTransferFunction(scene.volume);
-  }
-  scene.transferFunction =
-      withPresets(std::move(scene.transferFunction), o.tfPresets, scene.volume);
+  scene.transferFunction = sceneTransferFunction(o, sidecar, ownTf, scene.volume);
   if (o.overlay) loadMoreChannels(o, sidecar, scene);
   return scene;
+}
+
+TransferFunction sceneTransferFunction(const Options& o, const std::string& sidecar,
+                                       const std::optional<TransferFunction>& own,
+                                       const Volume& volume) {
+  TransferFunction tf;
+  if (!o.tfFile.empty()) {
+    tf = loadTransferFunction(o.tfFile);
+  } else if (!sidecar.empty() && std::filesystem::is_regular_file(sidecar)) {
+    tf = loadTransferFunction(sidecar);
+  } else if (own) {
+    tf = *own;
+  } else {
+    tf = defaultTransferFunction(volume);
+  }
+  return withPresets(std::move(tf), o.tfPresets, volume);
 }
 
 TransferFunction withPresets(TransferFunction tf, const std::vector<std::string>& keys,
@@ -107,12 +113,18 @@ TransferFunction withPresets(TransferFunction tf, const std::vector<std::string>
 }
 
 Camera initialCamera(const Volume& volume, const Options& o) {
+  return initialCameraForBounds(volume.worldBoundsMin(), volume.worldBoundsMax(),
+                                volume.patientFrame(), o);
+}
+
+Camera initialCameraForBounds(const glm::dvec3& worldMin, const glm::dvec3& worldMax,
+                              bool patientFrame, const Options& o) {
   Camera cam;
   cam.viewAngleDeg = o.cameraViewAngle;
   cam.orthographic = o.orthographic;
   // VTK's default view (from +z, y up), or the anterior view of a patient; in world space.
-  cam = initialVolumeView(cam, volume.worldBoundsMin(), volume.worldBoundsMax(),
-                          double(o.width) / double(o.height), volume.patientFrame());
+  cam =
+      initialVolumeView(cam, worldMin, worldMax, double(o.width) / double(o.height), patientFrame);
   if (o.cameraFocalPoint) cam.focalPoint = *o.cameraFocalPoint;
   if (o.cameraPosition) cam.position = *o.cameraPosition;
   if (o.cameraViewUp) cam.viewUp = *o.cameraViewUp;

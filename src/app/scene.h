@@ -46,6 +46,17 @@ TransferFunction withPresets(TransferFunction tf, const std::vector<std::string>
 
 // The starting camera: framing the volume from the front, then any --camera-* options.
 Camera initialCamera(const Volume& volume, const Options& options);
+// The same for a volume known by its world bounds and frame alone (a distributed run, where no
+// process holds the whole volume).
+Camera initialCameraForBounds(const glm::dvec3& worldMin, const glm::dvec3& worldMax,
+                              bool patientFrame, const Options& options);
+
+// The transfer function loadScene gives `volume` (its value range and histogram): --tf, else
+// the file's sidecar (`sidecar`, "" for none), else the synthetic volume's own (`own`), else
+// the default; with --tf-preset's presets applied.
+TransferFunction sceneTransferFunction(const Options& options, const std::string& sidecar,
+                                       const std::optional<TransferFunction>& own,
+                                       const Volume& volume);
 
 // The volume --save-volume (and Python's save_volume) writes: `volume` cut to the crop box
 // when `clip` has one (cropVolume), else nothing (the volume as it is). Throws

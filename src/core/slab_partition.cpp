@@ -23,6 +23,43 @@ double slabThicknessAlongView(double voxels, const glm::dmat3& rotation,
   return std::max(0.25, voxels) * viewSpacing(rotation, spacing);
 }
 
+double slabGridStart(double front, double thickness, double anchor) {
+  if (!std::isfinite(anchor) || !(thickness > 0.0)) return front;
+  return anchor + std::floor((front - anchor) / thickness) * thickness;
+}
+
+double nearestKernelFront(const SplatSet& splats, const AttributeList& attributes,
+                          const glm::dvec3& origin, const glm::dmat4& view, double nearCull,
+                          const DepthExtent& extent, const std::function<bool(size_t)>& keep) {
+  // The depth and reach of each splat exactly as build forms them.
+  const auto& s = splats.splats();
+  const size_t n = s.size();
+  const glm::dvec3& spacing = extent.spacing;
+  const double minSpacing = std::min({spacing.x, spacing.y, spacing.z});
+  const glm::dvec3 row(-view[0][2], -view[1][2], -view[2][2]);
+  const double d0 = glm::dot(row, origin) - view[3][2];
+  const double di = row.x * spacing.x, dj = row.y * spacing.y, dk = row.z * spacing.z;
+  const glm::dvec3 sigma = kernelSigma(spacing, extent.kernelWidth);
+  const double volumeVariance = cameraCovariance(extent.rotation, sigma)[2][2];
+  const bool surfaces = attributes.size() == n;
+  double front = INFINITY;
+  for (size_t m = 0; m < n; ++m) {
+    if (keep && !keep(m)) continue;
+    double d = d0 + SplatSet::i(s[m]) * di + SplatSet::j(s[m]) * dj + SplatSet::k(s[m]) * dk;
+    double variance = volumeVariance;
+    if (surfaces && (attributes[m].nzKind >> 16) != 0) {
+      const UnpackedAttributes a = unpackAttributes(attributes[m]);
+      if (a.surface) {
+        d += glm::dot(row, a.normal) * a.offset * minSpacing;
+        variance = surfaceCovariance(extent.rotation, sigma, a.normal)[2][2];
+      }
+    }
+    if (!(d > nearCull)) continue;
+    front = std::min(front, double(float(d - depthReach(extent.reach, variance, d))));
+  }
+  return front;
+}
+
 void SlabPartition::build(const SplatSet& splats, const AttributeList& attributes,
                           const glm::dvec3& origin, const glm::dmat4& view, double thickness,
                           double nearCull, const DepthExtent& extent) {
@@ -68,6 +105,7 @@ void SlabPartition::build(const SplatSet& splats, const AttributeList& attribute
     hi = std::max(hi, double(hi_[m]));
   }
   if (!(lo <= hi)) return;
+  lo = slabGridStart(lo, thickness, extent.anchorDepth);
   // Cap the slab count so a tiny thickness on a deep scene cannot exhaust memory.
   const double count = std::min(std::floor((hi - lo) / thickness) + 1.0, 1.0e6);
   const auto slabCount = static_cast<size_t>(count);

@@ -2,7 +2,9 @@
 // each splat listed in every slab its depth extent overlaps (a counting sort).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <functional>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -32,7 +34,16 @@ struct DepthExtent {
   glm::dmat3 rotation{1.0};  // W: world to camera
   glm::dvec3 spacing{1.0};
   double kernelWidth = 1.0;  // kernels' sigma = kernelWidth * spacing (kernelSigma)
+  // Where the slab grid is anchored (camera depth), when finite: slab planes then lie at
+  // anchorDepth + n * thickness, so that processes holding different parts of one volume cut
+  // the same slabs (ewaview-mpi). NaN: at the front of the nearest kernel.
+  double anchorDepth = NAN;
 };
+
+// The first slab plane of a grid of `thickness` for kernels whose extents start at `front`:
+// `front` itself, or the grid plane through `anchor` at or in front of it when `anchor` is
+// finite (SlabPartition and GpuSlabPartition both place their planes by it).
+double slabGridStart(double front, double thickness, double anchor);
 
 // The depth one voxel spans along the camera's view axis, the unit slab thicknesses are counted
 // in (RenderSettings::slabThickness): sqrt((W S W^T)_zz) for S = diag(spacing^2), so that a slab
@@ -46,6 +57,16 @@ double viewSpacing(const glm::dmat3& rotation, const glm::dvec3& spacing);
 // for a volume of this spacing seen through a camera of this rotation.
 double slabThicknessAlongView(double voxels, const glm::dmat3& rotation, const glm::dvec3& spacing);
 
+// Where SlabPartition::build's grid starts without an anchor for these splats: the smallest
+// front (centre depth minus depth reach, rounded to float as build rounds it) of the splats
+// whose centre lies beyond nearCull and that `keep` accepts (by index; all when empty);
+// INFINITY when none. A distributed run takes the least of its bricks' own splats' fronts, so
+// its shared grid starts where the whole volume's would.
+double nearestKernelFront(const SplatSet& splats, const AttributeList& attributes,
+                          const glm::dvec3& origin, const glm::dmat4& view, double nearCull,
+                          const DepthExtent& extent,
+                          const std::function<bool(size_t)>& keep = nullptr);
+
 class SlabPartition {
  public:
   // Order entries carry the splat index in the low 30 bits and these flags: the slab is the
@@ -55,10 +76,10 @@ class SlabPartition {
   static constexpr uint32_t kIndexMask = kLastSlab - 1u;
 
   // Buckets splats whose center depth lies in (nearCull, inf) into slabs of `thickness` world
-  // units starting at the front of the nearest kernel; each splat goes to every slab its depth
-  // extent overlaps. `attributes` (may be empty) marks surface splats, whose extent and center
-  // follow their normal. `view` maps world to camera space; voxel (i,j,k) sits at
-  // origin + (i,j,k) * spacing. Splats at or behind nearCull are left out.
+  // units starting at the front of the nearest kernel (or on extent.anchorDepth's grid); each splat
+  // goes to every slab its depth extent overlaps. `attributes` (may be empty) marks surface splats,
+  // whose extent and center follow their normal. `view` maps world to camera space; voxel (i,j,k)
+  // sits at origin + (i,j,k) * spacing. Splats at or behind nearCull are left out.
   void build(const SplatSet& splats, const AttributeList& attributes, const glm::dvec3& origin,
              const glm::dmat4& view, double thickness, double nearCull, const DepthExtent& extent);
 

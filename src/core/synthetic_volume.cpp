@@ -30,30 +30,41 @@ int parseParameter(const std::string& spec, const std::string& text, bool presen
   return n;
 }
 
-Volume makeVolume(std::array<int64_t, 3> dims, glm::dvec3 spacing, const std::vector<float>& v) {
+Volume makeVolume(std::array<int64_t, 3> dims, glm::dvec3 spacing, const std::vector<float>& v,
+                  glm::dvec3 origin = glm::dvec3(0.0)) {
   std::vector<uint8_t> bytes(v.size() * sizeof(float));
   std::memcpy(bytes.data(), v.data(), bytes.size());
-  return Volume(dims, spacing, glm::dvec3(0.0), ScalarType::Float32, std::move(bytes));
+  return Volume(dims, spacing, origin, ScalarType::Float32, std::move(bytes));
 }
 
 Volume makeVolume(std::array<int64_t, 3> dims, glm::dvec3 spacing, std::vector<uint8_t> v) {
   return Volume(dims, spacing, glm::dvec3(0.0), ScalarType::UInt8, std::move(v));
 }
 
-SyntheticVolume marschnerLobbVolume(int n) {
-  std::vector<float> values(size_t(n) * n * n);
-  auto coord = [n](int i) { return -1.0 + 2.0 * i / (n - 1); };
+// Voxels lo <= (i, j, k) < hi of the n^3 Marschner-Lobb volume, where the whole one has them.
+SyntheticVolume marschnerLobbBox(int n, const std::array<int64_t, 3>& lo,
+                                 const std::array<int64_t, 3>& hi) {
+  const std::array<int64_t, 3> dims{hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+  std::vector<float> values(size_t(dims[0] * dims[1] * dims[2]));
+  auto coord = [n](int64_t i) { return -1.0 + 2.0 * double(i) / (n - 1); };
   size_t at = 0;
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) values[at++] = float(marschnerLobb(coord(i), coord(j), coord(k)));
+  for (int64_t k = lo[2]; k < hi[2]; ++k)
+    for (int64_t j = lo[1]; j < hi[1]; ++j)
+      for (int64_t i = lo[0]; i < hi[0]; ++i)
+        values[at++] = float(marschnerLobb(coord(i), coord(j), coord(k)));
   TransferFunction tf;
   // A steep step at 0.5 makes the region above the iso-value solid, so what one sees is the
   // 0.5 iso-surface, the usual way to judge reconstruction filters on this signal.
   tf.opacity = {{0.45, 0.0}, {0.55, 0.9}, {1.0, 0.9}};
   tf.color = {{0.45, {0.85, 0.42, 0.22}}, {0.75, {0.95, 0.75, 0.45}}, {1.0, {1.0, 0.95, 0.85}}};
-  return {makeVolume({n, n, n}, glm::dvec3(1.0), values), tf,
+  // World units are voxels from the whole volume's first: the box's first voxel sits at lo.
+  const glm::dvec3 origin{double(lo[0]), double(lo[1]), double(lo[2])};
+  return {makeVolume(dims, glm::dvec3(1.0), values, origin), tf,
           "marschner-lobb:" + std::to_string(n)};
+}
+
+SyntheticVolume marschnerLobbVolume(int n) {
+  return marschnerLobbBox(n, {0, 0, 0}, {n, n, n});
 }
 
 SyntheticVolume sphereVolume(int n) {
@@ -169,6 +180,20 @@ SyntheticVolume makeSyntheticVolume(const std::string& spec) {
     names += (k == 0 ? "" : k + 1 == count ? " or " : ", ") + std::string(kind.name);
   }
   throw specError(spec, "unknown volume '" + name + "' (expected " + names + ")");
+}
+
+std::optional<SyntheticRegionSource> syntheticRegionSource(const std::string& spec) {
+  const size_t colon = spec.find(':');
+  if (spec.substr(0, colon) != "marschner-lobb") return std::nullopt;
+  const bool hasNumber = colon != std::string::npos;
+  const int n = parseParameter(spec, hasNumber ? spec.substr(colon + 1) : std::string(), hasNumber,
+                               41, 2, 512, "size");
+  SyntheticRegionSource source;
+  source.dims = {n, n, n};
+  source.make = [n](const std::array<int64_t, 3>& lo, const std::array<int64_t, 3>& hi) {
+    return marschnerLobbBox(n, lo, hi);
+  };
+  return source;
 }
 
 std::vector<std::string> syntheticVolumeForms() {

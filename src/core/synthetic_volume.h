@@ -1,6 +1,9 @@
 // Synthetic test volumes: Marschner-Lobb, a ball, a box, Swan's checkerboard, Zwicker's zebra.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +33,17 @@ struct SyntheticVolume {
 // N must lie in [2, 512]. Throws std::invalid_argument("--synthetic <spec>: problem") for unknown
 // names, malformed or out-of-range numbers.
 SyntheticVolume makeSyntheticVolume(const std::string& spec);
+// A synthetic volume made box by box (a distributed run's bricks): the whole volume's dims, and
+// the voxels lo <= (i, j, k) < hi where the whole volume has them (origin at lo), the same
+// values makeSyntheticVolume gives them. Only Marschner-Lobb is evaluated voxel by voxel; the
+// others (sheets, or made whole) give nothing. Throws as makeSyntheticVolume.
+struct SyntheticRegionSource {
+  std::array<int64_t, 3> dims{0, 0, 0};
+  std::function<SyntheticVolume(const std::array<int64_t, 3>& lo, const std::array<int64_t, 3>& hi)>
+      make;
+};
+std::optional<SyntheticRegionSource> syntheticRegionSource(const std::string& spec);
+
 // The specs' forms, "marschner-lobb[:N]", ... in the order above (the --synthetic help).
 std::vector<std::string> syntheticVolumeForms();
 

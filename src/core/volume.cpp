@@ -86,6 +86,12 @@ void Volume::setIndexDataBox(const DataBox& box) {
 
 namespace {
 
+// The histogram bin of value v over [lo, lo + width]: computeStatistics and histogramOf bin
+// alike, so bricks' histograms add up to the whole volume's.
+int histogramBin(double v, double lo, double width, int bins) {
+  return std::clamp(static_cast<int>((v - lo) / width * bins), 0, bins - 1);
+}
+
 // The world bounds: lower corner when `upper` is false, else the upper one.
 glm::dvec3 worldCornerBound(const Volume& v, bool upper) {
   glm::dvec3 out = v.worldPosition(0, 0, 0);
@@ -106,6 +112,34 @@ glm::dvec3 Volume::worldBoundsMin() const {
 }
 glm::dvec3 Volume::worldBoundsMax() const {
   return worldCornerBound(*this, true);
+}
+
+void Volume::setValueStatistics(double lo, double hi, std::vector<uint64_t> histogram) {
+  if (!(lo <= hi) || !std::isfinite(lo) || !std::isfinite(hi) ||
+      histogram.size() != size_t(histogramBins()))
+    throw std::invalid_argument("a value range lo <= hi and a histogram of 256 bins are needed");
+  range_ = {lo, hi};
+  histogram_ = std::move(histogram);
+}
+
+std::vector<uint64_t> Volume::histogramOf(const std::array<int64_t, 3>& low,
+                                          const std::array<int64_t, 3>& high, double lo,
+                                          double hi) const {
+  const int bins = histogramBins();
+  std::vector<uint64_t> h(size_t(bins), 0);
+  const double width = hi > lo ? hi - lo : 1.0;
+  std::array<int64_t, 3> a, b;
+  for (int axis = 0; axis < 3; ++axis) {
+    a[axis] = std::max<int64_t>(low[axis], 0);
+    b[axis] = std::min(high[axis], dims_[axis]);
+  }
+  for (int64_t k = a[2]; k < b[2]; ++k)
+    for (int64_t j = a[1]; j < b[1]; ++j)
+      for (int64_t i = a[0]; i < b[0]; ++i) {
+        const double v = value(i, j, k);
+        if (std::isfinite(v)) h[size_t(histogramBin(v, lo, width, bins))]++;
+      }
+  return h;
 }
 
 void Volume::computeStatistics() {
@@ -141,8 +175,7 @@ void Volume::computeStatistics() {
         for (size_t i = first; i < last; ++i) {
           const double v = valueAt(int64_t(i));
           if (!std::isfinite(v)) continue;
-          const int bin = static_cast<int>((v - lo) / width * bins);
-          h[size_t(std::clamp(bin, 0, bins - 1))]++;
+          h[size_t(histogramBin(v, lo, width, bins))]++;
         }
         return h;
       });

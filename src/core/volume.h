@@ -133,6 +133,16 @@ class Volume {
   // Histogram of finite values over [minValue, maxValue] in histogramBins() bins.
   const std::vector<uint64_t>& histogram() const { return histogram_; }
   static constexpr int histogramBins() { return 256; }
+  // Replaces the value range and histogram: a brick of a distributed volume takes the whole
+  // volume's, agreed on by every process, so that its splats are quantized over the same range
+  // and its default transfer function is the whole volume's. Throws std::invalid_argument
+  // unless lo <= hi (finite) and `histogram` has histogramBins() bins.
+  void setValueStatistics(double lo, double hi, std::vector<uint64_t> histogram);
+  // The histogram of the finite values of the voxels low <= (i, j, k) < high over [lo, hi],
+  // binned as histogram() bins (a brick's own voxels, without its ghosts, over the global
+  // range: summed over the bricks it is the whole volume's histogram).
+  std::vector<uint64_t> histogramOf(const std::array<int64_t, 3>& low,
+                                    const std::array<int64_t, 3>& high, double lo, double hi) const;
 
   // Position of voxel (i,j,k) in the volume's own frame, where renderers draw it:
   // origin + (i,j,k) * spacing (the direction left out; see cameraInVolumeFrame).

@@ -6,11 +6,16 @@
 namespace ewa::dist {
 
 IndexView indexView(const Camera& camera, const Volume& volume) {
-  const glm::dmat3 toIndex = glm::transpose(volume.direction());
+  return indexView(camera, volume.origin(), volume.direction(), volume.spacing());
+}
+
+IndexView indexView(const Camera& camera, const glm::dvec3& origin, const glm::dmat3& direction,
+                    const glm::dvec3& spacing) {
+  const glm::dmat3 toIndex = glm::transpose(direction);
   IndexView v;
   v.orthographic = camera.orthographic;
-  v.eye = toIndex * (camera.position - volume.origin()) / volume.spacing();
-  v.direction = toIndex * (camera.focalPoint - camera.position) / volume.spacing();
+  v.eye = toIndex * (camera.position - origin) / spacing;
+  v.direction = toIndex * (camera.focalPoint - camera.position) / spacing;
   return v;
 }
 

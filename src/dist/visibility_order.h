@@ -21,6 +21,10 @@ struct IndexView {
 
 // index = D^T (world - origin) / spacing for the volume's direction D.
 IndexView indexView(const Camera& camera, const Volume& volume);
+// The same for a grid known by its origin, direction and spacing (a distributed run's whole
+// volume, which no process holds).
+IndexView indexView(const Camera& camera, const glm::dvec3& origin, const glm::dmat3& direction,
+                    const glm::dvec3& spacing);
 
 // Where cut `node` lies in index coordinates: halfway between its voxel layers plane - 1 and
 // plane, the face the two bricks' crop boxes share.

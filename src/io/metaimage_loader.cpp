@@ -1,6 +1,7 @@
 // MetaImage (.mhd header + data file, or .mha with LOCAL data), raw or zlib-compressed.
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "io/file_bytes.h"
 #include "io/format_loaders.h"
 #include "io/load_failure.h"
+#include "io/region_read.h"
 #include "io/text_fields.h"
 #include "io/volume_layout.h"
 
@@ -82,9 +84,17 @@ bool anatomicalCode(const std::string* value) {
   return true;
 }
 
-}  // namespace
+// What the header says: the layout, where the data are and how they are stored.
+struct MetaImageHeader {
+  VolumeLayout layout;
+  std::string dataPath;
+  bool local = false, compressed = false;
+  int64_t channels = 1, headerSize = 0;
+  uint64_t dataOffset = 0;  // LOCAL: where the data start after the header
+  std::optional<std::string> compressedDataSize;
+};
 
-Volume loadMetaImage(const std::string& path, int channel, DataFileScope scope) {
+MetaImageHeader readMetaImageHeader(const std::string& path, DataFileScope scope) {
   const uint64_t fileSize = regularFileSize(path);
   const std::string text = readFilePrefix(path, kMaxHeaderBytes, [](std::string_view t) {
     return headerEnd(t) != std::string_view::npos;
@@ -184,9 +194,30 @@ Volume loadMetaImage(const std::string& path, int channel, DataFileScope scope) 
   const std::string dataPath = local ? path : siblingPath(path, dataName);
   checkDataFileScope(path, dataPath, scope);
   layout.sourceFiles.push_back(dataPath);
+
+  MetaImageHeader h;
+  h.layout = std::move(layout);
+  h.dataPath = dataPath;
+  h.local = local;
+  h.compressed = compressed;
+  h.channels = channels;
+  h.headerSize = headerSize;
+  h.dataOffset = dataOffset;
+  if (const std::string* v = field("compresseddatasize")) h.compressedDataSize = *v;
+  return h;
+}
+
+}  // namespace
+
+Volume loadMetaImage(const std::string& path, int channel, DataFileScope scope) {
+  MetaImageHeader h = readMetaImageHeader(path, scope);
+  VolumeLayout& layout = h.layout;
+  const std::string& dataPath = h.dataPath;
+  const bool local = h.local, compressed = h.compressed;
+  const int64_t channels = h.channels, headerSize = h.headerSize;
+  const uint64_t dataOffset = h.dataOffset;
   const uint64_t total = componentDataByteCount(path, layout.dims, layout.type, channels);
   const uint64_t dataFileSize = regularFileSize(dataPath);
-
   uint64_t start = local ? dataOffset : static_cast<uint64_t>(std::max<int64_t>(headerSize, 0));
   std::vector<uint8_t> bytes;
   if (compressed) {
@@ -194,7 +225,7 @@ Volume loadMetaImage(const std::string& path, int channel, DataFileScope scope) 
       failLoad(path, "HeaderSize -1 cannot be used with compressed data");
     if (start > dataFileSize) failLoad(dataPath, "HeaderSize is past the end of the file");
     uint64_t packedSize = dataFileSize - start;
-    if (const std::string* v = field("compresseddatasize")) {
+    if (const std::optional<std::string>& v = h.compressedDataSize) {
       int64_t s = 0;
       if (!parseInt64(*v, s) || s < 0) failLoad(path, "bad CompressedDataSize " + quoteText(*v));
       if (static_cast<uint64_t>(s) > packedSize) {
@@ -218,6 +249,27 @@ Volume loadMetaImage(const std::string& path, int channel, DataFileScope scope) 
   }
   bytes = pickComponent(path, std::move(bytes), channels, channel, layout);
   return makeVolume(path, layout, std::move(bytes));
+}
+
+std::optional<RawPlacement> metaImageRawPlacement(const std::string& path, DataFileScope scope) {
+  const MetaImageHeader h = readMetaImageHeader(path, scope);
+  if (h.compressed || h.channels != 1) return std::nullopt;
+  // The whole need not fit this process's memory: a box of it is read.
+  const uint64_t total = wholeDataBytes(path, h.layout.dims, h.layout.type);
+  RawPlacement p;
+  p.layout = h.layout;
+  p.file = h.dataPath;
+  const uint64_t size = regularFileSize(h.dataPath);
+  if (h.local) {
+    p.offset = h.dataOffset;
+  } else if (h.headerSize == -1) {
+    if (size < total) return std::nullopt;  // the whole-file reader says why
+    p.offset = size - total;
+  } else {
+    p.offset = uint64_t(h.headerSize);
+  }
+  if (p.offset > size || size - p.offset < total) return std::nullopt;
+  return p;
 }
 
 }  // namespace ewa

@@ -11,6 +11,7 @@
 #include "io/load_failure.h"
 #include "io/memory_limit.h"
 #include "io/nrrd_header.h"
+#include "io/region_read.h"
 #include "io/text_numbers.h"
 
 namespace ewa {
@@ -174,6 +175,21 @@ Volume loadNrrd(const std::string& path, int frame, int channel, DataFileScope s
     bytes = nrrdVolumeOf(bytes, h.extra, index, volumeBytes / fileScalarSize(layout.type),
                          fileScalarSize(layout.type));
   return makeVolume(path, layout, std::move(bytes));
+}
+
+std::optional<RawPlacement> nrrdRawPlacement(const std::string& path, DataFileScope scope) {
+  const NrrdHeader h = parseNrrdHeader(path);
+  if (h.encoding != NrrdEncoding::Raw || h.extra.axis >= 0 || h.dataFiles.size() > 1)
+    return std::nullopt;
+  for (const std::string& file : h.dataFiles) checkDataFileScope(path, file, scope);
+  const DataPiece piece =
+      h.dataFiles.empty() ? DataPiece{path, h.attachedOffset} : DataPiece{h.dataFiles[0], 0};
+  RawPlacement p;
+  p.layout = h.layout;
+  p.layout.sourceFiles = h.dataFiles;
+  p.file = piece.file;
+  p.offset = rawDataOffset(h, piece, wholeDataBytes(path, h.layout.dims, h.layout.type));
+  return p;
 }
 
 }  // namespace ewa

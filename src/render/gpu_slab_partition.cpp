@@ -89,7 +89,8 @@ void GpuSlabPartition::build(const gl::Buffer& splats, const gl::Buffer& attribu
     countsKnown_ = true;
     return;
   }
-  const double lo = fromOrderedBits(range[0]), hi = fromOrderedBits(range[1]);
+  const double lo = slabGridStart(fromOrderedBits(range[0]), thickness, extent.anchorDepth);
+  const double hi = fromOrderedBits(range[1]);
   nearestCenter_ = fromOrderedBits(range[2]);
   // Slab planes exactly as SlabPartition::build places them.
   const double count = std::min(std::floor((hi - lo) / thickness) + 1.0, 1.0e6);

@@ -92,6 +92,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     extent.rotation = camera.rotation();
     extent.spacing = sp;
     extent.kernelWidth = settings.kernelWidth;
+    extent.anchorDepth = slabAnchor_;
     if (frame_.pairedSlabs) stats_.classifyMs += preparePairTable(settings, thickness);
     syncAttributes(settings);
     frame_.gradientsPending = requestGradients(settings);  // on a worker: stepFrame waits

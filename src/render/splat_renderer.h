@@ -138,6 +138,10 @@ class SplatRenderer : public Renderer {
   // rasterizer's, the tiles' or the CPU's picture); X-ray: the summed optical depth in alpha;
   // MIP: the maximum in red. Distributed rendering composites these across ranks (src/dist).
   std::vector<float> readFramePicture() const;
+  // Anchors the slab grid at camera depth `depth` (DepthExtent::anchorDepth) from the next
+  // frame on; NaN (the default) anchors it at the nearest kernel. A distributed run sets the
+  // same anchor on every rank so that bricks cut the slabs the whole volume would.
+  void setSlabAnchor(double depth) { slabAnchor_ = depth; }
   // The splats of the current volume and transfer function (built on the next render()).
   const SplatSet& splats() const { return classified_.splats; }
   const AttributeList& attributes() const { return classified_.attributes; }
@@ -439,6 +443,7 @@ class SplatRenderer : public Renderer {
   Classification classification_;
   ClassifiedSplats classified_;
   SlabPartition partition_;
+  double slabAnchor_ = NAN;  // setSlabAnchor
   PartitionMode partitionMode_ = PartitionMode::Auto;
   bool softwareGl_ = false;                            // GL_RENDERER names a software rasterizer
   std::unique_ptr<GpuSlabPartition> gpuPartition_;     // made on first use
