@@ -166,7 +166,8 @@ TEST_P(HeadlessContextTest, ComputeProgramFillsStorageBuffer) {
 }
 
 TEST_P(HeadlessContextTest, BrokenShaderNamesFileAndCompileLog) {
-  std::filesystem::path dir = scratchDir("broken");
+  // A folder per backend: ctest -j runs the backends' instances at once.
+  std::filesystem::path dir = scratchDir("broken_" + std::to_string(int(GetParam())));
   writeFile(dir / "test_fill.vert.glsl",
             gl::ShaderLibrary(kTestShaders).source("test_fill.vert.glsl"));
   writeFile(dir / "broken.frag.glsl",
@@ -188,7 +189,7 @@ TEST_P(HeadlessContextTest, BrokenShaderNamesFileAndCompileLog) {
 }
 
 TEST_P(HeadlessContextTest, ErrorInIncludedFileIsListedBySourceString) {
-  std::filesystem::path dir = scratchDir("broken_include");
+  std::filesystem::path dir = scratchDir("broken_include_" + std::to_string(int(GetParam())));
   writeFile(dir / "bad_snippet.glsl", "// Broken snippet.\nfloat f() { return missingName; }\n");
   writeFile(dir / "user.comp.glsl",
             "layout(local_size_x = 1) in;\n#include \"bad_snippet.glsl\"\nvoid main() {}\n");
