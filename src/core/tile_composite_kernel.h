@@ -108,6 +108,29 @@ struct TilePlanes {
   alignas(32) float a[kPixels];
 };
 
+// The pixels of the tile (tile-local, inclusive) whose centres lie in `rec`'s box: false where
+// none does.
+inline bool tileBox(const TileWork& work, const SplatRecord& rec, int& x0, int& y0, int& x1,
+                    int& y1) {
+  const TileCompositeSettings& s = *work.settings;
+  if (!boxPixels(rec.box, s.width, s.height, x0, y0, x1, y1)) return false;
+  x0 = std::max(x0, work.px0) - work.px0;
+  y0 = std::max(y0, work.py0) - work.py0;
+  x1 = std::min(x1, work.px0 + work.w - 1) - work.px0;
+  y1 = std::min(y1, work.py0 + work.h - 1) - work.py0;
+  return true;
+}
+
+// Writes the tile's pixels to the picture: `pixel(p)` gives the one at plane index p.
+template <typename Pixel>
+inline void storeTile(const TileWork& work, Pixel&& pixel) {
+  const size_t width = size_t(work.settings->width);
+  for (int y = 0; y < work.h; ++y)
+    for (int x = 0; x < work.w; ++x)
+      (*work.picture)[size_t(work.py0 + y) * width + size_t(work.px0 + x)] =
+          pixel(y * TileCompositor::kTile + x);
+}
+
 // The tile's slabs summed and composited front to back. Each row of a splat's box is walked over
 // an aligned run of 8 pixels (a footprint within one half of the tile's row) or the whole row of
 // 16, the pixels outside its box, its ellipse or the picture or already opaque adding 0: no
@@ -174,11 +197,7 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
     }
     const SplatRecord& rec = (*work.records)[item.entry & SlabPartition::kIndexMask];
     int x0, y0, x1, y1;
-    if (!boxPixels(rec.box, s.width, s.height, x0, y0, x1, y1)) return true;
-    x0 = std::max(x0, px0) - px0;
-    y0 = std::max(y0, py0) - py0;
-    x1 = std::min(x1, px0 + w - 1) - px0;
-    y1 = std::min(y1, py0 + h - 1) - py0;
+    if (!tileBox(work, rec, x0, y0, x1, y1)) return true;
     const bool openNear = (item.entry & SlabPartition::kFirstSlab) != 0;
     const bool openFar = (item.entry & SlabPartition::kLastSlab) != 0;
     const Slab& slab = (*work.slabs)[item.slab];
@@ -236,12 +255,7 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
     return true;
   });
   finishSlab();
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const int p = y * kTile + x;
-      (*work.picture)[size_t(py0 + y) * size_t(s.width) + size_t(px0 + x)] =
-          glm::vec4(image.r[p], image.g[p], image.b[p], image.a[p]);
-    }
+  storeTile(work, [&](int p) { return glm::vec4(image.r[p], image.g[p], image.b[p], image.a[p]); });
 }
 
 }  // namespace EWA_TILE_ISA

@@ -214,11 +214,7 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
     }
     const SplatRecord& rec = (*work.records)[item.entry & SlabPartition::kIndexMask];
     int x0, y0, x1, y1;
-    if (!boxPixels(rec.box, s.width, s.height, x0, y0, x1, y1)) return true;
-    x0 = std::max(x0, px0) - px0;
-    y0 = std::max(y0, py0) - py0;
-    x1 = std::min(x1, px0 + w - 1) - px0;
-    y1 = std::min(y1, py0 + h - 1) - py0;
+    if (!tileBox(work, rec, x0, y0, x1, y1)) return true;
     const bool openNear = (item.entry & SlabPartition::kFirstSlab) != 0;
     const bool openFar = (item.entry & SlabPartition::kLastSlab) != 0;
     const Slab& slab = (*work.slabs)[item.slab];
@@ -300,12 +296,7 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
     return true;
   });
   finishSlab();
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const int p = y * kTile + x;
-      (*work.picture)[size_t(py0 + y) * size_t(s.width) + size_t(px0 + x)] =
-          glm::vec4(image.r[p], image.g[p], image.b[p], image.a[p]);
-    }
+  storeTile(work, [&](int p) { return glm::vec4(image.r[p], image.g[p], image.b[p], image.a[p]); });
 }
 
 // X-ray (`Mip` false): each pixel's summed optical depth, every kernel whole (cut to the kept
@@ -338,11 +329,7 @@ __attribute__((always_inline)) inline void wholeTileOf(const TileWork& work) {
   forEachTileItem(work, false, [&](const TileCompositor::Item& item) {
     const SplatRecord& rec = (*work.records)[item.entry & SlabPartition::kIndexMask];
     int x0, y0, x1, y1;
-    if (!boxPixels(rec.box, s.width, s.height, x0, y0, x1, y1)) return true;
-    x0 = std::max(x0, px0) - px0;
-    y0 = std::max(y0, py0) - py0;
-    x1 = std::min(x1, px0 + w - 1) - px0;
-    y1 = std::min(y1, py0 + h - 1) - py0;
+    if (!tileBox(work, rec, x0, y0, x1, y1)) return true;
     const float scale = Mip ? rec.color.a : rec.conic.w;  // value, or optical depth at the centre
     const float qa = rec.conic.x, qb = rec.conic.y, qc = rec.conic.z;
     const float cx = rec.box.x, mu0 = rec.depth.x;
@@ -381,12 +368,10 @@ __attribute__((always_inline)) inline void wholeTileOf(const TileWork& work) {
     }
     return true;
   });
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const float g = gathered[y * kTile + x];
-      (*work.picture)[size_t(py0 + y) * size_t(s.width) + size_t(px0 + x)] =
-          Mip ? glm::vec4(g, 0.0f, 0.0f, 0.0f) : glm::vec4(0.0f, 0.0f, 0.0f, g);
-    }
+  storeTile(work, [&](int p) {
+    const float g = gathered[p];
+    return Mip ? glm::vec4(g, 0.0f, 0.0f, 0.0f) : glm::vec4(0.0f, 0.0f, 0.0f, g);
+  });
 }
 
 // The tile's gather for the frame's settings: each variant's pixel loops compiled without the
