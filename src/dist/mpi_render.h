@@ -45,6 +45,9 @@ double cornerSlabAnchor(const Volume& volume, const Camera& camera, const Render
 // The front of the nearest kernel (nearestKernelFront) among `splats` (classifySplats of
 // `volume`) whose voxels lie in `brick` (in `volume`'s indices). The least over the bricks is the
 // whole volume's nearest kernel's front: where the one-process partition starts its slab grid.
+double brickKernelFront(const Volume& volume, const VoxelBox& brick, const SplatSet& splats,
+                        const AttributeList& attributes, const Camera& camera,
+                        const RenderSettings& settings, int width, int height);
 double brickKernelFront(const Volume& volume, const VoxelBox& brick, const ClassifiedSplats& splats,
                         const Camera& camera, const RenderSettings& settings, int width,
                         int height);
@@ -72,5 +75,11 @@ std::vector<float> renderBrick(const Volume& volume, const VoxelBox& brick,
 // agreed to go on (a composite failing on one rank) ends every rank through MPI_Abort after its
 // line.
 int renderDistributed(const Options& options, MPI_Comm comm);
+
+class DistributedSession;
+// Rank 0: --stats of the session's last frame as one JSON line: the ranks, the picture, the
+// ghosts, the composite (the slowest rank's) and each rank's brick, render and composite
+// times, bytes sent, voxels read and peak memory.
+std::string frameStatsJson(const DistributedSession& session, int width, int height);
 
 }  // namespace ewa::dist

@@ -1,0 +1,320 @@
+// DistributedSession: open once (source, split, brick, agreed statistics), then collective frames.
+#include "dist/mpi_session.h"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <stdexcept>
+#include <utility>
+
+#include "app/scene.h"
+#include "dist/brick_clip.h"
+#include "dist/brick_ghosts.h"
+#include "dist/icet_compositor.h"
+#include "dist/mpi_brick_renderer.h"
+#include "dist/mpi_collective.h"
+#include "dist/mpi_render.h"
+#include "dist/visibility_order.h"
+
+namespace ewa::dist {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// FNV-1a over bytes, folded into a double's exact integers so that MPI carries it as one.
+struct Fingerprint {
+  uint64_t h = 1469598103934665603ull;
+  void add(const void* data, size_t n) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;
+  }
+  void add(double v) { add(&v, sizeof v); }
+};
+
+// What every rank must hold the same before the first frame: the whole volume's grid, value
+// range and histogram (behind splat quantization and the default transfer function), the
+// transfer function and the camera. They agree unless the ranks read different files.
+uint64_t sceneFingerprint(const WholeGrid& g, const Volume& v, const TransferFunction& tf,
+                          const Camera& camera) {
+  Fingerprint f;
+  for (int a = 0; a < 3; ++a) {
+    f.add(double(g.dims[size_t(a)]));
+    f.add(g.spacing[a]);
+    f.add(g.origin[a]);
+    f.add(camera.position[a]);
+    f.add(camera.focalPoint[a]);
+  }
+  f.add(v.minValue());
+  f.add(v.maxValue());
+  f.add(v.histogram().data(), v.histogram().size() * sizeof(uint64_t));
+  for (const glm::vec4& s : tf.bake(v.minValue(), v.maxValue(), 256)) f.add(&s, sizeof s);
+  return f.h;
+}
+
+// The voxels of `brick` grown by `ghost` on each side, inside the whole volume.
+VoxelRegion grownRegion(const VoxelBox& brick, const std::array<int64_t, 3>& ghost,
+                        const std::array<int64_t, 3>& dims) {
+  VoxelRegion region;
+  for (size_t a = 0; a < 3; ++a) {
+    region.lo[a] = std::max<int64_t>(brick.low[a] - ghost[a], 0);
+    region.hi[a] = std::min<int64_t>(brick.high[a] + ghost[a], dims[a]);
+  }
+  return region;
+}
+
+bool contains(const VoxelRegion& outer, const VoxelRegion& inner) {
+  for (size_t a = 0; a < 3; ++a)
+    if (inner.lo[a] < outer.lo[a] || inner.hi[a] > outer.hi[a]) return false;
+  return true;
+}
+
+double peakRssMb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0;
+}
+
+}  // namespace
+
+DistributedSession::DistributedSession(const Options& options, MPI_Comm comm)
+    : comm_(comm), backend_(options.backend), shaderDir_(options.shaderDir) {
+  MPI_Comm_rank(comm, &rank_);
+  MPI_Comm_size(comm, &size_);
+}
+
+DistributedSession::~DistributedSession() = default;
+
+std::unique_ptr<DistributedSession> DistributedSession::open(const Options& options,
+                                                             MPI_Comm comm) {
+  std::unique_ptr<DistributedSession> s(new DistributedSession(options, comm));
+  // Every rank opens the source (metadata only where the format is read by parts) and frames
+  // the camera on the whole volume's bounds; a rank that cannot (a file missing there) says so
+  // for all.
+  std::string error;
+  try {
+    s->source_ = BrickSource::open(options);
+    const WholeGrid& g = s->source_->grid();
+    s->initialCamera_ =
+        initialCameraForBounds(g.worldBoundsMin(), g.worldBoundsMax(), g.patientFrame, options);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  if (anyFailed(error, comm)) return nullptr;
+  if (s->rank_ == 0 && !s->source_->note().empty())
+    std::cerr << "ewaview-mpi: note: " << s->source_->note() << std::endl;
+
+  // The split, and this rank's brick grown by the ghost voxels the first frame reads.
+  const WholeGrid& grid = s->grid();
+  s->split_ = splitBricks(VoxelWeights(grid.dims), s->size_);
+  s->brick_ = s->split_.bricks[size_t(s->rank_)];
+  const GhostReach reach =
+      frameGhostReach(grid, s->initialCamera_, options.render, options.width, options.height);
+  s->ghost_ = ghostVoxels(reach, grid.spacing);
+  const VoxelRegion region = grownRegion(s->brick_, s->ghost_, grid.dims);
+
+  Volume volume;
+  try {
+    if (!s->brick_.empty()) volume = s->source_->read(region);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  if (anyFailed(error, comm)) return nullptr;
+
+  // The whole volume's value range (every voxel lies in some rank's region) and histogram (of
+  // each rank's own voxels, over that range), agreed on before anything is classified: splats
+  // are quantized over the range, and the default transfer function comes from both.
+  // A region without finite values has the range {0, 0}: it must not widen the whole's.
+  bool finite = false;
+  if (!s->brick_.empty())
+    for (uint64_t count : volume.histogram()) finite = finite || count > 0;
+  const double range[2] = {finite ? -volume.minValue() : -INFINITY,
+                           finite ? volume.maxValue() : -INFINITY};
+  double global[2];
+  MPI_Allreduce(range, global, 2, MPI_DOUBLE, MPI_MAX, comm);
+  s->lo_ = -global[0];
+  s->hi_ = global[1];
+  if (!(s->lo_ <= s->hi_)) s->lo_ = s->hi_ = 0.0;
+  std::vector<uint64_t> histogram(size_t(Volume::histogramBins()), 0);
+  if (!s->brick_.empty()) {
+    std::array<int64_t, 3> low, high;
+    for (size_t a = 0; a < 3; ++a) {
+      low[a] = s->brick_.low[a] - region.lo[a];
+      high[a] = s->brick_.high[a] - region.lo[a];
+    }
+    histogram = volume.histogramOf(low, high, s->lo_, s->hi_);
+  }
+  s->histogram_.assign(histogram.size(), 0);
+  MPI_Allreduce(histogram.data(), s->histogram_.data(), int(histogram.size()), MPI_UINT64_T,
+                MPI_SUM, comm);
+
+  try {
+    s->volume_ = std::move(volume);
+    s->region_ = region;
+    s->readRegion(region);  // the statistics and data box of the volume just read
+    s->transferFunction_ = sceneTransferFunction(options, s->source_->sidecar(),
+                                                 s->source_->ownTransferFunction(), s->volume_);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  if (anyFailed(error, comm)) return nullptr;
+
+  // The ranks agree on the grid, the statistics, the transfer function and the camera.
+  const uint64_t mine = sceneFingerprint(grid, s->volume_, s->transferFunction_, s->initialCamera_);
+  uint64_t first = mine;
+  MPI_Bcast(&first, 1, MPI_UINT64_T, 0, comm);
+  if (anyFailed(mine == first ? ""
+                              : "this rank read another volume, transfer function or camera "
+                                "than rank 0 (are the files the same on every node?)",
+                comm))
+    return nullptr;
+  return s;
+}
+
+bool DistributedSession::readRegion(const VoxelRegion& region) {
+  // open() hands the volume just read (region_ == region); later frames read anew.
+  if (!brick_.empty() && !(region.lo == region_.lo && region.hi == region_.hi && !volume_.empty()))
+    volume_ = source_->read(region);
+  region_ = region;
+  if (brick_.empty()) {
+    // Nothing to draw; the statistics still make the transfer function every rank agrees on.
+    volume_ = Volume({1, 1, 1}, grid().spacing, grid().origin, ScalarType::UInt8, {0});
+  }
+  voxelsRead_ = brick_.empty() ? 0 : (long long)volume_.voxelCount();
+  // The brick as a volume of its own that draws as its part of the whole: the whole's value
+  // statistics and data box (in the brick's indices), and its inner faces cut exactly.
+  volume_.setValueStatistics(lo_, hi_, histogram_);
+  DataBox box = grid().indexDataBox();
+  for (int a = 0; a < 3; ++a) {
+    box.low[a] -= double(region.lo[size_t(a)]);
+    box.high[a] -= double(region.lo[size_t(a)]);
+    localBrick_.low[size_t(a)] = brick_.low[size_t(a)] - region.lo[size_t(a)];
+    localBrick_.high[size_t(a)] = brick_.high[size_t(a)] - region.lo[size_t(a)];
+  }
+  volume_.setIndexDataBox(box);
+  volumeChanged_ = true;
+  return true;
+}
+
+bool DistributedSession::render(const Camera& camera, const RenderSettings& settings,
+                                const TransferFunction& tf, int w, int h,
+                                std::vector<float>* whole) {
+  // This rank's own work (reading, classifying, drawing), not its waits for the others.
+  double renderMs = 0.0;
+  auto start = Clock::now();
+  std::string error;
+  // The ghosts this frame's kernels need; more than held: the brick is read again.
+  ghost_ = ghostVoxels(frameGhostReach(grid(), camera, settings, w, h), grid().spacing);
+  const VoxelRegion needed = grownRegion(brick_, ghost_, grid().dims);
+  try {
+    if (!brick_.empty() && !contains(region_, needed)) readRegion(needed);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  renderMs += msSince(start);
+  if (anyFailed(error, comm_)) return false;
+
+  // One slab grid for all: each rank finds the nearest kernel among its own brick's splats
+  // (classified again when the volume, transfer function or classification changed); the least
+  // over the ranks is where the whole volume's partition starts its grid (its nearest kernel),
+  // so every brick cuts the one-process picture's slabs.
+  const Classification classification = splatClassification(settings);
+  ClassifiedSplats splats;
+  bool fresh = false;
+  double front = INFINITY;
+  start = Clock::now();
+  try {
+    if (!brick_.empty()) {
+      if (!renderer_) renderer_ = std::make_unique<BrickRenderer>(backend_, shaderDir_);
+      fresh = volumeChanged_ || !(tf == classifiedTf_) || !(classification == classified_);
+      if (fresh) {
+        if (volumeChanged_) renderer_->setVolume(volume_);
+        splats = classifySplats(volume_, tf, classification);
+        front = brickKernelFront(volume_, localBrick_, splats, camera, settings, w, h);
+        volumeChanged_ = false;
+        classifiedTf_ = tf;
+        classified_ = classification;
+      } else {
+        const SplatRenderer& r = renderer_->splatRenderer();
+        front = brickKernelFront(volume_, localBrick_, r.splats(), r.attributes(), camera, settings,
+                                 w, h);
+      }
+    }
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  renderMs += msSince(start);
+  if (anyFailed(error, comm_)) return false;
+  double anchor = INFINITY;
+  MPI_Allreduce(&front, &anchor, 1, MPI_DOUBLE, MPI_MIN, comm_);
+  // Nothing visible anywhere: any shared grid will do.
+  if (!std::isfinite(anchor)) anchor = cornerSlabAnchor(volume_, camera, settings, w, h);
+
+  // This rank's picture: premultiplied RGBA floats (composite), the optical depth (X-ray) or
+  // the maximum (MIP); nothing where the brick is empty.
+  std::vector<float> picture(size_t(w) * size_t(h) * 4, 0.0f);
+  std::string note;
+  start = Clock::now();
+  try {
+    if (!brick_.empty()) {
+      RenderSettings cut = settings;
+      if (const std::string problem = addBrickPlanes(volume_, localBrick_, &cut.clip);
+          !problem.empty())
+        throw std::runtime_error(problem);
+      // X-ray and MIP draw one slab of unbounded thickness: no grid to share.
+      const double a = settings.mode == RenderMode::Composite ? anchor : NAN;
+      picture = renderer_->render(tf, camera, cut, w, h, a, fresh ? &splats : nullptr);
+      note = renderer_->note();
+      if (picture.size() != size_t(w) * size_t(h) * 4)
+        throw std::runtime_error("the renderer returned no picture");
+    }
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  renderMs += msSince(start);
+  if (anyFailed(error, comm_)) return false;
+
+  // Composite: blended in visibility order, or summed (X-ray) or maximal (MIP) per pixel.
+  const auto compositeStart = Clock::now();
+  double bytesSent = 0.0;
+  try {
+    const IndexView view = indexView(camera, grid().origin, grid().direction, grid().spacing);
+    if (settings.mode == RenderMode::Composite) {
+      if (!compositor_) compositor_ = std::make_unique<IceTCompositor>(comm_);
+      *whole = compositor_->blend(picture, w, h, visibilityOrder(split_, view));
+    } else {
+      *whole =
+          settings.mode == RenderMode::XRay ? reduceSum(picture, comm_) : reduceMax(picture, comm_);
+      if (rank_ != 0) bytesSent = double(picture.size() * sizeof(float));
+    }
+  } catch (const std::exception& e) {
+    abortAll(e.what(), comm_);
+  }
+  const double compositeMs = msSince(compositeStart);
+
+  // Each rank's figures and whether it has a note, on rank 0.
+  static_assert(sizeof(RankFigures) % sizeof(double) == 0, "RankFigures: doubles only");
+  const RankFigures ours{renderMs, compositeMs, double(voxelsRead_), peakRssMb(), bytesSent};
+  constexpr int kFields = int(sizeof(RankFigures) / sizeof(double));
+  figures_.assign(rank_ == 0 ? size_t(size_) : 0, RankFigures{});
+  MPI_Gather(&ours, kFields, MPI_DOUBLE, figures_.data(), kFields, MPI_DOUBLE, 0, comm_);
+  // The renderer's note is the same on every rank that draws; rank 0 may draw nothing.
+  int length = int(note.size()), longest = 0;
+  MPI_Allreduce(&length, &longest, 1, MPI_INT, MPI_MAX, comm_);
+  int owner = length == longest ? rank_ : size_, first = 0;
+  MPI_Allreduce(&owner, &first, 1, MPI_INT, MPI_MIN, comm_);
+  note.resize(size_t(longest));
+  MPI_Bcast(note.data(), longest, MPI_CHAR, first, comm_);
+  note_ = rank_ == 0 ? note : std::string();
+  return true;
+}
+
+}  // namespace ewa::dist
