@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${1:-build}"
 
-packages=(build-essential cmake pkg-config
+packages=(build-essential cmake pkg-config ccache
   libglfw3-dev libglm-dev libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri
   libimgui-dev libstb-dev libcli11-dev nlohmann-json3-dev zlib1g-dev libbz2-dev libgtest-dev
   libgdcm-dev libtiff-dev  # DICOM series, TIFF stacks
