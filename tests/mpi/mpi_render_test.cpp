@@ -1,5 +1,5 @@
 // ewaview-mpi under mpirun against the one-process ewaview picture (early termination off): on
-// 1 to 4 ranks, perspective and orthographic, oblique views, composite, X-ray and MIP, a
+// 1 to 8 ranks, perspective and orthographic, oblique views, composite, X-ray and MIP, a
 // synthetic and a shared volume, SSIM >= 0.999 and no channel off by more than 10 levels; a file
 // missing on every rank or on one ends all ranks with one line, and usage errors are one line.
 #include <gtest/gtest.h>
@@ -60,8 +60,8 @@ void expectSamePicture(const std::string& name, const std::string& args,
   }
 }
 
-TEST(MpiRender, OneToFourRanksDrawTheOneProcessPicture) {
-  expectSamePicture("default", kSynthetic, {1, 2, 3, 4});
+TEST(MpiRender, OneToEightRanksDrawTheOneProcessPicture) {
+  expectSamePicture("default", kSynthetic, {1, 2, 3, 4, 8});
 }
 
 TEST(MpiRender, ObliqueOrthographicAndPerspectiveViews) {
@@ -149,6 +149,27 @@ g.attrs['multiscales'] = [{'version': '0.4', 'axes': [space('z'), space('y'), sp
   // what this test is about; the chunks read are.
   const std::string view = " --resolution 128,128 --camera-position 75,-40,95 --classification pre";
   expectSamePicture("zarr", folder + "/ml.zarr" + view, {2, 3});
+}
+
+TEST(MpiRender, Hdf5ReadByHyperslabsDrawsTheOneProcessPicture) {
+  if (const std::string why = ewa::testing::pythonLacks("h5py, numpy"); !why.empty())
+    GTEST_SKIP() << why;
+  const std::string raw = writeMarschnerLobbRaw();
+  const std::string folder = testOutputDir() + "/mpi_hdf5";
+  std::filesystem::create_directories(folder);
+  // As simulation codes write them: a chunked dataset inside a group, z slowest.
+  const std::string script = R"PY(
+import os, sys
+import numpy as np
+import h5py
+out = sys.argv[1]
+v = np.fromfile(os.path.join(out, '..', 'mpi_ml41.raw'), dtype='<f4').reshape(41, 41, 41)
+with h5py.File(os.path.join(out, 'ml.h5'), 'w') as f:
+    f.create_dataset('fields/density', data=v, chunks=(8, 16, 16))
+)PY";
+  ASSERT_EQ(ewa::testing::runPython(script, folder), "");
+  const std::string view = " --resolution 128,128 --camera-position 75,-40,95 --classification pre";
+  expectSamePicture("hdf5", folder + "/ml.h5 --dataset fields/density" + view, {3});
 }
 
 TEST(MpiRender, AFormatReadWholeSaysSoInOneLine) {
