@@ -1,7 +1,8 @@
 // ewaview-mpi under mpirun against the one-process ewaview picture (early termination off): on
 // 1 to 8 ranks, perspective and orthographic, oblique views, composite, X-ray and MIP, a
 // synthetic and a shared volume, SSIM >= 0.999 and no channel off by more than 10 levels; a file
-// missing on every rank or on one ends all ranks with one line, and usage errors are one line.
+// missing on every rank or on one ends all ranks with one line, a rank killed mid-frame ends
+// them all, and usage errors are one line.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -208,6 +209,23 @@ TEST(MpiRender, AFileMissingOnOneRankEndsAllWithItsLine) {
   ASSERT_NE(at, std::string::npos) << run.err;
   EXPECT_EQ(run.err.find("ewaview-mpi:", at + 1), std::string::npos) << "said twice: " << run.err;
   EXPECT_EQ(run.err.find("ewaview-mpi: rank 0"), std::string::npos) << run.err;
+}
+
+TEST(MpiRender, ARankKilledMidFrameEndsEveryRank) {
+  // Rank 1 is killed a second into a frame that takes longer: mpirun ends rank 0 too (no hang
+  // in a collective), exits non-zero, says which process, and no picture is written.
+  const std::string args =
+      "--synthetic marschner-lobb:96 --resolution 1024,1024 --output " + outPath("killed");
+  const std::string victim = std::string("/bin/sh -c '") + EWA_MPI_BINARY + " " + args +
+                             " & sleep 1; kill -9 $!; wait $!'";
+  const CliRun run = runProgram(
+      EWA_MPIEXEC,
+      std::string("1 ") + EWA_MPI_BINARY + " " + args + " : " + EWA_MPI_NP_FLAG + " 1 " + victim,
+      "killed", kTimeout);
+  EXPECT_NE(run.code, 0);
+  EXPECT_NE(run.code, 124) << "timed out: a rank hung";
+  EXPECT_NE(run.err.find("Exit code:    137"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(outPath("killed")));
 }
 
 TEST(MpiRender, UsageErrorsAreOneLine) {
