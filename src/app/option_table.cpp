@@ -810,6 +810,17 @@ std::vector<OptionSpec> makeTable() {
       .describe(
           "Window settings folder (default $EWAVIEW_CONFIG_DIR, else $XDG_CONFIG_HOME/ewaview "
           "or ~/.config/ewaview)");
+  add(rows, "--split", OptionGroup::Advanced)
+      .accepts({"visible", "voxels"})
+      .defaultsTo(o.split)
+      .notInPython()
+      .describe("ewaview-mpi: balance the ranks' bricks by visible voxels or by voxel count")
+      .explain(
+          "`ewaview-mpi` only: how the volume is cut into one brick per rank. `visible` (the "
+          "default) balances the bricks by the voxels the transfer function shows (counted per "
+          "block of 8³ voxels; post-classified with the margin of voxels beside them), so ranks "
+          "whose part is empty space do not idle while others draw; `voxels` by voxel count "
+          "([Distributed rendering](../dev/distributed.md))");
   add(rows, "--help", OptionGroup::Advanced)
       .shortLetter("h")
       .notInPython()

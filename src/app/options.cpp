@@ -166,6 +166,7 @@ void addOptions(CLI::App& app, Options* o, ParsedText* t) {
   addTableOption(app, "--backend", o->backend);
   addTableOption(app, "--shader-dir", o->shaderDir);
   addTableOption(app, "--config-dir", o->configDir);
+  addTableOption(app, "--split", o->split);
 }
 
 const char* const kAbout =
