@@ -156,7 +156,8 @@ std::vector<OptionSpec> makeTable() {
           "OME-Zarr: open level N of the image's multiscales pyramid, the N-th of its "
           "`datasets` (0 is full resolution, each next one coarser); the voxel spacing is the "
           "level's scale. `--info` says how many levels there are. A Zarr array without "
-          "multiscales has level 0 alone");
+          "multiscales has level 0 alone. A level other than 0 for any other volume is a usage "
+          "error naming it");
   add(rows, "--dataset", OptionGroup::Input)
       .value("NAME")
       .describe("HDF5: open this 3D dataset (default: the file's only 3D dataset)")

@@ -297,6 +297,15 @@ TEST(MpiRender, UsageErrorsAreOneLine) {
   const size_t said = badOption.err.find("no-such-option");
   ASSERT_NE(said, std::string::npos) << badOption.err;
   EXPECT_EQ(badOption.err.find("no-such-option", said + 1), std::string::npos) << badOption.err;
+  // --level of a volume that is not an OME-Zarr image: one line naming it.
+  const std::string raw = writeMarschnerLobbRaw();
+  const CliRun level = runRanks(
+      2, raw + " --raw-dims 41,41,41 --raw-type float32 --level 1 --output " + outPath("level"),
+      "usage");
+  EXPECT_EQ(level.code, 2);
+  const size_t named = level.err.find(raw + ": --level 1 picks a level of an OME-Zarr pyramid");
+  ASSERT_NE(named, std::string::npos) << level.err;
+  EXPECT_EQ(level.err.find("--level 1", named + raw.size() + 12), std::string::npos) << level.err;
 }
 
 }  // namespace
