@@ -156,7 +156,8 @@ std::vector<OptionSpec> makeTable() {
           "OME-Zarr: open level N of the image's multiscales pyramid, the N-th of its "
           "`datasets` (0 is full resolution, each next one coarser); the voxel spacing is the "
           "level's scale. `--info` says how many levels there are. A Zarr array without "
-          "multiscales has level 0 alone");
+          "multiscales has level 0 alone. A level other than 0 for any other volume is a usage "
+          "error naming it");
   add(rows, "--dataset", OptionGroup::Input)
       .value("NAME")
       .describe("HDF5: open this 3D dataset (default: the file's only 3D dataset)")
@@ -810,6 +811,17 @@ std::vector<OptionSpec> makeTable() {
       .describe(
           "Window settings folder (default $EWAVIEW_CONFIG_DIR, else $XDG_CONFIG_HOME/ewaview "
           "or ~/.config/ewaview)");
+  add(rows, "--split", OptionGroup::Advanced)
+      .accepts({"visible", "voxels"})
+      .defaultsTo(o.split)
+      .notInPython()
+      .describe("ewaview-mpi: balance the ranks' bricks by visible voxels or by voxel count")
+      .explain(
+          "`ewaview-mpi` only: how the volume is cut into one brick per rank. `visible` (the "
+          "default) balances the bricks by the voxels the transfer function shows (counted per "
+          "block of 8³ voxels; post-classified with the margin of voxels beside them), so ranks "
+          "whose part is empty space do not idle while others draw; `voxels` by voxel count "
+          "([Distributed rendering](../dev/distributed.md))");
   add(rows, "--help", OptionGroup::Advanced)
       .shortLetter("h")
       .notInPython()

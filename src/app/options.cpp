@@ -166,6 +166,7 @@ void addOptions(CLI::App& app, Options* o, ParsedText* t) {
   addTableOption(app, "--backend", o->backend);
   addTableOption(app, "--shader-dir", o->shaderDir);
   addTableOption(app, "--config-dir", o->configDir);
+  addTableOption(app, "--split", o->split);
 }
 
 const char* const kAbout =
@@ -261,6 +262,18 @@ ParseResult parseCommandLine(int argc, const char* const* argv, Options* o) {
     return usage("give a FILE or --synthetic, not both");
   if (!o->rawDims.empty() && o->rawType.empty()) return usage("--raw-dims needs --raw-type");
   if (!o->rawDims.empty() && o->file.empty()) return usage("--raw-dims needs a FILE");
+  // A coarser level of anything but an OME-Zarr image would silently be the full resolution
+  // (level 0, which every volume has).
+  if (o->load.level != 0) {
+    const std::string level = "--level " + std::to_string(o->load.level);
+    if (!o->synthetic.empty())
+      return usage(level + " picks a level of an OME-Zarr pyramid, not of --synthetic " +
+                   o->synthetic);
+    if (o->file.empty() || !o->rawDims.empty() || !mayHoldZarrLevels(o->file))
+      return usage((o->file.empty() ? std::string("the default volume") : o->file) + ": " + level +
+                   " picks a level of an OME-Zarr pyramid, and this is not an OME-Zarr "
+                   "image");
+  }
   if (o->turntable > 0 && o->output.empty()) return usage("--turntable needs --output");
   if (o->tour > 0 && (o->output.empty() || o->turntable > 0))
     return usage("--tour needs --output and is not a --turntable");

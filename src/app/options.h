@@ -21,6 +21,7 @@ struct Options {
   int tour = 0;           // > 0: that many frames through the camera bookmarks (--tour)
   std::string bookmarks;  // --bookmarks: the tour's file (default: NAME.bookmarks.json beside)
   std::string configDir;  // the window's settings folder; empty: defaultConfigDir()
+  std::string split = "visible";  // ewaview-mpi's bricks: balanced by "visible" voxels or "voxels"
   std::vector<std::string> tfPresets;  // --tf-preset keys, applied in order to the function
   bool watch = false;                  // the window reloads the volume when its file changes
   std::string recordCameraPath;     // the window writes every camera it draws to this file on exit

@@ -1,11 +1,12 @@
-// Headless turntables and tours: one HeadlessSession (the --renderer's renderer), N views, one
-// sink.
+// Headless turntables and tours: one frame loop (camera path, sink, progress) for ewaview,
+// ewaview-mpi and Python; ewaview's frames drawn by one HeadlessSession.
 #include "app/turntable.h"
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -23,53 +24,115 @@ namespace ewa {
 
 namespace {
 
-// Renders `count` frames, frame f seen as `view(f)` says, into the sink --output names.
-void renderFrames(const Scene& scene, const Options& o, int count, const char* what,
-                  const std::function<TourStop(int)>& view) {
+// One process's frames: the session's renderer draws the layers under the stop's clip region.
+DrawFrame sessionDraw(HeadlessSession& session, const std::vector<RenderLayer>& layers,
+                      const Options& o) {
+  return [&session, &layers, &o](int, const TourStop& stop, Image8* picture, std::string* note) {
+    RenderSettings settings = o.render;
+    settings.clip = stop.clip;
+    *picture = renderLayers(session, layers, stop.camera, settings, o.width, o.height);
+    *note = session.takeNote();
+    return true;
+  };
+}
+
+// Renders the frames of `path` into the sink --output names.
+void renderFrames(const Scene& scene, const Options& o, const FramePath& path) {
   refuseToOverwriteInputs(o.output, scene, o);
   // The sink checks or makes its folder or file first, so a bad path fails before rendering.
-  const std::unique_ptr<FrameSink> sink = openFrameSink(o.output, count, o.fps);
+  const std::unique_ptr<FrameSink> sink = openFrameSink(o.output, path.count, o.fps);
   // A frame's name may be a slice of the input stack (-o slices/ of the slices' own folder).
-  for (int f = 0; f < count; ++f) refuseToOverwriteInputs(sink->fileOf(f), scene, o);
+  for (int f = 0; f < path.count; ++f) refuseToOverwriteInputs(sink->fileOf(f), scene, o);
   HeadlessSession session(o.backend, o.shaderDir);
   session.setAxes(o.axes);
-  TerminalProgress progress(std::string("ewaview: ") + what);
-  const auto begin = std::chrono::steady_clock::now();
-  // Notes are said after the progress line, not through it.
-  const std::vector<std::string> notes =
-      renderViews(session, *sink, sceneLayers(scene), o, count, view,
-                  [&](int f) { progress.update(f + 1, count, sink->fileOf(f)); });
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-  char note[96];
-  std::snprintf(note, sizeof note, "%d frames in %.1f s", count, s);
-  progress.finish(note);
-  for (const std::string& line : notes) std::fprintf(stderr, "ewaview: %s\n", line.c_str());
+  const std::vector<RenderLayer> layers = sceneLayers(scene);
+  writeFrames(path, sink.get(), "ewaview", sessionDraw(session, layers, o));
 }
 
 }  // namespace
+
+FramePath framePath(const Options& o, const Camera& start, const std::string& volumeFile,
+                    const std::string& name) {
+  FramePath path;
+  if (o.tour > 0) {
+    auto stops = std::make_shared<const std::vector<TourStop>>(loadTourStops(
+        o.bookmarks, volumeFile, name, o.configDir.empty() ? defaultConfigDir() : o.configDir));
+    path.count = o.tour;
+    path.what = "tour";
+    path.view = [stops, count = o.tour](int f) { return tourFrame(*stops, f, count); };
+  } else {
+    path.count = o.turntable;
+    path.what = "turntable";
+    path.view = [start, clip = o.render.clip, count = o.turntable](int f) {
+      return TourStop{turntableCamera(start, f, count), clip};
+    };
+  }
+  return path;
+}
+
+std::vector<std::string> runFrames(const FramePath& path, FrameSink* sink, const DrawFrame& draw,
+                                   const std::function<void(int)>& beforeFrame,
+                                   const AnyFailed& anyFailed, bool* stopped) {
+  std::vector<std::string> notes;
+  if (stopped) *stopped = true;
+  for (int f = 0; f <= path.count; ++f) {
+    std::string error;
+    bool go = true;
+    try {
+      if (f == path.count) {
+        if (sink) sink->finish();
+      } else {
+        if (beforeFrame) beforeFrame(f);
+        Image8 picture;
+        std::string note;
+        go = draw(f, path.view(f), &picture, &note);
+        if (go && sink) sink->add(picture, f);
+        if (!note.empty()) notes.push_back(std::move(note));
+      }
+    } catch (const std::exception& e) {
+      if (!anyFailed) throw;
+      error = e.what();
+      if (error.empty()) error = "a frame failed";
+    }
+    // A draw that stops has stopped every process alike; an error elsewhere is agreed on.
+    if (!go || (anyFailed && anyFailed(error))) return notes;
+  }
+  if (stopped) *stopped = false;
+  return notes;
+}
+
+bool writeFrames(const FramePath& path, FrameSink* sink, const std::string& program,
+                 const DrawFrame& draw, const AnyFailed& anyFailed) {
+  std::unique_ptr<TerminalProgress> progress;
+  if (sink) progress = std::make_unique<TerminalProgress>(program + ": " + path.what);
+  const auto begin = std::chrono::steady_clock::now();
+  bool stopped = false;
+  // Notes are said after the progress line, not through it.
+  const std::vector<std::string> notes = runFrames(
+      path, sink, draw,
+      [&](int f) {
+        if (progress) progress->update(f + 1, path.count, sink->fileOf(f));
+      },
+      anyFailed, &stopped);
+  if (!progress || stopped) return !stopped;
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  char note[96];
+  std::snprintf(note, sizeof note, "%d frames in %.1f s", path.count, s);
+  progress->finish(note);
+  for (const std::string& line : notes)
+    std::fprintf(stderr, "%s: %s\n", program.c_str(), line.c_str());
+  return true;
+}
 
 std::vector<std::string> renderViews(HeadlessSession& session, FrameSink& sink,
                                      const std::vector<RenderLayer>& layers, const Options& o,
                                      int count, const std::function<TourStop(int)>& view,
                                      const std::function<void(int)>& beforeFrame) {
-  std::vector<std::string> notes;
-  RenderSettings settings = o.render;
-  for (int f = 0; f < count; ++f) {
-    if (beforeFrame) beforeFrame(f);
-    const TourStop stop = view(f);
-    settings.clip = stop.clip;
-    sink.add(renderLayers(session, layers, stop.camera, settings, o.width, o.height), f);
-    if (std::string note = session.takeNote(); !note.empty()) notes.push_back(std::move(note));
-  }
-  sink.finish();
-  return notes;
+  return runFrames(FramePath{count, "", view}, &sink, sessionDraw(session, layers, o), beforeFrame);
 }
 
 void renderTurntable(const Scene& scene, const Options& o) {
-  const Camera start = initialCamera(scene.volume, o);
-  renderFrames(scene, o, o.turntable, "turntable", [&](int f) {
-    return TourStop{turntableCamera(start, f, o.turntable), o.render.clip};
-  });
+  renderFrames(scene, o, framePath(o, initialCamera(scene.volume, o), o.file, scene.name));
 }
 
 std::vector<TourStop> loadTourStops(const std::string& bookmarks, const std::string& volumeFile,
@@ -95,9 +158,7 @@ std::vector<TourStop> loadTourStops(const std::string& bookmarks, const std::str
 }
 
 void renderTour(const Scene& scene, const Options& o) {
-  const std::vector<TourStop> stops = loadTourStops(
-      o.bookmarks, o.file, scene.name, o.configDir.empty() ? defaultConfigDir() : o.configDir);
-  renderFrames(scene, o, o.tour, "tour", [&](int f) { return tourFrame(stops, f, o.tour); });
+  renderFrames(scene, o, framePath(o, initialCamera(scene.volume, o), o.file, scene.name));
 }
 
 }  // namespace ewa

@@ -1,6 +1,9 @@
 // Where a distributed run's ranks read their bricks: the whole volume's grid from the file's
-// metadata, and each brick's voxels (with its ghosts) read alone where the format allows.
+// metadata, and each brick's voxels (with its ghosts) read alone where the format allows, else
+// sent by rank 0, which alone reads the whole file.
 #pragma once
+
+#include <mpi.h>
 
 #include <array>
 #include <cstdint>
@@ -36,17 +39,29 @@ struct WholeGrid {
 class BrickSource {
  public:
   virtual ~BrickSource() = default;
-  // Opens what `options` name (a file, --raw-dims, --synthetic): reads metadata only where the
-  // format is read by parts (raw, NRRD raw, uncompressed MetaImage, OME-Zarr, HDF5, Marschner-
-  // Lobb); otherwise loads the whole volume. Throws as loading does.
+  // Opens what `options` name (a file, --raw-dims, --synthetic) on every rank of `comm`: each
+  // rank reads metadata only where the format is read by parts (raw, NRRD raw, uncompressed
+  // MetaImage, OME-Zarr, HDF5, Marschner-Lobb); any other format rank 0 alone loads whole, and
+  // sends the others its grid (scattered()). Collective. Returns null on every rank after one
+  // rank said why in one line (anyFailed).
+  static std::unique_ptr<BrickSource> open(const Options& options, MPI_Comm comm);
+  // The same in one process without MPI (a format not read by parts is loaded whole and read()
+  // cuts it). Throws as loading does.
   static std::unique_ptr<BrickSource> open(const Options& options);
 
   const WholeGrid& grid() const { return grid_; }
-  // The voxels of `region` (inside grid().dims, not empty) as a volume of their own, its
-  // origin at the region's first voxel, so they sit where the whole volume's do. Its value
-  // range and histogram are the region's own until the ranks agree on the whole's.
+  // Whether rank 0 holds the whole volume and sends the ranks their regions (readShared).
+  virtual bool scattered() const { return false; }
+  // This rank's `region` (inside grid().dims; empty: none, and an empty volume back) as a
+  // volume of its own, its origin at the region's first voxel, so its voxels sit where the whole
+  // volume's do. Its value range and histogram are the region's own until the ranks agree on the
+  // whole's. Collective where scattered() (rank 0 sends each rank its region, which overlap by
+  // their ghosts); else each rank reads alone. Throws on the ranks where it fails.
+  virtual Volume readShared(const VoxelRegion& region, MPI_Comm comm);
+  // The same read alone (not for a scattered() source).
   virtual Volume read(const VoxelRegion& region) = 0;
-  // "" when bricks are read alone; else one line saying that every rank reads the whole volume.
+  // "" when bricks are read alone; else one line saying that rank 0 reads the whole volume and
+  // sends each rank its region.
   const std::string& note() const { return note_; }
   // A synthetic volume's own transfer function; the file's sidecar transfer function path.
   const std::optional<TransferFunction>& ownTransferFunction() const { return ownTf_; }
@@ -58,5 +73,8 @@ class BrickSource {
   std::string note_, sidecar_, name_;
   std::optional<TransferFunction> ownTf_;
 };
+
+// True for an empty region (no voxels).
+bool emptyRegion(const VoxelRegion& region);
 
 }  // namespace ewa::dist

@@ -14,6 +14,7 @@
 #include "app/headless.h"
 #include "app/one_line.h"
 #include "app/scene.h"
+#include "app/turntable.h"
 #include "core/orientation_axes.h"
 #include "core/volume_orientation.h"
 #include "dist/brick_clip.h"
@@ -21,8 +22,10 @@
 #include "dist/brick_split.h"
 #include "dist/mpi_brick_renderer.h"
 #include "dist/mpi_brick_source.h"
+#include "dist/mpi_collective.h"
 #include "dist/mpi_session.h"
 #include "gl/shader_library.h"
+#include "io/frame_sink.h"
 #include "io/input_guard.h"
 #include "io/png_io.h"
 #include "render/splat_renderer.h"
@@ -113,7 +116,6 @@ uint8_t toByte(double v) {
 
 std::string distributedUsageProblem(const Options& o) {
   if (o.output.empty()) return "--output FILE.png is needed: ewaview-mpi renders headless";
-  if (o.turntable > 0 || o.tour > 0) return "--turntable and --tour are not distributed yet";
   if (o.info || o.pick || !o.saveVolume.empty())
     return "--info, --pick and --save-volume need no ranks: use ewaview";
   if (o.overlay) return "--channel all (or a list) is not distributed yet: give one channel";
@@ -173,9 +175,65 @@ std::vector<float> renderBrick(const Volume& volume, const VoxelBox& brick,
   return picture;
 }
 
+namespace {
+
+// The files an output must not replace: the volume's, the transfer function's, the bookmarks.
+std::vector<std::string> inputFiles(const DistributedSession& session, const Options& options) {
+  std::vector<std::string> inputs = session.volume().sourceFiles();
+  for (const std::string& file : {options.file, options.tfFile, options.bookmarks})
+    if (!file.empty()) inputs.push_back(file);
+  return inputs;
+}
+
+// --turntable and --tour: ewaview's camera path and frame loop (writeFrames), each frame one
+// collective DistributedSession::render; rank 0 alone opens the sink, writes and shows progress.
+// An error on any rank stops every rank after one line.
+int renderDistributedFrames(DistributedSession& session, const Options& o) {
+  const MPI_Comm comm = session.comm();
+  const int rank = session.rank();
+  std::string error;
+  FramePath path;
+  std::unique_ptr<FrameSink> sink;
+  try {
+    // Every rank reads the bookmarks of a tour, so each knows the path.
+    path = framePath(o, session.initialCamera(), o.file, session.name());
+    if (rank == 0) {
+      const std::vector<std::string> inputs = inputFiles(session, o);
+      refuseToReplaceInputs(o.output, inputs);
+      sink = openFrameSink(o.output, path.count, o.fps);
+      for (int f = 0; f < path.count; ++f) refuseToReplaceInputs(sink->fileOf(f), inputs);
+    }
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  if (anyFailed(error, comm)) return 1;
+  const DrawFrame draw = [&](int, const TourStop& stop, Image8* picture, std::string* note) {
+    RenderSettings settings = o.render;
+    settings.clip = stop.clip;
+    std::vector<float> whole;
+    if (!session.render(stop.camera, settings, session.transferFunction(), o.width, o.height,
+                        &whole))
+      return false;
+    if (rank == 0) {
+      *picture = finishPicture(whole, o.width, o.height, settings);
+      if (o.axes)
+        drawStrokes(*picture, orientationAxes(stop.camera.rotation(), session.grid().patientFrame,
+                                              axesPlacement(picture->width, picture->height)));
+      *note = session.note();
+    }
+    return true;
+  };
+  const bool done = writeFrames(path, sink.get(), "ewaview-mpi", draw,
+                                [comm](const std::string& e) { return anyFailed(e, comm); });
+  return done ? 0 : 1;
+}
+
+}  // namespace
+
 int renderDistributed(const Options& options, MPI_Comm comm) {
   const std::unique_ptr<DistributedSession> session = DistributedSession::open(options, comm);
   if (!session) return 1;
+  if (options.turntable > 0 || options.tour > 0) return renderDistributedFrames(*session, options);
   const int rank = session->rank();
   const WholeGrid& grid = session->grid();
   const Camera& camera = session->initialCamera();
@@ -184,11 +242,8 @@ int renderDistributed(const Options& options, MPI_Comm comm) {
   int status = 0;
   if (rank == 0) {
     // The output must not replace an input (the volume's files, the transfer function's).
-    std::vector<std::string> inputs = session->volume().sourceFiles();
-    for (const std::string& file : {options.file, options.tfFile, options.bookmarks})
-      if (!file.empty()) inputs.push_back(file);
     try {
-      refuseToReplaceInputs(options.output, inputs);
+      refuseToReplaceInputs(options.output, inputFiles(*session, options));
     } catch (const std::exception& e) {
       std::cerr << "ewaview-mpi: " << oneLine(e.what()) << std::endl;
       status = 1;

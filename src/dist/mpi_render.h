@@ -20,8 +20,8 @@
 
 namespace ewa::dist {
 
-// Why these options cannot be drawn by ewaview-mpi (one line), or "" when they can: one picture
-// (--output) of one channel by the splat renderer.
+// Why these options cannot be drawn by ewaview-mpi (one line), or "" when they can: one picture,
+// a turntable or a tour (--output) of one channel by the splat renderer.
 std::string distributedUsageProblem(const Options& options);
 
 // The picture the splat renderer's final pass makes of `picture` (readFramePicture: bottom row
@@ -70,10 +70,11 @@ std::vector<float> renderBrick(const Volume& volume, const VoxelBox& brick,
 // Opens the source on every rank, splits the whole voxel box into one brick per rank of `comm`,
 // reads this rank's brick with its ghost voxels (BrickSource: alone where the format allows),
 // agrees with the other ranks on the value range, histogram and transfer function, renders the
-// brick and composites; rank 0 writes options.output. Returns the exit status (0, or 1 after one
-// line on stderr from one rank), the same on every rank. Collective; an error after the ranks have
-// agreed to go on (a composite failing on one rank) ends every rank through MPI_Abort after its
-// line.
+// brick and composites; rank 0 writes options.output: one picture, or with --turntable or --tour
+// the frames of ewaview's camera path (writeFrames), one collective frame each. Returns the exit
+// status (0, or 1 after one line on stderr from one rank), the same on every rank. Collective; an
+// error after the ranks have agreed to go on (a composite failing on one rank) ends every rank
+// through MPI_Abort after its line.
 int renderDistributed(const Options& options, MPI_Comm comm);
 
 class DistributedSession;

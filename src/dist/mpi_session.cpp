@@ -14,6 +14,7 @@
 #include "app/scene.h"
 #include "dist/brick_clip.h"
 #include "dist/brick_ghosts.h"
+#include "dist/brick_weights.h"
 #include "dist/icet_compositor.h"
 #include "dist/mpi_brick_renderer.h"
 #include "dist/mpi_collective.h"
@@ -96,12 +97,13 @@ DistributedSession::~DistributedSession() = default;
 std::unique_ptr<DistributedSession> DistributedSession::open(const Options& options,
                                                              MPI_Comm comm) {
   std::unique_ptr<DistributedSession> s(new DistributedSession(options, comm));
-  // Every rank opens the source (metadata only where the format is read by parts) and frames
-  // the camera on the whole volume's bounds; a rank that cannot (a file missing there) says so
-  // for all.
+  // Every rank opens the source (metadata only where the format is read by parts; rank 0 alone
+  // loads any other format) and frames the camera on the whole volume's bounds; a rank that
+  // cannot (a file missing on its node) says so for all.
+  s->source_ = BrickSource::open(options, comm);
+  if (!s->source_) return nullptr;
   std::string error;
   try {
-    s->source_ = BrickSource::open(options);
     const WholeGrid& g = s->source_->grid();
     s->initialCamera_ =
         initialCameraForBounds(g.worldBoundsMin(), g.worldBoundsMax(), g.patientFrame, options);
@@ -112,7 +114,9 @@ std::unique_ptr<DistributedSession> DistributedSession::open(const Options& opti
   if (s->rank_ == 0 && !s->source_->note().empty())
     std::cerr << "ewaview-mpi: note: " << s->source_->note() << std::endl;
 
-  // The split, and this rank's brick grown by the ghost voxels the first frame reads.
+  // A first split by voxel count, and this rank's brick grown by the ghost voxels the first
+  // frame reads: enough to agree on the statistics and the transfer function, which the split
+  // by visible voxels needs.
   const WholeGrid& grid = s->grid();
   s->split_ = splitBricks(VoxelWeights(grid.dims), s->size_);
   s->brick_ = s->split_.bricks[size_t(s->rank_)];
@@ -120,14 +124,8 @@ std::unique_ptr<DistributedSession> DistributedSession::open(const Options& opti
       frameGhostReach(grid, s->initialCamera_, options.render, options.width, options.height);
   s->ghost_ = ghostVoxels(reach, grid.spacing);
   const VoxelRegion region = grownRegion(s->brick_, s->ghost_, grid.dims);
-
-  Volume volume;
-  try {
-    if (!s->brick_.empty()) volume = s->source_->read(region);
-  } catch (const std::exception& e) {
-    error = e.what();
-  }
-  if (anyFailed(error, comm)) return nullptr;
+  if (!s->readVoxels(!s->brick_.empty(), region)) return nullptr;
+  const Volume& volume = s->volume_;
 
   // The whole volume's value range (every voxel lies in some rank's region) and histogram (of
   // each rank's own voxels, over that range), agreed on before anything is classified: splats
@@ -157,9 +155,7 @@ std::unique_ptr<DistributedSession> DistributedSession::open(const Options& opti
                 MPI_SUM, comm);
 
   try {
-    s->volume_ = std::move(volume);
-    s->region_ = region;
-    s->readRegion(region);  // the statistics and data box of the volume just read
+    s->finishBrick();  // the statistics and data box of the volume just read
     s->transferFunction_ = sceneTransferFunction(options, s->source_->sidecar(),
                                                  s->source_->ownTransferFunction(), s->volume_);
   } catch (const std::exception& e) {
@@ -176,14 +172,65 @@ std::unique_ptr<DistributedSession> DistributedSession::open(const Options& opti
                                 "than rank 0 (are the files the same on every node?)",
                 comm))
     return nullptr;
+  if (options.split == "visible" && s->size_ > 1 && !s->splitByVisibleVoxels(options))
+    return nullptr;
   return s;
 }
 
-bool DistributedSession::readRegion(const VoxelRegion& region) {
-  // open() hands the volume just read (region_ == region); later frames read anew.
-  if (!brick_.empty() && !(region.lo == region_.lo && region.hi == region_.hi && !volume_.empty()))
-    volume_ = source_->read(region);
-  region_ = region;
+bool DistributedSession::splitByVisibleVoxels(const Options& options) {
+  // Each rank counts its brick's voxels that become splats under the agreed transfer function
+  // per block of the whole; the sum over the ranks weighs the split, so that ranks which drew
+  // empty space take more of the visible part (VisIt #2596). Where nothing is visible it is the
+  // split by voxels.
+  const WholeGrid& grid = this->grid();
+  std::string error;
+  std::vector<double> weights;
+  try {
+    VoxelBox empty;
+    weights =
+        visibleBlockWeights(volume_, region_.lo, brick_.empty() ? empty : brick_, grid.dims,
+                            kVisibleBlock, transferFunction_, splatClassification(options.render));
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  if (anyFailed(error, comm_)) return false;
+  MPI_Allreduce(MPI_IN_PLACE, weights.data(), int(weights.size()), MPI_DOUBLE, MPI_SUM, comm_);
+  split_ = splitBricks(VoxelWeights(grid.dims, kVisibleBlock, weights), size_);
+  const VoxelBox brick = split_.bricks[size_t(rank_)];
+  const bool moved = !(brick == brick_);
+  brick_ = brick;
+  // Only the ranks whose brick moved read again (with the others where rank 0 sends them).
+  if (!readVoxels(moved && !brick_.empty(), grownRegion(brick_, ghost_, grid.dims))) return false;
+  if (moved) {
+    try {
+      finishBrick();
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  return !anyFailed(error, comm_);
+}
+
+bool DistributedSession::readVoxels(bool read, const VoxelRegion& region) {
+  // A scattered source sends the regions from rank 0: every rank takes part when any reads.
+  int any = read ? 1 : 0;
+  if (source_->scattered()) MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_LOR, comm_);
+  if (!any) return true;
+  std::string error;
+  try {
+    Volume v = source_->readShared(read ? region : VoxelRegion{}, comm_);
+    if (read) {
+      volume_ = std::move(v);
+      region_ = region;
+    }
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  return !anyFailed(error, comm_);
+}
+
+void DistributedSession::finishBrick() {
+  const VoxelRegion& region = region_;
   if (brick_.empty()) {
     // Nothing to draw; the statistics still make the transfer function every rank agrees on.
     volume_ = Volume({1, 1, 1}, grid().spacing, grid().origin, ScalarType::UInt8, {0});
@@ -201,7 +248,6 @@ bool DistributedSession::readRegion(const VoxelRegion& region) {
   }
   volume_.setIndexDataBox(box);
   volumeChanged_ = true;
-  return true;
 }
 
 bool DistributedSession::render(const Camera& camera, const RenderSettings& settings,
@@ -214,8 +260,10 @@ bool DistributedSession::render(const Camera& camera, const RenderSettings& sett
   // The ghosts this frame's kernels need; more than held: the brick is read again.
   ghost_ = ghostVoxels(frameGhostReach(grid(), camera, settings, w, h), grid().spacing);
   const VoxelRegion needed = grownRegion(brick_, ghost_, grid().dims);
+  const bool grow = !brick_.empty() && !contains(region_, needed);
+  if (!readVoxels(grow, needed)) return false;
   try {
-    if (!brick_.empty() && !contains(region_, needed)) readRegion(needed);
+    if (grow) finishBrick();
   } catch (const std::exception& e) {
     error = e.what();
   }

@@ -37,8 +37,9 @@ class DistributedSession {
   // Opens options' source on every rank of `comm`, splits the whole voxel box into one brick per
   // rank (k-d, by voxels), frames the camera on the whole volume and agrees on the value range,
   // histogram and transfer function (reading this rank's brick for them: the ghosts that the
-  // initial camera's frame needs). Collective. Returns null on every rank after one rank printed
-  // one line ("ewaview-mpi: rank R of P: ...").
+  // initial camera's frame needs); with options.split "visible", splits again balanced by the
+  // voxels visible under that transfer function and reads the bricks that moved. Collective.
+  // Returns null on every rank after one rank printed one line ("ewaview-mpi: rank R of P: ...").
   static std::unique_ptr<DistributedSession> open(const Options& options, MPI_Comm comm);
   ~DistributedSession();
   DistributedSession(const DistributedSession&) = delete;
@@ -75,8 +76,14 @@ class DistributedSession {
 
  private:
   DistributedSession(const Options& options, MPI_Comm comm);
-  // Reads `region` and gives it the whole's statistics and data box; false after one line.
-  bool readRegion(const VoxelRegion& region);
+  // Reads `region` into volume_ where `read` (collective where the source is scattered: rank 0
+  // sends the regions of every rank that reads). False on every rank after one line.
+  bool readVoxels(bool read, const VoxelRegion& region);
+  // Gives the brick volume just read the whole's statistics and data box.
+  void finishBrick();
+  // Splits again balanced by the voxels visible under the agreed transfer function and reads
+  // the bricks that moved. Collective; false on every rank after one line.
+  bool splitByVisibleVoxels(const Options& options);
 
   MPI_Comm comm_;
   int rank_ = 0, size_ = 1;

@@ -132,6 +132,14 @@ Volume loadByExtension(const std::string& path, const LoadOptions& options,
 
 }  // namespace
 
+bool mayHoldZarrLevels(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return true;
+  return isZarrPath(path) ||
+         (hasExtension(path, {".zarr"}) && std::filesystem::is_directory(path, ec)) ||
+         (!std::filesystem::is_directory(path, ec) && isArchiveName(path));
+}
+
 void overrideSpacing(const std::string& path, Volume& volume, const glm::dvec3& spacing) {
   const glm::dvec3 file = volume.spacing();
   try {

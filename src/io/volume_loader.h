@@ -71,6 +71,11 @@ void overrideSpacing(const std::string& path, Volume& volume, const glm::dvec3& 
 Volume loadVolume(const std::string& path, const LoadOptions& options = {},
                   ArchiveCache* archives = nullptr);
 
+// Whether LoadOptions::level (--level) can apply to what `path` names: an OME-Zarr image (a
+// folder, or its metadata file, as loadVolume opens one), an archive (it may hold one), or a
+// path that does not exist (loading says so). False for any other file or folder.
+bool mayHoldZarrLevels(const std::string& path);
+
 // Loads a headerless file laid out as `options` says. The file must hold at least the
 // voxels; extra trailing bytes are ignored. Throws LoadError.
 Volume loadRawVolume(const std::string& path, const RawOptions& options);

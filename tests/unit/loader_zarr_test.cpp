@@ -365,6 +365,43 @@ TEST(ZarrOptions, LevelAndDatasetReachTheLoadOptions) {
   EXPECT_EQ(parseCommandLine(4, negative, &o).exitCode, 2);
 }
 
+TEST(ZarrOptions, LevelOfAnythingButZarrIsAUsageErrorNamingTheFile) {
+  testing::TempDir scratch;
+  scratch.write("plain.nrrd", "NRRD0004\n");
+  std::filesystem::create_directories(scratch.path("img.zarr"));
+  scratch.write("img.zarr/.zattrs", "{}");
+  scratch.write("volume.zip", "PK");
+  auto parse = [](std::vector<std::string> words, std::string* err) {
+    words.insert(words.begin(), "ewaview");
+    std::vector<const char*> argv;
+    for (const std::string& w : words) argv.push_back(w.c_str());
+    Options o;
+    ::testing::internal::CaptureStderr();
+    const ParseResult r = parseCommandLine(int(argv.size()), argv.data(), &o);
+    *err = ::testing::internal::GetCapturedStderr();
+    return r;
+  };
+  std::string err;
+  const std::string plain = scratch.path("plain.nrrd");
+  EXPECT_EQ(parse({plain, "--level", "1"}, &err).exitCode, 2);
+  EXPECT_EQ(err, "ewaview: " + plain +
+                     ": --level 1 picks a level of an OME-Zarr pyramid, and this is not an "
+                     "OME-Zarr image (see --help)\n");
+  EXPECT_TRUE(parse({plain, "--level", "0"}, &err).run) << "full resolution, which every file has";
+  EXPECT_EQ(parse({"--synthetic", "sphere:8", "--level", "1"}, &err).exitCode, 2);
+  EXPECT_NE(err.find("not of --synthetic sphere:8"), std::string::npos) << err;
+  EXPECT_EQ(
+      parse({plain, "--raw-dims", "2,2,2", "--raw-type", "uint8", "--level", "1"}, &err).exitCode,
+      2);
+  EXPECT_EQ(parse({"--level", "1"}, &err).exitCode, 2);
+  EXPECT_NE(err.find("the default volume"), std::string::npos) << err;
+  // A Zarr folder, an archive (which may hold one) and a missing path (loading says so) pass.
+  EXPECT_TRUE(parse({scratch.path("img.zarr"), "--level", "1"}, &err).run) << err;
+  EXPECT_TRUE(parse({scratch.path("volume.zip"), "--level", "1"}, &err).run) << err;
+  EXPECT_TRUE(parse({scratch.path("none.nrrd"), "--level", "1"}, &err).run) << err;
+  EXPECT_TRUE(parse({plain}, &err).run) << err;
+}
+
 TEST_F(ZarrHandMade, FuzzSeedsAreArraysThatLoad) {
   // fuzz/zarr_fuzzer.cpp's input: the .zarray, then chunks 0.0.0 and 0.0.1.
   int seeds = 0;
