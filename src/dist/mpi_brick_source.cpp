@@ -83,6 +83,7 @@ class PlacementSource : public BrickSource {
 // OME-Zarr: the chunk files that overlap the brick.
 class ZarrSource : public BrickSource {
  public:
+  bool chunked() const override { return true; }
   ZarrSource(std::string path, const LoadOptions& load) : path_(std::move(path)), load_(load) {
     const RegionSourceShape shape = zarrShape(path_, load_.level);
     setGridFrom(read(kFirstVoxel), shape.dims, &grid_);
@@ -99,6 +100,7 @@ class ZarrSource : public BrickSource {
 // HDF5: one hyperslab, each rank opening the file alone.
 class Hdf5Source : public BrickSource {
  public:
+  bool chunked() const override { return true; }
   Hdf5Source(std::string path, std::string dataset)
       : path_(std::move(path)), dataset_(std::move(dataset)) {
     const RegionSourceShape shape = hdf5Shape(path_, dataset_);

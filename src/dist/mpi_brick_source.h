@@ -52,6 +52,10 @@ class BrickSource {
   const WholeGrid& grid() const { return grid_; }
   // Whether rank 0 holds the whole volume and sends the ranks their regions (readShared).
   virtual bool scattered() const { return false; }
+  // Whether the file is stored in chunks (OME-Zarr, HDF5), where a brick's ghost voxels would
+  // read the neighbours' chunks too: the ranks read their bricks alone and trade the ghosts
+  // (exchangeGhosts).
+  virtual bool chunked() const { return false; }
   // This rank's `region` (inside grid().dims; empty: none, and an empty volume back) as a
   // volume of its own, its origin at the region's first voxel, so its voxels sit where the whole
   // volume's do. Its value range and histogram are the region's own until the ranks agree on the
