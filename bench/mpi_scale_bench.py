@@ -53,10 +53,11 @@ def parse_args(argv):
                    help="also write every run's --stats line, one JSON object a line, with its "
                    "rank count, round and wall time")
     p.add_argument("--out", metavar="DIR", help="where the pictures go (a temporary folder)")
-    p.add_argument("extra", nargs=argparse.REMAINDER, help=argparse.SUPPRESS)
-    args = p.parse_args(argv)
-    if args.extra and args.extra[0] == "--":
-        args.extra = args.extra[1:]
+    # What follows "--" is ewaview-mpi's (argparse's REMAINDER would also take the options
+    # written after the volume).
+    extra = argv[argv.index("--") + 1:] if "--" in argv else []
+    args = p.parse_args(argv[:argv.index("--")] if "--" in argv else argv)
+    args.extra = extra
     try:
         args.ranks = [int(r) for r in args.ranks.split(",")]
     except ValueError:
