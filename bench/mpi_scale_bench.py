@@ -6,7 +6,7 @@ repeats N rounds (each round runs every P once, so a machine that slows down hit
 and prints, for each P, the median over the rounds of: the ranks' render times (least, median,
 greatest rank), the composite time, the bytes each rank sent in the composite (`bytes_sent` in
 --stats' bricks; "n/a" where --stats has none), the ranks' peak resident memory, the most voxels a
-rank read, and the wall time of the whole mpirun. --csv writes the same rows as CSV.
+rank read, and the wall time and CPU time (all ranks, user and system) of the whole mpirun. --csv writes the same rows as CSV.
 
 The memory run (a volume larger than one rank's address-space limit, 8 ranks under prlimit) is
 scripts/mpi_scale.sh; this program measures time against rank count on a volume every rank could
@@ -15,6 +15,7 @@ hold.
 import argparse
 import json
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -24,7 +25,7 @@ import time
 COLUMNS = [
     "ranks", "rounds", "render_ms_min", "render_ms_median", "render_ms_max", "composite_ms",
     "bytes_sent_min", "bytes_sent_median", "bytes_sent_max", "picture_bytes", "peak_rss_mib_min",
-    "peak_rss_mib_median", "peak_rss_mib_max", "voxels_read_max", "ghost", "wall_s"
+    "peak_rss_mib_median", "peak_rss_mib_max", "voxels_read_max", "ghost", "wall_s", "cpu_s"
 ]
 
 
@@ -68,26 +69,32 @@ def parse_args(argv):
 
 
 def run_once(args, ranks, out_dir):
-    """One mpirun; returns (the --stats object, wall seconds). Exits with its stderr on failure."""
+    """One mpirun; returns (the --stats object, wall seconds, CPU seconds of every process it
+    started). Exits with its stderr on failure."""
     source = ["--synthetic", args.synthetic] if args.synthetic else [args.volume]
     command = ([args.mpirun] + args.mpirun_args.split() + ["-np", str(ranks), args.binary] +
                source + ["--output", os.path.join(out_dir, f"scale_np{ranks}.png"),
                          "--resolution", args.resolution, "--termination", "1", "--stats"] +
                args.extra)
+    # The ranks' CPU time (user and system, all threads): the work done, which stays comparable
+    # where more ranks than cores share the machine and their wall times stretch.
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.monotonic()
     done = subprocess.run(command, capture_output=True, text=True)
     wall = time.monotonic() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     lines = [line for line in done.stdout.splitlines() if line.startswith("{")]
     if done.returncode != 0 or not lines:
         sys.exit(f"mpi_scale_bench: {' '.join(command)} failed (status {done.returncode}):\n"
                  f"{done.stderr.strip()}")
-    return json.loads(lines[-1]), wall
+    return json.loads(lines[-1]), wall, cpu
 
 
 def summarize(ranks, runs):
-    """The medians over rounds of each figure of one rank count; `runs`: (stats, wall) pairs."""
+    """The medians over rounds of each figure of one rank count; `runs`: (stats, wall, cpu)."""
     def median_of(f):
-        values = [f(s, w) for s, w in runs]
+        values = [f(s, w) for s, w, _ in runs]
         return None if any(v is None for v in values) else statistics.median(values)
 
     def over_ranks(s, key, pick):
@@ -104,6 +111,7 @@ def summarize(ranks, runs):
     row["voxels_read_max"] = median_of(lambda s, w: over_ranks(s, "voxels_read", max))
     row["ghost"] = "x".join(str(g) for g in runs[0][0]["ghost"])
     row["wall_s"] = median_of(lambda s, w: w)
+    row["cpu_s"] = statistics.median(c for _, _, c in runs)
     return row
 
 
@@ -118,14 +126,15 @@ def text(value, digits=1):
 def print_table(rows):
     print(f"{'P':>3} {'render ms min/med/max':>24} {'composite ms':>12} "
           f"{'bytes sent min/med/max':>26} {'peak MiB min/med/max':>22} {'voxels/rank':>12} "
-          f"{'wall s':>7}")
+          f"{'wall s':>7} {'CPU s':>6}")
     for r in rows:
         render = "/".join(text(r[f"render_ms_{s}"], 0) for s in ("min", "median", "max"))
         sent = ("n/a" if r["bytes_sent_max"] is None else
                 "/".join(text(r[f"bytes_sent_{s}"], 0) for s in ("min", "median", "max")))
         rss = "/".join(text(r[f"peak_rss_mib_{s}"], 0) for s in ("min", "median", "max"))
         print(f"{r['ranks']:>3} {render:>24} {text(r['composite_ms']):>12} {sent:>26} {rss:>22} "
-              f"{text(r['voxels_read_max'], 0):>12} {text(r['wall_s'], 2):>7}")
+              f"{text(r['voxels_read_max'], 0):>12} {text(r['wall_s'], 2):>7} "
+              f"{text(r['cpu_s'], 2):>6}")
 
 
 def main(argv):
@@ -136,13 +145,13 @@ def main(argv):
     runs = {p: [] for p in args.ranks}
     for round_index in range(args.repeats):
         for p in args.ranks:
-            stats, wall = run_once(args, p, out_dir)
-            runs[p].append((stats, wall))
+            stats, wall, cpu = run_once(args, p, out_dir)
+            runs[p].append((stats, wall, cpu))
             print(f"mpi_scale_bench: round {round_index + 1}/{args.repeats}, {p} ranks: "
                   f"{wall:.2f} s", file=sys.stderr)
             if raw:
                 raw.write(json.dumps({"ranks": p, "round": round_index + 1, "wall_s": wall,
-                                      "stats": stats}) + "\n")
+                                      "cpu_s": cpu, "stats": stats}) + "\n")
     if raw:
         raw.close()
     rows = [summarize(p, runs[p]) for p in args.ranks]
