@@ -2,7 +2,8 @@
 # Scale check for ewaview-mpi, not part of the test suite: writes a raw volume larger than one
 # rank's address-space limit (prlimit --as), renders it on RANKS ranks each under that limit,
 # and prints each rank's brick, render time, voxels read and peak memory, the composite time and
-# the bytes each rank hands to the composite.
+# the bytes each rank hands to the composite (and sends in it, where --stats has bytes_sent).
+# The time against rank count on a volume every rank holds is bench/mpi_scale_bench.py.
 # Usage: scripts/mpi_scale.sh [BUILD_DIR]
 #   env: DIMS=X,Y,Z (1024,1024,1152 uint8)  RANKS (8)  LIMIT_MB (per rank, 1024)  OUT (folder)
 set -euo pipefail
@@ -53,9 +54,11 @@ import json, sys
 s = json.loads(open(sys.argv[1]).read().strip().splitlines()[-1])
 print(f"ranks {s['ranks']}, picture {s['width']}x{s['height']}, ghost {s['ghost']}, "
       f"composite {s['composite_ms']:.1f} ms, {s['picture_bytes']} bytes a rank")
-print(f"{'rank':>4} {'brick low':>18} {'brick high':>18} {'render ms':>10} {'voxels read':>12} {'peak MiB':>9}")
+print(f"{'rank':>4} {'brick low':>18} {'brick high':>18} {'render ms':>10} {'voxels read':>12} "
+      f"{'peak MiB':>9} {'bytes sent':>11}")
 for b in s['bricks']:
+    sent = b.get('bytes_sent', 'n/a')  # where --stats has it
     print(f"{b['rank']:>4} {str(b['low']):>18} {str(b['high']):>18} {b['render_ms']:>10.1f} "
-          f"{b['voxels_read']:>12} {b['peak_rss_mb']:>9.1f}")
+          f"{b['voxels_read']:>12} {b['peak_rss_mb']:>9.1f} {sent:>11}")
 PY
 echo "mpi_scale: picture in $out/scale.png" >&2

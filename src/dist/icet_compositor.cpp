@@ -37,10 +37,12 @@ bool parseName(const std::pair<const char*, IceTEnum> (&table)[N], const std::st
   return false;
 }
 
-std::vector<float> reduce(const std::vector<float>& values, MPI_Comm comm, int root, MPI_Op op) {
+std::vector<float> reduce(const std::vector<float>& values, MPI_Comm comm, int root, MPI_Op op,
+                          std::int64_t* bytesSent) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   if (values.size() > size_t(INT_MAX)) throw std::invalid_argument("reduce: too many values");
+  if (bytesSent) *bytesSent = reductionBytesSent(values.size(), rank, root);
   std::vector<float> out(rank == root ? values.size() : 0);
   MPI_Reduce(values.data(), rank == root ? out.data() : nullptr, int(values.size()), MPI_FLOAT, op,
              root, comm);
@@ -113,6 +115,10 @@ std::vector<float> IceTCompositor::blend(const std::vector<float>& rgba, int wid
       icetCompositeImage(rgba.data(), nullptr, viewport, identity, identity, background);
   if (icetGetError() != ICET_NO_ERROR)
     throw std::runtime_error("IceT could not composite the pictures (see its message above)");
+  // icetCompositeImage resets the count when it starts, so this is the last blend's alone.
+  IceTInt sent = 0;
+  icetGetIntegerv(ICET_BYTES_SENT, &sent);
+  lastBytesSent_ = sent;
   if (rank_ != 0) return {};
   std::vector<float> out(rgba.size());
   if (icetImageIsNull(image) || icetImageGetNumPixels(image) != IceTSizeType(width) * height)
@@ -121,12 +127,18 @@ std::vector<float> IceTCompositor::blend(const std::vector<float>& rgba, int wid
   return out;
 }
 
-std::vector<float> reduceSum(const std::vector<float>& values, MPI_Comm comm, int root) {
-  return reduce(values, comm, root, MPI_SUM);
+std::int64_t reductionBytesSent(size_t count, int rank, int root) {
+  return rank == root ? 0 : std::int64_t(count * sizeof(float));
 }
 
-std::vector<float> reduceMax(const std::vector<float>& values, MPI_Comm comm, int root) {
-  return reduce(values, comm, root, MPI_MAX);
+std::vector<float> reduceSum(const std::vector<float>& values, MPI_Comm comm, int root,
+                             std::int64_t* bytesSent) {
+  return reduce(values, comm, root, MPI_SUM, bytesSent);
+}
+
+std::vector<float> reduceMax(const std::vector<float>& values, MPI_Comm comm, int root,
+                             std::int64_t* bytesSent) {
+  return reduce(values, comm, root, MPI_MAX, bytesSent);
 }
 
 }  // namespace ewa::dist

@@ -4,6 +4,7 @@
 
 #include <mpi.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,11 @@ class IceTCompositor {
   // std::runtime_error when IceT reports an error.
   std::vector<float> blend(const std::vector<float>& rgba, int width, int height,
                            const std::vector<int>& order);
+  // The bytes this rank sent to other ranks in the last blend (IceT's ICET_BYTES_SENT, which
+  // icetCompositeImage resets and counts): its share of the composite's traffic, compressed
+  // (IceT sends only runs of non-transparent pixels). 0 before the first blend; a few bytes (IceT's
+  // own messages) on one rank.
+  std::int64_t lastBytesSent() const { return lastBytesSent_; }
   int rank() const { return rank_; }
   int size() const { return size_; }
 
@@ -44,11 +50,21 @@ class IceTCompositor {
   void* communicator_ = nullptr;  // IceTCommunicator
   void* context_ = nullptr;       // IceTContext
   int tileWidth_ = 0, tileHeight_ = 0;
+  std::int64_t lastBytesSent_ = 0;
 };
 
 // Element-wise sum (X-ray's optical depths) or maximum (MIP) of every rank's `values` on rank
-// `root`; empty on the others. Collective; every rank passes as many values.
-std::vector<float> reduceSum(const std::vector<float>& values, MPI_Comm comm, int root = 0);
-std::vector<float> reduceMax(const std::vector<float>& values, MPI_Comm comm, int root = 0);
+// `root`; empty on the others. Collective; every rank passes as many values. `bytesSent`, when
+// given, gets the bytes this rank hands to the reduction to leave it (reductionBytesSent).
+std::vector<float> reduceSum(const std::vector<float>& values, MPI_Comm comm, int root = 0,
+                             std::int64_t* bytesSent = nullptr);
+std::vector<float> reduceMax(const std::vector<float>& values, MPI_Comm comm, int root = 0,
+                             std::int64_t* bytesSent = nullptr);
+
+// The bytes a rank hands over in reduceSum or reduceMax of `count` floats: all of them off the
+// root, none on it. MPI's binomial-tree reduction sends each non-root rank's partial result once
+// to its parent, so this is also what leaves the rank there; other MPI algorithms move about as
+// much in total, spread differently.
+std::int64_t reductionBytesSent(size_t count, int rank, int root);
 
 }  // namespace ewa::dist

@@ -19,9 +19,11 @@
 #include "dist/icet_compositor.h"
 #include "dist/mpi_brick_renderer.h"
 #include "dist/mpi_collective.h"
+#include "dist/mpi_local_rank.h"
 #include "dist/mpi_ghost_exchange.h"
 #include "dist/mpi_render.h"
 #include "dist/visibility_order.h"
+#include "platform/egl_device_choice.h"
 
 namespace ewa::dist {
 
@@ -92,6 +94,8 @@ DistributedSession::DistributedSession(const Options& options, MPI_Comm comm)
     : comm_(comm), backend_(options.backend), shaderDir_(options.shaderDir) {
   MPI_Comm_rank(comm, &rank_);
   MPI_Comm_size(comm, &size_);
+  // Where a node has several GPUs, each rank draws on the one its node-local rank picks.
+  platform::setEglLocalRank(nodeLocalRank(comm));
 }
 
 DistributedSession::~DistributedSession() = default;
@@ -396,10 +400,12 @@ bool DistributedSession::render(const Camera& camera, const RenderSettings& sett
     if (settings.mode == RenderMode::Composite) {
       if (!compositor_) compositor_ = std::make_unique<IceTCompositor>(comm_);
       *whole = compositor_->blend(picture, w, h, visibilityOrder(split_, view));
+      bytesSent = double(compositor_->lastBytesSent());
     } else {
-      *whole =
-          settings.mode == RenderMode::XRay ? reduceSum(picture, comm_) : reduceMax(picture, comm_);
-      if (rank_ != 0) bytesSent = double(picture.size() * sizeof(float));
+      int64_t bytes = 0;
+      *whole = settings.mode == RenderMode::XRay ? reduceSum(picture, comm_, 0, &bytes)
+                                                 : reduceMax(picture, comm_, 0, &bytes);
+      bytesSent = double(bytes);
     }
   } catch (const std::exception& e) {
     abortAll(e.what(), comm_);

@@ -6,8 +6,12 @@
 
 #include <cstdio>
 #include <cstring>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "platform/egl_device_choice.h"
 
 namespace ewa::platform {
 
@@ -68,10 +72,75 @@ struct Candidate {
   std::string label;
 };
 
+// The EGL devices (EGL_EXT_device_enumeration), none where the extension is missing.
+std::vector<EGLDeviceEXT> eglDevices(const char* client) {
+  if (!hasExtension(client, "EGL_EXT_platform_device") ||
+      !hasExtension(client, "EGL_EXT_device_enumeration"))
+    return {};
+  auto queryDevices =
+      reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+  EGLint count = 0;
+  if (!queryDevices || !queryDevices(0, nullptr, &count) || count <= 0) return {};
+  std::vector<EGLDeviceEXT> devices(static_cast<size_t>(count));
+  if (!queryDevices(count, devices.data(), &count)) return {};
+  devices.resize(static_cast<size_t>(count));
+  return devices;
+}
+
+// Whether each device is a software renderer: Mesa lists its llvmpipe device beside the GPUs,
+// and a rank given it by its local rank would draw on the CPU.
+std::vector<bool> softwareDevices(const std::vector<EGLDeviceEXT>& devices) {
+  auto queryString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
+      eglGetProcAddress("eglQueryDeviceStringEXT"));
+  std::vector<bool> software;
+  for (EGLDeviceEXT device : devices)
+    software.push_back(queryString && hasExtension(queryString(device, EGL_EXTENSIONS),
+                                                   "EGL_MESA_device_software"));
+  return software;
+}
+
+Candidate deviceCandidate(EGLDeviceEXT device, int index, std::vector<std::string>& reasons,
+                          bool& ok) {
+  std::string label = "EGL (device " + std::to_string(index) + ")";
+  EGLDisplay display = eglGetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
+  ok = display != EGL_NO_DISPLAY;
+  if (!ok) reasons.push_back(label + ": " + failed("eglGetPlatformDisplay"));
+  return {display, label};
+}
+
+// The displays to try, in order. EWAVIEW_EGL_DEVICE=N: device N alone (a device named by hand
+// that fails is an error, not a reason to draw elsewhere). A node-local rank set
+// (setEglLocalRank): its device (eglDeviceForLocalRank) first, then the usual order. Otherwise:
+// the surfaceless display, each device, the default display.
 std::vector<Candidate> candidateDisplays(std::vector<std::string>& reasons) {
   std::vector<Candidate> candidates;
   // EGL_NO_DISPLAY queries the client extensions (EGL_EXT_client_extensions).
   const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  const std::vector<EGLDeviceEXT> devices = eglDevices(client);
+  std::optional<int> named;
+  try {
+    named = eglDeviceFromEnvironment();
+  } catch (const std::invalid_argument& error) {
+    throw ContextError(std::string("EGL: ") + error.what());
+  }
+  if (named) {
+    if (*named >= int(devices.size()))
+      throw ContextError("EGL: EWAVIEW_EGL_DEVICE=" + std::to_string(*named) + " but " +
+                         (devices.empty()
+                              ? std::string("EGL lists no devices")
+                              : "EGL lists devices 0 to " + std::to_string(devices.size() - 1)));
+    bool ok = false;
+    Candidate candidate = deviceCandidate(devices[size_t(*named)], *named, reasons, ok);
+    if (ok) candidates.push_back(candidate);
+    return candidates;
+  }
+  int first = -1;
+  if (eglLocalRank() >= 0) first = eglDeviceForLocalRank(eglLocalRank(), softwareDevices(devices));
+  if (first >= 0) {
+    bool ok = false;
+    Candidate candidate = deviceCandidate(devices[size_t(first)], first, reasons, ok);
+    if (ok) candidates.push_back(candidate);
+  }
   if (hasExtension(client, "EGL_MESA_platform_surfaceless")) {
     EGLDisplay display =
         eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
@@ -80,23 +149,11 @@ std::vector<Candidate> candidateDisplays(std::vector<std::string>& reasons) {
     else
       reasons.push_back("surfaceless: " + failed("eglGetPlatformDisplay"));
   }
-  if (hasExtension(client, "EGL_EXT_platform_device") &&
-      hasExtension(client, "EGL_EXT_device_enumeration")) {
-    auto queryDevices =
-        reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
-    EGLint count = 0;
-    if (queryDevices && queryDevices(0, nullptr, &count) && count > 0) {
-      std::vector<EGLDeviceEXT> devices(static_cast<size_t>(count));
-      queryDevices(count, devices.data(), &count);
-      for (EGLint i = 0; i < count; ++i) {
-        std::string label = "EGL (device " + std::to_string(i) + ")";
-        EGLDisplay display = eglGetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
-        if (display != EGL_NO_DISPLAY)
-          candidates.push_back({display, label});
-        else
-          reasons.push_back(label + ": " + failed("eglGetPlatformDisplay"));
-      }
-    }
+  for (int i = 0; i < int(devices.size()); ++i) {
+    if (i == first) continue;
+    bool ok = false;
+    Candidate candidate = deviceCandidate(devices[size_t(i)], i, reasons, ok);
+    if (ok) candidates.push_back(candidate);
   }
   EGLDisplay display = eglGetDisplay(EGL_DEFAULT_DISPLAY);
   if (display != EGL_NO_DISPLAY)

@@ -9,9 +9,11 @@ class EglContext final : public GlContext {
  public:
   // Tries, in order, the displays of EGL_MESA_platform_surfaceless, of each EGL_EXT_platform_device
   // device, then eglGetDisplay(EGL_DEFAULT_DISPLAY), and keeps the first that gives an OpenGL 4.5
-  // core context. The context has no surface (EGL_KHR_surfaceless_context): render into FBOs.
-  // Only on displays without that extension does it fall back to a width x height pbuffer.
-  // Leaves the context current. Throws ContextError saying why each display failed.
+  // core context. EWAVIEW_EGL_DEVICE=N tries device N alone; a node-local rank set with
+  // setEglLocalRank (egl_device_choice.h) puts that rank's device first. The context has no surface
+  // (EGL_KHR_surfaceless_context): render into FBOs. Only on displays without that extension does
+  // it fall back to a width x height pbuffer. Leaves the context current. Throws ContextError
+  // saying why each display failed.
   EglContext(int width = 16, int height = 16);
   ~EglContext() override;
 

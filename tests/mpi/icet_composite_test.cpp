@@ -1,10 +1,12 @@
 // IceT's ordered float composite (IceTCompositor) against a serial front-to-back blend of every
 // rank's picture, to 2e-7, for each ordering strategy and single-image strategy; split and
-// vtree refused; X-ray sums and MIP maxima by reduction. Run under mpirun; exit 0 when all hold.
+// vtree refused; X-ray sums and MIP maxima by reduction; the bytes each rank sends. Run under
+// mpirun; exit 0 when all hold.
 #include <mpi.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <numeric>
 #include <random>
@@ -76,6 +78,16 @@ int main(int argc, char** argv) {
       for (int round = 0; round < 2; ++round) {
         const std::vector<float> blended =
             compositor.blend(all[size_t(rank)], width, height, order);
+        // Bytes sent: a few of IceT's own messages on one rank; from 2 ranks on some rank sends
+        // (an empty picture compresses to a header), none more than a few whole pictures (binary
+        // swap and the gather to the root move about one).
+        const long long sent = compositor.lastBytesSent(), picture = (long long)(all[0].size() * 4);
+        long long total = 0;
+        MPI_Allreduce(&sent, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+        check(sent >= 0 && sent <= 4 * picture,
+              std::string(s) + "/" + single + ": bytes sent " + std::to_string(sent));
+        check(size == 1 ? total < 64 : total > 0,
+              std::string(s) + "/" + single + ": bytes sent by all " + std::to_string(total));
         if (rank != 0) {
           check(blended.empty(), std::string(s) + "/" + single + ": a picture off the root");
           continue;
@@ -105,8 +117,12 @@ int main(int argc, char** argv) {
   // X-ray: optical depths add; MIP: the largest value, whatever the order.
   std::vector<float> mine(all[size_t(rank)].size());
   for (size_t i = 0; i < mine.size(); ++i) mine[i] = all[size_t(rank)][i] * float(rank + 1);
-  const std::vector<float> sum = ewa::dist::reduceSum(mine, MPI_COMM_WORLD);
-  const std::vector<float> max = ewa::dist::reduceMax(mine, MPI_COMM_WORLD);
+  std::int64_t sumBytes = -1, maxBytes = -1;
+  const std::vector<float> sum = ewa::dist::reduceSum(mine, MPI_COMM_WORLD, 0, &sumBytes);
+  const std::vector<float> max = ewa::dist::reduceMax(mine, MPI_COMM_WORLD, 0, &maxBytes);
+  const std::int64_t handed = rank == 0 ? 0 : std::int64_t(mine.size() * sizeof(float));
+  check(sumBytes == handed && maxBytes == handed,
+        "reductions' bytes sent " + std::to_string(sumBytes) + ", " + std::to_string(maxBytes));
   if (rank == 0) {
     double worstSum = 0.0, worstMax = 0.0;
     for (size_t i = 0; i < mine.size(); ++i) {

@@ -17,6 +17,7 @@
 #include "gl/shader_library.h"
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
+#include "platform/egl_device_choice.h"
 #include "platform/glfw_window_context.h"
 #include "platform/headless_context.h"
 
@@ -302,6 +303,36 @@ TEST(HeadlessContexts, OsMesaAndEglInOneProcess) {
   expectTestFill(renderTestFill());
   egl->makeCurrent();
   expectTestFill(renderTestFill());
+}
+
+// EWAVIEW_EGL_DEVICE=N draws on device N alone; a device EGL does not list is one line naming
+// the variable. A local rank (setEglLocalRank) puts its device first.
+TEST(HeadlessContexts, EglDeviceByIndexAndByLocalRank) {
+  std::string skipReason;
+  ::setenv("EWAVIEW_EGL_DEVICE", "0", 1);
+  auto first = makeContext(HeadlessBackend::Egl, skipReason);
+  if (!first) {
+    ::unsetenv("EWAVIEW_EGL_DEVICE");
+    EWA_SKIP_UNLESS_CI() << skipReason;
+  }
+  EXPECT_EQ(first->backendName(), "EGL (device 0)");
+  expectTestFill(renderTestFill());
+  first.reset();
+  ::setenv("EWAVIEW_EGL_DEVICE", "4096", 1);
+  try {
+    platform::createHeadlessContext(HeadlessBackend::Egl, kWidth, kHeight);
+    ADD_FAILURE() << "device 4096 accepted";
+  } catch (const ContextError& error) {
+    const std::string message = error.what();
+    EXPECT_TRUE(contains(message, "EWAVIEW_EGL_DEVICE=4096")) << message;
+    EXPECT_FALSE(contains(message, "\n")) << message;
+  }
+  ::unsetenv("EWAVIEW_EGL_DEVICE");
+  platform::setEglLocalRank(3);
+  auto ranked = platform::createHeadlessContext(HeadlessBackend::Egl, kWidth, kHeight);
+  EXPECT_TRUE(contains(ranked->backendName(), "EGL (device ")) << ranked->backendName();
+  expectTestFill(renderTestFill());
+  platform::setEglLocalRank(-1);
 }
 
 TEST(HeadlessContexts, ParsesBackendNames) {
