@@ -1,10 +1,10 @@
 // nodeLocalRank under mpirun on one node: every rank's local rank is its rank, in MPI_COMM_WORLD
 // and in a communicator split by parity; exit 0 when all hold.
-#include "dist/mpi_local_rank.h"
-
 #include <mpi.h>
 
 #include <cstdio>
+
+#include "dist/mpi_local_rank.h"
 
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
