@@ -112,7 +112,6 @@ uint8_t toByte(double v) {
 }  // namespace
 
 std::string distributedUsageProblem(const Options& o) {
-  if (o.output.empty()) return "--output FILE.png is needed: ewaview-mpi renders headless";
   if (o.turntable > 0 || o.tour > 0) return "--turntable and --tour are not distributed yet";
   if (o.info || o.pick || !o.saveVolume.empty())
     return "--info, --pick and --save-volume need no ranks: use ewaview";
