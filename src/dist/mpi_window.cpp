@@ -154,7 +154,8 @@ int runDistributedWindow(const Options& options, int argc, char** argv, MPI_Comm
     status = script && *script ? runScript(script, argc, argv, *session, link)
                                : runWindow(options, *session, link);
   } catch (const std::exception& e) {
-    std::cerr << "ewaview-mpi: " << oneLine(e.what()) << std::endl;
+    // A failed frame was told by its rank already.
+    if (!link->failed()) std::cerr << "ewaview-mpi: " << oneLine(e.what()) << std::endl;
     status = 1;
   }
   if (link->failed()) return 1;  // the other ranks left their loop with the failed frame

@@ -140,7 +140,12 @@ void DistributedRenderer::render(const Camera& camera, const RenderSettings& set
   // window's context and functions again.
   if (window_) window_->makeCurrent();
   if (!drawn) {
-    if (!wasFailed && onFailure_) onFailure_();
+    // The failing rank said why in one line; the window closes with the last picture on it
+    // rather than adding a line of its own.
+    if (onFailure_) {
+      if (!wasFailed) onFailure_();
+      return;
+    }
     throw std::runtime_error("the ranks stopped after a failed frame");
   }
   image_ = finishPicture(picture, width, height, settings);

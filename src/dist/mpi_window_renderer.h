@@ -69,7 +69,8 @@ class DistributedRenderer : public Renderer {
 
   void setVolume(const Volume& /*volume*/) override {}
   void setTransferFunction(const TransferFunction& tf) override { tf_ = tf; }
-  // Throws after a failed frame (and for every frame after it).
+  // After a failed frame (and for every frame after it): calls onFailure once and keeps the
+  // last picture, or throws where there is no onFailure.
   void render(const Camera& camera, const RenderSettings& settings, int width, int height) override;
   Image8 readImage() const override { return image_; }
   unsigned outputTexture() const override { return texture_.id(); }
