@@ -101,7 +101,8 @@ int runWindow(const Options& options, DistributedSession& session,
   };
   config.statisticsLines = [link] { return link->statisticsLines(); };
   LoadedVolume initial;
-  initial.volume = std::make_shared<Volume>(standInVolume(session, kStandInVoxels));
+  initial.volume =
+      std::make_shared<Volume>(standInVolume(session.source(), session.volume(), kStandInVoxels));
   initial.tf = session.transferFunction();
   initial.name = session.name();
   if (options.synthetic.empty()) initial.path = std::filesystem::absolute(options.file).string();
@@ -110,14 +111,14 @@ int runWindow(const Options& options, DistributedSession& session,
 
 }  // namespace
 
-Volume standInVolume(DistributedSession& session, int64_t maxVoxels) {
-  const WholeGrid& g = session.grid();
+Volume standInVolume(BrickSource& source, const Volume& statistics, int64_t maxVoxels) {
+  const WholeGrid& g = source.grid();
   const int64_t count = g.dims[0] * g.dims[1] * g.dims[2];
   int factor = 1;
   while (count / (int64_t(factor) * factor * factor) > maxVoxels) factor *= 2;
   Volume stand;
   if (factor == 1) {
-    stand = session.source().read(VoxelRegion{{0, 0, 0}, g.dims});
+    stand = source.read(VoxelRegion{{0, 0, 0}, g.dims});
   } else {
     // A slab of `layers` z-layers at a time, averaged down to one layer of the stand-in.
     const int64_t layers = downsampleAxisFactor(g.dims[2], factor);
@@ -125,7 +126,7 @@ Volume standInVolume(DistributedSession& session, int64_t maxVoxels) {
     Volume first;
     for (int64_t z = 0; z < g.dims[2]; z += layers) {
       Volume slab =
-          downsampleVolume(session.source().read(VoxelRegion{
+          downsampleVolume(source.read(VoxelRegion{
                                {0, 0, z}, {g.dims[0], g.dims[1], std::min(z + layers, g.dims[2])}}),
                            factor);
       bytes.insert(bytes.end(), slab.bytes().begin(), slab.bytes().end());
@@ -138,8 +139,7 @@ Volume standInVolume(DistributedSession& session, int64_t maxVoxels) {
     stand = Volume(dims, spacing, first.origin(), first.type(), std::move(bytes));
   }
   stand.setDirection(g.direction, g.patientFrame);
-  const Volume& brick = session.volume();  // carries the agreed statistics
-  stand.setValueStatistics(brick.minValue(), brick.maxValue(), brick.histogram());
+  stand.setValueStatistics(statistics.minValue(), statistics.maxValue(), statistics.histogram());
   return stand;
 }
 

@@ -8,7 +8,7 @@
 
 namespace ewa::dist {
 
-class DistributedSession;
+class BrickSource;
 
 // Opens the session on every rank of `comm`; rank 0 opens the window over a stand-in of the
 // whole volume and sends each frame the window draws to the others, which draw their bricks
@@ -22,7 +22,8 @@ int runDistributedWindow(const Options& options, int argc, char** argv, MPI_Comm
 // drawing (the transfer-function editor's histogram, the crop box's bounds, the probe): the
 // whole volume read from the source where it has at most `maxVoxels` voxels, else the volume
 // averaged down by the least power of 2 that fits (read a slab of that many z-layers at a time),
-// with the whole's world bounds; either way with the ranks' agreed value range and histogram.
-Volume standInVolume(DistributedSession& session, int64_t maxVoxels);
+// with the whole's world bounds; either way with the value range and histogram of `statistics`
+// (a brick carrying the ranks' agreed ones).
+Volume standInVolume(BrickSource& source, const Volume& statistics, int64_t maxVoxels);
 
 }  // namespace ewa::dist
