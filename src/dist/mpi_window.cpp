@@ -106,7 +106,10 @@ int runWindow(const Options& options, DistributedSession& session,
   initial.tf = session.transferFunction();
   initial.name = session.name();
   if (options.synthetic.empty()) initial.path = std::filesystem::absolute(options.file).string();
-  return runViewer(std::move(initial), config);
+  const int status = runViewer(std::move(initial), config);
+  // The brick's hidden window keeps GLFW until the session ends; no new one is made after.
+  BrickRenderer::setContextFactory(nullptr);
+  return status;
 }
 
 }  // namespace

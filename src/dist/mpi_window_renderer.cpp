@@ -164,7 +164,6 @@ void DistributedRenderer::render(const Camera& camera, const RenderSettings& set
         out[4 * x + 3] = 255;
       }
     }
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     texture_.subImage2D(0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   }
   stats_ = RenderStats{};
