@@ -11,8 +11,8 @@
 #include "app/pick_output.h"
 #include "app/scene.h"
 #include "app/turntable.h"
+#include "app/window_config.h"
 #include "io/archive_cache.h"
-#include "io/viewer_settings.h"
 #include "io/volume_writer.h"
 #include "ui/viewer.h"
 
@@ -22,54 +22,14 @@ namespace {
 // chosen in the window (the same loaders and transfer-function rules as the command line).
 int runWindow(ewa::Scene scene, const ewa::Options& options) {
   ewa::ViewerConfig config;
-  config.configDir = options.configDir.empty() ? ewa::defaultConfigDir() : options.configDir;
-  if (!config.configDir.empty()) {
-    try {
-      config.saved = ewa::loadViewerSettings(ewa::settingsPathIn(config.configDir));
-    } catch (const std::exception& e) {
-      std::cerr << "ewaview: " << e.what() << " (using defaults)\n";
-    }
-  }
-  ewa::Options o = options;
-  if (!o.resolutionGiven) {
-    o.width = config.saved.windowWidth;
-    o.height = config.saved.windowHeight;
-  }
-  if (!o.renderOptionsGiven) {
-    o.render.filter = config.saved.filter;
-    ewa::parseRenderMode(config.saved.renderMode, &o.render.mode);
-    o.render.cutoff = config.saved.cutoff;
-    o.render.depthCutoff = config.saved.depthCutoff;
-    o.render.kernelWidth = config.saved.kernelWidth;
-    if (o.render.classification.surface == ewa::SurfaceCriterion::None)
-      ewa::parseClassificationMode(config.saved.classification, &o.render.classification.mode);
-    o.render.slabPreintegration = config.saved.slabPreintegration;
-    o.render.slabSamples = config.saved.slabSamples;
-    o.render.classification.prefilter = config.saved.prefilter;
-    ewa::parsePostNormals(config.saved.postNormals, &o.render.postNormals);
-    o.render.slabThickness = config.saved.slabThickness;
-    o.render.coarseSlabs = config.saved.coarseSlabs;
-    o.render.background = config.saved.background;
-  }
-  // The last session's crop box and planes, when it showed this volume and none are given.
   const std::string clipKey =
       options.synthetic.empty()
           ? std::filesystem::absolute(options.file.empty() ? ewa::defaultVolumePath()
                                                            : options.file)
                 .string()
           : "synthetic:" + scene.name;
-  if (o.render.clip == ewa::ClipRegion{} && config.saved.clipVolume == clipKey)
-    o.render.clip = config.saved.clip;
-  if (o.axes) config.saved.axes = true;
-  if (!o.tfFile.empty())
-    config.saved.lastTransferFunction = std::filesystem::absolute(o.tfFile).string();
-  config.width = o.width;
-  config.height = o.height;
+  const ewa::Options o = ewa::windowConfig(options, clipKey, &config);
   config.camera = ewa::initialCamera(scene.volume, o);
-  config.settings = o.render;
-  config.shaderDir = o.shaderDir;
-  config.recordCameraPath = o.recordCameraPath;
-  config.watch = o.watch;
   // Every file the window opens shares `o.archives` (set in main), so the last archive stays
   // unpacked while its frames and series are paged.
   config.opener = [base = o](const std::string& path, const ewa::LoadOptions& load) {

@@ -9,8 +9,23 @@
 
 namespace ewa::dist {
 
+namespace {
+
+BrickRenderer::ContextFactory& contextFactory() {
+  static BrickRenderer::ContextFactory factory;
+  return factory;
+}
+
+}  // namespace
+
+void BrickRenderer::setContextFactory(ContextFactory factory) {
+  contextFactory() = std::move(factory);
+}
+
 BrickRenderer::BrickRenderer(const std::string& backend, const std::string& shaderDir)
-    : context_(platform::createHeadlessContext(platform::parseHeadlessBackend(backend))),
+    : context_(contextFactory()
+                   ? contextFactory()()
+                   : platform::createHeadlessContext(platform::parseHeadlessBackend(backend))),
       shaders_(shaderDir) {
   context_->makeCurrent();
   renderer_ = createRenderer(RendererKind::Splat, shaders_);

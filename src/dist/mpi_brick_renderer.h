@@ -1,6 +1,7 @@
 // BrickRenderer: one rank's splat renderer on its own headless context, kept across frames.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -21,6 +22,12 @@ class BrickRenderer {
   // A headless context of `backend` ("auto", "egl", "osmesa") and the splat renderer on it.
   // Throws when either cannot be made.
   BrickRenderer(const std::string& backend, const std::string& shaderDir);
+  // Where BrickRenderers made after this call get their context instead (null: headless ones):
+  // the window's rank makes its brick's a hidden window of the window's GL, since an OSMesa
+  // context beside a GLX window does not load every GL 4.5 function, and an EGL one may not be
+  // made current beside it.
+  using ContextFactory = std::function<std::unique_ptr<platform::GlContext>()>;
+  static void setContextFactory(ContextFactory factory);
   ~BrickRenderer();
   BrickRenderer(const BrickRenderer&) = delete;
   BrickRenderer& operator=(const BrickRenderer&) = delete;

@@ -1,4 +1,5 @@
-// ewaview-mpi entry point: mpirun -np P ewaview-mpi FILE --output out.png [ewaview's options].
+// ewaview-mpi entry point: mpirun -np P ewaview-mpi FILE [--output out.png] [ewaview's options];
+// without --output the window opens on rank 0.
 #include <mpi.h>
 
 #include <iostream>
@@ -6,6 +7,7 @@
 
 #include "app/options.h"
 #include "dist/mpi_render.h"
+#include "dist/mpi_window.h"
 
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
@@ -31,6 +33,8 @@ int main(int argc, char** argv) {
     if (const std::string problem = ewa::dist::distributedUsageProblem(options); !problem.empty()) {
       if (rank == 0) std::cerr << "ewaview-mpi: " << problem << std::endl;
       status = 2;
+    } else if (options.output.empty()) {
+      status = ewa::dist::runDistributedWindow(options, argc, argv, MPI_COMM_WORLD);
     } else {
       status = ewa::dist::renderDistributed(options, MPI_COMM_WORLD);
     }

@@ -115,7 +115,6 @@ uint8_t toByte(double v) {
 }  // namespace
 
 std::string distributedUsageProblem(const Options& o) {
-  if (o.output.empty()) return "--output FILE.png is needed: ewaview-mpi renders headless";
   if (o.info || o.pick || !o.saveVolume.empty())
     return "--info, --pick and --save-volume need no ranks: use ewaview";
   if (o.overlay) return "--channel all (or a list) is not distributed yet: give one channel";

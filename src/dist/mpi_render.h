@@ -21,7 +21,8 @@
 namespace ewa::dist {
 
 // Why these options cannot be drawn by ewaview-mpi (one line), or "" when they can: one picture,
-// a turntable or a tour (--output) of one channel by the splat renderer.
+// a turntable or a tour (--output), or the window (without it), of one channel by the splat
+// renderer.
 std::string distributedUsageProblem(const Options& options);
 
 // The picture the splat renderer's final pass makes of `picture` (readFramePicture: bottom row

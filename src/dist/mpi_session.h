@@ -59,6 +59,8 @@ class DistributedSession {
   const std::array<int64_t, 3>& ghost() const { return ghost_; }
   // This rank's brick volume: its voxels and ghosts, the whole's statistics and data box.
   const Volume& volume() const { return volume_; }
+  // Where the bricks are read from (the window's rank reads its stand-in for the whole there).
+  BrickSource& source() { return *source_; }
 
   // One frame of `width` x `height`: every rank draws its brick cut at its faces under the same
   // camera, settings and transfer function (the same arguments on every rank), the pictures are

@@ -282,6 +282,7 @@ void ControlPanel::drawStats(const FrameStats& stats) {
     ImGui::Text("image %d x %d, coarse level %d", stats.imageWidth, stats.imageHeight,
                 stats.lodLevel);
   ImGui::Text("GPU memory %.1f MiB (renderers)", double(stats.gpuBytes) / (1024.0 * 1024.0));
+  for (const std::string& line : stats.extraLines) ImGui::TextUnformatted(line.c_str());
   if (stats.gpuMemory)
     ImGui::Text("GPU %.0f of %.0f MiB free", double(stats.gpuMemory->availableKiB) / 1024.0,
                 double(stats.gpuMemory->totalKiB) / 1024.0);

@@ -26,8 +26,9 @@ struct FrameStats {
   int lodLevel = 0;     // LodPolicy level of the image shown (0: full quality)
   size_t gpuBytes = 0;  // buffers and images the renderers hold
   std::optional<gl::GpuMemoryInfo> gpuMemory;  // driver figures, when it reports them
-  double refineProgress = -1.0;  // the full-quality frame being refined (0..1); < 0: none
-  RefinementReport refinement;   // the last finished refinement
+  double refineProgress = -1.0;         // the full-quality frame being refined (0..1); < 0: none
+  RefinementReport refinement;          // the last finished refinement
+  std::vector<std::string> extraLines;  // ViewerConfig::statisticsLines of the last picture
 };
 
 // A thin progress bar along the window's bottom edge, with "refining NN%", while the

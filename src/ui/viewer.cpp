@@ -59,8 +59,7 @@ ViewerWindow::ViewerWindow(platform::GlfwWindowContext& window, LoadedVolume ini
       saved_(config.saved),
       shaders_(config.shaderDir),
       uploadContext_(window.createUploadContext()),
-      lod_([this] { return createRenderer(settings_.renderer, shaders_, &splatPrograms_); },
-           uploadContext_.get()),
+      lod_([this] { return makeRenderer(); }, uploadContext_.get()),
       refinement_(refineBudgetMs(), kRefineFrameTargetMs),
       controller_(config.camera),
       settings_(config.settings),
@@ -84,7 +83,8 @@ ViewerWindow::ViewerWindow(platform::GlfwWindowContext& window, LoadedVolume ini
   axes_ = saved_.axes;
   watchFile_ = config.watch;
   hasNvx_ = gl::queryGpuMemory().has_value();
-  if (initial.coarse.levels.empty()) initial.coarse = buildLodVolumes(*initial.volume);
+  if (initial.coarse.levels.empty() && !config_.rendererFactory)
+    initial.coarse = buildLodVolumes(*initial.volume);
   adopt(std::move(initial), /*newCamera=*/false);
   // The worker classifies the full level while this thread makes the renderers ready and draws
   // the first picture.
@@ -221,6 +221,7 @@ void ViewerWindow::noteFrameStats(int level) {
   frameStats_.imageHeight = lod_.imageHeight();
   frameStats_.lodLevel = level;
   frameStats_.gpuBytes = lod_.gpuBytes();
+  if (config_.statisticsLines) frameStats_.extraLines = config_.statisticsLines();
   if (hasNvx_) frameStats_.gpuMemory = gl::queryGpuMemory();
 }
 

@@ -1,7 +1,10 @@
 // runViewer: the interactive window that shows a volume with the splat or shear-warp renderer.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "core/camera.h"
 #include "io/viewer_settings.h"
@@ -9,6 +12,10 @@
 #include "ui/volume_loading.h"
 
 namespace ewa {
+
+namespace platform {
+class GlContext;
+}
 
 struct ViewerConfig {
   int width = 1024, height = 768;  // window size
@@ -23,6 +30,16 @@ struct ViewerConfig {
   VolumeOpener opener;           // opens files from the dialog, drops and recent files
   std::string recordCameraPath;  // non-empty: every camera drawn is written here on exit
   bool watch = false;            // reload the volume whenever its file changes (--watch)
+  // Makes every level's renderer in place of settings.renderer's, given the window's context
+  // (ewaview-mpi's window: each frame drawn by every rank); null: the built-in renderers. With
+  // it the moving levels only shrink the image (no coarse volumes are made: their renderers
+  // would draw the same bricks) and the renderer kind stays the splat renderer.
+  std::function<std::unique_ptr<Renderer>(platform::GlContext& window)> rendererFactory;
+  // Non-empty: why no other file can be opened, nor this one reloaded or saved, from the window
+  // (shown when asked; the volume on screen is a stand-in for one the window does not hold).
+  std::string fixedVolume;
+  // Lines the statistics section shows after its own (the ranks' figures of the last frame).
+  std::function<std::vector<std::string>()> statisticsLines;
 };
 
 // Opens a window, renders `initial` with settings.renderer (switchable in the panel) and runs

@@ -73,6 +73,10 @@ void ViewerWindow::adopt(LoadedVolume loaded, bool newCamera) {
 }
 
 bool ViewerWindow::startLoad(const std::string& path, const LoadOptions& load, bool keepView) {
+  if (!config_.fixedVolume.empty()) {
+    error(config_.fixedVolume);
+    return false;
+  }
   if (loadJob_.running()) {
     error("still loading " + loadJob_.path() + "; try again when it is done");
     return false;
@@ -210,12 +214,22 @@ void ViewerWindow::pollLoad() {
 // Every level's renderer is of the kind settings_.renderer names (the panel switches it).
 LodRenderer::Factory ViewerWindow::rendererFactory() {
   rendererKind_ = settings_.renderer;
-  return [this] { return createRenderer(settings_.renderer, shaders_, &splatPrograms_); };
+  return [this] { return makeRenderer(); };
+}
+
+std::unique_ptr<Renderer> ViewerWindow::makeRenderer() {
+  if (config_.rendererFactory) return config_.rendererFactory(window_);
+  return createRenderer(settings_.renderer, shaders_, &splatPrograms_);
 }
 
 // A new set of renderers when the panel switched the renderer kind.
 void ViewerWindow::switchRendererIfAsked() {
   if (settings_.renderer == rendererKind_) return;
+  if (config_.rendererFactory) {  // its renderers draw splats whatever the kind
+    settings_.renderer = rendererKind_;
+    error("only the splat renderer is drawn here");
+    return;
+  }
   liveTf_.dropBuild();
   lod_ = LodRenderer(rendererFactory(), uploadContext_.get());
   lod_.setVolume(*current_.volume, current_.coarse);
@@ -252,6 +266,10 @@ void ViewerWindow::openDialog() {
 // and a TIFF file's or a folder of TIFF slices' as NAME.tif, the format its users have.
 void ViewerWindow::saveDialog() {
   namespace fs = std::filesystem;
+  if (!config_.fixedVolume.empty()) {
+    error(config_.fixedVolume);
+    return;
+  }
   const Volume& v = *current_.volume;
   std::string name =
       current_.path.empty() ? current_.name : fs::path(current_.path).stem().string();

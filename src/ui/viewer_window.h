@@ -131,6 +131,8 @@ class ViewerWindow {
   void respace(const glm::dvec3& spacing);
   void pollLoad();
   LodRenderer::Factory rendererFactory();
+  // One level's renderer: ViewerConfig::rendererFactory's, else settings_.renderer's kind.
+  std::unique_ptr<Renderer> makeRenderer();
   void switchRendererIfAsked();
   bool takeBuiltSplats();
   void openDialog();

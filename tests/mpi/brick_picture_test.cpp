@@ -11,8 +11,10 @@
 #include "app/options.h"
 #include "app/scene.h"
 #include "core/synthetic_volume.h"
+#include "core/volume_downsample.h"
 #include "dist/mpi_brick_source.h"
 #include "dist/mpi_render.h"
+#include "dist/mpi_window.h"
 
 namespace ewa::dist {
 namespace {
@@ -102,6 +104,34 @@ TEST(BrickPicture, ObliquePreClassifiedPerspectiveAndOrthographic) {
 
 TEST(BrickPicture, ObliquePostClassifiedClose) {
   expectBricksDrawTheWholeCut(kVolume + " --camera-position 45,-20,55", 2);
+}
+
+// The window's stand-in for the whole volume: the whole itself where it fits, else averaged
+// down by a power of 2 a slab of z-layers at a time, as downsampleVolume does the whole; either
+// way with the statistics it is given and the whole's direction.
+TEST(StandInVolume, TheWholeOrItsAverageWithTheGivenStatistics) {
+  const Options o = parse(kVolume);
+  std::unique_ptr<BrickSource> source = BrickSource::open(o);
+  const Volume whole = makeSyntheticVolume(o.synthetic).volume;
+  Volume statistics = whole;
+  std::vector<uint64_t> histogram(size_t(Volume::histogramBins()), 7);
+  statistics.setValueStatistics(-1.0, 2.0, histogram);
+
+  const Volume same = standInVolume(*source, statistics, whole.voxelCount());
+  EXPECT_EQ(same.dims(), whole.dims());
+  EXPECT_EQ(same.bytes(), whole.bytes());
+  EXPECT_EQ(same.minValue(), -1.0);
+  EXPECT_EQ(same.maxValue(), 2.0);
+  EXPECT_EQ(same.histogram(), histogram);
+
+  const Volume coarse = standInVolume(*source, statistics, whole.voxelCount() / 8);
+  const Volume expected = downsampleVolume(whole, 2);
+  ASSERT_EQ(coarse.dims(), expected.dims());
+  EXPECT_EQ(coarse.spacing(), expected.spacing());
+  EXPECT_EQ(coarse.origin(), expected.origin());
+  EXPECT_EQ(coarse.bytes(), expected.bytes());
+  EXPECT_EQ(coarse.worldBoundsMin(), expected.worldBoundsMin());
+  EXPECT_EQ(coarse.histogram(), histogram);
 }
 
 }  // namespace

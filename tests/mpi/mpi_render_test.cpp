@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli_run.h"
 #include "core/image_metrics.h"
@@ -326,10 +328,12 @@ TEST(MpiRender, ARankKilledMidFrameEndsEveryRank) {
 }
 
 TEST(MpiRender, UsageErrorsAreOneLine) {
-  const CliRun noOutput = runRanks(2, kSynthetic, "usage");
-  EXPECT_EQ(noOutput.code, 2);
-  EXPECT_NE(noOutput.err.find("ewaview-mpi: --output FILE.png is needed"), std::string::npos)
-      << noOutput.err;
+  // Without --output the window opens; --info is for ewaview.
+  const CliRun info = runRanks(2, kSynthetic + " --info", "usage");
+  EXPECT_EQ(info.code, 2);
+  EXPECT_NE(info.err.find("ewaview-mpi: --info, --pick and --save-volume need no ranks"),
+            std::string::npos)
+      << info.err;
   const CliRun badOption = runRanks(2, "--no-such-option", "usage");
   EXPECT_EQ(badOption.code, 2);
   // The parser's message from rank 0 only (mpirun adds its own report of the exit status).
@@ -345,6 +349,51 @@ TEST(MpiRender, UsageErrorsAreOneLine) {
   const size_t named = level.err.find(raw + ": --level 1 picks a level of an OME-Zarr pyramid");
   ASSERT_NE(named, std::string::npos) << level.err;
   EXPECT_EQ(level.err.find("--level 1", named + raw.size() + 12), std::string::npos) << level.err;
+}
+
+// The window's frames without a window (EWAVIEW_MPI_SCRIPT): rank 0 sends three frame
+// descriptions the window's way (DistributedRenderer: a camera change, a new transfer function,
+// a crop box), every rank draws its brick, and each composite is ewaview's picture of the same
+// options. Then the quit description ends both ranks with status 0.
+TEST(MpiRender, WindowFramesDrawTheOneProcessPictures) {
+  const std::string base = kSynthetic + " --termination 1 --classification pre";
+  const std::string tf = std::string(EWA_TEST_DIR) + "/window/ml_test.tf.json";
+  const std::vector<std::pair<std::string, std::string>> frames = {
+      {"camera", " --camera-position 75,-40,95"},
+      {"tf", " --camera-position 75,-40,95 --tf " + tf},
+      {"crop", " --camera-position 75,-40,95 --tf " + tf + " --crop 5,35,-1,30,8,40"},
+  };
+  const std::string script = testOutputDir() + "/mpi_window_script.txt";
+  {
+    std::ofstream lines(script);
+    for (const auto& [name, options] : frames)
+      lines << outPath("window_" + name) << options << "\n";
+  }
+  const CliRun run =
+      runProgram("env EWAVIEW_MPI_SCRIPT=" + script + " " + EWA_MPIEXEC,
+                 "2 " + std::string(EWA_MPI_BINARY) + " " + base, "window", kTimeout);
+  ASSERT_EQ(run.code, 0) << run.err;
+  for (const auto& [name, options] : frames) {
+    SCOPED_TRACE(name);
+    const std::string one = outPath("window_" + name + "_one");
+    ASSERT_EQ(runEwaview(base + options + " --output " + one, "window").code, 0);
+    const Image8 reference = readPng(one), picture = readPng(outPath("window_" + name));
+    ASSERT_EQ(picture.width, reference.width);
+    ASSERT_EQ(picture.height, reference.height);
+    EXPECT_LE(maxDifference(picture, reference), kMaxLevels);
+    EXPECT_GE(structuralSimilarity(floatImage(picture), floatImage(reference), 255.0), kMinSsim);
+    EXPECT_GT(meanValue(picture), 1.0) << "an empty picture";
+  }
+}
+
+// Without a display the window cannot open: rank 0 says so in one line and the quit
+// description ends the other rank too, with the same status, instead of leaving it waiting.
+TEST(MpiRender, AWindowThatCannotOpenEndsEveryRank) {
+  const CliRun run =
+      runProgram("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(EWA_MPIEXEC),
+                 "2 " + std::string(EWA_MPI_BINARY) + " " + kSynthetic, "nowindow", kTimeout);
+  EXPECT_EQ(run.code, 1) << run.err;
+  EXPECT_NE(run.err.find("ewaview: "), std::string::npos) << run.err;
 }
 
 }  // namespace

@@ -1,0 +1,179 @@
+// ClusterLink, serveFrames and DistributedRenderer: each window frame as a description
+// broadcast from rank 0, drawn by every rank and composited onto rank 0.
+#include "dist/mpi_window_renderer.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+#include <utility>
+
+#include "dist/mpi_collective.h"
+#include "dist/mpi_render.h"
+#include "dist/mpi_session.h"
+#include "gl/gl_api.h"
+
+namespace ewa::dist {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Rank 0's bytes to every rank: their size, then the bytes (each rank sizes its buffer first).
+void broadcastBytes(std::vector<uint8_t>* bytes, MPI_Comm comm) {
+  uint64_t size = bytes->size();
+  MPI_Bcast(&size, 1, MPI_UINT64_T, 0, comm);
+  bytes->resize(size_t(size));
+  MPI_Bcast(bytes->data(), int(size), MPI_BYTE, 0, comm);
+}
+
+// The panel shows this many ranks' lines at most, so that it stays on screen.
+constexpr size_t kMaxRankLines = 8;
+
+}  // namespace
+
+ClusterLink::ClusterLink(DistributedSession& session) : session_(session) {}
+
+bool ClusterLink::draw(const FrameDescription& frame, std::vector<float>* picture) {
+  if (failed_ || quitSent_) return false;
+  std::vector<uint8_t> bytes = serializeFrame(frame);
+  const Clock::time_point start = Clock::now();
+  broadcastBytes(&bytes, session_.comm());
+  if (!session_.render(frame.camera, frame.settings, frame.tf, frame.width, frame.height,
+                       picture)) {
+    failed_ = true;
+    return false;
+  }
+  wallMs_ = msSince(start);
+  width_ = frame.width;
+  height_ = frame.height;
+  return true;
+}
+
+void ClusterLink::quit(int status) {
+  if (failed_ || quitSent_) return;
+  quitSent_ = true;
+  FrameDescription frame;
+  frame.quit = true;
+  frame.exitStatus = status;
+  std::vector<uint8_t> bytes = serializeFrame(frame);
+  broadcastBytes(&bytes, session_.comm());
+}
+
+double ClusterLink::slowestRenderMs() const {
+  double ms = 0.0;
+  for (const RankFigures& f : session_.figures()) ms = std::max(ms, f.renderMs);
+  return ms;
+}
+
+double ClusterLink::slowestCompositeMs() const {
+  double ms = 0.0;
+  for (const RankFigures& f : session_.figures()) ms = std::max(ms, f.compositeMs);
+  return ms;
+}
+
+std::vector<std::string> ClusterLink::statisticsLines() const {
+  const std::vector<RankFigures>& figures = session_.figures();
+  std::vector<std::string> lines;
+  if (figures.empty()) return lines;
+  char text[160];
+  const std::array<int64_t, 3>& g = session_.ghost();
+  std::snprintf(text, sizeof text, "%d ranks, %d x %d: %.0f ms, ghosts %lld %lld %lld",
+                session_.size(), width_, height_, wallMs_, (long long)g[0], (long long)g[1],
+                (long long)g[2]);
+  lines.emplace_back(text);
+  for (size_t r = 0; r < figures.size() && r < kMaxRankLines; ++r) {
+    const VoxelBox& b = session_.split().bricks[r];
+    std::snprintf(text, sizeof text,
+                  "rank %zu [%lld %lld %lld]-[%lld %lld %lld]: render %.1f, "
+                  "composite %.1f ms",
+                  r, (long long)b.low[0], (long long)b.low[1], (long long)b.low[2],
+                  (long long)b.high[0], (long long)b.high[1], (long long)b.high[2],
+                  figures[r].renderMs, figures[r].compositeMs);
+    lines.emplace_back(text);
+  }
+  if (figures.size() > kMaxRankLines)
+    lines.push_back("... and " + std::to_string(figures.size() - kMaxRankLines) + " more ranks");
+  return lines;
+}
+
+int serveFrames(DistributedSession& session) {
+  std::vector<float> none;
+  for (;;) {
+    std::vector<uint8_t> bytes;
+    broadcastBytes(&bytes, session.comm());
+    FrameDescription frame;
+    try {
+      frame = deserializeFrame(bytes.data(), bytes.size());
+    } catch (const std::exception& e) {
+      abortAll(e.what(), session.comm());  // rank 0 waits in the frame: no way to agree
+    }
+    if (frame.quit) return frame.exitStatus;
+    if (!session.render(frame.camera, frame.settings, frame.tf, frame.width, frame.height, &none))
+      return 1;
+  }
+}
+
+DistributedRenderer::DistributedRenderer(std::shared_ptr<ClusterLink> link,
+                                         platform::GlContext* window,
+                                         std::function<void()> onFailure)
+    : link_(std::move(link)), window_(window), onFailure_(std::move(onFailure)) {}
+
+void DistributedRenderer::render(const Camera& camera, const RenderSettings& settings, int width,
+                                 int height) {
+  const Clock::time_point start = Clock::now();
+  FrameDescription frame;
+  frame.camera = camera;
+  frame.settings = settings;
+  frame.tf = tf_;
+  frame.width = width;
+  frame.height = height;
+  std::vector<float> picture;
+  const bool wasFailed = link_->failed();
+  const bool drawn = link_->draw(frame, &picture);
+  // This rank's brick was drawn on its headless context (its GL functions loaded): the
+  // window's context and functions again.
+  if (window_) window_->makeCurrent();
+  if (!drawn) {
+    // The failing rank said why in one line; the window closes with the last picture on it
+    // rather than adding a line of its own.
+    if (onFailure_) {
+      if (!wasFailed) onFailure_();
+      return;
+    }
+    throw std::runtime_error("the ranks stopped after a failed frame");
+  }
+  image_ = finishPicture(picture, width, height, settings);
+  if (window_) {
+    if (texture_.width() != width || texture_.height() != height)
+      texture_ = gl::Texture::create2D(GL_RGBA8, width, height);
+    // The texture's rows bottom first, as the renderers' output textures are.
+    std::vector<uint8_t> rgba(size_t(width) * size_t(height) * 4);
+    for (int y = 0; y < height; ++y) {
+      const uint8_t* in = image_.pixels.data() + size_t(height - 1 - y) * size_t(width) * 3;
+      uint8_t* out = rgba.data() + size_t(y) * size_t(width) * 4;
+      for (int x = 0; x < width; ++x) {
+        out[4 * x] = in[3 * x];
+        out[4 * x + 1] = in[3 * x + 1];
+        out[4 * x + 2] = in[3 * x + 2];
+        out[4 * x + 3] = 255;
+      }
+    }
+    texture_.subImage2D(0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  }
+  stats_ = RenderStats{};
+  stats_.renderMs = 0.0;
+  stats_.note = link_->session().note();
+  // The stage lines of the panel: the slowest rank's brick (classification included) and the
+  // slowest rank's part of the composite; the ranks' own lines follow them.
+  stats_.splatMs = link_->slowestRenderMs();
+  stats_.compositeMs = link_->slowestCompositeMs();
+  stats_.renderMs = msSince(start);
+}
+
+}  // namespace ewa::dist
