@@ -56,7 +56,8 @@ std::vector<float> BrickRenderer::render(const TransferFunction& tf, const Camer
     splat_->setSplats(std::move(*splats), splatClassification(settings));
   }
   renderer_->render(camera, settings, width, height);
-  note_ = renderer_->stats().note;
+  stats_ = renderer_->stats();
+  note_ = stats_.note;
   return splat_->readFramePicture();
 }
 

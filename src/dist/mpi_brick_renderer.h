@@ -45,6 +45,8 @@ class BrickRenderer {
   // The splats the last frame drew (their classification's), for the slab grid's anchor.
   const SplatRenderer& splatRenderer() const { return *splat_; }
   const std::string& note() const { return note_; }
+  // The last frame's statistics (splats, slabs, which splatter).
+  const RenderStats& stats() const { return stats_; }
 
  private:
   std::unique_ptr<platform::GlContext> context_;
@@ -52,6 +54,7 @@ class BrickRenderer {
   std::unique_ptr<Renderer> renderer_;
   SplatRenderer* splat_ = nullptr;
   std::string note_;
+  RenderStats stats_;
 };
 
 }  // namespace ewa::dist

@@ -288,7 +288,7 @@ std::string frameStatsJson(const DistributedSession& session, int w, int h) {
     json << (r ? "," : "") << "{\"rank\":" << r << ",\"low\":[" << b.low[0] << "," << b.low[1]
          << "," << b.low[2] << "],\"high\":[" << b.high[0] << "," << b.high[1] << "," << b.high[2]
          << "],\"render_ms\":" << f.renderMs << ",\"composite_ms\":" << f.compositeMs
-         << ",\"bytes_sent\":" << (long long)f.bytesSent
+         << ",\"bytes_sent\":" << (long long)f.bytesSent << ",\"splats\":" << (long long)f.splats
          << ",\"voxels_read\":" << (long long)f.voxelsRead << ",\"peak_rss_mb\":" << f.peakRssMb
          << "}";
   }

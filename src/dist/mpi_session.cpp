@@ -414,7 +414,15 @@ bool DistributedSession::render(const Camera& camera, const RenderSettings& sett
 
   // Each rank's figures and whether it has a note, on rank 0.
   static_assert(sizeof(RankFigures) % sizeof(double) == 0, "RankFigures: doubles only");
-  const RankFigures ours{renderMs, compositeMs, double(voxelsRead_), peakRssMb(), bytesSent};
+  RankFigures ours{renderMs, compositeMs, double(voxelsRead_), peakRssMb(), bytesSent};
+  if (renderer_ && !brick_.empty()) {
+    const RenderStats& r = renderer_->stats();
+    ours.splats = double(r.splatsTotal);
+    ours.splatsDrawn = double(r.splatsDrawn);
+    ours.slabEntries = double(r.slabEntries);
+    ours.slabs = double(r.slabs);
+    ours.cpu = r.cpu ? 1.0 : 0.0;
+  }
   constexpr int kFields = int(sizeof(RankFigures) / sizeof(double));
   figures_.assign(rank_ == 0 ? size_t(size_) : 0, RankFigures{});
   MPI_Gather(&ours, kFields, MPI_DOUBLE, figures_.data(), kFields, MPI_DOUBLE, 0, comm_);

@@ -30,6 +30,11 @@ struct RankFigures {
   double voxelsRead = 0.0;   // voxels held: brick and ghosts
   double peakRssMb = 0.0;    // the process's peak resident memory so far
   double bytesSent = 0.0;    // what it sent in the composite
+  double splats = 0.0;       // its brick's splats (RenderStats::splatsTotal)
+  double splatsDrawn = 0.0;  // of them, those in front of the eye
+  double slabEntries = 0.0;  // splats drawn summed over slabs
+  double slabs = 0.0;        // its frame's slabs
+  double cpu = 0.0;          // 1 where its splats were drawn on the CPU
 };
 
 class DistributedSession {

@@ -173,6 +173,14 @@ void DistributedRenderer::render(const Camera& camera, const RenderSettings& set
   // slowest rank's part of the composite; the ranks' own lines follow them.
   stats_.splatMs = link_->slowestRenderMs();
   stats_.compositeMs = link_->slowestCompositeMs();
+  // The whole volume's splats are the bricks' together; the slabs are one grid for all.
+  for (const RankFigures& f : link_->session().figures()) {
+    stats_.splatsTotal += size_t(f.splats);
+    stats_.splatsDrawn += size_t(f.splatsDrawn);
+    stats_.slabEntries += size_t(f.slabEntries);
+    stats_.slabs = std::max(stats_.slabs, size_t(f.slabs));
+    stats_.cpu = stats_.cpu || f.cpu > 0.0;
+  }
   stats_.renderMs = msSince(start);
 }
 
