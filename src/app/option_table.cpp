@@ -820,7 +820,9 @@ std::vector<OptionSpec> makeTable() {
           "`ewaview-mpi` only: how the volume is cut into one brick per rank. `visible` (the "
           "default) balances the bricks by the voxels the transfer function shows (counted per "
           "block of 8³ voxels; post-classified with the margin of voxels beside them), so ranks "
-          "whose part is empty space do not idle while others draw; `voxels` by voxel count "
+          "whose part is empty space do not idle while others draw, a hidden voxel weighing an "
+          "eighth of a shown one so that a brick of empty space stays within a rank's memory; "
+          "`voxels` by voxel count "
           "([Distributed rendering](../dev/distributed.md))");
   add(rows, "--help", OptionGroup::Advanced)
       .shortLetter("h")

@@ -53,4 +53,21 @@ std::vector<double> visibleBlockWeights(const Volume& volume, const std::array<i
   return weights;
 }
 
+void addVoxelWeights(std::vector<double>& weights, const std::array<int64_t, 3>& dims,
+                     int64_t block, double perVoxel) {
+  std::array<int64_t, 3> blocks;
+  for (size_t a = 0; a < 3; ++a) blocks[a] = (dims[a] + block - 1) / block;
+  if (weights.size() != size_t(blocks[0] * blocks[1] * blocks[2]))
+    throw std::invalid_argument("addVoxelWeights: " + std::to_string(weights.size()) +
+                                " weights for " +
+                                std::to_string(blocks[0] * blocks[1] * blocks[2]) + " blocks");
+  // A block's extent along an axis: `block`, the last one cut short.
+  const auto extent = [&](size_t a, int64_t b) { return std::min(block, dims[a] - b * block); };
+  size_t at = 0;
+  for (int64_t z = 0; z < blocks[2]; ++z)
+    for (int64_t y = 0; y < blocks[1]; ++y)
+      for (int64_t x = 0; x < blocks[0]; ++x, ++at)
+        weights[at] += perVoxel * double(extent(0, x) * extent(1, y) * extent(2, z));
+}
+
 }  // namespace ewa::dist

@@ -32,4 +32,16 @@ std::vector<double> visibleBlockWeights(const Volume& volume, const std::array<i
                                         int64_t block, const TransferFunction& tf,
                                         const Classification& classification);
 
+// What a voxel that is not drawn weighs against one that is (addVoxelWeights): it is still read,
+// held and classified. It also bounds a brick of empty space: a brick holds at most (1 + f / k)
+// times an even share of the voxels, f the visible fraction, so a rank's memory stays near the
+// split by voxels where little is visible.
+constexpr double kHiddenVoxelWeight = 0.125;
+
+// Adds `perVoxel` times each block's voxel count to `weights` (one per block of `block` voxels a
+// side of `dims`, x fastest, the last blocks cut short by the volume's end). Throws
+// std::invalid_argument when `weights` has another size.
+void addVoxelWeights(std::vector<double>& weights, const std::array<int64_t, 3>& dims,
+                     int64_t block, double perVoxel);
+
 }  // namespace ewa::dist

@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <new>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "app/scene.h"
@@ -74,6 +76,16 @@ VoxelRegion grownRegion(const VoxelBox& brick, const std::array<int64_t, 3>& gho
     region.hi[a] = std::min<int64_t>(brick.high[a] + ghost[a], dims[a]);
   }
   return region;
+}
+
+// The line a rank says when its voxels do not fit in its memory (std::bad_alloc says nothing).
+std::string outOfMemory(const VoxelRegion& r) {
+  const int64_t voxels = (r.hi[0] - r.lo[0]) * (r.hi[1] - r.lo[1]) * (r.hi[2] - r.lo[2]);
+  return "out of memory holding voxels [" + std::to_string(r.lo[0]) + "," +
+         std::to_string(r.lo[1]) + "," + std::to_string(r.lo[2]) + "]-[" + std::to_string(r.hi[0]) +
+         "," + std::to_string(r.hi[1]) + "," + std::to_string(r.hi[2]) + ") (" +
+         std::to_string(voxels) +
+         " voxels, its brick and ghosts): start more ranks, or give each more memory";
 }
 
 bool contains(const VoxelRegion& outer, const VoxelRegion& inner) {
@@ -185,9 +197,10 @@ std::unique_ptr<DistributedSession> DistributedSession::open(const Options& opti
 
 bool DistributedSession::splitByVisibleVoxels(const Options& options) {
   // Each rank counts its brick's voxels that become splats under the agreed transfer function
-  // per block of the whole; the sum over the ranks weighs the split, so that ranks which drew
-  // empty space take more of the visible part (VisIt #2596). Where nothing is visible it is the
-  // split by voxels.
+  // per block of the whole; the sum over the ranks, with every voxel's own smaller weight
+  // (kHiddenVoxelWeight), weighs the split, so that ranks which drew empty space take more of the
+  // visible part (VisIt #2596) and no brick of empty space outgrows a rank's memory. Where
+  // nothing is visible it is the split by voxels.
   const WholeGrid& grid = this->grid();
   std::string error;
   std::vector<double> weights;
@@ -201,10 +214,13 @@ bool DistributedSession::splitByVisibleVoxels(const Options& options) {
   }
   if (anyFailed(error, comm_)) return false;
   MPI_Allreduce(MPI_IN_PLACE, weights.data(), int(weights.size()), MPI_DOUBLE, MPI_SUM, comm_);
+  addVoxelWeights(weights, grid.dims, kVisibleBlock, kHiddenVoxelWeight);
   split_ = splitBricks(VoxelWeights(grid.dims, kVisibleBlock, weights), size_);
   const VoxelBox brick = split_.bricks[size_t(rank_)];
   const bool moved = !(brick == brick_);
   brick_ = brick;
+  // A moved brick is read anew: the old one's voxels go first, so a rank never holds both.
+  if (moved) volume_ = Volume();
   // Only the ranks whose brick moved read again (with the others where rank 0 sends them).
   if (!readVoxels(moved && !brick_.empty(), grownRegion(brick_, ghost_, grid.dims))) return false;
   if (moved) {
@@ -230,6 +246,8 @@ bool DistributedSession::readVoxels(bool read, const VoxelRegion& region) {
       volume_ = std::move(v);
       region_ = region;
     }
+  } catch (const std::bad_alloc&) {
+    error = outOfMemory(region);
   } catch (const std::exception& e) {
     error = e.what();
   }
@@ -285,6 +303,8 @@ bool DistributedSession::tradeVoxels(bool read, const VoxelRegion& region) {
       volume_ = std::move(v);
       region_ = region;
     }
+  } catch (const std::bad_alloc&) {
+    error = outOfMemory(region);
   } catch (const std::exception& e) {
     error = e.what();
   }

@@ -131,5 +131,26 @@ TEST(BrickWeights, NothingOutsideTheBrickAndRefusesABrickOutsideTheVolume) {
                std::invalid_argument);
 }
 
+TEST(BrickWeights, HiddenVoxelsAddTheirBlocksVoxelsAndBoundAnEmptyBrick) {
+  // 20 x 9 x 8 voxels in blocks of 8: 3 x 2 x 1 blocks, the last along x 4 voxels, along y 1.
+  const std::array<int64_t, 3> dims{20, 9, 8};
+  std::vector<double> weights(6, 0.0);
+  weights[0] = 100.0;  // the visible voxels all in the first block
+  addVoxelWeights(weights, dims, 8, 0.5);
+  const std::vector<double> expected{100.0 + 256.0, 256.0, 128.0, 32.0, 32.0, 16.0};
+  EXPECT_EQ(weights, expected);
+  EXPECT_DOUBLE_EQ(std::accumulate(weights.begin(), weights.end(), 0.0), 100.0 + 0.5 * 20 * 9 * 8);
+  EXPECT_THROW(addVoxelWeights(weights, {20, 9, 9}, 8, 0.5), std::invalid_argument);
+
+  // Split in two by them, the brick of empty space holds at most (1 + f / k) times an even share.
+  std::vector<double> sparse(64, 0.0);
+  sparse[0] = 8.0 * 8 * 8;  // one full block visible of 4 x 4 x 4 blocks
+  addVoxelWeights(sparse, {32, 32, 32}, 8, kHiddenVoxelWeight);
+  const BrickSplit split = splitBricks(VoxelWeights({32, 32, 32}, 8, sparse), 2);
+  const double f = 512.0 / (32.0 * 32 * 32), even = 32.0 * 32 * 32 / 2;
+  for (const VoxelBox& brick : split.bricks)
+    EXPECT_LE(double(brick.voxels()), (1.0 + f / kHiddenVoxelWeight) * even + 1e-9);
+}
+
 }  // namespace
 }  // namespace ewa::dist
