@@ -32,6 +32,32 @@ void broadcastBytes(std::vector<uint8_t>* bytes, MPI_Comm comm) {
   MPI_Bcast(bytes->data(), int(size), MPI_BYTE, 0, comm);
 }
 
+// How long a moving frame waits for a full-quality frame under way before the window shows the
+// last picture instead: about a UI frame.
+constexpr std::chrono::milliseconds kRenderWait{20};
+
+// `image` (RGB, top row first) at width x height, nearest pixels: the last picture standing in
+// for a view not drawn.
+Image8 resized(const Image8& image, int width, int height) {
+  Image8 out;
+  out.width = width;
+  out.height = height;
+  out.channels = image.channels;
+  const size_t c = size_t(image.channels);
+  out.pixels.resize(size_t(width) * size_t(height) * c);
+  for (int y = 0; y < height; ++y) {
+    const size_t sy =
+        std::min(size_t(image.height - 1), size_t(y) * size_t(image.height) / size_t(height));
+    for (int x = 0; x < width; ++x) {
+      const size_t sx =
+          std::min(size_t(image.width - 1), size_t(x) * size_t(image.width) / size_t(width));
+      const uint8_t* in = image.pixels.data() + (sy * size_t(image.width) + sx) * c;
+      std::copy(in, in + c, out.pixels.data() + (size_t(y) * size_t(width) + size_t(x)) * c);
+    }
+  }
+  return out;
+}
+
 // The panel shows this many ranks' lines at most, so that it stays on screen.
 constexpr size_t kMaxRankLines = 8;
 
@@ -161,13 +187,26 @@ void DistributedRenderer::failed(bool wasFailed) {
 
 void DistributedRenderer::render(const Camera& camera, const RenderSettings& settings, int width,
                                  int height) {
-  // MPI one thread at a time: the worker's frame ends first (it is shown: the picture this one
-  // replaces). The full-quality view asked meanwhile is dropped, as a whole frame replaces it.
-  if (worker_.valid()) collectWorker();
+  const Clock::time_point start = Clock::now();
+  // A whole frame replaces the full-quality view asked meanwhile (never sent now).
   next_.reset();
   synchronousFrame_ = false;
   frameShown_ = true;
-  const Clock::time_point start = Clock::now();
+  if (worker_.valid()) {
+    // MPI one thread at a time: this frame would wait for the ranks' frame under way. The
+    // window answers instead, showing the last picture at this size; the refinement that
+    // follows a moving view draws the newest one.
+    if (!image_.pixels.empty() &&
+        worker_.wait_until(start + kRenderWait) != std::future_status::ready) {
+      // The statistics stay the last frame's: the worker writes the ranks' figures now.
+      if (image_.width != width || image_.height != height) {
+        image_ = resized(image_, width, height);
+        upload(width, height);
+      }
+      return;
+    }
+    if (!collectWorker(false)) return;
+  }
   const FrameDescription frame = describe(camera, settings, width, height);
   std::vector<float> picture;
   const bool wasFailed = link_->failed();
@@ -218,7 +257,7 @@ void DistributedRenderer::startWorker(const FrameDescription& frame) {
   });
 }
 
-bool DistributedRenderer::collectWorker() {
+bool DistributedRenderer::collectWorker(bool always) {
   const bool wasFailed = link_->failed();
   WorkerFrame done = worker_.get();  // rethrows what the worker threw
   worker_ = {};
@@ -231,6 +270,10 @@ bool DistributedRenderer::collectWorker() {
     return false;
   }
   workerMs_ = done.wallMs;
+  // A frame another replaces is shown only where the window shows the texture at its size (a
+  // moving level's smaller picture is on screen now: the picture waits for the next one).
+  if (!always && (texture_.width() != workerWidth_ || texture_.height() != workerHeight_))
+    return true;
   image_ = std::move(done.image);
   show(workerWidth_, workerHeight_, workerStart_);
   return true;
@@ -245,7 +288,8 @@ bool DistributedRenderer::stepFrame(double budgetMs) {
       Clock::now() + std::chrono::microseconds(int64_t(std::max(0.0, budgetMs) * 1000.0));
   while (worker_.valid()) {
     if (worker_.wait_until(deadline) != std::future_status::ready) return false;
-    if (!collectWorker()) return frameShown_ = true;  // failed: the window closes
+    // The frame the newest beginFrame asked for, or one it replaced.
+    if (!collectWorker(!next_)) return frameShown_ = true;  // failed: the window closes
     if (!next_) {
       frameShown_ = true;
       stats_.renderMs = msSince(begun_);
@@ -265,24 +309,27 @@ double DistributedRenderer::frameProgress() const {
   return std::min(0.99, msSince(workerStart_) / workerMs_);
 }
 
-void DistributedRenderer::show(int width, int height, Clock::time_point start) {
-  if (window_) {
-    if (texture_.width() != width || texture_.height() != height)
-      texture_ = gl::Texture::create2D(GL_RGBA8, width, height);
-    // The texture's rows bottom first, as the renderers' output textures are.
-    std::vector<uint8_t> rgba(size_t(width) * size_t(height) * 4);
-    for (int y = 0; y < height; ++y) {
-      const uint8_t* in = image_.pixels.data() + size_t(height - 1 - y) * size_t(width) * 3;
-      uint8_t* out = rgba.data() + size_t(y) * size_t(width) * 4;
-      for (int x = 0; x < width; ++x) {
-        out[4 * x] = in[3 * x];
-        out[4 * x + 1] = in[3 * x + 1];
-        out[4 * x + 2] = in[3 * x + 2];
-        out[4 * x + 3] = 255;
-      }
+void DistributedRenderer::upload(int width, int height) {
+  if (!window_) return;
+  if (texture_.width() != width || texture_.height() != height)
+    texture_ = gl::Texture::create2D(GL_RGBA8, width, height);
+  // The texture's rows bottom first, as the renderers' output textures are.
+  std::vector<uint8_t> rgba(size_t(width) * size_t(height) * 4);
+  for (int y = 0; y < height; ++y) {
+    const uint8_t* in = image_.pixels.data() + size_t(height - 1 - y) * size_t(width) * 3;
+    uint8_t* out = rgba.data() + size_t(y) * size_t(width) * 4;
+    for (int x = 0; x < width; ++x) {
+      out[4 * x] = in[3 * x];
+      out[4 * x + 1] = in[3 * x + 1];
+      out[4 * x + 2] = in[3 * x + 2];
+      out[4 * x + 3] = 255;
     }
-    texture_.subImage2D(0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   }
+  texture_.subImage2D(0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+}
+
+void DistributedRenderer::show(int width, int height, Clock::time_point start) {
+  upload(width, height);
   stats_ = RenderStats{};
   stats_.note = link_->session().note();
   // The stage lines of the panel: the slowest rank's brick (classification included) and the

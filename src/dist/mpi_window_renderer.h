@@ -94,7 +94,9 @@ class DistributedRenderer : public Renderer {
   void setVolume(const Volume& /*volume*/) override {}
   void setTransferFunction(const TransferFunction& tf) override { tf_ = tf; }
   // After a failed frame (and for every frame after it): calls onFailure once and keeps the
-  // last picture, or throws where there is no onFailure. Waits for a frame on the worker first.
+  // last picture, or throws where there is no onFailure. While a frame is on the worker: waits
+  // for it about a UI frame, then shows the last picture at this size instead (the moving view
+  // is not drawn: the refinement after it draws the newest).
   void render(const Camera& camera, const RenderSettings& settings, int width, int height) override;
   void beginFrame(const Camera& camera, const RenderSettings& settings, int width,
                   int height) override;
@@ -116,12 +118,15 @@ class DistributedRenderer : public Renderer {
   FrameDescription describe(const Camera& camera, const RenderSettings& settings, int width,
                             int height) const;
   void startWorker(const FrameDescription& frame);
-  // Takes the worker's frame (waiting for it) and shows it; false when it failed.
-  bool collectWorker();
+  // Takes the worker's frame (waiting for it) and shows it where `show`, or where the texture
+  // has its size (one a newer frame replaces); false when it failed.
+  bool collectWorker(bool always);
   // After a failed frame: onFailure once, or throws.
   void failed(bool wasFailed);
   // Shows image_ through the texture and takes the frame's statistics from the link.
   void show(int width, int height, Clock::time_point start);
+  // image_ (RGB, width x height) into the texture.
+  void upload(int width, int height);
 
   std::shared_ptr<ClusterLink> link_;
   platform::GlContext* window_;
