@@ -238,6 +238,8 @@ void DistributedRenderer::startWorker(const FrameDescription& frame) {
   workerWidth_ = frame.width;
   workerHeight_ = frame.height;
   workerStart_ = Clock::now();
+  // Read here: the worker's frame sets it.
+  failedBeforeWorker_ = link_->failed();
   worker_ = std::async(std::launch::async, [link = link_, frame, release = releaseContext_] {
     WorkerFrame done;
     const Clock::time_point start = Clock::now();
@@ -258,7 +260,6 @@ void DistributedRenderer::startWorker(const FrameDescription& frame) {
 }
 
 bool DistributedRenderer::collectWorker(bool always) {
-  const bool wasFailed = link_->failed();
   WorkerFrame done = worker_.get();  // rethrows what the worker threw
   worker_ = {};
   // The worker's frame loaded the process-wide GL functions from the brick's context: the
@@ -266,7 +267,7 @@ bool DistributedRenderer::collectWorker(bool always) {
   if (window_) window_->makeCurrent();
   if (!done.drawn) {
     next_.reset();
-    failed(wasFailed);
+    failed(failedBeforeWorker_);
     return false;
   }
   workerMs_ = done.wallMs;

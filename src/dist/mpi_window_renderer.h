@@ -145,7 +145,8 @@ class DistributedRenderer : public Renderer {
   bool frameShown_ = true;                // the newest beginFrame's frame is shown
   Clock::time_point begun_;               // the newest beginFrame
   Clock::time_point workerStart_;
-  double workerMs_ = 0.0;  // the last worker frame's wall time
+  bool failedBeforeWorker_ = false;  // the link had failed before the worker's frame
+  double workerMs_ = 0.0;            // the last worker frame's wall time
 };
 
 }  // namespace ewa::dist
