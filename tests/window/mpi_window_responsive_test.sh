@@ -2,7 +2,7 @@
 # ewaview-mpi's window stays responsive while the ranks draw a full-quality frame: 3 ranks on a
 # volume whose frame takes about a second here; after an orbit the refinement's UI frames
 # (EWAVIEW_FRAME_LOG) must go on every few hundred ms until the picture arrives, and Q must end
-# every rank with status 0.
+# every rank with status 0, also while they draw.
 # Usage: mpi_window_responsive_test.sh "MPIEXEC FLAGS" EWAVIEW_MPI_BINARY OUTPUT_DIR [VOLUME].
 # VOLUME: a file (default: the synthetic marschner-lobb:160). Exit 77 (CTest skip) without X
 # tools, or exit 1 when CI=true: CI must not pass by skipping.
@@ -118,7 +118,14 @@ awk -v m="$moving" 'BEGIN { exit !(m <= 300) }' ||
   fail "the moving frame waited $moving ms for the ranks' frame"
 sleep 1; import -window "$wid" "$out/2_moved.png" 2>/dev/null
 
-log "quit"
+# Q while the ranks draw: the window waits for their frame, then every rank quits.
+log "orbit, then quit while the ranks draw"
+xdotool mousemove --window "$wid" $mx $my; sleep 0.3
+xdotool mousedown 1
+for step in 1 2 3; do xdotool mousemove --window "$wid" $((mx + 15 * step)) $my; sleep 0.1; done
+xdotool mouseup 1
+lines=$(wc -l <"$work/stderr")
+poll "the refinement after the third orbit" refining
 xdotool key --window "$wid" q
 start=$SECONDS
 while kill -0 "$pid" 2>/dev/null; do
