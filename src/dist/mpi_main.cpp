@@ -10,9 +10,16 @@
 #include "dist/mpi_window.h"
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
+  // Serialized: the window's rank draws full-quality frames on a worker thread, which calls MPI
+  // while the window's thread does not.
+  int provided = MPI_THREAD_SINGLE;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &provided);
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (provided < MPI_THREAD_SERIALIZED && rank == 0)
+    std::cerr << "ewaview-mpi: this MPI is not thread-serialized: the window draws full quality "
+                 "on its own thread (it waits for each frame)"
+              << std::endl;
   ewa::Options options;
   ewa::ParseResult parsed;
   {

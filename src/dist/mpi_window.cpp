@@ -95,9 +95,16 @@ int runWindow(const Options& options, DistributedSession& session,
         hidden.vsync = false;
         return std::make_unique<platform::GlfwWindowContext>(hidden, library);
       });
-    return std::make_unique<DistributedRenderer>(link, &window, [glfw] {
+    auto renderer = std::make_unique<DistributedRenderer>(link, &window, [glfw] {
       if (glfw) glfwSetWindowShouldClose(glfw->window(), GLFW_TRUE);
     });
+    // Full-quality frames on a worker where MPI may be called from it (mpi_main asks for
+    // MPI_THREAD_SERIALIZED): the window answers while the ranks draw.
+    int threading = MPI_THREAD_SINGLE;
+    MPI_Query_thread(&threading);
+    if (glfw && threading >= MPI_THREAD_SERIALIZED)
+      renderer->setWorkerFrames([] { glfwMakeContextCurrent(nullptr); });
+    return renderer;
   };
   config.statisticsLines = [link] { return link->statisticsLines(); };
   LoadedVolume initial;
