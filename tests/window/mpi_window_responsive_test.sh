@@ -12,45 +12,14 @@ binary="$(realpath "$2")"
 out="$3"
 volume=(--synthetic marschner-lobb:160)
 [ -n "${4:-}" ] && volume=("$4")
-skip() {
-  case "${CI:-}" in
-    "" | 0 | false) echo "SKIP (would fail with CI=true): $*"; exit 77 ;;
-    *) echo "FAIL: CI=true and the window test cannot run: $*"; exit 1 ;;
-  esac
-}
-for tool in xdotool import; do
-  command -v "$tool" >/dev/null || skip "$tool not installed (scripts/setup.sh installs it)"
-done
-if [ -z "${DISPLAY:-}" ]; then
-  command -v xvfb-run >/dev/null || skip "no DISPLAY and no xvfb-run"
-  exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
-fi
-xdotool getdisplaygeometry >/dev/null 2>&1 || skip "cannot reach the X server on DISPLAY=$DISPLAY"
-mkdir -p "$out"
-rm -f "$out"/*.png
-work="$(mktemp -d)"
-pid=""
-cleanup() {
-  [ -n "$pid" ] && kill "$pid" 2>/dev/null
-  rm -rf "$work"
-}
-trap cleanup EXIT
-fail() {
-  echo "FAIL: $*"
-  echo "--- ewaview-mpi stdout/stderr (tail):"; tail -n 40 "$work/stdout" "$work/stderr"; cp "$work/stderr" "$out/stderr.txt"
-  exit 1
-}
-log() { echo "[${SECONDS}s] $*"; }
+here="$(cd "$(dirname "$0")" && pwd)"
+program=ewaview-mpi
+tools="xdotool import"
 timeout=${EWA_TEST_TIMEOUT:-240}
-poll() {  # poll DESCRIPTION COMMAND...
-  local what="$1"; shift
-  local start=$SECONDS
-  until "$@"; do
-    [ $((SECONDS - start)) -ge $timeout ] && fail "timed out after ${timeout}s waiting for $what"
-    kill -0 "$pid" 2>/dev/null || fail "ewaview-mpi exited while waiting for $what"
-    sleep 0.3
-  done
-}
+save_stderr() { cp "$work/stderr" "$out/stderr.txt"; }
+on_fail=save_stderr
+# shellcheck source=harness.sh
+source "$here/harness.sh"
 
 mkdir -p "$work/config"
 (cd "$work" && EWAVIEW_CONFIG_DIR="$work/config" EWAVIEW_PRINT_LAYOUT=1 EWAVIEW_FRAME_LOG=1 \

@@ -10,43 +10,11 @@
 set -uo pipefail
 binary="$(realpath "$1")"
 out="$2"
-skip() {
-  case "${CI:-}" in
-    "" | 0 | false) echo "SKIP (would fail with CI=true): $*"; exit 77 ;;
-    *) echo "FAIL: CI=true and the window test cannot run: $*"; exit 1 ;;
-  esac
-}
-for tool in xdotool import convert; do
-  command -v "$tool" >/dev/null || skip "$tool not installed (scripts/setup.sh installs it)"
-done
-if [ -z "${DISPLAY:-}" ]; then
-  command -v xvfb-run >/dev/null || skip "no DISPLAY and no xvfb-run"
-  exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
-fi
-xdotool getdisplaygeometry >/dev/null 2>&1 || skip "cannot reach the X server on DISPLAY=$DISPLAY"
-mkdir -p "$out"
-work="$(mktemp -d)"
-pid=""
-cleanup() {
-  [ -n "$pid" ] && kill "$pid" 2>/dev/null
-  rm -rf "$work"
-}
-trap cleanup EXIT
-fail() {
-  echo "FAIL: $*"
-  echo "--- ewaview stdout/stderr:"; cat "$work/stdout" "$work/stderr" 2>/dev/null
-  exit 1
-}
-timeout=180
-poll() {  # poll DESCRIPTION COMMAND...
-  local what="$1"; shift
-  local start=$SECONDS
-  until "$@"; do
-    [ $((SECONDS - start)) -ge $timeout ] && fail "timed out after ${timeout}s waiting for $what"
-    kill -0 "$pid" 2>/dev/null || fail "ewaview exited while waiting for $what"
-    sleep 0.3
-  done
-}
+here="$(cd "$(dirname "$0")" && pwd)"
+program=ewaview
+tools="xdotool import convert"
+# shellcheck source=harness.sh
+source "$here/harness.sh"
 
 # Tall enough for the whole panel with its statistics (no scrolling to reach a header).
 width=1100; height=780
