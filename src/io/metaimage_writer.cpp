@@ -33,19 +33,24 @@ std::string numbers(std::initializer_list<double> values) {
   return out;
 }
 
-// ITK's AnatomicalOrientation: for each axis the side of the patient it starts from, by its
-// direction's largest component in LPS: +x runs from the right (R), +y from the front (A), +z
-// from below (I); the identity is "RAI".
+// ITK's AnatomicalOrientation: for each axis the side of the patient it starts from, along the
+// patient axis it runs nearest, in LPS: +x runs from the right (R), +y from the front (A), +z
+// from below (I); the identity is "RAI". Each data axis takes its own patient axis (the
+// assignment with the largest components): at 45 degrees between two, a first-largest choice
+// would name one patient axis twice ("RPP"), which no reader takes as patient axes.
 std::string anatomicalOrientation(const glm::dmat3& direction) {
-  std::string code;
-  for (int a = 0; a < 3; ++a) {
-    const glm::dvec3 d = direction[a];
-    int axis = 0;
-    for (int c = 1; c < 3; ++c)
-      if (std::abs(d[c]) > std::abs(d[axis])) axis = c;
-    static const char kFrom[3][2] = {{'R', 'L'}, {'A', 'P'}, {'I', 'S'}};
-    code += kFrom[axis][d[axis] < 0.0 ? 1 : 0];
+  static const int kOrders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                    {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  const int* best = kOrders[0];
+  double bestSum = -1.0;
+  for (const int* order : kOrders) {
+    double sum = 0.0;
+    for (int a = 0; a < 3; ++a) sum += std::abs(direction[a][order[a]]);
+    if (sum > bestSum) bestSum = sum, best = order;
   }
+  std::string code;
+  static const char kFrom[3][2] = {{'R', 'L'}, {'A', 'P'}, {'I', 'S'}};
+  for (int a = 0; a < 3; ++a) code += kFrom[best[a]][direction[a][best[a]] < 0.0 ? 1 : 0];
   return code;
 }
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
@@ -52,6 +53,22 @@ TEST(MetaImageWriter, WhatIsReadBackIsTheVolumeWritten) {
   EXPECT_EQ(headerLine(readTextFile(dir.path("v2.mha")), "AnatomicalOrientation"),
             "AnatomicalOrientation = RAI");
   EXPECT_EQ(headerLine(readTextFile(dir.path("v3.mha")), "ElementType"), "ElementType = MET_FLOAT");
+}
+
+TEST(MetaImageWriter, AxesAt45DegreesNameEachPatientAxisOnce) {
+  // The y and z axes halfway between the patient's y and z (found by fuzzing a NIfTI file):
+  // each takes its own patient axis, so the volume reads back in the patient's frame.
+  TempDir dir;
+  Volume v = rampVolumesOfEveryType()[1];
+  const double h = std::sqrt(0.5);
+  v.setDirection(glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, -h, h), glm::dvec3(0, -h, -h)),
+                 true);
+  const std::string path = dir.path("tilted.mha");
+  writeVolume(path, v);
+  EXPECT_EQ(headerLine(readTextFile(path), "AnatomicalOrientation"), "AnatomicalOrientation = RPS");
+  const Volume back = loadVolume(path);
+  EXPECT_TRUE(back.patientFrame());
+  expectSameVolume(v, back, 1e-12);
 }
 
 // A header (.mhd) and its raw data beside it read back as the volume written; the data are
