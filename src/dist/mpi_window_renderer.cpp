@@ -263,7 +263,9 @@ bool DistributedRenderer::collectWorker(bool always) {
   WorkerFrame done = worker_.get();  // rethrows what the worker threw
   worker_ = {};
   // The worker's frame loaded the process-wide GL functions from the brick's context: the
-  // window's again (the same GL library, so the pointers this thread used meanwhile held).
+  // window's again (the same GL library, so the pointers this thread used meanwhile held). The
+  // worker writes them while this thread may call through them: a race in form only, as every
+  // value written is the one already there; per-context function tables would remove it.
   if (window_) window_->makeCurrent();
   if (!done.drawn) {
     next_.reset();
