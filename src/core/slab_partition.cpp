@@ -28,32 +28,58 @@ double slabGridStart(double front, double thickness, double anchor) {
   return anchor + std::floor((front - anchor) / thickness) * thickness;
 }
 
+namespace {
+
+// Each splat's camera depth and depth variance, as the partition forms them: depth is affine in
+// (i,j,k), depth = d0 + i*di + j*dj + k*dk, a surface splat's moved along its normal; a volume
+// kernel's variance (W V'' W^T)_zz is the same for every voxel.
+class KernelDepths {
+ public:
+  KernelDepths(const glm::dvec3& origin, const glm::dmat4& view, const DepthExtent& extent)
+      : rotation_(extent.rotation),
+        row_(-view[0][2], -view[1][2], -view[2][2]),
+        sigma_(kernelSigma(extent.spacing, extent.kernelWidth)) {
+    const glm::dvec3& spacing = extent.spacing;
+    minSpacing_ = std::min({spacing.x, spacing.y, spacing.z});
+    d0_ = glm::dot(row_, origin) - view[3][2];
+    di_ = row_.x * spacing.x, dj_ = row_.y * spacing.y, dk_ = row_.z * spacing.z;
+    volumeVariance_ = cameraCovariance(rotation_, sigma_)[2][2];
+  }
+  // A splat and its attributes (null: none, not a surface splat).
+  void of(const PackedSplat& s, const PackedAttributes* attributes, double& depth,
+          double& variance) const {
+    depth = d0_ + SplatSet::i(s) * di_ + SplatSet::j(s) * dj_ + SplatSet::k(s) * dk_;
+    variance = volumeVariance_;
+    if (attributes && (attributes->nzKind >> 16) != 0) {
+      const UnpackedAttributes a = unpackAttributes(*attributes);
+      if (a.surface) {
+        depth += glm::dot(row_, a.normal) * a.offset * minSpacing_;
+        variance = surfaceCovariance(rotation_, sigma_, a.normal)[2][2];
+      }
+    }
+  }
+
+ private:
+  glm::dmat3 rotation_;
+  glm::dvec3 row_, sigma_;
+  double minSpacing_ = 1.0, d0_ = 0.0, di_ = 0.0, dj_ = 0.0, dk_ = 0.0, volumeVariance_ = 0.0;
+};
+
+}  // namespace
+
 double nearestKernelFront(const SplatSet& splats, const AttributeList& attributes,
                           const glm::dvec3& origin, const glm::dmat4& view, double nearCull,
                           const DepthExtent& extent, const std::function<bool(size_t)>& keep) {
   // The depth and reach of each splat exactly as build forms them.
   const auto& s = splats.splats();
   const size_t n = s.size();
-  const glm::dvec3& spacing = extent.spacing;
-  const double minSpacing = std::min({spacing.x, spacing.y, spacing.z});
-  const glm::dvec3 row(-view[0][2], -view[1][2], -view[2][2]);
-  const double d0 = glm::dot(row, origin) - view[3][2];
-  const double di = row.x * spacing.x, dj = row.y * spacing.y, dk = row.z * spacing.z;
-  const glm::dvec3 sigma = kernelSigma(spacing, extent.kernelWidth);
-  const double volumeVariance = cameraCovariance(extent.rotation, sigma)[2][2];
+  const KernelDepths depths(origin, view, extent);
   const bool surfaces = attributes.size() == n;
   double front = INFINITY;
   for (size_t m = 0; m < n; ++m) {
     if (keep && !keep(m)) continue;
-    double d = d0 + SplatSet::i(s[m]) * di + SplatSet::j(s[m]) * dj + SplatSet::k(s[m]) * dk;
-    double variance = volumeVariance;
-    if (surfaces && (attributes[m].nzKind >> 16) != 0) {
-      const UnpackedAttributes a = unpackAttributes(attributes[m]);
-      if (a.surface) {
-        d += glm::dot(row, a.normal) * a.offset * minSpacing;
-        variance = surfaceCovariance(extent.rotation, sigma, a.normal)[2][2];
-      }
-    }
+    double d, variance;
+    depths.of(s[m], surfaces ? &attributes[m] : nullptr, d, variance);
     if (!(d > nearCull)) continue;
     front = std::min(front, double(float(d - depthReach(extent.reach, variance, d))));
   }
@@ -69,30 +95,15 @@ void SlabPartition::build(const SplatSet& splats, const AttributeList& attribute
   const auto& s = splats.splats();
   const size_t n = s.size();
   if (n == 0 || !(thickness > 0.0)) return;
-  const glm::dvec3& spacing = extent.spacing;
-  const double minSpacing = std::min({spacing.x, spacing.y, spacing.z});
-  // Depth is affine in (i,j,k): depth = d0 + i*di + j*dj + k*dk.
-  const glm::dvec3 row(-view[0][2], -view[1][2], -view[2][2]);
-  const double d0 = glm::dot(row, origin) - view[3][2];
-  const double di = row.x * spacing.x, dj = row.y * spacing.y, dk = row.z * spacing.z;
-  // Depth variance of a volume kernel: (W V'' W^T)_zz, the same for every voxel.
-  const glm::dvec3 sigma = kernelSigma(spacing, extent.kernelWidth);
-  const double volumeVariance = cameraCovariance(extent.rotation, sigma)[2][2];
+  const KernelDepths depths(origin, view, extent);
   const bool surfaces = attributes.size() == n;
   lo_.resize(n);
   hi_.resize(n);
   double lo = INFINITY, hi = -INFINITY;
   nearestCenter_ = INFINITY;
   for (size_t m = 0; m < n; ++m) {
-    double d = d0 + SplatSet::i(s[m]) * di + SplatSet::j(s[m]) * dj + SplatSet::k(s[m]) * dk;
-    double variance = volumeVariance;
-    if (surfaces && (attributes[m].nzKind >> 16) != 0) {
-      const UnpackedAttributes a = unpackAttributes(attributes[m]);
-      if (a.surface) {
-        d += glm::dot(row, a.normal) * a.offset * minSpacing;
-        variance = surfaceCovariance(extent.rotation, sigma, a.normal)[2][2];
-      }
-    }
+    double d, variance;
+    depths.of(s[m], surfaces ? &attributes[m] : nullptr, d, variance);
     if (!(d > nearCull)) {
       lo_[m] = NAN;
       continue;
