@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <iostream>
 #include <new>
 #include <stdexcept>
@@ -234,79 +235,62 @@ bool DistributedSession::splitByVisibleVoxels(const Options& options) {
 }
 
 bool DistributedSession::readVoxels(bool read, const VoxelRegion& region) {
-  if (source_->chunked()) return tradeVoxels(read, region);
-  // A scattered source sends the regions from rank 0: every rank takes part when any reads.
+  // A scattered source sends the regions from rank 0, a chunked one trades the ghosts: every
+  // rank takes part when any reads.
+  const bool chunked = source_->chunked();
   int any = read ? 1 : 0;
-  if (source_->scattered()) MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_LOR, comm_);
+  if (chunked || source_->scattered())
+    MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_LOR, comm_);
   if (!any) return true;
   std::string error;
-  try {
-    Volume v = source_->readShared(read ? region : VoxelRegion{}, comm_);
-    if (read) {
-      volume_ = std::move(v);
-      region_ = region;
+  const auto attempt = [&](const std::function<void()>& step) {
+    try {
+      step();
+    } catch (const std::bad_alloc&) {
+      error = outOfMemory(region);
+    } catch (const std::exception& e) {
+      error = e.what();
     }
-  } catch (const std::bad_alloc&) {
-    error = outOfMemory(region);
-  } catch (const std::exception& e) {
-    error = e.what();
-  }
-  return !anyFailed(error, comm_);
-}
-
-bool DistributedSession::tradeVoxels(bool read, const VoxelRegion& region) {
-  int any = read ? 1 : 0;
-  MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_LOR, comm_);
-  if (!any) return true;
-  // Every rank's region; a rank that keeps what it holds names its brick alone (it takes
-  // nothing, and gives its brick's voxels to the others' regions).
-  VoxelRegion brickRegion;
-  for (size_t a = 0; a < 3; ++a)
-    brickRegion.lo[a] = brick_.low[a], brickRegion.hi[a] = brick_.high[a];
-  const VoxelRegion wanted = read ? region : brickRegion;
-  std::vector<int64_t> all(size_t(size_) * 6);
-  const int64_t mine[6] = {wanted.lo[0], wanted.lo[1], wanted.lo[2],
-                           wanted.hi[0], wanted.hi[1], wanted.hi[2]};
-  MPI_Allgather(mine, 6, MPI_INT64_T, all.data(), 6, MPI_INT64_T, comm_);
-  std::vector<VoxelRegion> regions(static_cast<size_t>(size_));
-  for (size_t r = 0; r < regions.size(); ++r)
-    for (size_t a = 0; a < 3; ++a) {
-      regions[r].lo[a] = all[r * 6 + a];
-      regions[r].hi[a] = all[r * 6 + 3 + a];
-    }
-  // This rank's brick: cut from what it holds where that holds it, else read alone.
-  std::string error;
-  Volume own;
-  try {
-    if (!brick_.empty()) {
-      bool held = !volume_.empty();
-      for (size_t a = 0; a < 3; ++a)
-        held = held && region_.lo[a] <= brick_.low[a] && brick_.high[a] <= region_.hi[a];
-      if (held) {
-        VoxelRange range;
-        for (size_t a = 0; a < 3; ++a) {
-          range.low[a] = brick_.low[a] - region_.lo[a];
-          range.high[a] = brick_.high[a] - region_.lo[a] - 1;
-        }
-        own = cropVolume(volume_, range);
-      } else {
-        own = source_->read(brickRegion);
+  };
+  Volume v;
+  if (chunked) {
+    // Each rank reads its brick alone (or cuts it from what it holds) and the ghosts come from
+    // the ranks owning them; a rank that keeps what it holds names its brick alone as its region
+    // (it takes nothing, and gives its brick's voxels to the others' regions).
+    const VoxelRegion brick = grownRegion(brick_, {0, 0, 0}, grid().dims);
+    const VoxelRegion wanted = read ? region : brick;
+    std::vector<int64_t> all(size_t(size_) * 6);
+    const int64_t mine[6] = {wanted.lo[0], wanted.lo[1], wanted.lo[2],
+                             wanted.hi[0], wanted.hi[1], wanted.hi[2]};
+    MPI_Allgather(mine, 6, MPI_INT64_T, all.data(), 6, MPI_INT64_T, comm_);
+    std::vector<VoxelRegion> regions(static_cast<size_t>(size_));
+    for (size_t r = 0; r < regions.size(); ++r)
+      for (size_t a = 0; a < 3; ++a) {
+        regions[r].lo[a] = all[r * 6 + a];
+        regions[r].hi[a] = all[r * 6 + 3 + a];
       }
-    }
-  } catch (const std::exception& e) {
-    error = e.what();
+    Volume own;
+    attempt([&] {
+      if (brick_.empty()) return;
+      if (volume_.empty() || !contains(region_, brick)) {
+        own = source_->read(brick);
+        return;
+      }
+      VoxelRange range;
+      for (size_t a = 0; a < 3; ++a) {
+        range.low[a] = brick.lo[a] - region_.lo[a];
+        range.high[a] = brick.hi[a] - region_.lo[a] - 1;
+      }
+      own = cropVolume(volume_, range);
+    });
+    if (anyFailed(error, comm_)) return false;
+    attempt([&] { v = exchangeGhosts(own, split_.bricks, regions, comm_); });
+  } else {
+    attempt([&] { v = source_->readShared(read ? region : VoxelRegion{}, comm_); });
   }
-  if (anyFailed(error, comm_)) return false;
-  try {
-    Volume v = exchangeGhosts(own, split_.bricks, regions, comm_);
-    if (read) {
-      volume_ = std::move(v);
-      region_ = region;
-    }
-  } catch (const std::bad_alloc&) {
-    error = outOfMemory(region);
-  } catch (const std::exception& e) {
-    error = e.what();
+  if (read && error.empty()) {
+    volume_ = std::move(v);
+    region_ = region;
   }
   return !anyFailed(error, comm_);
 }

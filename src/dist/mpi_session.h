@@ -83,12 +83,10 @@ class DistributedSession {
 
  private:
   DistributedSession(const Options& options, MPI_Comm comm);
-  // Reads `region` into volume_ where `read` (collective where the source is scattered: rank 0
-  // sends the regions of every rank that reads). False on every rank after one line.
+  // Reads `region` into volume_ where `read`: collective where the source is scattered (rank 0
+  // sends the regions of every rank that reads) or chunked (each rank reads its brick alone and
+  // the ranks trade the ghost voxels). False on every rank after one line.
   bool readVoxels(bool read, const VoxelRegion& region);
-  // readVoxels for a chunked() source: the ranks read their bricks alone (or keep what they
-  // hold) and trade the ghost voxels. Collective when any rank reads.
-  bool tradeVoxels(bool read, const VoxelRegion& region);
   // Gives the brick volume just read the whole's statistics and data box.
   void finishBrick();
   // Splits again balanced by the voxels visible under the agreed transfer function and reads
