@@ -362,12 +362,11 @@ std::unique_ptr<BrickSource> BrickSource::open(const Options& o, MPI_Comm comm) 
     error = e.what();
   }
   if (anyFailed(error, comm)) return nullptr;
-  int whole = source ? 0 : 1, first = whole;
-  MPI_Bcast(&first, 1, MPI_INT, 0, comm);
-  if (anyFailed(whole == first ? ""
-                               : "this rank opens another kind of volume than rank 0 (are the "
-                                 "files the same on every node?)",
-                comm))
+  const bool whole = !source;
+  if (differsFromRank0(whole ? 1 : 0,
+                       "this rank opens another kind of volume than rank 0 (are the files the "
+                       "same on every node?)",
+                       comm))
     return nullptr;
   if (whole) {
     // Rank 0 alone loads the file and tells the others its grid, voxel type and, for a synthetic

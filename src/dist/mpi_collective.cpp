@@ -23,6 +23,12 @@ bool anyFailed(const std::string& error, MPI_Comm comm) {
   return true;
 }
 
+bool differsFromRank0(uint64_t mine, const std::string& problem, MPI_Comm comm) {
+  uint64_t first = mine;
+  MPI_Bcast(&first, 1, MPI_UINT64_T, 0, comm);
+  return anyFailed(mine == first ? "" : problem, comm);
+}
+
 void abortAll(const std::string& error, MPI_Comm comm) {
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);

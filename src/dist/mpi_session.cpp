@@ -183,13 +183,10 @@ std::unique_ptr<DistributedSession> DistributedSession::open(const Options& opti
   if (anyFailed(error, comm)) return nullptr;
 
   // The ranks agree on the grid, the statistics, the transfer function and the camera.
-  const uint64_t mine = sceneFingerprint(grid, s->volume_, s->transferFunction_, s->initialCamera_);
-  uint64_t first = mine;
-  MPI_Bcast(&first, 1, MPI_UINT64_T, 0, comm);
-  if (anyFailed(mine == first ? ""
-                              : "this rank read another volume, transfer function or camera "
-                                "than rank 0 (are the files the same on every node?)",
-                comm))
+  if (differsFromRank0(sceneFingerprint(grid, s->volume_, s->transferFunction_, s->initialCamera_),
+                       "this rank read another volume, transfer function or camera than rank 0 "
+                       "(are the files the same on every node?)",
+                       comm))
     return nullptr;
   if (options.split == "visible" && s->size_ > 1 && !s->splitByVisibleVoxels(options))
     return nullptr;
