@@ -16,6 +16,7 @@
 #include "app/scene.h"
 #include "app/turntable.h"
 #include "core/orientation_axes.h"
+#include "core/stopwatch.h"
 #include "core/volume_orientation.h"
 #include "dist/brick_clip.h"
 #include "dist/brick_ghosts.h"
@@ -35,10 +36,6 @@ namespace ewa::dist {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // The camera in the frame where voxel (i,j,k) sits at origin + (i,j,k) * spacing
 // (cameraInVolumeFrame for the whole grid).
@@ -167,7 +164,7 @@ std::vector<float> renderBrick(const Volume& volume, const VoxelBox& brick,
   // X-ray and MIP draw one slab of unbounded thickness: no grid to share.
   const double anchor = settings.mode == RenderMode::Composite ? slabAnchor : NAN;
   std::vector<float> picture = renderer.render(tf, camera, settings, width, height, anchor, splats);
-  if (ms) *ms = msSince(start);
+  if (ms) *ms = millisecondsSince(start);
   if (note) *note = renderer.note();
   if (picture.size() != size_t(width) * size_t(height) * 4)
     throw std::runtime_error("the renderer returned no picture");
@@ -182,6 +179,16 @@ std::vector<std::string> inputFiles(const DistributedSession& session, const Opt
   for (const std::string& file : {options.file, options.tfFile, options.bookmarks})
     if (!file.empty()) inputs.push_back(file);
   return inputs;
+}
+
+// Rank 0's picture of a frame: the final pass over the composite, and the axes where asked.
+Image8 finishedFrame(const DistributedSession& session, const std::vector<float>& whole,
+                     const Camera& camera, const RenderSettings& settings, const Options& o) {
+  Image8 image = finishPicture(whole, o.width, o.height, settings);
+  if (o.axes)
+    drawStrokes(image, orientationAxes(camera.rotation(), session.grid().patientFrame,
+                                       axesPlacement(image.width, image.height)));
+  return image;
 }
 
 // --turntable and --tour: ewaview's camera path and frame loop (writeFrames), each frame one
@@ -214,10 +221,7 @@ int renderDistributedFrames(DistributedSession& session, const Options& o) {
                         &whole))
       return false;
     if (rank == 0) {
-      *picture = finishPicture(whole, o.width, o.height, settings);
-      if (o.axes)
-        drawStrokes(*picture, orientationAxes(stop.camera.rotation(), session.grid().patientFrame,
-                                              axesPlacement(picture->width, picture->height)));
+      *picture = finishedFrame(session, whole, stop.camera, settings, o);
       *note = session.note();
     }
     return true;
@@ -234,7 +238,6 @@ int renderDistributed(const Options& options, MPI_Comm comm) {
   if (!session) return 1;
   if (options.turntable > 0 || options.tour > 0) return renderDistributedFrames(*session, options);
   const int rank = session->rank();
-  const WholeGrid& grid = session->grid();
   const Camera& camera = session->initialCamera();
   const RenderSettings& settings = options.render;
   const int w = options.width, h = options.height;
@@ -257,11 +260,7 @@ int renderDistributed(const Options& options, MPI_Comm comm) {
     std::cerr << "ewaview-mpi: " << session->note() << std::endl;
   if (rank == 0) {
     try {
-      Image8 image = finishPicture(whole, w, h, settings);
-      if (options.axes)
-        drawStrokes(image, orientationAxes(camera.rotation(), grid.patientFrame,
-                                           axesPlacement(image.width, image.height)));
-      writePng(options.output, image);
+      writePng(options.output, finishedFrame(*session, whole, camera, settings, options));
       if (options.stats) std::cout << frameStatsJson(*session, w, h) << std::endl;
     } catch (const std::exception& e) {
       std::cerr << "ewaview-mpi: " << oneLine(e.what()) << std::endl;
@@ -274,12 +273,10 @@ int renderDistributed(const Options& options, MPI_Comm comm) {
 
 std::string frameStatsJson(const DistributedSession& session, int w, int h) {
   const std::vector<RankFigures>& figures = session.figures();
-  double compositeMs = 0.0;
-  for (const RankFigures& f : figures) compositeMs = std::max(compositeMs, f.compositeMs);
   const std::array<int64_t, 3>& ghost = session.ghost();
   std::ostringstream json;
   json << "{\"ranks\":" << session.size() << ",\"width\":" << w << ",\"height\":" << h
-       << ",\"composite_ms\":" << compositeMs
+       << ",\"composite_ms\":" << session.slowestCompositeMs()
        << ",\"picture_bytes\":" << size_t(w) * size_t(h) * 4 * sizeof(float) << ",\"ghost\":["
        << ghost[0] << "," << ghost[1] << "," << ghost[2] << "],\"bricks\":[";
   for (size_t r = 0; r < figures.size(); ++r) {

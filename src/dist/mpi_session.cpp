@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "app/scene.h"
+#include "core/stopwatch.h"
 #include "core/volume_crop.h"
 #include "dist/brick_clip.h"
 #include "dist/brick_ghosts.h"
@@ -33,10 +34,6 @@ namespace ewa::dist {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // FNV-1a over bytes, folded into a double's exact integers so that MPI carries it as one.
 struct Fingerprint {
@@ -330,7 +327,7 @@ bool DistributedSession::render(const Camera& camera, const RenderSettings& sett
   } catch (const std::exception& e) {
     error = e.what();
   }
-  renderMs += msSince(start);
+  renderMs += millisecondsSince(start);
   if (anyFailed(error, comm_)) return false;
 
   // One slab grid for all: each rank finds the nearest kernel among its own brick's splats
@@ -362,7 +359,7 @@ bool DistributedSession::render(const Camera& camera, const RenderSettings& sett
   } catch (const std::exception& e) {
     error = e.what();
   }
-  renderMs += msSince(start);
+  renderMs += millisecondsSince(start);
   if (anyFailed(error, comm_)) return false;
   double anchor = INFINITY;
   MPI_Allreduce(&front, &anchor, 1, MPI_DOUBLE, MPI_MIN, comm_);
@@ -390,7 +387,7 @@ bool DistributedSession::render(const Camera& camera, const RenderSettings& sett
   } catch (const std::exception& e) {
     error = e.what();
   }
-  renderMs += msSince(start);
+  renderMs += millisecondsSince(start);
   if (anyFailed(error, comm_)) return false;
 
   // Composite: blended in visibility order, or summed (X-ray) or maximal (MIP) per pixel.
@@ -411,7 +408,7 @@ bool DistributedSession::render(const Camera& camera, const RenderSettings& sett
   } catch (const std::exception& e) {
     abortAll(e.what(), comm_);
   }
-  const double compositeMs = msSince(compositeStart);
+  const double compositeMs = millisecondsSince(compositeStart);
 
   // Each rank's figures and whether it has a note, on rank 0.
   static_assert(sizeof(RankFigures) % sizeof(double) == 0, "RankFigures: doubles only");
@@ -436,6 +433,18 @@ bool DistributedSession::render(const Camera& camera, const RenderSettings& sett
   MPI_Bcast(note.data(), longest, MPI_CHAR, first, comm_);
   note_ = rank_ == 0 ? note : std::string();
   return true;
+}
+
+double DistributedSession::slowestRenderMs() const {
+  double ms = 0.0;
+  for (const RankFigures& f : figures_) ms = std::max(ms, f.renderMs);
+  return ms;
+}
+
+double DistributedSession::slowestCompositeMs() const {
+  double ms = 0.0;
+  for (const RankFigures& f : figures_) ms = std::max(ms, f.compositeMs);
+  return ms;
 }
 
 }  // namespace ewa::dist

@@ -78,6 +78,9 @@ class DistributedSession {
               int width, int height, std::vector<float>* whole);
   // Rank 0: each rank's figures of the last frame; empty elsewhere.
   const std::vector<RankFigures>& figures() const { return figures_; }
+  // Rank 0: the slowest rank's render and composite milliseconds of the last frame.
+  double slowestRenderMs() const;
+  double slowestCompositeMs() const;
   // Rank 0: the renderer's note of the last frame on any rank ("" when none).
   const std::string& note() const { return note_; }
 

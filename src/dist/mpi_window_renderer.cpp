@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/stopwatch.h"
 #include "dist/mpi_collective.h"
 #include "dist/mpi_render.h"
 #include "dist/mpi_session.h"
@@ -19,10 +20,6 @@ namespace ewa::dist {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // Rank 0's bytes to every rank: their size, then the bytes (each rank sizes its buffer first).
 void broadcastBytes(std::vector<uint8_t>* bytes, MPI_Comm comm) {
@@ -75,7 +72,7 @@ bool ClusterLink::draw(const FrameDescription& frame, std::vector<float>* pictur
     failed_ = true;
     return false;
   }
-  std::vector<std::string> lines = makeLines(frame.width, frame.height, msSince(start));
+  std::vector<std::string> lines = makeLines(frame.width, frame.height, millisecondsSince(start));
   const std::lock_guard<std::mutex> lock(linesMutex_);
   lines_ = std::move(lines);
   return true;
@@ -89,18 +86,6 @@ void ClusterLink::quit(int status) {
   frame.exitStatus = status;
   std::vector<uint8_t> bytes = serializeFrame(frame);
   broadcastBytes(&bytes, session_.comm());
-}
-
-double ClusterLink::slowestRenderMs() const {
-  double ms = 0.0;
-  for (const RankFigures& f : session_.figures()) ms = std::max(ms, f.renderMs);
-  return ms;
-}
-
-double ClusterLink::slowestCompositeMs() const {
-  double ms = 0.0;
-  for (const RankFigures& f : session_.figures()) ms = std::max(ms, f.compositeMs);
-  return ms;
 }
 
 std::vector<std::string> ClusterLink::statisticsLines() const {
@@ -254,7 +239,7 @@ void DistributedRenderer::startWorker(const FrameDescription& frame) {
     // window's thread may bind it.
     release();
     if (done.drawn) done.image = finishPicture(picture, frame.width, frame.height, frame.settings);
-    done.wallMs = msSince(start);
+    done.wallMs = millisecondsSince(start);
     return done;
   });
 }
@@ -295,7 +280,7 @@ bool DistributedRenderer::stepFrame(double budgetMs) {
     if (!collectWorker(!next_)) return frameShown_ = true;  // failed: the window closes
     if (!next_) {
       frameShown_ = true;
-      stats_.renderMs = msSince(begun_);
+      stats_.renderMs = millisecondsSince(begun_);
       return true;
     }
     // Shown a frame older than the newest asked: that one now.
@@ -309,7 +294,7 @@ double DistributedRenderer::frameProgress() const {
   if (synchronousFrame_) return Renderer::frameProgress();
   if (frameShown_) return 1.0;
   if (workerMs_ <= 0.0 || next_) return 0.0;
-  return std::min(0.99, msSince(workerStart_) / workerMs_);
+  return std::min(0.99, millisecondsSince(workerStart_) / workerMs_);
 }
 
 void DistributedRenderer::upload(int width, int height) {
@@ -337,8 +322,8 @@ void DistributedRenderer::show(int width, int height, Clock::time_point start) {
   stats_.note = link_->session().note();
   // The stage lines of the panel: the slowest rank's brick (classification included) and the
   // slowest rank's part of the composite; the ranks' own lines follow them.
-  stats_.splatMs = link_->slowestRenderMs();
-  stats_.compositeMs = link_->slowestCompositeMs();
+  stats_.splatMs = link_->session().slowestRenderMs();
+  stats_.compositeMs = link_->session().slowestCompositeMs();
   // The whole volume's splats are the bricks' together; the slabs are one grid for all.
   for (const RankFigures& f : link_->session().figures()) {
     stats_.splatsTotal += size_t(f.splats);
@@ -347,7 +332,7 @@ void DistributedRenderer::show(int width, int height, Clock::time_point start) {
     stats_.slabs = std::max(stats_.slabs, size_t(f.slabs));
     stats_.cpu = stats_.cpu || f.cpu > 0.0;
   }
-  stats_.renderMs = msSince(start);
+  stats_.renderMs = millisecondsSince(start);
 }
 
 }  // namespace ewa::dist

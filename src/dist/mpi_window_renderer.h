@@ -44,9 +44,6 @@ class ClusterLink {
   // The statistics panel's lines of the last frame: the ranks, their bricks, each one's render
   // and composite times. Any thread, also while draw() runs on another (the last frame's).
   std::vector<std::string> statisticsLines() const;
-  // The slowest rank's render and composite milliseconds of the last frame.
-  double slowestRenderMs() const;
-  double slowestCompositeMs() const;
 
  private:
   // The lines of the frame just drawn (figures, split and ghosts as draw() left them).

@@ -4,7 +4,7 @@
 # `on_fail` (a function run before a failure exits). Without X it skips (exit 77, CTest's skip)
 # or, with CI=true, fails: CI must not pass by skipping. Without a display it runs the script
 # again under Xvfb. It then gives the script `work` (a scratch folder removed at exit), `pid`
-# (set it to the program's; killed at exit), fail, log and poll.
+# (set it to the program's; killed at exit), fail, log, poll and quit_window.
 skip() {
   case "${CI:-}" in
     "" | 0 | false) echo "SKIP (would fail with CI=true): $*"; exit 77 ;;
@@ -45,4 +45,16 @@ poll() {  # poll DESCRIPTION COMMAND...: waits up to `timeout` seconds for COMMA
     kill -0 "$pid" 2>/dev/null || fail "$program exited while waiting for $what"
     sleep 0.3
   done
+}
+
+# Quits the window `wid` with Q: the program must end within a minute, with status 0.
+quit_window() {  # quit_window NAME
+  xdotool key --window "$wid" q
+  local start=$SECONDS rc
+  while kill -0 "$pid" 2>/dev/null; do
+    [ $((SECONDS - start)) -ge 60 ] && fail "Q did not close the $1"
+    sleep 0.3
+  done
+  wait "$pid"; rc=$?; pid=""
+  [ "$rc" -eq 0 ] || fail "the $1's $program exited with $rc"
 }

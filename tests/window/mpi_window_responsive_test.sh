@@ -95,13 +95,6 @@ for step in 1 2 3; do xdotool mousemove --window "$wid" $((mx + 15 * step)) $my;
 xdotool mouseup 1
 lines=$(wc -l <"$work/stderr")
 poll "the refinement after the third orbit" refining
-xdotool key --window "$wid" q
-start=$SECONDS
-while kill -0 "$pid" 2>/dev/null; do
-  [ $((SECONDS - start)) -ge 60 ] && fail "Q did not end the ranks"
-  sleep 0.3
-done
-wait "$pid"; rc=$?; pid=""
-[ "$rc" -eq 0 ] || fail "mpirun exited with $rc"
+quit_window window
 cp "$work/stderr" "$out/stderr.txt"
 echo "PASS"

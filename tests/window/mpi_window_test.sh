@@ -54,12 +54,5 @@ orbit_diff=$(differ "$out/0_start.png" "$out/1_orbit.png" "$volume_crop")
 greater "$orbit_diff" $((380 * 650 / 50)) || fail "the orbit changed only $orbit_diff pixels"
 
 log "quit"
-xdotool key --window "$wid" q
-start=$SECONDS
-while kill -0 "$pid" 2>/dev/null; do
-  [ $((SECONDS - start)) -ge 60 ] && fail "Q did not end the ranks"
-  sleep 0.3
-done
-wait "$pid"; rc=$?; pid=""
-[ "$rc" -eq 0 ] || fail "mpirun exited with $rc"
+quit_window window
 echo "PASS"

@@ -67,12 +67,5 @@ for knob in $knobs; do
 done
 import -window "$wid" "$out/panel_advanced.png" 2>/dev/null
 
-xdotool key --window "$wid" q
-start=$SECONDS
-while kill -0 "$pid" 2>/dev/null; do
-  [ $((SECONDS - start)) -ge 60 ] && fail "Q did not close the window"
-  sleep 0.3
-done
-wait "$pid"; rc=$?; pid=""
-[ "$rc" -eq 0 ] || fail "ewaview exited with $rc"
+quit_window window
 echo "PASS: sections in order; knobs only under Advanced rendering; panel ${pw}x${ph}; default volume coverage $coverage"

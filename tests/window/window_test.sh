@@ -73,18 +73,6 @@ settled() {  # settled RESULT BEFORE CROP
   cp "$work/b.png" "$result"
 }
 
-# Quit with Q: the process must end, with status 0.
-quit_window() {  # quit_window NAME
-  xdotool key --window "$wid" q
-  local start=$SECONDS rc
-  while kill -0 "$pid" 2>/dev/null; do
-    [ $((SECONDS - start)) -ge 60 ] && fail "Q did not close the $1"
-    sleep 0.3
-  done
-  wait "$pid"; rc=$?; pid=""
-  [ "$rc" -eq 0 ] || fail "the $1's ewaview exited with $rc"
-}
-
 # Starts ewaview on FILE (relative to the scratch folder) with its own settings folder NAME and
 # EWAVIEW_PRINT_LAYOUT, fresh stdout and stderr logs, and waits for its window.
 start_window() {  # start_window NAME FILE [OPTION...]
