@@ -16,14 +16,19 @@ inline double expOf(double x) {
   return std::exp(x);
 }
 inline float expOf(float x) {
-  // 2^n 2^f with n = round(x log2 e), |f| <= 1/2; 2^f = e^(f ln 2) by its Taylor series.
+  // 2^n 2^f with n = round(x log2 e), |f| <= 1/2; 2^f = e^(f ln 2) by its Taylor series. n is
+  // rounded by adding 1.5 * 2^23 (the sum's low bits hold it), without a float-to-int conversion.
+  constexpr float kRound = 12582912.0f;
   const float t = std::min(std::max(x, -87.0f), 88.0f) * 1.44269504f;
-  const int n = int(t + (t < 0.0f ? -0.5f : 0.5f));
-  const float g = (t - float(n)) * 0.693147181f;
+  const float shifted = t + kRound;
+  const float n = shifted - kRound;
+  const float g = (t - n) * 0.693147181f;
   const float p =
       1.0f + g * (1.0f + g * (0.5f + g * (1.0f / 6.0f +
-                                          g * (1.0f / 24.0f + g * (1.0f / 120.0f + g / 720.0f)))));
-  const int32_t bits = (n + 127) << 23;
+                                          g * (1.0f / 24.0f + g * (1.0f / 120.0f + g * (1.0f / 720.0f))))));
+  int32_t bits;
+  std::memcpy(&bits, &shifted, sizeof bits);
+  bits = (bits - 0x4B400000 + 127) << 23;  // n's bits less the constant's, as 2^n's exponent
   float scale;
   std::memcpy(&scale, &bits, sizeof scale);
   return p * scale;
@@ -86,8 +91,9 @@ template <typename T>
 inline T windowedGaussianOf(T r, T cutoff) {
   // Computed (t clamped at 0 beyond the cutoff), then masked by a product, not a select, which
   // GCC may turn into a branch around the exp: the CPU splatter's pixel loops vectorize.
+  // The reciprocal's product, not a quotient: a loop takes the reciprocal out and divides none.
   const T inside = std::min(r, cutoff);
-  const T t = T(1) - inside / cutoff;
+  const T t = T(1) - inside * (T(1) / cutoff);
   const T w = expOf(T(-0.5) * inside) * t * t;
   return w * (r > cutoff ? T(0) : T(1));
 }

@@ -57,36 +57,34 @@ template <typename Take>
 __attribute__((always_inline)) inline void forEachTileItem(const TileWork& work, bool reverse,
                                                            Take&& take) {
   const auto& runs = *work.bins;
+  const SplatRecord* records = work.records->data();
+  // The records lie in the volume's order, the tile's items jump about them: each is asked
+  // for from memory a few items ahead, so it is in the cache when its turn comes.
+  constexpr size_t kAhead = 8;
+  const auto prefetch = [&](const TileCompositor::Item& item) __attribute__((always_inline)) {
+    __builtin_prefetch(records + (item.entry & SlabPartition::kIndexMask));
+  };
   if (!reverse) {
-    for (const auto& run : runs)
-      for (const TileCompositor::Item& item : run[work.tile])
-        if (!take(item)) return;
+    for (const auto& run : runs) {
+      const std::vector<TileCompositor::Item>& list = run[work.tile];
+      const size_t n = list.size();
+      for (size_t i = 0; i < std::min(n, kAhead); ++i) prefetch(list[i]);
+      for (size_t i = 0; i < n; ++i) {
+        if (i + kAhead < n) prefetch(list[i + kAhead]);
+        if (!take(list[i])) return;
+      }
+    }
     return;
   }
   for (size_t r = runs.size(); r-- > 0;) {
     const std::vector<TileCompositor::Item>& list = runs[r][work.tile];
-    for (size_t i = list.size(); i-- > 0;)
+    const size_t n = list.size();
+    for (size_t i = 0; i < std::min(n, kAhead); ++i) prefetch(list[n - 1 - i]);
+    for (size_t i = n; i-- > 0;) {
+      if (i >= kAhead) prefetch(list[i - kAhead]);
       if (!take(list[i])) return;
+    }
   }
-}
-
-// The columns [xa, xb] (tile-local, within [x0, x1]) of the footprint row `dy` pixels from its
-// centre whose pixel centres may lie within the cutoff: the conic's quadratic in dx solved
-// (`cx`: the centre's tile-local x), widened by a pixel against rounding, so the pixel loops'
-// own test decides as before and the picture is the same. False where the row misses.
-inline bool rowSpan(float qa, float qb, float qc, float dy, float cutoff, float cx, int x0, int x1,
-                    int& xa, int& xb) {
-  xa = x0;
-  xb = x1;
-  if (!(qa > 0.0f)) return true;
-  const float b = qb * dy;
-  const float disc = b * b - qa * (qc * dy * dy - cutoff);
-  if (disc < 0.0f) return false;
-  const float root = std::sqrt(disc);
-  // Pixel x's centre lies dx = x + 0.5 - cx from the footprint's.
-  xa = std::max(x0, int(std::floor(cx - 0.5f + (-b - root) / qa)) - 1);
-  xb = std::min(x1, int(std::ceil(cx - 0.5f + (-b + root) / qa)) + 1);
-  return xa <= xb;
 }
 
 // Calls `run(first, n)` for the row's columns [xa, xb]: one run of 8 pixels (one AVX2 vector)
@@ -217,8 +215,6 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
     for (int y = y0; y <= y1; ++y) {
       const float dy = float(py0 + y) + 0.5f - rec.box.y;
       const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
-      int rowX0, rowX1;
-      if (!rowSpan(qa, qb, qc, dy, cutoff, cx - float(px0), x0, x1, rowX0, rowX1)) continue;
       // Pixels [first, first + n) of the row; every term computed, each pixel's share masked.
       const auto addRun = [&](int first, auto n) __attribute__((always_inline)) {
         const int at = y * kTile + first;
@@ -239,7 +235,7 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
           // clippedSlabFraction in float, as the shaders take it.
           const float mu = rowMu + slopeX * dx;
           const float share = slabShareOf(mu, toErf, lo, hi, erfReach, halfScale, Series);
-          const bool take = (x >= rowX0) & (x <= rowX1) & (lv[i] > 0.0f) & (hi > lo);
+          const bool take = (x >= x0) & (x <= x1) & (lv[i] > 0.0f) & (hi > lo);
           const float weight = amplitude * windowedGaussianOf(std::min(r, cutoff), cutoff) * share;
           const float mask = take ? 1.0f : 0.0f;  // a product: no branch
           const float depth = weight * mask;
@@ -250,7 +246,7 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
         }
       };
       // A footprint within one half of the tile's row takes one vector of 8, else the row.
-      forRowRun(rowX0, rowX1, addRun);
+      forRowRun(x0, x1, addRun);
     }
     return true;
   });

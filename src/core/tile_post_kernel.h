@@ -232,8 +232,6 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
     for (int y = y0; y <= y1; ++y) {
       const float dy = float(py0 + y) + 0.5f - rec.box.y;
       const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
-      int rowX0, rowX1;
-      if (!rowSpan(qa, qb, qc, dy, cutoff, cx - float(px0), x0, x1, rowX0, rowX1)) continue;
       // Every plane a restrict pointer of its own, the samples written out: the loop vectorizes.
       const auto addRun = [&](int first, auto n) __attribute__((always_inline)) {
         const int at = y * kTile + first;
@@ -260,7 +258,7 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
           const float dx = xc[i] - cx;
           const float r = qa * dx * dx + 2.0f * qb * dx * dy + rowR;
           const float mu = rowMu + slopeX * dx;
-          const bool take = (x >= rowX0) & (x <= rowX1) & (lv[i] > 0.0f);
+          const bool take = (x >= x0) & (x <= x1) & (lv[i] > 0.0f);
           const float g = amplitude * halfScale *
                           windowedGaussianOf(r < cutoff ? r : cutoff, cutoff) *
                           (take ? 1.0f : 0.0f);
@@ -291,7 +289,7 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
           }
         }
       };
-      forRowRun(rowX0, rowX1, addRun);
+      forRowRun(x0, x1, addRun);
     }
     return true;
   });
@@ -339,8 +337,6 @@ __attribute__((always_inline)) inline void wholeTileOf(const TileWork& work) {
     for (int y = y0; y <= y1; ++y) {
       const float dy = float(py0 + y) + 0.5f - rec.box.y;
       const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
-      int rowX0, rowX1;
-      if (!rowSpan(qa, qb, qc, dy, cutoff, cx - float(px0), x0, x1, rowX0, rowX1)) continue;
       const auto addRun = [&](int first, auto n) __attribute__((always_inline)) {
         const int at = y * kTile + first;
         float* __restrict out = gathered + at;
@@ -358,13 +354,13 @@ __attribute__((always_inline)) inline void wholeTileOf(const TileWork& work) {
                         ? slabShareOf(mu, toErf, kn[i], kf[i], erfReach, halfScale, Series)
                         : 0.0f;
           }
-          const bool take = (x >= rowX0) & (x <= rowX1);
+          const bool take = (x >= x0) & (x <= x1);
           const float c = scale * windowedGaussianOf(r < cutoff ? r : cutoff, cutoff) * share *
                           (take ? 1.0f : 0.0f);
           out[i] = Mip ? std::max(out[i], c) : out[i] + c;
         }
       };
-      forRowRun(rowX0, rowX1, addRun);
+      forRowRun(x0, x1, addRun);
     }
     return true;
   });
