@@ -24,8 +24,9 @@ inline float expOf(float x) {
   const float n = shifted - kRound;
   const float g = (t - n) * 0.693147181f;
   const float p =
-      1.0f + g * (1.0f + g * (0.5f + g * (1.0f / 6.0f +
-                                          g * (1.0f / 24.0f + g * (1.0f / 120.0f + g * (1.0f / 720.0f))))));
+      1.0f +
+      g * (1.0f + g * (0.5f + g * (1.0f / 6.0f + g * (1.0f / 24.0f +
+                                                      g * (1.0f / 120.0f + g * (1.0f / 720.0f))))));
   int32_t bits;
   std::memcpy(&bits, &shifted, sizeof bits);
   bits = (bits - 0x4B400000 + 127) << 23;  // n's bits less the constant's, as 2^n's exponent
