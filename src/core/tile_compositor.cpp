@@ -49,6 +49,9 @@ void TileCompositor::bin(const std::vector<SplatRecord>& records,
     for (size_t b = runFirst[run]; b < runFirst[run + 1]; ++b) {
       const Slab& slab = slabs[b];
       for (uint32_t e = slab.first; e < slab.first + slab.count; ++e) {
+        // Records in the volume's order, entries in the slabs': each asked for ahead of its turn.
+        if (e + 16 < order.size())
+          __builtin_prefetch(&records[order[e + 16] & SlabPartition::kIndexMask]);
         const uint32_t entry = order[e];
         int x0, y0, x1, y1;
         if (!boxPixels(records[entry & SlabPartition::kIndexMask].box, width, height, x0, y0, x1,
