@@ -256,8 +256,8 @@ TEST_F(SplatUploadTest, AMovingLevelsImagesOfANewSizeAreMadeAhead) {
   const int level = 3;  // volume/4, image/2
   lod.render(level, scene.camera, settings, 64, 48);
   EXPECT_TRUE(lod.prepareImages(level, settings, 64, 48, 0.0));  // there: nothing to make
-  // A new size: the worker makes the images, a call with no time to wait returns at once.
-  EXPECT_FALSE(lod.prepareImages(level, settings, 128, 96, 1e-6));
+  // A new size: the worker makes the images, a call with no time to wait returns at once (with
+  // them only where the worker was quicker than the call's look).
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
   while (!lod.prepareImages(level, settings, 128, 96, 1e-6)) {
     ASSERT_LT(std::chrono::steady_clock::now(), deadline);
