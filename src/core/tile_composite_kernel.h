@@ -97,6 +97,22 @@ __attribute__((always_inline)) inline void forRowRun(int xa, int xb, Run&& run) 
     run(0, std::integral_constant<int, TileCompositor::kTile>());
 }
 
+// The tile's pixels still taking slabs, a bit a pixel and a word a row: a kernel's row whose
+// columns hold none is skipped (its pixels would each add a masked 0).
+struct LiveRows {
+  uint32_t bits[TileCompositor::kTile];
+  void update(const float* live) {
+    for (int y = 0; y < TileCompositor::kTile; ++y) {
+      uint32_t row = 0;
+      for (int x = 0; x < TileCompositor::kTile; ++x)
+        row |= uint32_t(live[y * TileCompositor::kTile + x] > 0.0f) << x;
+      bits[y] = row;
+    }
+  }
+  // The bits of columns x0 to x1.
+  static uint32_t columns(int x0, int x1) { return ((2u << x1) - 1u) & ~((1u << x0) - 1u); }
+};
+
 // One tile's pixels as planes (structure of arrays, rows kTile apart): a row of 16 pixels is
 // two AVX2 vectors.
 struct TilePlanes {
@@ -163,6 +179,8 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
     }
   }
   for (int x = 0; x < kTile; ++x) centreX[x] = float(px0 + x) + 0.5f;
+  LiveRows liveRows;
+  liveRows.update(live);
   int open = w * h;               // pixels below the termination opacity
   uint32_t current = UINT32_MAX;  // the slab being summed
   bool any = false;               // it has sums
@@ -185,6 +203,7 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
       live[p] = live[p] > 0.0f && image.a[p] < termination ? 1.0f : 0.0f;
       open += live[p] > 0.0f;
     }
+    liveRows.update(live);
     any = false;
   };
   forEachTileItem(work, backToFront, [&](const TileCompositor::Item& item) {
@@ -212,7 +231,9 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
     slabShareBoundsOf(zNear, zFar, openNear, openFar, -float(kClipUnbounded), float(kClipUnbounded),
                       wholeLo, wholeHi);
     any = true;
+    const uint32_t columns = LiveRows::columns(x0, x1);
     for (int y = y0; y <= y1; ++y) {
+      if (!(liveRows.bits[y] & columns)) continue;
       const float dy = float(py0 + y) + 0.5f - rec.box.y;
       const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
       // Pixels [first, first + n) of the row; every term computed, each pixel's share masked.

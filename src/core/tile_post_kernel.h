@@ -155,6 +155,8 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
     stretch[p] = float(rayStretch(s.proj, centre));
   }
   for (int x = 0; x < kTile; ++x) centreX[x] = float(px0 + x) + 0.5f;
+  LiveRows liveRows;
+  liveRows.update(live);
   int open = w * h;
   uint32_t current = UINT32_MAX, previous = UINT32_MAX;  // the slab summed, the one before
   bool any = false;
@@ -203,6 +205,7 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
       live[p] = image.a[p] < termination ? 1.0f : 0.0f;
       open += live[p] > 0.0f;
     }
+    liveRows.update(live);
     previous = current;
     any = false;
   };
@@ -229,7 +232,9 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
     const float slopeY = s.flatDepths ? 0.0f : rec.depth.z;
     const float toErf = 1.0f / (std::sqrt(2.0f) * rec.depth.w);
     any = true;
+    const uint32_t columns = LiveRows::columns(x0, x1);
     for (int y = y0; y <= y1; ++y) {
+      if (!(liveRows.bits[y] & columns)) continue;
       const float dy = float(py0 + y) + 0.5f - rec.box.y;
       const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
       // Every plane a restrict pointer of its own, the samples written out: the loop vectorizes.
