@@ -109,6 +109,12 @@ struct LiveRows {
       bits[y] = row;
     }
   }
+  // Whether any pixel takes more slabs (none: the tile is done).
+  bool any() const {
+    uint32_t all = 0;
+    for (uint32_t row : bits) all |= row;
+    return all != 0;
+  }
   // The bits of columns x0 to x1.
   static uint32_t columns(int x0, int x1) { return ((2u << x1) - 1u) & ~((1u << x0) - 1u); }
 };
@@ -181,12 +187,10 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
   for (int x = 0; x < kTile; ++x) centreX[x] = float(px0 + x) + 0.5f;
   LiveRows liveRows;
   liveRows.update(live);
-  int open = w * h;               // pixels below the termination opacity
   uint32_t current = UINT32_MAX;  // the slab being summed
   bool any = false;               // it has sums
   const auto finishSlab = [&]() __attribute__((always_inline)) {
     if (!any) return;
-    open = 0;
     for (int p = 0; p < kPixels; ++p) {
       // The slab pass's pre-classified composite: opacity 1 - exp(-depth), front to back.
       const float depth = sums.a[p];
@@ -201,7 +205,6 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
       image.a[p] = over * image.a[p] + under * alpha;
       sums.r[p] = sums.g[p] = sums.b[p] = sums.a[p] = 0.0f;
       live[p] = live[p] > 0.0f && image.a[p] < termination ? 1.0f : 0.0f;
-      open += live[p] > 0.0f;
     }
     liveRows.update(live);
     any = false;
@@ -209,7 +212,7 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
   forEachTileItem(work, backToFront, [&](const TileCompositor::Item& item) {
     if (item.slab != current) {
       finishSlab();
-      if (open == 0) return false;  // every pixel opaque: the tile is done
+      if (!liveRows.any()) return false;  // every pixel opaque: the tile is done
       current = item.slab;
     }
     const SplatRecord& rec = (*work.records)[item.entry & SlabPartition::kIndexMask];

@@ -157,7 +157,6 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
   for (int x = 0; x < kTile; ++x) centreX[x] = float(px0 + x) + 0.5f;
   LiveRows liveRows;
   liveRows.update(live);
-  int open = w * h;
   uint32_t current = UINT32_MAX, previous = UINT32_MAX;  // the slab summed, the one before
   bool any = false;
   const auto finishSlab = [&]() {
@@ -168,7 +167,6 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
         previous + (backToFront ? -1 : 1) == current &&  // no slab between them in this tile
         slabsAdjacent((*work.slabs)[previous], slab);
     const float zNear = float(slab.nearDepth), zFar = float(slab.farDepth);
-    open = 0;
     for (int p = 0; p < kPixels; ++p) {
       float psv[Samples], psw[Samples], weight = 0.0f;
       for (int k = 0; k < Samples; ++k) {
@@ -203,7 +201,6 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
         hasLast[p] = true;
       }
       live[p] = image.a[p] < termination ? 1.0f : 0.0f;
-      open += live[p] > 0.0f;
     }
     liveRows.update(live);
     previous = current;
@@ -212,7 +209,7 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
   forEachTileItem(work, backToFront, [&](const TileCompositor::Item& item) {
     if (item.slab != current) {
       finishSlab();
-      if (open == 0) return false;
+      if (!liveRows.any()) return false;
       current = item.slab;
     }
     const SplatRecord& rec = (*work.records)[item.entry & SlabPartition::kIndexMask];
