@@ -435,15 +435,9 @@ bool DistributedSession::render(const Camera& camera, const RenderSettings& sett
   return true;
 }
 
-double DistributedSession::slowestRenderMs() const {
+double DistributedSession::slowest(double RankFigures::*figure) const {
   double ms = 0.0;
-  for (const RankFigures& f : figures_) ms = std::max(ms, f.renderMs);
-  return ms;
-}
-
-double DistributedSession::slowestCompositeMs() const {
-  double ms = 0.0;
-  for (const RankFigures& f : figures_) ms = std::max(ms, f.compositeMs);
+  for (const RankFigures& f : figures_) ms = std::max(ms, f.*figure);
   return ms;
 }
 

@@ -79,13 +79,15 @@ class DistributedSession {
   // Rank 0: each rank's figures of the last frame; empty elsewhere.
   const std::vector<RankFigures>& figures() const { return figures_; }
   // Rank 0: the slowest rank's render and composite milliseconds of the last frame.
-  double slowestRenderMs() const;
-  double slowestCompositeMs() const;
+  double slowestRenderMs() const { return slowest(&RankFigures::renderMs); }
+  double slowestCompositeMs() const { return slowest(&RankFigures::compositeMs); }
   // Rank 0: the renderer's note of the last frame on any rank ("" when none).
   const std::string& note() const { return note_; }
 
  private:
   DistributedSession(const Options& options, MPI_Comm comm);
+  // The greatest of the ranks' `figure` in the last frame (rank 0).
+  double slowest(double RankFigures::*figure) const;
   // Reads `region` into volume_ where `read`: collective where the source is scattered (rank 0
   // sends the regions of every rank that reads) or chunked (each rank reads its brick alone and
   // the ranks trade the ghost voxels). False on every rank after one line.
