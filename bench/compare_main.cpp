@@ -135,6 +135,7 @@ void timeOpenGlMethods(Methods m, const Scene& scene, const Camera& cam, const R
     cpuRecords.push_back(c.cpuRecordsMs);
     cpuBins.push_back(c.cpuBinMs);
     cpuTiles.push_back(c.cpuTilesMs);
+    row.cpuBytesPerSplat = cpuBytesPerSplat(c);
     m.cpuPicture = m.ewa.readImage();
     return ms;
   };

@@ -34,6 +34,8 @@ const std::vector<Column>& columns() {
        "%10.1f"},
       {"cpu_bin_ms", "cpu_bin_ms", [](const CompareRow& r) { return r.cpuBinMs; }, "%10.1f"},
       {"cpu_tiles_ms", "cpu_tiles_ms", [](const CompareRow& r) { return r.cpuTilesMs; }, "%12.1f"},
+      {"cpu_B/splat", "cpu_bytes_per_splat", [](const CompareRow& r) { return r.cpuBytesPerSplat; },
+       "%11.1f"},
       {"shearwarp_ms", "shearwarp_ms", [](const CompareRow& r) { return r.shearWarpMs; }, "%12.1f"},
       {"vtk_cpu_ms", "vtk_cpu_ms", [](const CompareRow& r) { return r.vtkCpuMs; }, "%10.1f"},
       {"vtk_gpu_ms", "vtk_gpu_ms", [](const CompareRow& r) { return r.vtkGpuMs; }, "%10.1f"},

@@ -31,7 +31,8 @@ struct CompareRow {
   // colour), the binning to tiles, the tiles' splatting, classification and compositing.
   double cpuMs = -1;
   double cpuPartitionMs = -1, cpuRecordsMs = -1, cpuBinMs = -1, cpuTilesMs = -1;
-  size_t gpuBytes = 0;  // 0: the renderer does not count it
+  double cpuBytesPerSplat = -1;  // the CPU splatter's records and tile bins
+  size_t gpuBytes = 0;           // 0: the renderer does not count it
   double gpuBytesPerSplat = 0;
   size_t peakRss = 0;  // of the benchmark process after this row
 

@@ -20,6 +20,10 @@ double gpuBytesPerSplat(const RenderStats& s) {
   return s.gpuBytes > 0 && s.splatsTotal > 0 ? double(s.gpuBytes) / double(s.splatsTotal) : 0.0;
 }
 
+double cpuBytesPerSplat(const RenderStats& s) {
+  return s.splatsTotal > 0 ? double(s.cpuBytes) / double(s.splatsTotal) : 0.0;
+}
+
 namespace {
 
 // The names of one renderer's frame (every object of --stats holds them).
@@ -43,6 +47,7 @@ void putFrame(const RenderStats& s, nlohmann::ordered_json& j) {
     j["cpu_records_ms"] = s.cpuRecordsMs;
     j["cpu_bin_ms"] = s.cpuBinMs;
     j["cpu_tiles_ms"] = s.cpuTilesMs;
+    j["cpu_bytes_per_splat"] = cpuBytesPerSplat(s);
   }
   j["gpu_bytes"] = s.gpuBytes;
   const double perSplat = gpuBytesPerSplat(s);
@@ -74,6 +79,7 @@ RenderStats summed(const std::vector<RenderStats>& channels) {
     t.cpuRecordsMs += s.cpuRecordsMs;
     t.cpuBinMs += s.cpuBinMs;
     t.cpuTilesMs += s.cpuTilesMs;
+    t.cpuBytes += s.cpuBytes;
     t.gpuBytes += s.gpuBytes;
   }
   return t;

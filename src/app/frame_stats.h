@@ -15,6 +15,8 @@ size_t peakRssBytes();
 
 // GPU bytes the renderer holds per splat of the volume (splatsTotal): 0 when either is unknown.
 double gpuBytesPerSplat(const RenderStats& stats);
+// The CPU splatter's record and bin bytes per splat of the volume: 0 when no splats.
+double cpuBytesPerSplat(const RenderStats& stats);
 
 // {"renderer":..,"width":..,"height":..,"render_ms":..,"classify_ms":..,"partition_ms":..,
 //  "splat_ms":..,"final_ms":..,"splats":..,"splats_drawn":..,"slabs":..,"slab_entries":..,

@@ -1,8 +1,6 @@
-// makeSplatRecords: splatSetup of shaders/splat_common.glsl on the CPU, splat by splat in
-// parallel, from the footprint, reach, clip and shading C++ the shaders mirror.
+// SplatRecordMaker: splatSetup of shaders/splat_common.glsl on the CPU, splat by splat, from the
+// footprint, reach, clip and shading C++ the shaders mirror.
 #include "core/splat_records.h"
-
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -69,25 +67,22 @@ bool setupSplat(const PackedSplat& s, const PackedAttributes* attributes, const 
 
 }  // namespace
 
-void makeSplatRecords(const SplatSet& splats, const AttributeList& attributes,
-                      const SplatFrameSetup& setup, std::vector<SplatRecord>& out) {
-  const size_t n = splats.size();
-  out.resize(n);
-  const glm::dmat3 rotation(setup.view);
-  const glm::dvec3 sigma = kernelSigma(setup.spacing, setup.kernelWidth);
-  const glm::dmat3 cov = cameraCovariance(rotation, sigma);
-  const double voxelVolume = setup.spacing.x * setup.spacing.y * setup.spacing.z;
-  const bool withAttributes = attributes.size() == n;
-  const PackedSplat* list = splats.splats().data();
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096),
-                    [&](const tbb::blocked_range<size_t>& r) {
-                      for (size_t i = r.begin(); i != r.end(); ++i) {
-                        SplatRecord record;
-                        setupSplat(list[i], withAttributes ? &attributes[i] : nullptr, setup,
-                                   rotation, cov, sigma, voxelVolume, record);
-                        out[i] = record;
-                      }
-                    });
+SplatRecordMaker::SplatRecordMaker(const SplatSet& splats, const AttributeList& attributes,
+                                   const SplatFrameSetup& setup)
+    : splats_(splats.splats().data()),
+      attributes_(attributes.size() == splats.size() ? attributes.data() : nullptr),
+      count_(splats.size()),
+      setup_(setup),
+      rotation_(setup.view),
+      sigma_(kernelSigma(setup.spacing, setup.kernelWidth)),
+      covariance_(cameraCovariance(rotation_, sigma_)),
+      voxelVolume_(setup.spacing.x * setup.spacing.y * setup.spacing.z) {}
+
+SplatRecord SplatRecordMaker::operator()(size_t index) const {
+  SplatRecord record;
+  setupSplat(splats_[index], attributes_ ? &attributes_[index] : nullptr, setup_, rotation_,
+             covariance_, sigma_, voxelVolume_, record);
+  return record;
 }
 
 }  // namespace ewa

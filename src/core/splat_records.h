@@ -64,12 +64,33 @@ struct SplatFrameSetup {
 glm::vec4 transferAt(const std::vector<glm::vec4>& table, float value);
 glm::vec4 transferAt(const glm::vec4* table, int size, float value);
 
-// One record per splat of `splats` (attributes: one per splat, or none). Pre-classified: the
+// Each splat's record for a frame (attributes: one per splat, or none). Pre-classified: the
 // colour shaded with the voxel normal where the lighting is on and the splat has one, the
 // optical depth the voxel's extinction times its volume (a surface splat's its layer's).
-// Post-classified: the weight the voxel's volume, the colour its camera-space normal. In
-// parallel; `out` is resized.
-void makeSplatRecords(const SplatSet& splats, const AttributeList& attributes,
-                      const SplatFrameSetup& setup, std::vector<SplatRecord>& out);
+// Post-classified: the weight the voxel's volume, the colour its camera-space normal. The
+// frame's shared terms are taken once; records are made on demand, from any thread.
+class SplatRecordMaker {
+ public:
+  SplatRecordMaker(const SplatSet& splats, const AttributeList& attributes,
+                   const SplatFrameSetup& setup);
+  size_t size() const { return count_; }
+  // Splat `index`'s record; a zero record where it is not drawn.
+  SplatRecord operator()(size_t index) const;
+  // Asks for splat `index`'s voxel and attributes from memory ahead of its record.
+  void prefetch(size_t index) const {
+    __builtin_prefetch(splats_ + index);
+    if (attributes_) __builtin_prefetch(attributes_ + index);
+  }
+
+ private:
+  const PackedSplat* splats_;
+  const PackedAttributes* attributes_;  // null: none
+  size_t count_;
+  const SplatFrameSetup& setup_;
+  glm::dmat3 rotation_;
+  glm::dvec3 sigma_;
+  glm::dmat3 covariance_;
+  double voxelVolume_;
+};
 
 }  // namespace ewa

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/clip_share.h"
+#include "core/covered_length.h"
 #include "core/footprint_formulas.h"
 #include "core/tile_compositor.h"
 
@@ -19,20 +20,21 @@
 
 namespace ewa::tile_kernel {
 
-// What a tile's pixel loops share.
+// What a tile's pixel loops share in a pass.
 struct TileWork {
-  const std::vector<std::vector<std::vector<TileCompositor::Item>>>* bins;
-  const std::vector<SplatRecord>* records;
+  const std::vector<TileCompositor::Run>* bins;
+  const SplatRecord* records;  // the pass's, at the items' places
   const std::vector<Slab>* slabs;
   const TileCompositeSettings* settings;
   std::vector<glm::vec4>* picture;
+  TileCompositor::TileState* state;
   size_t tile;
   int px0, py0, w, h;
 };
 
 namespace EWA_TILE_ISA {
 
-constexpr int kPixels = TileCompositor::kTile * TileCompositor::kTile;
+constexpr int kPixels = TileCompositor::kPixels;
 
 // The pixels whose centres lie in `box` (centre, half extents; shaders/tile_range.glsl's
 // boxTiles before the division): false where none lies in the picture.
@@ -57,7 +59,7 @@ template <typename Take>
 __attribute__((always_inline)) inline void forEachTileItem(const TileWork& work, bool reverse,
                                                            Take&& take) {
   const auto& runs = *work.bins;
-  const SplatRecord* records = work.records->data();
+  const SplatRecord* records = work.records;
   // The records lie in the volume's order, the tile's items jump about them: each is asked
   // for from memory a few items ahead, so it is in the cache when its turn comes.
   constexpr size_t kAhead = 8;
@@ -66,8 +68,8 @@ __attribute__((always_inline)) inline void forEachTileItem(const TileWork& work,
   };
   if (!reverse) {
     for (const auto& run : runs) {
-      const std::vector<TileCompositor::Item>& list = run[work.tile];
-      const size_t n = list.size();
+      const TileCompositor::Item* list = run.items.data() + run.start[work.tile];
+      const size_t n = run.count(work.tile);
       for (size_t i = 0; i < std::min(n, kAhead); ++i) prefetch(list[i]);
       for (size_t i = 0; i < n; ++i) {
         if (i + kAhead < n) prefetch(list[i + kAhead]);
@@ -77,8 +79,8 @@ __attribute__((always_inline)) inline void forEachTileItem(const TileWork& work,
     return;
   }
   for (size_t r = runs.size(); r-- > 0;) {
-    const std::vector<TileCompositor::Item>& list = runs[r][work.tile];
-    const size_t n = list.size();
+    const TileCompositor::Item* list = runs[r].items.data() + runs[r].start[work.tile];
+    const size_t n = runs[r].count(work.tile);
     for (size_t i = 0; i < std::min(n, kAhead); ++i) prefetch(list[n - 1 - i]);
     for (size_t i = n; i-- > 0;) {
       if (i >= kAhead) prefetch(list[i - kAhead]);
@@ -151,6 +153,57 @@ inline void storeTile(const TileWork& work, Pixel&& pixel) {
           pixel(y * TileCompositor::kTile + x);
 }
 
+// The tile's pixels from the picture (what the passes before left), as planes.
+inline void loadTile(const TileWork& work, TilePlanes& image) {
+  const size_t width = size_t(work.settings->width);
+  for (int p = 0; p < kPixels; ++p) image.r[p] = image.g[p] = image.b[p] = image.a[p] = 0.0f;
+  for (int y = 0; y < work.h; ++y)
+    for (int x = 0; x < work.w; ++x) {
+      const glm::vec4 v = (*work.picture)[size_t(work.py0 + y) * width + size_t(work.px0 + x)];
+      const int p = y * TileCompositor::kTile + x;
+      image.r[p] = v.r;
+      image.g[p] = v.g;
+      image.b[p] = v.b;
+      image.a[p] = v.a;
+    }
+}
+
+// The tile's pixel constants, set in its first pass: which pixels lie in the picture, the
+// clip region along each ray (nothing kept: both bounds at one depth, every share 0) and,
+// post-classified (`box`), the data's box along it and its stretch.
+inline void beginTile(const TileWork& work, bool clipped, bool box) {
+  const TileCompositeSettings& s = *work.settings;
+  TileCompositor::TileState& st = *work.state;
+  const float unbounded = float(kClipUnbounded);
+  for (int p = 0; p < kPixels; ++p) {
+    const int x = p % TileCompositor::kTile, y = p / TileCompositor::kTile;
+    const bool inside = x < work.w && y < work.h;
+    st.live[p] = inside ? 1.0f : 0.0f;
+    st.last[p] = 0.0f;
+    st.hasLast[p] = false;
+    st.keptNear[p] = -unbounded;
+    st.keptFar[p] = unbounded;
+    st.boxNear[p] = st.boxFar[p] = 0.0f;
+    st.stretch[p] = 1.0f;
+    if (!inside) continue;
+    const glm::dvec2 centre(work.px0 + x + 0.5, work.py0 + y + 0.5);
+    if (clipped) {
+      const RayInterval kept = clippedDepths(s.clipPlanes, s.proj, centre);
+      st.keptNear[p] = float(std::clamp(kept.near, -kClipUnbounded, kClipUnbounded));
+      st.keptFar[p] =
+          std::max(st.keptNear[p], float(std::clamp(kept.far, -kClipUnbounded, kClipUnbounded)));
+    }
+    if (box) {
+      const IndexRay ray = indexRay(s.cameraToIndex, s.proj, centre);
+      const RayInterval depths = boxDepths(ray.origin, ray.direction, s.dataBox);
+      st.boxNear[p] = float(std::clamp(depths.near, -kClipUnbounded, kClipUnbounded));
+      st.boxFar[p] = float(std::clamp(depths.far, -kClipUnbounded, kClipUnbounded));
+      st.stretch[p] = float(rayStretch(s.proj, centre));
+    }
+  }
+  st.begun = true;
+}
+
 // The tile's slabs summed and composited front to back. Each row of a splat's box is walked over
 // an aligned run of 8 pixels (a footprint within one half of the tile's row) or the whole row of
 // 16, the pixels outside its box, its ellipse or the picture or already opaque adding 0: no
@@ -159,37 +212,30 @@ template <bool Series, bool Clipped>
 __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work) {
   constexpr int kTile = TileCompositor::kTile;
   const TileCompositeSettings& s = *work.settings;
-  const int px0 = work.px0, py0 = work.py0, w = work.w, h = work.h;
+  const int px0 = work.px0, py0 = work.py0;
   const float cutoff = float(s.cutoff);
   const bool backToFront = s.backToFront;
   // Back to front nothing terminates: every slab is drawn.
   const float termination = backToFront ? 2.0f : float(s.termination);
   const float erfReach = float(std::min(s.profile.erfReach, kClipUnbounded));
   const float halfScale = 0.5f * float(s.profile.scale);
+  TileCompositor::TileState& state = *work.state;
+  if (!state.begun) beginTile(work, Clipped, false);
+  float* live = state.live;                // 1 where the pixel is in the picture and takes more
+  const float* keptNear = state.keptNear;  // the clip region along each ray
+  const float* keptFar = state.keptFar;
   TilePlanes image, sums;
-  alignas(32) float keptNear[kPixels], keptFar[kPixels];  // the clip region along each ray
-  alignas(32) float centreX[kTile];                       // pixel centres, x
-  alignas(32) float live[kPixels];  // 1 where the pixel is in the picture and takes more
-  for (int p = 0; p < kPixels; ++p) {
-    image.r[p] = image.g[p] = image.b[p] = image.a[p] = 0.0f;
-    sums.r[p] = sums.g[p] = sums.b[p] = sums.a[p] = 0.0f;
-    const int x = p % kTile, y = p / kTile;
-    live[p] = x < w && y < h ? 1.0f : 0.0f;
-    keptNear[p] = -float(kClipUnbounded);
-    keptFar[p] = float(kClipUnbounded);
-    if (Clipped && x < w && y < h) {
-      const RayInterval kept =
-          clippedDepths(s.clipPlanes, s.proj, glm::dvec2(px0 + x + 0.5, py0 + y + 0.5));
-      keptNear[p] = float(std::clamp(kept.near, -kClipUnbounded, kClipUnbounded));
-      keptFar[p] = float(std::clamp(kept.far, -kClipUnbounded, kClipUnbounded));
-    }
-  }
+  loadTile(work, image);
+  for (int p = 0; p < kPixels; ++p) sums.r[p] = sums.g[p] = sums.b[p] = sums.a[p] = 0.0f;
+  alignas(32) float centreX[kTile];  // pixel centres, x
   for (int x = 0; x < kTile; ++x) centreX[x] = float(px0 + x) + 0.5f;
   LiveRows liveRows;
   liveRows.update(live);
   uint32_t current = UINT32_MAX;  // the slab being summed
   bool any = false;               // it has sums
-  const auto finishSlab = [&]() __attribute__((always_inline)) {
+  // One compiled copy (not inlined at each call): a slab finished inside a pass and one
+  // finished at its end round alike, so the picture does not depend on where passes split.
+  const auto finishSlab = [&]() __attribute__((noinline)) {
     if (!any) return;
     for (int p = 0; p < kPixels; ++p) {
       // The slab pass's pre-classified composite: opacity 1 - exp(-depth), front to back.
@@ -215,7 +261,7 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
       if (!liveRows.any()) return false;  // every pixel opaque: the tile is done
       current = item.slab;
     }
-    const SplatRecord& rec = (*work.records)[item.entry & SlabPartition::kIndexMask];
+    const SplatRecord& rec = work.records[item.entry & SlabPartition::kIndexMask];
     int x0, y0, x1, y1;
     if (!tileBox(work, rec, x0, y0, x1, y1)) return true;
     const bool openNear = (item.entry & SlabPartition::kFirstSlab) != 0;
@@ -275,6 +321,7 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
     return true;
   });
   finishSlab();
+  state.done = !liveRows.any();
   storeTile(work, [&](int p) { return glm::vec4(image.r[p], image.g[p], image.b[p], image.a[p]); });
 }
 

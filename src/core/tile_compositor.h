@@ -1,9 +1,11 @@
 // TileCompositor: the CPU splatter's composite, in the compute tiles' shape
 // (shaders/tile_ewa.comp.glsl): screen tiles, each slab entry binned to the tiles its box
 // reaches in slab order, each tile's slabs added up, composited front to back and left once
-// every pixel is opaque, one tile a task over all cores.
+// every pixel is opaque, one tile a task over all cores. The slabs go in passes of about an
+// eighth of the entries each, so the records and bins held at once are a pass's.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -66,39 +68,78 @@ class TileCompositor {
  public:
   // Pixels a side of a tile: its slab sums (4 KiB) and picture stay in the core's cache.
   static constexpr int kTile = 16;
+  static constexpr int kPixels = kTile * kTile;
+  // A frame's slabs go in at least this many passes, and passes of at most kPassEntries.
+  static constexpr size_t kPasses = 8;
+  static constexpr size_t kPassEntries = size_t(1) << 20;
 
-  // A slab entry listed for a tile: the splat index with SlabPartition's first/last-slab flags,
-  // and its slab.
+  // A slab entry listed for a tile: its record's place in the pass with SlabPartition's
+  // first/last-slab flags, and its slab.
   struct Item {
     uint32_t entry;
     uint32_t slab;
   };
 
+  // The items of a run of the pass's slabs, tile by tile, each tile's in slab order: tile t's
+  // are items[start[t]] up to items[start[t + 1]].
+  struct Run {
+    std::vector<uint32_t> start;
+    std::vector<Item> items;
+    size_t count(size_t tile) const { return start[tile + 1] - start[tile]; }
+  };
+
+  // What a tile keeps from one pass to the next (its picture stays in the picture): the pixels
+  // still taking slabs, their constants along the ray, the slab composited last and its values.
+  struct TileState {
+    bool begun = false;  // the pixels' constants are set
+    bool done = false;   // no pixel takes more slabs
+    uint32_t previous = UINT32_MAX;
+    alignas(32) float live[kPixels];      // 1 where the pixel is in the picture and takes more
+    alignas(32) float keptNear[kPixels];  // the clip region along the ray
+    alignas(32) float keptFar[kPixels];
+    alignas(32) float boxNear[kPixels];  // post: the data's box along the ray
+    alignas(32) float boxFar[kPixels];
+    alignas(32) float stretch[kPixels];
+    alignas(32) float last[kPixels];  // post: the slab composited last's nearest value
+    bool hasLast[kPixels];
+  };
+
   struct Timing {
+    double recordsMs = 0.0;
     double binMs = 0.0;
     double compositeMs = 0.0;
     size_t entries = 0;  // (slab entry, tile) pairs binned
+    size_t bytes = 0;    // the records, their places and the bins at their largest
   };
-  // Draws the picture of `records` (one per splat) from the slab lists `order` and `slabs`
+  // Draws the picture of the splats `records` makes from the slab lists `order` and `slabs`
   // (SlabPartition's, front to back) into `picture`, width x height, rows bottom up (y up, as
   // the GL's images): composite, premultiplied colour and opacity over nothing; X-ray, the
   // summed optical depth in alpha; MIP, the largest weighted value in red (the slab image the
-  // final pass reads).
-  // Once `cancel` (if given) is set the tiles not begun are left empty.
-  Timing draw(const std::vector<SplatRecord>& records, const std::vector<uint32_t>& order,
+  // final pass reads). Each pass makes the records of its entries, bins them and gathers the
+  // tiles not done. Once `cancel` (if given) is set the passes and tiles not begun are left.
+  Timing draw(const SplatRecordMaker& records, const std::vector<uint32_t>& order,
               const std::vector<Slab>& slabs, const TileCompositeSettings& settings,
               std::vector<glm::vec4>& picture, const std::atomic<bool>* cancel = nullptr);
   // Test hook: false draws with the build's baseline composite even where the machine runs its
   // AVX2 and FMA build (tile_compositor_avx2.cpp), to hold the two equal.
   void setAvx2(bool allowed) { avx2Allowed_ = allowed; }
+  // Test hook: the fewest passes a frame takes (kPasses; 1: its slabs in one pass).
+  void setPasses(size_t passes) { passes_ = std::max<size_t>(passes, 1); }
 
  private:
-  // Lists per run of slabs (bins_[run][tile]), filled in parallel, one run a task, each in slab
-  // order: a tile reads its runs in turn, front to back. Kept between frames (their capacity).
-  std::vector<std::vector<std::vector<Item>>> bins_;
+  // Kept between passes and frames (their capacity).
+  std::vector<SplatRecord> records_;  // the pass's, one per entry of its slabs
+  std::vector<uint32_t> places_;      // each splat's record in the pass (a splat's later slabs)
+  // Filled in parallel, one run a task: a tile reads its runs in turn, front to back.
+  std::vector<Run> bins_;
+  std::vector<TileState> tiles_;
   bool avx2Allowed_ = true;
-  void bin(const std::vector<SplatRecord>& records, const std::vector<uint32_t>& order,
-           const std::vector<Slab>& slabs, int width, int height);
+  size_t passes_ = kPasses;
+  void makeRecords(const SplatRecordMaker& maker, const std::vector<uint32_t>& order,
+                   const std::vector<Slab>& slabs, size_t first, size_t end,
+                   const std::vector<size_t>& placeOf);
+  void bin(const std::vector<uint32_t>& order, const std::vector<Slab>& slabs, size_t first,
+           size_t end, const std::vector<size_t>& placeOf, int width, int height);
 };
 
 }  // namespace ewa

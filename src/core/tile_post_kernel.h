@@ -113,53 +113,40 @@ template <int Samples, bool Series, bool Clipped>
 __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
   constexpr int kTile = TileCompositor::kTile;
   const TileCompositeSettings& s = *work.settings;
-  const int px0 = work.px0, py0 = work.py0, w = work.w, h = work.h;
+  const int px0 = work.px0, py0 = work.py0;
   const float cutoff = float(s.cutoff);
   const bool backToFront = s.backToFront;
   const float termination = backToFront ? 2.0f : float(s.termination);
   const float erfReach = float(std::min(s.profile.erfReach, kClipUnbounded));
   const float halfScale = 0.5f * float(s.profile.scale);
-  TilePlanes image;
-  alignas(32) float sv[Samples][kPixels], sw[Samples][kPixels];  // weight * value, weight
-  alignas(32) float keptNear[kPixels], keptFar[kPixels];
-  alignas(32) float boxNear[kPixels], boxFar[kPixels], stretch[kPixels];
-  alignas(32) float centreX[kTile];
-  alignas(32) float live[kPixels];
-  float last[kPixels];  // the slab before's nearest value
-  bool hasLast[kPixels];
-  for (int p = 0; p < kPixels; ++p) {
-    image.r[p] = image.g[p] = image.b[p] = image.a[p] = 0.0f;
-    for (int k = 0; k < Samples; ++k) sv[k][p] = sw[k][p] = 0.0f;
-    const int x = p % kTile, y = p / kTile;
-    const bool inside = x < w && y < h;
-    live[p] = inside ? 1.0f : 0.0f;
-    last[p] = 0.0f;
-    hasLast[p] = false;
-    keptNear[p] = -float(kClipUnbounded);
-    keptFar[p] = float(kClipUnbounded);
-    boxNear[p] = boxFar[p] = 0.0f;
-    stretch[p] = 1.0f;
-    if (!inside) continue;
-    const glm::dvec2 centre(px0 + x + 0.5, py0 + y + 0.5);
-    if (Clipped) {
-      const RayInterval kept = clippedDepths(s.clipPlanes, s.proj, centre);
-      keptNear[p] = float(std::clamp(kept.near, -kClipUnbounded, kClipUnbounded));
-      // Nothing kept: every bound at one depth, every share 0 (slabQuarters).
-      keptFar[p] =
-          std::max(keptNear[p], float(std::clamp(kept.far, -kClipUnbounded, kClipUnbounded)));
-    }
-    const IndexRay ray = indexRay(s.cameraToIndex, s.proj, centre);
-    const RayInterval box = boxDepths(ray.origin, ray.direction, s.dataBox);
-    boxNear[p] = float(std::clamp(box.near, -kClipUnbounded, kClipUnbounded));
-    boxFar[p] = float(std::clamp(box.far, -kClipUnbounded, kClipUnbounded));
-    stretch[p] = float(rayStretch(s.proj, centre));
+  TileCompositor::TileState& state = *work.state;
+  if (!state.begun) beginTile(work, Clipped, true);
+  // The pixel loops' inputs on the stack, where the compiler sees that nothing else writes them.
+  alignas(32) float live[kPixels], keptNear[kPixels], keptFar[kPixels];
+  std::copy_n(state.live, kPixels, live);
+  if (Clipped) {
+    std::copy_n(state.keptNear, kPixels, keptNear);
+    std::copy_n(state.keptFar, kPixels, keptFar);
   }
+  float* last = state.last;  // the slab before's nearest value
+  bool* hasLast = state.hasLast;
+  const float* boxNear = state.boxNear;
+  const float* boxFar = state.boxFar;
+  const float* stretch = state.stretch;
+  TilePlanes image;
+  loadTile(work, image);
+  alignas(32) float sv[Samples][kPixels], sw[Samples][kPixels];  // weight * value, weight
+  for (int p = 0; p < kPixels; ++p)
+    for (int k = 0; k < Samples; ++k) sv[k][p] = sw[k][p] = 0.0f;
+  alignas(32) float centreX[kTile];
   for (int x = 0; x < kTile; ++x) centreX[x] = float(px0 + x) + 0.5f;
   LiveRows liveRows;
   liveRows.update(live);
-  uint32_t current = UINT32_MAX, previous = UINT32_MAX;  // the slab summed, the one before
+  // The slab summed, the one composited before (in this pass or the one before).
+  uint32_t current = UINT32_MAX, previous = state.previous;
   bool any = false;
-  const auto finishSlab = [&]() {
+  // One compiled copy, as compositeTileOf's.
+  const auto finishSlab = [&]() __attribute__((noinline)) {
     if (!any) return;
     const Slab& slab = (*work.slabs)[current];
     const bool neighbour =
@@ -212,7 +199,7 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
       if (!liveRows.any()) return false;
       current = item.slab;
     }
-    const SplatRecord& rec = (*work.records)[item.entry & SlabPartition::kIndexMask];
+    const SplatRecord& rec = work.records[item.entry & SlabPartition::kIndexMask];
     int x0, y0, x1, y1;
     if (!tileBox(work, rec, x0, y0, x1, y1)) return true;
     const bool openNear = (item.entry & SlabPartition::kFirstSlab) != 0;
@@ -296,6 +283,9 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
     return true;
   });
   finishSlab();
+  state.previous = previous;
+  state.done = !liveRows.any();
+  std::copy_n(live, kPixels, state.live);
   storeTile(work, [&](int p) { return glm::vec4(image.r[p], image.g[p], image.b[p], image.a[p]); });
 }
 
@@ -306,28 +296,22 @@ template <bool Mip, bool Series, bool Clipped>
 __attribute__((always_inline)) inline void wholeTileOf(const TileWork& work) {
   constexpr int kTile = TileCompositor::kTile;
   const TileCompositeSettings& s = *work.settings;
-  const int px0 = work.px0, py0 = work.py0, w = work.w, h = work.h;
+  const int px0 = work.px0, py0 = work.py0;
   const float cutoff = float(s.cutoff);
   const float erfReach = float(std::min(s.profile.erfReach, kClipUnbounded));
   const float halfScale = 0.5f * float(s.profile.scale);
+  TileCompositor::TileState& state = *work.state;
+  if (!state.begun) beginTile(work, Clipped, false);
+  const float* keptNear = state.keptNear;
+  const float* keptFar = state.keptFar;
+  TilePlanes image;
+  loadTile(work, image);
   alignas(32) float gathered[kPixels];
-  alignas(32) float keptNear[kPixels], keptFar[kPixels];
+  for (int p = 0; p < kPixels; ++p) gathered[p] = Mip ? image.r[p] : image.a[p];
   alignas(32) float centreX[kTile];
-  for (int p = 0; p < kPixels; ++p) {
-    gathered[p] = 0.0f;
-    keptNear[p] = -float(kClipUnbounded);
-    keptFar[p] = float(kClipUnbounded);
-    const int x = p % kTile, y = p / kTile;
-    if (Clipped && x < w && y < h) {
-      const RayInterval kept =
-          clippedDepths(s.clipPlanes, s.proj, glm::dvec2(px0 + x + 0.5, py0 + y + 0.5));
-      keptNear[p] = float(std::clamp(kept.near, -kClipUnbounded, kClipUnbounded));
-      keptFar[p] = float(std::clamp(kept.far, -kClipUnbounded, kClipUnbounded));
-    }
-  }
   for (int x = 0; x < kTile; ++x) centreX[x] = float(px0 + x) + 0.5f;
   forEachTileItem(work, false, [&](const TileCompositor::Item& item) {
-    const SplatRecord& rec = (*work.records)[item.entry & SlabPartition::kIndexMask];
+    const SplatRecord& rec = work.records[item.entry & SlabPartition::kIndexMask];
     int x0, y0, x1, y1;
     if (!tileBox(work, rec, x0, y0, x1, y1)) return true;
     const float scale = Mip ? rec.color.a : rec.conic.w;  // value, or optical depth at the centre

@@ -80,15 +80,14 @@ CpuSplatter::Timing CpuSplatter::compute(const ClassifiedSplats& splats,
                                          const TileCompositeSettings& composite,
                                          const std::atomic<bool>* cancel) {
   Timing t;
-  const auto start = std::chrono::steady_clock::now();
-  makeSplatRecords(splats.splats, splats.attributes, setup, records_);
-  t.recordsMs = millisecondsSince(start);
-  if (cancel && cancel->load()) return t;
   const TileCompositor::Timing c =
-      compositor_.draw(records_, order, slabs, composite, picture_, cancel);
+      compositor_.draw(SplatRecordMaker(splats.splats, splats.attributes, setup), order, slabs,
+                       composite, picture_, cancel);
+  t.recordsMs = c.recordsMs;
   t.binMs = c.binMs;
   t.compositeMs = c.compositeMs;
   t.entries = c.entries;
+  t.bytes = c.bytes;
   width_ = composite.width;
   height_ = composite.height;
   return t;

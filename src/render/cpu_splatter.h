@@ -48,6 +48,7 @@ class CpuSplatter {
     double compositeMs = 0.0;
     double uploadMs = 0.0;  // the picture to its texture
     size_t entries = 0;     // (slab entry, tile) pairs
+    size_t bytes = 0;       // the records and tile bins at their largest
     double totalMs() const { return recordsMs + binMs + compositeMs + uploadMs; }
   };
   // Draws the frame on the CPU without GL (from any thread): the splats' records under
@@ -66,7 +67,6 @@ class CpuSplatter {
   size_t bytes() const;
 
  private:
-  std::vector<SplatRecord> records_;
   TileCompositor compositor_;
   std::vector<glm::vec4> picture_;
   gl::Texture texture_;

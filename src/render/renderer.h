@@ -241,6 +241,7 @@ struct RenderStats {
   double cpuRecordsMs = 0.0;
   double cpuBinMs = 0.0;
   double cpuTilesMs = 0.0;
+  size_t cpuBytes = 0;  // the CPU splatter's splat records and tile bins at their largest
   size_t gpuBytes = 0;  // bytes of GL buffers and textures the renderer allocated; 0: not counted
 };
 

@@ -82,6 +82,7 @@ void SplatRenderer::finishCpu(const CpuSplatter::Timing& t, double waitedMs) {
   stats_.cpuRecordsMs = t.recordsMs;
   stats_.cpuBinMs = t.binMs;
   stats_.cpuTilesMs = t.compositeMs;
+  stats_.cpuBytes = t.bytes;
   stats_.slabEntries = frameEntryCount();
   stats_.slabsDrawn = frame_.slabs.size();
   stats_.slabPasses = 0;

@@ -14,6 +14,7 @@
 
 #include "cli_run.h"
 #include "core/image_metrics.h"
+#include "core/splat_records.h"
 #include "core/synthetic_volume.h"
 #include "image_compare.h"
 #include "io/png_io.h"
@@ -358,6 +359,12 @@ TEST(CpuSplatterCli, SplatterCpuDrawsTheFrame) {
   EXPECT_EQ(json::parse(cpu.out)["splatter"], "cpu");
   EXPECT_EQ(json::parse(croppedCpu.out)["splatter"], "cpu");
   EXPECT_FALSE(json::parse(cpu.out).contains("note"));
+  // Its records and bins are a pass's, with a splat's place (4 bytes) besides: less than one
+  // 64-byte record a splat (this volume's 14 slabs make uneven passes; the benchmark
+  // volumes' frames hold about 20 bytes a splat).
+  const double bytes = json::parse(cpu.out)["cpu_bytes_per_splat"].get<double>();
+  EXPECT_GT(bytes, 4.0);
+  EXPECT_LT(bytes, double(sizeof(SplatRecord)));
   const json postStats = json::parse(post.out);
   EXPECT_EQ(postStats["splatter"], "raster");
   EXPECT_NE(postStats.value("note", std::string()).find("CPU splatter"), std::string::npos);
@@ -386,6 +393,7 @@ TEST(CpuSplatterCli, CompareTimesTheCpuSplatter) {
   for (const CliRun* run : {&pre, &post, &skipped}) ASSERT_EQ(run->code, 0) << run->err;
   const json row = json::parse(pre.out)["rows"][0];
   EXPECT_GT(row["cpu_ms"].get<double>(), 0.0) << pre.out;
+  EXPECT_GT(row["cpu_bytes_per_splat"].get<double>(), 0.0) << pre.out;
   EXPECT_TRUE(row["cpu_per_vtk_cpu"].is_null());  // no VTK
   EXPECT_GT(json::parse(post.out)["rows"][0]["cpu_ms"].get<double>(), 0.0) << post.out;
   EXPECT_TRUE(json::parse(skipped.out)["rows"][0]["cpu_ms"].is_null());

@@ -1,5 +1,6 @@
 // The CPU splatter's composite without GL: its AVX2 build draws the baseline build's picture,
-// a frame of many slabs draws something, and early termination leaves opaque pixels opaque.
+// a frame of many slabs draws something, early termination leaves opaque pixels opaque, and
+// a frame's passes draw its one-pass picture holding a fraction of the bytes.
 #include "core/tile_compositor.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "core/covered_length.h"
 #include "core/kernel_reach.h"
 #include "core/slab_partition.h"
 #include "core/splat_attributes.h"
@@ -22,7 +24,8 @@ namespace {
 // A pre-classified frame of `spec` from an oblique perspective camera, as the splat renderer
 // sets it up (kernels 0.7 wide, cutoff 5, depth cutoff 1, slabs 2 spacings thick).
 struct Frame {
-  std::vector<SplatRecord> records;
+  ClassifiedSplats splats;
+  SplatFrameSetup setup;
   SlabPartition partition;
   TileCompositeSettings settings;
 };
@@ -31,13 +34,15 @@ Frame makeFrame(const std::string& spec, const std::vector<HalfSpace>& clipPlane
   const SyntheticVolume synthetic = makeSyntheticVolume(spec);
   const Volume& v = synthetic.volume;
   const TransferFunction& tf = *synthetic.transferFunction;
-  const ClassifiedSplats splats = classifySplats(v, tf, {});
+  Frame f;
+  f.splats = classifySplats(v, tf, {});
+  const ClassifiedSplats& splats = f.splats;
   Camera world;
   world.focalPoint = v.origin() + 0.5 * glm::dvec3(v.dims()[0], v.dims()[1], v.dims()[2]);
   world.position = world.focalPoint + glm::dvec3(20.0, 14.0, 50.0);
   const Camera cam = cameraInVolumeFrame(world, v);
   const int width = 61, height = 53;  // not a multiple of the tile
-  SplatFrameSetup setup;
+  SplatFrameSetup& setup = f.setup;
   setup.view = cam.viewMatrix();
   setup.origin = v.origin();
   setup.spacing = v.spacing();
@@ -47,8 +52,6 @@ Frame makeFrame(const std::string& spec, const std::vector<HalfSpace>& clipPlane
   setup.reach = kernelReach(setup.proj, FilterMode::Ewa, 5.0, v.spacing(), 0.7, 1.0);
   setup.transfer = tf.bake(v.minValue(), v.maxValue(), 4096);
   setup.clipPlanes = clipPlanes;
-  Frame f;
-  makeSplatRecords(splats.splats, splats.attributes, setup, f.records);
   DepthExtent extent;
   extent.reach = setup.reach;
   extent.rotation = cam.rotation();
@@ -61,16 +64,24 @@ Frame makeFrame(const std::string& spec, const std::vector<HalfSpace>& clipPlane
   f.settings.profile = depthProfile(1.0);
   f.settings.clipPlanes = clipPlanes;
   f.settings.proj = setup.proj;
+  f.settings.cameraToIndex = cameraToIndex(v, cam);
+  f.settings.dataBox = v.indexDataBox();
   return f;
 }
 
-std::vector<glm::vec4> draw(const Frame& f, bool avx2, double termination = 0.99) {
+std::vector<glm::vec4> draw(const Frame& f, bool avx2, double termination = 0.99,
+                            size_t passes = TileCompositor::kPasses,
+                            TileCompositor::Timing* timing = nullptr) {
   TileCompositor compositor;
   compositor.setAvx2(avx2);
+  compositor.setPasses(passes);
   TileCompositeSettings settings = f.settings;
   settings.termination = termination;
   std::vector<glm::vec4> picture;
-  compositor.draw(f.records, f.partition.order(), f.partition.slabs(), settings, picture);
+  const TileCompositor::Timing t =
+      compositor.draw(SplatRecordMaker(f.splats.splats, f.splats.attributes, f.setup),
+                      f.partition.order(), f.partition.slabs(), settings, picture);
+  if (timing) *timing = t;
   return picture;
 }
 
@@ -124,6 +135,41 @@ TEST(TileCompositor, TerminationStopsPixelsPastTheThreshold) {
     }
   }
   EXPECT_GT(opaque, 0u);
+}
+
+TEST(TileCompositor, PassesDrawTheOnePassPictureWithAFractionOfTheBytes) {
+  // Every gather and both orders, with and without termination: a tile's state carried from
+  // pass to pass (picture, open pixels, the slab before's values, the splats' records at
+  // their later slabs) changes nothing, to the bit.
+  Frame f = makeFrame("marschner-lobb:24");
+  ASSERT_GT(f.partition.slabs().size(), TileCompositor::kPasses);
+  f.settings.profile = depthProfile(1.0);
+  std::vector<glm::vec4> pairs(64 * 64, glm::vec4(0.2f, 0.4f, 0.6f, 0.3f));
+  std::vector<float> prefix(64);
+  for (size_t i = 0; i < prefix.size(); ++i) prefix[i] = 0.05f * float(i);
+  f.settings.tables.pairTexels = pairs.data();
+  f.settings.tables.pairSize = 64;
+  f.settings.tables.prefix = prefix.data();
+  f.settings.tables.prefixSize = int(prefix.size());
+  for (TileGather gather : {TileGather::Pre, TileGather::Post, TileGather::XRay, TileGather::Mip})
+    for (bool backToFront : {false, true})
+      for (double termination : {0.5, 1.0}) {
+        SCOPED_TRACE(testing::Message() << int(gather) << backToFront << termination);
+        f.settings.gather = gather;
+        f.settings.backToFront = backToFront;
+        TileCompositor::Timing one, many;
+        const std::vector<glm::vec4> whole = draw(f, true, termination, 1, &one);
+        const std::vector<glm::vec4> passes =
+            draw(f, true, termination, TileCompositor::kPasses, &many);
+        float alpha = 0.0f;
+        for (const glm::vec4& p : whole) alpha = std::max({alpha, p.r, p.a});
+        EXPECT_GT(alpha, 0.05f) << "the picture should not be empty";
+        EXPECT_EQ(largestDifference(whole, passes), 0.0f);
+        // Tiles done in a pass take no items in the later ones.
+        EXPECT_LE(many.entries, one.entries);
+        // A pass holds about an eighth of the records and bins (a splat's place besides).
+        EXPECT_LT(double(many.bytes), 0.4 * double(one.bytes));
+      }
 }
 
 }  // namespace
