@@ -233,9 +233,7 @@ __attribute__((always_inline)) inline void compositeTileOf(const TileWork& work)
   liveRows.update(live);
   uint32_t current = UINT32_MAX;  // the slab being summed
   bool any = false;               // it has sums
-  // One compiled copy (not inlined at each call): a slab finished inside a pass and one
-  // finished at its end round alike, so the picture does not depend on where passes split.
-  const auto finishSlab = [&]() __attribute__((noinline)) {
+  const auto finishSlab = [&]() __attribute__((always_inline)) {
     if (!any) return;
     for (int p = 0; p < kPixels; ++p) {
       // The slab pass's pre-classified composite: opacity 1 - exp(-depth), front to back.

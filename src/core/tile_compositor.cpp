@@ -43,6 +43,25 @@ std::vector<size_t> splitSlabs(const std::vector<Slab>& slabs, size_t first, siz
   return starts;
 }
 
+// The slabs cut into passes of `steps` steps of the partition's slab grid each, counted from
+// depth 0: the grid's anchor fixes it, so frames on one grid (a brick and the whole it is cut
+// from, the ranks of a cluster) split alike. The slab index each pass starts at, then the count.
+std::vector<size_t> passStarts(const std::vector<Slab>& slabs, size_t steps) {
+  std::vector<size_t> starts{0};
+  if (steps == SIZE_MAX) return {0, slabs.size()};
+  int64_t key = 0;
+  for (size_t b = 0; b < slabs.size(); ++b) {
+    const double thickness = slabs[b].farDepth - slabs[b].nearDepth;
+    // The step of the slab's middle, half a slab from the grid's planes.
+    const double step = std::floor(0.5 * (slabs[b].nearDepth + slabs[b].farDepth) / thickness);
+    const int64_t k = int64_t(std::floor(step / double(steps)));
+    if (b > 0 && k != key) starts.push_back(b);
+    key = k;
+  }
+  starts.push_back(slabs.size());
+  return starts;
+}
+
 // `v` resized to `n`, its storage grown to n exactly (a vector grows by doubling): the bytes
 // held are the largest pass's.
 template <typename T>
@@ -63,35 +82,56 @@ bool firstInPass(uint32_t entry, size_t b, size_t first) {
 
 void TileCompositor::makeRecords(const SplatRecordMaker& maker, const std::vector<uint32_t>& order,
                                  const std::vector<Slab>& slabs, size_t first, size_t end,
-                                 const std::vector<size_t>& placeOf) {
-  resizeExactly(records_, placeOf[end - first]);
+                                 int width, int height) {
   if (places_.size() < maker.size()) resizeExactly(places_, maker.size());
-  // A splat's record is made at its first slab in the pass and found by its place at the others
-  // (the binning reads places_ after every record is made).
+  // Each splat's first entry in the pass takes the next place, slab by slab: the slabs' counts
+  // of such entries, then each slab's places in parallel.
+  std::vector<size_t> slabPlace(end - first + 1, 0);
   tbb::parallel_for(first, end, [&](size_t b) {
     const Slab& slab = slabs[b];
-    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, slab.count, 4096),
-                      [&](const tbb::blocked_range<uint32_t>& r) {
-                        // A slab's splats lie far apart in the volume's order: each asked for
-                        // ahead.
-                        const uint32_t* entries = order.data() + slab.first;
-                        for (uint32_t i = r.begin(); i != r.end(); ++i) {
-                          if (i + 16 < r.end())
-                            maker.prefetch(entries[i + 16] & SlabPartition::kIndexMask);
-                          const uint32_t entry = entries[i];
-                          if (!firstInPass(entry, b, first)) continue;
-                          const uint32_t splat = entry & SlabPartition::kIndexMask;
-                          const size_t place = placeOf[b - first] + i;
-                          records_[place] = maker(splat);
-                          places_[splat] = uint32_t(place);
-                        }
-                      });
+    size_t count = 0;
+    for (uint32_t i = 0; i < slab.count; ++i)
+      count += firstInPass(order[slab.first + i], b, first) ? 1 : 0;
+    slabPlace[b - first + 1] = count;
   });
+  for (size_t b = 1; b < slabPlace.size(); ++b) slabPlace[b] += slabPlace[b - 1];
+  const size_t count = slabPlace.back();
+  resizeExactly(splatsOf_, count);
+  resizeExactly(records_, count);
+  resizeExactly(rects_, count);
+  tbb::parallel_for(first, end, [&](size_t b) {
+    const Slab& slab = slabs[b];
+    size_t place = slabPlace[b - first];
+    for (uint32_t i = 0; i < slab.count; ++i) {
+      const uint32_t entry = order[slab.first + i];
+      if (!firstInPass(entry, b, first)) continue;
+      const uint32_t splat = entry & SlabPartition::kIndexMask;
+      places_[splat] = uint32_t(place);
+      splatsOf_[place++] = splat;
+    }
+  });
+  // The records in place order, with the tiles each reaches; a slab's splats lie far apart in
+  // the volume's order, each is asked for from memory ahead of its turn.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 4096),
+                    [&](const tbb::blocked_range<size_t>& r) {
+                      for (size_t place = r.begin(); place != r.end(); ++place) {
+                        if (place + 16 < r.end()) maker.prefetch(splatsOf_[place + 16]);
+                        const SplatRecord record = maker(splatsOf_[place]);
+                        records_[place] = record;
+                        int x0, y0, x1, y1;
+                        TileRect& rect = rects_[place];
+                        if (!boxPixels(record.box, width, height, x0, y0, x1, y1)) {
+                          rect = {1, 0, 0, 0};  // none
+                          continue;
+                        }
+                        rect = {uint16_t(x0 / kTile), uint16_t(y0 / kTile), uint16_t(x1 / kTile),
+                                uint16_t(y1 / kTile)};
+                      }
+                    });
 }
 
 void TileCompositor::bin(const std::vector<uint32_t>& order, const std::vector<Slab>& slabs,
-                         size_t first, size_t end, const std::vector<size_t>& placeOf, int width,
-                         int height) {
+                         size_t first, size_t end, int width, int height) {
   const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
   const size_t tiles = size_t(tilesX) * size_t(tilesY);
   // Runs of whole slabs of about equal entries, a few per core.
@@ -108,18 +148,15 @@ void TileCompositor::bin(const std::vector<uint32_t>& order, const std::vector<S
         const Slab& slab = slabs[b];
         const uint32_t* entries = order.data() + slab.first;
         for (uint32_t i = 0; i < slab.count; ++i) {
-          // A splat's later slabs find its record by its place: asked for ahead of its turn.
+          // Each entry finds its splat's record by its place: asked for ahead of its turn.
           if (i + 16 < slab.count)
             __builtin_prefetch(&places_[entries[i + 16] & SlabPartition::kIndexMask]);
           const uint32_t entry = entries[i];
-          const uint32_t place = firstInPass(entry, b, first)
-                                     ? uint32_t(placeOf[b - first] + i)
-                                     : places_[entry & SlabPartition::kIndexMask];
-          int x0, y0, x1, y1;
-          if (!boxPixels(records_[place].box, width, height, x0, y0, x1, y1)) continue;
+          const uint32_t place = places_[entry & SlabPartition::kIndexMask];
+          const TileRect rect = rects_[place];
           const Item item{place | (entry & ~SlabPartition::kIndexMask), uint32_t(b)};
-          for (int ty = y0 / kTile; ty <= y1 / kTile; ++ty)
-            for (int tx = x0 / kTile; tx <= x1 / kTile; ++tx) {
+          for (int ty = rect.y0; ty <= rect.y1; ++ty)
+            for (int tx = rect.x0; tx <= rect.x1; ++tx) {
               const size_t tile = size_t(ty) * size_t(tilesX) + size_t(tx);
               if (!tiles_[tile].done) add(tile, item);
             }
@@ -157,10 +194,15 @@ TileCompositor::Timing TileCompositor::draw(const SplatRecordMaker& maker,
   static const bool machineAvx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   const bool avx2 = machineAvx2 && avx2Allowed_;
 #endif
-  size_t total = 0;
-  for (const Slab& s : slabs) total += s.count;
-  const std::vector<size_t> passFirst = splitSlabs(
-      slabs, 0, slabs.size(), std::max(passes_, (total + kPassEntries - 1) / kPassEntries));
+  size_t entries = 0;
+  for (const Slab& s : slabs) entries += s.count;
+  const double onePass = 80.0 * double(maker.size()) + 14.0 * double(entries);
+  const size_t steps =
+      passSlabs_ > 0 ? passSlabs_
+      : onePass <= double(passBytes_)
+          ? SIZE_MAX
+          : std::max<size_t>(1, size_t(double(slabs.size()) * double(passBytes_) / onePass));
+  const std::vector<size_t> passFirst = passStarts(slabs, steps);
   const size_t passes = passFirst.size() - 1;
   for (size_t k = 0; k < passes; ++k) {
     if (cancel && cancel->load()) break;
@@ -170,13 +212,11 @@ TileCompositor::Timing TileCompositor::draw(const SplatRecordMaker& maker,
                                                   settings.gather == TileGather::Post);
     const size_t pass = reverse ? passes - 1 - k : k;
     const size_t first = passFirst[pass], end = passFirst[pass + 1];
-    std::vector<size_t> placeOf{0};  // each slab's first record in the pass, then their count
-    for (size_t b = first; b < end; ++b) placeOf.push_back(placeOf.back() + slabs[b].count);
     auto start = std::chrono::steady_clock::now();
-    makeRecords(maker, order, slabs, first, end, placeOf);
+    makeRecords(maker, order, slabs, first, end, width, height);
     t.recordsMs += millisecondsSince(start);
     start = std::chrono::steady_clock::now();
-    bin(order, slabs, first, end, placeOf, width, height);
+    bin(order, slabs, first, end, width, height);
     for (const Run& run : bins_) t.entries += run.items.size();
     t.binMs += millisecondsSince(start);
     start = std::chrono::steady_clock::now();
@@ -213,8 +253,8 @@ TileCompositor::Timing TileCompositor::draw(const SplatRecordMaker& maker,
   size_t binBytes = 0;
   for (const Run& run : bins_)
     binBytes += run.items.capacity() * sizeof(Item) + run.start.capacity() * sizeof(uint32_t);
-  t.bytes =
-      records_.capacity() * sizeof(SplatRecord) + places_.capacity() * sizeof(uint32_t) + binBytes;
+  t.bytes = records_.capacity() * sizeof(SplatRecord) + rects_.capacity() * sizeof(TileRect) +
+            (places_.capacity() + splatsOf_.capacity()) * sizeof(uint32_t) + binBytes;
   return t;
 }
 

@@ -1,8 +1,8 @@
 // TileCompositor: the CPU splatter's composite, in the compute tiles' shape
 // (shaders/tile_ewa.comp.glsl): screen tiles, each slab entry binned to the tiles its box
 // reaches in slab order, each tile's slabs added up, composited front to back and left once
-// every pixel is opaque, one tile a task over all cores. The slabs go in passes of about an
-// eighth of the entries each, so the records and bins held at once are a pass's.
+// every pixel is opaque, one tile a task over all cores. A frame too large for kPassBytes goes
+// in passes of a few slabs each, so the records and bins held at once are a pass's.
 #pragma once
 
 #include <algorithm>
@@ -69,9 +69,10 @@ class TileCompositor {
   // Pixels a side of a tile: its slab sums (4 KiB) and picture stay in the core's cache.
   static constexpr int kTile = 16;
   static constexpr int kPixels = kTile * kTile;
-  // A frame's slabs go in at least this many passes, and passes of at most kPassEntries.
-  static constexpr size_t kPasses = 8;
-  static constexpr size_t kPassEntries = size_t(1) << 20;
+  // The records and bins a frame holds at once, at most about: a frame that would take more in
+  // one pass (80 bytes a splat and 14 an entry) goes in passes of fewer slabs. Passes cost
+  // time (each tile's state is put away and taken up again), so a frame that fits takes one.
+  static constexpr size_t kPassBytes = size_t(256) << 20;
 
   // A slab entry listed for a tile: its record's place in the pass with SlabPartition's
   // first/last-slab flags, and its slab.
@@ -123,23 +124,30 @@ class TileCompositor {
   // Test hook: false draws with the build's baseline composite even where the machine runs its
   // AVX2 and FMA build (tile_compositor_avx2.cpp), to hold the two equal.
   void setAvx2(bool allowed) { avx2Allowed_ = allowed; }
-  // Test hook: the fewest passes a frame takes (kPasses; 1: its slabs in one pass).
-  void setPasses(size_t passes) { passes_ = std::max<size_t>(passes, 1); }
+  // Test hooks: the bytes a pass may hold (kPassBytes), or the slab-grid steps a pass spans
+  // (0: from the bytes).
+  void setPassBytes(size_t bytes) { passBytes_ = bytes; }
+  void setPassSlabs(size_t steps) { passSlabs_ = steps; }
 
  private:
   // Kept between passes and frames (their capacity).
-  std::vector<SplatRecord> records_;  // the pass's, one per entry of its slabs
-  std::vector<uint32_t> places_;      // each splat's record in the pass (a splat's later slabs)
+  std::vector<SplatRecord> records_;  // the pass's, one a splat, in place order
+  std::vector<uint32_t> splatsOf_;    // the splat at each place
+  struct TileRect {
+    uint16_t x0, y0, x1, y1;  // the tiles a record's box reaches, inclusive (x0 > x1: none)
+  };
+  std::vector<TileRect> rects_;   // each place's
+  std::vector<uint32_t> places_;  // each splat's place in the pass
   // Filled in parallel, one run a task: a tile reads its runs in turn, front to back.
   std::vector<Run> bins_;
   std::vector<TileState> tiles_;
   bool avx2Allowed_ = true;
-  size_t passes_ = kPasses;
+  size_t passBytes_ = kPassBytes;
+  size_t passSlabs_ = 0;
   void makeRecords(const SplatRecordMaker& maker, const std::vector<uint32_t>& order,
-                   const std::vector<Slab>& slabs, size_t first, size_t end,
-                   const std::vector<size_t>& placeOf);
+                   const std::vector<Slab>& slabs, size_t first, size_t end, int width, int height);
   void bin(const std::vector<uint32_t>& order, const std::vector<Slab>& slabs, size_t first,
-           size_t end, const std::vector<size_t>& placeOf, int width, int height);
+           size_t end, int width, int height);
 };
 
 }  // namespace ewa

@@ -145,8 +145,7 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
   // The slab summed, the one composited before (in this pass or the one before).
   uint32_t current = UINT32_MAX, previous = state.previous;
   bool any = false;
-  // One compiled copy, as compositeTileOf's.
-  const auto finishSlab = [&]() __attribute__((noinline)) {
+  const auto finishSlab = [&]() {
     if (!any) return;
     const Slab& slab = (*work.slabs)[current];
     const bool neighbour =

@@ -70,11 +70,10 @@ Frame makeFrame(const std::string& spec, const std::vector<HalfSpace>& clipPlane
 }
 
 std::vector<glm::vec4> draw(const Frame& f, bool avx2, double termination = 0.99,
-                            size_t passes = TileCompositor::kPasses,
-                            TileCompositor::Timing* timing = nullptr) {
+                            size_t passSlabs = 0, TileCompositor::Timing* timing = nullptr) {
   TileCompositor compositor;
   compositor.setAvx2(avx2);
-  compositor.setPasses(passes);
+  compositor.setPassSlabs(passSlabs);
   TileCompositeSettings settings = f.settings;
   settings.termination = termination;
   std::vector<glm::vec4> picture;
@@ -140,9 +139,9 @@ TEST(TileCompositor, TerminationStopsPixelsPastTheThreshold) {
 TEST(TileCompositor, PassesDrawTheOnePassPictureWithAFractionOfTheBytes) {
   // Every gather and both orders, with and without termination: a tile's state carried from
   // pass to pass (picture, open pixels, the slab before's values, the splats' records at
-  // their later slabs) changes nothing, to the bit.
+  // their later slabs) changes nothing.
   Frame f = makeFrame("marschner-lobb:24");
-  ASSERT_GT(f.partition.slabs().size(), TileCompositor::kPasses);
+  ASSERT_GT(f.partition.slabs().size(), 8u);
   f.settings.profile = depthProfile(1.0);
   std::vector<glm::vec4> pairs(64 * 64, glm::vec4(0.2f, 0.4f, 0.6f, 0.3f));
   std::vector<float> prefix(64);
@@ -158,18 +157,38 @@ TEST(TileCompositor, PassesDrawTheOnePassPictureWithAFractionOfTheBytes) {
         f.settings.gather = gather;
         f.settings.backToFront = backToFront;
         TileCompositor::Timing one, many;
-        const std::vector<glm::vec4> whole = draw(f, true, termination, 1, &one);
-        const std::vector<glm::vec4> passes =
-            draw(f, true, termination, TileCompositor::kPasses, &many);
+        const std::vector<glm::vec4> whole = draw(f, true, termination, SIZE_MAX, &one);
+        const std::vector<glm::vec4> passes = draw(f, true, termination, 2, &many);
         float alpha = 0.0f;
         for (const glm::vec4& p : whole) alpha = std::max({alpha, p.r, p.a});
         EXPECT_GT(alpha, 0.05f) << "the picture should not be empty";
-        EXPECT_EQ(largestDifference(whole, passes), 0.0f);
+        // The same sums in the same order; a slab finished at a pass's end goes through the
+        // composite's other inlined copy, whose FMAs may round apart (measured: 6e-8).
+        EXPECT_LE(largestDifference(whole, passes), 1e-6f);
         // Tiles done in a pass take no items in the later ones.
         EXPECT_LE(many.entries, one.entries);
-        // A pass holds about an eighth of the records and bins (a splat's place besides).
-        EXPECT_LT(double(many.bytes), 0.4 * double(one.bytes));
+        // A pass of 2 of the 14 slabs holds a fraction of the records and bins (a splat's
+        // place besides).
+        EXPECT_LT(double(many.bytes), 0.5 * double(one.bytes));
       }
+}
+
+TEST(TileCompositor, AFrameOverItsBudgetGoesInPassesOfAFewBytesASplat) {
+  const Frame f = makeFrame("marschner-lobb:24");
+  const size_t splats = f.splats.splats.size();
+  const auto bytesPerSplat = [&](size_t budget) {
+    TileCompositor compositor;
+    compositor.setPassBytes(budget);
+    std::vector<glm::vec4> picture;
+    const TileCompositor::Timing t =
+        compositor.draw(SplatRecordMaker(f.splats.splats, f.splats.attributes, f.setup),
+                        f.partition.order(), f.partition.slabs(), f.settings, picture);
+    return double(t.bytes) / double(splats);
+  };
+  // Within the budget: one pass, a record a splat and more.
+  EXPECT_GT(bytesPerSplat(TileCompositor::kPassBytes), double(sizeof(SplatRecord)));
+  // Over it: a slab a pass here (14 slabs), the records and bins under 32 bytes a splat.
+  EXPECT_LE(bytesPerSplat(1), 32.0);
 }
 
 }  // namespace
