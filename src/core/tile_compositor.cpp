@@ -47,8 +47,8 @@ std::vector<size_t> splitSlabs(const std::vector<Slab>& slabs, size_t first, siz
 // depth 0: the grid's anchor fixes it, so frames on one grid (a brick and the whole it is cut
 // from, the ranks of a cluster) split alike. The slab index each pass starts at, then the count.
 std::vector<size_t> passStarts(const std::vector<Slab>& slabs, size_t steps) {
-  std::vector<size_t> starts{0};
   if (steps == SIZE_MAX) return {0, slabs.size()};
+  std::vector<size_t> starts{0};
   int64_t key = 0;
   for (size_t b = 0; b < slabs.size(); ++b) {
     const double thickness = slabs[b].farDepth - slabs[b].nearDepth;
@@ -196,7 +196,11 @@ TileCompositor::Timing TileCompositor::draw(const SplatRecordMaker& maker,
 #endif
   size_t entries = 0;
   for (const Slab& s : slabs) entries += s.count;
-  const double onePass = 80.0 * double(maker.size()) + 14.0 * double(entries);
+  // A splat's record, tiles, place and splat index; 1.75 items an entry (about the shared
+  // volumes' default views at 512²).
+  constexpr double kSplatBytes = sizeof(SplatRecord) + sizeof(TileRect) + 2 * sizeof(uint32_t);
+  constexpr double kEntryBytes = 1.75 * sizeof(Item);
+  const double onePass = kSplatBytes * double(maker.size()) + kEntryBytes * double(entries);
   const size_t steps =
       passSlabs_ > 0 ? passSlabs_
       : onePass <= double(passBytes_)
@@ -204,12 +208,12 @@ TileCompositor::Timing TileCompositor::draw(const SplatRecordMaker& maker,
           : std::max<size_t>(1, size_t(double(slabs.size()) * double(passBytes_) / onePass));
   const std::vector<size_t> passFirst = passStarts(slabs, steps);
   const size_t passes = passFirst.size() - 1;
+  // Composited back to front the passes go from the back, each read backwards (X-ray and MIP
+  // read their items front to back in either order).
+  const bool reverse = settings.backToFront &&
+                       (settings.gather == TileGather::Pre || settings.gather == TileGather::Post);
   for (size_t k = 0; k < passes; ++k) {
     if (cancel && cancel->load()) break;
-    // Composited back to front the passes go from the back, each read backwards (X-ray and
-    // MIP read their items front to back in either order).
-    const bool reverse = settings.backToFront && (settings.gather == TileGather::Pre ||
-                                                  settings.gather == TileGather::Post);
     const size_t pass = reverse ? passes - 1 - k : k;
     const size_t first = passFirst[pass], end = passFirst[pass + 1];
     auto start = std::chrono::steady_clock::now();

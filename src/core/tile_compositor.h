@@ -70,8 +70,8 @@ class TileCompositor {
   static constexpr int kTile = 16;
   static constexpr int kPixels = kTile * kTile;
   // The records and bins a frame holds at once, at most about: a frame that would take more in
-  // one pass (80 bytes a splat and 14 an entry) goes in passes of fewer slabs. Passes cost
-  // time (each tile's state is put away and taken up again), so a frame that fits takes one.
+  // one pass (its records, their tiles and places, its bins) goes in passes of fewer slabs. Passes
+  // cost time (each tile's state is put away and taken up again), so a frame that fits takes one.
   static constexpr size_t kPassBytes = size_t(256) << 20;
 
   // A slab entry listed for a tile: its record's place in the pass with SlabPartition's
