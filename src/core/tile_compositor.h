@@ -16,6 +16,8 @@
 #include "core/camera.h"
 #include "core/clip_region.h"
 #include "core/ewa_footprint.h"
+#include "core/gradient_volume.h"
+#include "core/shading.h"
 #include "core/slab_partition.h"
 #include "core/splat_records.h"
 #include "core/volume.h"
@@ -26,6 +28,12 @@ namespace ewa {
 // colour composited slab by slab; post-classified kernel-weighted values classified per pixel
 // (TileCompositeSettings::samples); X-ray's summed optical depth; MIP's largest weighted value.
 enum class TileGather { Pre, Post, XRay, Mip };
+
+// Post-classified with shading: the normal each pixel's slab is lit by (the slab pass's
+// variants, shaders/slab_classify.glsl): the splats' voxel normals summed over the slab with
+// their weights (Voxel), or the data's gradient read along the pixel's ray at each segment's
+// middle (Ray, core/gradient_volume.h); None: unshaded.
+enum class TileNormals { None, Voxel, Ray };
 
 // Post-classification's tables (the textures the slab pass reads), borrowed for the frame.
 struct TileClassifyTables {
@@ -59,6 +67,11 @@ struct TileCompositeSettings {
   // Post: the covered lengths end at the data's box (core/covered_length.h).
   glm::dmat4 cameraToIndex{1.0};
   DataBox dataBox;
+  // Post with shading: the head light and the normals it takes; Ray reads `gradients`, which
+  // stay alive and unchanged while the frame is drawn.
+  TileNormals normals = TileNormals::None;
+  Lighting lighting;
+  const PackedGradients* gradients = nullptr;
   // Test hook: every pixel takes a kernel's slab shares at the kernel centre's depth (its
   // depth slopes dropped), a wrong slab split that the tests must catch.
   bool flatDepths = false;

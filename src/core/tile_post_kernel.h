@@ -5,7 +5,12 @@
 // header, from tile_compositor.cpp and tile_compositor_avx2.cpp only.
 #pragma once
 
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+
 #include "core/covered_length.h"
+#include "core/gradient_volume.h"
+#include "core/shading.h"
 #include "core/slab_preintegration.h"
 #include "core/splat_records.h"
 
@@ -76,19 +81,72 @@ inline SlabSamples<Samples> slabSamplesOf(const float* sv, const float* sw, floa
   return out;
 }
 
+// A pixel's head light on a post-classified slab's segments (shaders/slab_classify.glsl's
+// Surface, surfaceFrom and surfaceAt): the direction to the eye and, by voxel normals, the
+// slab's summed normal; by ray normals each segment's from the data's gradient at its middle.
+template <TileNormals Normals>
+struct SegmentLight {
+  const TileCompositeSettings* settings = nullptr;
+  glm::vec3 toEye{0.0f, 0.0f, 1.0f};
+  glm::vec3 normal{0.0f};    // Voxel: unit, or zero (unlit)
+  IndexRay ray;              // Ray: the pixel's, in index coordinates
+  glm::dmat3 toCamera{1.0};  // Ray: index-space gradients to camera space
+
+  // The light at the pixel centred at `centre` (voxel normals: with the summed `normal`).
+  SegmentLight(const TileCompositeSettings& s, const glm::dvec2& centre, const glm::vec3& sum)
+      : settings(&s) {
+    if constexpr (Normals == TileNormals::None) return;
+    if (!s.proj.orthographic) {
+      const glm::dvec2 q = (centre - s.proj.principal) / s.proj.focalPixels;
+      toEye = glm::vec3(glm::normalize(glm::dvec3(-q, 1.0)));
+    }
+    if constexpr (Normals == TileNormals::Voxel) {
+      const float length = glm::length(sum);
+      normal = length > 0.0f ? sum / length : glm::vec3(0.0f);
+    }
+    if constexpr (Normals == TileNormals::Ray) {
+      ray = indexRay(s.cameraToIndex, s.proj, centre);
+      toCamera = glm::transpose(glm::dmat3(s.cameraToIndex));
+    }
+  }
+
+  // The premultiplied segment `c` lit, its normal (ray normals) read at camera depth `depth`
+  // where it has opacity.
+  glm::vec4 operator()(const glm::vec4& c, float depth) const {
+    if constexpr (Normals == TileNormals::None) {
+      return c;
+    } else {
+      glm::vec3 n = normal;
+      if constexpr (Normals == TileNormals::Ray) {
+        if (!(c.a > 0.0f)) return c;
+        // rayGradient: the texture read at the point's index coordinates, turned to camera space.
+        const glm::dvec3 g = toCamera * sampleGradient(*settings->gradients,
+                                                       ray.origin + double(depth) * ray.direction);
+        const double length = glm::length(g);
+        n = length > 0.0 ? glm::vec3(g / length) : glm::vec3(0.0f);
+      }
+      const HeadlightTerms<float> t = headlightTermsOf(n, toEye, settings->lighting);
+      return glm::vec4(glm::vec3(c) * t.gain + t.white * c.a, c.a);
+    }
+  }
+};
+
 // The slab's premultiplied colour at a pixel: pre-integrated, the segments between its samples'
 // values and, on the side of the slab drawn before it, the neighbour's nearest value
 // (`neighbour`; none: the slab's own), over each sample's covered length; one sample, its mean
-// value classified through the 1D transfer function over its covered length.
-template <int Samples>
+// value classified through the 1D transfer function over its covered length. Each segment lit
+// by `light` at its middle: segment i at the slab's near plane plus i (back to front i + 1)
+// samples' depths (segmentMiddles), the one sample at the slab's middle.
+template <int Samples, typename Light>
 inline glm::vec4 classifySlab(const SlabSamples<Samples>& s, bool hasNeighbour, float neighbour,
-                              bool backToFront, const TileClassifyTables& t) {
+                              bool backToFront, const TileClassifyTables& t, float zNear,
+                              float zFar, const Light& light) {
   if (Samples == 1) {
     const glm::vec4 tf = transferAt(t.transfer, t.transferSize, s.value[0]);
     const float depth = s.length[0] * tf.a;
     if (!(depth > 0.0f)) return glm::vec4(0.0f);
     const float alpha = 1.0f - expOf(-depth);
-    return glm::vec4(glm::vec3(tf) * alpha, alpha);
+    return light(glm::vec4(glm::vec3(tf) * alpha, alpha), 0.5f * (zNear + zFar));
   }
   // The values in depth order; segment i runs from value i to value i + 1.
   float v[Samples + 1];
@@ -97,10 +155,13 @@ inline glm::vec4 classifySlab(const SlabSamples<Samples>& s, bool hasNeighbour, 
     v[Samples] = hasNeighbour ? neighbour : s.value[Samples - 1];
   else
     v[0] = hasNeighbour ? neighbour : s.value[0];
+  const float step = (zFar - zNear) / float(Samples);
+  const float first = backToFront ? zNear + step : zNear;
   glm::vec4 sum(0.0f);
   for (int i = 0; i < Samples; ++i) {
-    const glm::vec4 c = classifySlabPairOf(t.pairTexels, t.pairSize, t.prefix, t.prefixSize, v[i],
-                                           v[i + 1], s.length[i]);
+    const glm::vec4 c = light(classifySlabPairOf(t.pairTexels, t.pairSize, t.prefix, t.prefixSize,
+                                                 v[i], v[i + 1], s.length[i]),
+                              first + step * float(i));
     sum += (1.0f - sum.a) * c;
   }
   return sum;
@@ -108,9 +169,11 @@ inline glm::vec4 classifySlab(const SlabSamples<Samples>& s, bool hasNeighbour, 
 
 // The post-classified tile: each slab's kernels add (weight * value, weight) per pixel and
 // sample (their share of each sample's depths, exactly, cut to the kept depths), then every
-// pixel classifies the slab and composites it, the slab before kept for its nearest value.
-template <int Samples, bool Series, bool Clipped>
+// pixel classifies the slab and composites it, the slab before kept for its nearest value; lit
+// by `Normals` (voxel normals: the kernels add weight * normal too).
+template <int Samples, bool Series, bool Clipped, TileNormals Normals>
 __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
+  constexpr bool kVoxel = Normals == TileNormals::Voxel;
   constexpr int kTile = TileCompositor::kTile;
   const TileCompositeSettings& s = *work.settings;
   const int px0 = work.px0, py0 = work.py0;
@@ -138,6 +201,10 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
   alignas(32) float sv[Samples][kPixels], sw[Samples][kPixels];  // weight * value, weight
   for (int p = 0; p < kPixels; ++p)
     for (int k = 0; k < Samples; ++k) sv[k][p] = sw[k][p] = 0.0f;
+  // Voxel normals: the slab's weight * normal, x, y and z.
+  alignas(32) float sn[kVoxel ? 3 : 1][kVoxel ? kPixels : 1];
+  if constexpr (kVoxel)
+    for (int p = 0; p < kPixels; ++p) sn[0][p] = sn[1][p] = sn[2][p] = 0.0f;
   alignas(32) float centreX[kTile];
   for (int x = 0; x < kTile; ++x) centreX[x] = float(px0 + x) + 0.5f;
   LiveRows liveRows;
@@ -161,14 +228,21 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
         weight += psw[k];
         sv[k][p] = sw[k][p] = 0.0f;
       }
+      glm::vec3 normalSum(0.0f);
+      if constexpr (kVoxel) {
+        normalSum = glm::vec3(sn[0][p], sn[1][p], sn[2][p]);
+        sn[0][p] = sn[1][p] = sn[2][p] = 0.0f;
+      }
       const bool had = hasLast[p];
       hasLast[p] = false;
       if (!(live[p] > 0.0f)) continue;
       if (weight > 0.0f) {
         const SlabSamples<Samples> samples =
             slabSamplesOf<Samples>(psv, psw, boxNear[p], boxFar[p], stretch[p], zNear, zFar);
+        const glm::dvec2 centre(px0 + p % kTile + 0.5, py0 + p / kTile + 0.5);
         const glm::vec4 c =
-            classifySlab<Samples>(samples, neighbour && had, last[p], backToFront, s.tables);
+            classifySlab<Samples>(samples, neighbour && had, last[p], backToFront, s.tables, zNear,
+                                  zFar, SegmentLight<Normals>(s, centre, normalSum));
         if (backToFront) {
           const float keep = 1.0f - c.a;
           image.r[p] = c.r + keep * image.r[p];
@@ -209,6 +283,7 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
     float bounds[Samples + 1];
     sampleBounds<Samples>(zNear, zFar, openNear, openFar, bounds);
     const float value = rec.color.a;
+    const float nx = rec.color.x, ny = rec.color.y, nz = rec.color.z;  // voxel normals
     const float qa = rec.conic.x, qb = rec.conic.y, qc = rec.conic.z, amplitude = rec.conic.w;
     const float cx = rec.box.x, mu0 = rec.depth.x;
     const float slopeX = s.flatDepths ? 0.0f : rec.depth.y;
@@ -234,6 +309,9 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
         float* __restrict v1 = plane(sv, 1);
         float* __restrict v2 = plane(sv, 2);
         float* __restrict v3 = plane(sv, 3);
+        float* __restrict n0 = sn[0] + (kVoxel ? at : 0);
+        float* __restrict n1 = sn[kVoxel ? 1 : 0] + (kVoxel ? at : 0);
+        float* __restrict n2 = sn[kVoxel ? 2 : 0] + (kVoxel ? at : 0);
         const float* lv = live + at;
         const float* kn = keptNear + at;
         const float* kf = keptFar + at;
@@ -258,11 +336,13 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
             }
             return profileErfOf((b - mu) * toErf, erfReach, Series);
           };
+          float total = 0.0f;  // voxel normals: the kernel's weight in the slab
           const auto add = [&](float* __restrict w, float* __restrict v, float share)
               __attribute__((always_inline)) {
             const float d = g * std::max(share, 0.0f);
             w[i] += d;
             v[i] += value * d;
+            if constexpr (kVoxel) total += d;
           };
           const float e0 = erfAt(b0), e1 = erfAt(b1);
           add(w0, v0, e1 - e0);
@@ -274,6 +354,11 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
               add(w2, v2, e3 - e2);
               add(w3, v3, e4 - e3);
             }
+          }
+          if constexpr (kVoxel) {
+            n0[i] += nx * total;
+            n1[i] += ny * total;
+            n2[i] += nz * total;
           }
         }
       };
@@ -355,6 +440,18 @@ __attribute__((always_inline)) inline void wholeTileOf(const TileWork& work) {
   });
 }
 
+// The post-classified tile for the frame's samples a slab.
+template <bool Series, bool Clipped, TileNormals Normals>
+inline void postTileWith(const TileWork& work) {
+  const int samples = work.settings->samples;
+  if (samples >= 4)
+    postTileOf<4, Series, Clipped, Normals>(work);
+  else if (samples == 2)
+    postTileOf<2, Series, Clipped, Normals>(work);
+  else
+    postTileOf<1, Series, Clipped, Normals>(work);
+}
+
 // The tile's gather for the frame's settings: each variant's pixel loops compiled without the
 // tests that pick it.
 template <bool Series, bool Clipped>
@@ -365,12 +462,12 @@ inline void gatherTileWith(const TileWork& work) {
       compositeTileOf<Series, Clipped>(work);
       return;
     case TileGather::Post:
-      if (s.samples >= 4)
-        postTileOf<4, Series, Clipped>(work);
-      else if (s.samples == 2)
-        postTileOf<2, Series, Clipped>(work);
+      if (s.normals == TileNormals::Voxel)
+        postTileWith<Series, Clipped, TileNormals::Voxel>(work);
+      else if (s.normals == TileNormals::Ray)
+        postTileWith<Series, Clipped, TileNormals::Ray>(work);
       else
-        postTileOf<1, Series, Clipped>(work);
+        postTileWith<Series, Clipped, TileNormals::None>(work);
       return;
     case TileGather::XRay:
       wholeTileOf<false, Series, Clipped>(work);

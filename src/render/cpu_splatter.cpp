@@ -8,15 +8,17 @@
 #include "core/clip_share.h"
 #include "core/stopwatch.h"
 #include "gl/gl_error.h"
+#include "render/splat_renderer.h"
 
 namespace ewa {
 
 bool cpuSplatterDraws(const RenderSettings& s, std::string* why) {
   const char* reason = nullptr;
-  if (postClassified(s) && s.lighting.enabled)
+  // Field normals take the neighbouring pixels' values, some in the tiles beside a tile's.
+  if (SplatRenderer::fieldNormals(s))
     reason =
-        "the CPU splatter draws unshaded post-classified frames only (shading: --classification "
-        "pre): rasterized";
+        "the CPU splatter does not draw --post-normals field (voxel and ray normals it does): "
+        "rasterized";
   if (reason && why) *why = reason;
   return reason == nullptr;
 }
@@ -45,6 +47,11 @@ SplatFrameSetup cpuSplatSetup(const Volume& volume, const Camera& camera, const 
   return f;
 }
 
+TileNormals tileNormals(const RenderSettings& settings) {
+  if (!postClassified(settings) || !settings.lighting.enabled) return TileNormals::None;
+  return SplatRenderer::rayNormals(settings) ? TileNormals::Ray : TileNormals::Voxel;
+}
+
 TileGather tileGather(const RenderSettings& settings) {
   if (settings.mode == RenderMode::XRay) return TileGather::XRay;
   if (settings.mode == RenderMode::Mip) return TileGather::Mip;
@@ -70,6 +77,8 @@ TileCompositeSettings cpuCompositeSettings(const SplatFrameSetup& setup,
   composite.tables = tables;
   composite.cameraToIndex = cameraToIndex;
   composite.dataBox = dataBox;
+  composite.normals = tileNormals(settings);
+  composite.lighting = settings.lighting;
   return composite;
 }
 

@@ -18,8 +18,8 @@
 namespace ewa {
 
 // Whether the CPU splatter draws frames under `settings`: every mode and order, pre-classified
-// and post-classified unshaded (shaded post-classification is rasterized). `why`: the reason
-// it does not, for RenderStats::note.
+// and post-classified, unshaded or lit by voxel or ray normals (field normals are rasterized).
+// `why`: the reason it does not, for RenderStats::note.
 bool cpuSplatterDraws(const RenderSettings& settings, std::string* why = nullptr);
 
 // The splat programs' per-frame state (SplatRenderer::setCommonUniforms) for `volume` seen by
@@ -29,12 +29,15 @@ SplatFrameSetup cpuSplatSetup(const Volume& volume, const Camera& volumeCamera,
                               const Projection& proj, const RenderSettings& settings,
                               const KernelReach& reach, const std::vector<glm::vec4>& transfer);
 
+// The normals post-classified tiles are lit by under `settings` (None: unshaded).
+TileNormals tileNormals(const RenderSettings& settings);
+
 // What the tiles gather for `settings`' mode and classification.
 TileGather tileGather(const RenderSettings& settings);
 
 // The tiles' settings for a frame of `setup` under `settings`, post-classified through
 // `tables` with the covered lengths ended at `dataBox` (index coordinates, `cameraToIndex`
-// from camera space).
+// from camera space); ray normals need `gradients` set besides.
 TileCompositeSettings cpuCompositeSettings(const SplatFrameSetup& setup,
                                            const RenderSettings& settings,
                                            const TileClassifyTables& tables,

@@ -15,14 +15,16 @@ GradientTexture::~GradientTexture() {
   invalidate();  // the worker reads the volume
 }
 
-void GradientTexture::request(const Volume& volume, GradientMode mode) {
-  if (holds(volume, mode)) return;
-  if ((pending_.valid() || uploading_) && pendingVolume_ == &volume && pendingMode_ == mode) return;
-  invalidate();
+void GradientTexture::request(const Volume& volume, GradientMode mode, GradientUse use) {
+  if (holds(volume, mode, use)) return;
+  if ((pending_.valid() || uploading_) && pendingVolume_ == &volume && pendingMode_ == mode &&
+      pendingUse_ == use)
+    return;
+  release();  // the other use's texture or memory too
   const auto& d = volume.dims();
   GLint largest = 0;
-  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
-  if (std::max({d[0], d[1], d[2]}) > int64_t(largest))
+  if (use == GradientUse::Texture) glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
+  if (use == GradientUse::Texture && std::max({d[0], d[1], d[2]}) > int64_t(largest))
     throw gl::GlError("volume: " + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
                       std::to_string(d[2]) + " voxels exceed GL_MAX_3D_TEXTURE_SIZE " +
                       std::to_string(largest) +
@@ -30,6 +32,7 @@ void GradientTexture::request(const Volume& volume, GradientMode mode) {
                       "need it)");
   pendingVolume_ = &volume;
   pendingMode_ = mode;
+  pendingUse_ = use;
   pending_ =
       std::async(std::launch::async, [&volume, mode] { return packGradients(volume, mode); });
 }
@@ -42,6 +45,10 @@ bool GradientTexture::ready(double budgetMs) {
       if (pending_.wait_for(wait) != std::future_status::ready) return false;
     }
     packed_ = pending_.get();
+    if (pendingUse_ == GradientUse::Memory) {
+      holdPending();
+      return true;
+    }
     const auto& d = packed_.dims;
     texture_ = gl::Texture();
     volume_ = nullptr;
@@ -55,11 +62,16 @@ bool GradientTexture::ready(double budgetMs) {
     if (!uploadParts(budgetMs, start)) return false;
     uploading_ = false;
     packed_ = PackedGradients();
-    volume_ = pendingVolume_;
-    mode_ = pendingMode_;
-    pendingVolume_ = nullptr;
+    holdPending();
   }
-  return texture_ && volume_ != nullptr;
+  return volume_ != nullptr && (use_ == GradientUse::Memory || texture_);
+}
+
+void GradientTexture::holdPending() {
+  volume_ = pendingVolume_;
+  mode_ = pendingMode_;
+  use_ = pendingUse_;
+  pendingVolume_ = nullptr;
 }
 
 bool GradientTexture::uploadParts(double budgetMs, std::chrono::steady_clock::time_point start) {

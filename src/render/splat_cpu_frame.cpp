@@ -45,6 +45,7 @@ SplatRenderer::CpuStep SplatRenderer::drawCpu(double budgetMs, Clock::time_point
         cpuCompositeSettings(setup, frame_.settings, tables, cameraToIndex(*volume_, frame_.camera),
                              volume_->indexDataBox());
     composite.flatDepths = cpuFlatDepths_;
+    composite.gradients = &gradients_.packed();  // ray normals: held in memory (requestGradients)
     // The inputs are the renderer's and stay unchanged until the work is done or cancelled
     // (cancelCpu, from everything that changes them).
     auto work = [this, setup = std::move(setup), composite = std::move(composite)] {

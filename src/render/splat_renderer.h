@@ -54,6 +54,13 @@ class SplatRenderer : public Renderer {
                          std::shared_ptr<SplatProgramSet> programs = nullptr);
   ~SplatRenderer() override;
 
+  // Post-classified, shaded and pre-integrated with PostNormals::Field: the slab pass takes
+  // each pixel's normal from the field's gradient (no voxel normals read or summed).
+  static bool fieldNormals(const RenderSettings& settings);
+  // Post-classified and shaded with PostNormals::Ray: the slab pass reads each segment's normal
+  // from the gradient texture along the pixel's ray (no voxel normals read or summed).
+  static bool rayNormals(const RenderSettings& settings);
+
   void setVolume(const Volume& volume) override;
   void setTransferFunction(const TransferFunction& tf) override;
   // Compiles the splat and slab-pass programs of `settings`' variant (and the coarser slab
@@ -262,12 +269,6 @@ class SplatRenderer : public Renderer {
   void setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex = -1);
   // Post-classification (composite mode only): splats carry values, the slab pass classifies.
   static bool postClassified(const RenderSettings& settings);
-  // Post-classified, shaded and pre-integrated with PostNormals::Field: the slab pass takes
-  // each pixel's normal from the field's gradient (no voxel normals read or summed).
-  static bool fieldNormals(const RenderSettings& settings);
-  // Post-classified and shaded with PostNormals::Ray: the slab pass reads each segment's normal
-  // from the gradient texture along the pixel's ray (no voxel normals read or summed).
-  static bool rayNormals(const RenderSettings& settings);
   // Starts the gradient texture's build (on a worker) for frames under `settings` that read it
   // unless it is up to date, and frees it otherwise; returns whether a frame must wait for it.
   bool requestGradients(const RenderSettings& settings);

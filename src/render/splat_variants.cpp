@@ -29,12 +29,18 @@ bool SplatRenderer::voxelNormalSums(const RenderSettings& settings) {
 
 bool SplatRenderer::requestGradients(const RenderSettings& settings) {
   if (!volume_ || !rayNormals(settings)) {
-    gradients_.releaseWhenIdle();  // not wanted: freed once no worker packs it
+    if (gradients_.bytes() > 0) cancelCpu();  // a CPU frame under way may read them
+    gradients_.releaseWhenIdle();             // not wanted: freed once no worker packs it
     return false;
   }
   const GradientMode mode = settings.classification.gradient;
-  gradients_.request(*volume_, mode);  // nothing when the texture holds them already
-  return !gradients_.holds(*volume_, mode);
+  // The CPU splatter reads them in memory, with no texture.
+  const GradientUse use = cpuWanted(settings) && cpuSplatterDraws(settings) ? GradientUse::Memory
+                                                                            : GradientUse::Texture;
+  if (gradients_.holds(*volume_, mode, use)) return false;
+  cancelCpu();                              // a CPU frame under way may read the ones held
+  gradients_.request(*volume_, mode, use);  // nothing when that build is under way
+  return true;
 }
 
 SplatVariant SplatRenderer::splatVariant(const RenderSettings& settings, bool texelBuffers) const {

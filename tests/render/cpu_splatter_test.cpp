@@ -1,9 +1,10 @@
 // The CPU splatter (--splatter cpu) against the rasterized path: the same picture on synthetic
-// scenes, pre- and post-classified (4, 2 and 1 samples a slab), front to back and back to
-// front, X-ray and MIP, perspective and orthographic, every filter, a crop box and clipping
-// plane, early termination; a deliberately wrong footprint (the weak-perspective Jacobian of
-// the volume's centre for every splat) or slab split (shares at each kernel's centre depth)
-// fails the same tolerance; frames it does not draw are rasterized with a note.
+// scenes, pre- and post-classified (4, 2 and 1 samples a slab, unshaded or lit by voxel or ray
+// normals), front to back and back to front, X-ray and MIP, perspective and orthographic, every
+// filter, a crop box and clipping plane, early termination; a deliberately wrong footprint (the
+// weak-perspective Jacobian of the volume's centre for every splat) or slab split (shares at each
+// kernel's centre depth) fails the same tolerance; frames it does not draw are rasterized with a
+// note.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -250,6 +251,43 @@ TEST_F(CpuSplatterTest, PostClassifiedAgreesInEverySampleCountAndOrder) {
   }
 }
 
+// Shaded: lit by the splats' voxel normals summed over each slab or by the data's gradient
+// read along each pixel's ray, in every sample count and order.
+TEST_F(CpuSplatterTest, ShadedPostClassifiedAgreesWithVoxelAndRayNormals) {
+  const SyntheticVolume ml = makeSyntheticVolume("marschner-lobb:41");
+  for (PostNormals normals : {PostNormals::Ray, PostNormals::Voxel}) {
+    for (int samples : {4, 2, 1}) {
+      for (CompositeOrder order : {CompositeOrder::FrontToBack, CompositeOrder::BackToFront}) {
+        RenderSettings s = postSettings();
+        s.lighting.enabled = true;
+        s.lighting.specular = 0.6;
+        s.postNormals = normals;
+        s.slabSamples = samples == 1 ? 4 : samples;
+        s.slabPreintegration = samples > 1;
+        s.order = order;
+        const bool ortho = order == CompositeOrder::BackToFront;
+        expectAgrees(
+            std::string("shaded_") + postNormalsName(normals) + "_" + std::to_string(samples) +
+                (order == CompositeOrder::FrontToBack ? "_ftb" : "_btf"),
+            ml.volume, *ml.transferFunction, s, viewOf(ml.volume, {0.5, 0.7, 1.0}, 1.4, ortho));
+      }
+    }
+  }
+}
+
+// The light shows: the shaded CPU picture is far from the unshaded one and within the
+// tolerance of the shaded rasterized one.
+TEST_F(CpuSplatterTest, ShadingChangesThePicture) {
+  const SyntheticVolume ml = makeSyntheticVolume("marschner-lobb:41");
+  RenderSettings s = postSettings();
+  const Camera cam = viewOf(ml.volume, {0.5, 0.7, 1.0}, 1.4, false);
+  const auto [rasterFlat, flat] = draw(ml.volume, *ml.transferFunction, s, cam, 96, 80);
+  s.lighting.enabled = true;
+  const auto [raster, lit] = draw(ml.volume, *ml.transferFunction, s, cam, 96, 80);
+  EXPECT_GT(maxDifference(flat, lit), 40) << "shading should show";
+  EXPECT_TRUE(agreement(lit, raster).within());
+}
+
 TEST_F(CpuSplatterTest, PostClassifiedCropAndClipAgree) {
   const SyntheticVolume sphere = makeSyntheticVolume("sphere:32");
   RenderSettings s = postSettings();
@@ -323,8 +361,9 @@ TEST_F(CpuSplatterTest, FramesItDoesNotDrawAreRasterizedWithANote) {
   r.setVolume(sphere.volume);
   r.setTransferFunction(*sphere.transferFunction);
   const Camera cam = viewOf(sphere.volume, {0.0, 0.0, 1.0}, 1.5, false);
-  RenderSettings s = rasterSettings();  // shaded post-classified: not drawn on the CPU yet
+  RenderSettings s = rasterSettings();  // field normals read the tiles beside a tile's
   s.lighting.enabled = true;
+  s.postNormals = PostNormals::Field;
   r.render(cam, s, 48, 40);
   const Image8 raster = r.readImage();
   s.splatter = Splatter::Cpu;
@@ -336,7 +375,8 @@ TEST_F(CpuSplatterTest, FramesItDoesNotDrawAreRasterizedWithANote) {
 }
 
 // --splatter cpu: the frame drawn on the CPU (splatter "cpu") within the tolerance of the
-// rasterized one, cropped too; shaded post-classified it is rasterized with a note.
+// rasterized one, cropped too; shaded post-classified with field normals it is rasterized with
+// a note.
 TEST(CpuSplatterCli, SplatterCpuDrawsTheFrame) {
   const std::string dir = testOutputDir();
   const std::string common =
@@ -349,7 +389,8 @@ TEST(CpuSplatterCli, SplatterCpuDrawsTheFrame) {
   const CliRun croppedCpu =
       runEwaview(common + crop + " --splatter cpu -o " + dir + "/cpu_crop_c.png");
   const CliRun post = runEwaview(
-      "--synthetic marschner-lobb:24 --resolution 48,48 --stats --splatter cpu --shading -o " +
+      "--synthetic marschner-lobb:24 --resolution 48,48 --stats --splatter cpu --shading "
+      "--post-normals field -o " +
       dir + "/cpu_post.png");
   for (const CliRun* run : {&raster, &cpu, &croppedRaster, &croppedCpu, &post})
     ASSERT_EQ(run->code, 0) << run->err;

@@ -348,7 +348,10 @@ TEST_F(TileEwaSplatterTest, AutoSplatterTriesBothThenTakesTheFaster) {
   RenderSettings settings = tileSettings();
   settings.splatter = Splatter::Auto;
   settings.slabPasses = 0;
-  settings.lighting.enabled = true;  // post-classified and shaded from the field
+  // Post-classified and shaded from the field, which the CPU splatter leaves to the GL (auto's
+  // choice on a software rasterizer otherwise).
+  settings.lighting.enabled = true;
+  settings.postNormals = PostNormals::Field;
   r.setGpuTimers(false);
   r.render(cam, settings, width, height);
   EXPECT_FALSE(r.stats().tiles);
@@ -427,7 +430,8 @@ TEST_F(TileEwaSplatterTest, AutoSplatterDrawsBudgetedFramesInTilesWhereTheyFit) 
     const bool timers = r.gpuTimers();
     RenderSettings settings = tileSettings();
     settings.splatter = Splatter::Auto;
-    settings.lighting.enabled = true;  // post-classified and shaded from the field
+    settings.lighting.enabled = true;  // shaded from the field: not on the CPU splatter
+    settings.postNormals = PostNormals::Field;
     r.setGpuTimers(false);
     r.render(cam, settings, width, height);
     const Image8 raster = r.readImage();
