@@ -26,9 +26,9 @@ struct CompareRow {
   // (SplatRenderer::tileComposite: front to back, post-classified only pre-integrated in
   // quarters).
   double tileEwaMs = -1;
-  // The same frame splatted on the CPU (Splatter::Cpu), where it draws the frame's settings
-  // (cpuSplatterDraws), and its stages: the slab partition, each splat's record (footprint and
-  // colour), the binning to tiles, the tiles' splatting, classification and compositing.
+  // The same frame splatted on the CPU (Splatter::Cpu), and its stages: the slab partition, each
+  // splat's record (footprint and colour), the binning to tiles, the tiles' splatting,
+  // classification and compositing.
   double cpuMs = -1;
   double cpuPartitionMs = -1, cpuRecordsMs = -1, cpuBinMs = -1, cpuTilesMs = -1;
   double cpuBytesPerSplat = -1;  // the CPU splatter's records and tile bins

@@ -110,7 +110,7 @@ vec4 segmentMiddles(vec2 depths) {
 }
 
 // d(value)/d(pixel) from the values `span` pixels ahead and behind: central where both have
-// kernels, else one-sided.
+// kernels, else one-sided (pixelDerivativeOf in src/core/field_gradient.h).
 float pixelDerivativeFrom(bool hasAhead, float ahead, bool hasBehind, float behind, float centre,
                           float span) {
   if (hasAhead && hasBehind) return 0.5 * (ahead - behind) / span;
@@ -126,7 +126,8 @@ const float kFlatChange = 1e-5;
 // The gradient of the reconstructed field in camera space (x right, y up, z towards the eye)
 // per world unit: across the view from `derivatives` (per pixel, x and y) at the slab's middle
 // depth, along it from the front half's value to the back half's, half a slab apart. `s`: the
-// sums of the halves; `depths`: the slab's near and far camera depth.
+// sums of the halves; `depths`: the slab's near and far camera depth. The mirror of
+// fieldGradientOf in src/core/field_gradient.h.
 vec3 gradientFrom(vec2 derivatives, vec4 s, vec2 depths) {
   float thickness = depths.y - depths.x;
   float depth = 0.5 * (depths.x + depths.y);

@@ -699,17 +699,15 @@ std::vector<OptionSpec> makeTable() {
       .describe(
           "Frames: rasterized slab by slab (raster), in compute tiles (tiles: no rasterizer, "
           "no blending; front to back, post-classified only with 4 samples a slab and, "
-          "shaded, field or ray normals, else rasterized), on the CPU (cpu: every mode and "
-          "order, shaded with ray or voxel normals; field normals rasterized), or auto (the "
-          "CPU on software GL, "
+          "shaded, field or ray normals, else rasterized), on the CPU (cpu: every mode, "
+          "order and shading), or auto (the CPU on software GL, "
           "else the faster as timed frames find it)")
       .explain(
           "How frames (headless pictures, turntables, Python's `render`, the window) are "
           "splatted: on the CPU in screen tiles over every core (`cpu`: composite pre- and "
           "post-classified with 4, 2 or 1 samples a slab, front to back or back to front, "
-          "X-ray and MIP, cropped and clipped, shaded with ray or voxel normals, the same C++ "
-          "formulas the shaders mirror; post-classified frames shaded with field normals are "
-          "rasterized, with a `note`; in the window the "
+          "X-ray and MIP, cropped and clipped, shaded with ray, field or voxel normals, the "
+          "same C++ formulas the shaders mirror; in the window the "
           "frame is drawn on a worker thread at a lower priority and shown when done), "
           "rasterized slab by slab (`raster`), in compute tiles (`tiles`: each "
           "screen tile's slabs added up, classified and composited in one work group, no "

@@ -82,7 +82,7 @@ bool firstInPass(uint32_t entry, size_t b, size_t first) {
 
 void TileCompositor::makeRecords(const SplatRecordMaker& maker, const std::vector<uint32_t>& order,
                                  const std::vector<Slab>& slabs, size_t first, size_t end,
-                                 int width, int height) {
+                                 int width, int height, int border) {
   if (places_.size() < maker.size()) resizeExactly(places_, maker.size());
   // Each splat's first entry in the pass takes the next place, slab by slab: the slabs' counts
   // of such entries, then each slab's places in parallel.
@@ -124,6 +124,10 @@ void TileCompositor::makeRecords(const SplatRecordMaker& maker, const std::vecto
                           rect = {1, 0, 0, 0};  // none
                           continue;
                         }
+                        x0 = std::max(x0 - border, 0);
+                        y0 = std::max(y0 - border, 0);
+                        x1 = std::min(x1 + border, width - 1);
+                        y1 = std::min(y1 + border, height - 1);
                         rect = {uint16_t(x0 / kTile), uint16_t(y0 / kTile), uint16_t(x1 / kTile),
                                 uint16_t(y1 / kTile)};
                       }
@@ -212,12 +216,15 @@ TileCompositor::Timing TileCompositor::draw(const SplatRecordMaker& maker,
   // read their items front to back in either order).
   const bool reverse = settings.backToFront &&
                        (settings.gather == TileGather::Pre || settings.gather == TileGather::Post);
+  // Field normals read a pixel's neighbours: a tile takes the kernels reaching a pixel about it.
+  const int border =
+      settings.gather == TileGather::Post && settings.normals == TileNormals::Field ? 1 : 0;
   for (size_t k = 0; k < passes; ++k) {
     if (cancel && cancel->load()) break;
     const size_t pass = reverse ? passes - 1 - k : k;
     const size_t first = passFirst[pass], end = passFirst[pass + 1];
     auto start = std::chrono::steady_clock::now();
-    makeRecords(maker, order, slabs, first, end, width, height);
+    makeRecords(maker, order, slabs, first, end, width, height, border);
     t.recordsMs += millisecondsSince(start);
     start = std::chrono::steady_clock::now();
     bin(order, slabs, first, end, width, height);

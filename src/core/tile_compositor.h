@@ -31,9 +31,11 @@ enum class TileGather { Pre, Post, XRay, Mip };
 
 // Post-classified with shading: the normal each pixel's slab is lit by (the slab pass's
 // variants, shaders/slab_classify.glsl): the splats' voxel normals summed over the slab with
-// their weights (Voxel), or the data's gradient read along the pixel's ray at each segment's
-// middle (Ray, core/gradient_volume.h); None: unshaded.
-enum class TileNormals { None, Voxel, Ray };
+// their weights (Voxel), the data's gradient read along the pixel's ray at each segment's
+// middle (Ray, core/gradient_volume.h), or the gradient of the reconstructed field from the
+// neighbouring pixels' values (Field, core/field_gradient.h; pre-integrated only); None:
+// unshaded.
+enum class TileNormals { None, Voxel, Ray, Field };
 
 // Post-classification's tables (the textures the slab pass reads), borrowed for the frame.
 struct TileClassifyTables {
@@ -157,8 +159,10 @@ class TileCompositor {
   bool avx2Allowed_ = true;
   size_t passBytes_ = kPassBytes;
   size_t passSlabs_ = 0;
+  // `border`: pixels about a tile whose kernels it takes too (field normals' neighbours).
   void makeRecords(const SplatRecordMaker& maker, const std::vector<uint32_t>& order,
-                   const std::vector<Slab>& slabs, size_t first, size_t end, int width, int height);
+                   const std::vector<Slab>& slabs, size_t first, size_t end, int width, int height,
+                   int border);
   void bin(const std::vector<uint32_t>& order, const std::vector<Slab>& slabs, size_t first,
            size_t end, int width, int height);
 };

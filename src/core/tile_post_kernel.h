@@ -9,6 +9,7 @@
 #include <glm/mat3x3.hpp>
 
 #include "core/covered_length.h"
+#include "core/field_gradient.h"
 #include "core/gradient_volume.h"
 #include "core/shading.h"
 #include "core/slab_preintegration.h"
@@ -82,17 +83,19 @@ inline SlabSamples<Samples> slabSamplesOf(const float* sv, const float* sw, floa
 }
 
 // A pixel's head light on a post-classified slab's segments (shaders/slab_classify.glsl's
-// Surface, surfaceFrom and surfaceAt): the direction to the eye and, by voxel normals, the
-// slab's summed normal; by ray normals each segment's from the data's gradient at its middle.
+// Surface, surfaceFrom and surfaceAt): the direction to the eye and, by voxel or field normals,
+// the slab's summed normal or the field's gradient; by ray normals each segment's from the
+// data's gradient at its middle.
 template <TileNormals Normals>
 struct SegmentLight {
   const TileCompositeSettings* settings = nullptr;
   glm::vec3 toEye{0.0f, 0.0f, 1.0f};
-  glm::vec3 normal{0.0f};    // Voxel: unit, or zero (unlit)
+  glm::vec3 normal{0.0f};    // Voxel, Field: unit, or zero (unlit)
   IndexRay ray;              // Ray: the pixel's, in index coordinates
   glm::dmat3 toCamera{1.0};  // Ray: index-space gradients to camera space
 
-  // The light at the pixel centred at `centre` (voxel normals: with the summed `normal`).
+  // The light at the pixel centred at `centre` (voxel normals: with the summed normals `sum`;
+  // field normals: the field's gradient).
   SegmentLight(const TileCompositeSettings& s, const glm::dvec2& centre, const glm::vec3& sum)
       : settings(&s) {
     if constexpr (Normals == TileNormals::None) return;
@@ -100,7 +103,7 @@ struct SegmentLight {
       const glm::dvec2 q = (centre - s.proj.principal) / s.proj.focalPixels;
       toEye = glm::vec3(glm::normalize(glm::dvec3(-q, 1.0)));
     }
-    if constexpr (Normals == TileNormals::Voxel) {
+    if constexpr (Normals == TileNormals::Voxel || Normals == TileNormals::Field) {
       const float length = glm::length(sum);
       normal = length > 0.0f ? sum / length : glm::vec3(0.0f);
     }
@@ -167,10 +170,53 @@ inline glm::vec4 classifySlab(const SlabSamples<Samples>& s, bool hasNeighbour, 
   return sum;
 }
 
+template <TileNormals Normals>
+constexpr bool kFieldNormals = Normals == TileNormals::Field;
+
+// Field normals: a slab's sums at the border of one pixel about a tile (weight * value and
+// weight over the slab) and its pixels' kept depths: the row below the tile, the row above,
+// the column left of it and the column right, each along the tile's side.
+struct TileBorder {
+  static constexpr int kSides = 4;
+  static constexpr int kTile = TileCompositor::kTile;
+  float sum[kSides][kTile], weight[kSides][kTile];
+  float keptNear[kSides][kTile], keptFar[kSides][kTile];
+
+  // Picture pixel (x, y) of side `side`'s place `i`.
+  static void pixel(const TileWork& work, int side, int i, int& x, int& y) {
+    x = side < 2 ? work.px0 + i : side == 2 ? work.px0 - 1 : work.px0 + work.w;
+    y = side >= 2 ? work.py0 + i : side == 0 ? work.py0 - 1 : work.py0 + work.h;
+  }
+  void clear() {
+    for (int side = 0; side < kSides; ++side)
+      for (int i = 0; i < kTile; ++i) sum[side][i] = weight[side][i] = 0.0f;
+  }
+  // No sums; the kept depths as beginTile's (clipped: the clip region along each pixel's ray).
+  void begin(const TileWork& work, bool clipped) {
+    clear();
+    const TileCompositeSettings& s = *work.settings;
+    for (int side = 0; side < kSides; ++side)
+      for (int i = 0; i < kTile; ++i) {
+        keptNear[side][i] = -float(kClipUnbounded);
+        keptFar[side][i] = float(kClipUnbounded);
+        if (!clipped) continue;
+        int x, y;
+        pixel(work, side, i, x, y);
+        const RayInterval kept = clippedDepths(s.clipPlanes, s.proj, glm::dvec2(x + 0.5, y + 0.5));
+        keptNear[side][i] = float(std::clamp(kept.near, -kClipUnbounded, kClipUnbounded));
+        keptFar[side][i] = std::max(keptNear[side][i],
+                                    float(std::clamp(kept.far, -kClipUnbounded, kClipUnbounded)));
+      }
+  }
+};
+
 // The post-classified tile: each slab's kernels add (weight * value, weight) per pixel and
 // sample (their share of each sample's depths, exactly, cut to the kept depths), then every
 // pixel classifies the slab and composites it, the slab before kept for its nearest value; lit
-// by `Normals` (voxel normals: the kernels add weight * normal too).
+// by `Normals`. Voxel normals: the kernels add weight * normal too. Field normals: the
+// pixels of the tile and of a border of one pixel about it add their sums whether or not they
+// take more slabs (their neighbours' gradients read them), the tile's items being binned with
+// that border (TileCompositor::draw).
 template <int Samples, bool Series, bool Clipped, TileNormals Normals>
 __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
   constexpr bool kVoxel = Normals == TileNormals::Voxel;
@@ -205,6 +251,16 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
   alignas(32) float sn[kVoxel ? 3 : 1][kVoxel ? kPixels : 1];
   if constexpr (kVoxel)
     for (int p = 0; p < kPixels; ++p) sn[0][p] = sn[1][p] = sn[2][p] = 0.0f;
+  // Field normals: the pixels that add (those in the picture), and the border's sums.
+  alignas(32) float inside[kFieldNormals<Normals> ? kPixels : 1];
+  LiveRows insideRows;
+  TileBorder border;
+  if constexpr (kFieldNormals<Normals>) {
+    for (int p = 0; p < kPixels; ++p)
+      inside[p] = p % kTile < work.w && p / kTile < work.h ? 1.0f : 0.0f;
+    insideRows.update(inside);
+    border.begin(work, Clipped);
+  }
   alignas(32) float centreX[kTile];
   for (int x = 0; x < kTile; ++x) centreX[x] = float(px0 + x) + 0.5f;
   LiveRows liveRows;
@@ -213,13 +269,44 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
   uint32_t current = UINT32_MAX, previous = state.previous;
   bool any = false;
   const auto finishSlab = [&]() {
-    if (!any) return;
+    if (!any) {
+      if (kFieldNormals<Normals>) border.clear();  // sums of kernels reaching the border alone
+      return;
+    }
     const Slab& slab = (*work.slabs)[current];
     const bool neighbour =
         previous != UINT32_MAX &&
         previous + (backToFront ? -1 : 1) == current &&  // no slab between them in this tile
         slabsAdjacent((*work.slabs)[previous], slab);
     const float zNear = float(slab.nearDepth), zFar = float(slab.farDepth);
+    // Field normals: each pixel's mean value in the slab, for its neighbours.
+    alignas(32) float mean[kFieldNormals<Normals> ? kPixels : 1];
+    bool weighted[kFieldNormals<Normals> ? kPixels : 1];
+    if constexpr (kFieldNormals<Normals>) {
+      static_assert(Samples >= 2, "field normals are pre-integrated");
+      for (int p = 0; p < kPixels; ++p) {
+        // As the halves' sums add up (quarters: two a half).
+        float sum = sv[0][p] + sv[1][p], weight = sw[0][p] + sw[1][p];
+        if constexpr (Samples == 4) {
+          sum = (sv[0][p] + sv[1][p]) + (sv[2][p] + sv[3][p]);
+          weight = (sw[0][p] + sw[1][p]) + (sw[2][p] + sw[3][p]);
+        }
+        weighted[p] = weight > 0.0f;
+        mean[p] = weighted[p] ? sum / weight : 0.0f;
+      }
+    }
+    // The value at tile pixel (x, y) (the border's beyond the tile's sides); false: no kernel.
+    const auto valueAt = [&](int x, int y, float& v) {
+      if (x >= 0 && x < kTile && y >= 0 && y < kTile) {
+        v = mean[y * kTile + x];
+        return weighted[y * kTile + x];
+      }
+      const int side = y < 0 ? 0 : y >= kTile ? 1 : x < 0 ? 2 : 3;
+      const int i = side < 2 ? x : y;
+      const float w = border.weight[side][i];
+      v = w > 0.0f ? border.sum[side][i] / w : 0.0f;
+      return w > 0.0f;
+    };
     for (int p = 0; p < kPixels; ++p) {
       float psv[Samples], psw[Samples], weight = 0.0f;
       for (int k = 0; k < Samples; ++k) {
@@ -228,9 +315,9 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
         weight += psw[k];
         sv[k][p] = sw[k][p] = 0.0f;
       }
-      glm::vec3 normalSum(0.0f);
+      glm::vec3 normal(0.0f);  // voxel normals' sum, or the field's gradient
       if constexpr (kVoxel) {
-        normalSum = glm::vec3(sn[0][p], sn[1][p], sn[2][p]);
+        normal = glm::vec3(sn[0][p], sn[1][p], sn[2][p]);
         sn[0][p] = sn[1][p] = sn[2][p] = 0.0f;
       }
       const bool had = hasLast[p];
@@ -239,10 +326,26 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
       if (weight > 0.0f) {
         const SlabSamples<Samples> samples =
             slabSamplesOf<Samples>(psv, psw, boxNear[p], boxFar[p], stretch[p], zNear, zFar);
-        const glm::dvec2 centre(px0 + p % kTile + 0.5, py0 + p / kTile + 0.5);
+        const int x = p % kTile, y = p / kTile;
+        if constexpr (kFieldNormals<Normals>) {
+          float right, left, up, down;
+          const bool hasRight = valueAt(x + 1, y, right), hasLeft = valueAt(x - 1, y, left);
+          const bool hasUp = valueAt(x, y + 1, up), hasDown = valueAt(x, y - 1, down);
+          const float c = mean[p];
+          const glm::vec2 derivatives(pixelDerivativeOf(hasRight, right, hasLeft, left, c, 1.0f),
+                                      pixelDerivativeOf(hasUp, up, hasDown, down, c, 1.0f));
+          // The halves' sums (quarters: two a half).
+          const float frontSum = Samples == 2 ? psv[0] : psv[0] + psv[1];
+          const float frontWeight = Samples == 2 ? psw[0] : psw[0] + psw[1];
+          const float backSum = psv[Samples - 1] + (Samples == 2 ? 0.0f : psv[Samples - 2]);
+          const float backWeight = psw[Samples - 1] + (Samples == 2 ? 0.0f : psw[Samples - 2]);
+          normal = fieldGradientOf(derivatives, frontSum, frontWeight, backSum, backWeight, zNear,
+                                   zFar, s.proj);
+        }
+        const glm::dvec2 centre(px0 + x + 0.5, py0 + y + 0.5);
         const glm::vec4 c =
             classifySlab<Samples>(samples, neighbour && had, last[p], backToFront, s.tables, zNear,
-                                  zFar, SegmentLight<Normals>(s, centre, normalSum));
+                                  zFar, SegmentLight<Normals>(s, centre, normal));
         if (backToFront) {
           const float keep = 1.0f - c.a;
           image.r[p] = c.r + keep * image.r[p];
@@ -262,10 +365,14 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
       }
       live[p] = image.a[p] < termination ? 1.0f : 0.0f;
     }
+    if (kFieldNormals<Normals>) border.clear();
     liveRows.update(live);
     previous = current;
     any = false;
   };
+  // The pixels that add a slab's kernels: those taking more slabs; field normals, all.
+  const float* adding = kFieldNormals<Normals> ? inside : live;
+  const LiveRows& addingRows = kFieldNormals<Normals> ? insideRows : liveRows;
   forEachTileItem(work, backToFront, [&](const TileCompositor::Item& item) {
     if (item.slab != current) {
       finishSlab();
@@ -289,10 +396,60 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
     const float slopeX = s.flatDepths ? 0.0f : rec.depth.y;
     const float slopeY = s.flatDepths ? 0.0f : rec.depth.z;
     const float toErf = 1.0f / (std::sqrt(2.0f) * rec.depth.w);
+    const float b0 = bounds[0], b1 = bounds[std::min(1, Samples)];
+    const float b2 = bounds[std::min(2, Samples)], b3 = bounds[std::min(3, Samples)];
+    const float b4 = bounds[std::min(4, Samples)];
+    // The kernel's weight in each sample at a pixel `dx`, `dy` from its centre whose
+    // kernel-to-quadric value is `r` and kernel depth `mu`, kept between `lo` and `hi`
+    // (Clipped), times `mask`: the pixel loops' one formula.
+    const auto weightsAt = [&](float r, float mu, float lo, float hi, float mask,
+                               float(&d)[Samples]) __attribute__((always_inline)) {
+      const float g =
+          amplitude * halfScale * windowedGaussianOf(r < cutoff ? r : cutoff, cutoff) * mask;
+      const auto erfAt = [&](float b) __attribute__((always_inline)) {
+        // Values, not std::min's references: a select of addresses does not vectorize.
+        if (Clipped) b = b < lo ? lo : b > hi ? hi : b;
+        return profileErfOf((b - mu) * toErf, erfReach, Series);
+      };
+      const float e0 = erfAt(b0), e1 = erfAt(b1);
+      d[0] = g * std::max(e1 - e0, 0.0f);
+      if constexpr (Samples >= 2) {
+        const float e2 = erfAt(b2);
+        d[1] = g * std::max(e2 - e1, 0.0f);
+        if constexpr (Samples >= 4) {
+          const float e3 = erfAt(b3), e4 = erfAt(b4);
+          d[2] = g * std::max(e3 - e2, 0.0f);
+          d[3] = g * std::max(e4 - e3, 0.0f);
+        }
+      }
+    };
+    if constexpr (kFieldNormals<Normals>) {
+      // The border pixels the kernel's box reaches add to their sums.
+      int bx0, by0, bx1, by1;
+      boxPixels(rec.box, s.width, s.height, bx0, by0, bx1, by1);
+      for (int side = 0; side < TileBorder::kSides; ++side) {
+        const int n = side < 2 ? work.w : work.h;
+        for (int i = 0; i < n; ++i) {
+          int x, y;
+          TileBorder::pixel(work, side, i, x, y);
+          if (x < bx0 || x > bx1 || y < by0 || y > by1) continue;
+          const float dx = float(x) + 0.5f - cx, dy = float(y) + 0.5f - rec.box.y;
+          const float r = qa * dx * dx + 2.0f * qb * dx * dy + qc * dy * dy;
+          const float mu = (mu0 + slopeY * dy) + slopeX * dx;
+          float d[Samples];
+          weightsAt(r, mu, border.keptNear[side][i], border.keptFar[side][i], 1.0f, d);
+          for (int k = 0; k < Samples; ++k) {
+            border.weight[side][i] += d[k];
+            border.sum[side][i] += value * d[k];
+          }
+        }
+      }
+      if (x0 > x1 || y0 > y1) return true;  // binned for the border alone
+    }
     any = true;
     const uint32_t columns = LiveRows::columns(x0, x1);
     for (int y = y0; y <= y1; ++y) {
-      if (!(liveRows.bits[y] & columns)) continue;
+      if (!(addingRows.bits[y] & columns)) continue;
       const float dy = float(py0 + y) + 0.5f - rec.box.y;
       const float rowR = qc * dy * dy, rowMu = mu0 + slopeY * dy;
       // Every plane a restrict pointer of its own, the samples written out: the loop vectorizes.
@@ -312,50 +469,33 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
         float* __restrict n0 = sn[0] + (kVoxel ? at : 0);
         float* __restrict n1 = sn[kVoxel ? 1 : 0] + (kVoxel ? at : 0);
         float* __restrict n2 = sn[kVoxel ? 2 : 0] + (kVoxel ? at : 0);
-        const float* lv = live + at;
+        const float* lv = adding + at;
         const float* kn = keptNear + at;
         const float* kf = keptFar + at;
         const float* xc = centreX + first;
-        const float b0 = bounds[0], b1 = bounds[std::min(1, Samples)];
-        const float b2 = bounds[std::min(2, Samples)], b3 = bounds[std::min(3, Samples)];
-        const float b4 = bounds[std::min(4, Samples)];
         for (int i = 0; i < decltype(n)::value; ++i) {
           const int x = first + i;
           const float dx = xc[i] - cx;
           const float r = qa * dx * dx + 2.0f * qb * dx * dy + rowR;
           const float mu = rowMu + slopeX * dx;
           const bool take = (x >= x0) & (x <= x1) & (lv[i] > 0.0f);
-          const float g = amplitude * halfScale *
-                          windowedGaussianOf(r < cutoff ? r : cutoff, cutoff) *
-                          (take ? 1.0f : 0.0f);
-          const auto erfAt = [&](float b) __attribute__((always_inline)) {
-            // Values, not std::min's references: a select of addresses does not vectorize.
-            if (Clipped) {
-              const float lo = kn[i], hi = kf[i];
-              b = b < lo ? lo : b > hi ? hi : b;
-            }
-            return profileErfOf((b - mu) * toErf, erfReach, Series);
-          };
-          float total = 0.0f;  // voxel normals: the kernel's weight in the slab
-          const auto add = [&](float* __restrict w, float* __restrict v, float share)
-              __attribute__((always_inline)) {
-            const float d = g * std::max(share, 0.0f);
-            w[i] += d;
-            v[i] += value * d;
-            if constexpr (kVoxel) total += d;
-          };
-          const float e0 = erfAt(b0), e1 = erfAt(b1);
-          add(w0, v0, e1 - e0);
+          float d[Samples];
+          weightsAt(r, mu, Clipped ? kn[i] : 0.0f, Clipped ? kf[i] : 0.0f, take ? 1.0f : 0.0f, d);
+          w0[i] += d[0];
+          v0[i] += value * d[0];
           if constexpr (Samples >= 2) {
-            const float e2 = erfAt(b2);
-            add(w1, v1, e2 - e1);
+            w1[i] += d[1];
+            v1[i] += value * d[1];
             if constexpr (Samples >= 4) {
-              const float e3 = erfAt(b3), e4 = erfAt(b4);
-              add(w2, v2, e3 - e2);
-              add(w3, v3, e4 - e3);
+              w2[i] += d[2];
+              v2[i] += value * d[2];
+              w3[i] += d[3];
+              v3[i] += value * d[3];
             }
           }
           if constexpr (kVoxel) {
+            float total = 0.0f;  // the kernel's weight in the slab
+            for (int k = 0; k < Samples; ++k) total += d[k];
             n0[i] += nx * total;
             n1[i] += ny * total;
             n2[i] += nz * total;
@@ -444,12 +584,13 @@ __attribute__((always_inline)) inline void wholeTileOf(const TileWork& work) {
 template <bool Series, bool Clipped, TileNormals Normals>
 inline void postTileWith(const TileWork& work) {
   const int samples = work.settings->samples;
-  if (samples >= 4)
+  if (samples >= 4) {
     postTileOf<4, Series, Clipped, Normals>(work);
-  else if (samples == 2)
+  } else if (samples == 2) {
     postTileOf<2, Series, Clipped, Normals>(work);
-  else
+  } else if constexpr (Normals != TileNormals::Field) {  // field normals: pre-integrated only
     postTileOf<1, Series, Clipped, Normals>(work);
+  }
 }
 
 // The tile's gather for the frame's settings: each variant's pixel loops compiled without the
@@ -464,6 +605,8 @@ inline void gatherTileWith(const TileWork& work) {
     case TileGather::Post:
       if (s.normals == TileNormals::Voxel)
         postTileWith<Series, Clipped, TileNormals::Voxel>(work);
+      else if (s.normals == TileNormals::Field)
+        postTileWith<Series, Clipped, TileNormals::Field>(work);
       else if (s.normals == TileNormals::Ray)
         postTileWith<Series, Clipped, TileNormals::Ray>(work);
       else

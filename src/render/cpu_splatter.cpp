@@ -12,17 +12,6 @@
 
 namespace ewa {
 
-bool cpuSplatterDraws(const RenderSettings& s, std::string* why) {
-  const char* reason = nullptr;
-  // Field normals take the neighbouring pixels' values, some in the tiles beside a tile's.
-  if (SplatRenderer::fieldNormals(s))
-    reason =
-        "the CPU splatter does not draw --post-normals field (voxel and ray normals it does): "
-        "rasterized";
-  if (reason && why) *why = reason;
-  return reason == nullptr;
-}
-
 SplatFrameSetup cpuSplatSetup(const Volume& volume, const Camera& camera, const Projection& proj,
                               const RenderSettings& settings, const KernelReach& reach,
                               const std::vector<glm::vec4>& transfer) {
@@ -49,6 +38,7 @@ SplatFrameSetup cpuSplatSetup(const Volume& volume, const Camera& camera, const 
 
 TileNormals tileNormals(const RenderSettings& settings) {
   if (!postClassified(settings) || !settings.lighting.enabled) return TileNormals::None;
+  if (SplatRenderer::fieldNormals(settings)) return TileNormals::Field;
   return SplatRenderer::rayNormals(settings) ? TileNormals::Ray : TileNormals::Voxel;
 }
 

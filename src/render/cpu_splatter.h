@@ -17,11 +17,6 @@
 
 namespace ewa {
 
-// Whether the CPU splatter draws frames under `settings`: every mode and order, pre-classified
-// and post-classified, unshaded or lit by voxel or ray normals (field normals are rasterized).
-// `why`: the reason it does not, for RenderStats::note.
-bool cpuSplatterDraws(const RenderSettings& settings, std::string* why = nullptr);
-
 // The splat programs' per-frame state (SplatRenderer::setCommonUniforms) for `volume` seen by
 // `volumeCamera` (in the volume's own frame) through `proj` under `settings`, with the
 // partition's `reach` and the transfer function's baked table.

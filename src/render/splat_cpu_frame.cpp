@@ -24,11 +24,6 @@ void SplatRenderer::cancelCpu() {
 
 SplatRenderer::CpuStep SplatRenderer::drawCpu(double budgetMs, Clock::time_point stepStart) {
   if (!frame_.cpuPending) {
-    std::string why;
-    if (!cpuSplatterDraws(frame_.settings, &why)) {
-      if (frame_.settings.splatter == Splatter::Cpu) stats_.note = why;
-      return CpuStep::Skipped;
-    }
     if (frame_.gpuSlabs || !volume_ || classified_.splats.size() == 0) return CpuStep::Skipped;
     if (!cpu_) cpu_ = std::make_unique<CpuSplatter>();
     SplatFrameSetup setup = cpuSplatSetup(*volume_, frame_.camera, frame_.proj, frame_.settings,

@@ -102,7 +102,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     // Splats beyond a storage block: the GPU partition cannot read them, the CPU's can.
     frame_.texelBuffers = texelBuffers();
     // The CPU splatter reads the CPU partition's lists.
-    frame_.cpuFrame = cpuWanted(settings) && cpuSplatterDraws(settings);
+    frame_.cpuFrame = cpuWanted(settings);
     frame_.gpuSlabs = gpuPartition() && !frame_.texelBuffers && !cpuWanted(settings);
     stats_.gpuPartition = frame_.gpuSlabs;
     if (frame_.gpuSlabs) {

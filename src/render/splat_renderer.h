@@ -316,8 +316,8 @@ class SplatRenderer : public Renderer {
   // Whether the frame's splats go to the CPU splatter: asked for (Splatter::Cpu), or auto on a
   // software rasterizer, where it is many times faster than rasterizing the kernels.
   bool cpuWanted(const RenderSettings& settings) const;
-  // Draws the whole frame on the CPU if it can (Drawn), else Skipped: nothing drawn and the
-  // reason in the statistics' note, where cpuSplatterDraws says it does not. Within a budget
+  // Draws the whole frame on the CPU (Drawn), or Skipped where there is nothing to draw or the
+  // GPU partition has the frame's lists. Within a budget
   // (a window's step, begun at `stepStart`) the work runs on a worker thread and steps return
   // Pending, after waiting at most what is left of `budgetMs`, until it is done.
   enum class CpuStep { Drawn, Skipped, Pending };
@@ -547,7 +547,7 @@ class SplatRenderer : public Renderer {
     bool gpuSlabs = false;             // slabs come from gpuPartition_
     bool tiles = false;                // drawn in compute tiles: the picture is tiles_'s
     bool cpu = false;                  // drawn on the CPU: the picture is cpu_'s
-    bool cpuFrame = false;             // meant for the CPU splatter (cpuWanted, and it draws it)
+    bool cpuFrame = false;             // meant for the CPU splatter (cpuWanted)
     bool cpuPending = false;           // its work runs on pendingCpu_
     Clock::time_point cpuStart;        // when that work began
     bool tilesFirstUse = false;        // tiles: programs compiled or the splatter made for it

@@ -35,8 +35,7 @@ bool SplatRenderer::requestGradients(const RenderSettings& settings) {
   }
   const GradientMode mode = settings.classification.gradient;
   // The CPU splatter reads them in memory, with no texture.
-  const GradientUse use = cpuWanted(settings) && cpuSplatterDraws(settings) ? GradientUse::Memory
-                                                                            : GradientUse::Texture;
+  const GradientUse use = cpuWanted(settings) ? GradientUse::Memory : GradientUse::Texture;
   if (gradients_.holds(*volume_, mode, use)) return false;
   cancelCpu();                              // a CPU frame under way may read the ones held
   gradients_.request(*volume_, mode, use);  // nothing when that build is under way

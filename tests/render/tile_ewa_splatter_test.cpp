@@ -335,6 +335,22 @@ TEST_F(TileEwaSplatterTest, RendererDrawsWholeFramesInTilesWhenAsked) {
   EXPECT_FALSE(r.stats().tiles) << "budgeted steps are rasterized";
 }
 
+// While it lives, `r` chooses as on a GPU: auto's choice between the rasterizer and the tiles,
+// not the CPU splatter it takes on a software rasterizer.
+class AsIfOnAGpu {
+ public:
+  explicit AsIfOnAGpu(SplatRenderer& r) : r_(r), software_(r.softwareGl()) {
+    r_.setSoftwareRasterizer(false);
+  }
+  ~AsIfOnAGpu() { r_.setSoftwareRasterizer(software_); }
+  AsIfOnAGpu(const AsIfOnAGpu&) = delete;
+  AsIfOnAGpu& operator=(const AsIfOnAGpu&) = delete;
+
+ private:
+  SplatRenderer& r_;
+  bool software_;
+};
+
 // RenderSettings::splatter auto (the default): rasterized where the GPU's timers are not used
 // (software rasterizers); where they are, the first timed frame is rasterized, the next drawn in
 // tiles, and the third the way whose splat stage took less. A frame in tiles does not count for
@@ -348,10 +364,8 @@ TEST_F(TileEwaSplatterTest, AutoSplatterTriesBothThenTakesTheFaster) {
   RenderSettings settings = tileSettings();
   settings.splatter = Splatter::Auto;
   settings.slabPasses = 0;
-  // Post-classified and shaded from the field, which the CPU splatter leaves to the GL (auto's
-  // choice on a software rasterizer otherwise).
-  settings.lighting.enabled = true;
-  settings.postNormals = PostNormals::Field;
+  settings.lighting.enabled = true;  // post-classified and shaded from the field
+  const AsIfOnAGpu gpu(r);
   r.setGpuTimers(false);
   r.render(cam, settings, width, height);
   EXPECT_FALSE(r.stats().tiles);
@@ -387,6 +401,7 @@ TEST_F(TileEwaSplatterTest, AutoSplatterTriesBothThenTakesTheFaster) {
   // the next frame tries the tiles again, then the rasterizer.
   {
     SplatRenderer fresh{gl::ShaderLibrary()};
+    const AsIfOnAGpu freshGpu(fresh);
     fresh.setPartition(PartitionMode::Cpu);
     fresh.setVolume(vol);
     fresh.setTransferFunction(tf);
@@ -430,8 +445,8 @@ TEST_F(TileEwaSplatterTest, AutoSplatterDrawsBudgetedFramesInTilesWhereTheyFit) 
     const bool timers = r.gpuTimers();
     RenderSettings settings = tileSettings();
     settings.splatter = Splatter::Auto;
-    settings.lighting.enabled = true;  // shaded from the field: not on the CPU splatter
-    settings.postNormals = PostNormals::Field;
+    settings.lighting.enabled = true;  // post-classified and shaded from the field
+    const AsIfOnAGpu gpu(r);
     r.setGpuTimers(false);
     r.render(cam, settings, width, height);
     const Image8 raster = r.readImage();
