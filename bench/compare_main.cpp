@@ -298,6 +298,8 @@ int run(int argc, char** argv) {
         std::vector<std::string> args = vtkCameraArguments(cam, scene.volume);
         args.insert(args.end(), {"--size", std::to_string(size), "--repeats",
                                  std::to_string(o.repeats), "--mapper", mapper});
+        const std::vector<std::string> light = vtkLightingArguments(rs.lighting);
+        args.insert(args.end(), light.begin(), light.end());
         if (!o.imagesDir.empty())
           args.insert(args.end(), {"--image", stem + "vtk-" + mapper + ".png"});
         const VtkTiming t = vtk->run(args);

@@ -42,6 +42,13 @@ std::vector<std::string> vtkCameraArguments(const Camera& camera, const Volume& 
   return args;
 }
 
+std::vector<std::string> vtkLightingArguments(const Lighting& lighting) {
+  if (!lighting.enabled) return {};
+  return {"--shade", std::to_string(lighting.ambient) + "," + std::to_string(lighting.diffuse) +
+                         "," + std::to_string(lighting.specular) + "," +
+                         std::to_string(lighting.shininess)};
+}
+
 std::string VtkRunner::defaultScript() {
   return std::string(EWA_ASSET_DIR) + "/../scripts/vtk_raycast_bench.py";
 }

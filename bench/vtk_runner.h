@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "core/shading.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
 
@@ -23,6 +24,9 @@ struct VtkTiming {
 // The script's arguments for the view `camera` draws of `volume`: the camera moved into the
 // volume's own frame (where the raw file's voxels lie), its view angle and projection.
 std::vector<std::string> vtkCameraArguments(const Camera& camera, const Volume& volume);
+
+// The script's arguments for `lighting` (--shading's head light): none where it is off.
+std::vector<std::string> vtkLightingArguments(const Lighting& lighting);
 
 // Writes the volume (raw, little-endian) and transfer function to unique temporary files for
 // as long as it lives, and runs the script on them (under xvfb-run when DISPLAY is unset).

@@ -4,7 +4,8 @@
 Renders each volume of ../shared/data at 512x512 with --splatter raster and --splatter cpu
 (the same build), and prints per volume the SSIM (8x8 windows, stride 4, RGB) and the largest
 channel difference, as CSV. Needs numpy and PIL (Debian's python3-numpy, python3-pil).
-Usage: scripts/cpu_splatter_agreement.py [BUILD/ewaview] [DATA] [OUTDIR]
+Usage: scripts/cpu_splatter_agreement.py [BUILD/ewaview] [DATA] [OUTDIR] [OPTION...]
+(OPTIONs go to both pictures' command lines, e.g. --shading --post-normals field).
 """
 import os
 import subprocess
@@ -40,6 +41,7 @@ def main():
     ewaview = sys.argv[1] if len(sys.argv) > 1 else "build/ewaview"
     data = sys.argv[2] if len(sys.argv) > 2 else "../shared/data"
     out = sys.argv[3] if len(sys.argv) > 3 else "/tmp/cpu_splatter_agreement"
+    options = sys.argv[4:]
     os.makedirs(out, exist_ok=True)
     print("volume,ssim,max_levels")
     for volume in VOLUMES:
@@ -50,7 +52,7 @@ def main():
         for splatter in ("raster", "cpu"):
             png = os.path.join(out, volume.replace("/", "_") + "_" + splatter + ".png")
             subprocess.run(["xvfb-run", "-a", ewaview, path, "--splatter", splatter,
-                            "--resolution", "512,512", "--output", png], check=True,
+                            "--resolution", "512,512", "--output", png] + options, check=True,
                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
             pictures.append(np.asarray(Image.open(png).convert("RGB")))
         a, b = pictures

@@ -65,7 +65,9 @@ def read_volume(a):
     return reader
 
 
-def volume_property(path):
+def volume_property(path, shade=None):
+    """The transfer function's property; `shade` (ambient, diffuse, specular, power): lit by
+    the renderer's head light from the gradient, as ewaview's --shading."""
     tf = json.load(open(path))
     opacity = vtkPiecewiseFunction()
     for v, alpha in tf["opacity"]:
@@ -79,7 +81,14 @@ def volume_property(path):
     prop.SetColor(color)
     prop.SetScalarOpacityUnitDistance(tf.get("opacity_unit_distance", 1.0))
     prop.SetInterpolationTypeToLinear()
-    prop.ShadeOff()
+    if shade is None:
+        prop.ShadeOff()
+    else:
+        prop.ShadeOn()
+        prop.SetAmbient(shade[0])
+        prop.SetDiffuse(shade[1])
+        prop.SetSpecular(shade[2])
+        prop.SetSpecularPower(shade[3])
     return prop
 
 
@@ -120,6 +129,7 @@ def main():
     p.add_argument("--repeats", type=int, default=5)
     p.add_argument("--mapper", choices=["cpu", "gpu"], default="cpu")
     p.add_argument("--image")
+    p.add_argument("--shade", help="ambient,diffuse,specular,power: shaded (default: unshaded)")
     a = p.parse_args()
     if (a.views is None) == (a.camera is None):
         raise SystemExit("vtk_raycast_bench.py: give one of --views and --camera")
@@ -132,7 +142,8 @@ def main():
     mapper.SetInputConnection(reader.GetOutputPort())
     volume = vtkVolume()
     volume.SetMapper(mapper)
-    volume.SetProperty(volume_property(a.tf))
+    shade = numbers(a.shade, 4, "shade") if a.shade else None
+    volume.SetProperty(volume_property(a.tf, shade))
     ren = vtkRenderer()
     ren.SetBackground(0.0, 0.0, 0.0)
     ren.AddVolume(volume)

@@ -13,17 +13,9 @@ namespace ewa {
 
 namespace {
 
-// 10 bits, zero at level 512 and +-1 at 1023 and 1: a zero gradient (uniform data) reads back
-// as exactly zero, so it is drawn unshaded; with the levels' middle (511.5) for zero it read as
-// 1/1023 in each component and lit uniform haze from a corner direction.
-constexpr double kZero = 512.0, kSteps = 511.0;
-
 uint32_t packComponent(double c) {
-  return uint32_t(kZero + double(std::lround(std::clamp(c, -1.0, 1.0) * kSteps)));
-}
-
-double unpackComponent(uint32_t bits) {
-  return (double(bits & 1023u) - kZero) / kSteps;
+  return uint32_t(kGradientZeroLevel +
+                  double(std::lround(std::clamp(c, -1.0, 1.0) * kGradientSteps)));
 }
 
 // A volume's values by linear index as doubles, NaN read as 0, for one scalar type: no switch
@@ -104,32 +96,11 @@ PackedGradients packGradients(const Volume& volume, GradientMode mode, unsigned 
 }
 
 glm::dvec3 unpackGradient(uint32_t texel) {
-  return {unpackComponent(texel), unpackComponent(texel >> 10), unpackComponent(texel >> 20)};
+  return unpackGradientOf<double>(texel);
 }
 
 glm::dvec3 sampleGradient(const PackedGradients& gradients, const glm::dvec3& index) {
-  const auto& d = gradients.dims;
-  if (gradients.texels.empty()) return glm::dvec3(0.0);
-  int64_t lo[3];
-  double f[3];
-  for (int a = 0; a < 3; ++a) {
-    const double x = std::clamp(index[a], 0.0, double(d[a] - 1));
-    lo[a] = std::min<int64_t>(int64_t(std::floor(x)), d[a] - 1);
-    f[a] = x - double(lo[a]);
-  }
-  glm::dvec3 sum(0.0);
-  for (int corner = 0; corner < 8; ++corner) {
-    double w = 1.0;
-    int64_t p[3];
-    for (int a = 0; a < 3; ++a) {
-      const bool high = (corner >> a) & 1;
-      p[a] = std::min<int64_t>(lo[a] + (high ? 1 : 0), d[a] - 1);
-      w *= high ? f[a] : 1.0 - f[a];
-    }
-    if (w == 0.0) continue;
-    sum += w * unpackGradient(gradients.texels[size_t(p[0] + d[0] * (p[1] + d[1] * p[2]))]);
-  }
-  return sum;
+  return sampleGradientOf(gradients, index);
 }
 
 }  // namespace ewa

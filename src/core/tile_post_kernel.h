@@ -90,9 +90,10 @@ template <TileNormals Normals>
 struct SegmentLight {
   const TileCompositeSettings* settings = nullptr;
   glm::vec3 toEye{0.0f, 0.0f, 1.0f};
-  glm::vec3 normal{0.0f};    // Voxel, Field: unit, or zero (unlit)
-  IndexRay ray;              // Ray: the pixel's, in index coordinates
-  glm::dmat3 toCamera{1.0};  // Ray: index-space gradients to camera space
+  glm::vec3 normal{0.0f};  // Voxel, Field: unit, or zero (unlit)
+  glm::vec3 origin{0.0f};  // Ray: the pixel's ray in index coordinates (indexRay)
+  glm::vec3 direction{0.0f};
+  glm::mat3 toCamera{1.0f};  // Ray: index-space gradients to camera space
 
   // The light at the pixel centred at `centre` (voxel normals: with the summed normals `sum`;
   // field normals: the field's gradient).
@@ -108,8 +109,10 @@ struct SegmentLight {
       normal = length > 0.0f ? sum / length : glm::vec3(0.0f);
     }
     if constexpr (Normals == TileNormals::Ray) {
-      ray = indexRay(s.cameraToIndex, s.proj, centre);
-      toCamera = glm::transpose(glm::dmat3(s.cameraToIndex));
+      const IndexRay ray = indexRay(s.cameraToIndex, s.proj, centre);
+      origin = glm::vec3(ray.origin);
+      direction = glm::vec3(ray.direction);
+      toCamera = glm::mat3(glm::transpose(glm::dmat3(s.cameraToIndex)));
     }
   }
 
@@ -123,10 +126,10 @@ struct SegmentLight {
       if constexpr (Normals == TileNormals::Ray) {
         if (!(c.a > 0.0f)) return c;
         // rayGradient: the texture read at the point's index coordinates, turned to camera space.
-        const glm::dvec3 g = toCamera * sampleGradient(*settings->gradients,
-                                                       ray.origin + double(depth) * ray.direction);
-        const double length = glm::length(g);
-        n = length > 0.0 ? glm::vec3(g / length) : glm::vec3(0.0f);
+        const glm::vec3 g =
+            toCamera * sampleGradientOf(*settings->gradients, origin + depth * direction);
+        const float length = glm::length(g);
+        n = length > 0.0f ? g / length : glm::vec3(0.0f);
       }
       const HeadlightTerms<float> t = headlightTermsOf(n, toEye, settings->lighting);
       return glm::vec4(glm::vec3(c) * t.gain + t.white * c.a, c.a);
@@ -399,9 +402,9 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
     const float b0 = bounds[0], b1 = bounds[std::min(1, Samples)];
     const float b2 = bounds[std::min(2, Samples)], b3 = bounds[std::min(3, Samples)];
     const float b4 = bounds[std::min(4, Samples)];
-    // The kernel's weight in each sample at a pixel `dx`, `dy` from its centre whose
-    // kernel-to-quadric value is `r` and kernel depth `mu`, kept between `lo` and `hi`
-    // (Clipped), times `mask`: the pixel loops' one formula.
+    // The kernel's weight in each sample at a pixel where its footprint's quadratic form is
+    // `r` and its depth `mu`, the depths kept between `lo` and `hi` (Clipped), times `mask`:
+    // the one formula of the tile's pixels and its border's.
     const auto weightsAt = [&](float r, float mu, float lo, float hi, float mask,
                                float(&d)[Samples]) __attribute__((always_inline)) {
       const float g =

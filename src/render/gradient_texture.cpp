@@ -1,5 +1,5 @@
 // GradientTexture: packs the volume's gradient on a worker and uploads it as an RGB10_A2 3D
-// texture.
+// texture, or keeps it in memory, or both.
 #include "render/gradient_texture.h"
 
 #include <algorithm>
@@ -15,63 +15,72 @@ GradientTexture::~GradientTexture() {
   invalidate();  // the worker reads the volume
 }
 
-void GradientTexture::request(const Volume& volume, GradientMode mode, GradientUse use) {
-  if (holds(volume, mode, use)) return;
-  if ((pending_.valid() || uploading_) && pendingVolume_ == &volume && pendingMode_ == mode &&
-      pendingUse_ == use)
-    return;
-  release();  // the other use's texture or memory too
+void GradientTexture::checkTextureSize(const Volume& volume) {
   const auto& d = volume.dims();
   GLint largest = 0;
-  if (use == GradientUse::Texture) glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
-  if (use == GradientUse::Texture && std::max({d[0], d[1], d[2]}) > int64_t(largest))
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
+  if (std::max({d[0], d[1], d[2]}) > int64_t(largest))
     throw gl::GlError("volume: " + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
                       std::to_string(d[2]) + " voxels exceed GL_MAX_3D_TEXTURE_SIZE " +
                       std::to_string(largest) +
                       " for the ray normals' gradient texture (--post-normals field does not "
                       "need it)");
-  pendingVolume_ = &volume;
-  pendingMode_ = mode;
-  pendingUse_ = use;
+}
+
+void GradientTexture::request(const Volume& volume, GradientMode mode, GradientUse use) {
+  const bool texture = use == GradientUse::Texture;
+  if (texture) checkTextureSize(volume);
+  use_ = use;
+  if (volume_ == &volume && mode_ == mode) {  // held, or under way, for a use
+    if (texture && !wantTexture_) {
+      wantTexture_ = true;
+      if (!pending_.valid()) beginUpload();  // from the gradients held in memory
+    }
+    if (!texture && !keepPacked_) {
+      keepPacked_ = true;
+      // The texture's upload under way keeps its copy; a texture held alone is packed again.
+      if (!pending_.valid() && !uploading_)
+        pending_ =
+            std::async(std::launch::async, [&volume, mode] { return packGradients(volume, mode); });
+    }
+    return;
+  }
+  release();  // other gradients
+  volume_ = &volume;
+  mode_ = mode;
+  wantTexture_ = texture;
+  keepPacked_ = !texture;
   pending_ =
       std::async(std::launch::async, [&volume, mode] { return packGradients(volume, mode); });
 }
 
+void GradientTexture::beginUpload() {
+  const auto& d = packed_.dims;
+  texture_ = gl::Texture();
+  texture_ = gl::Texture::create3D(GL_RGB10_A2, GLsizei(d[0]), GLsizei(d[1]), GLsizei(d[2]));
+  gl::checkGlError(
+      ("gradient texture (" + std::to_string(d[0] * d[1] * d[2]) + " voxels)").c_str());
+  uploaded_ = 0;
+  uploading_ = true;
+}
+
 bool GradientTexture::ready(double budgetMs) {
   const auto start = std::chrono::steady_clock::now();
+  if (volume_ == nullptr) return false;
   if (pending_.valid()) {
     if (std::isfinite(budgetMs)) {
       const auto wait = std::chrono::duration<double, std::milli>(std::max(budgetMs, 0.0));
       if (pending_.wait_for(wait) != std::future_status::ready) return false;
     }
     packed_ = pending_.get();
-    if (pendingUse_ == GradientUse::Memory) {
-      holdPending();
-      return true;
-    }
-    const auto& d = packed_.dims;
-    texture_ = gl::Texture();
-    volume_ = nullptr;
-    texture_ = gl::Texture::create3D(GL_RGB10_A2, GLsizei(d[0]), GLsizei(d[1]), GLsizei(d[2]));
-    gl::checkGlError(
-        ("gradient texture (" + std::to_string(d[0] * d[1] * d[2]) + " voxels)").c_str());
-    uploaded_ = 0;
-    uploading_ = true;
+    if (wantTexture_ && !texture_) beginUpload();
   }
   if (uploading_) {
     if (!uploadParts(budgetMs, start)) return false;
     uploading_ = false;
-    packed_ = PackedGradients();
-    holdPending();
+    if (!keepPacked_) packed_ = PackedGradients();
   }
-  return volume_ != nullptr && (use_ == GradientUse::Memory || texture_);
-}
-
-void GradientTexture::holdPending() {
-  volume_ = pendingVolume_;
-  mode_ = pendingMode_;
-  use_ = pendingUse_;
-  pendingVolume_ = nullptr;
+  return holds(*volume_, mode_, use_);
 }
 
 bool GradientTexture::uploadParts(double budgetMs, std::chrono::steady_clock::time_point start) {
@@ -100,8 +109,8 @@ void GradientTexture::invalidate() {
   pending_ = {};
   uploading_ = false;
   packed_ = PackedGradients();
-  pendingVolume_ = nullptr;
   volume_ = nullptr;
+  wantTexture_ = keepPacked_ = false;
 }
 
 void GradientTexture::releaseWhenIdle() {

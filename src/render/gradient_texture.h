@@ -15,7 +15,7 @@
 namespace ewa {
 
 // Where the gradients go: up to a texture for the slab pass, or kept in memory for the CPU
-// splatter (no texture).
+// splatter. Both may be held at once (frames of both splatters from one renderer).
 enum class GradientUse { Texture, Memory };
 
 class GradientTexture {
@@ -25,10 +25,11 @@ class GradientTexture {
   GradientTexture(const GradientTexture&) = delete;
   GradientTexture& operator=(const GradientTexture&) = delete;
 
-  // Starts packing `volume`'s gradients under `mode` for `use` on a worker thread unless they
-  // are held so or that build is under way (a build of others is waited for and dropped). The
-  // volume must stay alive and unchanged until ready() or invalidate(). Throws gl::GlError when
-  // an axis exceeds GL_MAX_3D_TEXTURE_SIZE (for a texture).
+  // Makes `volume`'s gradients under `mode` ready for `use`: nothing where they are held so;
+  // packed on a worker thread, or (a texture) uploaded from those held in memory, otherwise.
+  // Other gradients held or under way are dropped. The volume must stay alive and unchanged
+  // until ready() or invalidate(). Throws gl::GlError when an axis exceeds
+  // GL_MAX_3D_TEXTURE_SIZE (for a texture).
   void request(const Volume& volume, GradientMode mode, GradientUse use = GradientUse::Texture);
   // Whether the gradients are held as request() last asked for, uploading a finished build
   // (on the GL thread) in parts. Spends at most about `budgetMs` waiting for the worker and
@@ -38,11 +39,11 @@ class GradientTexture {
   // True when `volume`'s gradients under `mode` are held for `use` (nothing to wait for).
   bool holds(const Volume& volume, GradientMode mode,
              GradientUse use = GradientUse::Texture) const {
-    return volume_ == &volume && mode_ == mode && use_ == use &&
-           (use == GradientUse::Memory || texture_);
+    if (volume_ != &volume || mode_ != mode) return false;
+    return use == GradientUse::Texture ? texture_ && !uploading_ : keepPacked_ && !pending_.valid();
   }
-  // GradientUse::Memory: the gradients held (ready() true), unchanged until the next request,
-  // invalidate() or release().
+  // GradientUse::Memory: the gradients held (ready() true), unchanged until the next request
+  // for other gradients, invalidate() or release().
   const PackedGradients& packed() const { return packed_; }
   // release() unless the worker is still packing (waiting for it would hold a UI frame): then
   // nothing, and a later call frees it.
@@ -57,22 +58,23 @@ class GradientTexture {
   size_t bytes() const;
 
  private:
+  // Throws gl::GlError where `volume` is too large for a 3D texture.
+  static void checkTextureSize(const Volume& volume);
+  // Makes the texture for packed_ and starts its upload.
+  void beginUpload();
   // Uploads parts of packed_ from slice uploaded_ on until all are up (true) or `budgetMs` has
   // passed since `start`.
   bool uploadParts(double budgetMs, std::chrono::steady_clock::time_point start);
-  // The build asked for is the one held.
-  void holdPending();
 
   gl::Texture texture_;
-  const Volume* volume_ = nullptr;  // what texture_ holds
+  const Volume* volume_ = nullptr;  // whose gradients are held or under way
   GradientMode mode_ = GradientMode::Central;
-  GradientUse use_ = GradientUse::Texture;
-  std::future<PackedGradients> pending_;  // the worker's build of pendingVolume_'s
-  const Volume* pendingVolume_ = nullptr;
-  GradientMode pendingMode_ = GradientMode::Central;
-  GradientUse pendingUse_ = GradientUse::Texture;
-  PackedGradients packed_;  // a finished build going up in parts, or held in memory
-  int64_t uploaded_ = 0;    // slices of it uploaded
+  GradientUse use_ = GradientUse::Texture;  // what request() last asked for
+  bool wantTexture_ = false;                // a texture was asked for
+  bool keepPacked_ = false;                 // packed_ stays in memory (GradientUse::Memory)
+  std::future<PackedGradients> pending_;    // the worker's build
+  PackedGradients packed_;                  // held in memory, or a finished build going up in parts
+  int64_t uploaded_ = 0;                    // slices of it uploaded
   bool uploading_ = false;
 };
 

@@ -29,8 +29,9 @@ bool SplatRenderer::voxelNormalSums(const RenderSettings& settings) {
 
 bool SplatRenderer::requestGradients(const RenderSettings& settings) {
   if (!volume_ || !rayNormals(settings)) {
-    if (gradients_.bytes() > 0) cancelCpu();  // a CPU frame under way may read them
-    gradients_.releaseWhenIdle();             // not wanted: freed once no worker packs it
+    // A CPU frame under way may read them.
+    if (!gradients_.packed().texels.empty()) cancelCpu();
+    gradients_.releaseWhenIdle();  // not wanted: freed once no worker packs it
     return false;
   }
   const GradientMode mode = settings.classification.gradient;
@@ -38,7 +39,7 @@ bool SplatRenderer::requestGradients(const RenderSettings& settings) {
   const GradientUse use = cpuWanted(settings) ? GradientUse::Memory : GradientUse::Texture;
   if (gradients_.holds(*volume_, mode, use)) return false;
   cancelCpu();                              // a CPU frame under way may read the ones held
-  gradients_.request(*volume_, mode, use);  // nothing when that build is under way
+  gradients_.request(*volume_, mode, use);  // packed, or uploaded from memory, as needed
   return true;
 }
 

@@ -1,10 +1,13 @@
 // Shaded post-classification with ray normals: smooth surfaces seen obliquely stay smooth where
-// the field's gradient shows the slab period as stripes.
+// the field's gradient shows the slab period as stripes; the gradients held for both splatters.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include "image_compare.h"
+#include "render/gradient_texture.h"
 #include "render_fixture.h"
 
 namespace ewa::test {
@@ -146,6 +149,48 @@ TEST_F(RayNormals, BudgetedFrameWaitsForTheGradientsInSteps) {
   settings.lighting.enabled = false;
   r.render(cam, settings, size, size);
   EXPECT_LE(r.stats().gpuBytes + size_t(64 * 64 * 64 * 4), shaded);
+}
+
+// The gradients for both splatters at once: kept in memory for the CPU splatter, a texture made
+// from that copy for the slab pass (nothing packed again), and a texture held alone packed
+// again into memory while the texture stays usable.
+TEST_F(RayNormals, GradientsAreHeldForBothSplattersAtOnce) {
+  const SyntheticVolume s = makeSyntheticVolume("marschner-lobb:24");
+  const double unlimited = std::numeric_limits<double>::infinity();
+  const size_t texels = size_t(24 * 24 * 24);
+  GradientTexture g;
+  g.request(s.volume, GradientMode::Central, GradientUse::Memory);
+  EXPECT_FALSE(g.holds(s.volume, GradientMode::Central, GradientUse::Memory));
+  ASSERT_TRUE(g.ready(unlimited));
+  ASSERT_EQ(g.packed().texels.size(), texels);
+  EXPECT_EQ(g.bytes(), 0u) << "no texture";
+  const PackedGradients copy = g.packed();
+  const uint32_t* data = g.packed().texels.data();
+  g.request(s.volume, GradientMode::Central, GradientUse::Texture);
+  ASSERT_TRUE(g.ready(unlimited));
+  EXPECT_TRUE(g.holds(s.volume, GradientMode::Central, GradientUse::Texture));
+  EXPECT_TRUE(g.holds(s.volume, GradientMode::Central, GradientUse::Memory));
+  EXPECT_EQ(g.packed().texels.data(), data) << "the same copy, not packed again";
+  EXPECT_EQ(g.bytes(), texels * 4);
+  // The texture holds what memory does.
+  g.bindUnit(7);
+  glActiveTexture(GL_TEXTURE7);
+  GLint texture = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_3D, &texture);
+  glActiveTexture(GL_TEXTURE0);
+  std::vector<uint32_t> read(texels);
+  glGetTextureImage(GLuint(texture), 0, GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV,
+                    GLsizei(read.size() * 4), read.data());
+  EXPECT_EQ(read, copy.texels);
+  // Texture alone (another mode), then memory: packed again, the texture held meanwhile.
+  g.request(s.volume, GradientMode::Smooth, GradientUse::Texture);
+  ASSERT_TRUE(g.ready(unlimited));
+  EXPECT_TRUE(g.packed().texels.empty()) << "the upload's copy freed";
+  g.request(s.volume, GradientMode::Smooth, GradientUse::Memory);
+  EXPECT_TRUE(g.holds(s.volume, GradientMode::Smooth, GradientUse::Texture));
+  ASSERT_TRUE(g.ready(unlimited));
+  EXPECT_EQ(g.packed().texels, packGradients(s.volume, GradientMode::Smooth).texels);
+  EXPECT_TRUE(g.holds(s.volume, GradientMode::Smooth, GradientUse::Texture));
 }
 
 }  // namespace
