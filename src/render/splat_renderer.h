@@ -269,8 +269,9 @@ class SplatRenderer : public Renderer {
   void setSlabUniforms(const Slab& slab, bool split, bool openTails, int slabIndex = -1);
   // Post-classification (composite mode only): splats carry values, the slab pass classifies.
   static bool postClassified(const RenderSettings& settings);
-  // Starts the gradient texture's build (on a worker) for frames under `settings` that read it
-  // unless it is up to date, and frees it otherwise; returns whether a frame must wait for it.
+  // Makes the gradients ready for frames under `settings` that read them (a texture for the
+  // slab pass, in memory for the CPU splatter; packed on a worker) unless they are, and frees
+  // them otherwise; returns whether a frame must wait for them.
   bool requestGradients(const RenderSettings& settings);
   // Post-classified and pre-integrated between slabs: two slab images, drawn in turn.
   static bool pairedSlabs(const RenderSettings& settings);
