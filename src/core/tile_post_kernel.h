@@ -95,10 +95,17 @@ struct SegmentLight {
   glm::vec3 direction{0.0f};
   glm::mat3 toCamera{1.0f};  // Ray: index-space gradients to camera space
 
+  // The frame's turn of index-space gradients into camera space (rayGradient's transpose of
+  // the camera-to-index matrix), for SegmentLight's constructor.
+  static glm::mat3 gradientToCamera(const TileCompositeSettings& s) {
+    return glm::mat3(glm::transpose(glm::dmat3(s.cameraToIndex)));
+  }
+
   // The light at the pixel centred at `centre` (voxel normals: with the summed normals `sum`;
-  // field normals: the field's gradient).
-  SegmentLight(const TileCompositeSettings& s, const glm::dvec2& centre, const glm::vec3& sum)
-      : settings(&s) {
+  // field normals: the field's gradient; ray normals: `turn`, gradientToCamera).
+  SegmentLight(const TileCompositeSettings& s, const glm::dvec2& centre, const glm::vec3& sum,
+               const glm::mat3& turn)
+      : settings(&s), toCamera(turn) {
     if constexpr (Normals == TileNormals::None) return;
     if (!s.proj.orthographic) {
       const glm::dvec2 q = (centre - s.proj.principal) / s.proj.focalPixels;
@@ -112,7 +119,6 @@ struct SegmentLight {
       const IndexRay ray = indexRay(s.cameraToIndex, s.proj, centre);
       origin = glm::vec3(ray.origin);
       direction = glm::vec3(ray.direction);
-      toCamera = glm::mat3(glm::transpose(glm::dmat3(s.cameraToIndex)));
     }
   }
 
@@ -247,7 +253,8 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
   const float* stretch = state.stretch;
   TilePlanes image;
   loadTile(work, image);
-  alignas(32) float sv[Samples][kPixels], sw[Samples][kPixels];  // weight * value, weight
+  const glm::mat3 toCamera = SegmentLight<Normals>::gradientToCamera(s);  // ray normals
+  alignas(32) float sv[Samples][kPixels], sw[Samples][kPixels];           // weight * value, weight
   for (int p = 0; p < kPixels; ++p)
     for (int k = 0; k < Samples; ++k) sv[k][p] = sw[k][p] = 0.0f;
   // Voxel normals: the slab's weight * normal, x, y and z.
@@ -291,8 +298,8 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
         // As the halves' sums add up (quarters: two a half).
         float sum = sv[0][p] + sv[1][p], weight = sw[0][p] + sw[1][p];
         if constexpr (Samples == 4) {
-          sum = (sv[0][p] + sv[1][p]) + (sv[2][p] + sv[3][p]);
-          weight = (sw[0][p] + sw[1][p]) + (sw[2][p] + sw[3][p]);
+          sum += sv[2][p] + sv[3][p];
+          weight += sw[2][p] + sw[3][p];
         }
         weighted[p] = weight > 0.0f;
         mean[p] = weighted[p] ? sum / weight : 0.0f;
@@ -348,7 +355,7 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
         const glm::dvec2 centre(px0 + x + 0.5, py0 + y + 0.5);
         const glm::vec4 c =
             classifySlab<Samples>(samples, neighbour && had, last[p], backToFront, s.tables, zNear,
-                                  zFar, SegmentLight<Normals>(s, centre, normal));
+                                  zFar, SegmentLight<Normals>(s, centre, normal, toCamera));
         if (backToFront) {
           const float keep = 1.0f - c.a;
           image.r[p] = c.r + keep * image.r[p];

@@ -103,7 +103,7 @@ void SplatRenderer::beginFrame(const Camera& worldCamera, const RenderSettings& 
     frame_.texelBuffers = texelBuffers();
     // The CPU splatter reads the CPU partition's lists.
     frame_.cpuFrame = cpuWanted(settings);
-    frame_.gpuSlabs = gpuPartition() && !frame_.texelBuffers && !cpuWanted(settings);
+    frame_.gpuSlabs = gpuPartition() && !frame_.texelBuffers && !frame_.cpuFrame;
     stats_.gpuPartition = frame_.gpuSlabs;
     if (frame_.gpuSlabs) {
       if (!gpuPartition_) gpuPartition_ = std::make_unique<GpuSlabPartition>(shaders_);

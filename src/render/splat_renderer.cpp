@@ -107,9 +107,9 @@ void SplatRenderer::setPointSizeLimit(float limit) {
 }
 
 void SplatRenderer::setVolume(const Volume& volume) {
+  cancelCpu();      // it reads the splats and gradients
   upload_.reset();  // another volume's set
   volume_ = &volume;
-  cancelCpu();  // it reads the splats and gradients
   gradients_.invalidate();
   splatsDirty_ = true;
   passTuner_.reset();  // another volume: both ways timed again
