@@ -15,7 +15,7 @@ namespace ewa {
 inline double expOf(double x) {
   return std::exp(x);
 }
-inline float expOf(float x) {
+__attribute__((always_inline)) inline float expOf(float x) {
   // 2^n 2^f with n = round(x log2 e), |f| <= 1/2; 2^f = e^(f ln 2) by its Taylor series. n is
   // rounded by adding 1.5 * 2^23 (the sum's low bits hold it), without a float-to-int conversion.
   constexpr float kRound = 12582912.0f;

@@ -38,8 +38,8 @@ constexpr double kGradientZeroLevel = 512.0, kGradientSteps = 511.0;
 // One texel's gradient, relative to the largest component (each in [-1, 1]): the shader's
 // decoding ((texel * 1023 - 512) / 511), in the float type T.
 template <typename T>
-inline glm::vec<3, T> unpackGradientOf(uint32_t texel) {
-  const auto component = [](uint32_t bits) {
+__attribute__((always_inline)) inline glm::vec<3, T> unpackGradientOf(uint32_t texel) {
+  const auto component = [](uint32_t bits) __attribute__((always_inline)) {
     return (T(bits & 1023u) - T(kGradientZeroLevel)) / T(kGradientSteps);
   };
   return {component(texel), component(texel >> 10), component(texel >> 20)};
@@ -51,8 +51,8 @@ glm::dvec3 unpackGradient(uint32_t texel);
 // dims, in the float type T. The C++ mirror of rayGradient in shaders/slab_classify.glsl
 // before its turn into camera space; the CPU splatter's ray normals take it in float.
 template <typename T>
-inline glm::vec<3, T> sampleGradientOf(const PackedGradients& gradients,
-                                       const glm::vec<3, T>& index) {
+__attribute__((always_inline)) inline glm::vec<3, T> sampleGradientOf(
+    const PackedGradients& gradients, const glm::vec<3, T>& index) {
   const auto& d = gradients.dims;
   if (gradients.texels.empty()) return glm::vec<3, T>(T(0));
   int64_t lo[3], hi[3];
@@ -63,13 +63,13 @@ inline glm::vec<3, T> sampleGradientOf(const PackedGradients& gradients,
     hi[a] = std::min<int64_t>(lo[a] + 1, d[a] - 1);
     f[a] = x - T(lo[a]);
   }
-  const auto at = [&](int64_t x, int64_t y, int64_t z) {
+  const auto at = [&](int64_t x, int64_t y, int64_t z) __attribute__((always_inline)) {
     return unpackGradientOf<T>(gradients.texels[size_t(x + d[0] * (y + d[1] * z))]);
   };
-  const auto along = [&](int64_t y, int64_t z) {  // across x
+  const auto along = [&](int64_t y, int64_t z) __attribute__((always_inline)) {  // across x
     return (T(1) - f[0]) * at(lo[0], y, z) + f[0] * at(hi[0], y, z);
   };
-  const auto plane = [&](int64_t z) {  // across x and y
+  const auto plane = [&](int64_t z) __attribute__((always_inline)) {  // across x and y
     return (T(1) - f[1]) * along(lo[1], z) + f[1] * along(hi[1], z);
   };
   return (T(1) - f[2]) * plane(lo[2]) + f[2] * plane(hi[2]);

@@ -54,7 +54,7 @@ glm::dvec4 classifySlabPair(const std::vector<glm::vec4>& texels, int size,
 // GL_LINEAR at coordinate (v (n - 1) + 0.5) / n: texel position v (n - 1), between texels i0
 // and i1 on either side (clamped to the edge), t of the way to i1.
 template <typename T>
-inline void linearTexelsOf(T v, int n, int& i0, int& i1, T& t) {
+__attribute__((always_inline)) inline void linearTexelsOf(T v, int n, int& i0, int& i1, T& t) {
   const T x = std::clamp(v, T(0), T(1)) * T(n - 1);
   i0 = std::min(int(x), n - 1);  // x >= 0: int() is floor
   i1 = std::min(i0 + 1, n - 1);
@@ -62,8 +62,9 @@ inline void linearTexelsOf(T v, int n, int& i0, int& i1, T& t) {
 }
 
 template <typename T>
-inline T segmentExtinctionOf(const float* prefix, int n, T front, T back) {
-  const auto at = [&](T x) {
+__attribute__((always_inline)) inline T segmentExtinctionOf(const float* prefix, int n, T front,
+                                                            T back) {
+  const auto at = [&](T x) __attribute__((always_inline)) {
     int i0, i1;
     T t;
     linearTexelsOf(x, n, i0, i1, t);
@@ -77,8 +78,10 @@ inline T segmentExtinctionOf(const float* prefix, int n, T front, T back) {
 
 // classifySlabPair: premultiplied (r, g, b, alpha); `texels` size x size, `prefix` n long.
 template <typename T>
-inline glm::vec<4, T> classifySlabPairOf(const glm::vec4* texels, int size, const float* prefix,
-                                         int n, T front, T back, T length) {
+__attribute__((always_inline)) inline glm::vec<4, T> classifySlabPairOf(const glm::vec4* texels,
+                                                                        int size,
+                                                                        const float* prefix, int n,
+                                                                        T front, T back, T length) {
   const T tau = segmentExtinctionOf(prefix, n, front, back);
   // Double: -expm1, exact for tiny opacities; float: 1 - exp as the shader takes it, by the
   // CPU splatter's polynomial exp (footprint_formulas.h) rather than a library call.
@@ -93,7 +96,9 @@ inline glm::vec<4, T> classifySlabPairOf(const glm::vec4* texels, int size, cons
   T tf, tb;
   linearTexelsOf(front, size, f0, f1, tf);
   linearTexelsOf(back, size, b0, b1, tb);
-  const auto at = [&](int f, int b) { return glm::vec<4, T>(texels[size_t(f) * size + b]); };
+  const auto at = [&](int f, int b) __attribute__((always_inline)) {
+    return glm::vec<4, T>(texels[size_t(f) * size + b]);
+  };
   const glm::vec<4, T> e = (T(1) - tf) * ((T(1) - tb) * at(f0, b0) + tb * at(f0, b1)) +
                            tf * ((T(1) - tb) * at(f1, b0) + tb * at(f1, b1));
   return glm::vec<4, T>(glm::vec<3, T>(e) * alpha, alpha);

@@ -1,7 +1,9 @@
 // The CPU splatter's per-tile composite (core/tile_compositor.h), compiled once per instruction
 // set: tile_compositor.cpp for the build's baseline, tile_compositor_avx2.cpp for AVX2 and FMA,
 // each in its own namespace (EWA_TILE_ISA, defined before this header), so no inline function
-// of one is taken for the other. Include it from those two files only.
+// of one is taken for the other. The shared formulas they call (ewa namespace) are always
+// inlined: an out-of-line copy from the AVX2 file could be the one the linker keeps for every
+// caller (the test tile_kernel_isa_symbols checks). Include it from those two files only.
 #pragma once
 
 #include <algorithm>
