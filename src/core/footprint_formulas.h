@@ -11,7 +11,8 @@
 namespace ewa {
 
 // exp: std::exp in double (the reference's); in float a polynomial without a library call, so
-// the CPU splatter's pixel loops vectorize (relative error below 3e-7 over float's range).
+// the CPU splatter's pixel loops vectorize (relative error below 3e-7 over float's range),
+// always inlined so that its AVX2 kernel keeps no out-of-line copy (tile_composite_kernel.h).
 inline double expOf(double x) {
   return std::exp(x);
 }

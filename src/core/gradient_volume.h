@@ -35,6 +35,8 @@ PackedGradients packGradients(const Volume& volume, GradientMode mode, unsigned 
 // it read as 1/1023 in each component and lit uniform haze from a corner direction.
 constexpr double kGradientZeroLevel = 512.0, kGradientSteps = 511.0;
 
+// unpackGradientOf and sampleGradientOf are always inlined: the CPU splatter's AVX2 kernel calls
+// them, and must keep no out-of-line copy that other callers could be linked to.
 // One texel's gradient, relative to the largest component (each in [-1, 1]): the shader's
 // decoding ((texel * 1023 - 512) / 511), in the float type T.
 template <typename T>

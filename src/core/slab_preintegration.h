@@ -49,7 +49,9 @@ glm::dvec4 classifySlabPair(const std::vector<glm::vec4>& texels, int size,
                             double length);
 
 // The formulas above in the float type T over bare arrays: the double functions are their
-// double instances, the CPU splatter's per-pixel classification their float ones.
+// double instances, the CPU splatter's per-pixel classification their float ones. Always
+// inlined: the CPU splatter's AVX2 kernel calls them, and must keep no out-of-line copy that
+// other callers could be linked to (tile_composite_kernel.h).
 
 // GL_LINEAR at coordinate (v (n - 1) + 0.5) / n: texel position v (n - 1), between texels i0
 // and i1 on either side (clamped to the edge), t of the way to i1.
