@@ -258,9 +258,9 @@ __attribute__((always_inline)) inline void postTileOf(const TileWork& work) {
   // 4 KiB apart (a sample's two, back to back) can make a load wait on a store to the other,
   // their addresses' low 12 bits being alike; the pixel loops ran some 3% slower so.
   constexpr int kStride = kPixels + 16;
-  alignas(64) float planes[2 * Samples][kStride];
-  float(*const sv)[kStride] = planes;
-  float(*const sw)[kStride] = planes + Samples;
+  alignas(64) float samplePlanes[2 * Samples][kStride];
+  float(*const sv)[kStride] = samplePlanes;
+  float(*const sw)[kStride] = samplePlanes + Samples;
   for (int p = 0; p < kPixels; ++p)
     for (int k = 0; k < Samples; ++k) sv[k][p] = sw[k][p] = 0.0f;
   // Voxel normals: the slab's weight * normal, x, y and z.
