@@ -62,6 +62,28 @@ std::vector<size_t> passStarts(const std::vector<Slab>& slabs, size_t steps) {
   return starts;
 }
 
+// The most slab-grid steps a pass may span for each pass to hold about `budget` bytes at most:
+// a frame's `entries` in one pass take `onePass`, of which `fixed` (each splat's place) every
+// pass holds and the rest in proportion to the pass's entries. The slabs' entries are uneven
+// in depth, so the pass of most entries decides.
+size_t passSteps(const std::vector<Slab>& slabs, size_t entries, double onePass, double fixed,
+                 double budget) {
+  if (onePass <= budget) return SIZE_MAX;
+  size_t steps = std::max<size_t>(1, size_t(double(slabs.size()) * budget / onePass));
+  for (; steps > 1; --steps) {
+    const std::vector<size_t> starts = passStarts(slabs, steps);
+    size_t most = 0;
+    for (size_t pass = 0; pass + 1 < starts.size(); ++pass) {
+      size_t count = 0;
+      for (size_t b = starts[pass]; b < starts[pass + 1]; ++b) count += slabs[b].count;
+      most = std::max(most, count);
+    }
+    if (fixed + (onePass - fixed) * double(most) / double(std::max<size_t>(entries, 1)) <= budget)
+      break;
+  }
+  return steps;
+}
+
 // `v` resized to `n`, its storage grown to n exactly (a vector grows by doubling): the bytes
 // held are the largest pass's.
 template <typename T>
@@ -205,11 +227,10 @@ TileCompositor::Timing TileCompositor::draw(const SplatRecordMaker& maker,
   constexpr double kSplatBytes = sizeof(SplatRecord) + sizeof(TileRect) + 2 * sizeof(uint32_t);
   constexpr double kEntryBytes = 1.75 * sizeof(Item);
   const double onePass = kSplatBytes * double(maker.size()) + kEntryBytes * double(entries);
-  const size_t steps =
-      passSlabs_ > 0 ? passSlabs_
-      : onePass <= double(passBytes_)
-          ? SIZE_MAX
-          : std::max<size_t>(1, size_t(double(slabs.size()) * double(passBytes_) / onePass));
+  const double budget = double(passBytes_ > 0 ? passBytes_ : passBudget(maker.size()));
+  const size_t steps = passSlabs_ > 0 ? passSlabs_
+                                      : passSteps(slabs, entries, onePass,
+                                                  sizeof(uint32_t) * double(maker.size()), budget);
   const std::vector<size_t> passFirst = passStarts(slabs, steps);
   const size_t passes = passFirst.size() - 1;
   // Composited back to front the passes go from the back, each read backwards (X-ray and MIP

@@ -84,10 +84,19 @@ class TileCompositor {
   // Pixels a side of a tile: its slab sums (4 KiB) and picture stay in the core's cache.
   static constexpr int kTile = 16;
   static constexpr int kPixels = kTile * kTile;
-  // The records and bins a frame holds at once, at most about: a frame that would take more in
-  // one pass (its records, their tiles and places, its bins) goes in passes of fewer slabs. Passes
-  // cost time (each tile's state is put away and taken up again), so a frame that fits takes one.
+  // The records and bins a frame holds at once, at most about (passBudget): kPassBytesPerSplat
+  // a splat, but never less than kPassBytesLeast nor more than kPassBytes. A frame that would
+  // take more in one pass (its records, their tiles and places, its bins: about 100 bytes a
+  // splat) goes in passes of fewer slabs. Passes cost time (each tile's state is put away and
+  // taken up again, a splat reaching two passes has a record in each), so a small frame takes
+  // one. 26 estimated bytes a splat held 24-25 on the shared volumes' default views at 512²,
+  // under the 32 that larger footprints' extra tiles would otherwise take from the margin.
   static constexpr size_t kPassBytes = size_t(256) << 20;
+  static constexpr size_t kPassBytesLeast = size_t(16) << 20;
+  static constexpr size_t kPassBytesPerSplat = 26;
+  static size_t passBudget(size_t splats) {
+    return std::clamp(kPassBytesPerSplat * splats, kPassBytesLeast, kPassBytes);
+  }
 
   // A slab entry listed for a tile: its record's place in the pass with SlabPartition's
   // first/last-slab flags, and its slab.
@@ -139,7 +148,7 @@ class TileCompositor {
   // Test hook: false draws with the build's baseline composite even where the machine runs its
   // AVX2 and FMA build (tile_compositor_avx2.cpp), to hold the two equal.
   void setAvx2(bool allowed) { avx2Allowed_ = allowed; }
-  // Test hooks: the bytes a pass may hold (kPassBytes), or the slab-grid steps a pass spans
+  // Test hooks: the bytes a pass may hold (0: passBudget), or the slab-grid steps a pass spans
   // (0: from the bytes).
   void setPassBytes(size_t bytes) { passBytes_ = bytes; }
   void setPassSlabs(size_t steps) { passSlabs_ = steps; }
@@ -157,7 +166,7 @@ class TileCompositor {
   std::vector<Run> bins_;
   std::vector<TileState> tiles_;
   bool avx2Allowed_ = true;
-  size_t passBytes_ = kPassBytes;
+  size_t passBytes_ = 0;
   size_t passSlabs_ = 0;
   // `border`: pixels about a tile whose kernels it takes too (field normals' neighbours).
   void makeRecords(const SplatRecordMaker& maker, const std::vector<uint32_t>& order,

@@ -420,6 +420,23 @@ TEST(CpuSplatterCli, SplatterCpuDrawsTheFrame) {
   EXPECT_GT(maxDifference(picture("cpu_crop_c"), picture("cpu_cpu")), 40) << "the crop shows";
 }
 
+// A frame of many splats (a solid sphere of 96³ voxels: 884,736) goes in passes that hold its
+// records and bins under 32 bytes a splat (one pass would take about 100), and draws the
+// rasterized picture so.
+TEST(CpuSplatterCli, AFrameOfManySplatsHoldsAFewBytesASplat) {
+  const std::string dir = testOutputDir();
+  const std::string common = "--synthetic sphere:96 --resolution 64,64 --stats";
+  const CliRun raster = runEwaview(common + " --splatter raster -o " + dir + "/many_raster.png");
+  const CliRun cpu = runEwaview(common + " --splatter cpu -o " + dir + "/many_cpu.png");
+  for (const CliRun* run : {&raster, &cpu}) ASSERT_EQ(run->code, 0) << run->err;
+  const nlohmann::json stats = nlohmann::json::parse(cpu.out);
+  EXPECT_EQ(stats["splatter"], "cpu");
+  EXPECT_GT(stats["splats"].get<double>(), 800000.0);
+  EXPECT_LE(stats["cpu_bytes_per_splat"].get<double>(), 32.0);
+  const auto picture = [&](const char* name) { return readPng(dir + "/" + name + ".png"); };
+  EXPECT_LE(maxDifference(picture("many_cpu"), picture("many_raster")), kMaxLevels);
+}
+
 // ewaview-compare times the CPU splatter beside the others (cpu_ms) where it draws the frame,
 // pre- and post-classified, and leaves the column empty when skipped.
 TEST(CpuSplatterCli, CompareTimesTheCpuSplatter) {

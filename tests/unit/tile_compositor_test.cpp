@@ -187,8 +187,16 @@ TEST(TileCompositor, AFrameOverItsBudgetGoesInPassesOfAFewBytesASplat) {
   };
   // Within the budget: one pass, a record a splat and more.
   EXPECT_GT(bytesPerSplat(TileCompositor::kPassBytes), double(sizeof(SplatRecord)));
+  EXPECT_GT(bytesPerSplat(0), double(sizeof(SplatRecord)));  // passBudget: a small frame's
   // Over it: a slab a pass here (14 slabs), the records and bins under 32 bytes a splat.
   EXPECT_LE(bytesPerSplat(1), 32.0);
+}
+
+TEST(TileCompositor, TheBudgetIsAFewBytesASplatWithinItsBounds) {
+  EXPECT_EQ(TileCompositor::passBudget(1000), TileCompositor::kPassBytesLeast);
+  EXPECT_EQ(TileCompositor::passBudget(2000000), 2000000 * TileCompositor::kPassBytesPerSplat);
+  EXPECT_EQ(TileCompositor::passBudget(100000000), TileCompositor::kPassBytes);
+  EXPECT_LT(TileCompositor::kPassBytesLeast, TileCompositor::kPassBytes);
 }
 
 }  // namespace
