@@ -39,18 +39,29 @@ std::string hugePageMode() {
 
 }  // namespace
 
+std::string hugePageTunables(const char* tunables) {
+#if defined(__GLIBC__) && defined(__linux__)
+  if (tunables && std::strstr(tunables, "malloc.hugetlb")) return "";  // chosen, or done already
+  if (hugePageMode() != "madvise") return "";
+  std::string value = tunables && *tunables ? std::string(tunables) + ":" : std::string();
+  return value + "glibc.malloc.hugetlb=1";
+#else
+  (void)tunables;
+  return "";
+#endif
+}
+
 void askForHugePages(char** argv) {
 #if defined(__GLIBC__) && defined(__linux__)
   const char* tunables = std::getenv("GLIBC_TUNABLES");
-  if (tunables && std::strstr(tunables, "malloc.hugetlb")) return;  // chosen, or done already
-  if (hugePageMode() != "madvise") return;
-  std::string value = tunables && *tunables ? std::string(tunables) + ":" : std::string();
-  value += "glibc.malloc.hugetlb=1";
+  const std::string value = hugePageTunables(tunables);
+  if (value.empty()) return;
+  const std::string before = tunables ? tunables : "";
   if (setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0) return;
   execv("/proc/self/exe", argv);
   // Not run again (no /proc, say): go on as before, without the tunable.
   if (tunables)
-    setenv("GLIBC_TUNABLES", tunables, 1);
+    setenv("GLIBC_TUNABLES", before.c_str(), 1);
   else
     unsetenv("GLIBC_TUNABLES");
 #else

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -36,6 +37,30 @@ TEST(Cli, VersionAndHelpExitZero) {
 
 // The options page lists what exists: every option --help prints is in it, written as `--name`
 // (docs/user/options.md is generated from the option table; the unit tests compare it).
+// The launcher (ewaview) starts the viewer beside it (libexec/ewaview) through a link from
+// elsewhere too, and without the viewer says so in one line.
+TEST(Cli, TheLauncherStartsTheViewerBesideItOrSaysWhyNot) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(testOutputDir()) / "launcher";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "linked");
+  fs::create_symlink(fs::absolute(EWA_BINARY), dir / "linked" / "ewaview");
+  const CliRun linked = runProgram((dir / "linked" / "ewaview").string(), "--version", "linked");
+  ASSERT_EQ(linked.code, 0) << linked.err;
+  EXPECT_NE(linked.out.find("ewaview"), std::string::npos) << linked.out;
+  // A copy without the viewer beside it.
+  fs::create_directories(dir / "alone");
+  fs::copy_file(fs::absolute(EWA_BINARY), dir / "alone" / "ewaview");
+  const CliRun alone = runProgram((dir / "alone" / "ewaview").string(), "--version", "alone");
+  EXPECT_EQ(alone.code, 127);
+  EXPECT_TRUE(alone.out.empty()) << alone.out;
+  EXPECT_NE(alone.err.find("cannot start the viewer " + (dir / "alone").string() +
+                           "/libexec/ewaview: No such file"),
+            std::string::npos)
+      << alone.err;
+  EXPECT_EQ(std::count(alone.err.begin(), alone.err.end(), '\n'), 1) << alone.err;
+}
+
 TEST(Cli, EveryOptionOfHelpIsInTheOptionsPage) {
   const CliRun r = ewaview("--help");
   ASSERT_EQ(r.code, 0);
