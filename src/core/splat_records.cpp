@@ -31,7 +31,8 @@ bool setupSplat(const PackedSplat& s, const PackedAttributes* attributes, const 
                 const glm::dmat3& rotation, const glm::dmat3& volumeCov, const glm::dvec3& sigma,
                 double voxelVolume, SplatRecord& out) {
   const float value = SplatSet::normalizedValue(s);
-  const glm::vec4 tf = transferAt(f.transfer, value);
+  // Post-classified splats carry their value, classified per pixel: no colour here.
+  const glm::vec4 tf = f.postClassified ? glm::vec4(0.0f) : transferAt(f.transfer, value);
   UnpackedAttributes a;
   if (attributes) a = unpackAttributes(*attributes);
   // Post: zero-opacity voxels next to visible ones shape the mean value; they stay.

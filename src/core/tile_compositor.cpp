@@ -86,10 +86,10 @@ size_t passSteps(const std::vector<Slab>& slabs, size_t entries, double onePass,
 
 // `v` resized to `n`, its storage grown to n exactly (a vector grows by doubling): the bytes
 // held are the largest pass's.
-template <typename T>
-void resizeExactly(std::vector<T>& v, size_t n) {
+template <typename Vector>
+void resizeExactly(Vector& v, size_t n) {
   if (n > v.capacity()) {
-    std::vector<T>().swap(v);
+    Vector().swap(v);
     v.reserve(n);
   }
   v.resize(n);

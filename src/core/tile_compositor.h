@@ -15,6 +15,7 @@
 
 #include "core/camera.h"
 #include "core/clip_region.h"
+#include "core/default_init_allocator.h"
 #include "core/ewa_footprint.h"
 #include "core/gradient_volume.h"
 #include "core/shading.h"
@@ -109,7 +110,7 @@ class TileCompositor {
   // are items[start[t]] up to items[start[t + 1]].
   struct Run {
     std::vector<uint32_t> start;
-    std::vector<Item> items;
+    std::vector<Item, DefaultInitAllocator<Item>> items;  // each written once binned
     size_t count(size_t tile) const { return start[tile + 1] - start[tile]; }
   };
 
@@ -156,12 +157,13 @@ class TileCompositor {
  private:
   // Kept between passes and frames (their capacity).
   std::vector<SplatRecord> records_;  // the pass's, one a splat, in place order
-  std::vector<uint32_t> splatsOf_;    // the splat at each place
+  // Written whole each pass, so resized without being zeroed (DefaultInitAllocator).
+  std::vector<uint32_t, DefaultInitAllocator<uint32_t>> splatsOf_;  // the splat at each place
   struct TileRect {
     uint16_t x0, y0, x1, y1;  // the tiles a record's box reaches, inclusive (x0 > x1: none)
   };
-  std::vector<TileRect> rects_;   // each place's
-  std::vector<uint32_t> places_;  // each splat's place in the pass
+  std::vector<TileRect, DefaultInitAllocator<TileRect>> rects_;  // each place's
+  std::vector<uint32_t> places_;                                 // each splat's place in the pass
   // Filled in parallel, one run a task: a tile reads its runs in turn, front to back.
   std::vector<Run> bins_;
   std::vector<TileState> tiles_;
