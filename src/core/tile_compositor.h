@@ -90,8 +90,9 @@ class TileCompositor {
   // take more in one pass (its records, their tiles and places, its bins: about 100 bytes a
   // splat) goes in passes of fewer slabs. Passes cost time (each tile's state is put away and
   // taken up again, a splat reaching two passes has a record in each), so a small frame takes
-  // one. 26 estimated bytes a splat held 24-25 on the shared volumes' default views at 512²,
-  // under the 32 that larger footprints' extra tiles would otherwise take from the margin.
+  // one. The estimate takes 1.75 tiles an entry, and larger footprints reach more: 26 bytes a
+  // splat estimated held 24-26 on the shared volumes' default views at 512² and 1024², a margin
+  // under 32.
   static constexpr size_t kPassBytes = size_t(256) << 20;
   static constexpr size_t kPassBytesLeast = size_t(16) << 20;
   static constexpr size_t kPassBytesPerSplat = 26;
