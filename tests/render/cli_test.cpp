@@ -35,8 +35,6 @@ TEST(Cli, VersionAndHelpExitZero) {
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt << " missing from --help";
 }
 
-// The options page lists what exists: every option --help prints is in it, written as `--name`
-// (docs/user/options.md is generated from the option table; the unit tests compare it).
 // The launcher (ewaview) starts the viewer beside it (libexec/ewaview) through a link from
 // elsewhere too, and without the viewer says so in one line.
 TEST(Cli, TheLauncherStartsTheViewerBesideItOrSaysWhyNot) {
@@ -61,6 +59,8 @@ TEST(Cli, TheLauncherStartsTheViewerBesideItOrSaysWhyNot) {
   EXPECT_EQ(std::count(alone.err.begin(), alone.err.end(), '\n'), 1) << alone.err;
 }
 
+// The options page lists what exists: every option --help prints is in it, written as `--name`
+// (docs/user/options.md is generated from the option table; the unit tests compare it).
 TEST(Cli, EveryOptionOfHelpIsInTheOptionsPage) {
   const CliRun r = ewaview("--help");
   ASSERT_EQ(r.code, 0);
